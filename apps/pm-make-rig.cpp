@@ -1,0 +1,56 @@
+//! pm-make-rig: writes a symmetric stereo rig (rig JSON + ViSP camera XML).
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "pm/app/App.h"
+#include "pm/core/Error.h"
+#include "pm/core/StereoRig.h"
+#include "pm/io/RigFile.h"
+#include "pm/io/StagedFiles.h"
+
+int main(int argc, char **argv)
+{
+  CLI::App app{"Writes a symmetric stereo rig: two identical pinhole cameras, the baseline along the hand's x "
+               "axis, each toed in toward the hand's z axis. Defaults: the lab's PA-10 rig (Sony FCB-IX11A at "
+               "640x480, 323 mm baseline, converging 500 mm ahead).",
+               "pm-make-rig"};
+  app.option_defaults()->always_capture_default();
+  std::string out, name = "rig";
+  double px = 754, py = 754, u0 = 320, v0 = 240, baselineMm = 323, convergeMm = 500, toeInDeg = NAN;
+  unsigned width = 640, height = 480;
+  app.add_option("--out", out, "output folder (receives <name>.json and <name>_cameras.xml)")->required();
+  app.add_option("--name", name, "file name stem");
+  app.add_option("--px", px, "focal length along x (px)");
+  app.add_option("--py", py, "focal length along y (px)");
+  app.add_option("--u0", u0, "principal point u0 (px)");
+  app.add_option("--v0", v0, "principal point v0 (px)");
+  app.add_option("--width", width, "image width (px)")->check(CLI::Range(1u, 100000u));
+  app.add_option("--height", height, "image height (px)")->check(CLI::Range(1u, 100000u));
+  app.add_option("--baseline-mm", baselineMm, "distance between the optical centres (mm)")->check(CLI::PositiveNumber);
+  auto *conv = app.add_option("--converge-mm", convergeMm,
+                              "toe both cameras in so that a point this far ahead of the hand is at each image centre");
+  app.add_option("--toe-in-deg", toeInDeg, "toe-in angle of each camera instead (0: parallel cameras)")
+      ->excludes(conv)
+      ->check(CLI::Range(-45.0, 45.0));
+  bool quiet = false;
+  app.add_flag("--quiet", quiet, "print nothing on success");
+
+  return pm::app::run(app, argc, argv, [&] {
+    vpCameraParameters cam;
+    cam.initPersProjWithoutDistortion(px, py, u0, v0);
+    const double toe = std::isnan(toeInDeg) ? pm::StereoRig::toeInFor(baselineMm * 1e-3, convergeMm * 1e-3)
+                                            : toeInDeg * M_PI / 180.0;
+    if (std::isnan(toeInDeg) && !(convergeMm > 0))
+      throw pm::Error("--converge-mm must be positive");
+    const pm::StereoRig rig = pm::StereoRig::symmetric(cam, width, height, baselineMm * 1e-3, toe);
+    pm::io::StagedFiles files(out); // creates the folder
+    const std::string json = files.finalPath(name + ".json");
+    std::ostringstream desc;
+    desc << "symmetric rig: baseline " << baselineMm << " mm, each camera toed in by " << toe * 180 / M_PI << " deg";
+    pm::io::saveRig(rig, json, name + "_cameras.xml", desc.str());
+    if (!quiet)
+      std::cout << "wrote " << json << " (" << desc.str() << ")" << std::endl;
+    return 0;
+  });
+}

@@ -1,0 +1,76 @@
+#pragma once
+/*!
+  \file Hue.h
+  Hue, saturation and value of the HSV colour model, hue in degrees [0, 360).
+  Same definition as vpImageConvert::RGBaToHSV (which gives H in [0, 1)), without its
+  double-precision image pass. Hue distances wrap around: 0 and 359 degrees are 1 apart.
+*/
+#include <cmath>
+#include <vector>
+
+#include <visp3/core/vpRGBa.h>
+
+namespace pm {
+
+struct Hsv
+{
+  float h; //!< degrees in [0, 360); 0 for grey (s == 0)
+  float s; //!< [0, 1]
+  float v; //!< [0, 1]
+};
+
+inline Hsv rgbToHsv(unsigned char r, unsigned char g, unsigned char b)
+{
+  const int mx = std::max(r, std::max(g, b));
+  const int mn = std::min(r, std::min(g, b));
+  const int d = mx - mn;
+  Hsv o{0.f, mx == 0 ? 0.f : static_cast<float>(d) / static_cast<float>(mx), static_cast<float>(mx) / 255.f};
+  if (d == 0)
+    return o;
+  const float fd = static_cast<float>(d);
+  float h;
+  if (mx == r)
+    h = static_cast<float>(g - b) / fd;
+  else if (mx == g)
+    h = 2.f + static_cast<float>(b - r) / fd;
+  else
+    h = 4.f + static_cast<float>(r - g) / fd;
+  h *= 60.f;
+  if (h < 0.f)
+    h += 360.f;
+  if (h >= 360.f)
+    h -= 360.f;
+  o.h = h;
+  return o;
+}
+
+inline Hsv rgbToHsv(const vpRGBa &c) { return rgbToHsv(c.R, c.G, c.B); }
+inline float hueDeg(const vpRGBa &c) { return rgbToHsv(c).h; }
+
+//! Distance between two hues on the circle, in [0, 180].
+inline float hueDistance(float a, float b)
+{
+  float d = std::fabs(a - b);
+  if (d >= 360.f)
+    d = std::fmod(d, 360.f);
+  return d > 180.f ? 360.f - d : d;
+}
+
+//! Mean of hues on the circle (degrees in [0, 360)); 0 for an empty or balanced set.
+inline float circularMeanHue(const std::vector<float> &hues)
+{
+  double sx = 0, sy = 0;
+  for (float h : hues) {
+    const double r = static_cast<double>(h) * M_PI / 180.0;
+    sx += std::cos(r);
+    sy += std::sin(r);
+  }
+  if (hues.empty() || (std::fabs(sx) < 1e-12 && std::fabs(sy) < 1e-12))
+    return 0.f;
+  double m = std::atan2(sy, sx) * 180.0 / M_PI;
+  if (m < 0)
+    m += 360.0;
+  return static_cast<float>(m >= 360.0 ? 0.0 : m);
+}
+
+} // namespace pm

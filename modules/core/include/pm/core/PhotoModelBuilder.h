@@ -1,0 +1,56 @@
+#pragma once
+/*!
+  \file PhotoModelBuilder.h
+  Builds a photo-model (Fig. 4 of the paper) from two photos taken by one camera at a known
+  distance: (a) the background alone, (b) the target on that background.
+
+  1. H_B is the circular mean hue of photo (a).
+  2. A pixel belongs to the target when its hue in (b) differs from the hue of the same pixel
+     in (a) by more than regionHueTolDeg, and it is saturated and bright enough for its hue to
+     mean something. The largest connected region, cleaned by opening and closing, with its
+     small holes filled (spots of a background-like hue on the target) and its large ones kept
+     (background seen between legs), is the target region; its centroid is the model origin.
+  3. S_in: region pixels on a grid of stepPx (aligned on the centroid) whose saturation is at
+     least minSaturation, each with its hue in (b).
+  4. S_out: stripRows rows of points spread over [stripGapPx, stripGapPx + stripWidthPx] pixels
+     outside the region boundary, sampled every stepPx along the offset outline.
+*/
+#include <visp3/core/vpCameraParameters.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/core/PhotoModel.h"
+
+namespace pm {
+
+struct PhotoModelParams
+{
+  double regionHueTolDeg = 30.0; //!< hue change that marks a target pixel (deg)
+  double minSaturation = 0.15;   //!< below this a pixel's hue is noise
+  double minValue = 0.08;        //!< below this a pixel's hue is noise
+  int cleanRadiusPx = 2;         //!< morphological open/close radius on the region mask
+  int maxHoleAreaPx = 150;       //!< holes in the region up to this area are filled (spots), larger ones kept
+  double stepPx = 8.0;           //!< sampling step of S_in (grid) and along S_out (px)
+  double stripGapPx = 6.0;       //!< distance of the first S_out row from the region (px)
+  double stripWidthPx = 8.0;     //!< extent of the S_out strip beyond the first row (px)
+  int stripRows = 2;             //!< rows of S_out points across the strip
+
+  //! Throws pm::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+struct PhotoModelBuild
+{
+  PhotoModel model;
+  vpImage<unsigned char> region; //!< 255 inside the target region, 0 elsewhere
+};
+
+/*!
+  Builds the model. Throws pm::Error if the photos differ in size, a parameter is out of
+  range, or no target region can be told from the background (empty S_in).
+*/
+PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage<vpRGBa> &withTarget,
+                                const vpCameraParameters &cam, double distanceMm,
+                                const PhotoModelParams &params = PhotoModelParams());
+
+} // namespace pm

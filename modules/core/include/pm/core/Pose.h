@@ -1,0 +1,52 @@
+#pragma once
+/*!
+  \file Pose.h
+  The pose parameter of the paper, phi = [x, y, z, eps1, eps2, eps3] (Eqs. 1, 6, 7).
+
+  Position in millimetres (the paper's unit), orientation as the vector part of a unit
+  quaternion q = {eta, eps} with eta = sqrt(1 - |eps|^2) >= 0. ViSP's matrices are in metres,
+  so toHomogeneousMatrix() divides the position by 1000 and fromHomogeneousMatrix() multiplies.
+  phi is the pose of the model frame M in the hand frame H: it is hMo in ViSP's notation.
+*/
+#include <array>
+#include <cmath>
+#include <string>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+
+namespace pm {
+
+struct Phi
+{
+  double x = 0, y = 0, z = 0;          //!< position in mm
+  double e1 = 0, e2 = 0, e3 = 0;       //!< quaternion vector part, |eps| <= 1
+
+  static constexpr std::size_t size = 6;
+  double &operator[](std::size_t i) { return (&x)[i]; }
+  double operator[](std::size_t i) const { return (&x)[i]; }
+
+  //! eps . eps
+  double epsNorm2() const { return e1 * e1 + e2 * e2 + e3 * e3; }
+  //! Scalar part eta >= 0; only meaningful when isValid().
+  double eta() const { return std::sqrt(std::max(0.0, 1.0 - epsNorm2())); }
+  //! All six finite and |eps| <= 1.
+  bool isValid() const;
+  std::string toString() const;
+};
+
+//! Row-major 3x3 rotation of Eq. (7), filled without allocation (hot path).
+using Rot3 = std::array<double, 9>;
+inline Rot3 rotationOf(const Phi &p)
+{
+  const double e1 = p.e1, e2 = p.e2, e3 = p.e3, n = p.eta();
+  return {1 - 2 * (e2 * e2 + e3 * e3), 2 * (e1 * e2 - n * e3),       2 * (e1 * e3 + n * e2),
+          2 * (e1 * e2 + n * e3),       1 - 2 * (e1 * e1 + e3 * e3), 2 * (e2 * e3 - n * e1),
+          2 * (e1 * e3 - n * e2),       2 * (e2 * e3 + n * e1),       1 - 2 * (e1 * e1 + e2 * e2)};
+}
+
+//! phi -> hMo (metres). Throws pm::Error if phi is not valid (|eps| > 1 or not finite).
+vpHomogeneousMatrix toHomogeneousMatrix(const Phi &phi);
+//! hMo (metres) -> phi with eta >= 0. Throws pm::Error if hMo is not a rigid transformation.
+Phi fromHomogeneousMatrix(const vpHomogeneousMatrix &hMo);
+
+} // namespace pm

@@ -1,0 +1,37 @@
+#include "pm/core/PhotoModel.h"
+
+#include <cmath>
+
+#include "pm/core/Error.h"
+
+namespace pm {
+
+namespace {
+bool finite(float a) { return std::isfinite(a); }
+} // namespace
+
+void PhotoModel::validate(const std::string &source) const
+{
+  const std::string where = "photo-model " + source + ": ";
+  if (!(distanceMm > 0) || !std::isfinite(distanceMm))
+    throw Error(where + "distance_mm must be positive, got " + std::to_string(distanceMm));
+  if (!(px > 0 && py > 0) || !std::isfinite(px) || !std::isfinite(py))
+    throw Error(where + "photo camera focal lengths px, py must be positive");
+  if (inner.empty())
+    throw Error(where + "S_in is empty: the target could not be told from the background");
+  if (!(backgroundHue >= 0.f && backgroundHue < 360.f))
+    throw Error(where + "background hue must lie in [0, 360) degrees");
+  for (const auto *set : {&inner, &outer}) {
+    const char *name = set == &inner ? "S_in" : "S_out";
+    for (std::size_t i = 0; i < set->size(); ++i) {
+      const ModelPoint &p = (*set)[i];
+      if (!finite(p.x) || !finite(p.y) || !finite(p.z) || !finite(p.u) || !finite(p.v))
+        throw Error(where + name + " point " + std::to_string(i) + " has a non-finite coordinate");
+      if (!(p.hue >= 0.f && p.hue < 360.f))
+        throw Error(where + name + " point " + std::to_string(i) + " has hue " + std::to_string(p.hue) +
+                    ", outside [0, 360)");
+    }
+  }
+}
+
+} // namespace pm

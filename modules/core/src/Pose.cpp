@@ -1,0 +1,62 @@
+#include "pm/core/Pose.h"
+
+#include <sstream>
+
+#include <visp3/core/vpQuaternionVector.h>
+
+#include "pm/core/Error.h"
+
+namespace pm {
+
+bool Phi::isValid() const
+{
+  for (std::size_t i = 0; i < size; ++i)
+    if (!std::isfinite((*this)[i]))
+      return false;
+  return epsNorm2() <= 1.0;
+}
+
+std::string Phi::toString() const
+{
+  std::ostringstream s;
+  s << "[" << x << ", " << y << ", " << z << ", " << e1 << ", " << e2 << ", " << e3 << "]";
+  return s.str();
+}
+
+vpHomogeneousMatrix toHomogeneousMatrix(const Phi &phi)
+{
+  if (!phi.isValid())
+    throw Error("invalid pose phi = " + phi.toString() +
+                ": the quaternion vector part must have |eps| <= 1 and every value be finite");
+  const Rot3 r = rotationOf(phi);
+  vpHomogeneousMatrix M;
+  for (unsigned i = 0; i < 3; ++i)
+    for (unsigned j = 0; j < 3; ++j)
+      M[i][j] = r[3 * i + j];
+  M[0][3] = phi.x * 1e-3;
+  M[1][3] = phi.y * 1e-3;
+  M[2][3] = phi.z * 1e-3;
+  return M;
+}
+
+Phi fromHomogeneousMatrix(const vpHomogeneousMatrix &hMo)
+{
+  if (!hMo.isAnHomogeneousMatrix())
+    throw Error("the matrix is not a rigid transformation (rotation not orthonormal)");
+  vpRotationMatrix R;
+  hMo.extract(R);
+  vpQuaternionVector q(R); // (x, y, z, w)
+  double s = q.w() < 0 ? -1.0 : 1.0;
+  const double n = std::sqrt(q.x() * q.x() + q.y() * q.y() + q.z() * q.z() + q.w() * q.w());
+  s /= n;
+  Phi p;
+  p.x = hMo[0][3] * 1e3;
+  p.y = hMo[1][3] * 1e3;
+  p.z = hMo[2][3] * 1e3;
+  p.e1 = s * q.x();
+  p.e2 = s * q.y();
+  p.e3 = s * q.z();
+  return p;
+}
+
+} // namespace pm

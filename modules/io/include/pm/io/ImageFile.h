@@ -1,0 +1,20 @@
+#pragma once
+/*!
+  \file ImageFile.h
+  Image reading and writing with errors a user can act on (pm::Error naming the file).
+  Formats: whatever ViSP's vpImageIo reads here (PNG, JPEG, PPM/PGM, ...).
+*/
+#include <string>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+namespace pm::io {
+
+//! Reads a colour image. Throws pm::Error if the file is missing, unreadable, corrupt or empty.
+vpImage<vpRGBa> readColorImage(const std::string &path);
+//! Writes a colour image; the format follows the extension. Throws pm::Error.
+void writeImage(const vpImage<vpRGBa> &I, const std::string &path);
+void writeImage(const vpImage<unsigned char> &I, const std::string &path);
+
+} // namespace pm::io

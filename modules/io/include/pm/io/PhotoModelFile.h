@@ -1,0 +1,30 @@
+#pragma once
+/*!
+  \file PhotoModelFile.h
+  Photo-model files (JSON):
+
+      {
+        "format": "visp-photomodel-model", "version": 1,
+        "distance_mm": 500,                                  // photo distance d
+        "camera": { "px": 754, "py": 754, "u0": 320, "v0": 240, "width": 640, "height": 480 },
+        "centroid_px": [cu, cv],                             // model origin in the photo
+        "background_hue_deg": 212.0,                         // H_B
+        "target_hue_deg": 12.0,                              // mean hue of S_in (report only)
+        "s_in":  [[x_mm, y_mm, hue_deg, u_px, v_px], ...],   // z = 0 on the model plane
+        "s_out": [[x_mm, y_mm, hue_deg, u_px, v_px], ...]    // hue: the background's there
+      }
+*/
+#include <string>
+
+#include "pm/core/PhotoModel.h"
+
+namespace pm::io {
+
+//! Reads and validates a model; throws pm::Error naming the file and what is wrong.
+PhotoModel loadPhotoModel(const std::string &path);
+//! Serialises a model to the JSON text above.
+std::string photoModelToJson(const PhotoModel &m);
+//! Writes a model (through a temporary file). Throws pm::Error.
+void savePhotoModel(const PhotoModel &m, const std::string &path);
+
+} // namespace pm::io

@@ -1,0 +1,34 @@
+#pragma once
+/*!
+  \file RigFile.h
+  Stereo rig files. A rig is two files:
+  - the intrinsics, in ViSP's camera XML (vpXmlParserCamera), one <camera> per camera,
+    perspective projection without distortion;
+  - the rig file (JSON), which names that XML and gives, for each camera, its name in the
+    XML, its image size and its pose in the hand frame:
+
+        {
+          "format": "visp-photomodel-rig", "version": 1,
+          "intrinsics_xml": "pa10_cameras.xml",          // relative to the rig file
+          "cameras": [
+            { "name": "left", "image_width": 640, "image_height": 480,
+              "hMc": { "translation_mm": [-161.5, 0, 0], "thetau_deg": [0, 17.9, 0] } },
+            { "name": "right", ... } ]
+        }
+
+  hMc is the camera's pose in the hand frame: translation in millimetres, rotation as a
+  theta-u vector in degrees (ViSP's vpThetaUVector).
+*/
+#include <string>
+
+#include "pm/core/StereoRig.h"
+
+namespace pm::io {
+
+//! Reads a rig; throws pm::Error naming the file and the field that is missing or wrong.
+StereoRig loadRig(const std::string &rigJsonPath);
+//! Writes the rig JSON and its intrinsics XML (name relative to the JSON's folder). Throws pm::Error.
+void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
+             const std::string &description = "");
+
+} // namespace pm::io

@@ -1,0 +1,40 @@
+#pragma once
+/*!
+  \file StagedFiles.h
+  Output files that appear only when a run succeeds. stage("model.json") returns a hidden
+  temporary path in the output folder to write to; commit() renames every staged file to
+  its final name; anything not committed is deleted when the object goes away (an error, an
+  exception), so no half-written file is ever left behind as if complete.
+*/
+#include <string>
+#include <vector>
+
+namespace pm::io {
+
+class StagedFiles
+{
+public:
+  //! Creates \e dir (and parents) if missing. Throws pm::Error if it cannot.
+  explicit StagedFiles(const std::string &dir);
+  ~StagedFiles();
+  StagedFiles(const StagedFiles &) = delete;
+  StagedFiles &operator=(const StagedFiles &) = delete;
+
+  //! A temporary path for \e name (which keeps its extension, so writers that pick the format from it work).
+  std::string stage(const std::string &name);
+  //! The final path of \e name in the folder.
+  std::string finalPath(const std::string &name) const;
+  //! Renames every staged file to its final name. Throws pm::Error if a staged file is missing.
+  void commit();
+  const std::string &dir() const { return m_dir; }
+
+private:
+  std::string m_dir;
+  std::vector<std::string> m_names;
+  bool m_committed = false;
+};
+
+//! Writes \e text to \e path through a temporary file and a rename. Throws pm::Error.
+void writeTextFile(const std::string &path, const std::string &text);
+
+} // namespace pm::io

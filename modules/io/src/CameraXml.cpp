@@ -1,0 +1,68 @@
+#include "pm/io/CameraXml.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include <visp3/core/vpException.h>
+#include <visp3/core/vpXmlParserCamera.h>
+
+#include "pm/core/Error.h"
+
+namespace pm::io {
+
+namespace {
+//! vpXmlParserCamera reports on std::cout; keep that out of the programs' output.
+class QuietStdout
+{
+public:
+  QuietStdout() : m_old(std::cout.rdbuf(m_sink.rdbuf())) {}
+  ~QuietStdout() { std::cout.rdbuf(m_old); }
+  QuietStdout(const QuietStdout &) = delete;
+  QuietStdout &operator=(const QuietStdout &) = delete;
+
+private:
+  std::ostringstream m_sink;
+  std::streambuf *m_old;
+};
+} // namespace
+
+vpCameraParameters readCameraXml(const std::string &xml, const std::string &name, unsigned w, unsigned h)
+{
+  if (!std::filesystem::is_regular_file(xml))
+    throw Error("the intrinsics file '" + xml + "' does not exist");
+  vpCameraParameters cam;
+  int status = vpXmlParserCamera::SEQUENCE_ERROR;
+  try {
+    QuietStdout quiet;
+    vpXmlParserCamera parser;
+    status = parser.parse(cam, xml, name, vpCameraParameters::perspectiveProjWithoutDistortion, w, h);
+  } catch (const vpException &e) {
+    throw Error("the intrinsics file '" + xml + "' cannot be read: " + e.getStringMessage());
+  }
+  if (status != vpXmlParserCamera::SEQUENCE_OK)
+    throw Error("no camera named '" + name + "' of size " + std::to_string(w) + "x" + std::to_string(h) +
+                " without distortion in the intrinsics file '" + xml + "'");
+  const double v[4] = {cam.get_px(), cam.get_py(), cam.get_u0(), cam.get_v0()};
+  if (!(v[0] > 0 && v[1] > 0) || !std::isfinite(v[0] + v[1] + v[2] + v[3]))
+    throw Error("camera '" + name + "' in '" + xml + "': px = " + std::to_string(v[0]) + ", py = " + std::to_string(v[1]) +
+                ": focal lengths must be positive");
+  return cam;
+}
+
+void writeCameraXml(const vpCameraParameters &cam, const std::string &xml, const std::string &name, unsigned w, unsigned h)
+{
+  int status = vpXmlParserCamera::SEQUENCE_ERROR;
+  try {
+    QuietStdout quiet;
+    vpXmlParserCamera parser;
+    status = parser.save(cam, xml, name, w, h, "visp-photomodel stereo rig");
+  } catch (const vpException &e) {
+    throw Error("cannot write the intrinsics file '" + xml + "': " + e.getStringMessage());
+  }
+  if (status != vpXmlParserCamera::SEQUENCE_OK)
+    throw Error("cannot write the intrinsics file '" + xml + "'");
+}
+
+} // namespace pm::io

@@ -1,0 +1,102 @@
+#include "pm/io/PhotoModelFile.h"
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "pm/core/Error.h"
+#include "pm/io/StagedFiles.h"
+
+using nlohmann::json;
+
+namespace pm::io {
+
+namespace {
+
+constexpr const char *kFormat = "visp-photomodel-model";
+
+json pointsToJson(const std::vector<ModelPoint> &pts)
+{
+  json a = json::array();
+  for (const auto &p : pts)
+    a.push_back({p.x, p.y, p.hue, p.u, p.v});
+  return a;
+}
+
+std::vector<ModelPoint> pointsFromJson(const json &a, const char *name)
+{
+  if (!a.is_array())
+    throw Error(std::string("\"") + name + "\" must be an array of [x_mm, y_mm, hue_deg, u_px, v_px]");
+  std::vector<ModelPoint> pts;
+  pts.reserve(a.size());
+  for (const auto &e : a) {
+    if (!e.is_array() || e.size() != 5)
+      throw Error(std::string("every point of \"") + name + "\" must be [x_mm, y_mm, hue_deg, u_px, v_px]");
+    ModelPoint p;
+    p.x = e[0].get<float>();
+    p.y = e[1].get<float>();
+    p.hue = e[2].get<float>();
+    p.u = e[3].get<float>();
+    p.v = e[4].get<float>();
+    pts.push_back(p);
+  }
+  return pts;
+}
+
+} // namespace
+
+std::string photoModelToJson(const PhotoModel &m)
+{
+  json j{{"format", kFormat},
+         {"version", 1},
+         {"distance_mm", m.distanceMm},
+         {"camera", {{"px", m.px}, {"py", m.py}, {"u0", m.u0}, {"v0", m.v0}, {"width", m.photoWidth}, {"height", m.photoHeight}}},
+         {"centroid_px", {m.centroidU, m.centroidV}},
+         {"background_hue_deg", m.backgroundHue},
+         {"target_hue_deg", m.targetHue},
+         {"s_in", pointsToJson(m.inner)},
+         {"s_out", pointsToJson(m.outer)}};
+  return j.dump() + "\n";
+}
+
+void savePhotoModel(const PhotoModel &m, const std::string &path) { writeTextFile(path, photoModelToJson(m)); }
+
+PhotoModel loadPhotoModel(const std::string &path)
+{
+  std::ifstream f(path);
+  if (!f)
+    throw Error("photo-model file '" + path + "' does not exist or cannot be read");
+  PhotoModel m;
+  try {
+    const json j = json::parse(f);
+    if (!j.is_object() || j.value("format", "") != kFormat)
+      throw Error(std::string("\"format\" must be \"") + kFormat + "\"");
+    if (j.value("version", 0) != 1)
+      throw Error("unsupported \"version\" (this program reads version 1)");
+    m.distanceMm = j.at("distance_mm").get<double>();
+    const json &c = j.at("camera");
+    m.px = c.at("px").get<double>();
+    m.py = c.at("py").get<double>();
+    m.u0 = c.at("u0").get<double>();
+    m.v0 = c.at("v0").get<double>();
+    m.photoWidth = c.at("width").get<unsigned>();
+    m.photoHeight = c.at("height").get<unsigned>();
+    const auto cen = j.at("centroid_px").get<std::vector<double>>();
+    if (cen.size() != 2)
+      throw Error("\"centroid_px\" must be [u, v]");
+    m.centroidU = cen[0];
+    m.centroidV = cen[1];
+    m.backgroundHue = j.at("background_hue_deg").get<float>();
+    m.targetHue = j.value("target_hue_deg", 0.f);
+    m.inner = pointsFromJson(j.at("s_in"), "s_in");
+    m.outer = pointsFromJson(j.at("s_out"), "s_out");
+  } catch (const Error &e) {
+    throw Error("photo-model file '" + path + "' is corrupt: " + e.what());
+  } catch (const json::exception &e) {
+    throw Error("photo-model file '" + path + "' is corrupt: " + e.what());
+  }
+  m.validate("'" + path + "'");
+  return m;
+}
+
+} // namespace pm::io

@@ -1,0 +1,58 @@
+#pragma once
+/*!
+  \file Mesh.h
+  A textured triangle mesh for the renderer: positions in metres in the object frame,
+  texture coordinates in texels, and a mask value per vertex: fragments where the
+  interpolated mask is positive are discarded, which cuts a smooth outline out of a
+  regular grid (the mask is the signed distance to the target's outline).
+*/
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace pm::sim {
+
+//! An RGB texture, 8 bits per channel, row-major, sampled bilinearly.
+struct Texture
+{
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb; //!< 3 * width * height
+
+  //! Bilinear sample at texel coordinates (texel centres at integers), clamped; out in [0, 1].
+  inline void sample(float s, float t, float out[3]) const
+  {
+    s = std::min(std::max(s, 0.f), static_cast<float>(width - 1));
+    t = std::min(std::max(t, 0.f), static_cast<float>(height - 1));
+    const int i = std::min(static_cast<int>(s), width - 2 < 0 ? 0 : width - 2);
+    const int j = std::min(static_cast<int>(t), height - 2 < 0 ? 0 : height - 2);
+    const float a = s - static_cast<float>(i), b = t - static_cast<float>(j);
+    const int di = width > 1 ? 3 : 0, dj = height > 1 ? 3 * width : 0;
+    const std::uint8_t *p = &rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i))];
+    for (int c = 0; c < 3; ++c) {
+      const float top = p[c] + a * (static_cast<float>(p[c + di]) - p[c]);
+      const float bot = p[c + dj] + a * (static_cast<float>(p[c + dj + di]) - p[c + dj]);
+      out[c] = (top + b * (bot - top)) * (1.f / 255.f);
+    }
+  }
+};
+
+struct MeshVertex
+{
+  float x, y, z;    //!< position in the object frame (m)
+  float nx, ny, nz; //!< unit normal in the object frame, pointing toward the viewer side (-z)
+  float s, t;       //!< texture coordinates (texels)
+  float mask;       //!< fragment kept where the interpolated mask is <= 0
+};
+
+struct Mesh
+{
+  std::vector<MeshVertex> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::shared_ptr<const Texture> texture;
+  bool useMask = false;  //!< discard fragments by mask
+  float specular = 0.f;  //!< specular strength (glossy plastic of a toy); 0 = matte
+  float shininess = 20.f;
+};
+
+} // namespace pm::sim

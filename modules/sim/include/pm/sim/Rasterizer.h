@@ -1,0 +1,67 @@
+#pragma once
+/*!
+  \file Rasterizer.h
+  A small z-buffered, perspective-correct triangle rasterizer with supersampling, for the
+  simulated cameras. Pinhole projection of vpCameraParameters (no distortion), Gouraud
+  shading (ambient + Lambert + Blinn-Phong specular per vertex), bilinear texture fetch,
+  per-fragment mask discard. resolve() averages the SSxSS samples of each pixel (box
+  filter: anti-aliased edges), applies an exposure gain and adds Gaussian sensor noise.
+
+  Buffers are allocated once by reset(); draw() allocates only when a mesh is larger than
+  any drawn before. One instance must not be used from two threads at once.
+*/
+#include <cstdint>
+#include <vector>
+
+#include <visp3/core/vpCameraParameters.h>
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/sim/Mesh.h"
+
+namespace pm::sim {
+
+struct Lighting
+{
+  double dirCamera[3] = {-0.3, -0.5, -0.8}; //!< direction toward the light, camera frame (normalised on use)
+  double ambient = 0.45;
+  double diffuse = 0.65;
+};
+
+class Rasterizer
+{
+public:
+  //! Sets the image size and supersampling factor (1..4) and clears to black.
+  void reset(unsigned width, unsigned height, unsigned supersampling);
+  void clear(float r, float g, float b);
+  //! Draws \e mesh seen from a camera at cMo; \e id (1..255) is written to the id buffer where visible.
+  void draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam, const Lighting &light,
+            std::uint8_t id);
+  /*!
+    Box-filters the samples into \e out (width x height), multiplied by \e exposure, plus
+    Gaussian noise of \e noiseSigma grey levels per channel drawn from \e noiseSeed.
+  */
+  void resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const;
+  //! Fraction of the samples of pixel (u, v) that show object \e id.
+  double coverage(unsigned u, unsigned v, std::uint8_t id) const;
+
+  unsigned width() const { return m_w; }
+  unsigned height() const { return m_h; }
+
+private:
+  struct ProjVertex
+  {
+    float X, Y, w;       // supersampled screen position, 1/z
+    float s, t, mask;    // attributes pre-divided by z (times w)
+    float diff, spec;
+    bool valid;
+  };
+  unsigned m_w = 0, m_h = 0, m_ss = 1, m_W = 0, m_H = 0;
+  std::vector<float> m_color;      // 3 * m_W * m_H
+  std::vector<float> m_invDepth;   // 1/z, 0 = empty
+  std::vector<std::uint8_t> m_id;  // object id per sample
+  std::vector<ProjVertex> m_proj;  // scratch
+};
+
+} // namespace pm::sim

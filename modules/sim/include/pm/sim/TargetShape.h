@@ -1,0 +1,69 @@
+#pragma once
+/*!
+  \file TargetShape.h
+  A 3-D target (a toy) as the renderer needs it: on a texel grid over the model plane, the
+  colour of the surface, the signed distance to the outline and the relief (height above the
+  base plane). buildTargetMesh() turns it into a height-field mesh whose outline is cut
+  smoothly by the signed distance, whose relief hides parts of itself seen from the side.
+
+  Target frame (= model frame at the true pose): x right, y down, z away from the viewer;
+  origin on the outline's centroid, at mid-depth. The base (the side resting on the backdrop)
+  is at z = +depth/2, the highest point at z = -depth/2.
+*/
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/sim/Mesh.h"
+
+namespace pm::sim {
+
+struct TargetInfo
+{
+  std::string code;     //!< "C12", or "user"
+  std::string name;     //!< "crab"
+  double widthMm = 0;   //!< nominal extent along x
+  double heightMm = 0;  //!< nominal extent along y
+  double depthMm = 0;   //!< relief (thickness toward the viewer)
+};
+
+struct TargetShape
+{
+  TargetInfo info;
+  double texelMm = 0.25;
+  int cols = 0, rows = 0;
+  double originCol = 0, originRow = 0; //!< texel coordinates of the frame origin
+  std::vector<std::uint8_t> rgb;       //!< albedo, 3 per texel
+  std::vector<float> sdf;              //!< signed distance to the outline (mm), negative inside
+  std::vector<float> height;           //!< relief above the base (mm); continued linearly below 0 outside
+
+  //! Extent of the outline (sdf < 0) along x and y (mm), measured on the grid.
+  void measuredExtent(double &widthMm, double &heightMm) const;
+  //! Bilinear sample of a grid at model-plane position (mm).
+  float sampleGrid(const std::vector<float> &grid, double xMm, double yMm) const;
+  //! Recentres the frame origin on the outline's centroid.
+  void centreOnOutline();
+};
+
+/*!
+  The height-field mesh of a target, vertices every \e stepMm (the outline itself is cut at
+  the zero of the interpolated signed distance, much finer than the step).
+*/
+Mesh buildTargetMesh(const TargetShape &shape, double stepMm = 1.0, float specular = 0.12f);
+
+/*!
+  A target from a user's photo (PNG/JPEG): the image is the texture, \e widthMm its physical
+  width (height by aspect ratio); the outline is the alpha channel where the image has one
+  (alpha < 128 is outside), the whole rectangle otherwise; the default relief is a rounded
+  dome of \e depthMm (0: flat).
+*/
+TargetShape targetFromImage(const vpImage<vpRGBa> &image, double widthMm, double depthMm, const std::string &name);
+
+//! Height profile of a rounded edge: 0 at the outline, 1 from \e t = 1 inward (quarter circle),
+//! continued below 0 outside with the slope of its first \e stepFrac.
+double edgeProfile(double t, double stepFrac);
+
+} // namespace pm::sim

@@ -1,0 +1,186 @@
+#include "pm/sim/Rasterizer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pm/core/Error.h"
+#include "pm/sim/Noise.h"
+
+namespace pm::sim {
+
+void Rasterizer::reset(unsigned width, unsigned height, unsigned supersampling)
+{
+  if (width == 0 || height == 0 || supersampling < 1 || supersampling > 4)
+    throw Error("renderer: image size must be positive and supersampling in [1, 4]");
+  m_w = width;
+  m_h = height;
+  m_ss = supersampling;
+  m_W = width * supersampling;
+  m_H = height * supersampling;
+  const std::size_t n = static_cast<std::size_t>(m_W) * m_H;
+  m_color.assign(3 * n, 0.f);
+  m_invDepth.assign(n, 0.f);
+  m_id.assign(n, 0);
+}
+
+void Rasterizer::clear(float r, float g, float b)
+{
+  for (std::size_t i = 0; i < m_invDepth.size(); ++i) {
+    m_color[3 * i] = r;
+    m_color[3 * i + 1] = g;
+    m_color[3 * i + 2] = b;
+  }
+  std::fill(m_invDepth.begin(), m_invDepth.end(), 0.f);
+  std::fill(m_id.begin(), m_id.end(), std::uint8_t(0));
+}
+
+void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam,
+                      const Lighting &light, std::uint8_t id)
+{
+  if (!mesh.texture || mesh.texture->width <= 0 || mesh.texture->height <= 0)
+    throw Error("renderer: mesh without texture");
+  const double ss = m_ss;
+  const double px = cam.get_px() * ss, py = cam.get_py() * ss;
+  const double u0 = cam.get_u0() * ss + (ss - 1) / 2, v0 = cam.get_v0() * ss + (ss - 1) / 2;
+  const double zNear = 1e-3;
+
+  // Light and camera centre in the object frame, for per-vertex shading.
+  double L[3] = {light.dirCamera[0], light.dirCamera[1], light.dirCamera[2]};
+  const double ln = std::sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+  double Lo[3], Co[3];
+  const vpHomogeneousMatrix oMc = cMo.inverse();
+  for (int i = 0; i < 3; ++i) {
+    Lo[i] = 0;
+    for (int k = 0; k < 3; ++k)
+      Lo[i] += cMo[static_cast<unsigned>(k)][static_cast<unsigned>(i)] * L[k] / ln; // R^T L
+    Co[i] = oMc[static_cast<unsigned>(i)][3];
+  }
+
+  double R[3][4];
+  for (unsigned i = 0; i < 3; ++i)
+    for (unsigned j = 0; j < 4; ++j)
+      R[i][j] = cMo[i][j];
+
+  m_proj.resize(mesh.vertices.size());
+  for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
+    const MeshVertex &v = mesh.vertices[k];
+    const double X = R[0][0] * v.x + R[0][1] * v.y + R[0][2] * v.z + R[0][3];
+    const double Y = R[1][0] * v.x + R[1][1] * v.y + R[1][2] * v.z + R[1][3];
+    const double Z = R[2][0] * v.x + R[2][1] * v.y + R[2][2] * v.z + R[2][3];
+    ProjVertex &p = m_proj[k];
+    p.valid = Z > zNear;
+    if (!p.valid)
+      continue;
+    const double w = 1.0 / Z;
+    p.X = static_cast<float>(px * X * w + u0);
+    p.Y = static_cast<float>(py * Y * w + v0);
+    p.w = static_cast<float>(w);
+    // Shading: two-sided Lambert toward the viewer, Blinn-Phong highlight.
+    double n[3] = {v.nx, v.ny, v.nz}, V[3] = {Co[0] - v.x, Co[1] - v.y, Co[2] - v.z};
+    const double vn = std::sqrt(V[0] * V[0] + V[1] * V[1] + V[2] * V[2]);
+    for (double &c : V)
+      c /= vn;
+    if (n[0] * V[0] + n[1] * V[1] + n[2] * V[2] < 0)
+      for (double &c : n)
+        c = -c;
+    const double nl = std::max(0.0, n[0] * Lo[0] + n[1] * Lo[1] + n[2] * Lo[2]);
+    double Hh[3] = {Lo[0] + V[0], Lo[1] + V[1], Lo[2] + V[2]};
+    const double hn = std::sqrt(Hh[0] * Hh[0] + Hh[1] * Hh[1] + Hh[2] * Hh[2]);
+    const double nh = hn > 0 ? std::max(0.0, (n[0] * Hh[0] + n[1] * Hh[1] + n[2] * Hh[2]) / hn) : 0.0;
+    const double diff = light.ambient + light.diffuse * nl;
+    const double spec = nl > 0 ? mesh.specular * std::pow(nh, static_cast<double>(mesh.shininess)) : 0.0;
+    p.s = static_cast<float>(v.s * w);
+    p.t = static_cast<float>(v.t * w);
+    p.mask = static_cast<float>(v.mask * w);
+    p.diff = static_cast<float>(diff * w);
+    p.spec = static_cast<float>(spec * w);
+  }
+
+  const Texture &tex = *mesh.texture;
+  const int W = static_cast<int>(m_W), H = static_cast<int>(m_H);
+  for (const auto &tri : mesh.triangles) {
+    const ProjVertex &a = m_proj[tri[0]], &b = m_proj[tri[1]], &c = m_proj[tri[2]];
+    if (!a.valid || !b.valid || !c.valid)
+      continue;
+    float area = (b.X - a.X) * (c.Y - a.Y) - (c.X - a.X) * (b.Y - a.Y);
+    if (std::fabs(area) < 1e-12f)
+      continue;
+    const int x0 = std::max(0, static_cast<int>(std::ceil(std::min({a.X, b.X, c.X}))));
+    const int x1 = std::min(W - 1, static_cast<int>(std::floor(std::max({a.X, b.X, c.X}))));
+    const int y0 = std::max(0, static_cast<int>(std::ceil(std::min({a.Y, b.Y, c.Y}))));
+    const int y1 = std::min(H - 1, static_cast<int>(std::floor(std::max({a.Y, b.Y, c.Y}))));
+    if (x0 > x1 || y0 > y1)
+      continue;
+    const float inv = 1.f / area;
+    // Barycentric steps along x of the edge functions opposite a, b and c.
+    const float ea_dx = (b.Y - c.Y) * inv, eb_dx = (c.Y - a.Y) * inv, ec_dx = (a.Y - b.Y) * inv;
+    for (int y = y0; y <= y1; ++y) {
+      const float fy = static_cast<float>(y), fx0 = static_cast<float>(x0);
+      float ba = ((b.X - fx0) * (c.Y - fy) - (c.X - fx0) * (b.Y - fy)) * inv;
+      float bb = ((c.X - fx0) * (a.Y - fy) - (a.X - fx0) * (c.Y - fy)) * inv;
+      float bc = 1.f - ba - bb;
+      std::size_t idx = static_cast<std::size_t>(y) * m_W + static_cast<std::size_t>(x0);
+      for (int x = x0; x <= x1; ++x, ++idx, ba += ea_dx, bb += eb_dx, bc += ec_dx) {
+        if (ba < 0.f || bb < 0.f || bc < 0.f)
+          continue;
+        const float w = ba * a.w + bb * b.w + bc * c.w;
+        if (w <= m_invDepth[idx])
+          continue;
+        const float iz = 1.f / w;
+        if (mesh.useMask && (ba * a.mask + bb * b.mask + bc * c.mask) * iz > 0.f)
+          continue;
+        const float s = (ba * a.s + bb * b.s + bc * c.s) * iz;
+        const float t = (ba * a.t + bb * b.t + bc * c.t) * iz;
+        const float diff = (ba * a.diff + bb * b.diff + bc * c.diff) * iz;
+        const float spec = (ba * a.spec + bb * b.spec + bc * c.spec) * iz;
+        float col[3];
+        tex.sample(s, t, col);
+        m_invDepth[idx] = w;
+        m_id[idx] = id;
+        float *o = &m_color[3 * idx];
+        o[0] = col[0] * diff + spec;
+        o[1] = col[1] * diff + spec;
+        o[2] = col[2] * diff + spec;
+      }
+    }
+  }
+}
+
+void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const
+{
+  out.resize(m_h, m_w);
+  const float norm = static_cast<float>(255.0 * exposure / (m_ss * m_ss));
+  for (unsigned v = 0; v < m_h; ++v)
+    for (unsigned u = 0; u < m_w; ++u) {
+      float acc[3] = {0, 0, 0};
+      for (unsigned j = 0; j < m_ss; ++j) {
+        const float *p = &m_color[3 * ((static_cast<std::size_t>(v) * m_ss + j) * m_W + static_cast<std::size_t>(u) * m_ss)];
+        for (unsigned i = 0; i < m_ss; ++i, p += 3) {
+          acc[0] += p[0];
+          acc[1] += p[1];
+          acc[2] += p[2];
+        }
+      }
+      unsigned char c[3];
+      for (int k = 0; k < 3; ++k) {
+        double val = acc[k] * norm;
+        if (noiseSigma > 0)
+          val += noiseSigma * static_cast<double>(fastGaussian(noiseSeed, (static_cast<std::uint64_t>(v) * m_w + u) * 3 + static_cast<std::uint64_t>(k)));
+        c[k] = static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, val))));
+      }
+      out[v][u] = vpRGBa(c[0], c[1], c[2], 255);
+    }
+}
+
+double Rasterizer::coverage(unsigned u, unsigned v, std::uint8_t id) const
+{
+  if (u >= m_w || v >= m_h)
+    return 0.0;
+  unsigned n = 0;
+  for (unsigned j = 0; j < m_ss; ++j)
+    for (unsigned i = 0; i < m_ss; ++i)
+      n += m_id[(static_cast<std::size_t>(v) * m_ss + j) * m_W + static_cast<std::size_t>(u) * m_ss + i] == id;
+  return static_cast<double>(n) / (m_ss * m_ss);
+}
+
+} // namespace pm::sim

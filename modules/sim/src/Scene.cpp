@@ -1,0 +1,106 @@
+#include "pm/sim/Scene.h"
+
+#include <cmath>
+
+#include "pm/core/Error.h"
+#include "pm/sim/Noise.h"
+
+namespace pm::sim {
+
+void SceneParams::validate() const
+{
+  auto check = [](bool ok, const char *what) {
+    if (!ok)
+      throw Error(std::string("scene parameter ") + what);
+  };
+  check(supersampling >= 1 && supersampling <= 4, "supersampling must lie in [1, 4]");
+  check(noiseSigma >= 0 && noiseSigma <= 100, "noise sigma must lie in [0, 100] grey levels");
+  check(exposure > 0 && exposure <= 10, "exposure must lie in (0, 10]");
+  check(ambient >= 0 && diffuse >= 0 && specular >= 0, "ambient, diffuse and specular must be non-negative");
+  check(meshStepMm >= 0.2 && meshStepMm <= 10, "mesh step must lie in [0.2, 10] mm");
+  check(std::isfinite(lightDirHand[0] + lightDirHand[1] + lightDirHand[2]) &&
+            std::fabs(lightDirHand[0]) + std::fabs(lightDirHand[1]) + std::fabs(lightDirHand[2]) > 0,
+        "light direction must be a non-zero vector");
+  check(occluderSizeMm[0] > 0 && occluderSizeMm[1] > 0, "occluder size must be positive");
+}
+
+Scene::Scene(const TargetShape &target, const SceneParams &params) : m_target(target), m_params(params)
+{
+  m_params.validate();
+  m_toy = buildTargetMesh(m_target, m_params.meshStepMm, static_cast<float>(m_params.specular));
+  m_backdrop = makeBackdropMesh(makeSeaBottomTexture(m_params.seaBottom), m_params.seaBottom,
+                                m_target.info.depthMm / 2 + m_params.backdropGapMm);
+  // The occluder: a strand of seaweed, a flat olive-green quad with a little texture.
+  auto tex = std::make_shared<Texture>();
+  tex->width = 8;
+  tex->height = 64;
+  tex->rgb.resize(3 * 8 * 64);
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const double n = 0.8 + 0.4 * latticeValue(i, j, 5);
+      std::uint8_t *o = &tex->rgb[3 * static_cast<std::size_t>(j * 8 + i)];
+      o[0] = static_cast<std::uint8_t>(60 * n);
+      o[1] = static_cast<std::uint8_t>(120 * n);
+      o[2] = static_cast<std::uint8_t>(40 * n);
+    }
+  const float cx = static_cast<float>(m_params.occluderCentreMm[0] * 1e-3), cy = static_cast<float>(m_params.occluderCentreMm[1] * 1e-3);
+  const float cz = static_cast<float>(m_params.occluderCentreMm[2] * 1e-3);
+  const float hw = static_cast<float>(m_params.occluderSizeMm[0] / 2e3), hh = static_cast<float>(m_params.occluderSizeMm[1] / 2e3);
+  m_occluder.vertices = {{cx - hw, cy - hh, cz, 0, 0, -1, 0, 0, -1},
+                         {cx + hw, cy - hh, cz, 0, 0, -1, 7, 0, -1},
+                         {cx + hw, cy + hh, cz, 0, 0, -1, 7, 63, -1},
+                         {cx - hw, cy + hh, cz, 0, 0, -1, 0, 63, -1}};
+  m_occluder.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m_occluder.texture = tex;
+}
+
+void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                   unsigned stream, vpImage<vpRGBa> &out, bool withTarget) const
+{
+  if (raster.width() != camera.width || raster.height() != camera.height)
+    raster.reset(camera.width, camera.height, m_params.supersampling);
+  raster.clear(0.04f, 0.06f, 0.09f); // the dark tank beyond the panel
+  const vpHomogeneousMatrix cMh = camera.cMh();
+  const vpHomogeneousMatrix cMo = cMh * hMo;
+  Lighting light;
+  light.ambient = m_params.ambient;
+  light.diffuse = m_params.diffuse;
+  for (unsigned i = 0; i < 3; ++i) {
+    light.dirCamera[i] = 0;
+    for (unsigned k = 0; k < 3; ++k)
+      light.dirCamera[i] += cMh[i][k] * m_params.lightDirHand[k];
+  }
+  raster.draw(m_backdrop, cMo, camera.cam, light, 1);
+  if (withTarget)
+    raster.draw(m_toy, cMo, camera.cam, light, 2);
+  if (m_params.occluder)
+    raster.draw(m_occluder, cMo, camera.cam, light, 3);
+  const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
+  raster.resolve(out, m_params.exposure, m_params.noiseSigma, noiseSeed);
+}
+
+StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const
+{
+  StereoImages im;
+  Rasterizer r[2];
+  const RigCamera *cams[2] = {&rig.left, &rig.right};
+  vpImage<vpRGBa> *outs[2] = {&im.left, &im.right};
+#pragma omp parallel for num_threads(2)
+  for (int i = 0; i < 2; ++i)
+    render(r[i], *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i]);
+  return im;
+}
+
+void Scene::renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, double distanceMm,
+                         vpImage<vpRGBa> &background, vpImage<vpRGBa> &withTarget) const
+{
+  if (!(distanceMm > 0))
+    throw Error("photo distance must be positive");
+  const RigCamera photo{"photo", cam, w, h, vpHomogeneousMatrix()};
+  const vpHomogeneousMatrix hMo(0, 0, distanceMm * 1e-3, 0, 0, 0);
+  Rasterizer r;
+  render(r, photo, hMo, 0, 2, background, false);
+  render(r, photo, hMo, 0, 3, withTarget, true);
+}
+
+} // namespace pm::sim
