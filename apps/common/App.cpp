@@ -32,6 +32,9 @@ int run(CLI::App &app, int argc, char **argv, const std::function<int()> &body)
   }
   try {
     return body();
+  } catch (const CLI::ParseError &e) {
+    std::cerr << app.get_name() << ": usage error: " << e.what() << " (see --help)" << std::endl;
+    return 2;
   } catch (const pm::Error &e) {
     std::cerr << "error: " << e.what() << std::endl;
   } catch (const vpException &e) {

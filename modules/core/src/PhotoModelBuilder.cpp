@@ -16,8 +16,11 @@ void PhotoModelParams::validate() const
       throw Error(std::string("photo-model parameter ") + what);
   };
   check(regionHueTolDeg > 0 && regionHueTolDeg < 180, "region hue tolerance must lie in (0, 180) degrees");
+  check(regionSatTol > 0 && regionSatTol <= 1, "region saturation tolerance must lie in (0, 1]");
+  check(regionValTol > 0 && regionValTol <= 1, "region value tolerance must lie in (0, 1]");
   check(minSaturation >= 0 && minSaturation < 1, "minimum saturation must lie in [0, 1)");
   check(minValue >= 0 && minValue < 1, "minimum value must lie in [0, 1)");
+  check(minHueFromBackgroundDeg >= 0 && minHueFromBackgroundDeg < 180, "minimum hue distance from the background must lie in [0, 180)");
   check(cleanRadiusPx >= 0 && cleanRadiusPx <= 50, "clean radius must lie in [0, 50] px");
   check(stepPx >= 1 && stepPx <= 200, "sampling step must lie in [1, 200] px");
   check(stripGapPx >= 1 && stripGapPx <= 200, "strip gap must lie in [1, 200] px");
@@ -35,8 +38,10 @@ cv::Mat regionMask(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &tg, const P
   for (int v = 0; v < h; ++v)
     for (int u = 0; u < w; ++u) {
       const Hsv a = rgbToHsv(bg[v][u]), b = rgbToHsv(tg[v][u]);
-      const bool meaningful = b.s >= p.minSaturation && b.v >= p.minValue;
-      if (meaningful && hueDistance(a.h, b.h) > p.regionHueTolDeg)
+      const bool hues = b.s >= p.minSaturation && b.v >= p.minValue && a.s >= p.minSaturation && a.v >= p.minValue;
+      const bool differs = (hues && hueDistance(a.h, b.h) > p.regionHueTolDeg) ||
+                           std::fabs(a.s - b.s) > p.regionSatTol || std::fabs(a.v - b.v) > p.regionValTol;
+      if (differs)
         m.at<unsigned char>(v, u) = 255;
     }
   if (p.cleanRadiusPx > 0) {
@@ -111,9 +116,9 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
   const cv::Mat region = regionMask(background, withTarget, params);
   const cv::Moments mo = cv::moments(region, true);
   if (mo.m00 < 1)
-    throw Error("photo-model: no pixel of the target photo differs in hue from the background by more than " +
-                std::to_string(params.regionHueTolDeg) + " deg: S_in would be empty (is the target in the photo, "
-                "and of another colour than the background?)");
+    throw Error("photo-model: no pixel of the target photo differs in colour from the background photo (hue by more "
+                "than " + std::to_string(static_cast<int>(params.regionHueTolDeg)) + " deg): S_in would be empty (is the "
+                "target in the photo, and of another colour than the background?)");
   m.centroidU = mo.m10 / mo.m00;
   m.centroidV = mo.m01 / mo.m00;
   const double sx = distanceMm / m.px, sy = distanceMm / m.py;
@@ -139,14 +144,17 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
       if (iu < 0 || iv < 0 || iu >= w || iv >= h || !region.at<unsigned char>(iv, iu))
         continue;
       const Hsv c = rgbToHsv(withTarget[static_cast<unsigned>(iv)][static_cast<unsigned>(iu)]);
-      if (c.s < params.minSaturation || c.v < params.minValue)
+      if (c.s < params.minSaturation || c.v < params.minValue ||
+          hueDistance(c.h, m.backgroundHue) <= params.minHueFromBackgroundDeg)
         continue;
       m.inner.push_back(toModel(iu, iv, c.h));
       inHues.push_back(c.h);
     }
   if (m.inner.empty())
-    throw Error("photo-model: the target region has no saturated pixel on the sampling grid: S_in is empty "
-                "(lower the sampling step or the minimum saturation)");
+    throw Error("photo-model: S_in is empty: no saturated point of the target region differs in hue from the "
+                "background (" + std::to_string(static_cast<int>(m.backgroundHue)) + " deg) by more than " +
+                std::to_string(static_cast<int>(params.minHueFromBackgroundDeg)) +
+                " deg (a target of the background's colour cannot be told from it by hue)");
   m.targetHue = circularMeanHue(inHues);
 
   // S_out: offset outlines of the region, sampled along their length.

@@ -39,7 +39,9 @@ vpCameraParameters readCameraXml(const std::string &xml, const std::string &name
     vpXmlParserCamera parser;
     status = parser.parse(cam, xml, name, vpCameraParameters::perspectiveProjWithoutDistortion, w, h);
   } catch (const vpException &e) {
-    throw Error("the intrinsics file '" + xml + "' cannot be read: " + e.getStringMessage());
+    // ViSP refuses some values itself (e.g. "Camera parameter px = 0").
+    throw Error("camera '" + name + "' in '" + xml + "' is invalid: " + e.getStringMessage() +
+                " (focal lengths px, py must be positive)");
   }
   if (status != vpXmlParserCamera::SEQUENCE_OK)
     throw Error("no camera named '" + name + "' of size " + std::to_string(w) + "x" + std::to_string(h) +

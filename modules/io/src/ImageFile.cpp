@@ -1,7 +1,14 @@
 #include "pm/io/ImageFile.h"
 
+#include <algorithm>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <memory>
 
+#include <jpeglib.h>
+#include <png.h>
 #include <visp3/core/vpException.h>
 #include <visp3/io/vpImageIo.h>
 
@@ -9,18 +16,127 @@
 
 namespace pm::io {
 
+namespace {
+
+std::string lowerExtension(const std::string &path)
+{
+  std::string e = std::filesystem::path(path).extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return e;
+}
+
+bool startsWith(const std::string &path, const unsigned char *magic, std::size_t n)
+{
+  unsigned char buf[8] = {0};
+  std::unique_ptr<FILE, int (*)(FILE *)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  return f && std::fread(buf, 1, n, f.get()) == n && std::memcmp(buf, magic, n) == 0;
+}
+
+// PNG through libpng's simplified API: errors come back as text, nothing is printed, a
+// truncated file is an error (not a half-decoded image).
+vpImage<vpRGBa> readPng(const std::string &path)
+{
+  png_image img;
+  std::memset(&img, 0, sizeof img);
+  img.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&img, path.c_str()))
+    throw Error("cannot read image '" + path + "': not a valid PNG (" + img.message + ")");
+  img.format = PNG_FORMAT_RGBA;
+  if (img.width == 0 || img.height == 0 || static_cast<double>(img.width) * img.height > 1e9) {
+    png_image_free(&img);
+    throw Error("cannot read image '" + path + "': unreasonable size " + std::to_string(img.width) + "x" +
+                std::to_string(img.height));
+  }
+  vpImage<vpRGBa> I(img.height, img.width);
+  if (!png_image_finish_read(&img, nullptr, I.bitmap, 0, nullptr))
+    throw Error("cannot read image '" + path + "': corrupt or truncated PNG (" + img.message + ")");
+  return I;
+}
+
+struct JpegError
+{
+  jpeg_error_mgr mgr;
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+
+void jpegErrorExit(j_common_ptr c)
+{
+  JpegError *e = reinterpret_cast<JpegError *>(c->err);
+  (*c->err->format_message)(c, e->message);
+  std::longjmp(e->jump, 1);
+}
+
+void jpegOutputMessage(j_common_ptr c)
+{
+  JpegError *e = reinterpret_cast<JpegError *>(c->err);
+  (*c->err->format_message)(c, e->message); // keep the warning (e.g. premature end) for our report
+}
+
+// JPEG through libjpeg with an error manager that reports instead of printing or exiting;
+// a warning (premature end of data, corrupt data) makes the file unreadable.
+vpImage<vpRGBa> readJpeg(const std::string &path)
+{
+  std::unique_ptr<FILE, int (*)(FILE *)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f)
+    throw Error("cannot open image '" + path + "'");
+  jpeg_decompress_struct cinfo;
+  JpegError err;
+  err.message[0] = 0;
+  cinfo.err = jpeg_std_error(&err.mgr);
+  err.mgr.error_exit = jpegErrorExit;
+  err.mgr.output_message = jpegOutputMessage;
+  std::vector<unsigned char> row;
+  vpImage<vpRGBa> I;
+  if (setjmp(err.jump)) {
+    jpeg_destroy_decompress(&cinfo);
+    throw Error("cannot read image '" + path + "': not a valid JPEG (" + err.message + ")");
+  }
+  jpeg_create_decompress(&cinfo);
+  jpeg_stdio_src(&cinfo, f.get());
+  jpeg_read_header(&cinfo, TRUE);
+  cinfo.out_color_space = JCS_RGB;
+  jpeg_start_decompress(&cinfo);
+  if (static_cast<double>(cinfo.output_width) * cinfo.output_height > 1e9 || cinfo.output_components != 3) {
+    jpeg_destroy_decompress(&cinfo);
+    throw Error("cannot read image '" + path + "': unsupported JPEG");
+  }
+  I.resize(cinfo.output_height, cinfo.output_width);
+  row.resize(3 * static_cast<std::size_t>(cinfo.output_width));
+  while (cinfo.output_scanline < cinfo.output_height) {
+    JSAMPROW r = row.data();
+    const unsigned v = cinfo.output_scanline;
+    jpeg_read_scanlines(&cinfo, &r, 1);
+    for (unsigned u = 0; u < cinfo.output_width; ++u)
+      I[v][u] = vpRGBa(row[3 * u], row[3 * u + 1], row[3 * u + 2], 255);
+  }
+  jpeg_finish_decompress(&cinfo);
+  const long warnings = cinfo.err->num_warnings;
+  jpeg_destroy_decompress(&cinfo);
+  if (warnings > 0)
+    throw Error("cannot read image '" + path + "': corrupt or truncated JPEG (" + err.message + ")");
+  return I;
+}
+
+} // namespace
+
 vpImage<vpRGBa> readColorImage(const std::string &path)
 {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error("image '" + path + "' does not exist or is not a file");
-  vpImage<vpRGBa> I;
+  static const unsigned char pngMagic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static const unsigned char jpegMagic[3] = {0xff, 0xd8, 0xff};
+  const std::string ext = lowerExtension(path);
+  if (startsWith(path, pngMagic, 8) || ext == ".png")
+    return readPng(path);
+  if (startsWith(path, jpegMagic, 3) || ext == ".jpg" || ext == ".jpeg")
+    return readJpeg(path);
+  vpImage<vpRGBa> I; // other formats (PPM, PGM, ...) through ViSP
   try {
     vpImageIo::read(I, path);
   } catch (const vpException &e) {
     throw Error("cannot read image '" + path + "': not a readable PNG/JPEG/PNM image (" + e.getStringMessage() + ")");
-  } catch (const std::exception &e) {
-    throw Error("cannot read image '" + path + "': " + e.what());
   }
   if (I.getSize() == 0)
     throw Error("cannot read image '" + path + "': it is empty or corrupt");

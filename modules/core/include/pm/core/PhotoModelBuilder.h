@@ -5,13 +5,16 @@
   distance: (a) the background alone, (b) the target on that background.
 
   1. H_B is the circular mean hue of photo (a).
-  2. A pixel belongs to the target when its hue in (b) differs from the hue of the same pixel
-     in (a) by more than regionHueTolDeg, and it is saturated and bright enough for its hue to
-     mean something. The largest connected region, cleaned by opening and closing, with its
+  2. A pixel belongs to the target when its colour in (b) differs from the same pixel in (a):
+     its hue by more than regionHueTolDeg (where both are saturated and bright enough for a hue
+     to mean something), or its saturation or value by more than regionSatTol / regionValTol
+     (white, grey or black parts of a target have no hue, but they are not the background). The largest connected region, cleaned by opening and closing, with its
      small holes filled (spots of a background-like hue on the target) and its large ones kept
      (background seen between legs), is the target region; its centroid is the model origin.
-  3. S_in: region pixels on a grid of stepPx (aligned on the centroid) whose saturation is at
-     least minSaturation, each with its hue in (b).
+  3. S_in: region pixels on a grid of stepPx (aligned on the centroid) whose hue means something
+     (saturation >= minSaturation, value >= minValue) and differs from H_B by more than
+     minHueFromBackgroundDeg (a point of the background's hue would score as target anywhere on
+     the background), each with its hue in (b).
   4. S_out: stripRows rows of points spread over [stripGapPx, stripGapPx + stripWidthPx] pixels
      outside the region boundary, sampled every stepPx along the offset outline.
 */
@@ -26,9 +29,12 @@ namespace pm {
 struct PhotoModelParams
 {
   double regionHueTolDeg = 30.0; //!< hue change that marks a target pixel (deg)
+  double regionSatTol = 0.3;     //!< saturation change that marks a target pixel
+  double regionValTol = 0.3;     //!< value change that marks a target pixel
   double minSaturation = 0.15;   //!< below this a pixel's hue is noise
   double minValue = 0.08;        //!< below this a pixel's hue is noise
-  int cleanRadiusPx = 2;         //!< morphological open/close radius on the region mask
+  double minHueFromBackgroundDeg = 30.0; //!< S_in points need a hue this far from H_B (deg)
+  int cleanRadiusPx = 1;         //!< morphological open/close radius on the region mask
   int maxHoleAreaPx = 150;       //!< holes in the region up to this area are filled (spots), larger ones kept
   double stepPx = 8.0;           //!< sampling step of S_in (grid) and along S_out (px)
   double stripGapPx = 6.0;       //!< distance of the first S_out row from the region (px)

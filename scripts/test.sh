@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# The whole test suite through CTest: installs what is missing, builds, runs.
+#   bash scripts/test.sh             Release build in build/
+#   bash scripts/test.sh --sanitize  AddressSanitizer + UBSan build in build-asan/
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/setup.sh
+mode=release
+case "${1:-}" in
+  "") ;;
+  --sanitize) mode=sanitize ;;
+  *) echo "usage: bash scripts/test.sh [--sanitize]" >&2; exit 2 ;;
+esac
+pm_setup "$mode"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:${ASAN_OPTIONS:-}"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
+ctest --test-dir "$PM_BUILD_DIR" --output-on-failure -j "$(nproc)"

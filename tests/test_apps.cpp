@@ -1,0 +1,145 @@
+// The programs' contract: --help, usage errors (2), runtime errors (1, one line "error: ..."),
+// no half-written output, and the outputs of a successful run.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "TestSupport.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/RigFile.h"
+
+using pm::test::runProgram;
+using pm::test::TempDir;
+
+namespace {
+
+void expectOneLineError(const pm::test::RunResult &r, const std::string &fragment)
+{
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+}
+
+} // namespace
+
+TEST(Apps, HelpExitsZeroAndShowsDefaults)
+{
+  for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig"}) {
+    const auto r = runProgram(p, "--help");
+    EXPECT_EQ(r.status, 0) << p;
+    EXPECT_NE(r.out.find("--out"), std::string::npos) << p;
+  }
+  EXPECT_NE(runProgram("pm-make-model", "--help").out.find("500"), std::string::npos); // default distance shown
+}
+
+TEST(Apps, UsageErrorsExitTwo)
+{
+  TempDir d("apps");
+  EXPECT_EQ(runProgram("pm-make-model", "--no-such-option").status, 2);
+  EXPECT_EQ(runProgram("pm-make-model", "").status, 2); // --out is required
+  EXPECT_EQ(runProgram("pm-make-model", "--out " + d.path() + " --background x.png").status, 2); // needs --photo
+  EXPECT_EQ(runProgram("pm-render", "--out " + d.path() + " --pose 1,2,3").status, 2);
+  EXPECT_EQ(runProgram("pm-make-model", "--out " + d.path() + " --distance-mm -5").status, 2);
+}
+
+TEST(Apps, MakeModelFromTheSimulator)
+{
+  TempDir d("apps");
+  const auto r = runProgram("pm-make-model", "--target C12 --quiet --out " + d.file("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(pm::test::listFiles(d.file("out")),
+            (std::vector<std::string>{"model.json", "model.png", "overlay.png", "photo_background.png",
+                                      "photo_target.png", "summary.json"}));
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("out/summary.json")));
+  EXPECT_GT(s.at("n_in").get<int>(), 100);
+  EXPECT_GT(s.at("n_out").get<int>(), 100);
+  EXPECT_GT(s.at("background_hue_deg").get<double>(), 190.0); // the sea bottom is blue
+  EXPECT_LT(s.at("background_hue_deg").get<double>(), 230.0);
+  const double th = s.at("target_hue_deg").get<double>(); // the crab is red
+  EXPECT_TRUE(th < 30.0 || th > 340.0) << th;
+  EXPECT_EQ(pm::io::readColorImage(d.file("out/overlay.png")).getWidth(), 640u);
+
+  // The same photos given as a user's photo pair make the same model.
+  const auto u = runProgram("pm-make-model", "--quiet --background " + d.file("out/photo_background.png") + " --photo " +
+                                                 d.file("out/photo_target.png") + " --out " + d.file("user"));
+  ASSERT_EQ(u.status, 0) << u.err;
+  const auto su = nlohmann::json::parse(pm::test::readText(d.file("user/summary.json")));
+  EXPECT_EQ(su.at("n_in"), s.at("n_in"));
+  EXPECT_EQ(su.at("n_out"), s.at("n_out"));
+}
+
+TEST(Apps, MakeModelFromAUserTexture)
+{
+  TempDir d("apps");
+  vpImage<vpRGBa> img(120, 200, vpRGBa(230, 180, 30));
+  for (unsigned v = 40; v < 80; ++v)
+    for (unsigned u = 60; u < 140; ++u)
+      img[v][u] = vpRGBa(200, 40, 120);
+  pm::io::writeImage(img, d.file("toy.png"));
+  const auto r = runProgram("pm-make-model", "--quiet --texture " + d.file("toy.png") + " --width-mm 120 --out " + d.file("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("out/summary.json")));
+  EXPECT_GT(s.at("n_in").get<int>(), 100);
+}
+
+TEST(Apps, BadInputsAreOneLineErrorsAndLeaveNothing)
+{
+  TempDir d("apps");
+  const std::string out = " --out " + d.file("out");
+  vpImage<vpRGBa> a(480, 640, vpRGBa(30, 90, 170)), b(240, 320, vpRGBa(30, 90, 170));
+  pm::io::writeImage(a, d.file("a.png"));
+  pm::io::writeImage(b, d.file("small.png"));
+  pm::test::writeText(d.file("corrupt.png"), "\x89PNG\r\n\x1a\n this is not a png at all");
+  const std::string png = pm::test::readText(d.file("a.png"));
+  pm::test::writeText(d.file("truncated.png"), png.substr(0, png.size() / 2));
+  pm::test::writeText(d.file("truncated.jpg"), "\xff\xd8\xff\xe0 and nothing after");
+
+  expectOneLineError(runProgram("pm-make-model", "--background " + d.file("missing.png") + " --photo " + d.file("a.png") + out),
+                     "missing.png");
+  expectOneLineError(runProgram("pm-make-model", "--background " + d.file("a.png") + " --photo " + d.file("corrupt.png") + out),
+                     "corrupt.png");
+  expectOneLineError(runProgram("pm-make-model", "--background " + d.file("a.png") + " --photo " + d.file("truncated.png") + out),
+                     "truncated.png");
+  expectOneLineError(runProgram("pm-make-model", "--background " + d.file("truncated.jpg") + " --photo " + d.file("a.png") + out),
+                     "truncated.jpg");
+  expectOneLineError(runProgram("pm-make-model", "--background " + d.file("a.png") + " --photo " + d.file("small.png") + out),
+                     "320x240");
+  expectOneLineError(runProgram("pm-make-model", "--background " + d.file("a.png") + " --photo " + d.file("a.png") + out),
+                     "S_in");
+
+  // A rig whose camera has a non-positive focal length.
+  ASSERT_EQ(runProgram("pm-make-rig", "--quiet --px 0 --out " + d.file("rig")).status, 1);
+  ASSERT_EQ(runProgram("pm-make-rig", "--quiet --out " + d.file("rig")).status, 0);
+  std::string xml = pm::test::readText(d.file("rig/rig_cameras.xml"));
+  xml.replace(xml.find("<px>754</px>"), 12, "<px>0</px>");
+  pm::test::writeText(d.file("rig/rig_cameras.xml"), xml);
+  expectOneLineError(runProgram("pm-make-model", "--target C01 --rig " + d.file("rig/rig.json") + out), "focal");
+  expectOneLineError(runProgram("pm-render", "--target C01 --rig " + d.file("rig/rig.json") + out), "focal");
+  expectOneLineError(runProgram("pm-render", "--target C99" + out), "C99");
+  expectOneLineError(runProgram("pm-render", "--pose 0,0,500,0.9,0.9,0" + out), "|eps| <= 1");
+
+  // Nothing was written by the failed runs, not even partial files.
+  EXPECT_TRUE(pm::test::listFiles(d.file("out")).empty());
+}
+
+TEST(Apps, RenderWritesStereoPairs)
+{
+  TempDir d("apps");
+  const auto r = runProgram("pm-render", "--target C04 --repeat 1 --quiet --occluder --out " + d.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto L = pm::io::readColorImage(d.file("C04_left.png"));
+  EXPECT_EQ(L.getWidth(), 640u);
+  EXPECT_EQ(L.getHeight(), 480u);
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("summary.json")));
+  EXPECT_GT(s.at("render_stereo_ms_mean").get<double>(), 0.0);
+}
+
+TEST(Apps, MakeRigWritesALoadableRig)
+{
+  TempDir d("apps");
+  ASSERT_EQ(runProgram("pm-make-rig", "--quiet --toe-in-deg 0 --baseline-mm 200 --out " + d.path()).status, 0);
+  const pm::StereoRig rig = pm::io::loadRig(d.file("rig.json"));
+  EXPECT_NEAR(rig.baseline(), 0.2, 1e-9);
+  EXPECT_NEAR(rig.left.hMc.getThetaUVector().getTheta(), 0.0, 1e-12);
+}

@@ -1,0 +1,129 @@
+// Pose parameter phi <-> hMo (Eq. 7 of the paper).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <visp3/core/vpQuaternionVector.h>
+#include <visp3/core/vpRotationMatrix.h>
+
+#include "pm/core/Error.h"
+#include "pm/core/Pose.h"
+
+namespace {
+
+pm::Phi randomPhi(std::mt19937 &rng)
+{
+  std::uniform_real_distribution<double> pos(-180, 180), z(320, 680), axis(-1, 1), ang(0, M_PI);
+  double a[3];
+  double n = 0;
+  do {
+    for (double &c : a)
+      c = axis(rng);
+    n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  } while (n < 1e-3 || n > 1);
+  const double s = std::sin(ang(rng) / 2);
+  return {pos(rng), pos(rng), z(rng), s * a[0] / n, s * a[1] / n, s * a[2] / n};
+}
+
+} // namespace
+
+TEST(Pose, RoundTripPhiToMatrixToPhi)
+{
+  std::mt19937 rng(42);
+  for (int i = 0; i < 1000; ++i) {
+    const pm::Phi p = randomPhi(rng);
+    const pm::Phi q = pm::fromHomogeneousMatrix(pm::toHomogeneousMatrix(p));
+    for (std::size_t k = 0; k < 6; ++k)
+      EXPECT_NEAR(p[k], q[k], k < 3 ? 1e-9 : 1e-9) << "component " << k << " of " << p.toString();
+  }
+}
+
+TEST(Pose, RoundTripMatrixToPhiToMatrix)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-M_PI, M_PI);
+  for (int i = 0; i < 500; ++i) {
+    const vpHomogeneousMatrix M(0.1 * u(rng), 0.1 * u(rng), 0.5 + 0.05 * u(rng), u(rng) / 2, u(rng) / 2, u(rng) / 2);
+    const vpHomogeneousMatrix N = pm::toHomogeneousMatrix(pm::fromHomogeneousMatrix(M));
+    for (unsigned r = 0; r < 3; ++r)
+      for (unsigned c = 0; c < 4; ++c)
+        EXPECT_NEAR(M[r][c], N[r][c], 1e-9);
+  }
+}
+
+TEST(Pose, Equation7AgreesWithViSPQuaternion)
+{
+  std::mt19937 rng(3);
+  for (int i = 0; i < 500; ++i) {
+    const pm::Phi p = randomPhi(rng);
+    const vpRotationMatrix R(vpQuaternionVector(p.e1, p.e2, p.e3, p.eta()));
+    const pm::Rot3 r = pm::rotationOf(p);
+    const vpHomogeneousMatrix M = pm::toHomogeneousMatrix(p);
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b) {
+        EXPECT_NEAR(r[3 * a + b], R[a][b], 1e-12);
+        EXPECT_NEAR(M[a][b], R[a][b], 1e-12);
+      }
+    EXPECT_NEAR(M[0][3], p.x * 1e-3, 1e-15);
+    EXPECT_NEAR(M[2][3], p.z * 1e-3, 1e-15);
+  }
+}
+
+TEST(Pose, EtaIsNonNegativeWhateverTheQuaternionSign)
+{
+  // The same rotation from q and -q: phi must come out with eta >= 0 both times.
+  const double e[3] = {0.2, -0.3, 0.1}, w = std::sqrt(1 - 0.04 - 0.09 - 0.01);
+  for (double s : {1.0, -1.0}) {
+    vpHomogeneousMatrix M;
+    M.insert(vpRotationMatrix(vpQuaternionVector(s * e[0], s * e[1], s * e[2], s * w)));
+    const pm::Phi p = pm::fromHomogeneousMatrix(M);
+    EXPECT_NEAR(p.e1, e[0], 1e-12);
+    EXPECT_NEAR(p.e2, e[1], 1e-12);
+    EXPECT_NEAR(p.e3, e[2], 1e-12);
+    EXPECT_GE(p.eta(), 0.0);
+  }
+}
+
+TEST(Pose, IdentityIsTheDesiredPose)
+{
+  const pm::Phi p{0, 0, 500, 0, 0, 0};
+  const vpHomogeneousMatrix M = pm::toHomogeneousMatrix(p);
+  EXPECT_TRUE(M.getRotationMatrix().isARotationMatrix());
+  EXPECT_NEAR(M[2][3], 0.5, 1e-15);
+  EXPECT_NEAR(M[0][0], 1.0, 1e-15);
+}
+
+TEST(Pose, HalfTurnHasUnitEps)
+{
+  vpHomogeneousMatrix M(0, 0, 0.5, 0, 0, M_PI); // 180 deg about z: eta = 0, |eps| = 1
+  const pm::Phi p = pm::fromHomogeneousMatrix(M);
+  EXPECT_NEAR(std::fabs(p.e3), 1.0, 1e-9);
+  EXPECT_TRUE(p.isValid());
+  const vpHomogeneousMatrix N = pm::toHomogeneousMatrix(p);
+  EXPECT_NEAR(N[0][0], -1.0, 1e-9);
+}
+
+TEST(Pose, EpsLongerThanOneIsRefusedWithAClearError)
+{
+  const pm::Phi p{0, 0, 500, 0.8, 0.7, 0.0}; // |eps| = 1.06
+  EXPECT_FALSE(p.isValid());
+  try {
+    pm::toHomogeneousMatrix(p);
+    FAIL() << "no error for |eps| > 1";
+  } catch (const pm::Error &e) {
+    EXPECT_NE(std::string(e.what()).find("|eps| <= 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Pose, NonFiniteIsRefused)
+{
+  EXPECT_THROW(pm::toHomogeneousMatrix({NAN, 0, 500, 0, 0, 0}), pm::Error);
+  EXPECT_THROW(pm::toHomogeneousMatrix({0, 0, 500, INFINITY, 0, 0}), pm::Error);
+}
+
+TEST(Pose, NonRigidMatrixIsRefused)
+{
+  vpHomogeneousMatrix M;
+  M[0][0] = 2.0; // a scale, not a rotation
+  EXPECT_THROW(pm::fromHomogeneousMatrix(M), pm::Error);
+}

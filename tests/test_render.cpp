@@ -1,0 +1,257 @@
+// The simulated cameras: rasterizer geometry, anti-aliasing, noise, exposure, relief, occluder.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/core/Hue.h"
+#include "pm/core/Pose.h"
+#include "pm/io/RigFile.h"
+#include "pm/sim/Rasterizer.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/TargetCatalog.h"
+
+namespace {
+
+const vpCameraParameters kCam(754, 754, 320, 240);
+
+//! A square of side 2*hw (m) at z = 0 of its frame, with a texture: left half red, right half green
+//! (or all white).
+pm::sim::Mesh square(double hw, bool white = false)
+{
+  auto tex = std::make_shared<pm::sim::Texture>();
+  tex->width = 2;
+  tex->height = 1;
+  tex->rgb = {255, 0, 0, 0, 255, 0};
+  if (white)
+    tex->rgb = {255, 255, 255, 255, 255, 255};
+  pm::sim::Mesh m;
+  const float h = static_cast<float>(hw);
+  m.vertices = {{-h, -h, 0, 0, 0, -1, 0, 0, -1}, {h, -h, 0, 0, 0, -1, 1, 0, -1}, {h, h, 0, 0, 0, -1, 1, 0, -1},
+                {-h, h, 0, 0, 0, -1, 0, 0, -1}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.texture = tex;
+  return m;
+}
+
+pm::StereoRig labRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
+
+//! Pixels (coverage > 0.5) of object \e id in the rasterizer's last image.
+std::vector<std::pair<unsigned, unsigned>> pixelsOf(const pm::sim::Rasterizer &r, std::uint8_t id)
+{
+  std::vector<std::pair<unsigned, unsigned>> p;
+  for (unsigned v = 0; v < r.height(); ++v)
+    for (unsigned u = 0; u < r.width(); ++u)
+      if (r.coverage(u, v, id) > 0.5)
+        p.emplace_back(u, v);
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
+double meanAbsDiff(const vpImage<vpRGBa> &a, const vpImage<vpRGBa> &b)
+{
+  double s = 0;
+  for (unsigned i = 0; i < a.getSize(); ++i)
+    s += std::abs(a.bitmap[i].R - b.bitmap[i].R) + std::abs(a.bitmap[i].G - b.bitmap[i].G) +
+         std::abs(a.bitmap[i].B - b.bitmap[i].B);
+  return s / (3.0 * a.getSize());
+}
+
+} // namespace
+
+TEST(Rasterizer, EdgesCoverTheExactAreaFraction)
+{
+  // Half-width so that the left edge falls at u = 320 - 75.25 = 244.75: pixel 245 is 3/4 covered.
+  const double hw = 75.25 * 0.5 / 754;
+  pm::sim::Rasterizer r;
+  r.reset(640, 480, 4);
+  r.clear(0, 0, 0);
+  r.draw(square(hw, true), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 9);
+  EXPECT_DOUBLE_EQ(r.coverage(245, 240, 9), 0.75);
+  EXPECT_DOUBLE_EQ(r.coverage(244, 240, 9), 0.0);
+  EXPECT_DOUBLE_EQ(r.coverage(300, 240, 9), 1.0);
+  EXPECT_DOUBLE_EQ(r.coverage(395, 240, 9), 0.75); // right edge at 395.25
+  EXPECT_DOUBLE_EQ(r.coverage(396, 240, 9), 0.0);
+  // The resolved pixel blends: 3/4 of the square's colour.
+  vpImage<vpRGBa> I;
+  r.resolve(I, 1.0, 0.0, 0);
+  EXPECT_NEAR(I[240][245].R, 0.75 * I[240][260].R, 1.5);
+}
+
+TEST(Rasterizer, TextureOrientationAndDepthOrder)
+{
+  pm::sim::Rasterizer r;
+  r.reset(640, 480, 1);
+  r.clear(0, 0, 0);
+  r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 1);
+  vpImage<vpRGBa> I;
+  r.resolve(I, 1.0, 0.0, 0);
+  EXPECT_GT(I[240][260].R, 100); // left half red
+  EXPECT_LT(I[240][260].G, 60);
+  EXPECT_GT(I[240][380].G, 100); // right half green
+  // A farther square drawn after a nearer one stays hidden behind it.
+  r.draw(square(0.2), vpHomogeneousMatrix(0, 0, 0.6, 0, 0, 0), kCam, pm::sim::Lighting(), 2);
+  EXPECT_DOUBLE_EQ(r.coverage(320, 240, 1), 1.0);
+  EXPECT_DOUBLE_EQ(r.coverage(100, 240, 2), 1.0);
+}
+
+TEST(Scene, TargetAtTheTruePoseSitsAtBothImageCentres)
+{
+  const pm::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  for (const char *code : {"C04", "C12"}) {
+    const pm::sim::Scene scene(pm::sim::makeTarget(code, 0.5));
+    for (const pm::RigCamera *c : {&rig.left, &rig.right}) {
+      pm::sim::Rasterizer r;
+      vpImage<vpRGBa> I;
+      scene.render(r, *c, hMo, 0, 0, I);
+      const auto px = pixelsOf(r, 2);
+      ASSERT_GT(px.size(), 1000u) << code;
+      double su = 0, sv = 0;
+      for (const auto &p : px)
+        su += p.first, sv += p.second;
+      // Toe-in: the target's outline centroid is near the image centre (within the relief's parallax).
+      EXPECT_NEAR(su / static_cast<double>(px.size()), 320, 12) << code << " " << c->name;
+      EXPECT_NEAR(sv / static_cast<double>(px.size()), 240, 6) << code << " " << c->name;
+    }
+  }
+}
+
+TEST(Scene, SameSeedSameImageAndNoiseOfTheRequestedSigma)
+{
+  const pm::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 520, 0.05, 0, 0});
+  pm::sim::SceneParams clean;
+  clean.noiseSigma = 0;
+  pm::sim::SceneParams noisy = clean;
+  noisy.noiseSigma = 4;
+  const pm::sim::TargetShape shape = pm::sim::makeTarget("C09", 0.5);
+  const pm::sim::Scene a(shape, noisy), b(shape, clean);
+  const pm::sim::StereoImages i1 = a.renderStereo(rig, hMo, 3), i2 = a.renderStereo(rig, hMo, 3);
+  EXPECT_EQ(meanAbsDiff(i1.left, i2.left), 0.0);
+  EXPECT_EQ(meanAbsDiff(i1.right, i2.right), 0.0);
+  const pm::sim::StereoImages i3 = a.renderStereo(rig, hMo, 4); // next frame: new noise
+  EXPECT_GT(meanAbsDiff(i1.left, i3.left), 1.0);
+  // The noise is Gaussian with the requested sigma (mean |n| = sigma sqrt(2/pi)).
+  const pm::sim::StereoImages c = b.renderStereo(rig, hMo, 3);
+  EXPECT_NEAR(meanAbsDiff(i1.left, c.left), 4 * std::sqrt(2 / M_PI), 0.15);
+}
+
+TEST(Scene, ExposureScalesBrightness)
+{
+  const pm::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  pm::sim::SceneParams p;
+  p.noiseSigma = 0;
+  pm::sim::SceneParams dim = p;
+  dim.exposure = 0.5;
+  const pm::sim::TargetShape shape = pm::sim::makeTarget("C01", 0.5);
+  pm::sim::Rasterizer r;
+  vpImage<vpRGBa> I, J;
+  pm::sim::Scene(shape, p).render(r, rig.left, hMo, 0, 0, I);
+  pm::sim::Scene(shape, dim).render(r, rig.left, hMo, 0, 0, J);
+  double si = 0, sj = 0;
+  for (unsigned k = 0; k < I.getSize(); ++k) {
+    si += I.bitmap[k].R + I.bitmap[k].G + I.bitmap[k].B;
+    sj += J.bitmap[k].R + J.bitmap[k].G + J.bitmap[k].B;
+  }
+  EXPECT_NEAR(sj / si, 0.5, 0.01);
+}
+
+TEST(Scene, ReliefChangesTheViewAndHidesParts)
+{
+  // The jellyfish (110 mm deep) turned by eps2 = 0.3: its outline differs from the same toy made flat.
+  const pm::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0.3, 0});
+  pm::sim::TargetShape deep = pm::sim::makeTarget("C06", 0.5);
+  pm::sim::TargetShape flat = deep;
+  flat.info.depthMm = 0;
+  std::fill(flat.height.begin(), flat.height.end(), 0.f);
+  pm::sim::Rasterizer r;
+  vpImage<vpRGBa> I;
+  pm::sim::Scene(deep, pm::sim::SceneParams()).render(r, rig.left, hMo, 0, 0, I);
+  const auto a = pixelsOf(r, 2);
+  pm::sim::Scene(flat, pm::sim::SceneParams()).render(r, rig.left, hMo, 0, 0, I);
+  const auto b = pixelsOf(r, 2);
+  std::vector<std::pair<unsigned, unsigned>> both;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+  const double iou = static_cast<double>(both.size()) / static_cast<double>(a.size() + b.size() - both.size());
+  EXPECT_LT(iou, 0.85) << "relief should change the outline seen from the side";
+  // And the two cameras see the toy differently (not a shifted copy): compare the toy's pixel counts.
+  const pm::sim::Scene scene(deep, pm::sim::SceneParams());
+  pm::sim::Rasterizer rl, rr;
+  vpImage<vpRGBa> L, R;
+  scene.render(rl, rig.left, hMo, 0, 0, L);
+  scene.render(rr, rig.right, hMo, 0, 1, R);
+  const double nl = static_cast<double>(pixelsOf(rl, 2).size()), nr = static_cast<double>(pixelsOf(rr, 2).size());
+  EXPECT_GT(std::fabs(nl - nr) / std::max(nl, nr), 0.05);
+}
+
+TEST(Scene, OccluderHidesPartOfTheTarget)
+{
+  const pm::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const pm::sim::TargetShape shape = pm::sim::makeTarget("C12", 0.5);
+  pm::sim::SceneParams p;
+  pm::sim::Rasterizer r;
+  vpImage<vpRGBa> I;
+  pm::sim::Scene(shape, p).render(r, rig.left, hMo, 0, 0, I);
+  const auto open = pixelsOf(r, 2).size();
+  p.occluder = true;
+  pm::sim::Scene(shape, p).render(r, rig.left, hMo, 0, 0, I);
+  const auto hidden = pixelsOf(r, 2).size();
+  EXPECT_GT(pixelsOf(r, 3).size(), 2000u);
+  EXPECT_LT(static_cast<double>(hidden), 0.95 * static_cast<double>(open));
+}
+
+TEST(Targets, TwelveWithTheSizesOfFig8)
+{
+  ASSERT_EQ(pm::sim::targetCatalog().size(), 12u);
+  for (const auto &info : pm::sim::targetCatalog()) {
+    const pm::sim::TargetShape s = pm::sim::makeTarget(info.code, 0.5);
+    double w = 0, h = 0;
+    s.measuredExtent(w, h);
+    EXPECT_NEAR(w, info.widthMm, 0.02 * info.widthMm + 1) << info.code;
+    EXPECT_NEAR(h, info.heightMm, 0.02 * info.heightMm + 1) << info.code;
+    const float maxH = *std::max_element(s.height.begin(), s.height.end());
+    EXPECT_NEAR(maxH, info.depthMm, 0.01 * info.depthMm) << info.code;
+  }
+  EXPECT_TRUE(pm::sim::isCatalogTarget("c12"));
+  EXPECT_THROW(pm::sim::makeTarget("C13"), pm::Error);
+}
+
+TEST(Targets, GenerationIsDeterministic)
+{
+  const auto a = pm::sim::makeTarget("C08", 0.5), b = pm::sim::makeTarget("C08", 0.5);
+  EXPECT_EQ(a.rgb, b.rgb);
+  EXPECT_EQ(a.height, b.height);
+}
+
+TEST(Targets, UserImageWithAlphaOutline)
+{
+  vpImage<vpRGBa> img(50, 100, vpRGBa(200, 150, 20, 255));
+  for (unsigned v = 0; v < 50; ++v)
+    for (unsigned u = 0; u < 50; ++u)
+      img[v][u].A = 0; // left half transparent
+  const pm::sim::TargetShape s = pm::sim::targetFromImage(img, 100, 10, "test");
+  double w = 0, h = 0;
+  s.measuredExtent(w, h);
+  EXPECT_NEAR(w, 50, 1.5);
+  EXPECT_NEAR(h, 50, 1.5);
+  vpImage<vpRGBa> opaque(50, 100, vpRGBa(200, 150, 20, 255));
+  pm::sim::targetFromImage(opaque, 100, 0, "flat").measuredExtent(w, h);
+  EXPECT_NEAR(w, 100, 1.5);
+  EXPECT_THROW(pm::sim::targetFromImage(opaque, -1, 0, "bad"), pm::Error);
+}
+
+TEST(Scene, BadParametersAreRefused)
+{
+  pm::sim::SceneParams p;
+  p.supersampling = 0;
+  EXPECT_THROW(p.validate(), pm::Error);
+  p = pm::sim::SceneParams();
+  p.exposure = 0;
+  EXPECT_THROW(p.validate(), pm::Error);
+}

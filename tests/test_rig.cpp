@@ -1,0 +1,120 @@
+// The stereo rig: the shipped lab rig, symmetric rigs, files and their errors.
+#include <gtest/gtest.h>
+
+#include <visp3/core/vpMeterPixelConversion.h>
+
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/io/RigFile.h"
+
+namespace {
+
+vpImagePoint project(const pm::RigCamera &c, double X, double Y, double Z)
+{
+  const vpHomogeneousMatrix cMh = c.cMh();
+  const double x = cMh[0][0] * X + cMh[0][1] * Y + cMh[0][2] * Z + cMh[0][3];
+  const double y = cMh[1][0] * X + cMh[1][1] * Y + cMh[1][2] * Z + cMh[1][3];
+  const double z = cMh[2][0] * X + cMh[2][1] * Y + cMh[2][2] * Z + cMh[2][3];
+  vpImagePoint ip;
+  vpMeterPixelConversion::convertPoint(c.cam, x / z, y / z, ip);
+  return ip;
+}
+
+std::string errorOf(const std::function<void()> &f)
+{
+  try {
+    f();
+  } catch (const pm::Error &e) {
+    return e.what();
+  }
+  return "";
+}
+
+} // namespace
+
+TEST(Rig, ShippedLabRigMatchesTheHardware)
+{
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  EXPECT_NEAR(rig.baseline(), 0.323, 1e-9);
+  for (const pm::RigCamera *c : {&rig.left, &rig.right}) {
+    EXPECT_EQ(c->width, 640u);
+    EXPECT_EQ(c->height, 480u);
+    EXPECT_DOUBLE_EQ(c->cam.get_px(), 754);
+    EXPECT_DOUBLE_EQ(c->cam.get_py(), 754);
+    EXPECT_DOUBLE_EQ(c->cam.get_u0(), 320);
+    EXPECT_DOUBLE_EQ(c->cam.get_v0(), 240);
+    // A target 500 mm straight ahead of the hand sits at each image centre (toe-in).
+    const vpImagePoint ip = project(*c, 0, 0, 0.5);
+    EXPECT_NEAR(ip.get_u(), 320, 1e-6) << c->name;
+    EXPECT_NEAR(ip.get_v(), 240, 1e-6) << c->name;
+  }
+  EXPECT_LT(rig.left.hMc[0][3], 0); // left camera on the left of the hand
+  EXPECT_NEAR(rig.cLMcR().getTranslationVector().frobeniusNorm(), 0.323, 1e-9);
+}
+
+TEST(Rig, ParallelCamerasSeeTheTargetOffCentre)
+{
+  vpCameraParameters cam(754, 754, 320, 240);
+  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, 0.323, 0.0);
+  const double shift = 754 * 0.1615 / 0.5; // ~244 px, VISP_NOTES.md
+  EXPECT_NEAR(project(rig.left, 0, 0, 0.5).get_u(), 320 + shift, 1e-6);
+  EXPECT_NEAR(project(rig.right, 0, 0, 0.5).get_u(), 320 - shift, 1e-6);
+}
+
+TEST(Rig, ToeInIsAParameter)
+{
+  vpCameraParameters cam(754, 754, 320, 240);
+  const double toe = pm::StereoRig::toeInFor(0.323, 0.8);
+  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, 0.323, toe);
+  EXPECT_NEAR(project(rig.left, 0, 0, 0.8).get_u(), 320, 1e-6);
+  EXPECT_NEAR(project(rig.right, 0, 0, 0.8).get_u(), 320, 1e-6);
+  EXPECT_NEAR(toe * 180 / M_PI, std::atan(0.1615 / 0.8) * 180 / M_PI, 1e-12);
+}
+
+TEST(Rig, SaveLoadRoundTrip)
+{
+  pm::test::TempDir dir("rig");
+  vpCameraParameters cam(800, 790, 330.5, 245.25);
+  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 800, 600, 0.3, 0.2);
+  pm::io::saveRig(rig, dir.file("r.json"), "r_cameras.xml");
+  const pm::StereoRig back = pm::io::loadRig(dir.file("r.json"));
+  EXPECT_DOUBLE_EQ(back.left.cam.get_px(), 800);
+  EXPECT_DOUBLE_EQ(back.right.cam.get_v0(), 245.25);
+  EXPECT_EQ(back.left.width, 800u);
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 4; ++c) {
+      EXPECT_NEAR(back.left.hMc[r][c], rig.left.hMc[r][c], 1e-9);
+      EXPECT_NEAR(back.right.hMc[r][c], rig.right.hMc[r][c], 1e-9);
+    }
+  EXPECT_TRUE(pm::test::listFiles(dir.path()) == (std::vector<std::string>{"r.json", "r_cameras.xml"}));
+}
+
+TEST(Rig, NonPositiveFocalLengthIsAClearError)
+{
+  pm::test::TempDir dir("rig");
+  pm::io::saveRig(pm::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, 0.3),
+                  dir.file("r.json"), "r_cameras.xml");
+  std::string xml = pm::test::readText(dir.file("r_cameras.xml"));
+  xml.replace(xml.find("<px>754</px>"), 12, "<px>-754</px>");
+  pm::test::writeText(dir.file("r_cameras.xml"), xml);
+  const std::string e = errorOf([&] { pm::io::loadRig(dir.file("r.json")); });
+  EXPECT_NE(e.find("focal"), std::string::npos) << e;
+  EXPECT_NE(e.find("r.json"), std::string::npos) << e;
+}
+
+TEST(Rig, BrokenFilesAreClearErrors)
+{
+  pm::test::TempDir dir("rig");
+  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("missing.json")); }).find("does not exist"), std::string::npos);
+  pm::test::writeText(dir.file("bad.json"), "{ \"format\": \"visp-photomodel-rig\", \"version\": 1, ");
+  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("bad.json")); }).find("bad.json"), std::string::npos);
+  pm::test::writeText(dir.file("noxml.json"),
+                      R"({"format":"visp-photomodel-rig","version":1,"intrinsics_xml":"none.xml","cameras":[]})");
+  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("noxml.json")); }).find("none.xml"), std::string::npos);
+  pm::io::saveRig(pm::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, 0.3),
+                  dir.file("r.json"), "r_cameras.xml");
+  std::string j = pm::test::readText(dir.file("r.json"));
+  j.replace(j.find("\"right\""), 7, "\"middle\"");
+  pm::test::writeText(dir.file("r.json"), j);
+  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("r.json")); }).find("middle"), std::string::npos);
+}
