@@ -31,16 +31,6 @@ Disc redDisc()
   return d;
 }
 
-std::string errorOf(const std::function<void()> &f)
-{
-  try {
-    f();
-  } catch (const pm::Error &e) {
-    return e.what();
-  }
-  return "";
-}
-
 } // namespace
 
 TEST(PhotoModel, DiscRegionCentroidAndSampling)
@@ -145,7 +135,7 @@ TEST(PhotoModel, PhotosOfDifferentSizesAreRefused)
 {
   const Disc d = redDisc();
   vpImage<vpRGBa> small(240, 320);
-  EXPECT_NE(errorOf([&] { pm::buildPhotoModel(d.bg, small, kCam, 500); }).find("320x240"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::buildPhotoModel(d.bg, small, kCam, 500); }).find("320x240"), std::string::npos);
 }
 
 TEST(PhotoModel, TargetOfTheBackgroundsHueGivesEmptySIn)
@@ -153,7 +143,7 @@ TEST(PhotoModel, TargetOfTheBackgroundsHueGivesEmptySIn)
   Disc d = redDisc();
   d.tg = pm::test::bluePhoto(640, 480, 3);
   pm::test::paintDisc(d.tg, d.cu, d.cv, d.r, vpRGBa(40, 100, 180)); // blue on blue
-  EXPECT_NE(errorOf([&] { pm::buildPhotoModel(d.bg, d.tg, kCam, 500); }).find("S_in is empty"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::buildPhotoModel(d.bg, d.tg, kCam, 500); }).find("S_in is empty"), std::string::npos);
 }
 
 TEST(PhotoModel, BadParametersAndDistanceAreRefused)
@@ -194,9 +184,9 @@ TEST(PhotoModel, CorruptFilesAreClearErrors)
                                    {noIn, "S_in is empty"}};
   for (const auto &c : cases) {
     pm::test::writeText(dir.file("m.json"), c.text);
-    const std::string e = errorOf([&] { pm::io::loadPhotoModel(dir.file("m.json")); });
+    const std::string e = pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("m.json")); });
     EXPECT_NE(e.find(c.expect), std::string::npos) << "got: " << e;
     EXPECT_NE(e.find("m.json"), std::string::npos) << "got: " << e;
   }
-  EXPECT_NE(errorOf([&] { pm::io::loadPhotoModel(dir.file("none.json")); }).find("does not exist"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("none.json")); }).find("does not exist"), std::string::npos);
 }

@@ -20,16 +20,6 @@ vpImagePoint project(const pm::RigCamera &c, double X, double Y, double Z)
   return ip;
 }
 
-std::string errorOf(const std::function<void()> &f)
-{
-  try {
-    f();
-  } catch (const pm::Error &e) {
-    return e.what();
-  }
-  return "";
-}
-
 } // namespace
 
 TEST(Rig, ShippedLabRigMatchesTheHardware)
@@ -97,7 +87,7 @@ TEST(Rig, NonPositiveFocalLengthIsAClearError)
   std::string xml = pm::test::readText(dir.file("r_cameras.xml"));
   xml.replace(xml.find("<px>754</px>"), 12, "<px>-754</px>");
   pm::test::writeText(dir.file("r_cameras.xml"), xml);
-  const std::string e = errorOf([&] { pm::io::loadRig(dir.file("r.json")); });
+  const std::string e = pm::test::errorOf([&] { pm::io::loadRig(dir.file("r.json")); });
   EXPECT_NE(e.find("focal"), std::string::npos) << e;
   EXPECT_NE(e.find("r.json"), std::string::npos) << e;
 }
@@ -105,16 +95,16 @@ TEST(Rig, NonPositiveFocalLengthIsAClearError)
 TEST(Rig, BrokenFilesAreClearErrors)
 {
   pm::test::TempDir dir("rig");
-  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("missing.json")); }).find("does not exist"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadRig(dir.file("missing.json")); }).find("does not exist"), std::string::npos);
   pm::test::writeText(dir.file("bad.json"), "{ \"format\": \"visp-photomodel-rig\", \"version\": 1, ");
-  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("bad.json")); }).find("bad.json"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadRig(dir.file("bad.json")); }).find("bad.json"), std::string::npos);
   pm::test::writeText(dir.file("noxml.json"),
                       R"({"format":"visp-photomodel-rig","version":1,"intrinsics_xml":"none.xml","cameras":[]})");
-  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("noxml.json")); }).find("none.xml"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadRig(dir.file("noxml.json")); }).find("none.xml"), std::string::npos);
   pm::io::saveRig(pm::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, 0.3),
                   dir.file("r.json"), "r_cameras.xml");
   std::string j = pm::test::readText(dir.file("r.json"));
   j.replace(j.find("\"right\""), 7, "\"middle\"");
   pm::test::writeText(dir.file("r.json"), j);
-  EXPECT_NE(errorOf([&] { pm::io::loadRig(dir.file("r.json")); }).find("middle"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadRig(dir.file("r.json")); }).find("middle"), std::string::npos);
 }

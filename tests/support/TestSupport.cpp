@@ -1,5 +1,7 @@
 #include "TestSupport.h"
 
+#include "pm/core/Error.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -52,6 +54,16 @@ RunResult runProgram(const std::string &name, const std::string &args)
   r.out = readText(tmp.file("out"));
   r.err = readText(tmp.file("err"));
   return r;
+}
+
+std::string errorOf(const std::function<void()> &f)
+{
+  try {
+    f();
+  } catch (const pm::Error &e) {
+    return e.what();
+  }
+  return "";
 }
 
 std::string dataPath(const std::string &relative) { return std::string(PM_TEST_DATA_DIR) + "/" + relative; }

@@ -1,6 +1,8 @@
 #pragma once
 // Shared helpers of the test suites: temporary folders, running the programs, synthetic photos.
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
@@ -35,6 +37,9 @@ std::string readText(const std::string &path);
 void writeText(const std::string &path, const std::string &text);
 //! Files of a folder, sorted by name.
 std::vector<std::string> listFiles(const std::string &dir);
+
+//! The message of the pm::Error that \e f throws ("" if none).
+std::string errorOf(const std::function<void()> &f);
 
 //! A w x h photo of a textured blue background (hue ~210), with noise from \e seed.
 vpImage<vpRGBa> bluePhoto(unsigned w, unsigned h, unsigned seed);
