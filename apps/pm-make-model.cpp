@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
+#include "pm/app/Options.h"
 #include "pm/app/Overlay.h"
 #include "pm/core/Error.h"
 #include "pm/core/PhotoModelBuilder.h"
@@ -15,6 +16,7 @@
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 
 
@@ -29,7 +31,6 @@ int main(int argc, char **argv)
   std::string out, target = "C12", background, photo, texture, intrinsics, cameraName = "left";
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   double distanceMm = 500, widthMm = 150, depthMm = 20;
-  std::uint64_t seed = 1;
   bool quiet = false;
   pm::PhotoModelParams mp;
   pm::sim::SceneParams sp;
@@ -49,20 +50,14 @@ int main(int argc, char **argv)
   auto *optXml = app.add_option("--intrinsics", intrinsics, "ViSP camera XML of the photo camera (photos mode)");
   app.add_option("--camera-name", cameraName, "camera name in --intrinsics")->needs(optXml);
   app.add_option("--rig", rigPath, "stereo rig; its left camera takes the photos when --intrinsics is not given");
-  app.add_option("--step-px", mp.stepPx, "sampling step of S_in and along S_out (px)")->check(CLI::Range(1.0, 200.0));
-  app.add_option("--strip-gap-px", mp.stripGapPx, "distance of S_out from the target's outline (px)")->check(CLI::Range(1.0, 200.0));
-  app.add_option("--strip-width-px", mp.stripWidthPx, "width of the S_out strip (px)")->check(CLI::Range(0.0, 200.0));
-  app.add_option("--strip-rows", mp.stripRows, "rows of points across the S_out strip")->check(CLI::Range(1, 20));
-  app.add_option("--region-hue-tol-deg", mp.regionHueTolDeg, "hue change that marks a target pixel (deg)")->check(CLI::Range(1.0, 179.0));
-  app.add_option("--min-saturation", mp.minSaturation, "pixels less saturated carry no hue")->check(CLI::Range(0.0, 0.99));
-  app.add_option("--noise", sp.noiseSigma, "simulator: sensor noise (grey levels)")->check(CLI::Range(0.0, 100.0));
-  app.add_option("--seed", seed, "simulator: noise seed");
+  pm::app::addModelOptions(app, mp);
+  pm::app::addSceneOptions(app, sp);
   app.add_flag("--quiet", quiet, "print nothing on success");
 
   return pm::app::run(app, argc, argv, [&] {
     const auto t0 = std::chrono::steady_clock::now();
     vpImage<vpRGBa> bg, tg;
-    vpCameraParameters cam;
+    pm::PhotoModelBuild build;
     std::string source;
     if (!background.empty()) {
       bg = pm::io::readColorImage(background);
@@ -72,8 +67,10 @@ int main(int argc, char **argv)
                         std::to_string(bg.getHeight()) + " but the target photo '" + photo + "' is " +
                         std::to_string(tg.getWidth()) + "x" + std::to_string(tg.getHeight()) +
                         "; take both with the same camera at the same size");
-      cam = intrinsics.empty() ? pm::io::loadRig(rigPath).left.cam
-                               : pm::io::readCameraXml(intrinsics, cameraName, bg.getWidth(), bg.getHeight());
+      const vpCameraParameters cam = intrinsics.empty()
+                                         ? pm::io::loadRig(rigPath).left.cam
+                                         : pm::io::readCameraXml(intrinsics, cameraName, bg.getWidth(), bg.getHeight());
+      build = pm::buildPhotoModel(bg, tg, cam, distanceMm, mp);
       source = "photos " + background + " + " + photo;
     } else {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
@@ -85,13 +82,13 @@ int main(int argc, char **argv)
         shape = pm::sim::makeTarget(target);
         source = "simulator, target " + shape.info.code + " (" + shape.info.name + ")";
       }
-      sp.seed = seed;
       const pm::sim::Scene scene(shape, sp);
-      cam = rig.left.cam;
-      scene.renderPhotos(cam, rig.left.width, rig.left.height, distanceMm, bg, tg);
+      pm::sim::SimulatedPhotoModel sm =
+          pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
+      bg = std::move(sm.background);
+      tg = std::move(sm.photo);
+      build = std::move(sm.build);
     }
-
-    const pm::PhotoModelBuild build = pm::buildPhotoModel(bg, tg, cam, distanceMm, mp);
     const pm::PhotoModel &m = build.model;
 
     pm::io::StagedFiles files(out);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
+#include "pm/app/Options.h"
 #include "pm/app/Overlay.h"
 #include "pm/app/Progress.h"
 #include "pm/core/Error.h"
@@ -61,11 +62,7 @@ int main(int argc, char **argv)
   app.add_option("--depth-mm", depthMm, "with --texture: relief (mm)")->check(CLI::NonNegativeNumber);
   app.add_option("--pose", pose, "phi = x,y,z,eps1,eps2,eps3 of the target in the hand frame (mm, quaternion vector)");
   app.add_option("--rig", rigPath, "stereo rig file");
-  app.add_option("--supersampling", sp.supersampling, "samples per pixel along each axis (anti-aliasing)")->check(CLI::Range(1u, 4u));
-  app.add_option("--noise", sp.noiseSigma, "sensor noise (grey levels)")->check(CLI::Range(0.0, 100.0));
-  app.add_option("--exposure", sp.exposure, "brightness gain (lighting change)")->check(CLI::Range(0.05, 10.0));
-  app.add_flag("--occluder", sp.occluder, "put a strand of seaweed in front of the target");
-  app.add_option("--seed", sp.seed, "noise seed");
+  pm::app::addSceneOptions(app, sp);
   app.add_option("--repeat", repeat, "stereo frames rendered to time the renderer")->check(CLI::Range(1, 1000));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 

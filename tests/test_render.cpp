@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
@@ -11,6 +12,7 @@
 #include "pm/io/RigFile.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/sim/Scene.h"
+#include "pm/sim/SeaBottom.h"
 #include "pm/sim/TargetCatalog.h"
 
 namespace {
@@ -95,6 +97,51 @@ TEST(Rasterizer, TextureOrientationAndDepthOrder)
   r.draw(square(0.2), vpHomogeneousMatrix(0, 0, 0.6, 0, 0, 0), kCam, pm::sim::Lighting(), 2);
   EXPECT_DOUBLE_EQ(r.coverage(320, 240, 1), 1.0);
   EXPECT_DOUBLE_EQ(r.coverage(100, 240, 2), 1.0);
+}
+
+TEST(Rasterizer, SharedEdgesLeaveNoCracks)
+{
+  // A panel of 40 x 30 quads, its inner vertices jittered, seen obliquely: it covers the whole image,
+  // so every sample must show it (a sample on an edge shared by two triangles belongs to exactly one).
+  auto tex = std::make_shared<pm::sim::Texture>();
+  tex->width = tex->height = 1;
+  tex->rgb = {200, 200, 200};
+  pm::sim::Mesh m;
+  m.texture = tex;
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<float> jitter(-0.01f, 0.01f);
+  const int nx = 40, ny = 30;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const bool inner = i > 0 && j > 0 && i < nx && j < ny;
+      m.vertices.push_back({static_cast<float>(-1.0 + 2.0 * i / nx) + (inner ? jitter(rng) : 0.f),
+                            static_cast<float>(-0.75 + 1.5 * j / ny) + (inner ? jitter(rng) : 0.f), 0, 0, 0, -1, 0, 0, -1});
+    }
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const auto a = static_cast<std::uint32_t>(j * (nx + 1) + i), b = a + 1, d = a + nx + 1, c = d + 1;
+      m.triangles.push_back({a, b, c});
+      m.triangles.push_back({a, c, d});
+    }
+  // And the sea-bottom panel itself, seen straight on as in the photos.
+  pm::sim::SeaBottomParams sb;
+  const pm::sim::Mesh panel = pm::sim::makeBackdropMesh(tex, sb, 0.0);
+  pm::sim::Rasterizer r;
+  const std::vector<std::pair<const pm::sim::Mesh *, vpHomogeneousMatrix>> cases = {
+      {&m, vpHomogeneousMatrix(0.02, -0.01, 0.6, 0.2, -0.3, 0.1)},
+      {&panel, vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0)},
+      {&panel, vpHomogeneousMatrix(0.01, 0.003, 0.52, 0, 0, 0)}};
+  for (const auto &[mesh, pose] : cases)
+    for (unsigned ss : {1u, 2u, 3u}) {
+      r.reset(640, 480, ss);
+      r.clear(0, 0, 0);
+      r.draw(*mesh, pose, kCam, pm::sim::Lighting(), 1);
+      int holes = 0;
+      for (unsigned v = 0; v < 480; ++v)
+        for (unsigned u = 0; u < 640; ++u)
+          holes += r.coverage(u, v, 1) < 1.0;
+      EXPECT_EQ(holes, 0) << "supersampling " << ss;
+    }
 }
 
 TEST(Scene, TargetAtTheTruePoseSitsAtBothImageCentres)

@@ -51,6 +51,28 @@ vpImage<vpRGBa> drawModel(const PhotoModel &m)
   return I;
 }
 
+vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<PointScore> &scores,
+                                const std::string &label)
+{
+  vpImage<vpRGBa> I = image;
+  for (const auto &s : scores) {
+    if (s.cls == PointScore::Off)
+      continue;
+    vpColor c = vpColor::gray;
+    switch (s.cls) {
+    case PointScore::InMatch: c = vpColor::green; break;
+    case PointScore::InBackground: c = vpColor::yellow; break;
+    case PointScore::InOther: c = vpColor::lightGray; break;
+    case PointScore::OutBackground: c = vpColor(60, 160, 255); break;
+    case PointScore::OutOther: c = vpColor::red; break;
+    case PointScore::Off: break;
+    }
+    vpImageDraw::drawPoint(I, vpImagePoint(s.v, s.u), c, 3);
+  }
+  drawLabel(I, label, 8, 8, vpRGBa(255, 255, 255));
+  return I;
+}
+
 void drawLabel(vpImage<vpRGBa> &I, const std::string &text, int row, int col, const vpRGBa &color)
 {
   static vpFont font(16, vpFont::GENERIC_MONOSPACE);

@@ -98,41 +98,67 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
 
   const Texture &tex = *mesh.texture;
   const int W = static_cast<int>(m_W), H = static_cast<int>(m_H);
+  // Edge functions in fixed point (1/256 px) and 64-bit integers: exact, so two triangles that
+  // share an edge cover each sample on it exactly once (top-left rule), with no crack between them.
+  constexpr double kSub = 256.0, kMaxCoord = 1 << 20;
+  struct Fixed
+  {
+    std::int64_t x, y;
+  };
+  auto fixedOf = [&](const ProjVertex &v) {
+    return Fixed{static_cast<std::int64_t>(std::llround(v.X * kSub)), static_cast<std::int64_t>(std::llround(v.Y * kSub))};
+  };
   for (const auto &tri : mesh.triangles) {
-    const ProjVertex &a = m_proj[tri[0]], &b = m_proj[tri[1]], &c = m_proj[tri[2]];
-    if (!a.valid || !b.valid || !c.valid)
+    const ProjVertex *pa = &m_proj[tri[0]], *pb = &m_proj[tri[1]], *pc = &m_proj[tri[2]];
+    if (!pa->valid || !pb->valid || !pc->valid)
       continue;
-    float area = (b.X - a.X) * (c.Y - a.Y) - (c.X - a.X) * (b.Y - a.Y);
-    if (std::fabs(area) < 1e-12f)
+    if (std::fabs(pa->X) > kMaxCoord || std::fabs(pa->Y) > kMaxCoord || std::fabs(pb->X) > kMaxCoord ||
+        std::fabs(pb->Y) > kMaxCoord || std::fabs(pc->X) > kMaxCoord || std::fabs(pc->Y) > kMaxCoord)
+      continue; // a vertex projected too far (grazing the camera plane)
+    Fixed A = fixedOf(*pa), B = fixedOf(*pb), C = fixedOf(*pc);
+    std::int64_t area = (B.x - A.x) * (C.y - A.y) - (C.x - A.x) * (B.y - A.y);
+    if (area == 0)
       continue;
+    if (area < 0) { // make the winding counter-clockwise in these coordinates (y down)
+      std::swap(B, C);
+      std::swap(pb, pc);
+      area = -area;
+    }
+    const ProjVertex &a = *pa, &b = *pb, &c = *pc;
     const int x0 = std::max(0, static_cast<int>(std::ceil(std::min({a.X, b.X, c.X}))));
     const int x1 = std::min(W - 1, static_cast<int>(std::floor(std::max({a.X, b.X, c.X}))));
     const int y0 = std::max(0, static_cast<int>(std::ceil(std::min({a.Y, b.Y, c.Y}))));
     const int y1 = std::min(H - 1, static_cast<int>(std::floor(std::max({a.Y, b.Y, c.Y}))));
     if (x0 > x1 || y0 > y1)
       continue;
-    const float inv = 1.f / area;
-    // Barycentric steps along x of the edge functions opposite a, b and c.
-    const float ea_dx = (b.Y - c.Y) * inv, eb_dx = (c.Y - a.Y) * inv, ec_dx = (a.Y - b.Y) * inv;
+    // E_pq(x, y) = (q.x - p.x)(y - p.y) - (q.y - p.y)(x - p.x), >= 0 inside; the edge opposite a is b->c.
+    auto bias = [](const Fixed &p, const Fixed &q) { // top-left rule: samples on other edges belong to the neighbour
+      const bool top = p.y == q.y && q.x > p.x, left = q.y < p.y;
+      return (top || left) ? 0 : -1;
+    };
+    const std::int64_t ba0 = bias(B, C), bb0 = bias(C, A), bc0 = bias(A, B);
+    const std::int64_t stepAx = -(C.y - B.y) * 256, stepBx = -(A.y - C.y) * 256, stepCx = -(B.y - A.y) * 256;
+    const float inv = 1.f / static_cast<float>(area);
     for (int y = y0; y <= y1; ++y) {
-      const float fy = static_cast<float>(y), fx0 = static_cast<float>(x0);
-      float ba = ((b.X - fx0) * (c.Y - fy) - (c.X - fx0) * (b.Y - fy)) * inv;
-      float bb = ((c.X - fx0) * (a.Y - fy) - (a.X - fx0) * (c.Y - fy)) * inv;
-      float bc = 1.f - ba - bb;
+      const std::int64_t sy = static_cast<std::int64_t>(y) * 256, sx0 = static_cast<std::int64_t>(x0) * 256;
+      std::int64_t ea = (C.x - B.x) * (sy - B.y) - (C.y - B.y) * (sx0 - B.x);
+      std::int64_t eb = (A.x - C.x) * (sy - C.y) - (A.y - C.y) * (sx0 - C.x);
+      std::int64_t ec = (B.x - A.x) * (sy - A.y) - (B.y - A.y) * (sx0 - A.x);
       std::size_t idx = static_cast<std::size_t>(y) * m_W + static_cast<std::size_t>(x0);
-      for (int x = x0; x <= x1; ++x, ++idx, ba += ea_dx, bb += eb_dx, bc += ec_dx) {
-        if (ba < 0.f || bb < 0.f || bc < 0.f)
+      for (int x = x0; x <= x1; ++x, ++idx, ea += stepAx, eb += stepBx, ec += stepCx) {
+        if (ea + ba0 < 0 || eb + bb0 < 0 || ec + bc0 < 0)
           continue;
-        const float w = ba * a.w + bb * b.w + bc * c.w;
+        const float wa = static_cast<float>(ea) * inv, wb = static_cast<float>(eb) * inv, wc = static_cast<float>(ec) * inv;
+        const float w = wa * a.w + wb * b.w + wc * c.w;
         if (w <= m_invDepth[idx])
           continue;
         const float iz = 1.f / w;
-        if (mesh.useMask && (ba * a.mask + bb * b.mask + bc * c.mask) * iz > 0.f)
+        if (mesh.useMask && (wa * a.mask + wb * b.mask + wc * c.mask) * iz > 0.f)
           continue;
-        const float s = (ba * a.s + bb * b.s + bc * c.s) * iz;
-        const float t = (ba * a.t + bb * b.t + bc * c.t) * iz;
-        const float diff = (ba * a.diff + bb * b.diff + bc * c.diff) * iz;
-        const float spec = (ba * a.spec + bb * b.spec + bc * c.spec) * iz;
+        const float s = (wa * a.s + wb * b.s + wc * c.s) * iz;
+        const float t = (wa * a.t + wb * b.t + wc * c.t) * iz;
+        const float diff = (wa * a.diff + wb * b.diff + wc * c.diff) * iz;
+        const float spec = (wa * a.spec + wb * b.spec + wc * c.spec) * iz;
         float col[3];
         tex.sample(s, t, col);
         m_invDepth[idx] = w;

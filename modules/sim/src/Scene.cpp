@@ -29,7 +29,7 @@ Scene::Scene(const TargetShape &target, const SceneParams &params) : m_target(ta
   m_params.validate();
   m_toy = buildTargetMesh(m_target, m_params.meshStepMm, static_cast<float>(m_params.specular));
   m_backdrop = makeBackdropMesh(makeSeaBottomTexture(m_params.seaBottom), m_params.seaBottom,
-                                m_target.info.depthMm / 2 + m_params.backdropGapMm);
+                                m_params.backdropGapMm);
   // The occluder: a strand of seaweed, a flat olive-green quad with a little texture.
   auto tex = std::make_shared<Texture>();
   tex->width = 8;

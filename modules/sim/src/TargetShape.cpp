@@ -63,6 +63,15 @@ void TargetShape::centreOnOutline()
   }
 }
 
+void TargetShape::scaleRelief(double s)
+{
+  if (!(s >= 0) || !std::isfinite(s))
+    throw Error("relief scale must be a non-negative number");
+  info.depthMm *= s;
+  for (float &h : height)
+    h *= static_cast<float>(s);
+}
+
 Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
 {
   if (shape.cols < 2 || shape.rows < 2)
@@ -72,7 +81,6 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
   const double y1 = (shape.rows - 1 - shape.originRow) * shape.texelMm;
   const int nx = static_cast<int>(std::floor((x1 - x0) / stepMm)) + 1;
   const int ny = static_cast<int>(std::floor((y1 - y0) / stepMm)) + 1;
-  const double halfDepth = shape.info.depthMm / 2;
 
   Mesh mesh;
   auto tex = std::make_shared<Texture>();
@@ -106,7 +114,7 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
     MeshVertex v;
     v.x = static_cast<float>(x * 1e-3);
     v.y = static_cast<float>(y * 1e-3);
-    v.z = static_cast<float>((halfDepth - h) * 1e-3);
+    v.z = static_cast<float>(-h * 1e-3); // the base at z = 0, the relief toward the viewer
     v.nx = static_cast<float>(-hx / n);
     v.ny = static_cast<float>(-hy / n);
     v.nz = static_cast<float>(-1 / n);

@@ -10,6 +10,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/PhotoModel.h"
+#include "pm/core/StereoFitness.h"
 
 namespace pm::app {
 
@@ -17,6 +18,12 @@ namespace pm::app {
 vpImage<vpRGBa> drawModelOnPhoto(const vpImage<vpRGBa> &photo, const vpImage<unsigned char> &region, const PhotoModel &m);
 //! The model alone: S_in points in their own hue, S_out points white, on dark grey.
 vpImage<vpRGBa> drawModel(const PhotoModel &m);
+/*!
+  The model projected at a pose, each point coloured by how it scored (Eqs. 8, 9): S_in on the
+  target green, on background yellow, elsewhere grey; S_out on background blue, on the target red.
+*/
+vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<PointScore> &scores,
+                                const std::string &label);
 //! Writes \e text at (row, col) with ViSP's font, in \e color.
 void drawLabel(vpImage<vpRGBa> &I, const std::string &text, int row, int col, const vpRGBa &color);
 //! Places \e b to the right of \e a.

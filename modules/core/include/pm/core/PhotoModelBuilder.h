@@ -37,7 +37,7 @@ struct PhotoModelParams
   int cleanRadiusPx = 1;         //!< morphological open/close radius on the region mask
   int maxHoleAreaPx = 150;       //!< holes in the region up to this area are filled (spots), larger ones kept
   double stepPx = 8.0;           //!< sampling step of S_in (grid) and along S_out (px)
-  double stripGapPx = 6.0;       //!< distance of the first S_out row from the region (px)
+  double stripGapPx = 3.0;       //!< distance of the first S_out row from the region (px)
   double stripWidthPx = 8.0;     //!< extent of the S_out strip beyond the first row (px)
   int stripRows = 2;             //!< rows of S_out points across the strip
 

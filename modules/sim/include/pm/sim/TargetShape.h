@@ -7,8 +7,10 @@
   smoothly by the signed distance, whose relief hides parts of itself seen from the side.
 
   Target frame (= model frame at the true pose): x right, y down, z away from the viewer;
-  origin on the outline's centroid, at mid-depth. The base (the side resting on the backdrop)
-  is at z = +depth/2, the highest point at z = -depth/2.
+  origin on the outline's centroid, on the base plane: the toy rests on the backdrop at z = 0
+  and its relief rises toward the viewer, up to z = -depth. The photo-model's region is where
+  the toy hides the backdrop, its footprint, so the model plane is the base plane and the
+  photo distance is measured to it (in a lab: the distance from the camera to the backdrop).
 */
 #include <memory>
 #include <string>
@@ -46,6 +48,8 @@ struct TargetShape
   float sampleGrid(const std::vector<float> &grid, double xMm, double yMm) const;
   //! Recentres the frame origin on the outline's centroid.
   void centreOnOutline();
+  //! Multiplies the relief (heights and depth) by \e s >= 0 (0: a flat picture of the toy).
+  void scaleRelief(double s);
 };
 
 /*!

@@ -1,0 +1,262 @@
+//! pm-bench: speed of the hot path, with Google Benchmark, against ViSP doing the same work in the same process.
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <visp3/core/vpImageConvert.h>
+#include <visp3/core/vpMeterPixelConversion.h>
+
+#include "pm/app/App.h"
+#include "pm/core/FitnessMap.h"
+#include "pm/core/Hue.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/io/RigFile.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+
+namespace {
+
+//! The C12 crab at the true pose, its photo-model and the stereo pair, made once.
+struct Setup
+{
+  pm::StereoRig rig;
+  pm::PhotoModel model, model1000;
+  pm::sim::StereoImages images;
+  pm::Phi truth;
+
+  Setup()
+  {
+    rig = pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"));
+    const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
+    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+    const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
+    model = sm.build.model;
+    truth = sm.truth(hMo);
+    // A 1,000-point model: the crab sampled more densely, thinned to exactly 1,000 points.
+    pm::PhotoModelParams dense;
+    dense.stepPx = 5;
+    const pm::PhotoModel d = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500, dense).build.model;
+    model1000 = d;
+    const std::size_t nIn = 1000 * d.inner.size() / d.size(), nOut = 1000 - nIn;
+    model1000.inner.clear();
+    model1000.outer.clear();
+    for (std::size_t i = 0; i < nIn; ++i)
+      model1000.inner.push_back(d.inner[i * d.inner.size() / nIn]);
+    for (std::size_t i = 0; i < nOut; ++i)
+      model1000.outer.push_back(d.outer[i * d.outer.size() / nOut]);
+    images = scene.renderStereo(rig, hMo, 0);
+  }
+};
+
+const Setup &setup()
+{
+  static const Setup s;
+  return s;
+}
+
+//! Poses around the truth, as a GA population sees them.
+std::vector<pm::Phi> poses(std::size_t n)
+{
+  std::vector<pm::Phi> v;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double k = static_cast<double>(i);
+    v.push_back({10 * std::sin(k), 10 * std::cos(1.3 * k), 500 + 20 * std::sin(0.7 * k), 0.05 * std::sin(2.1 * k),
+                 0.05 * std::cos(1.7 * k), 0.05 * std::sin(0.3 * k)});
+  }
+  return v;
+}
+
+void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scalar)
+{
+  pm::StereoFitness::forceScalar(scalar);
+  pm::StereoFitness fit(setup().rig, model);
+  fit.setImages(setup().images.left, setup().images.right);
+  const auto ps = poses(256);
+  std::size_t i = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    sink += fit.evaluate(ps[i++ & 255]);
+    benchmark::DoNotOptimize(sink);
+  }
+  pm::StereoFitness::forceScalar(false);
+  state.SetItemsProcessed(state.iterations());
+  state.counters["points"] = static_cast<double>(model.size());
+  state.counters["stereo_evals_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["ns_per_point"] = benchmark::Counter(static_cast<double>(state.iterations() * model.size() * 2),
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(scalar ? "scalar" : pm::StereoFitness::kernelName());
+}
+
+void Fitness_DefaultModel(benchmark::State &s) { runFitness(s, setup().model, false); }
+void Fitness_1000Points(benchmark::State &s) { runFitness(s, setup().model1000, false); }
+void Fitness_1000Points_Scalar(benchmark::State &s) { runFitness(s, setup().model1000, true); }
+
+/*!
+  The peer: the same stereo fitness of the 1,000-point model written with ViSP's own types, as a
+  ViSP user would first write it (vpHomogeneousMatrix poses, vpColVector points,
+  vpMeterPixelConversion), on the same hue planes and with the same scores.
+*/
+void Fitness_1000Points_ViSPTypes(benchmark::State &state)
+{
+  const Setup &S = setup();
+  const pm::PhotoModel &m = S.model1000;
+  pm::StereoFitness fit(S.rig, m); // for its hue planes only
+  fit.setImages(S.images.left, S.images.right);
+  const vpHomogeneousMatrix cMh[2] = {S.rig.left.cMh(), S.rig.right.cMh()};
+  const vpCameraParameters cams[2] = {S.rig.left.cam, S.rig.right.cam};
+  const auto ps = poses(256);
+  const float hB = m.backgroundHue;
+  std::size_t i = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    const pm::Phi &phi = ps[i++ & 255];
+    vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(phi);
+    double F = 0;
+    for (int c = 0; c < 2; ++c) {
+      const vpHomogeneousMatrix cMo = cMh[c] * hMo;
+      const pm::HuePlane &plane = fit.huePlane(c);
+      double sum = 0;
+      for (std::size_t k = 0; k < m.size(); ++k) {
+        const pm::ModelPoint &p = k < m.inner.size() ? m.inner[k] : m.outer[k - m.inner.size()];
+        vpColVector X(4);
+        X[0] = p.x * 1e-3;
+        X[1] = p.y * 1e-3;
+        X[2] = 0;
+        X[3] = 1;
+        const vpColVector Xc = cMo * X;
+        double u = 0, v = 0;
+        vpMeterPixelConversion::convertPoint(cams[c], Xc[0] / Xc[2], Xc[1] / Xc[2], u, v);
+        const long ui = std::lround(u), vi = std::lround(v);
+        if (Xc[2] <= 0 || ui < 0 || vi < 0 || ui >= 640 || vi >= 480)
+          continue;
+        const float h = plane.at(static_cast<unsigned>(ui), static_cast<unsigned>(vi)) / 10.f;
+        if (k < m.inner.size())
+          sum += pm::hueDistance(h, p.hue) <= 30 ? 2.0 : (pm::hueDistance(h, hB) <= 30 ? -0.005 : 0.0);
+        else
+          sum += pm::hueDistance(h, hB) <= 20 ? 0.1 : -0.5;
+      }
+      F += 0.5 * sum / static_cast<double>(m.size());
+    }
+    sink += F;
+    benchmark::DoNotOptimize(sink);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["points"] = static_cast<double>(m.size());
+  state.counters["stereo_evals_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.SetLabel("ViSP types");
+}
+
+//! Hue planes of a stereo pair: ours against ViSP's vpImageConvert::RGBaToHSV (double precision).
+void Hue_StereoPair_Ours(benchmark::State &state)
+{
+  pm::HuePlane a, b;
+  for (auto _ : state) {
+    a.compute(setup().images.left);
+    b.compute(setup().images.right);
+    benchmark::DoNotOptimize(a.data());
+    benchmark::DoNotOptimize(b.data());
+  }
+  state.SetItemsProcessed(state.iterations() * 2 * 640 * 480);
+}
+
+void Hue_StereoPair_ViSP(benchmark::State &state)
+{
+  std::vector<double> h(640 * 480), s(640 * 480), v(640 * 480);
+  for (auto _ : state) {
+    for (const auto *I : {&setup().images.left, &setup().images.right}) {
+      vpImageConvert::RGBaToHSV(reinterpret_cast<const unsigned char *>(I->bitmap), h.data(), s.data(), v.data(),
+                                640 * 480);
+      benchmark::DoNotOptimize(h.data());
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * 2 * 640 * 480);
+}
+
+//! Hue computed at each sampled point instead of a plane: the cost per sample, to compare.
+void Hue_PerSample(benchmark::State &state)
+{
+  const vpImage<vpRGBa> &I = setup().images.left;
+  std::uint64_t k = 0;
+  unsigned acc = 0;
+  for (auto _ : state) {
+    for (int j = 0; j < 1000; ++j, ++k)
+      acc += pm::hueDeci(I.bitmap[(k * 2654435761u) % (640 * 480)], 0.f);
+    benchmark::DoNotOptimize(acc);
+  }
+  state.SetItemsProcessed(state.iterations() * 1000);
+}
+
+//! The paper's four fitness maps (x-y, y-z, eps1-eps2, eps2-eps3) of the default model, on all cores.
+void FitnessMaps_FourGrids(benchmark::State &state)
+{
+  pm::StereoFitness fit(setup().rig, setup().model);
+  fit.setImages(setup().images.left, setup().images.right);
+  std::size_t evals = 0;
+  for (auto _ : state)
+    for (const auto &spec : pm::paperFitnessMaps()) {
+      const pm::FitnessMap m = pm::computeFitnessMap(fit, setup().truth, spec);
+      evals += m.values.size();
+      benchmark::DoNotOptimize(m.maxFitness);
+    }
+  state.counters["evaluations"] = static_cast<double>(evals / state.iterations());
+}
+
+} // namespace
+
+BENCHMARK(Fitness_DefaultModel);
+BENCHMARK(Fitness_1000Points);
+BENCHMARK(Fitness_1000Points_Scalar);
+BENCHMARK(Fitness_1000Points_ViSPTypes);
+BENCHMARK(Hue_StereoPair_Ours)->Unit(benchmark::kMillisecond);
+BENCHMARK(Hue_StereoPair_ViSP)->Unit(benchmark::kMillisecond);
+BENCHMARK(Hue_PerSample);
+BENCHMARK(FitnessMaps_FourGrids)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+
+int main(int argc, char **argv)
+{
+  // pm-bench [suite] [Google Benchmark flags]; the suite "fitness" runs the fitness and hue benchmarks.
+  std::vector<char *> args{argv[0]};
+  std::string filter = "--benchmark_filter=.";
+  std::string format = "--benchmark_format=json";
+  int i = 1;
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string suite = argv[1];
+    if (suite == "fitness")
+      filter = "--benchmark_filter=^(Fitness|Hue)";
+    else {
+      std::cerr << "pm-bench: usage error: unknown suite '" << suite << "' (known: fitness) (see --help)" << std::endl;
+      return 2;
+    }
+    i = 2;
+  }
+  for (int k = 1; k < argc; ++k)
+    if (!std::strcmp(argv[k], "--help") || !std::strcmp(argv[k], "-h")) {
+      std::cout << "usage: pm-bench [fitness] [Google Benchmark flags, e.g. --benchmark_filter=REGEX "
+                   "--benchmark_repetitions=N]\n"
+                   "Prints JSON (Google Benchmark's format) on stdout: stereo fitness evaluations per second on one core "
+                   "for the default C12 model and a 1,000-point model (AVX2 and scalar kernels, and the same fitness "
+                   "written with ViSP's types as the peer), hue planes against vpImageConvert::RGBaToHSV, and the four "
+                   "fitness maps on all cores.\n";
+      return 0;
+    }
+  args.push_back(filter.data());
+  args.push_back(format.data());
+  for (; i < argc; ++i)
+    args.push_back(argv[i]);
+  int n = static_cast<int>(args.size());
+  try {
+    benchmark::Initialize(&n, args.data());
+    if (benchmark::ReportUnrecognizedArguments(n, args.data()))
+      return 2;
+    setup(); // build the scene before timing; errors surface here
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+  } catch (const std::exception &e) {
+    std::cerr << "error: " << e.what() << std::endl;
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,136 @@
+#pragma once
+/*!
+  \file StereoFitness.h
+  The stereo fitness of the paper (Eqs. 8-11): the photo-model placed at a candidate pose phi
+  is projected into the left and right images, and each model point scores by the image hue
+  where it lands:
+
+      S_in :  p_in  = +2      if |H_I - H_M(i)| <= 30   (the model overlaps the target)
+                    = -0.005  else if |H_B - H_I| <= 30 (the model lies on background)
+                    =  0      otherwise
+      S_out:  p_out = +0.1    if |H_B - H_I| <= 20      (the strip lies on background)
+                    = -0.5    otherwise                 (the strip lies on the target)
+      F_L = (sum of p over S_in and S_out) / n,  F = (F_L + F_R) / 2
+
+  Hue distances wrap around the circle; a point projected off the image (or behind the camera)
+  scores \e offImage (0). Tolerances and scores are parameters with the paper's defaults.
+
+  Each point is counted into its class and F is made from the integer counts, so the result is
+  exact and identical whatever the instruction set (AVX2 or scalar) and the order of points.
+  evaluate() is const and thread-safe, allocates nothing, and refuses an invalid phi
+  (|eps| > 1 or not finite) with pm::Error: it never returns NaN.
+*/
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/core/HuePlane.h"
+#include "pm/core/PhotoModel.h"
+#include "pm/core/Pose.h"
+#include "pm/core/StereoRig.h"
+
+namespace pm {
+
+struct FitnessParams
+{
+  double inTolDeg = 30;      //!< |H_I - H_M(i)| tolerance of S_in
+  double inBgTolDeg = 30;    //!< |H_B - H_I| tolerance of S_in's background case
+  double outBgTolDeg = 20;   //!< |H_B - H_I| tolerance of S_out
+  double inMatch = 2.0;      //!< p_in when the model overlaps the target
+  double inBackground = -0.005;
+  double inOther = 0.0;
+  double outBackground = 0.1;
+  double outOther = -0.5;
+  double offImage = 0.0;     //!< score of a point projected off the image
+  float minSaturation = 0.f; //!< image pixels less saturated have no hue (0: the paper, every pixel has one)
+
+  void validate() const; //!< throws pm::Error naming the parameter out of range
+};
+
+//! How the points of one camera fell: the classes of Eqs. (8), (9).
+struct FitnessCounts
+{
+  int inMatch = 0, inBackground = 0, inOther = 0, inOff = 0;
+  int outBackground = 0, outOther = 0, outOff = 0;
+};
+
+//! Where one model point fell and how it scored (for drawing; not the hot path).
+struct PointScore
+{
+  enum Class : std::uint8_t { InMatch, InBackground, InOther, OutBackground, OutOther, Off };
+  float u, v;  //!< image position (px)
+  Class cls;
+  bool inner;  //!< S_in (else S_out)
+};
+
+struct FitnessDetail
+{
+  double fitness = 0, left = 0, right = 0; //!< F, F_L, F_R
+  FitnessCounts countsLeft, countsRight;
+};
+
+class StereoFitness
+{
+public:
+  /*!
+    Prepares the model for \e rig. Throws pm::Error for an invalid rig, model or parameters.
+  */
+  StereoFitness(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params = FitnessParams());
+
+  /*!
+    Takes a new stereo pair: computes both hue planes (no allocation once the size is set).
+    Throws pm::Error if an image's size differs from its rig camera's.
+  */
+  void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+
+  //! F(phi). Throws pm::Error if phi is invalid or no images were set.
+  double evaluate(const Phi &phi) const;
+  //! F for \e n poses into \e out. Same contract.
+  void evaluate(const Phi *phis, std::size_t n, double *out) const;
+  //! F, F_L, F_R and the class counts of each camera.
+  FitnessDetail evaluateDetail(const Phi &phi) const;
+  //! Every model point's image position and class in camera \e camera (0 left, 1 right), for drawing.
+  std::vector<PointScore> pointScores(const Phi &phi, int camera) const;
+
+  /*!
+    RMS distance (px) between the model's points projected at \e a and at \e b, over both cameras
+    (points in front of both): how far apart two poses look. Throws pm::Error for an invalid pose.
+  */
+  double reprojectionRms(const Phi &a, const Phi &b) const;
+
+  const HuePlane &huePlane(int camera) const { return m_planes[static_cast<std::size_t>(camera)]; }
+  std::size_t modelSize() const { return m_nIn + m_nOut; }
+  const FitnessParams &params() const { return m_params; }
+  //! "avx2" or "scalar": the kernel this machine runs.
+  static const char *kernelName();
+  //! Forces the scalar kernel (for tests that compare both); process-wide.
+  static void forceScalar(bool on);
+
+  struct Camera
+  {
+    double cMh[12];        // 3x4, translation in mm
+    float px, py, u0, v0;
+    int width, height;
+  };
+
+private:
+  void check(const Phi &phi) const;
+  struct Projection projectionOf(int cam, const Phi &phi) const;
+  FitnessCounts countCamera(int cam, const Phi &phi) const;
+  double score(const FitnessCounts &c) const;
+
+  FitnessParams m_params;
+  Camera m_cams[2];
+  std::size_t m_nIn = 0, m_nOut = 0;
+  // Model points, structure of arrays padded to a multiple of 8: x, y (mm), hue (tenths of a degree).
+  std::vector<float> m_x, m_y;
+  std::vector<std::int32_t> m_hue;
+  std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
+  std::array<HuePlane, 2> m_planes;
+  bool m_hasImages = false;
+};
+
+} // namespace pm

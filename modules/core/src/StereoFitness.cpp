@@ -1,0 +1,399 @@
+#include "pm/core/StereoFitness.h"
+
+#include <atomic>
+#include <cmath>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define PM_HAVE_X86 1
+#endif
+
+#include "pm/core/Error.h"
+
+namespace pm {
+
+void FitnessParams::validate() const
+{
+  auto tol = [](double t, const char *name) {
+    if (!(t >= 0 && t <= 180))
+      throw Error(std::string("fitness parameter ") + name + " must lie in [0, 180] degrees");
+  };
+  tol(inTolDeg, "in tolerance");
+  tol(inBgTolDeg, "in background tolerance");
+  tol(outBgTolDeg, "out background tolerance");
+  for (double s : {inMatch, inBackground, inOther, outBackground, outOther, offImage})
+    if (!std::isfinite(s))
+      throw Error("fitness scores must be finite");
+  if (!(minSaturation >= 0.f && minSaturation < 1.f))
+    throw Error("fitness parameter minimum saturation must lie in [0, 1)");
+}
+
+//! What one camera needs to project a model point: cMo as floats (mm), intrinsics, image size.
+struct Projection
+{
+  float r[9], t[3];
+  float px, py, u0, v0;
+  int w, h;
+  const std::uint16_t *hue;
+};
+
+namespace {
+
+std::atomic<bool> g_forceScalar{false};
+
+#ifdef PM_HAVE_X86
+bool cpuHasAvx2() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
+#else
+bool cpuHasAvx2() { return false; }
+#endif
+
+struct Tolerances
+{
+  std::int32_t bg, in, inBg, outBg;
+};
+
+inline std::int32_t wrapDist(std::int32_t a, std::int32_t b)
+{
+  const std::int32_t d = a > b ? a - b : b - a;
+  return std::min(d, 3600 - d);
+}
+
+/*!
+  Projects point (X, Y, 0) and returns the image hue there (tenths of a degree, or kNoHue), or
+  -1 if it falls off the image. The operations are those of the AVX2 kernel, in the same order
+  (fused multiply-adds, one division, round to nearest), so both give the same pixel.
+*/
+inline std::int32_t sampleScalar(const Projection &p, float X, float Y)
+{
+  const float xc = std::fmaf(p.r[0], X, std::fmaf(p.r[1], Y, p.t[0]));
+  const float yc = std::fmaf(p.r[3], X, std::fmaf(p.r[4], Y, p.t[1]));
+  const float zc = std::fmaf(p.r[6], X, std::fmaf(p.r[7], Y, p.t[2]));
+  if (!(zc > 1e-3f))
+    return -1;
+  const float iz = 1.f / zc;
+  const float u = std::fmaf(p.px, xc * iz, p.u0), v = std::fmaf(p.py, yc * iz, p.v0);
+  if (!(std::fabs(u) < 1e9f && std::fabs(v) < 1e9f))
+    return -1;
+  const long ui = std::lrintf(u), vi = std::lrintf(v);
+  if (ui < 0 || vi < 0 || ui >= p.w || vi >= p.h)
+    return -1;
+  return p.hue[static_cast<std::size_t>(vi) * static_cast<std::size_t>(p.w) + static_cast<std::size_t>(ui)];
+}
+
+inline void classifyIn(std::int32_t h, std::int32_t hm, const Tolerances &t, FitnessCounts &c)
+{
+  if (h < 0) {
+    ++c.inOff;
+    return;
+  }
+  const bool hasHue = h != HuePlane::kNoHue;
+  if (hasHue && wrapDist(h, hm) <= t.in)
+    ++c.inMatch;
+  else if (hasHue && wrapDist(h, t.bg) <= t.inBg)
+    ++c.inBackground;
+  else
+    ++c.inOther;
+}
+
+inline void classifyOut(std::int32_t h, const Tolerances &t, FitnessCounts &c)
+{
+  if (h < 0)
+    ++c.outOff;
+  else if (h != HuePlane::kNoHue && wrapDist(h, t.bg) <= t.outBg)
+    ++c.outBackground;
+  else
+    ++c.outOther;
+}
+
+void countScalar(const Projection &p, const Tolerances &t, const float *x, const float *y, const std::int32_t *hm,
+                 std::size_t inBegin, std::size_t inEnd, std::size_t outBegin, std::size_t outEnd, FitnessCounts &c)
+{
+  for (std::size_t i = inBegin; i < inEnd; ++i)
+    classifyIn(sampleScalar(p, x[i], y[i]), hm[i], t, c);
+  for (std::size_t i = outBegin; i < outEnd; ++i)
+    classifyOut(sampleScalar(p, x[i], y[i]), t, c);
+}
+
+#ifdef PM_HAVE_X86
+__attribute__((target("avx2,fma"))) inline __m256i sample8(const Projection &p, const float *x, const float *y)
+{
+  const __m256 X = _mm256_loadu_ps(x), Y = _mm256_loadu_ps(y);
+  const __m256 xc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[0]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[1]), Y, _mm256_set1_ps(p.t[0])));
+  const __m256 yc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[3]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[4]), Y, _mm256_set1_ps(p.t[1])));
+  const __m256 zc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[6]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[7]), Y, _mm256_set1_ps(p.t[2])));
+  const __m256 front = _mm256_cmp_ps(zc, _mm256_set1_ps(1e-3f), _CMP_GT_OQ);
+  const __m256 iz = _mm256_div_ps(_mm256_set1_ps(1.f), zc);
+  const __m256 u = _mm256_fmadd_ps(_mm256_set1_ps(p.px), _mm256_mul_ps(xc, iz), _mm256_set1_ps(p.u0));
+  const __m256 v = _mm256_fmadd_ps(_mm256_set1_ps(p.py), _mm256_mul_ps(yc, iz), _mm256_set1_ps(p.v0));
+  const __m256 absMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
+  const __m256 big = _mm256_set1_ps(1e9f);
+  const __m256 finite = _mm256_and_ps(_mm256_cmp_ps(_mm256_and_ps(u, absMask), big, _CMP_LT_OQ),
+                                      _mm256_cmp_ps(_mm256_and_ps(v, absMask), big, _CMP_LT_OQ));
+  const __m256i ui = _mm256_cvtps_epi32(u), vi = _mm256_cvtps_epi32(v);
+  // 0 <= ui < w and 0 <= vi < h, as signed compares.
+  const __m256i inU = _mm256_andnot_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), ui), _mm256_cmpgt_epi32(_mm256_set1_epi32(p.w), ui));
+  const __m256i inV = _mm256_andnot_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), vi), _mm256_cmpgt_epi32(_mm256_set1_epi32(p.h), vi));
+  const __m256i valid = _mm256_and_si256(_mm256_and_si256(inU, inV), _mm256_castps_si256(_mm256_and_ps(front, finite)));
+  const __m256i idx = _mm256_add_epi32(_mm256_mullo_epi32(vi, _mm256_set1_epi32(p.w)), ui);
+  // 32-bit gather at byte offset 2*idx (the plane is padded), keep the low 16 bits.
+  const __m256i g = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int *>(p.hue), idx, valid, 2);
+  const __m256i hue = _mm256_and_si256(g, _mm256_set1_epi32(0xffff));
+  return _mm256_blendv_epi8(_mm256_set1_epi32(-1), hue, valid);
+}
+
+__attribute__((target("avx2,fma"))) inline __m256i wrapDist8(__m256i a, __m256i b)
+{
+  const __m256i d = _mm256_abs_epi32(_mm256_sub_epi32(a, b));
+  return _mm256_min_epi32(d, _mm256_sub_epi32(_mm256_set1_epi32(3600), d));
+}
+
+__attribute__((target("avx2,fma"))) inline int hsum(__m256i v)
+{
+  __m128i s = _mm_add_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+  s = _mm_add_epi32(s, _mm_shuffle_epi32(s, 0x4e));
+  s = _mm_add_epi32(s, _mm_shuffle_epi32(s, 0xb1));
+  return _mm_cvtsi128_si32(s);
+}
+
+__attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const Tolerances &t, const float *x,
+                                                   const float *y, const std::int32_t *hm, std::size_t inBegin,
+                                                   std::size_t inEnd, std::size_t outBegin, std::size_t outEnd,
+                                                   FitnessCounts &c)
+{
+  const __m256i neg = _mm256_set1_epi32(-1), noHue = _mm256_set1_epi32(HuePlane::kNoHue);
+  const __m256i bg = _mm256_set1_epi32(t.bg);
+  const __m256i tIn = _mm256_set1_epi32(t.in + 1), tInBg = _mm256_set1_epi32(t.inBg + 1), tOutBg = _mm256_set1_epi32(t.outBg + 1);
+  __m256i nMatch = _mm256_setzero_si256(), nBg = _mm256_setzero_si256(), nOff = _mm256_setzero_si256();
+  std::size_t i = inBegin;
+  for (; i + 8 <= inEnd; i += 8) {
+    const __m256i h = sample8(p, x + i, y + i);
+    const __m256i off = _mm256_cmpeq_epi32(h, neg);
+    const __m256i hasHue = _mm256_andnot_si256(_mm256_or_si256(off, _mm256_cmpeq_epi32(h, noHue)), neg);
+    const __m256i match = _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tIn, wrapDist8(h, _mm256_loadu_si256(reinterpret_cast<const __m256i *>(hm + i)))));
+    const __m256i isBg = _mm256_andnot_si256(match, _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tInBg, wrapDist8(h, bg))));
+    nMatch = _mm256_sub_epi32(nMatch, match);
+    nBg = _mm256_sub_epi32(nBg, isBg);
+    nOff = _mm256_sub_epi32(nOff, off);
+  }
+  const int inVec = static_cast<int>(i - inBegin);
+  c.inMatch += hsum(nMatch);
+  c.inBackground += hsum(nBg);
+  c.inOff += hsum(nOff);
+  c.inOther += inVec - hsum(nMatch) - hsum(nBg) - hsum(nOff);
+  countScalar(p, t, x, y, hm, i, inEnd, 0, 0, c);
+
+  __m256i oBg = _mm256_setzero_si256(), oOff = _mm256_setzero_si256();
+  std::size_t j = outBegin;
+  for (; j + 8 <= outEnd; j += 8) {
+    const __m256i h = sample8(p, x + j, y + j);
+    const __m256i off = _mm256_cmpeq_epi32(h, neg);
+    const __m256i hasHue = _mm256_andnot_si256(_mm256_or_si256(off, _mm256_cmpeq_epi32(h, noHue)), neg);
+    oBg = _mm256_sub_epi32(oBg, _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tOutBg, wrapDist8(h, bg))));
+    oOff = _mm256_sub_epi32(oOff, off);
+  }
+  const int outVec = static_cast<int>(j - outBegin);
+  c.outBackground += hsum(oBg);
+  c.outOff += hsum(oOff);
+  c.outOther += outVec - hsum(oBg) - hsum(oOff);
+  countScalar(p, t, x, y, hm, 0, 0, j, outEnd, c);
+}
+#endif
+
+std::int32_t deci(double deg) { return static_cast<std::int32_t>(std::lround(deg * 10.0)); }
+
+} // namespace
+
+const char *StereoFitness::kernelName() { return (!g_forceScalar && cpuHasAvx2()) ? "avx2" : "scalar"; }
+void StereoFitness::forceScalar(bool on) { g_forceScalar = on; }
+
+StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params)
+    : m_params(params)
+{
+  rig.validate();
+  model.validate("(in memory)");
+  params.validate();
+  const RigCamera *cams[2] = {&rig.left, &rig.right};
+  for (int k = 0; k < 2; ++k) {
+    const vpHomogeneousMatrix cMh = cams[k]->cMh();
+    Camera &c = m_cams[k];
+    for (unsigned r = 0; r < 3; ++r)
+      for (unsigned col = 0; col < 4; ++col)
+        c.cMh[4 * r + col] = cMh[r][col] * (col == 3 ? 1e3 : 1.0); // translation in mm
+    c.px = static_cast<float>(cams[k]->cam.get_px());
+    c.py = static_cast<float>(cams[k]->cam.get_py());
+    c.u0 = static_cast<float>(cams[k]->cam.get_u0());
+    c.v0 = static_cast<float>(cams[k]->cam.get_v0());
+    c.width = static_cast<int>(cams[k]->width);
+    c.height = static_cast<int>(cams[k]->height);
+  }
+  m_nIn = model.inner.size();
+  m_nOut = model.outer.size();
+  const std::size_t n = m_nIn + m_nOut;
+  m_x.resize(n);
+  m_y.resize(n);
+  m_hue.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ModelPoint &p = i < m_nIn ? model.inner[i] : model.outer[i - m_nIn];
+    m_x[i] = p.x;
+    m_y[i] = p.y;
+    m_hue[i] = deci(p.hue) % 3600;
+  }
+  m_bgHue = deci(model.backgroundHue) % 3600;
+  m_tolIn = deci(params.inTolDeg);
+  m_tolInBg = deci(params.inBgTolDeg);
+  m_tolOutBg = deci(params.outBgTolDeg);
+}
+
+void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+{
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  for (int k = 0; k < 2; ++k)
+    if (static_cast<int>(im[k]->getWidth()) != m_cams[k].width || static_cast<int>(im[k]->getHeight()) != m_cams[k].height)
+      throw Error(std::string(k == 0 ? "left" : "right") + " image is " + std::to_string(im[k]->getWidth()) + "x" +
+                  std::to_string(im[k]->getHeight()) + " but the rig's camera is " + std::to_string(m_cams[k].width) +
+                  "x" + std::to_string(m_cams[k].height));
+  for (int k = 0; k < 2; ++k)
+    m_planes[static_cast<std::size_t>(k)].compute(*im[k], m_params.minSaturation);
+  m_hasImages = true;
+}
+
+void StereoFitness::check(const Phi &phi) const
+{
+  if (!phi.isValid())
+    throw Error("fitness of an invalid pose phi = " + phi.toString() + ": |eps| must be <= 1 and every value finite");
+  if (!m_hasImages)
+    throw Error("fitness: no stereo pair was given (call setImages first)");
+}
+
+Projection StereoFitness::projectionOf(int cam, const Phi &phi) const
+{
+  const Camera &c = m_cams[cam];
+  const Rot3 R = rotationOf(phi);
+  const double t[3] = {phi.x, phi.y, phi.z};
+  Projection p;
+  // cMo = cMh * hMo, in mm.
+  for (int r = 0; r < 3; ++r) {
+    for (int col = 0; col < 3; ++col)
+      p.r[3 * r + col] = static_cast<float>(c.cMh[4 * r] * R[col] + c.cMh[4 * r + 1] * R[3 + col] + c.cMh[4 * r + 2] * R[6 + col]);
+    p.t[r] = static_cast<float>(c.cMh[4 * r] * t[0] + c.cMh[4 * r + 1] * t[1] + c.cMh[4 * r + 2] * t[2] + c.cMh[4 * r + 3]);
+  }
+  p.px = c.px;
+  p.py = c.py;
+  p.u0 = c.u0;
+  p.v0 = c.v0;
+  p.w = c.width;
+  p.h = c.height;
+  p.hue = m_planes[static_cast<std::size_t>(cam)].data();
+  return p;
+}
+
+FitnessCounts StereoFitness::countCamera(int cam, const Phi &phi) const
+{
+  const Projection p = projectionOf(cam, phi);
+  const Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
+  FitnessCounts counts;
+  const std::size_t n = m_nIn + m_nOut;
+#ifdef PM_HAVE_X86
+  static const bool avx2 = cpuHasAvx2();
+  if (avx2 && !g_forceScalar) {
+    countAvx2(p, tol, m_x.data(), m_y.data(), m_hue.data(), 0, m_nIn, m_nIn, n, counts);
+    return counts;
+  }
+#endif
+  countScalar(p, tol, m_x.data(), m_y.data(), m_hue.data(), 0, m_nIn, m_nIn, n, counts);
+  return counts;
+}
+
+double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
+{
+  if (!a.isValid() || !b.isValid())
+    throw Error("reprojection between invalid poses " + a.toString() + " and " + b.toString());
+  double sum = 0;
+  std::size_t n = 0;
+  for (int cam = 0; cam < 2; ++cam) {
+    const Projection pa = projectionOf(cam, a), pb = projectionOf(cam, b);
+    for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
+      double uv[2][2];
+      bool front = true;
+      for (int k = 0; k < 2; ++k) {
+        const Projection &p = k ? pb : pa;
+        const double X = m_x[i], Y = m_y[i];
+        const double xc = p.r[0] * X + p.r[1] * Y + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.t[1];
+        const double zc = p.r[6] * X + p.r[7] * Y + p.t[2];
+        front = front && zc > 1e-3;
+        uv[k][0] = p.px * xc / zc + p.u0;
+        uv[k][1] = p.py * yc / zc + p.v0;
+      }
+      if (!front)
+        continue;
+      sum += (uv[0][0] - uv[1][0]) * (uv[0][0] - uv[1][0]) + (uv[0][1] - uv[1][1]) * (uv[0][1] - uv[1][1]);
+      ++n;
+    }
+  }
+  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) const
+{
+  check(phi);
+  const Projection p = projectionOf(camera, phi);
+  const Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
+  std::vector<PointScore> out;
+  for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
+    const bool inner = i < m_nIn;
+    FitnessCounts c;
+    const std::int32_t h = sampleScalar(p, m_x[i], m_y[i]);
+    if (inner)
+      classifyIn(h, m_hue[i], tol, c);
+    else
+      classifyOut(h, tol, c);
+    PointScore s;
+    const float xc = p.r[0] * m_x[i] + p.r[1] * m_y[i] + p.t[0], yc = p.r[3] * m_x[i] + p.r[4] * m_y[i] + p.t[1];
+    const float zc = p.r[6] * m_x[i] + p.r[7] * m_y[i] + p.t[2];
+    s.u = zc > 0 ? p.px * xc / zc + p.u0 : -1.f;
+    s.v = zc > 0 ? p.py * yc / zc + p.v0 : -1.f;
+    s.inner = inner;
+    s.cls = c.inMatch ? PointScore::InMatch
+            : c.inBackground ? PointScore::InBackground
+            : c.inOther ? PointScore::InOther
+            : c.outBackground ? PointScore::OutBackground
+            : c.outOther ? PointScore::OutOther
+                         : PointScore::Off;
+    out.push_back(s);
+  }
+  return out;
+}
+
+double StereoFitness::score(const FitnessCounts &c) const
+{
+  const FitnessParams &q = m_params;
+  const double sum = q.inMatch * c.inMatch + q.inBackground * c.inBackground + q.inOther * c.inOther +
+                     q.offImage * (c.inOff + c.outOff) + q.outBackground * c.outBackground + q.outOther * c.outOther;
+  return sum / static_cast<double>(m_nIn + m_nOut);
+}
+
+double StereoFitness::evaluate(const Phi &phi) const
+{
+  check(phi);
+  return 0.5 * (score(countCamera(0, phi)) + score(countCamera(1, phi)));
+}
+
+void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out) const
+{
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] = evaluate(phis[i]);
+}
+
+FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const
+{
+  check(phi);
+  FitnessDetail d;
+  d.countsLeft = countCamera(0, phi);
+  d.countsRight = countCamera(1, phi);
+  d.left = score(d.countsLeft);
+  d.right = score(d.countsRight);
+  d.fitness = 0.5 * (d.left + d.right);
+  return d;
+}
+
+} // namespace pm

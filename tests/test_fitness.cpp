@@ -1,0 +1,325 @@
+// The stereo fitness (Eqs. 8-11): exact scores, wrap-around, off-image points, kernels, threads,
+// errors, and the fitness maps of the 12 targets (Figs. 10, 11).
+#include <gtest/gtest.h>
+
+#include <random>
+#include <thread>
+
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/core/Hue.h"
+#include "pm/core/FitnessMap.h"
+#include "pm/core/HuePlane.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/io/RigFile.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+
+namespace {
+
+pm::StereoRig labRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
+
+//! A model of n_in points of hue \e hue on a 10 mm grid and n_out points around them; background hue 210.
+pm::PhotoModel gridModel(float hue)
+{
+  pm::PhotoModel m;
+  m.distanceMm = 500;
+  m.px = m.py = 754;
+  m.u0 = 320;
+  m.v0 = 240;
+  m.photoWidth = 640;
+  m.photoHeight = 480;
+  m.backgroundHue = 210;
+  for (int j = -3; j <= 3; ++j)
+    for (int i = -3; i <= 3; ++i) {
+      pm::ModelPoint p;
+      p.x = static_cast<float>(10 * i);
+      p.y = static_cast<float>(10 * j);
+      p.hue = hue;
+      m.inner.push_back(p);
+    }
+  for (int k = 0; k < 20; ++k) {
+    pm::ModelPoint p;
+    p.x = static_cast<float>(50 * std::cos(k * M_PI / 10));
+    p.y = static_cast<float>(50 * std::sin(k * M_PI / 10));
+    p.hue = 210;
+    m.outer.push_back(p);
+  }
+  return m;
+}
+
+vpImage<vpRGBa> uniform(unsigned char r, unsigned char g, unsigned char b) { return vpImage<vpRGBa>(480, 640, vpRGBa(r, g, b)); }
+
+const pm::Phi kAhead{0, 0, 500, 0, 0, 0};
+
+} // namespace
+
+TEST(Fitness, ExactScoresOnUniformImages)
+{
+  const pm::StereoRig rig = labRig();
+  const pm::PhotoModel m = gridModel(0.f); // a red model: 49 S_in, 20 S_out
+  pm::StereoFitness fit(rig, m);
+  const double n = 69;
+  // All of the image is background (hue 210): S_in -0.005 each, S_out +0.1 each.
+  fit.setImages(uniform(0, 127, 255), uniform(0, 127, 255));
+  EXPECT_NEAR(pm::hueDeg(vpRGBa(0, 127, 255)), 210.1f, 0.1f);
+  EXPECT_DOUBLE_EQ(fit.evaluate(kAhead), (49 * -0.005 + 20 * 0.1) / n);
+  // All of it is the target's red: S_in +2, S_out -0.5.
+  fit.setImages(uniform(255, 0, 0), uniform(255, 0, 0));
+  EXPECT_DOUBLE_EQ(fit.evaluate(kAhead), (49 * 2.0 + 20 * -0.5) / n);
+  // Green is neither: S_in 0, S_out -0.5.
+  fit.setImages(uniform(0, 255, 0), uniform(0, 255, 0));
+  EXPECT_DOUBLE_EQ(fit.evaluate(kAhead), (20 * -0.5) / n);
+  const pm::FitnessDetail d = fit.evaluateDetail(kAhead);
+  EXPECT_EQ(d.countsLeft.inOther, 49);
+  EXPECT_EQ(d.countsRight.outOther, 20);
+  // Scores and tolerances are parameters.
+  pm::FitnessParams p;
+  p.outOther = -1.0;
+  pm::StereoFitness fit2(rig, m, p);
+  fit2.setImages(uniform(0, 255, 0), uniform(0, 255, 0));
+  EXPECT_DOUBLE_EQ(fit2.evaluate(kAhead), -20.0 / n);
+}
+
+TEST(Fitness, HueDistancesWrapAround)
+{
+  const pm::StereoRig rig = labRig();
+  pm::StereoFitness fit(rig, gridModel(355.f));
+  fit.setImages(uniform(255, 42, 0), uniform(255, 42, 0)); // hue 10 deg: 15 deg from 355
+  EXPECT_NEAR(pm::hueDeg(vpRGBa(255, 42, 0)), 9.9f, 0.1f);
+  EXPECT_EQ(fit.evaluateDetail(kAhead).countsLeft.inMatch, 49);
+  pm::FitnessParams tight;
+  tight.inTolDeg = 10;
+  pm::StereoFitness fit2(rig, gridModel(355.f), tight);
+  fit2.setImages(uniform(255, 42, 0), uniform(255, 42, 0));
+  EXPECT_EQ(fit2.evaluateDetail(kAhead).countsLeft.inMatch, 0);
+}
+
+TEST(Fitness, OffTheImagesIsFiniteAndScoresOffImage)
+{
+  const pm::StereoRig rig = labRig();
+  pm::StereoFitness fit(rig, gridModel(0.f));
+  fit.setImages(uniform(255, 0, 0), uniform(255, 0, 0));
+  for (const pm::Phi &far : {pm::Phi{5000, 0, 500, 0, 0, 0}, pm::Phi{0, 0, -500, 0, 0, 0}, pm::Phi{0, 0, 1e9, 0, 0, 0},
+                             pm::Phi{0, 0, 0, 0, 0, 0}, pm::Phi{1e30, -1e30, 1e-30, 0.5, 0.5, 0.5}}) {
+    const double f = fit.evaluate(far);
+    EXPECT_TRUE(std::isfinite(f)) << far.toString();
+  }
+  EXPECT_DOUBLE_EQ(fit.evaluate({5000, 0, 500, 0, 0, 0}), 0.0);
+  pm::FitnessParams p;
+  p.offImage = -1;
+  pm::StereoFitness fit2(rig, gridModel(0.f), p);
+  fit2.setImages(uniform(255, 0, 0), uniform(255, 0, 0));
+  EXPECT_DOUBLE_EQ(fit2.evaluate({5000, 0, 500, 0, 0, 0}), -1.0);
+  EXPECT_DOUBLE_EQ(fit2.evaluate({0, 0, -500, 0, 0, 0}), -1.0); // behind the cameras
+}
+
+TEST(Fitness, InvalidInputIsRefused)
+{
+  const pm::StereoRig rig = labRig();
+  pm::StereoFitness fit(rig, gridModel(0.f));
+  EXPECT_THROW(fit.evaluate(kAhead), pm::Error); // no images yet
+  EXPECT_THROW(fit.setImages(vpImage<vpRGBa>(240, 320), uniform(0, 0, 0)), pm::Error);
+  fit.setImages(uniform(0, 0, 0), uniform(0, 0, 0));
+  EXPECT_THROW(fit.evaluate({0, 0, 500, 0.8, 0.8, 0}), pm::Error);
+  EXPECT_THROW(fit.evaluate({NAN, 0, 500, 0, 0, 0}), pm::Error);
+  pm::PhotoModel empty = gridModel(0.f);
+  empty.inner.clear();
+  EXPECT_THROW(pm::StereoFitness(rig, empty), pm::Error);
+  pm::FitnessParams bad;
+  bad.inTolDeg = -1;
+  EXPECT_THROW(pm::StereoFitness(rig, gridModel(0.f), bad), pm::Error);
+}
+
+TEST(HuePlane, MatchesThePerPixelFormula)
+{
+  const vpImage<vpRGBa> I = pm::test::bluePhoto(64, 48, 9);
+  vpImage<vpRGBa> J = I;
+  std::mt19937 rng(1);
+  std::uniform_int_distribution<int> c(0, 255);
+  for (unsigned k = 0; k < J.getSize(); ++k)
+    J.bitmap[k] = vpRGBa(static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)));
+  pm::HuePlane plane;
+  plane.compute(J);
+  for (unsigned v = 0; v < J.getHeight(); ++v)
+    for (unsigned u = 0; u < J.getWidth(); ++u) {
+      const pm::Hsv h = pm::rgbToHsv(J[v][u]);
+      if (h.s > 0) {
+        EXPECT_LE(pm::hueDistance(plane.at(u, v) / 10.f, h.h), 0.05f + 1e-4f);
+      }
+    }
+  plane.compute(vpImage<vpRGBa>(2, 2, vpRGBa(128, 128, 128)), 0.1f);
+  EXPECT_EQ(plane.at(1, 1), pm::HuePlane::kNoHue); // grey has no hue when a minimum saturation is set
+}
+
+class FitnessOnC12 : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    rig = new pm::StereoRig(labRig());
+    const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
+    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
+    const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig->left.cam, 640, 480, 500);
+    fit = new pm::StereoFitness(*rig, sm.build.model);
+    const auto im = scene.renderStereo(*rig, hMo, 0);
+    fit->setImages(im.left, im.right);
+    truth = sm.truth(hMo);
+  }
+  static void TearDownTestSuite()
+  {
+    delete fit;
+    delete rig;
+  }
+  static std::vector<pm::Phi> randomPoses(std::size_t n)
+  {
+    std::mt19937 rng(123);
+    std::uniform_real_distribution<double> pos(-180, 180), z(320, 680), e(-0.37, 0.37);
+    std::vector<pm::Phi> v;
+    for (std::size_t i = 0; i < n; ++i)
+      v.push_back({pos(rng), pos(rng), z(rng), e(rng), e(rng), e(rng)});
+    return v;
+  }
+  static pm::StereoRig *rig;
+  static pm::StereoFitness *fit;
+  static pm::Phi truth;
+};
+pm::StereoRig *FitnessOnC12::rig = nullptr;
+pm::StereoFitness *FitnessOnC12::fit = nullptr;
+pm::Phi FitnessOnC12::truth;
+
+TEST_F(FitnessOnC12, Avx2AndScalarKernelsAgreeExactly)
+{
+  const auto ps = randomPoses(2000);
+  std::vector<double> a(ps.size()), b(ps.size());
+  fit->evaluate(ps.data(), ps.size(), a.data());
+  pm::StereoFitness::forceScalar(true);
+  fit->evaluate(ps.data(), ps.size(), b.data());
+  pm::StereoFitness::forceScalar(false);
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    ASSERT_EQ(a[i], b[i]) << ps[i].toString() << " kernel " << pm::StereoFitness::kernelName();
+}
+
+TEST_F(FitnessOnC12, ThreadSafeAndBatchEqualsSingle)
+{
+  const auto ps = randomPoses(400);
+  std::vector<double> seq(ps.size()), par(ps.size());
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    seq[i] = fit->evaluate(ps[i]);
+  std::thread t1([&] { fit->evaluate(ps.data(), 200, par.data()); });
+  std::thread t2([&] { fit->evaluate(ps.data() + 200, 200, par.data() + 200); });
+  t1.join();
+  t2.join();
+  EXPECT_EQ(seq, par);
+}
+
+TEST_F(FitnessOnC12, TruthBeatsPosesThirtyMillimetresOrOneTenthAway)
+{
+  const double fTruth = fit->evaluate(truth);
+  for (std::size_t k = 0; k < 6; ++k)
+    for (double s : {-1.0, 1.0}) {
+      pm::Phi p = truth;
+      p[k] += s * (k < 3 ? 30.0 : 0.1);
+      EXPECT_GT(fTruth, fit->evaluate(p)) << "variable " << k << " moved by " << s;
+    }
+}
+
+namespace {
+
+struct MapErrors
+{
+  double x, y, yOfYz, z, e1, e2, e2OfE2e3, e3;
+  double reprojE1E2, reprojE2E3;
+  int positionLosses; //!< poses 30 mm from the truth (x, y, z, both ways) scoring at least as high as it
+  int rollLosses;     //!< poses 0.1 from the truth in eps3 scoring at least as high
+  int tiltLosses;     //!< poses 0.1 from the truth in eps1 or eps2 scoring higher by more than one point's worth
+};
+
+MapErrors mapErrors(const std::string &code, double reliefScale)
+{
+  const pm::StereoRig rig = labRig();
+  pm::sim::TargetShape shape = pm::sim::makeTarget(code, 0.5);
+  shape.scaleRelief(reliefScale);
+  const pm::sim::Scene scene(shape);
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
+  pm::StereoFitness fit(rig, sm.build.model);
+  const auto im = scene.renderStereo(rig, hMo, 0);
+  fit.setImages(im.left, im.right);
+  const pm::Phi t = sm.truth(hMo);
+  const auto specs = pm::paperFitnessMaps();
+  pm::FitnessMap m[4];
+  for (int i = 0; i < 4; ++i)
+    m[i] = pm::computeFitnessMap(fit, t, specs[static_cast<std::size_t>(i)]);
+  auto reproj = [&](const pm::FitnessMap &mm) {
+    pm::Phi p = t;
+    p[mm.spec.a] = mm.peakA;
+    p[mm.spec.b] = mm.peakB;
+    return fit.reprojectionRms(p, t);
+  };
+  int positionLosses = 0, rollLosses = 0, tiltLosses = 0;
+  const double fTruth = fit.evaluate(t);
+  for (std::size_t k = 0; k < 6; ++k)
+    for (double s : {-1.0, 1.0}) {
+      pm::Phi p = t;
+      p[k] += s * (k < 3 ? 30.0 : 0.1);
+      const double f = fit.evaluate(p);
+      if (k < 3)
+        positionLosses += f >= fTruth;
+      else if (k == 5)
+        rollLosses += f >= fTruth;
+      else // one model point changing class in one camera moves F by at most 2.5 / (2 n)
+        tiltLosses += f > fTruth + 1.25 / static_cast<double>(fit.modelSize());
+    }
+  return {m[0].peakA - t.x,  m[0].peakB - t.y,  m[1].peakA - t.y,  m[1].peakB - t.z, m[2].peakA - t.e1,
+          m[2].peakB - t.e2, m[3].peakA - t.e2, m[3].peakB - t.e3, reproj(m[2]),     reproj(m[3]), positionLosses, rollLosses, tiltLosses};
+}
+
+} // namespace
+
+// The photo-model is a plane; the toys have relief. Made flat, every target's four maps peak at the
+// truth within the tolerances (2 mm; 0.02 in eps, or under 1 px of reprojection where a
+// tilt of a thin target cannot be seen by the cameras), and the truth scores higher than every pose
+// 30 mm or 0.1 away (a tilt of 0.1 about the long axis of the 30 mm tall moray eel, which moves its
+// points by 1 px, ties with it to within one point's worth of F).
+TEST(FitnessMaps, FlatTargetsPeakAtTheTruth)
+{
+  for (const auto &info : pm::sim::targetCatalog()) {
+    const MapErrors e = mapErrors(info.code, 0.0);
+    EXPECT_LE(std::fabs(e.x), 2.0) << info.code;
+    EXPECT_LE(std::fabs(e.y), 2.0) << info.code;
+    EXPECT_LE(std::fabs(e.yOfYz), 2.0) << info.code;
+    EXPECT_LE(std::fabs(e.z), 2.0) << info.code;
+    EXPECT_TRUE(std::max(std::fabs(e.e1), std::fabs(e.e2)) <= 0.02 || e.reprojE1E2 < 1.0)
+        << info.code << " e1 " << e.e1 << " e2 " << e.e2 << " reprojection " << e.reprojE1E2 << " px";
+    EXPECT_TRUE(std::max(std::fabs(e.e2OfE2e3), std::fabs(e.e3)) <= 0.02 || e.reprojE2E3 < 1.0)
+        << info.code << " e2 " << e.e2OfE2e3 << " e3 " << e.e3 << " reprojection " << e.reprojE2E3 << " px";
+    EXPECT_EQ(e.positionLosses, 0) << info.code << ": a pose 30 mm from the truth scores as high";
+    EXPECT_EQ(e.rollLosses, 0) << info.code << ": a pose 0.1 from the truth in eps3 scores as high";
+    EXPECT_EQ(e.tiltLosses, 0) << info.code << ": a pose 0.1 from the truth in eps1 or eps2 scores higher by more than one point";
+  }
+}
+
+// With their relief (up to 110 mm), the maps still have one main peak at the truth in x, y and the
+// in-plane rotation eps3 (the 2 mm and 0.02). The depth z and the tilts eps1, eps2 are
+// pulled by the relief's parallax, which a plane cannot follow: z peaks in front of the base plane,
+// but inside the toy (between its base and its top), and the tilts within the paper's own bound
+// (Table 1: 0.15). The truth scores higher than every pose 30 mm away and 0.1 away in eps3; a tilt of
+// 0.1 (eps1, eps2) matches the relief's parallax better for the dolphin, jellyfish and anemonefish,
+// so the tilts are not asserted there. Measured values are in README (pm-fitness-map).
+TEST(FitnessMaps, TargetsWithReliefPeakNearTheTruth)
+{
+  for (const auto &info : pm::sim::targetCatalog()) {
+    const MapErrors e = mapErrors(info.code, 1.0);
+    EXPECT_LE(std::fabs(e.x), 2.0) << info.code;
+    EXPECT_LE(std::fabs(e.y), 2.0) << info.code;
+    EXPECT_LE(std::fabs(e.yOfYz), 2.0) << info.code;
+    EXPECT_LE(std::fabs(e.e3), 0.02) << info.code;
+    EXPECT_LE(e.z, 2.0) << info.code;
+    EXPECT_GE(e.z, -info.depthMm) << info.code;
+    EXPECT_LE(std::max({std::fabs(e.e1), std::fabs(e.e2), std::fabs(e.e2OfE2e3)}), 0.15) << info.code;
+    EXPECT_EQ(e.positionLosses, 0) << info.code << ": a pose 30 mm from the truth scores as high";
+    EXPECT_EQ(e.rollLosses, 0) << info.code << ": a pose 0.1 from the truth in eps3 scores as high";
+  }
+}
