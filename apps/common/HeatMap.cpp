@@ -1,4 +1,5 @@
 #include "pm/app/HeatMap.h"
+#include "pm/app/PlotUtil.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,46 +9,6 @@
 
 namespace pm::app {
 
-namespace {
-
-std::string fmt(double v)
-{
-  char b[32];
-  if (std::fabs(v) >= 100 || v == std::floor(v))
-    std::snprintf(b, sizeof b, "%.0f", v);
-  else
-    std::snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
-
-//! About 6 round tick values over [a, b].
-std::vector<double> ticks(double a, double b)
-{
-  const double span = b - a, raw = span / 6, mag = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = mag;
-  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
-    if (m * mag >= raw) {
-      step = m * mag;
-      break;
-    }
-  std::vector<double> t;
-  for (double v = std::ceil(a / step - 1e-9) * step; v <= b + 1e-9 * span; v += step)
-    t.push_back(std::fabs(v) < 1e-12 * span ? 0.0 : v);
-  return t;
-}
-
-void text(cv::Mat &m, const std::string &s, cv::Point p, double scale = 0.45, int align = 0)
-{
-  int base = 0;
-  const cv::Size sz = cv::getTextSize(s, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &base);
-  if (align == 1)
-    p.x -= sz.width / 2;
-  else if (align == 2)
-    p.x -= sz.width;
-  cv::putText(m, s, p, cv::FONT_HERSHEY_SIMPLEX, scale, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
-}
-
-} // namespace
 
 vpImage<vpRGBa> drawHeatMap(const Grid2D &g, const std::string &title, const std::vector<Marker> &markers)
 {
@@ -72,21 +33,21 @@ vpImage<vpRGBa> drawHeatMap(const Grid2D &g, const std::string &title, const std
   const double yMin = g.y0 - g.dy / 2, yMax = g.y0 + (g.ny - 0.5) * g.dy;
   auto px = [&](double x) { return left + static_cast<int>(std::lround((x - xMin) / (xMax - xMin) * plot)); };
   auto py = [&](double y) { return top + plot - static_cast<int>(std::lround((y - yMin) / (yMax - yMin) * plot)); };
-  for (double t : ticks(xMin, xMax)) {
+  for (double t : niceTicks(xMin, xMax)) {
     cv::line(img, {px(t), top + plot}, {px(t), top + plot + 5}, cv::Scalar(0, 0, 0));
-    text(img, fmt(t), {px(t), top + plot + 20}, 0.42, 1);
+    putLabel(img, tickLabel(t), {px(t), top + plot + 20}, 0.42, 1);
   }
-  for (double t : ticks(yMin, yMax)) {
+  for (double t : niceTicks(yMin, yMax)) {
     cv::line(img, {left - 5, py(t)}, {left, py(t)}, cv::Scalar(0, 0, 0));
-    text(img, fmt(t), {left - 8, py(t) + 5}, 0.42, 2);
+    putLabel(img, tickLabel(t), {left - 8, py(t) + 5}, 0.42, 2);
   }
-  text(img, g.xName, {left + plot / 2, H - 12}, 0.5, 1);
+  putLabel(img, g.xName, {left + plot / 2, H - 12}, 0.5, 1);
   cv::Mat ylabel(24, 200, CV_8UC3, cv::Scalar(255, 255, 255));
-  text(ylabel, g.yName, {100, 17}, 0.5, 1);
+  putLabel(ylabel, g.yName, {100, 17}, 0.5, 1);
   cv::Mat yrot;
   cv::rotate(ylabel, yrot, cv::ROTATE_90_COUNTERCLOCKWISE);
   yrot.copyTo(img(cv::Rect(4, top + plot / 2 - 100, 24, 200)));
-  text(img, title, {left + plot / 2, 25}, 0.55, 1);
+  putLabel(img, title, {left + plot / 2, 25}, 0.55, 1);
   // Colour bar.
   const int bx = left + plot + 20;
   for (int y = 0; y < plot; ++y) {
@@ -95,12 +56,12 @@ vpImage<vpRGBa> drawHeatMap(const Grid2D &g, const std::string &title, const std
     cv::line(img, {bx, top + y}, {bx + barW, top + y}, cv::Scalar(cc.at<cv::Vec3b>(0, 0)));
   }
   cv::rectangle(img, cv::Rect(bx - 1, top - 1, barW + 2, plot + 2), cv::Scalar(0, 0, 0));
-  for (double t : ticks(lo, hi)) {
+  for (double t : niceTicks(lo, hi)) {
     const int y = top + plot - static_cast<int>(std::lround((t - lo) / (hi - lo) * plot));
     cv::line(img, {bx + barW, y}, {bx + barW + 4, y}, cv::Scalar(0, 0, 0));
-    text(img, fmt(t), {bx + barW + 7, y + 5}, 0.42);
+    putLabel(img, tickLabel(t), {bx + barW + 7, y + 5}, 0.42);
   }
-  text(img, "F", {bx + barW / 2, top - 8}, 0.5, 1);
+  putLabel(img, "F", {bx + barW / 2, top - 8}, 0.5, 1);
   // Markers, and their legend under the colour bar.
   int ly = top + plot + 22;
   for (const auto &m : markers) {
@@ -117,16 +78,10 @@ vpImage<vpRGBa> drawHeatMap(const Grid2D &g, const std::string &title, const std
     mark({px(m.x), py(m.y)}, 20);
     cv::rectangle(img, cv::Rect(bx - 4, ly - 10, 14, 14), cv::Scalar(128, 128, 128), cv::FILLED);
     mark({bx + 3, ly - 3}, 10);
-    text(img, m.label, {bx + 16, ly + 2}, 0.42);
+    putLabel(img, m.label, {bx + 16, ly + 2}, 0.42);
     ly += 18;
   }
-  vpImage<vpRGBa> out(static_cast<unsigned>(H), static_cast<unsigned>(W));
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      const cv::Vec3b &b = img.at<cv::Vec3b>(y, x);
-      out[static_cast<unsigned>(y)][static_cast<unsigned>(x)] = vpRGBa(b[2], b[1], b[0]);
-    }
-  return out;
+  return toVisp(img);
 }
 
 } // namespace pm::app

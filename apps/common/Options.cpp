@@ -1,5 +1,7 @@
 #include "pm/app/Options.h"
 
+#include "pm/io/TrackerConfigFile.h"
+
 namespace pm::app {
 
 void addModelOptions(CLI::App &app, PhotoModelParams &p)
@@ -33,6 +35,61 @@ void addFitnessOptions(CLI::App &app, FitnessParams &p)
   app.add_option("--in-tol-deg", p.inTolDeg, "S_in: |H_I - H_M| tolerance (deg)")->check(CLI::Range(0.0, 180.0))->group(g);
   app.add_option("--in-bg-tol-deg", p.inBgTolDeg, "S_in: |H_B - H_I| tolerance (deg)")->check(CLI::Range(0.0, 180.0))->group(g);
   app.add_option("--out-bg-tol-deg", p.outBgTolDeg, "S_out: |H_B - H_I| tolerance (deg)")->check(CLI::Range(0.0, 180.0))->group(g);
+}
+
+TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m_cli(defaults)
+{
+  const char *g = "Tracker";
+  app.add_option("--config", m_config, "tracker configuration file (JSON); command-line options override it")
+      ->check(CLI::ExistingFile)
+      ->group(g);
+  auto add = [&](CLI::Option *o, std::function<void(TrackerParams &, const TrackerParams &)> f) {
+    o->group(g);
+    m_set.emplace_back(o, std::move(f));
+  };
+  TrackerParams &p = m_cli;
+  add(app.add_option("--budget-ms", p.budgetMs, "compute budget per frame, wall time (ms)")->check(CLI::Range(0.0, 1e6)),
+      [](TrackerParams &t, const TrackerParams &c) { t.budgetMs = c.budgetMs; t.budgetEvaluations = 0; });
+  add(app.add_option("--budget-evals", p.budgetEvaluations, "compute budget per frame, fitness evaluations "
+                                                            "(deterministic; overrides --budget-ms)")->check(CLI::Range(0L, 100000000L)),
+      [](TrackerParams &t, const TrackerParams &c) { t.budgetEvaluations = c.budgetEvaluations; });
+  add(app.add_option("--population", p.ga.population, "RM-GA individuals")->check(CLI::Range(2, 100000)),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.population = c.ga.population; });
+  add(app.add_option("--elite", p.ga.elite, "RM-GA individuals always kept"),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.elite = c.ga.elite; });
+  add(app.add_option("--tournament", p.ga.tournament, "RM-GA tournament size"),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.tournament = c.ga.tournament; });
+  add(app.add_option("--crossover-rate", p.ga.crossoverRate, "RM-GA crossover probability")->check(CLI::Range(0.0, 1.0)),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.crossoverRate = c.ga.crossoverRate; });
+  add(app.add_option("--mutation-per-bit", p.ga.mutationPerBit, "RM-GA probability to flip each of the 72 bits")
+          ->check(CLI::Range(0.0, 1.0)),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.mutationPerBit = c.ga.mutationPerBit; });
+  add(app.add_flag("--predict,!--no-predict", p.ga.predictMotion, "option: move the population by the predicted motion"),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.predictMotion = c.ga.predictMotion; });
+  add(app.add_option("--refine-evals", p.ga.refineEvaluations, "option: local refinement of the best, evaluations per frame")
+          ->check(CLI::Range(0, 1000000)),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.refineEvaluations = c.ga.refineEvaluations; });
+  add(app.add_option("--restart-generations", p.ga.restartGenerations,
+                     "option: restart all but the best after this many generations without gain (0: never)")
+          ->check(CLI::Range(0, 1000000)),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.restartGenerations = c.ga.restartGenerations; });
+  add(app.add_option("--ga-seed", p.ga.seed, "RM-GA random seed"),
+      [](TrackerParams &t, const TrackerParams &c) { t.ga.seed = c.ga.seed; });
+  add(app.add_option("--lock-quality", p.lockQuality, "normalised fitness q from which the target is tracked"),
+      [](TrackerParams &t, const TrackerParams &c) { t.lockQuality = c.lockQuality; });
+  add(app.add_option("--lost-quality", p.lostQuality, "normalised fitness q below which it is lost"),
+      [](TrackerParams &t, const TrackerParams &c) { t.lostQuality = c.lostQuality; });
+}
+
+TrackerParams TrackerOptions::resolve() const
+{
+  TrackerParams p = m_config.empty() ? m_cli : io::loadTrackerConfig(m_config);
+  if (!m_config.empty())
+    for (const auto &[opt, set] : m_set)
+      if (opt->count() > 0)
+        set(p, m_cli);
+  p.validate();
+  return p;
 }
 
 } // namespace pm::app

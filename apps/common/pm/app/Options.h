@@ -9,6 +9,7 @@
 #include "pm/core/PhotoModelBuilder.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/sim/Scene.h"
+#include "pm/tracker/PhotoModelTracker.h"
 
 namespace pm::app {
 
@@ -18,5 +19,24 @@ void addModelOptions(CLI::App &app, PhotoModelParams &p);
 void addSceneOptions(CLI::App &app, sim::SceneParams &p);
 //! --in-tol-deg, --in-bg-tol-deg, --out-bg-tol-deg
 void addFitnessOptions(CLI::App &app, FitnessParams &p);
+
+/*!
+  The tracker's options: --config FILE (JSON, see TrackerConfigFile.h), then --budget-ms,
+  --budget-evals, --population, --elite, --tournament, --crossover-rate, --mutation-per-bit,
+  --predict / --no-predict, --refine-evals, --restart-generations, --ga-seed, --lock-quality,
+  --lost-quality; an option given on the command line overrides the file.
+*/
+class TrackerOptions
+{
+public:
+  explicit TrackerOptions(CLI::App &app, const TrackerParams &defaults = TrackerParams());
+  //! The parameters: defaults, then the file, then the command line. Throws pm::Error.
+  TrackerParams resolve() const;
+
+private:
+  TrackerParams m_cli;
+  std::string m_config;
+  std::vector<std::pair<CLI::Option *, std::function<void(TrackerParams &, const TrackerParams &)>>> m_set;
+};
 
 } // namespace pm::app

@@ -1,0 +1,413 @@
+//! pm-track: real-time pose tracking of a moving target (the paper's Sec. 6, Table 2, Figs. 12-14).
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "pm/app/App.h"
+#include "pm/app/Options.h"
+#include "pm/app/Overlay.h"
+#include "pm/app/Progress.h"
+#include "pm/app/TimePlot.h"
+#include "pm/core/Error.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/PhotoModelFile.h"
+#include "pm/io/RigFile.h"
+#include "pm/io/StagedFiles.h"
+#include "pm/io/TrackerConfigFile.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+#include "pm/sim/Trajectory.h"
+#include "pm/tracker/PhotoModelTracker.h"
+
+namespace {
+
+const char *kNames[6] = {"x", "y", "z", "eps1", "eps2", "eps3"};
+
+struct FrameRecord
+{
+  double t = 0;
+  bool haveTruth = false, moving = false;
+  pm::Phi truth, estimate;
+  pm::TrackResult r;
+};
+
+/*!
+  The file name of frame \e index from a pattern with one printf-style integer field ("%d" or
+  "%0Nd"; "%%" is a literal %). Throws pm::Error for any other pattern (never passed to printf).
+*/
+std::string formatPattern(const std::string &pattern, int index)
+{
+  std::string out;
+  int fields = 0;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') {
+      out += pattern[i];
+      continue;
+    }
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      out += '%';
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    int width = 0;
+    bool zero = j < pattern.size() && pattern[j] == '0';
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
+      width = width * 10 + (pattern[j++] - '0');
+    if (j >= pattern.size() || pattern[j] != 'd' || ++fields > 1)
+      throw pm::Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
+    std::string num = std::to_string(index);
+    if (static_cast<int>(num.size()) < width)
+      num.insert(0, static_cast<std::size_t>(width) - num.size(), zero ? '0' : ' ');
+    out += num;
+    i = j;
+  }
+  if (fields != 1)
+    throw pm::Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
+  return out;
+}
+
+//! "frame,x,y,z,e1,e2,e3" rows: the true pose of each frame of a recorded sequence.
+std::map<int, pm::Phi> readTruthFile(const std::string &path)
+{
+  std::ifstream f(path);
+  if (!f)
+    throw pm::Error("ground-truth file '" + path + "' does not exist or cannot be read");
+  std::map<int, pm::Phi> m;
+  std::string line;
+  int lineNo = 0;
+  while (std::getline(f, line)) {
+    ++lineNo;
+    if (line.empty() || line[0] == '#' || line.rfind("frame", 0) == 0)
+      continue;
+    std::stringstream ss(line);
+    std::string cell;
+    std::vector<double> c;
+    while (std::getline(ss, cell, ',')) {
+      try {
+        c.push_back(std::stod(cell));
+      } catch (const std::exception &) {
+        throw pm::Error("ground-truth file '" + path + "', line " + std::to_string(lineNo) + ": '" + cell + "' is not a number");
+      }
+    }
+    if (c.size() != 7)
+      throw pm::Error("ground-truth file '" + path + "', line " + std::to_string(lineNo) + ": frame,x,y,z,e1,e2,e3 expected");
+    m[static_cast<int>(c[0])] = {c[1], c[2], c[3], c[4], c[5], c[6]};
+  }
+  return m;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  CLI::App app{"Real-time tracking (the paper's Sec. 6): the PT-robot is fixed, the target moves through the 20 steps "
+               "of Table 2 (smooth moves of bounded velocity and acceleration), the cameras run at 30 fps, and the "
+               "tracker, started from a random population with no initial pose, gets --budget-ms (or --budget-evals) of "
+               "compute per stereo frame. Also runs on a recorded stereo sequence (--left-images, --right-images). Writes "
+               "frames.csv, trajectory.png (estimate against truth), errors.png and summary.json.",
+               "pm-track"};
+  app.option_defaults()->always_capture_default();
+  std::string out, target = "C12", trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
+  std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json"), leftPattern, rightPattern, modelPath, truthPath;
+  double holdS = 1.5, moveS = 1.0, fps = 30, distanceMm = 500, durationS = 0;
+  int firstFrame = 0, steps = 0;
+  bool quiet = false;
+  pm::PhotoModelParams mp;
+  pm::sim::SceneParams sp;
+  app.add_option("--out", out, "output folder (created if missing)")->required();
+  auto *optTarget = app.add_option("--target", target, "simulated target C01..C12");
+  app.add_option("--trajectory", trajectoryPath, "waypoints (step,x,y,z,e1,e2,e3), the target's poses in the hand frame");
+  app.add_option("--hold-s", holdS, "time each step is held (s)")->check(CLI::Range(0.0, 3600.0));
+  app.add_option("--move-s", moveS, "duration of each move between steps (s)")->check(CLI::Range(0.01, 3600.0));
+  app.add_option("--steps", steps, "use only the first N waypoints (0: all)")->check(CLI::Range(0, 100000));
+  app.add_option("--duration-s", durationS, "stop after this long (0: the whole trajectory)")->check(CLI::Range(0.0, 1e6));
+  app.add_option("--fps", fps, "camera frame rate")->check(CLI::Range(1.0, 1000.0));
+  auto *optL = app.add_option("--left-images", leftPattern, "recorded sequence: left images, printf pattern (e.g. L_%04d.png)");
+  auto *optR = app.add_option("--right-images", rightPattern, "recorded sequence: right images, printf pattern");
+  auto *optM = app.add_option("--model", modelPath, "recorded sequence: photo-model file");
+  auto *optT = app.add_option("--truth", truthPath, "recorded sequence: ground truth, rows frame,x,y,z,e1,e2,e3");
+  optL->needs(optR)->needs(optM)->excludes(optTarget);
+  optR->needs(optL);
+  optM->needs(optL);
+  optT->needs(optL);
+  app.add_option("--first-frame", firstFrame, "recorded sequence: index of the first frame")->check(CLI::Range(0, 100000000));
+  app.add_option("--rig", rigPath, "stereo rig file");
+  app.add_option("--distance-mm", distanceMm, "simulator: photo distance of the model")->check(CLI::PositiveNumber);
+  pm::app::addModelOptions(app, mp);
+  pm::app::addSceneOptions(app, sp);
+  pm::TrackerParams defaults;
+  defaults.ga.predictMotion = true;
+  defaults.ga.refineEvaluations = 100;
+  pm::app::TrackerOptions trackerOptions(app, defaults);
+  app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
+
+  return pm::app::run(app, argc, argv, [&] {
+    const pm::TrackerParams tp = trackerOptions.resolve();
+    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const bool recorded = !leftPattern.empty();
+    if (recorded) { // check both patterns before anything else
+      formatPattern(leftPattern, 0);
+      formatPattern(rightPattern, 0);
+    }
+
+    pm::PhotoModel model;
+    std::unique_ptr<pm::sim::Scene> scene;
+    std::unique_ptr<pm::sim::Trajectory> trajectory;
+    vpHomogeneousMatrix oMm;
+    std::map<int, pm::Phi> truthByFrame;
+    std::string source;
+    int nFrames = 0;
+    if (recorded) {
+      model = pm::io::loadPhotoModel(modelPath);
+      if (!truthPath.empty())
+        truthByFrame = readTruthFile(truthPath);
+      // The sequence runs while either image of a frame exists.
+      auto exists = [](const std::string &f) { return std::filesystem::exists(f); };
+      while (exists(formatPattern(leftPattern, firstFrame + nFrames)) || exists(formatPattern(rightPattern, firstFrame + nFrames)))
+        ++nFrames;
+      if (nFrames == 0)
+        throw pm::Error("the sequence is empty: no frame " + formatPattern(leftPattern, firstFrame) + " nor " +
+                        formatPattern(rightPattern, firstFrame));
+      if (durationS > 0)
+        nFrames = std::min(nFrames, static_cast<int>(std::floor(durationS * fps)) + 1);
+      source = "recorded sequence " + leftPattern + " + " + rightPattern;
+    } else {
+      std::vector<pm::Phi> w = pm::sim::Trajectory::readWaypoints(trajectoryPath);
+      if (steps > 0 && steps < static_cast<int>(w.size()))
+        w.resize(static_cast<std::size_t>(steps));
+      trajectory = std::make_unique<pm::sim::Trajectory>(w, holdS, moveS);
+      scene = std::make_unique<pm::sim::Scene>(pm::sim::makeTarget(target), sp);
+      const auto sm = pm::sim::makeSimulatedPhotoModel(*scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
+      model = sm.build.model;
+      oMm = sm.oMm;
+      const double d = durationS > 0 ? std::min(durationS, trajectory->duration()) : trajectory->duration();
+      nFrames = static_cast<int>(std::floor(d * fps)) + 1;
+      source = "simulator, target " + scene->target().info.code + " (" + scene->target().info.name + "), trajectory " +
+               std::filesystem::path(trajectoryPath).filename().string();
+    }
+
+    pm::PhotoModelTracker tracker(rig, model, tp);
+    tracker.initialize(); // no initial pose: a random population
+    std::vector<FrameRecord> rec;
+    rec.reserve(static_cast<std::size_t>(nFrames));
+    int unreadable = 0;
+    std::vector<std::string> unreadableList;
+    vpImage<vpRGBa> firstL, firstR, lastL, lastR;
+    pm::app::Progress progress("tracking", static_cast<std::size_t>(nFrames), quiet);
+    for (int k = 0; k < nFrames; ++k) {
+      FrameRecord f;
+      f.t = k / fps;
+      vpImage<vpRGBa> IL, IR;
+      if (recorded) {
+        const int idx = firstFrame + k;
+        try {
+          IL = pm::io::readColorImage(formatPattern(leftPattern, idx));
+          IR = pm::io::readColorImage(formatPattern(rightPattern, idx));
+          if (IL.getWidth() != rig.left.width || IL.getHeight() != rig.left.height || IR.getWidth() != rig.right.width ||
+              IR.getHeight() != rig.right.height)
+            throw pm::Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");
+        } catch (const pm::Error &e) {
+          ++unreadable;
+          unreadableList.push_back(e.what());
+          if (!quiet)
+            std::cerr << "warning: frame " << idx << " skipped: " << e.what() << std::endl;
+          progress.step();
+          continue;
+        }
+        const auto it = truthByFrame.find(idx);
+        if (it != truthByFrame.end()) {
+          f.haveTruth = true;
+          f.truth = it->second;
+        }
+      } else {
+        const pm::Phi p = trajectory->at(f.t);
+        const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(p);
+        const pm::sim::StereoImages im = scene->renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
+        IL = im.left;
+        IR = im.right;
+        f.haveTruth = true;
+        f.truth = pm::fromHomogeneousMatrix(hMo * oMm);
+        f.moving = trajectory->moving(f.t);
+      }
+      f.r = tracker.track(IL, IR);
+      f.estimate = f.r.phi;
+      if (rec.empty()) {
+        firstL = IL;
+        firstR = IR;
+      }
+      lastL = IL;
+      lastR = IR;
+      rec.push_back(f);
+      progress.step();
+    }
+    progress.finish();
+    if (rec.empty())
+      throw pm::Error("no frame of the sequence could be read (" + std::to_string(unreadable) + " unreadable)");
+
+    // Convergence: the first frame from which, for 1 s, the tracker is tracking with errors under
+    // 10 mm in x, y, z and 0.05 in eps.
+    const std::size_t window = static_cast<std::size_t>(std::lround(fps));
+    auto withinLoose = [&](const FrameRecord &f) {
+      if (f.r.state != pm::TrackState::Tracking)
+        return false;
+      if (!f.haveTruth)
+        return true;
+      for (std::size_t i = 0; i < 6; ++i)
+        if (std::fabs(f.estimate[i] - f.truth[i]) > (i < 3 ? 10.0 : 0.05))
+          return false;
+      return true;
+    };
+    long converged = -1;
+    for (std::size_t k = 0; k < rec.size() && converged < 0; ++k) {
+      bool ok = true;
+      for (std::size_t j = k; j < std::min(rec.size(), k + window) && ok; ++j)
+        ok = withinLoose(rec[j]);
+      if (ok)
+        converged = static_cast<long>(k);
+    }
+    // Errors after convergence.
+    nlohmann::json errors;
+    const double goal[6] = {5, 5, 8, 0.02, 0.02, 0.02};
+    bool goalsMet = converged >= 0;
+    for (std::size_t i = 0; i < 6; ++i) {
+      double s2 = 0, mx = 0, mxMoving = 0, mxRest = 0;
+      std::size_t n = 0;
+      for (std::size_t k = converged < 0 ? rec.size() : static_cast<std::size_t>(converged); k < rec.size(); ++k)
+        if (rec[k].haveTruth) {
+          const double e = rec[k].estimate[i] - rec[k].truth[i];
+          s2 += e * e;
+          mx = std::max(mx, std::fabs(e));
+          (rec[k].moving ? mxMoving : mxRest) = std::max(rec[k].moving ? mxMoving : mxRest, std::fabs(e));
+          ++n;
+        }
+      if (n > 0) {
+        errors[kNames[i]] = {{"rms_error", std::sqrt(s2 / static_cast<double>(n))},
+                             {"max_abs_error", mx},
+                             {"max_abs_error_moving", mxMoving},
+                             {"max_abs_error_at_rest", mxRest},
+                             {"goal", goal[i]}};
+        goalsMet = goalsMet && mx <= goal[i];
+      }
+    }
+    std::vector<double> ms;
+    for (const auto &f : rec)
+      ms.push_back(f.r.computeMs);
+    std::vector<double> sorted = ms;
+    std::sort(sorted.begin(), sorted.end());
+    const double meanMs = std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
+    const double p99Ms = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(sorted.size()))) - 1)];
+    long evals = 0;
+    std::map<std::string, int> states;
+    for (const auto &f : rec) {
+      evals += f.r.evaluations;
+      ++states[pm::toString(f.r.state)];
+    }
+
+    pm::io::StagedFiles files(out);
+    {
+      std::ofstream csv(files.stage("frames.csv"));
+      csv << "t,true_x,true_y,true_z,true_e1,true_e2,true_e3,est_x,est_y,est_z,est_e1,est_e2,est_e3,err_x,err_y,err_z,"
+             "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving\n";
+      csv << std::setprecision(8);
+      for (const auto &f : rec) {
+        csv << f.t;
+        for (std::size_t i = 0; i < 6; ++i)
+          csv << "," << (f.haveTruth ? f.truth[i] : NAN);
+        for (std::size_t i = 0; i < 6; ++i)
+          csv << "," << f.estimate[i];
+        for (std::size_t i = 0; i < 6; ++i)
+          csv << "," << (f.haveTruth ? f.estimate[i] - f.truth[i] : NAN);
+        csv << "," << f.r.fitness << "," << f.r.quality << "," << pm::toString(f.r.state) << "," << f.r.evaluations << ","
+            << f.r.generations << "," << f.r.computeMs << "," << (f.moving ? 1 : 0) << "\n";
+      }
+      if (!csv)
+        throw pm::Error("cannot write " + files.finalPath("frames.csv"));
+    }
+    // Figures like the paper's 13 (estimate against truth) and 14 (errors).
+    std::vector<pm::app::Panel> traj, errs;
+    const std::vector<double> marks = converged >= 0 ? std::vector<double>{rec[static_cast<std::size_t>(converged)].t}
+                                                     : std::vector<double>{};
+    for (std::size_t i = 0; i < 6; ++i) {
+      pm::app::Series truthS{"truth", vpRGBa(40, 40, 40), {}, {}, true}, estS{"estimate", vpRGBa(220, 60, 40), {}, {}, false};
+      pm::app::Series errS{"error", vpRGBa(40, 90, 200), {}, {}, false};
+      for (const auto &f : rec) {
+        estS.t.push_back(f.t);
+        estS.y.push_back(f.estimate[i]);
+        if (f.haveTruth) {
+          truthS.t.push_back(f.t);
+          truthS.y.push_back(f.truth[i]);
+          errS.t.push_back(f.t);
+          errS.y.push_back(f.estimate[i] - f.truth[i]);
+        }
+      }
+      const std::string unit = i < 3 ? "mm" : "";
+      pm::app::Panel a{std::string(kNames[i]), unit, {}, 0, marks};
+      if (!truthS.t.empty())
+        a.series.push_back(truthS);
+      a.series.push_back(estS);
+      traj.push_back(a);
+      if (!errS.t.empty()) {
+        // Errors after convergence, the goal as a band (before, the random start dwarfs the scale).
+        pm::app::Series after{"error", errS.color, {}, {}, false};
+        for (std::size_t k = 0; k < errS.t.size(); ++k)
+          if (converged < 0 || errS.t[k] >= rec[static_cast<std::size_t>(converged)].t) {
+            after.t.push_back(errS.t[k]);
+            after.y.push_back(errS.y[k]);
+          }
+        errs.push_back({std::string("error of ") + kNames[i] + " after convergence", unit, {after}, goal[i], {}});
+      }
+    }
+    pm::io::writeImage(pm::app::drawTimePlots(traj, 2, "estimate (red) against truth (dashed), " + source), files.stage("trajectory.png"));
+    if (!errs.empty())
+      pm::io::writeImage(pm::app::drawTimePlots(errs, 2, "errors after convergence; green band: the goal"), files.stage("errors.png"));
+    tracker.initFromPose(rec.back().r.hMo); // to draw the last estimate
+    pm::io::writeImage(pm::app::sideBySide(pm::app::drawPointScores(lastL, tracker.fitness().pointScores(rec.back().estimate, 0), "last frame, left"),
+                                           pm::app::drawPointScores(lastR, tracker.fitness().pointScores(rec.back().estimate, 1), "right")),
+                       files.stage("last_frame.png"));
+    nlohmann::json summary{{"source", source},
+                           {"frames", rec.size()},
+                           {"unreadable_frames", unreadable},
+                           {"unreadable", unreadableList},
+                           {"fps", fps},
+                           {"converged_after_s", converged >= 0 ? nlohmann::json(rec[static_cast<std::size_t>(converged)].t) : nlohmann::json()},
+                           {"errors", errors},
+                           {"goals_met", goalsMet},
+                           {"mean_frame_ms", meanMs},
+                           {"p99_frame_ms", p99Ms},
+                           {"mean_evaluations_per_frame", static_cast<double>(evals) / static_cast<double>(rec.size())},
+                           {"states", states},
+                           {"tracker", nlohmann::json::parse(pm::io::trackerConfigToJson(tp))}};
+    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+    files.commit();
+    if (!quiet) {
+      std::cout << std::fixed << "tracked " << rec.size() << " frames of " << source << "\n";
+      if (converged >= 0)
+        std::cout << std::setprecision(2) << "  converged after " << rec[static_cast<std::size_t>(converged)].t << " s\n";
+      else
+        std::cout << "  never converged (errors under 10 mm / 0.05 for 1 s)\n";
+      for (std::size_t i = 0; i < 6 && !errors.empty(); ++i)
+        if (errors.contains(kNames[i]))
+          std::cout << std::setprecision(i < 3 ? 2 : 4) << "  " << std::setw(4) << kNames[i] << ": rms "
+                    << errors[kNames[i]]["rms_error"].get<double>() << ", max " << errors[kNames[i]]["max_abs_error"].get<double>()
+                    << " (goal " << goal[i] << ")\n";
+      std::cout << std::setprecision(2) << "  compute per frame: mean " << meanMs << " ms, p99 " << p99Ms << " ms ("
+                << tp.budget().milliseconds << " ms / " << tp.budget().evaluations << " evaluations budget)\n"
+                << "  written to " << files.dir() << "/" << std::endl;
+    }
+    return 0;
+  });
+}

@@ -1,0 +1,130 @@
+#include "pm/io/TrackerConfigFile.h"
+
+#include <algorithm>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "pm/core/Error.h"
+
+using nlohmann::json;
+
+namespace pm::io {
+
+namespace {
+constexpr const char *kFormat = "visp-photomodel-tracker";
+
+template <typename T> void get(const json &j, const char *key, T &v)
+{
+  if (j.contains(key))
+    v = j.at(key).get<T>();
+}
+
+void checkKeys(const json &j, const std::vector<std::string> &known, const std::string &where)
+{
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (std::find(known.begin(), known.end(), it.key()) == known.end())
+      throw Error("unknown key \"" + it.key() + "\"" + where);
+}
+} // namespace
+
+TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults)
+{
+  std::ifstream f(path);
+  if (!f)
+    throw Error("tracker configuration '" + path + "' does not exist or cannot be read");
+  TrackerParams p = defaults;
+  try {
+    const json j = json::parse(f);
+    if (!j.is_object() || j.value("format", "") != kFormat)
+      throw Error(std::string("\"format\" must be \"") + kFormat + "\"");
+    if (j.value("version", 0) != 1)
+      throw Error("unsupported \"version\" (this program reads version 1)");
+    checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
+                  "init_spread", "search_space", "rmga", "fitness"}, "");
+    get(j, "budget_ms", p.budgetMs);
+    get(j, "budget_evaluations", p.budgetEvaluations);
+    get(j, "lock_quality", p.lockQuality);
+    get(j, "lost_quality", p.lostQuality);
+    get(j, "lost_frames", p.lostFrames);
+    get(j, "init_spread", p.initSpread);
+    if (j.contains("search_space")) {
+      const json &s = j.at("search_space");
+      checkKeys(s, {"lo", "hi"}, " in \"search_space\"");
+      get(s, "lo", p.space.lo);
+      get(s, "hi", p.space.hi);
+    }
+    if (j.contains("rmga")) {
+      const json &g = j.at("rmga");
+      checkKeys(g, {"population", "elite", "tournament", "crossover_rate", "mutation_per_bit", "predict_motion",
+                    "refine_evaluations", "restart_generations", "seed"}, " in \"rmga\"");
+      get(g, "population", p.ga.population);
+      get(g, "elite", p.ga.elite);
+      get(g, "tournament", p.ga.tournament);
+      get(g, "crossover_rate", p.ga.crossoverRate);
+      get(g, "mutation_per_bit", p.ga.mutationPerBit);
+      get(g, "predict_motion", p.ga.predictMotion);
+      get(g, "refine_evaluations", p.ga.refineEvaluations);
+      get(g, "restart_generations", p.ga.restartGenerations);
+      get(g, "seed", p.ga.seed);
+    }
+    if (j.contains("fitness")) {
+      const json &q = j.at("fitness");
+      checkKeys(q, {"in_tol_deg", "in_bg_tol_deg", "out_bg_tol_deg", "in_match", "in_background", "in_other",
+                    "out_background", "out_other", "off_image", "min_saturation"}, " in \"fitness\"");
+      get(q, "in_tol_deg", p.fitness.inTolDeg);
+      get(q, "in_bg_tol_deg", p.fitness.inBgTolDeg);
+      get(q, "out_bg_tol_deg", p.fitness.outBgTolDeg);
+      get(q, "in_match", p.fitness.inMatch);
+      get(q, "in_background", p.fitness.inBackground);
+      get(q, "in_other", p.fitness.inOther);
+      get(q, "out_background", p.fitness.outBackground);
+      get(q, "out_other", p.fitness.outOther);
+      get(q, "off_image", p.fitness.offImage);
+      get(q, "min_saturation", p.fitness.minSaturation);
+    }
+    p.validate();
+  } catch (const Error &e) {
+    throw Error("tracker configuration '" + path + "': " + e.what());
+  } catch (const json::exception &e) {
+    throw Error("tracker configuration '" + path + "' is not valid: " + e.what());
+  }
+  return p;
+}
+
+std::string trackerConfigToJson(const TrackerParams &p)
+{
+  const json j{{"format", kFormat},
+               {"version", 1},
+               {"budget_ms", p.budgetMs},
+               {"budget_evaluations", p.budgetEvaluations},
+               {"lock_quality", p.lockQuality},
+               {"lost_quality", p.lostQuality},
+               {"lost_frames", p.lostFrames},
+               {"init_spread", p.initSpread},
+               {"search_space", {{"lo", p.space.lo}, {"hi", p.space.hi}}},
+               {"rmga",
+                {{"population", p.ga.population},
+                 {"elite", p.ga.elite},
+                 {"tournament", p.ga.tournament},
+                 {"crossover_rate", p.ga.crossoverRate},
+                 {"mutation_per_bit", p.ga.mutationPerBit},
+                 {"predict_motion", p.ga.predictMotion},
+                 {"refine_evaluations", p.ga.refineEvaluations},
+                 {"restart_generations", p.ga.restartGenerations},
+                 {"seed", p.ga.seed}}},
+               {"fitness",
+                {{"in_tol_deg", p.fitness.inTolDeg},
+                 {"in_bg_tol_deg", p.fitness.inBgTolDeg},
+                 {"out_bg_tol_deg", p.fitness.outBgTolDeg},
+                 {"in_match", p.fitness.inMatch},
+                 {"in_background", p.fitness.inBackground},
+                 {"in_other", p.fitness.inOther},
+                 {"out_background", p.fitness.outBackground},
+                 {"out_other", p.fitness.outOther},
+                 {"off_image", p.fitness.offImage},
+                 {"min_saturation", p.fitness.minSaturation}}}};
+  return j.dump(2) + "\n";
+}
+
+} // namespace pm::io

@@ -1,0 +1,121 @@
+#pragma once
+/*!
+  \file RmGa.h
+  RM-GA, the real-time multi-step genetic algorithm of the paper (Sec. 3.6, Fig. 7): a small
+  population of poses evolved a little on every frame and carried from frame to frame.
+
+  Per frame, evolve():
+   1. (the first frame) the population is random over the search space;
+   2. [option] every individual is moved by the motion predicted from the last two frames;
+   3. every individual is evaluated on the new frame;
+   4-7. generations until the budget is spent: parents by tournament, single-point crossover of
+        the 72-bit strings, bit-flip mutation; only the children are evaluated (the others'
+        fitness on this frame is known); the best N of parents and children survive (elitism);
+        [option] when the best has not improved for some generations, all but the best
+        restart at random;
+   8. [option] a local refinement of the best (pattern search on the genes);
+   9. the best individual is the pose of the frame.
+
+  It knows nothing of images: it calls a FitnessFunction. Runs are reproducible from the
+  seed; with an evaluation budget they are deterministic, with a time budget they depend on the
+  machine's speed.
+*/
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "pm/core/Pose.h"
+#include "pm/rmga/SearchSpace.h"
+
+namespace pm {
+
+//! What RM-GA optimises: fitness of a batch of poses (higher is better).
+class FitnessFunction
+{
+public:
+  virtual ~FitnessFunction() = default;
+  virtual void evaluate(const Phi *poses, std::size_t n, double *fitness) = 0;
+};
+
+struct RmGaParams
+{
+  int population = 20;          //!< individuals (the paper: 20)
+  int elite = 2;                //!< best individuals always kept (at least 1)
+  int tournament = 2;           //!< tournament size of parent selection
+  double crossoverRate = 0.9;   //!< probability that two parents cross over
+  double mutationPerBit = 2.0 / 72; //!< probability of flipping each of the 72 bits of a child
+  bool predictMotion = false;   //!< option: move the population by the predicted motion on a new frame
+  int refineEvaluations = 0;    //!< option: evaluations of the local refinement of the best, per frame
+  int restartGenerations = 0;   //!< option: restart all but the best after this many generations without gain (0: never)
+  std::uint64_t seed = 1;
+
+  //! Throws pm::Error naming the parameter out of range.
+  void validate() const;
+};
+
+//! A frame's budget: a number of evaluations (deterministic) or milliseconds of wall time.
+struct FrameBudget
+{
+  long evaluations = 0;    //!< > 0: exactly this many evaluations at most
+  double milliseconds = 0; //!< > 0 (and no evaluations): stop the generations when this time is spent
+  static FrameBudget evals(long n) { return {n, 0}; }
+  static FrameBudget ms(double t) { return {0, t}; }
+};
+
+struct Individual
+{
+  Genome genome;
+  Phi phi;
+  double fitness = 0;
+};
+
+struct FrameResult
+{
+  Phi best;
+  double fitness = 0;
+  long evaluations = 0;
+  int generations = 0;
+  bool restarted = false;
+};
+
+class RmGa
+{
+public:
+  RmGa(const SearchSpace &space, const RmGaParams &params);
+
+  //! A new random population over the search space (step 1); forgets the motion.
+  void randomize();
+  //! A population around \e p: the first individual is p, the others p plus uniform noise of
+  //! +-spread times each range (clamped). Forgets the motion.
+  void seedAround(const Phi &p, double spread);
+  //! Replaces all but the best \e keep individuals by random ones (a restart).
+  void restart(int keep = 1);
+
+  /*!
+    Evolves the population on one frame (steps 2-9) within \e budget. Throws pm::Error if the
+    budget is not positive.
+  */
+  FrameResult evolve(FitnessFunction &f, const FrameBudget &budget);
+
+  const std::vector<Individual> &population() const { return m_pop; }
+  const SearchSpace &space() const { return m_space; }
+  const RmGaParams &params() const { return m_params; }
+
+private:
+  Individual make(const Genome &g) const;
+  void evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, long &evals);
+  const Individual &tournament();
+  void mutate(Genome &g);
+  void refine(FitnessFunction &f, long maxEvals, long &evals);
+
+  SearchSpace m_space;
+  RmGaParams m_params;
+  std::mt19937_64 m_rng;
+  std::vector<Individual> m_pop, m_children;
+  std::vector<Phi> m_batch;
+  std::vector<double> m_scores;
+  bool m_havePrev = false, m_havePrev2 = false;
+  Phi m_prev, m_prev2; //!< best of the last two frames, for the motion prediction
+};
+
+} // namespace pm

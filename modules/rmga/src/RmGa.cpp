@@ -1,0 +1,237 @@
+#include "pm/rmga/RmGa.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "pm/core/Error.h"
+
+namespace pm {
+
+void RmGaParams::validate() const
+{
+  auto check = [](bool ok, const char *what) {
+    if (!ok)
+      throw Error(std::string("RM-GA parameter ") + what);
+  };
+  check(population >= 2 && population <= 100000, "population must lie in [2, 100000]");
+  check(elite >= 1 && elite < population, "elite must lie in [1, population)");
+  check(tournament >= 1 && tournament <= population, "tournament size must lie in [1, population]");
+  check(crossoverRate >= 0 && crossoverRate <= 1, "crossover rate must lie in [0, 1]");
+  check(mutationPerBit >= 0 && mutationPerBit <= 1, "mutation rate per bit must lie in [0, 1]");
+  check(refineEvaluations >= 0, "refinement evaluations must be non-negative");
+  check(restartGenerations >= 0, "restart generations must be non-negative");
+}
+
+RmGa::RmGa(const SearchSpace &space, const RmGaParams &params) : m_space(space), m_params(params), m_rng(params.seed)
+{
+  space.validate();
+  params.validate();
+  m_pop.reserve(static_cast<std::size_t>(params.population));
+  m_children.reserve(static_cast<std::size_t>(params.population));
+  randomize();
+}
+
+Individual RmGa::make(const Genome &g) const
+{
+  Individual i;
+  i.genome = g;
+  i.phi = decode(g, m_space);
+  i.fitness = -1e300;
+  return i;
+}
+
+void RmGa::randomize()
+{
+  m_pop.clear();
+  std::uniform_int_distribution<int> gene(0, Genome::kMax);
+  for (int k = 0; k < m_params.population; ++k) {
+    Genome g;
+    for (auto &v : g.gene)
+      v = static_cast<std::uint16_t>(gene(m_rng));
+    m_pop.push_back(make(g));
+  }
+  m_havePrev = m_havePrev2 = false;
+}
+
+void RmGa::seedAround(const Phi &p, double spread)
+{
+  m_pop.clear();
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  m_pop.push_back(make(encode(m_space.clamp(p), m_space)));
+  for (int k = 1; k < m_params.population; ++k) {
+    Phi q = p;
+    for (std::size_t i = 0; i < 6; ++i)
+      q[i] += spread * (m_space.hi[i] - m_space.lo[i]) * u(m_rng);
+    m_pop.push_back(make(encode(m_space.clamp(q), m_space)));
+  }
+  m_havePrev = m_havePrev2 = false;
+}
+
+void RmGa::restart(int keep)
+{
+  std::uniform_int_distribution<int> gene(0, Genome::kMax);
+  std::sort(m_pop.begin(), m_pop.end(), [](const Individual &a, const Individual &b) { return a.fitness > b.fitness; });
+  for (std::size_t k = static_cast<std::size_t>(std::max(0, keep)); k < m_pop.size(); ++k) {
+    Genome g;
+    for (auto &v : g.gene)
+      v = static_cast<std::uint16_t>(gene(m_rng));
+    m_pop[k] = make(g);
+  }
+}
+
+void RmGa::evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, long &evals)
+{
+  const std::size_t n = ind.size() - from;
+  m_batch.resize(n);
+  m_scores.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    m_batch[i] = ind[from + i].phi;
+  f.evaluate(m_batch.data(), n, m_scores.data());
+  for (std::size_t i = 0; i < n; ++i)
+    ind[from + i].fitness = std::isfinite(m_scores[i]) ? m_scores[i] : -1e300;
+  evals += static_cast<long>(n);
+}
+
+const Individual &RmGa::tournament()
+{
+  std::uniform_int_distribution<std::size_t> pick(0, m_pop.size() - 1);
+  const Individual *best = &m_pop[pick(m_rng)];
+  for (int k = 1; k < m_params.tournament; ++k) {
+    const Individual &c = m_pop[pick(m_rng)];
+    if (c.fitness > best->fitness)
+      best = &c;
+  }
+  return *best;
+}
+
+void RmGa::mutate(Genome &g)
+{
+  if (m_params.mutationPerBit <= 0)
+    return;
+  // Flip each bit with probability p: jump from flip to flip with geometric gaps.
+  std::geometric_distribution<int> gap(m_params.mutationPerBit);
+  for (int k = gap(m_rng); k < 6 * Genome::kBits; k += 1 + gap(m_rng))
+    g.flip(k);
+}
+
+void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
+{
+  // Pattern search on the genes of the best individual: +-step on each variable, halving the step.
+  auto bestIt = std::max_element(m_pop.begin(), m_pop.end(), [](const Individual &a, const Individual &b) { return a.fitness < b.fitness; });
+  Individual best = *bestIt;
+  long used = 0;
+  std::vector<Individual> trial(1);
+  for (int step = 16; step >= 1 && used < maxEvals; step /= 2) {
+    bool improved = true;
+    while (improved && used < maxEvals) {
+      improved = false;
+      for (std::size_t i = 0; i < 6 && used < maxEvals; ++i)
+        for (int dir : {1, -1}) {
+          if (used >= maxEvals)
+            break;
+          Genome g = best.genome;
+          const int v = static_cast<int>(g.gene[i]) + dir * step;
+          if (v < 0 || v > Genome::kMax)
+            continue;
+          g.gene[i] = static_cast<std::uint16_t>(v);
+          trial[0] = make(g);
+          long e = 0;
+          evaluate(f, trial, 0, e);
+          used += e;
+          if (trial[0].fitness > best.fitness) {
+            best = trial[0];
+            improved = true;
+            break;
+          }
+        }
+    }
+  }
+  evals += used;
+  *bestIt = best;
+}
+
+FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
+{
+  if (!(budget.evaluations > 0) && !(budget.milliseconds > 0))
+    throw Error("RM-GA: the frame budget must be a positive number of evaluations or milliseconds");
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsedMs = [&] { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); };
+  FrameResult r;
+
+  // 2. Prediction: constant velocity of the best pose over the last two frames.
+  if (m_params.predictMotion && m_havePrev && m_havePrev2) {
+    Phi v;
+    for (std::size_t i = 0; i < 6; ++i)
+      v[i] = m_prev[i] - m_prev2[i];
+    for (auto &ind : m_pop) {
+      Phi q = ind.phi;
+      for (std::size_t i = 0; i < 6; ++i)
+        q[i] += v[i];
+      ind = make(encode(m_space.clamp(q), m_space));
+    }
+  }
+  // 3. Evaluate everyone on the new frame.
+  long evals = 0;
+  evaluate(f, m_pop, 0, evals);
+  const long refineEvals = m_params.refineEvaluations;
+  const bool byEvals = budget.evaluations > 0;
+  const long gaEvals = byEvals ? std::max<long>(0, budget.evaluations - refineEvals) : 0;
+  const double perEvalMs = elapsedMs() / static_cast<double>(std::max<long>(1, evals));
+  const double gaMs = byEvals ? 0.0 : budget.milliseconds - perEvalMs * static_cast<double>(refineEvals);
+  const int n = m_params.population, lambda = n - m_params.elite;
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  std::uniform_int_distribution<int> cut(1, 6 * Genome::kBits - 1);
+  double bestSoFar = -1e300;
+  int stagnant = 0;
+  for (const auto &i : m_pop)
+    bestSoFar = std::max(bestSoFar, i.fitness);
+  // 4-7. Generations.
+  while (byEvals ? evals + lambda <= gaEvals : elapsedMs() < gaMs) {
+    m_children.clear();
+    while (static_cast<int>(m_children.size()) < lambda) {
+      const Individual &a = tournament(), &b = tournament();
+      Genome c1 = a.genome, c2 = b.genome;
+      if (u01(m_rng) < m_params.crossoverRate) {
+        const int k = cut(m_rng);
+        c1 = crossover(a.genome, b.genome, k);
+        c2 = crossover(b.genome, a.genome, k);
+      }
+      mutate(c1);
+      mutate(c2);
+      m_children.push_back(make(c1));
+      if (static_cast<int>(m_children.size()) < lambda)
+        m_children.push_back(make(c2));
+    }
+    evaluate(f, m_children, 0, evals);
+    // The best n of parents and children survive.
+    m_pop.insert(m_pop.end(), m_children.begin(), m_children.end());
+    std::stable_sort(m_pop.begin(), m_pop.end(), [](const Individual &x, const Individual &y) { return x.fitness > y.fitness; });
+    m_pop.resize(static_cast<std::size_t>(n));
+    ++r.generations;
+    if (m_pop[0].fitness > bestSoFar) {
+      bestSoFar = m_pop[0].fitness;
+      stagnant = 0;
+    } else if (m_params.restartGenerations > 0 && ++stagnant >= m_params.restartGenerations) {
+      restart(1);
+      evaluate(f, m_pop, 1, evals);
+      stagnant = 0;
+      r.restarted = true;
+    }
+  }
+  // 8. Local refinement of the best.
+  if (refineEvals > 0)
+    refine(f, byEvals ? budget.evaluations - evals : refineEvals, evals);
+  // 9. The best is the frame's pose.
+  const auto best = std::max_element(m_pop.begin(), m_pop.end(), [](const Individual &x, const Individual &y) { return x.fitness < y.fitness; });
+  r.best = best->phi;
+  r.fitness = best->fitness;
+  r.evaluations = evals;
+  m_prev2 = m_prev;
+  m_havePrev2 = m_havePrev;
+  m_prev = r.best;
+  m_havePrev = true;
+  return r;
+}
+
+} // namespace pm

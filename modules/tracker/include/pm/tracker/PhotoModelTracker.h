@@ -1,0 +1,103 @@
+#pragma once
+/*!
+  \file PhotoModelTracker.h
+  The photo-model tracker: the pose-estimation feature a ViSP program uses. Give it the stereo
+  rig and a photo-model; it finds the target from scratch (initialize()) or from a known pose
+  (initFromPose()), then track() takes each new stereo pair and returns hMo, the pose of the
+  model in the hand frame, with the fitness and a state.
+
+  State, from the fitness normalised between "the model on background" (0) and "every S_in point
+  matches" (1), q = (F - F_bg) / (F_max - F_bg):
+  - searching: after initialize(), until q >= lockQuality;
+  - tracking: q >= lockQuality was reached; it stays while q >= lostQuality;
+  - lost: q < lostQuality for lostFrames frames in a row; the population then restarts (all
+    but the best individual random) and searches until q >= lockQuality again.
+
+      pm::PhotoModelTracker tracker(rig, model);
+      tracker.initialize();
+      for (;;) {
+        grab(IL, IR);
+        const pm::TrackResult r = tracker.track(IL, IR);
+        if (r.state == pm::TrackState::Tracking) use(r.hMo);
+      }
+*/
+#include <string>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/core/StereoFitness.h"
+#include "pm/rmga/RmGa.h"
+
+namespace pm {
+
+enum class TrackState { Searching, Tracking, Lost };
+const char *toString(TrackState s);
+
+struct TrackerParams
+{
+  SearchSpace space;            //!< where phi is searched
+  RmGaParams ga;                //!< RM-GA (population, operators, options, seed)
+  FitnessParams fitness;        //!< Eqs. (8)-(11)
+  long budgetEvaluations = 0;   //!< per-frame budget: evaluations (deterministic) ...
+  double budgetMs = 24.0;       //!< ... or wall time, used when budgetEvaluations is 0 (the paper: 24 ms)
+  double lockQuality = 0.35;    //!< q at or above which the target is tracked
+  double lostQuality = 0.2;     //!< q below which, for lostFrames frames, it is lost
+  int lostFrames = 3;
+  double initSpread = 0.02;     //!< initFromPose: population spread, fraction of each range
+
+  //! Throws pm::Error naming the first parameter out of range.
+  void validate() const;
+  FrameBudget budget() const { return budgetEvaluations > 0 ? FrameBudget::evals(budgetEvaluations) : FrameBudget::ms(budgetMs); }
+};
+
+struct TrackResult
+{
+  vpHomogeneousMatrix hMo;  //!< pose of the model in the hand frame (metres)
+  Phi phi;                  //!< the same as phi (mm, quaternion vector)
+  double fitness = 0;       //!< F at phi
+  double quality = 0;       //!< q, the normalised fitness
+  TrackState state = TrackState::Searching;
+  long evaluations = 0;
+  int generations = 0;
+  double computeMs = 0;     //!< time spent in track() (hue planes + RM-GA)
+};
+
+class PhotoModelTracker
+{
+public:
+  //! Throws pm::Error if the rig, the model or the parameters are invalid.
+  PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params = TrackerParams());
+
+  //! Searches from scratch: a random population over the search space (state: searching).
+  void initialize();
+  //! Starts from a known pose (state: tracking).
+  void initFromPose(const vpHomogeneousMatrix &hMo);
+  /*!
+    One frame: hue planes of the pair, RM-GA within the frame budget, the state. Throws
+    pm::Error if an image's size differs from its camera's.
+  */
+  TrackResult track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+
+  vpHomogeneousMatrix getPose() const { return m_last.hMo; }
+  double getFitness() const { return m_last.fitness; }
+  TrackState getState() const { return m_last.state; }
+  const TrackResult &lastResult() const { return m_last; }
+  //! q of a fitness value for this model.
+  double quality(double fitness) const { return (fitness - m_fBackground) / (m_fMax - m_fBackground); }
+  //! The model at the current pose on both images, each point coloured by its score (see drawPointScores).
+  std::vector<PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_last.phi, camera); }
+  const StereoFitness &fitness() const { return m_fitness; }
+  const TrackerParams &params() const { return m_params; }
+
+private:
+  TrackerParams m_params;
+  StereoFitness m_fitness;
+  RmGa m_ga;
+  TrackResult m_last;
+  double m_fBackground = 0, m_fMax = 1;
+  int m_lowFrames = 0;
+};
+
+} // namespace pm

@@ -1,0 +1,118 @@
+#include "pm/tracker/PhotoModelTracker.h"
+
+#include <chrono>
+
+#include "pm/core/Error.h"
+
+namespace pm {
+
+const char *toString(TrackState s)
+{
+  switch (s) {
+  case TrackState::Searching: return "searching";
+  case TrackState::Tracking: return "tracking";
+  case TrackState::Lost: return "lost";
+  }
+  return "?";
+}
+
+void TrackerParams::validate() const
+{
+  space.validate();
+  ga.validate();
+  fitness.validate();
+  if (budgetEvaluations < 0 || (budgetEvaluations == 0 && !(budgetMs > 0)))
+    throw Error("tracker: the frame budget must be a positive number of evaluations or milliseconds (got " +
+                std::to_string(budgetEvaluations) + " evaluations, " + std::to_string(budgetMs) + " ms)");
+  if (budgetEvaluations > 0 && budgetEvaluations < ga.population)
+    throw Error("tracker: a frame budget of " + std::to_string(budgetEvaluations) +
+                " evaluations cannot even evaluate the population of " + std::to_string(ga.population));
+  if (!(lockQuality > lostQuality) || !(lostQuality > -1) || !(lockQuality < 1))
+    throw Error("tracker: the qualities must satisfy -1 < lost < lock < 1");
+  if (lostFrames < 1)
+    throw Error("tracker: lost frames must be at least 1");
+  if (!(initSpread >= 0 && initSpread <= 1))
+    throw Error("tracker: the initial spread must lie in [0, 1]");
+}
+
+namespace {
+//! The stereo fitness as RM-GA's objective.
+class Objective : public FitnessFunction
+{
+public:
+  explicit Objective(const StereoFitness &f) : m_f(f) {}
+  void evaluate(const Phi *p, std::size_t n, double *out) override { m_f.evaluate(p, n, out); }
+
+private:
+  const StereoFitness &m_f;
+};
+} // namespace
+
+PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
+    : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga)
+{
+  const FitnessParams &f = params.fitness;
+  const double n = static_cast<double>(model.size());
+  const double nIn = static_cast<double>(model.inner.size()), nOut = static_cast<double>(model.outer.size());
+  m_fBackground = (f.inBackground * nIn + f.outBackground * nOut) / n;
+  m_fMax = (f.inMatch * nIn + f.outBackground * nOut) / n;
+  if (!(m_fMax > m_fBackground))
+    throw Error("tracker: with these scores a perfect match does not score above the background");
+  initialize();
+}
+
+void PhotoModelTracker::initialize()
+{
+  m_ga.randomize();
+  m_last = TrackResult();
+  m_last.state = TrackState::Searching;
+  m_lowFrames = 0;
+}
+
+void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
+{
+  const Phi p = fromHomogeneousMatrix(hMo);
+  m_ga.seedAround(p, m_params.initSpread);
+  m_last = TrackResult();
+  m_last.hMo = hMo;
+  m_last.phi = p;
+  m_last.state = TrackState::Tracking;
+  m_lowFrames = 0;
+}
+
+TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  m_fitness.setImages(left, right);
+  Objective objective(m_fitness);
+  FrameBudget budget = m_params.budget();
+  if (budget.milliseconds > 0) // the hue planes are part of the frame's time
+    budget.milliseconds = std::max(0.05, budget.milliseconds - std::chrono::duration<double, std::milli>(
+                                                                    std::chrono::steady_clock::now() - t0).count());
+  const FrameResult fr = m_ga.evolve(objective, budget);
+  TrackResult r;
+  r.phi = fr.best;
+  r.hMo = toHomogeneousMatrix(fr.best);
+  r.fitness = fr.fitness;
+  r.quality = quality(fr.fitness);
+  r.evaluations = fr.evaluations;
+  r.generations = fr.generations;
+  // The state machine.
+  const TrackState prev = m_last.state;
+  if (r.quality >= m_params.lockQuality) {
+    r.state = TrackState::Tracking;
+    m_lowFrames = 0;
+  } else if (prev == TrackState::Tracking) {
+    m_lowFrames = r.quality < m_params.lostQuality ? m_lowFrames + 1 : 0;
+    r.state = m_lowFrames >= m_params.lostFrames ? TrackState::Lost : TrackState::Tracking;
+  } else {
+    r.state = prev; // searching or lost, until locked
+  }
+  if (r.state == TrackState::Lost && prev != TrackState::Lost)
+    m_ga.restart(1); // search again, keeping the best guess
+  r.computeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  m_last = r;
+  return r;
+}
+
+} // namespace pm
