@@ -304,6 +304,23 @@ FitnessCounts StereoFitness::countCamera(int cam, const Phi &phi) const
   return counts;
 }
 
+double StereoFitness::visibleFraction(const Phi &phi, int camera) const
+{
+  if (!phi.isValid())
+    throw Error("visible fraction at an invalid pose " + phi.toString());
+  const Projection p = projectionOf(camera, phi);
+  std::size_t in = 0;
+  for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
+    const double xc = p.r[0] * m_x[i] + p.r[1] * m_y[i] + p.t[0], yc = p.r[3] * m_x[i] + p.r[4] * m_y[i] + p.t[1];
+    const double zc = p.r[6] * m_x[i] + p.r[7] * m_y[i] + p.t[2];
+    if (zc <= 1e-3)
+      continue;
+    const double u = p.px * xc / zc + p.u0, v = p.py * yc / zc + p.v0;
+    in += u >= -0.5 && v >= -0.5 && u < p.w - 0.5 && v < p.h - 0.5;
+  }
+  return static_cast<double>(in) / static_cast<double>(m_nIn + m_nOut);
+}
+
 double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
 {
   if (!a.isValid() || !b.isValid())

@@ -58,6 +58,17 @@ PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &mod
   m_fMax = (f.inMatch * nIn + f.outBackground * nOut) / n;
   if (!(m_fMax > m_fBackground))
     throw Error("tracker: with these scores a perfect match does not score above the background");
+  // The model must fit the rig: at the centre of the search space most of it is in both images.
+  Phi centre;
+  for (std::size_t i = 0; i < 6; ++i)
+    centre[i] = 0.5 * (params.space.lo[i] + params.space.hi[i]);
+  for (int cam = 0; cam < 2; ++cam) {
+    const double visible = m_fitness.visibleFraction(centre, cam);
+    if (visible < 0.5)
+      throw Error("the photo-model does not fit the rig: at the centre of the search space " + centre.toString() +
+                  " only " + std::to_string(static_cast<int>(100 * visible)) + " % of its points fall in the " +
+                  (cam ? "right" : "left") + " image (a model too large for the cameras, or made at another scale?)");
+  }
   initialize();
 }
 

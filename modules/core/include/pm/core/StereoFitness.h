@@ -101,6 +101,9 @@ public:
   */
   double reprojectionRms(const Phi &a, const Phi &b) const;
 
+  //! Fraction of the model's points that project inside camera \e camera's image at \e phi (no image needed).
+  double visibleFraction(const Phi &phi, int camera) const;
+
   const HuePlane &huePlane(int camera) const { return m_planes[static_cast<std::size_t>(camera)]; }
   std::size_t modelSize() const { return m_nIn + m_nOut; }
   const FitnessParams &params() const { return m_params; }

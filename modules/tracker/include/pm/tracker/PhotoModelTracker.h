@@ -35,11 +35,20 @@ namespace pm {
 enum class TrackState { Searching, Tracking, Lost };
 const char *toString(TrackState s);
 
+//! The fitness the tracker uses: the paper's, except that image pixels less saturated than 0.1
+//! have no hue (a blank, grey or black frame would otherwise have hue 0, red, and match a red target).
+inline FitnessParams trackerFitnessDefaults()
+{
+  FitnessParams f;
+  f.minSaturation = 0.1f;
+  return f;
+}
+
 struct TrackerParams
 {
   SearchSpace space;            //!< where phi is searched
   RmGaParams ga;                //!< RM-GA (population, operators, options, seed)
-  FitnessParams fitness;        //!< Eqs. (8)-(11)
+  FitnessParams fitness = trackerFitnessDefaults(); //!< Eqs. (8)-(11)
   long budgetEvaluations = 0;   //!< per-frame budget: evaluations (deterministic) ...
   double budgetMs = 24.0;       //!< ... or wall time, used when budgetEvaluations is 0 (the paper: 24 ms)
   double lockQuality = 0.35;    //!< q at or above which the target is tracked
@@ -67,7 +76,10 @@ struct TrackResult
 class PhotoModelTracker
 {
 public:
-  //! Throws pm::Error if the rig, the model or the parameters are invalid.
+  /*!
+    Throws pm::Error if the rig, the model or the parameters are invalid, or if the model does
+    not fit the rig (under half of its points in an image at the centre of the search space).
+  */
   PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params = TrackerParams());
 
   //! Searches from scratch: a random population over the search space (state: searching).

@@ -1,0 +1,182 @@
+// RM-GA: the chromosome, the operators, budgets, determinism, and the options' effects.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pm/core/Error.h"
+#include "pm/rmga/RmGa.h"
+
+namespace {
+
+//! A smooth peak (F = 1 at the centre) that counts its evaluations.
+class Peak : public pm::FitnessFunction
+{
+public:
+  pm::Phi centre{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
+  long calls = 0;
+  void evaluate(const pm::Phi *p, std::size_t n, double *f) override
+  {
+    const double scale[6] = {30, 30, 30, 0.05, 0.05, 0.05};
+    for (std::size_t i = 0; i < n; ++i) {
+      double d2 = 0;
+      for (std::size_t k = 0; k < 6; ++k) {
+        const double d = (p[i][k] - centre[k]) / scale[k];
+        d2 += d * d;
+      }
+      f[i] = std::exp(-d2);
+    }
+    calls += static_cast<long>(n);
+  }
+};
+
+double distance(const pm::Phi &a, const pm::Phi &b)
+{
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+} // namespace
+
+TEST(Chromosome, DecodeEncodeAndRanges)
+{
+  const pm::SearchSpace s;
+  pm::Genome g;
+  EXPECT_DOUBLE_EQ(pm::decode(g, s).x, -180);
+  EXPECT_DOUBLE_EQ(pm::decode(g, s).z, 320);
+  g.gene.fill(pm::Genome::kMax);
+  EXPECT_DOUBLE_EQ(pm::decode(g, s).y, 180);
+  EXPECT_DOUBLE_EQ(pm::decode(g, s).e3, 0.37);
+  const pm::Phi p{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
+  const pm::Phi q = pm::decode(pm::encode(p, s), s);
+  for (std::size_t i = 0; i < 6; ++i) // within half a gene step: range / 4095 / 2
+    EXPECT_LE(std::fabs(p[i] - q[i]), (s.hi[i] - s.lo[i]) / 4095.0 / 2 + 1e-12);
+  EXPECT_EQ(pm::encode({1e9, -1e9, 0, 0, 0, NAN}, s).gene[0], pm::Genome::kMax); // clamped
+  EXPECT_EQ(pm::encode({1e9, -1e9, 0, 0, 0, NAN}, s).gene[1], 0);
+}
+
+TEST(Chromosome, SeventyTwoBitsCrossoverAndFlip)
+{
+  pm::Genome a, b;
+  a.gene.fill(pm::Genome::kMax); // all ones
+  EXPECT_TRUE(a.bit(0));
+  EXPECT_TRUE(a.bit(71));
+  const pm::Genome c = pm::crossover(a, b, 12); // gene 0 from a, the rest from b
+  EXPECT_EQ(c.gene[0], pm::Genome::kMax);
+  EXPECT_EQ(c.gene[1], 0);
+  const pm::Genome d = pm::crossover(a, b, 17); // gene 1: 5 high bits from a, 7 low from b
+  EXPECT_EQ(d.gene[1], 0xF80);
+  EXPECT_EQ(d.gene[2], 0);
+  pm::Genome e;
+  e.flip(0);
+  EXPECT_EQ(e.gene[0], 0x800);
+  e.flip(71);
+  EXPECT_EQ(e.gene[5], 1);
+}
+
+TEST(Chromosome, LongEpsIsRepairedNeverInvalid)
+{
+  pm::SearchSpace wide;
+  wide.lo = {-180, -180, 320, -1, -1, -1};
+  wide.hi = {180, 180, 680, 1, 1, 1};
+  pm::Genome g;
+  g.gene.fill(pm::Genome::kMax); // eps = (1, 1, 1)
+  const pm::Phi p = pm::decode(g, wide);
+  EXPECT_TRUE(p.isValid());
+  EXPECT_NEAR(std::sqrt(p.epsNorm2()), 0.999, 1e-12);
+}
+
+TEST(RmGa, FindsThePeakWithinAnEvaluationBudgetAndCountsThem)
+{
+  Peak f;
+  pm::RmGaParams p;
+  p.seed = 3;
+  pm::RmGa ga(pm::SearchSpace(), p);
+  pm::FrameResult r;
+  long total = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    r = ga.evolve(f, pm::FrameBudget::evals(1000));
+    EXPECT_LE(r.evaluations, 1000);
+    total += r.evaluations;
+  }
+  EXPECT_EQ(f.calls, total); // every evaluation is counted, none is done twice within a generation
+  EXPECT_LT(distance(r.best, f.centre), 2.0);
+  for (std::size_t k = 3; k < 6; ++k)
+    EXPECT_NEAR(r.best[k], f.centre[k], 0.02);
+}
+
+TEST(RmGa, SameSeedSameRunOtherSeedOtherRun)
+{
+  auto run = [](std::uint64_t seed) {
+    Peak f;
+    pm::RmGaParams p;
+    p.seed = seed;
+    pm::RmGa ga(pm::SearchSpace(), p);
+    std::vector<pm::Phi> bests;
+    for (int frame = 0; frame < 10; ++frame)
+      bests.push_back(ga.evolve(f, pm::FrameBudget::evals(500)).best);
+    return bests;
+  };
+  const auto a = run(7), b = run(7), c = run(8);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t k = 0; k < 6; ++k)
+      EXPECT_EQ(a[i][k], b[i][k]);
+  bool differ = false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    differ = differ || distance(a[i], c[i]) > 0;
+  EXPECT_TRUE(differ);
+}
+
+TEST(RmGa, PredictionFollowsAMovingPeakBetter)
+{
+  // The peak moves 2 mm per frame along x; with the motion predicted, the error is smaller.
+  auto meanError = [](bool predict) {
+    Peak f;
+    pm::RmGaParams p;
+    p.seed = 5;
+    p.predictMotion = predict;
+    pm::RmGa ga(pm::SearchSpace(), p);
+    ga.seedAround(f.centre, 0.0);
+    double sum = 0;
+    for (int frame = 0; frame < 80; ++frame) {
+      f.centre.x = -80 + 2.0 * frame;
+      const pm::FrameResult r = ga.evolve(f, pm::FrameBudget::evals(120));
+      if (frame >= 10)
+        sum += std::fabs(r.best.x - f.centre.x);
+    }
+    return sum / 70;
+  };
+  const double without = meanError(false), with = meanError(true);
+  EXPECT_LT(with, 0.7 * without) << "with prediction " << with << " mm, without " << without << " mm";
+}
+
+TEST(RmGa, RefinementSharpensTheBest)
+{
+  auto error = [](int refine) {
+    Peak f;
+    pm::RmGaParams p;
+    p.seed = 11;
+    p.refineEvaluations = refine;
+    pm::RmGa ga(pm::SearchSpace(), p);
+    pm::FrameResult r;
+    for (int frame = 0; frame < 20; ++frame)
+      r = ga.evolve(f, pm::FrameBudget::evals(600));
+    return distance(r.best, f.centre);
+  };
+  EXPECT_LT(error(200), error(0));
+}
+
+TEST(RmGa, BadBudgetsAndParametersAreRefused)
+{
+  Peak f;
+  pm::RmGa ga{pm::SearchSpace(), pm::RmGaParams()};
+  EXPECT_THROW(ga.evolve(f, pm::FrameBudget::evals(0)), pm::Error);
+  EXPECT_THROW(ga.evolve(f, pm::FrameBudget{}), pm::Error);
+  pm::RmGaParams p;
+  p.elite = 0;
+  EXPECT_THROW(pm::RmGa(pm::SearchSpace(), p), pm::Error);
+  p = pm::RmGaParams();
+  p.population = 1;
+  EXPECT_THROW(pm::RmGa(pm::SearchSpace(), p), pm::Error);
+  pm::SearchSpace s;
+  s.hi[2] = s.lo[2];
+  EXPECT_THROW(pm::RmGa(s, pm::RmGaParams()), pm::Error);
+}

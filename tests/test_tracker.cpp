@@ -1,0 +1,170 @@
+// The photo-model tracker: detection from scratch, initFromPose, the states (lost and found
+// again), configuration files, bad input. Budgets in evaluations, so every run is deterministic.
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/io/RigFile.h"
+#include "pm/io/TrackerConfigFile.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/PhotoModelTracker.h"
+
+namespace {
+
+struct C12Scene
+{
+  pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::Scene scene{pm::sim::makeTarget("C12", 0.5)};
+  pm::sim::SimulatedPhotoModel sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
+  vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({20, -10, 520, 0.03, -0.02, 0.05});
+  pm::sim::StereoImages im = scene.renderStereo(rig, hMo, 0);
+  pm::Phi truth = sm.truth(hMo);
+};
+
+const C12Scene &c12()
+{
+  static const C12Scene s;
+  return s;
+}
+
+pm::TrackerParams evalBudget(long evals)
+{
+  pm::TrackerParams p;
+  p.budgetEvaluations = evals;
+  return p;
+}
+
+} // namespace
+
+TEST(Tracker, DetectsFromScratch)
+{
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(3000);
+  p.ga.population = 100;
+  p.ga.restartGenerations = 30;
+  p.ga.refineEvaluations = 200;
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initialize();
+  EXPECT_EQ(t.getState(), pm::TrackState::Searching);
+  pm::TrackResult r;
+  for (int k = 0; k < 40; ++k)
+    r = t.track(S.im.left, S.im.right);
+  EXPECT_EQ(r.state, pm::TrackState::Tracking);
+  EXPECT_NEAR(r.phi.x, S.truth.x, 2.0);
+  EXPECT_NEAR(r.phi.y, S.truth.y, 2.0);
+  EXPECT_NEAR(r.phi.e3, S.truth.e3, 0.02);
+  // Depth and tilt: within the fitness's own bias for a planar model of a 40 mm deep toy.
+  EXPECT_NEAR(r.phi.z, S.truth.z, 10.0);
+  EXPECT_NEAR(r.phi.e1, S.truth.e1, 0.06);
+  EXPECT_NEAR(r.phi.e2, S.truth.e2, 0.06);
+  EXPECT_GE(r.fitness, t.fitness().evaluate(S.truth)); // RM-GA finds at least what the truth scores
+  EXPECT_GT(r.quality, 0.8);
+  // The returned hMo is phi's matrix.
+  const pm::Phi back = pm::fromHomogeneousMatrix(r.hMo);
+  EXPECT_NEAR(back.x, r.phi.x, 1e-9);
+}
+
+TEST(Tracker, InitFromPoseStaysOnTheTarget)
+{
+  const C12Scene &S = c12();
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(1000));
+  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  EXPECT_EQ(t.getState(), pm::TrackState::Tracking);
+  const pm::TrackResult r = t.track(S.im.left, S.im.right);
+  EXPECT_EQ(r.state, pm::TrackState::Tracking);
+  EXPECT_NEAR(r.phi.x, S.truth.x, 2.0);
+  EXPECT_NEAR(r.phi.y, S.truth.y, 2.0);
+  EXPECT_NEAR(r.phi.z, S.truth.z, 10.0);
+}
+
+TEST(Tracker, BlankFramesAreLostThenTheTargetIsFoundAgain)
+{
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(2000);
+  p.ga.population = 60;
+  p.ga.restartGenerations = 30;
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  t.track(S.im.left, S.im.right);
+  const vpImage<vpRGBa> blank(480, 640, vpRGBa(90, 90, 90));
+  std::vector<pm::TrackState> states;
+  for (int k = 0; k < p.lostFrames + 1; ++k)
+    states.push_back(t.track(blank, blank).state);
+  EXPECT_EQ(states.front(), pm::TrackState::Tracking); // one bad frame is not yet a loss
+  EXPECT_EQ(states.back(), pm::TrackState::Lost);
+  int found = -1;
+  for (int k = 0; k < 60 && found < 0; ++k)
+    if (t.track(S.im.left, S.im.right).state == pm::TrackState::Tracking)
+      found = k;
+  ASSERT_GE(found, 0);
+  for (int k = 0; k < 10; ++k) // let it settle
+    t.track(S.im.left, S.im.right);
+  EXPECT_NEAR(t.lastResult().phi.x, S.truth.x, 2.0);
+  EXPECT_NEAR(t.lastResult().phi.y, S.truth.y, 2.0);
+}
+
+TEST(Tracker, SameSeedSameEstimates)
+{
+  const C12Scene &S = c12();
+  auto run = [&] {
+    pm::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(800));
+    std::vector<double> xs;
+    for (int k = 0; k < 5; ++k)
+      xs.push_back(t.track(S.im.left, S.im.right).phi.x);
+    return xs;
+  };
+  EXPECT_EQ(run(), run());
+}
+
+TEST(Tracker, BadInputIsRefused)
+{
+  const C12Scene &S = c12();
+  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, evalBudget(5)), pm::Error); // under the population
+  pm::TrackerParams zero;
+  zero.budgetMs = 0;
+  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, zero), pm::Error);
+  // A model twenty times too large does not fit the rig.
+  pm::PhotoModel huge = S.sm.build.model;
+  for (auto *set : {&huge.inner, &huge.outer})
+    for (auto &q : *set) {
+      q.x *= 20;
+      q.y *= 20;
+    }
+  EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, huge); }).find("does not fit the rig"), std::string::npos);
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(100));
+  EXPECT_THROW(t.track(vpImage<vpRGBa>(240, 320), S.im.right), pm::Error);
+}
+
+TEST(TrackerConfig, FileRoundTripAndErrors)
+{
+  pm::test::TempDir d("config");
+  pm::TrackerParams p;
+  p.budgetEvaluations = 1234;
+  p.ga.population = 33;
+  p.ga.predictMotion = true;
+  p.fitness.inTolDeg = 25;
+  pm::test::writeText(d.file("t.json"), pm::io::trackerConfigToJson(p));
+  const pm::TrackerParams q = pm::io::loadTrackerConfig(d.file("t.json"));
+  EXPECT_EQ(q.budgetEvaluations, 1234);
+  EXPECT_EQ(q.ga.population, 33);
+  EXPECT_TRUE(q.ga.predictMotion);
+  EXPECT_DOUBLE_EQ(q.fitness.inTolDeg, 25);
+  // Partial files keep the defaults.
+  pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
+  EXPECT_EQ(pm::io::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
+  EXPECT_EQ(pm::io::loadTrackerConfig(d.file("partial.json")).ga.population, 20);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {R"({"format":"visp-photomodel-tracker","version":1,"budget_ms":0})", "budget"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"populaton":10}})", "populaton"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"population":"many"}})", "not valid"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"lock_quality":0.1,"lost_quality":0.5})", "lost < lock"},
+      {"{ not json", "not valid"},
+      {R"({"format":"x"})", "format"}};
+  for (const auto &[text, expect] : bad) {
+    pm::test::writeText(d.file("bad.json"), text);
+    const std::string e = pm::test::errorOf([&] { pm::io::loadTrackerConfig(d.file("bad.json")); });
+    EXPECT_NE(e.find(expect), std::string::npos) << text << " -> " << e;
+  }
+}
