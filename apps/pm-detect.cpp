@@ -72,7 +72,7 @@ int main(int argc, char **argv)
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   bool quiet = false, allTargets = false;
   double maxTimeS = 10, distanceMm = 500;
-  int patience = 10;
+  int patience = 20;
   pm::PhotoModelParams mp;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
@@ -94,8 +94,9 @@ int main(int argc, char **argv)
   pm::app::addModelOptions(app, mp);
   pm::app::addSceneOptions(app, sp);
   pm::TrackerParams defaults;
-  defaults.ga.refineEvaluations = 200;
-  defaults.ga.restartGenerations = 100;
+  defaults.ga.population = 100;       // detection from scratch: a larger population ...
+  defaults.ga.restartGenerations = 30; // ... restarted when stagnant ...
+  defaults.ga.refineEvaluations = 200; // ... and the best refined (measured: README)
   pm::app::TrackerOptions trackerOptions(app, defaults);
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 

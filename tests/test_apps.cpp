@@ -2,11 +2,17 @@
 // no half-written output, and the outputs of a successful run.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
 #include "pm/io/ImageFile.h"
+#include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
 
 using pm::test::runProgram;
 using pm::test::TempDir;
@@ -25,10 +31,10 @@ void expectOneLineError(const pm::test::RunResult &r, const std::string &fragmen
 
 TEST(Apps, HelpExitsZeroAndShowsDefaults)
 {
-  for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig"}) {
+  for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-bench"}) {
     const auto r = runProgram(p, "--help");
     EXPECT_EQ(r.status, 0) << p;
-    EXPECT_NE(r.out.find("--out"), std::string::npos) << p;
+    EXPECT_NE(r.out.find(std::string(p) == "pm-bench" ? "benchmark" : "--out"), std::string::npos) << p;
   }
   EXPECT_NE(runProgram("pm-make-model", "--help").out.find("500"), std::string::npos); // default distance shown
 }
@@ -142,4 +148,93 @@ TEST(Apps, MakeRigWritesALoadableRig)
   const pm::StereoRig rig = pm::io::loadRig(d.file("rig.json"));
   EXPECT_NEAR(rig.baseline(), 0.2, 1e-9);
   EXPECT_NEAR(rig.left.hMc.getThetaUVector().getTheta(), 0.0, 1e-12);
+}
+
+namespace {
+
+//! A recorded sequence of 4 stereo frames of C04 moving along x, its model and ground truth, in \e dir.
+void writeSequence(const TempDir &dir)
+{
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::sim::Scene scene(pm::sim::makeTarget("C04", 0.5));
+  const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
+  pm::io::savePhotoModel(sm.build.model, dir.file("model.json"));
+  std::string truth = "frame,x,y,z,e1,e2,e3\n";
+  for (int k = 0; k < 4; ++k) {
+    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({2.0 * k, 0, 500, 0, 0, 0});
+    const auto im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
+    char name[32];
+    std::snprintf(name, sizeof name, "L_%04d.png", k);
+    pm::io::writeImage(im.left, dir.file(name));
+    std::snprintf(name, sizeof name, "R_%04d.png", k);
+    pm::io::writeImage(im.right, dir.file(name));
+    const pm::Phi t = sm.truth(hMo);
+    truth += std::to_string(k) + "," + std::to_string(t.x) + "," + std::to_string(t.y) + "," + std::to_string(t.z) + ",0,0,0\n";
+  }
+  pm::test::writeText(dir.file("truth.csv"), truth);
+}
+
+} // namespace
+
+TEST(Apps, TrackRunsOnARecordedSequenceAndSkipsAnUnreadableFrame)
+{
+  TempDir d("seq");
+  writeSequence(d);
+  pm::test::writeText(d.file("L_0002.png"), "not a png"); // a broken frame in the middle
+  const std::string seq = " --left-images " + d.file("L_%04d.png") + " --right-images " + d.file("R_%04d.png") +
+                          " --model " + d.file("model.json");
+  const auto r = runProgram("pm-track", "--quiet --budget-evals 600 --truth " + d.file("truth.csv") + seq + " --out " + d.file("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("out/summary.json")));
+  EXPECT_EQ(s.at("frames").get<int>(), 3);
+  EXPECT_EQ(s.at("unreadable_frames").get<int>(), 1);
+  EXPECT_TRUE(s.at("errors").contains("x"));
+  for (const char *f : {"frames.csv", "trajectory.png", "errors.png", "summary.json"})
+    EXPECT_TRUE(std::filesystem::exists(d.file(std::string("out/") + f))) << f;
+
+  // An empty sequence, a pattern without a frame field, a budget of 0: one-line errors.
+  expectOneLineError(runProgram("pm-track", "--left-images " + d.file("none_%d.png") + " --right-images " + d.file("none_%d.png") +
+                                                " --model " + d.file("model.json") + " --out " + d.file("o2")),
+                     "empty");
+  expectOneLineError(runProgram("pm-track", "--left-images " + d.file("L_%s.png") + " --right-images " + d.file("R_%04d.png") +
+                                                " --model " + d.file("model.json") + " --out " + d.file("o2")),
+                     "frame-number field");
+  expectOneLineError(runProgram("pm-track", "--budget-ms 0" + seq + " --out " + d.file("o2")), "budget");
+  EXPECT_FALSE(std::filesystem::exists(d.file("o2/summary.json")));
+}
+
+TEST(Apps, DetectAndTrackOnTheSimulator)
+{
+  TempDir d("apps");
+  const auto r = runProgram("pm-detect", "--target C04 --quiet --budget-evals 2000 --max-time-s 5 --out " + d.file("det"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("det/summary.json")));
+  for (const char *k : {"pose", "truth", "position_error_mm", "orientation_error", "rotation_error_deg", "time_s", "evaluations"})
+    EXPECT_TRUE(s.contains(k)) << k;
+  EXPECT_LT(s.at("position_error_mm").get<double>(), 15.0);
+
+  const auto t = runProgram("pm-track", "--target C04 --quiet --steps 2 --hold-s 0.5 --move-s 0.5 --budget-evals 800 --out " +
+                                            d.file("track"));
+  ASSERT_EQ(t.status, 0) << t.err;
+  const auto u = nlohmann::json::parse(pm::test::readText(d.file("track/summary.json")));
+  for (const char *k : {"converged_after_s", "errors", "mean_frame_ms", "p99_frame_ms"})
+    EXPECT_TRUE(u.contains(k)) << k;
+  EXPECT_TRUE(u.at("errors").at("z").contains("rms_error"));
+  EXPECT_TRUE(u.at("errors").at("eps3").contains("max_abs_error"));
+}
+
+TEST(Apps, AModelThatDoesNotFitTheRigIsRefused)
+{
+  TempDir d("apps");
+  writeSequence(d);
+  pm::PhotoModel m = pm::io::loadPhotoModel(d.file("model.json"));
+  for (auto *set : {&m.inner, &m.outer})
+    for (auto &q : *set) {
+      q.x *= 30;
+      q.y *= 30;
+    }
+  pm::io::savePhotoModel(m, d.file("huge.json"));
+  expectOneLineError(runProgram("pm-detect", "--left " + d.file("L_0000.png") + " --right " + d.file("R_0000.png") + " --model " +
+                                                 d.file("huge.json") + " --out " + d.file("o")),
+                     "does not fit the rig");
 }

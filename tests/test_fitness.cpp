@@ -141,6 +141,12 @@ TEST(HuePlane, MatchesThePerPixelFormula)
   for (unsigned k = 0; k < J.getSize(); ++k)
     J.bitmap[k] = vpRGBa(static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)));
   pm::HuePlane plane;
+  for (float minSat : {0.f, 0.1f, 0.5f}) { // the vectorised plane and the per-pixel formula agree to the bit
+    plane.compute(J, minSat);
+    for (unsigned v = 0; v < J.getHeight(); ++v)
+      for (unsigned u = 0; u < J.getWidth(); ++u)
+        ASSERT_EQ(plane.at(u, v), pm::hueDeci(J[v][u], minSat)) << u << "," << v << " min saturation " << minSat;
+  }
   plane.compute(J);
   for (unsigned v = 0; v < J.getHeight(); ++v)
     for (unsigned u = 0; u < J.getWidth(); ++u) {

@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define PM_HAVE_X86 1
+#endif
+
 namespace pm {
 
 namespace {
@@ -21,6 +26,49 @@ inline std::uint16_t hueOf(int r, int g, int b, float minSat)
   const bool grey = d == 0 || static_cast<float>(d) < minSat * static_cast<float>(mx);
   return grey ? (minSat > 0.f ? HuePlane::kNoHue : std::uint16_t(0)) : static_cast<std::uint16_t>(q);
 }
+#ifdef PM_HAVE_X86
+/*!
+  The same formula as hueOf, 8 pixels at a time, with the same IEEE operations in the same order
+  (one division, then + sector, * 600, + 3600 if negative, + 0.5, truncation), so both agree to the bit.
+*/
+__attribute__((target("avx2"))) void hueAvx2(const vpRGBa *src, std::uint16_t *dst, std::size_t n, float minSat)
+{
+  const __m256i byte = _mm256_set1_epi32(0xff);
+  const __m256 zero = _mm256_setzero_ps(), k600 = _mm256_set1_ps(600.f), k3600 = _mm256_set1_ps(3600.f);
+  const __m256i noHue = _mm256_set1_epi32(minSat > 0.f ? HuePlane::kNoHue : 0);
+  const __m256 vMinSat = _mm256_set1_ps(minSat);
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    const __m256i px = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(src + i)); // R G B A bytes
+    const __m256i r = _mm256_and_si256(px, byte), g = _mm256_and_si256(_mm256_srli_epi32(px, 8), byte);
+    const __m256i b = _mm256_and_si256(_mm256_srli_epi32(px, 16), byte);
+    const __m256i mx = _mm256_max_epi32(r, _mm256_max_epi32(g, b)), mn = _mm256_min_epi32(r, _mm256_min_epi32(g, b));
+    const __m256i d = _mm256_sub_epi32(mx, mn);
+    const __m256i isR = _mm256_cmpeq_epi32(mx, r), isG = _mm256_andnot_si256(isR, _mm256_cmpeq_epi32(mx, g));
+    const __m256i num = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_sub_epi32(r, g), _mm256_sub_epi32(b, r), isG),
+                                           _mm256_sub_epi32(g, b), isR);
+    const __m256 off = _mm256_blendv_ps(_mm256_blendv_ps(_mm256_set1_ps(4.f), _mm256_set1_ps(2.f), _mm256_castsi256_ps(isG)),
+                                        zero, _mm256_castsi256_ps(isR));
+    const __m256i dz = _mm256_cmpeq_epi32(d, _mm256_setzero_si256());
+    const __m256 fd = _mm256_cvtepi32_ps(_mm256_blendv_epi8(d, _mm256_set1_epi32(1), dz));
+    __m256 h = _mm256_mul_ps(_mm256_add_ps(off, _mm256_div_ps(_mm256_cvtepi32_ps(num), fd)), k600);
+    h = _mm256_blendv_ps(h, _mm256_add_ps(h, k3600), _mm256_cmp_ps(h, zero, _CMP_LT_OQ));
+    __m256i q = _mm256_cvttps_epi32(_mm256_add_ps(h, _mm256_set1_ps(0.5f)));
+    q = _mm256_blendv_epi8(q, _mm256_sub_epi32(q, _mm256_set1_epi32(3600)), _mm256_cmpgt_epi32(q, _mm256_set1_epi32(3599)));
+    // Grey: d == 0, or d < minSat * max.
+    const __m256i low = _mm256_castps_si256(_mm256_cmp_ps(_mm256_cvtepi32_ps(d), _mm256_mul_ps(vMinSat, _mm256_cvtepi32_ps(mx)), _CMP_LT_OQ));
+    q = _mm256_blendv_epi8(q, noHue, _mm256_or_si256(dz, low));
+    // Pack 8 x 32-bit to 8 x 16-bit (values fit in 16 bits unsigned).
+    const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(q, q), 0x08);
+    _mm_storeu_si128(reinterpret_cast<__m128i *>(dst + i), _mm256_castsi256_si128(packed));
+  }
+  for (; i < n; ++i)
+    dst[i] = hueOf(src[i].R, src[i].G, src[i].B, minSat);
+}
+
+bool cpuHasAvx2() { return __builtin_cpu_supports("avx2"); }
+#endif
+
 } // namespace
 
 std::uint16_t hueDeci(const vpRGBa &c, float minSaturation) { return hueOf(c.R, c.G, c.B, minSaturation); }
@@ -34,6 +82,13 @@ void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation)
     m_hue.assign(n + 2, kNoHue); // +2: padding for 32-bit gathers at the last pixel
   const vpRGBa *src = I.bitmap;
   std::uint16_t *dst = m_hue.data();
+#ifdef PM_HAVE_X86
+  static const bool avx2 = cpuHasAvx2();
+  if (avx2) {
+    hueAvx2(src, dst, n, minSaturation);
+    return;
+  }
+#endif
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i)
     dst[i] = hueOf(src[i].R, src[i].G, src[i].B, minSaturation);
