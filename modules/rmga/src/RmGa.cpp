@@ -80,6 +80,19 @@ void RmGa::restart(int keep)
   }
 }
 
+void RmGa::transform(const std::function<Phi(const Phi &)> &f)
+{
+  for (auto &ind : m_pop) {
+    const double fit = ind.fitness;
+    ind = make(encode(m_space.clamp(f(ind.phi)), m_space));
+    ind.fitness = fit;
+  }
+  if (m_havePrev)
+    m_prev = f(m_prev);
+  if (m_havePrev2)
+    m_prev2 = f(m_prev2);
+}
+
 void RmGa::evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, long &evals)
 {
   const std::size_t n = ind.size() - from;

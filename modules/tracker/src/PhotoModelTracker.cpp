@@ -91,6 +91,18 @@ void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
   m_lowFrames = 0;
 }
 
+void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
+{
+  if (!hNowMhPrev.isAnHomogeneousMatrix())
+    throw Error("tracker: the hand motion is not a rigid transformation");
+  m_ga.transform([&](const Phi &p) {
+    const Phi q = fromHomogeneousMatrix(hNowMhPrev * toHomogeneousMatrix(p));
+    return q.isValid() ? q : p;
+  });
+  m_last.hMo = hNowMhPrev * m_last.hMo;
+  m_last.phi = fromHomogeneousMatrix(m_last.hMo);
+}
+
 TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
 {
   const auto t0 = std::chrono::steady_clock::now();

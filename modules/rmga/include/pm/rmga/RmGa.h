@@ -21,6 +21,7 @@
   machine's speed.
 */
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -90,6 +91,12 @@ public:
   void seedAround(const Phi &p, double spread);
   //! Replaces all but the best \e keep individuals by random ones (a restart).
   void restart(int keep = 1);
+  /*!
+    Moves every individual (and the remembered best poses of the last frames, for the motion
+    prediction) by \e f, e.g. when the frame they are expressed in moved: the tracker compensates
+    the hand's own motion this way. The fitness values are kept until the next evaluation.
+  */
+  void transform(const std::function<Phi(const Phi &)> &f);
 
   /*!
     Evolves the population on one frame (steps 2-9) within \e budget. Throws pm::Error if the

@@ -92,6 +92,13 @@ public:
   */
   TrackResult track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
 
+  /*!
+    The hand moved by \e hNowMhPrev (the previous hand frame seen from the current one, from the
+    robot's odometry) since the last frame: the population follows, so that a target that did not
+    move is still where the search looks (eye-in-hand ego-motion compensation).
+  */
+  void applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev);
+
   vpHomogeneousMatrix getPose() const { return m_last.hMo; }
   double getFitness() const { return m_last.fitness; }
   TrackState getState() const { return m_last.state; }

@@ -1,0 +1,413 @@
+//! pm-servo: the PA-10 follows the moving target by position-based visual servoing (the main job).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <numeric>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "pm/app/App.h"
+#include "pm/app/Options.h"
+#include "pm/app/Overlay.h"
+#include "pm/app/PlotUtil.h"
+#include "pm/app/Progress.h"
+#include "pm/app/TimePlot.h"
+#include "pm/core/Error.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/RigFile.h"
+#include "pm/io/StagedFiles.h"
+#include "pm/lab/ClosedLoop.h"
+#include "pm/sim/TargetCatalog.h"
+
+namespace {
+
+const char *kAxes[6] = {"x", "y", "z", "e1", "e2", "e3"};
+
+int axisIndex(const std::string &a)
+{
+  for (int i = 0; i < 6; ++i)
+    if (a == kAxes[i])
+      return i;
+  throw CLI::ValidationError("--axis", "must be one of x, y, z, e1, e2, e3");
+}
+
+cv::Mat toMat(const vpImage<vpRGBa> &I)
+{
+  cv::Mat m(static_cast<int>(I.getHeight()), static_cast<int>(I.getWidth()), CV_8UC3);
+  for (unsigned v = 0; v < I.getHeight(); ++v)
+    for (unsigned u = 0; u < I.getWidth(); ++u) {
+      const vpRGBa &p = I[v][u];
+      m.at<cv::Vec3b>(static_cast<int>(v), static_cast<int>(u)) = cv::Vec3b(p.B, p.G, p.R);
+    }
+  return m;
+}
+
+struct RunSummary
+{
+  std::vector<pm::lab::LoopFrame> frames;
+  long converged = -1;
+};
+
+//! Amplitude and phase of the component at \e f of a sampled signal (least squares on sin, cos, 1).
+std::pair<double, double> sinusoidFit(const std::vector<double> &t, const std::vector<double> &y, double f)
+{
+  double s[3][3] = {{0}}, b[3] = {0};
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const double r[3] = {std::sin(2 * M_PI * f * t[k]), std::cos(2 * M_PI * f * t[k]), 1.0};
+    for (int i = 0; i < 3; ++i) {
+      b[i] += r[i] * y[k];
+      for (int j = 0; j < 3; ++j)
+        s[i][j] += r[i] * r[j];
+    }
+  }
+  vpMatrix A(3, 3);
+  vpColVector B(3);
+  for (unsigned i = 0; i < 3; ++i) {
+    B[i] = b[i];
+    for (unsigned j = 0; j < 3; ++j)
+      A[i][j] = s[i][j];
+  }
+  const vpColVector x = A.pseudoInverse() * B;
+  return {std::hypot(x[0], x[1]), std::atan2(x[1], x[0])};
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  CLI::App app{"The main job: the eye-in-hand PA-10 keeps the target 500 mm in front of its hand by position-based visual "
+               "servoing (ViSP's vpServo) on the photo-model tracker's pose, while the TC-robot moves the target through "
+               "Table 2's steps or a sinusoid. Writes frames.csv, errors.png (relative pose error), relative_pose.png "
+               "(estimate against truth), joints.png, overlays, servo.avi (left and right views with the model) and "
+               "summary.json; --freq-sweep writes a Bode plot of the tracking.",
+               "pm-servo"};
+  app.option_defaults()->always_capture_default();
+  std::string out = "results/servo", target = "C12", trajectory = "steps", axis = "x";
+  std::string stepsPath = pm::app::dataPath("trajectories/table2.csv"), rigPath = pm::app::dataPath("rig/pa10_stereo.json");
+  double holdS = 1.5, moveS = 2.0, amplitude = 50, frequency = 0.5, durationS = 0, fps = 30;
+  double maxVelocity = 300, maxAcceleration = 1500;
+  int overlayEvery = 150, steps = 0;
+  bool quiet = false, noVideo = false, freqSweep = false;
+  pm::lab::LoopParams lp;
+  pm::ServoParams servo;
+  pm::PhotoModelParams mp;
+  pm::sim::SceneParams sp;
+  app.add_option("--out", out, "output folder (created if missing)");
+  app.add_option("--target", target, "simulated target C01..C12");
+  app.add_option("--trajectory", trajectory, "the TC-robot's motion: steps (Table 2) or sine")->check(CLI::IsMember({"steps", "sine"}));
+  app.add_option("--steps-file", stepsPath, "waypoints of the steps (step,x,y,z,e1,e2,e3, in the hand frame at the start)");
+  app.add_option("--steps", steps, "use only the first N waypoints (0: all)")->check(CLI::Range(0, 100000));
+  app.add_option("--hold-s", holdS, "steps: time each is held (s)")->check(CLI::Range(0.0, 3600.0));
+  app.add_option("--move-s", moveS, "steps: duration of each move (s; 2 s, since the PA-10's joint speeds cannot orbit "
+                                    "Table 2's 40 deg rotation steps at 500 mm in 1 s)")->check(CLI::Range(0.01, 3600.0));
+  app.add_option("--axis", axis, "sine: the variable moved (x, y, z, e1, e2, e3)");
+  app.add_option("--amplitude-mm", amplitude, "sine: amplitude (mm; for e1..e3 the quaternion component)")->check(CLI::Range(0.0, 500.0));
+  app.add_option("--frequency-hz", frequency, "sine: frequency")->check(CLI::Range(0.001, 10.0));
+  app.add_option("--max-velocity", maxVelocity, "TC-robot velocity limit (mm/s, or 1/s for eps)")->check(CLI::PositiveNumber);
+  app.add_option("--max-acceleration", maxAcceleration, "TC-robot acceleration limit (mm/s^2, or 1/s^2)")->check(CLI::PositiveNumber);
+  app.add_option("--duration-s", durationS, "stop after this long (0: the steps' duration, 20 s for a sine)")->check(CLI::Range(0.0, 1e6));
+  app.add_option("--fps", fps, "camera and servo rate")->check(CLI::Range(1.0, 1000.0));
+  app.add_flag("--oracle", lp.oracle, "servo on the true pose instead of the estimate (a baseline)");
+  app.add_flag("--filter,!--no-filter", lp.filter, "alpha-beta filter of the estimate (base frame) with velocity feed-forward");
+  app.add_option("--filter-alpha-rotation", lp.filterParams.alphaR, "filter: rotation gain")->check(CLI::Range(0.01, 1.0));
+  app.add_option("--filter-beta-rotation", lp.filterParams.betaR, "filter: angular velocity gain")->check(CLI::Range(0.0, 1.9));
+  app.add_option("--filter-alpha-translation", lp.filterParams.alphaT, "filter: translation gain")->check(CLI::Range(0.01, 1.0));
+  app.add_option("--filter-beta-translation", lp.filterParams.betaT, "filter: velocity gain")->check(CLI::Range(0.0, 1.9));
+  app.add_flag("--feed-forward-rotation,!--no-feed-forward-rotation", servo.feedForwardRotation, "feed the target's angular velocity forward too");
+  app.add_flag("--freq-sweep", freqSweep, "run sines of 0.1 to 1 Hz on --axis and write bode.png and bode.csv");
+  app.add_option("--overlay-every", overlayEvery, "write an overlay PNG every N frames (0: none)")->check(CLI::Range(0, 1000000));
+  app.add_flag("--no-video", noVideo, "do not write servo.avi");
+  app.add_option("--rig", rigPath, "stereo rig file");
+  app.add_option("--gain-zero", servo.gainAtZero, "vpAdaptiveGain: gain at zero error (1/s)")->check(CLI::PositiveNumber);
+  app.add_option("--gain-infinity", servo.gainAtInfinity, "vpAdaptiveGain: gain at infinite error (1/s)")->check(CLI::PositiveNumber);
+  app.add_flag("--feed-forward,!--no-feed-forward", servo.feedForward, "follow the target's estimated velocity");
+  pm::app::addModelOptions(app, mp);
+  pm::app::addSceneOptions(app, sp);
+  pm::TrackerParams defaults;
+  defaults.ga.predictMotion = true;
+  defaults.ga.refineEvaluations = 100;
+  defaults.ga.restartGenerations = 30;
+  defaults.budgetMs = 5;
+  pm::app::TrackerOptions trackerOptions(app, defaults);
+  app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
+
+  return pm::app::run(app, argc, argv, [&] {
+    const pm::TrackerParams tp = trackerOptions.resolve();
+    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    lp.fps = fps;
+    const pm::sim::Scene scene(pm::sim::makeTarget(target), sp);
+    const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, 500, mp);
+    const int ax = axisIndex(axis);
+    const pm::Phi phi0{0, 0, 500, 0, 0, 0};
+    std::vector<pm::Phi> waypoints;
+    if (trajectory == "steps") {
+      waypoints = pm::sim::Trajectory::readWaypoints(stepsPath);
+      if (steps > 0 && steps < static_cast<int>(waypoints.size()))
+        waypoints.resize(static_cast<std::size_t>(steps));
+    }
+    auto runOnce = [&](double f, double amp, double seconds) {
+      auto makeTc = [&](const vpHomogeneousMatrix &wMh0) -> std::unique_ptr<pm::sim::TcRobot> {
+        return std::make_unique<pm::sim::TcRobot>(wMh0, phi0, ax, amp, f, maxVelocity, maxAcceleration);
+      };
+      pm::lab::ClosedLoop loop(rig, scene, sm, tp, servo, lp, makeTc);
+      RunSummary r;
+      const long n = static_cast<long>(std::floor(seconds * fps)) + 1;
+      r.frames.reserve(static_cast<std::size_t>(n));
+      for (long k = 0; k < n; ++k)
+        r.frames.push_back(loop.step());
+      return r;
+    };
+
+    pm::io::StagedFiles files(out);
+    if (freqSweep) {
+      const std::vector<double> freqs = {0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
+      pm::app::Progress progress("frequency sweep", freqs.size(), quiet);
+      std::ostringstream csv;
+      csv << "frequency_hz,amplitude,gain,phase_lag_deg\n";
+      pm::app::Series gainS{"gain", vpRGBa(40, 90, 200), {}, {}, false}, phaseS{"phase lag", vpRGBa(220, 60, 40), {}, {}, false};
+      nlohmann::json rows = nlohmann::json::array();
+      for (double f : freqs) {
+        const double seconds = 1.0 / f + 3.0 / f; // the fade-in period, then three periods
+        // The amplitude, reduced where the TC-robot's velocity or acceleration limit requires it.
+        const double w = 2 * M_PI * f;
+        const double amp = std::min({amplitude, 0.999 * maxVelocity / w, 0.999 * maxAcceleration / (w * w)});
+        const RunSummary r = runOnce(f, amp, seconds);
+        // The hand's motion along the axis in h0 against the target's, over the last three periods.
+        std::vector<double> t, yt, yh;
+        for (const auto &fr : r.frames)
+          if (fr.t >= 1.0 / f) {
+            t.push_back(fr.t);
+            // The hand follows if the relative pose stays constant: hand motion = target motion - relative error.
+            const pm::Phi rel = pm::fromHomogeneousMatrix(fr.hMmTrue);
+            const double targetMotion = amp * std::sin(2 * M_PI * f * fr.t);
+            yt.push_back(targetMotion);
+            yh.push_back(targetMotion - (rel[static_cast<std::size_t>(ax)] - phi0[static_cast<std::size_t>(ax)]));
+          }
+        const auto [at, pt] = sinusoidFit(t, yt, f);
+        const auto [ah, ph] = sinusoidFit(t, yh, f);
+        double lag = (pt - ph) * 180 / M_PI;
+        while (lag > 180)
+          lag -= 360;
+        while (lag < -180)
+          lag += 360;
+        const double gain = ah / at;
+        csv << f << "," << amp << "," << gain << "," << lag << "\n";
+        rows.push_back({{"frequency_hz", f}, {"amplitude", amp}, {"gain", gain}, {"phase_lag_deg", lag}});
+        gainS.t.push_back(f);
+        gainS.y.push_back(gain);
+        phaseS.t.push_back(f);
+        phaseS.y.push_back(lag);
+        progress.step();
+      }
+      progress.finish();
+      pm::io::writeTextFile(files.stage("bode.csv"), csv.str());
+      pm::io::writeImage(pm::app::drawTimePlots({{"tracking gain (hand / target amplitude)", "", {gainS}, 0, {}},
+                                                 {"phase lag of the hand (deg)", "deg", {phaseS}, 0, {}}},
+                                                2, "frequency response of the visual servo, sine on " + axis + ", amplitude " +
+                                                       pm::app::tickLabel(amplitude),
+                                                "frequency [Hz]"),
+                         files.stage("bode.png"));
+      pm::io::writeTextFile(files.stage("summary.json"), nlohmann::json{{"axis", axis}, {"amplitude", amplitude}, {"sweep", rows}}.dump(2) + "\n");
+      files.commit();
+      if (!quiet)
+        std::cout << "frequency response (" << axis << ", amplitude " << amplitude << "):\n" << csv.str() << "written to " << files.dir() << "/" << std::endl;
+      return 0;
+    }
+
+    const double seconds = durationS > 0 ? durationS
+                                         : (trajectory == "steps" ? pm::sim::Trajectory(waypoints, holdS, moveS).duration() : 20.0);
+    const long nFrames = static_cast<long>(std::floor(seconds * fps)) + 1;
+    pm::app::Progress progress("servoing", static_cast<std::size_t>(nFrames), quiet);
+    // The run, with its recordings (video and overlays need the images of each frame).
+    auto makeTc = [&](const vpHomogeneousMatrix &wMh0) -> std::unique_ptr<pm::sim::TcRobot> {
+      if (trajectory == "steps")
+        return std::make_unique<pm::sim::TcRobot>(wMh0, pm::sim::Trajectory(waypoints, holdS, moveS));
+      return std::make_unique<pm::sim::TcRobot>(wMh0, phi0, ax, amplitude, frequency, maxVelocity, maxAcceleration);
+    };
+    pm::lab::ClosedLoop loop(rig, scene, sm, tp, servo, lp, makeTc);
+    std::vector<pm::lab::LoopFrame> rec;
+    rec.reserve(static_cast<std::size_t>(nFrames));
+    cv::VideoWriter video;
+    const std::string videoPath = noVideo ? "" : files.stage("servo.avi");
+    // The video at half size and half rate (15 fps for 30 fps cameras): a minute of servoing in ~30 MB.
+    if (!noVideo && !video.open(videoPath, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), fps / 2,
+                                cv::Size(static_cast<int>(rig.left.width), static_cast<int>(rig.left.height / 2))))
+      throw pm::Error("cannot write the video '" + files.finalPath("servo.avi") + "' (OpenCV's MJPG writer failed)");
+    int overlays = 0;
+    for (long k = 0; k < nFrames; ++k) {
+      const pm::lab::LoopFrame f = loop.step();
+      rec.push_back(f);
+      const bool wantOverlay = overlayEvery > 0 && k % overlayEvery == 0;
+      const bool wantVideo = !noVideo && k % 2 == 0;
+      if (wantVideo || wantOverlay) {
+        const pm::Phi used = pm::fromHomogeneousMatrix(f.hMmUsed);
+        std::ostringstream label;
+        label << std::fixed << std::setprecision(1) << "t " << f.t << " s  " << (lp.oracle ? "oracle" : pm::toString(f.track.state))
+              << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg";
+        const vpImage<vpRGBa> pair =
+            pm::app::sideBySide(pm::app::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str()),
+                                pm::app::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right"));
+        if (wantVideo) {
+          cv::Mat half;
+          cv::resize(toMat(pair), half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
+          video.write(half);
+        }
+        if (wantOverlay) {
+          char name[64];
+          std::snprintf(name, sizeof name, "overlay_%05ld.png", k);
+          pm::io::writeImage(pair, files.stage(name));
+          ++overlays;
+        }
+      }
+      progress.step();
+    }
+    progress.finish();
+    if (!noVideo)
+      video.release();
+
+    // Convergence: the true relative pose within 10 mm and 2 deg of the desired one for 1 s.
+    const std::size_t window = static_cast<std::size_t>(std::lround(fps));
+    long converged = -1;
+    for (std::size_t k = 0; k < rec.size() && converged < 0; ++k) {
+      bool ok = true;
+      for (std::size_t j = k; j < std::min(rec.size(), k + window) && ok; ++j)
+        ok = rec[j].translationErrorMm <= 10 && rec[j].rotationErrorDeg <= 2;
+      if (ok)
+        converged = static_cast<long>(k);
+    }
+    struct Stat
+    {
+      double s2 = 0, mx = 0, r2 = 0, rmx = 0;
+      std::size_t n = 0;
+    } rest, moving;
+    for (std::size_t k = converged < 0 ? 0 : static_cast<std::size_t>(converged); k < rec.size(); ++k) {
+      Stat &s = rec[k].moving ? moving : rest;
+      s.s2 += rec[k].translationErrorMm * rec[k].translationErrorMm;
+      s.mx = std::max(s.mx, rec[k].translationErrorMm);
+      s.r2 += rec[k].rotationErrorDeg * rec[k].rotationErrorDeg;
+      s.rmx = std::max(s.rmx, rec[k].rotationErrorDeg);
+      ++s.n;
+    }
+    auto rms = [](double s2, std::size_t n) { return n ? std::sqrt(s2 / static_cast<double>(n)) : 0.0; };
+    std::vector<double> ms;
+    int violations = loop.robot().limitHits();
+    const vpColVector qmin = loop.robot().jointMin(), qmax = loop.robot().jointMax(), vmax = loop.robot().speedLimits();
+    double maxJointSpeedRatio = 0;
+    for (const auto &f : rec) {
+      ms.push_back(f.track.computeMs);
+      for (unsigned i = 0; i < 7; ++i) {
+        violations += (f.q[i] < qmin[i] || f.q[i] > qmax[i]) ? 1 : 0;
+        maxJointSpeedRatio = std::max(maxJointSpeedRatio, std::fabs(f.qdot[i]) / vmax[i]);
+      }
+    }
+    const double meanMs = std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
+
+    {
+      std::ofstream csv(files.stage("frames.csv"));
+      csv << std::setprecision(8) << "t,moving,true_x,true_y,true_z,true_e1,true_e2,true_e3,used_x,used_y,used_z,used_e1,used_e2,used_e3,"
+             "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms";
+      for (int i = 1; i <= 7; ++i)
+        csv << ",q" << i;
+      for (int i = 1; i <= 7; ++i)
+        csv << ",qdot" << i;
+      csv << "\n";
+      for (const auto &f : rec) {
+        const pm::Phi a = pm::fromHomogeneousMatrix(f.hMmTrue), b = pm::fromHomogeneousMatrix(f.hMmUsed);
+        csv << f.t << "," << (f.moving ? 1 : 0);
+        for (std::size_t i = 0; i < 6; ++i)
+          csv << "," << a[i];
+        for (std::size_t i = 0; i < 6; ++i)
+          csv << "," << b[i];
+        csv << "," << f.translationErrorMm << "," << f.rotationErrorDeg << "," << f.track.fitness << ","
+            << (lp.oracle ? "oracle" : pm::toString(f.track.state)) << "," << (f.servoing ? 1 : 0) << "," << f.track.computeMs;
+        for (unsigned i = 0; i < 7; ++i)
+          csv << "," << f.q[i];
+        for (unsigned i = 0; i < 7; ++i)
+          csv << "," << f.qdot[i];
+        csv << "\n";
+      }
+      if (!csv)
+        throw pm::Error("cannot write " + files.finalPath("frames.csv"));
+    }
+    // Figures.
+    const std::vector<double> marks = converged >= 0 ? std::vector<double>{rec[static_cast<std::size_t>(converged)].t} : std::vector<double>{};
+    pm::app::Series te{"translation", vpRGBa(40, 90, 200), {}, {}, false}, re{"rotation", vpRGBa(220, 60, 40), {}, {}, false};
+    for (const auto &f : rec) {
+      te.t.push_back(f.t);
+      te.y.push_back(f.translationErrorMm);
+      re.t.push_back(f.t);
+      re.y.push_back(f.rotationErrorDeg);
+    }
+    pm::io::writeImage(pm::app::drawTimePlots({{"relative pose error, translation (goal 10 mm moving, 2 mm at rest)", "mm", {te}, 10, marks},
+                                               {"relative pose error, rotation (goal 2 deg moving, 0.5 deg at rest)", "deg", {re}, 2, marks}},
+                                              2, std::string("PA-10 following ") + scene.target().info.name +
+                                                     (lp.oracle ? " (oracle: true pose)" : " (photo-model tracker)")),
+                       files.stage("errors.png"));
+    std::vector<pm::app::Panel> rel;
+    for (std::size_t i = 0; i < 6; ++i) {
+      pm::app::Series a{"truth", vpRGBa(40, 40, 40), {}, {}, true}, b{"used by the servo", vpRGBa(220, 60, 40), {}, {}, false};
+      for (const auto &f : rec) {
+        a.t.push_back(f.t);
+        a.y.push_back(pm::fromHomogeneousMatrix(f.hMmTrue)[i]);
+        b.t.push_back(f.t);
+        b.y.push_back(pm::fromHomogeneousMatrix(f.hMmUsed)[i]);
+      }
+      rel.push_back({std::string("target in the hand frame: ") + (i < 3 ? std::string(1, "xyz"[i]) : std::string("eps") + std::to_string(i - 2)),
+                     i < 3 ? "mm" : "", {a, b}, 0, marks});
+    }
+    pm::io::writeImage(pm::app::drawTimePlots(rel, 2, "relative pose: estimate used by the servo against truth"), files.stage("relative_pose.png"));
+    std::vector<pm::app::Series> js;
+    const vpRGBa colors[7] = {vpRGBa(220, 60, 40), vpRGBa(40, 90, 200), vpRGBa(40, 160, 60), vpRGBa(160, 60, 200),
+                              vpRGBa(230, 150, 20), vpRGBa(20, 170, 170), vpRGBa(90, 90, 90)};
+    for (unsigned i = 0; i < 7; ++i) {
+      pm::app::Series s{"q" + std::to_string(i + 1), colors[i], {}, {}, false};
+      for (const auto &f : rec) {
+        s.t.push_back(f.t);
+        s.y.push_back(f.q[i] * 180 / M_PI);
+      }
+      js.push_back(s);
+    }
+    pm::io::writeImage(pm::app::drawTimePlots({{"PA-10 joints", "deg", js, 0, marks}}, 1, "joint trajectories"), files.stage("joints.png"));
+
+    const nlohmann::json summary{
+        {"target", scene.target().info.code},
+        {"trajectory", trajectory == "steps" ? "steps (" + std::to_string(waypoints.size()) + ")" : "sine " + axis + " " + std::to_string(amplitude) + " at " + std::to_string(frequency) + " Hz"},
+        {"oracle", lp.oracle},
+        {"frames", rec.size()},
+        {"converged_after_s", converged >= 0 ? nlohmann::json(rec[static_cast<std::size_t>(converged)].t) : nlohmann::json()},
+        {"rms_error_mm", {{"at_rest", rms(rest.s2, rest.n)}, {"moving", rms(moving.s2, moving.n)}}},
+        {"max_error_mm", {{"at_rest", rest.mx}, {"moving", moving.mx}}},
+        {"rms_rotation_error_deg", {{"at_rest", rms(rest.r2, rest.n)}, {"moving", rms(moving.r2, moving.n)}}},
+        {"max_rotation_error_deg", {{"at_rest", rest.rmx}, {"moving", moving.rmx}}},
+        {"joint_limit_violations", violations},
+        {"max_joint_speed_fraction", maxJointSpeedRatio},
+        {"mean_frame_ms", meanMs},
+        {"overlays", overlays},
+        {"video", noVideo ? "" : "servo.avi"}};
+    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+    files.commit();
+    if (!quiet) {
+      std::cout << std::fixed << std::setprecision(2) << "PA-10 following " << scene.target().info.code << " ("
+                << scene.target().info.name << "), " << summary["trajectory"].get<std::string>() << ", "
+                << (lp.oracle ? "oracle pose" : "photo-model tracker") << ", " << rec.size() << " frames\n";
+      if (converged >= 0)
+        std::cout << "  converged after " << rec[static_cast<std::size_t>(converged)].t << " s\n";
+      else
+        std::cout << "  never within 10 mm and 2 deg for 1 s\n";
+      std::cout << "  relative pose error at rest: rms " << rms(rest.s2, rest.n) << " mm, max " << rest.mx << " mm; rotation rms "
+                << rms(rest.r2, rest.n) << " deg, max " << rest.rmx << " deg\n"
+                << "  while moving: rms " << rms(moving.s2, moving.n) << " mm, max " << moving.mx << " mm; rotation rms "
+                << rms(moving.r2, moving.n) << " deg, max " << moving.rmx << " deg\n"
+                << "  joint limit violations " << violations << ", tracker " << meanMs << " ms per frame\n"
+                << "  written to " << files.dir() << "/ (frames.csv, errors.png, relative_pose.png, joints.png, "
+                << (noVideo ? "" : "servo.avi, ") << "summary.json)" << std::endl;
+    }
+    return 0;
+  });
+}

@@ -1,0 +1,68 @@
+#pragma once
+/*!
+  \file RobotPA10.h
+  The Mitsubishi PA-10-7C as a ViSP robot (vpRobotSimulator): 7 revolute joints, standard DH
+  (a = 0, d = 0.317, 0, 0.450, 0, 0.480, 0, 0.070 m, alpha = -90, 90, -90, 90, -90, 90, 0 deg; q = 0
+  points the arm straight up, the flange at 1.317 m), joint ranges S1 +-177, S2 +-94, S3 +-174,
+  E1 +-137, E2 +-255, W1 +-165, W2 +-255 deg, speed limits 1, 1, 2, 2, 2 pi, 2 pi, 2 pi rad/s.
+
+  Frames: f the base (reference), e the flange; the hand frame H of the stereo rig is the flange
+  frame (z along the last joint axis, out of the flange), so eMh is the identity.
+
+  Velocity control in joint space or in the end-effector frame (the redundancy resolved by the
+  pseudo-inverse of eJe). The controller of the simulation calls step(dt): the commanded joint
+  velocities, clamped to the speed limits, are integrated, and a joint that would cross its
+  limit stops on it (the count of such events is kept; it must stay 0 under a sane controller).
+  A command over a joint's speed limit is scaled down as a whole, so the motion keeps its direction.
+*/
+#include <array>
+
+#include <visp3/core/vpColVector.h>
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpMatrix.h>
+#include <visp3/robot/vpRobotSimulator.h>
+
+namespace pm::sim {
+
+class RobotPA10 : public vpRobotSimulator
+{
+public:
+  static constexpr int kDof = 7;
+  RobotPA10();
+  RobotPA10(const RobotPA10 &) = delete; // vpRobot's raw joint-limit arrays must not be shared
+  RobotPA10 &operator=(const RobotPA10 &) = delete;
+
+  void init() override;
+  using vpRobot::getPosition;
+  void get_eJe(vpMatrix &eJe) override;
+  void get_fJe(vpMatrix &fJe) override;
+  //! JOINT_STATE: q (rad); REFERENCE_FRAME: flange pose (x, y, z, theta-u).
+  void getPosition(const vpRobot::vpControlFrameType frame, vpColVector &q) override;
+  //! JOINT_STATE only (the joint values are clamped into their limits).
+  void setPosition(const vpRobot::vpControlFrameType frame, const vpColVector &q) override;
+  //! JOINT_STATE (rad/s) or END_EFFECTOR_FRAME / CAMERA_FRAME (twist in the flange frame, m/s rad/s).
+  void setVelocity(const vpRobot::vpControlFrameType frame, const vpColVector &vel) override;
+  void getDisplacement(const vpRobot::vpControlFrameType frame, vpColVector &d) override;
+
+  //! Integrates the commanded velocity over \e dt seconds.
+  void step(double dt);
+
+  //! Forward kinematics: the flange pose in the base frame for joints \e q.
+  static vpHomogeneousMatrix forward(const vpColVector &q);
+  //! The geometric Jacobian in the base frame (rows vx vy vz wx wy wz) for joints \e q.
+  static vpMatrix jacobianBase(const vpColVector &q);
+  vpHomogeneousMatrix fMe() const { return forward(m_q); }
+  const vpColVector &q() const { return m_q; }
+  const vpColVector &qdot() const { return m_qdot; }
+  vpColVector jointMin() const;
+  vpColVector jointMax() const;
+  vpColVector speedLimits() const;
+  //! Times a joint reached its limit and was stopped there (should stay 0).
+  int limitHits() const { return m_limitHits; }
+
+private:
+  vpColVector m_q, m_qdot, m_prevQ;
+  int m_limitHits = 0;
+};
+
+} // namespace pm::sim

@@ -1,0 +1,192 @@
+// The PA-10 (kinematics, Jacobians, limits), the TC-robot, PBVS and the closed loop.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/io/RigFile.h"
+#include "pm/lab/ClosedLoop.h"
+#include "pm/servo/PbvsServo.h"
+#include "pm/sim/RobotPA10.h"
+#include "pm/sim/TargetCatalog.h"
+#include "pm/sim/TcRobot.h"
+
+using pm::sim::RobotPA10;
+
+namespace {
+vpColVector deg(std::initializer_list<double> v)
+{
+  vpColVector q(static_cast<unsigned>(v.size()));
+  unsigned i = 0;
+  for (double d : v)
+    q[i++] = d * M_PI / 180;
+  return q;
+}
+} // namespace
+
+TEST(PA10, ForwardKinematicsAgainstPosesComputedByHand)
+{
+  // q = 0: straight up, the flange at 0.317 + 0.450 + 0.480 + 0.070 = 1.317 m, axes as the base's.
+  vpHomogeneousMatrix M = RobotPA10::forward(deg({0, 0, 0, 0, 0, 0, 0}));
+  EXPECT_NEAR(M[2][3], 1.317, 1e-12);
+  EXPECT_NEAR(M[0][3], 0, 1e-12);
+  EXPECT_NEAR(M[0][0], 1, 1e-12);
+  // Shoulder S2 = 90 deg: the arm (1.0 m beyond the shoulder) lies along +x or -x at 0.317 m high.
+  M = RobotPA10::forward(deg({0, 90, 0, 0, 0, 0, 0}));
+  EXPECT_NEAR(std::fabs(M[0][3]), 1.0, 1e-12);
+  EXPECT_NEAR(M[2][3], 0.317, 1e-12);
+  // Elbow E1 = 90 deg: the forearm (0.55 m) turns horizontal at 0.317 + 0.450 m.
+  M = RobotPA10::forward(deg({0, 0, 0, 90, 0, 0, 0}));
+  EXPECT_NEAR(M[2][3], 0.767, 1e-12);
+  EXPECT_NEAR(std::hypot(M[0][3], M[1][3]), 0.55, 1e-12);
+  // S1 turns everything about the vertical axis.
+  const vpHomogeneousMatrix A = RobotPA10::forward(deg({0, 30, 0, 60, 0, 0, 0}));
+  const vpHomogeneousMatrix B = RobotPA10::forward(deg({90, 30, 0, 60, 0, 0, 0}));
+  EXPECT_NEAR(B[1][3], A[0][3], 1e-12);
+  EXPECT_NEAR(B[0][3], -A[1][3], 1e-12);
+  EXPECT_NEAR(B[2][3], A[2][3], 1e-12);
+  // The start pose of the lab looks along +x with y down.
+  M = RobotPA10::forward(pm::lab::LoopParams::startJoints());
+  EXPECT_NEAR(M[0][2], 1, 1e-9);
+  EXPECT_NEAR(M[2][1], -1, 1e-9);
+}
+
+TEST(PA10, JacobiansAgainstFiniteDifferences)
+{
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(-1.2, 1.2);
+  RobotPA10 robot;
+  for (int trial = 0; trial < 20; ++trial) {
+    vpColVector q(7);
+    for (unsigned i = 0; i < 7; ++i)
+      q[i] = u(rng);
+    robot.setPosition(vpRobot::JOINT_STATE, q);
+    vpMatrix fJe, eJe;
+    robot.get_fJe(fJe);
+    robot.get_eJe(eJe);
+    const vpHomogeneousMatrix M = RobotPA10::forward(q);
+    const double h = 1e-6;
+    for (unsigned j = 0; j < 7; ++j) {
+      vpColVector qh = q;
+      qh[j] += h;
+      const vpHomogeneousMatrix Mh = RobotPA10::forward(qh);
+      // Linear velocity in the base frame; angular velocity from the rotation's change.
+      for (unsigned r = 0; r < 3; ++r)
+        EXPECT_NEAR(fJe[r][j], (Mh[r][3] - M[r][3]) / h, 1e-5);
+      const vpThetaUVector w(Mh.getRotationMatrix() * M.getRotationMatrix().t()); // base frame
+      const vpThetaUVector we(M.getRotationMatrix().t() * Mh.getRotationMatrix()); // flange frame
+      for (unsigned r = 0; r < 3; ++r) {
+        EXPECT_NEAR(fJe[3 + r][j], w[r] / h, 1e-5);
+        EXPECT_NEAR(eJe[3 + r][j], we[r] / h, 1e-5);
+      }
+    }
+  }
+}
+
+TEST(PA10, JointLimitsAndSpeedsAreNeverCrossed)
+{
+  RobotPA10 robot;
+  robot.setPosition(vpRobot::JOINT_STATE, deg({170, 90, 0, 130, 0, 160, 0}));
+  robot.setVelocity(vpRobot::JOINT_STATE, vpColVector(7, 100.0)); // far beyond every speed limit
+  const vpColVector vmax = robot.speedLimits();
+  for (unsigned i = 0; i < 7; ++i)
+    EXPECT_LE(std::fabs(robot.qdot()[i]), vmax[i] + 1e-12);
+  for (int k = 0; k < 2000; ++k)
+    robot.step(0.002);
+  const vpColVector q = robot.q(), qmin = robot.jointMin(), qmax = robot.jointMax();
+  for (unsigned i = 0; i < 7; ++i) {
+    EXPECT_LE(q[i], qmax[i] + 1e-12);
+    EXPECT_GE(q[i], qmin[i] - 1e-12);
+  }
+  EXPECT_GT(robot.limitHits(), 0); // it was stopped on its limits, and counted
+  EXPECT_THROW(robot.setVelocity(vpRobot::JOINT_STATE, vpColVector(7, NAN)), pm::Error);
+  EXPECT_THROW(robot.setVelocity(vpRobot::JOINT_STATE, vpColVector(3, 0.0)), pm::Error);
+}
+
+TEST(PA10, EndEffectorVelocityMovesTheFlangeAsCommanded)
+{
+  RobotPA10 robot;
+  robot.setPosition(vpRobot::JOINT_STATE, pm::lab::LoopParams::startJoints());
+  const vpHomogeneousMatrix M0 = robot.fMe();
+  vpColVector v(6, 0.0);
+  v[2] = 0.05; // 5 cm/s along the flange's z
+  robot.setVelocity(vpRobot::END_EFFECTOR_FRAME, v);
+  for (int k = 0; k < 100; ++k) // 0.2 s
+    robot.step(0.002);
+  const vpHomogeneousMatrix d = M0.inverse() * robot.fMe();
+  EXPECT_NEAR(d[2][3], 0.01, 2e-4);
+  EXPECT_NEAR(d[0][3], 0, 2e-4);
+}
+
+TEST(TcRobot, StepsAndSinusoidWithinTheirLimits)
+{
+  const vpHomogeneousMatrix wMh0(0.3, 0, 0.8, 0, M_PI / 2, 0);
+  const pm::sim::TcRobot sine(wMh0, {0, 0, 500, 0, 0, 0}, 0, 50, 0.5, 300, 1500);
+  EXPECT_NEAR(sine.phi(0).x, 0, 1e-12);
+  EXPECT_NEAR(sine.phi(2.5).x, 50, 1e-9); // after the fade-in, a sine of 50 mm at 0.5 Hz
+  EXPECT_NEAR(sine.phi(3.5).x, -50, 1e-9);
+  const vpHomogeneousMatrix w = sine.wMo(2.5);
+  const vpHomogeneousMatrix expect = wMh0 * vpHomogeneousMatrix(0.05, 0, 0.5, 0, 0, 0);
+  EXPECT_NEAR(w[0][3], expect[0][3], 1e-12);
+  EXPECT_THROW(pm::sim::TcRobot(wMh0, {0, 0, 500, 0, 0, 0}, 0, 50, 2.0, 300, 1500), pm::Error); // too fast
+  EXPECT_THROW(pm::sim::TcRobot(wMh0, {0, 0, 500, 0, 0, 0}, 7, 50, 0.5, 300, 1500), pm::Error);
+}
+
+TEST(Servo, InvalidPosesNeverReachVpServo)
+{
+  pm::PbvsServo servo;
+  RobotPA10 robot;
+  robot.setPosition(vpRobot::JOINT_STATE, pm::lab::LoopParams::startJoints());
+  vpMatrix eJe;
+  robot.get_eJe(eJe);
+  vpHomogeneousMatrix bad;
+  bad[0][3] = NAN;
+  EXPECT_THROW(servo.computeJointVelocity(bad, robot.fMe(), eJe, robot.q(), robot.jointMin(), robot.jointMax(), 0.033), pm::Error);
+  vpHomogeneousMatrix scaled;
+  scaled[0][0] = 3;
+  EXPECT_THROW(servo.computeJointVelocity(scaled, robot.fMe(), eJe, robot.q(), robot.jointMin(), robot.jointMax(), 0.033), pm::Error);
+  const vpColVector z = servo.stop(7);
+  EXPECT_EQ(z.frobeniusNorm(), 0.0);
+  // At the desired pose the command is (nearly) zero; off it, the hand's twist respects its limits.
+  const vpColVector q0 = servo.computeJointVelocity(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), robot.fMe(), eJe, robot.q(),
+                                                    robot.jointMin(), robot.jointMax(), 0.033);
+  EXPECT_LT(q0.frobeniusNorm(), 1e-3);
+  pm::PbvsServo far;
+  const vpColVector q1 = far.computeJointVelocity(vpHomogeneousMatrix(0.3, 0.2, 0.9, 0.5, 0.2, 0), robot.fMe(), eJe, robot.q(),
+                                                  robot.jointMin(), robot.jointMax(), 0.033);
+  const vpColVector v = eJe * q1;
+  EXPECT_LE(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), pm::ServoParams().maxHandSpeed + 1e-6);
+  EXPECT_LE(std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]), pm::ServoParams().maxHandRotation + 1e-6);
+}
+
+TEST(ClosedLoop, OracleFollowsAStepOfTheTarget)
+{
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::SceneParams sp;
+  sp.supersampling = 1;
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5), sp);
+  const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
+  pm::TrackerParams tp;
+  tp.budgetEvaluations = 300;
+  pm::lab::LoopParams lp;
+  lp.oracle = true;
+  const std::vector<pm::Phi> steps = {{0, 0, 500, 0, 0, 0}, {-50, 0, 500, 0, 0, 0}};
+  pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::ServoParams(), lp, [&](const vpHomogeneousMatrix &wMh0) {
+    return std::make_unique<pm::sim::TcRobot>(wMh0, pm::sim::Trajectory(steps, 0.3, 1.0));
+  });
+  pm::lab::LoopFrame f;
+  double maxMoving = 0;
+  for (int k = 0; k < 90; ++k) { // 3 s: hold, move 50 mm in 1 s, hold
+    f = loop.step();
+    maxMoving = std::max(maxMoving, f.translationErrorMm);
+    for (unsigned i = 0; i < 7; ++i) {
+      EXPECT_LE(f.q[i], loop.robot().jointMax()[i]);
+      EXPECT_GE(f.q[i], loop.robot().jointMin()[i]);
+    }
+  }
+  EXPECT_LT(maxMoving, 10.0);          // the hand keeps up with the move
+  EXPECT_LT(f.translationErrorMm, 2.0); // and settles
+  EXPECT_LT(f.rotationErrorDeg, 0.5);
+  EXPECT_EQ(loop.robot().limitHits(), 0);
+}
