@@ -23,7 +23,7 @@ ClosedLoop::ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim:
 {
   if (!(lp.fps > 0 && lp.robotDt > 0 && lp.robotDt <= 1.0 / lp.fps))
     throw Error("closed loop: the frame rate must be positive and the robot step at most a frame");
-  m_robot.setPosition(vpRobot::JOINT_STATE, lp.q0.size() ? lp.q0 : LoopParams::startJoints());
+  m_robot.setPosition(vpRobot::JOINT_STATE, lp.q0);
   m_robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
   // The target starts at the desired pose in front of the hand.
   m_tc = makeTc(m_robot.fMe());

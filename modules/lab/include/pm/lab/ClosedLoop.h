@@ -31,7 +31,7 @@ struct LoopParams
   bool oracle = false;      //!< servo on the true pose instead of the estimate
   bool filter = true;       //!< filter the estimate (alpha-beta, in the base frame) and feed its velocity forward
   PoseFilterParams filterParams;
-  vpColVector q0;           //!< initial joints (empty: startJoints())
+  vpColVector q0 = startJoints(); //!< initial joints (never empty: ViSP 3.5 copies an empty vpColVector with memcpy(nullptr))
 
   //! The PA-10 looking horizontally along the base's x axis, elbow and wrist well bent (away from their singularities): (0, -35, 0, 80, 0, 45, -90) deg.
   static vpColVector startJoints();
