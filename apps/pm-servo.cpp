@@ -20,6 +20,7 @@
 #include "pm/app/TimePlot.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
+#include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/lab/ClosedLoop.h"
@@ -147,7 +148,8 @@ int main(int argc, char **argv)
     const pm::Phi phi0{0, 0, 500, 0, 0, 0};
     std::vector<pm::Phi> waypoints;
     if (trajectory == "steps") {
-      waypoints = pm::sim::Trajectory::readWaypoints(stepsPath);
+      for (const auto &row : pm::io::readPoseTable(stepsPath, "step"))
+        waypoints.push_back(row.second);
       if (steps > 0 && steps < static_cast<int>(waypoints.size()))
         waypoints.resize(static_cast<std::size_t>(steps));
     }

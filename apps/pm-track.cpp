@@ -23,6 +23,7 @@
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
+#include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/io/TrackerConfigFile.h"
@@ -78,36 +79,6 @@ std::string formatPattern(const std::string &pattern, int index)
   if (fields != 1)
     throw pm::Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
   return out;
-}
-
-//! "frame,x,y,z,e1,e2,e3" rows: the true pose of each frame of a recorded sequence.
-std::map<int, pm::Phi> readTruthFile(const std::string &path)
-{
-  std::ifstream f(path);
-  if (!f)
-    throw pm::Error("ground-truth file '" + path + "' does not exist or cannot be read");
-  std::map<int, pm::Phi> m;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(f, line)) {
-    ++lineNo;
-    if (line.empty() || line[0] == '#' || line.rfind("frame", 0) == 0)
-      continue;
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<double> c;
-    while (std::getline(ss, cell, ',')) {
-      try {
-        c.push_back(std::stod(cell));
-      } catch (const std::exception &) {
-        throw pm::Error("ground-truth file '" + path + "', line " + std::to_string(lineNo) + ": '" + cell + "' is not a number");
-      }
-    }
-    if (c.size() != 7)
-      throw pm::Error("ground-truth file '" + path + "', line " + std::to_string(lineNo) + ": frame,x,y,z,e1,e2,e3 expected");
-    m[static_cast<int>(c[0])] = {c[1], c[2], c[3], c[4], c[5], c[6]};
-  }
-  return m;
 }
 
 } // namespace
@@ -175,7 +146,8 @@ int main(int argc, char **argv)
     if (recorded) {
       model = pm::io::loadPhotoModel(modelPath);
       if (!truthPath.empty())
-        truthByFrame = readTruthFile(truthPath);
+        for (const auto &[frame, pose] : pm::io::readPoseTable(truthPath, "frame"))
+          truthByFrame[frame] = pose;
       // The sequence runs while either image of a frame exists.
       auto exists = [](const std::string &f) { return std::filesystem::exists(f); };
       while (exists(formatPattern(leftPattern, firstFrame + nFrames)) || exists(formatPattern(rightPattern, firstFrame + nFrames)))
@@ -187,7 +159,9 @@ int main(int argc, char **argv)
         nFrames = std::min(nFrames, static_cast<int>(std::floor(durationS * fps)) + 1);
       source = "recorded sequence " + leftPattern + " + " + rightPattern;
     } else {
-      std::vector<pm::Phi> w = pm::sim::Trajectory::readWaypoints(trajectoryPath);
+      std::vector<pm::Phi> w;
+      for (const auto &row : pm::io::readPoseTable(trajectoryPath, "step"))
+        w.push_back(row.second);
       if (steps > 0 && steps < static_cast<int>(w.size()))
         w.resize(static_cast<std::size_t>(steps));
       trajectory = std::make_unique<pm::sim::Trajectory>(w, holdS, moveS);

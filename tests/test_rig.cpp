@@ -5,6 +5,7 @@
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
+#include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
 
 namespace {
@@ -107,4 +108,27 @@ TEST(Rig, BrokenFilesAreClearErrors)
   j.replace(j.find("\"right\""), 7, "\"middle\"");
   pm::test::writeText(dir.file("r.json"), j);
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadRig(dir.file("r.json")); }).find("middle"), std::string::npos);
+}
+
+TEST(PoseTable, ShippedTable2AndBrokenTables)
+{
+  const auto rows = pm::io::readPoseTable(pm::test::dataPath("trajectories/table2.csv"), "step");
+  ASSERT_EQ(rows.size(), 20u);
+  EXPECT_EQ(rows[11].first, 11);
+  EXPECT_DOUBLE_EQ(rows[11].second.e1, 0.174);
+  EXPECT_DOUBLE_EQ(rows[7].second.z, 550);
+  pm::test::TempDir dir("table");
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"frame,x,y,z,e1,e2,e3\n0,0,0,500,0,0,0\n", "header"},
+      {"step,x,y,z,e1,e2,e3\n0,0,0,five,0,0,0\n", "'five' is not a number"},
+      {"step,x,y,z,e1,e2,e3\n0,0,0,500,0,0\n", "7 values"},
+      {"step,x,y,z,e1,e2,e3\n0,0,0,500,0.9,0.9,0\n", "invalid pose"},
+      {"step,x,y,z,e1,e2,e3\n0.5,0,0,500,0,0,0\n", "whole number"},
+      {"step,x,y,z,e1,e2,e3\n# nothing\n", "no row"}};
+  for (const auto &[text, expect] : bad) {
+    pm::test::writeText(dir.file("t.csv"), text);
+    const std::string e = pm::test::errorOf([&] { pm::io::readPoseTable(dir.file("t.csv"), "step"); });
+    EXPECT_NE(e.find(expect), std::string::npos) << text << " -> " << e;
+    EXPECT_NE(e.find("t.csv"), std::string::npos) << e;
+  }
 }

@@ -1,8 +1,6 @@
 #include "pm/sim/Trajectory.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "pm/core/Error.h"
 
@@ -18,48 +16,6 @@ Trajectory::Trajectory(std::vector<Phi> waypoints, double holdS, double moveS)
   for (const auto &p : m_points)
     if (!p.isValid())
       throw Error("trajectory: invalid waypoint " + p.toString());
-}
-
-std::vector<Phi> Trajectory::readWaypoints(const std::string &path)
-{
-  std::ifstream f(path);
-  if (!f)
-    throw Error("trajectory file '" + path + "' does not exist or cannot be read");
-  std::vector<Phi> v;
-  std::string line;
-  int lineNo = 0;
-  bool header = false;
-  while (std::getline(f, line)) {
-    ++lineNo;
-    if (line.empty() || line[0] == '#')
-      continue;
-    if (!header) { // the first non-comment line names the columns
-      header = true;
-      if (line.rfind("step,x,y,z,e1,e2,e3", 0) != 0)
-        throw Error("trajectory file '" + path + "': the header must be step,x,y,z,e1,e2,e3");
-      continue;
-    }
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<double> c;
-    while (std::getline(ss, cell, ',')) {
-      try {
-        std::size_t used = 0;
-        c.push_back(std::stod(cell, &used));
-      } catch (const std::exception &) {
-        throw Error("trajectory file '" + path + "', line " + std::to_string(lineNo) + ": '" + cell + "' is not a number");
-      }
-    }
-    if (c.size() != 7)
-      throw Error("trajectory file '" + path + "', line " + std::to_string(lineNo) + ": 7 values expected");
-    const Phi p{c[1], c[2], c[3], c[4], c[5], c[6]};
-    if (!p.isValid())
-      throw Error("trajectory file '" + path + "', line " + std::to_string(lineNo) + ": invalid pose (|eps| > 1?)");
-    v.push_back(p);
-  }
-  if (v.empty())
-    throw Error("trajectory file '" + path + "' has no waypoint");
-  return v;
 }
 
 double Trajectory::duration() const { return static_cast<double>(m_points.size()) * m_hold + static_cast<double>(m_points.size() - 1) * m_move; }

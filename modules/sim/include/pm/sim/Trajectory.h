@@ -17,8 +17,6 @@ class Trajectory
 {
 public:
   Trajectory(std::vector<Phi> waypoints, double holdS, double moveS);
-  //! Reads "step,x,y,z,e1,e2,e3" rows (lines starting with # are comments). Throws pm::Error.
-  static std::vector<Phi> readWaypoints(const std::string &csvPath);
 
   Phi at(double t) const;           //!< the pose at time t (s), held at the ends
   double duration() const;          //!< the last hold ends here

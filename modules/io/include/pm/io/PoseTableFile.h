@@ -1,0 +1,23 @@
+#pragma once
+/*!
+  \file PoseTableFile.h
+  Tables of poses (CSV): a header "<key>,x,y,z,e1,e2,e3", then one row per pose: an integer key
+  (a step, a frame number), the position in mm and the quaternion vector part. Lines starting
+  with # are comments. Used for Table 2's waypoints (key "step") and ground truth (key "frame").
+*/
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pm/core/Pose.h"
+
+namespace pm::io {
+
+/*!
+  Reads the rows in file order. Throws pm::Error naming the file and the line for a missing or
+  wrong header, a cell that is not a number, a row without 7 values, an invalid pose (|eps| > 1),
+  or a table with no row.
+*/
+std::vector<std::pair<int, Phi>> readPoseTable(const std::string &path, const std::string &key);
+
+} // namespace pm::io
