@@ -52,7 +52,6 @@ cv::Mat toMat(const vpImage<vpRGBa> &I)
 struct RunSummary
 {
   std::vector<pm::lab::LoopFrame> frames;
-  long converged = -1;
 };
 
 //! Amplitude and phase of the component at \e f of a sampled signal (least squares on sin, cos, 1).
