@@ -2,7 +2,7 @@
 # pm_setup [release|sanitize]  ->  sets PM_BUILD_DIR to the built tree.
 
 PM_DEBIAN_PACKAGES=(build-essential cmake ninja-build pkg-config libvisp-dev libopencv-dev libeigen3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev)
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libapriltag-dev)
 
 pm_install_deps() {
   local missing=()

@@ -1,0 +1,177 @@
+//! pm-calib-baseline: checks the stereo rig's baseline and relative rotation with an AprilTag board.
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <random>
+
+#include <nlohmann/json.hpp>
+#include <visp3/core/vpImageDraw.h>
+
+#include "pm/app/App.h"
+#include "pm/app/Options.h"
+#include "pm/app/Overlay.h"
+#include "pm/app/Progress.h"
+#include "pm/calib/StereoBaseline.h"
+#include "pm/core/Error.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/RigFile.h"
+#include "pm/io/StagedFiles.h"
+#include "pm/sim/Scene.h"
+
+namespace {
+
+std::string frameName(const std::string &pattern, int index)
+{
+  const auto p = pattern.find("%");
+  const auto d = pattern.find('d', p == std::string::npos ? 0 : p);
+  if (p == std::string::npos || d == std::string::npos || pattern.find('%', p + 1) != std::string::npos)
+    throw pm::Error("the image pattern '" + pattern + "' must hold one frame-number field, %d or %0Nd");
+  const std::string spec = pattern.substr(p + 1, d - p - 1);
+  int width = 0;
+  for (char c : spec) {
+    if (c < '0' || c > '9')
+      throw pm::Error("the image pattern '" + pattern + "' must hold one frame-number field, %d or %0Nd");
+    width = width * 10 + (c - '0');
+  }
+  std::string num = std::to_string(index);
+  if (static_cast<int>(num.size()) < width)
+    num.insert(0, static_cast<std::size_t>(width) - num.size(), spec.size() && spec[0] == '0' ? '0' : ' ');
+  return pattern.substr(0, p) + num + pattern.substr(d + 1);
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  CLI::App app{"Checks the stereo rig against images of an AprilTag (36h11) board: the board's pose in each camera "
+               "(vpDetectorAprilTag, vpPose on all its corners) gives cLMcR per pair; outliers are rejected and the "
+               "rest averaged; the result is compared with the rig file. --simulate N renders the board at N poses "
+               "seen by --true-rig (default: the lab's) with sensor noise. Exit status 0 when the rig agrees, 3 when "
+               "it does not (baseline or rotation beyond the tolerances), 1 for errors.",
+               "pm-calib-baseline"};
+  app.option_defaults()->always_capture_default();
+  std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trueRigPath, leftPattern, rightPattern, boardText = "3,3,40,55";
+  int simulate = 0, firstFrame = 0;
+  double tolMm = 1.0, tolDeg = 0.3;
+  bool quiet = false;
+  pm::sim::SceneParams sp;
+  sp.supersampling = 3;
+  app.add_option("--out", out, "output folder (created if missing)")->required();
+  app.add_option("--rig", rigPath, "the rig file to check");
+  auto *optSim = app.add_option("--simulate", simulate, "render N stereo pairs of the board")->check(CLI::Range(1, 1000));
+  app.add_option("--true-rig", trueRigPath, "simulation: the rig that takes the pictures (default: the lab's)")->needs(optSim);
+  auto *optL = app.add_option("--left-images", leftPattern, "left images, printf pattern (e.g. L_%02d.png)");
+  auto *optR = app.add_option("--right-images", rightPattern, "right images, printf pattern");
+  optL->needs(optR)->excludes(optSim);
+  optR->needs(optL);
+  app.add_option("--first-frame", firstFrame, "index of the first image pair")->check(CLI::Range(0, 100000000));
+  app.add_option("--board", boardText, "rows,cols,tag_size_mm,pitch_mm of the board (ids from 0, row by row)");
+  app.add_option("--tolerance-mm", tolMm, "largest acceptable baseline / translation difference (mm)")->check(CLI::PositiveNumber);
+  app.add_option("--tolerance-deg", tolDeg, "largest acceptable rotation difference (deg)")->check(CLI::PositiveNumber);
+  app.add_option("--noise", sp.noiseSigma, "simulation: sensor noise (grey levels)")->check(CLI::Range(0.0, 100.0));
+  app.add_option("--seed", sp.seed, "simulation: seed of the noise and the board's poses");
+  app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
+
+  return pm::app::run(app, argc, argv, [&] {
+    if (!simulate && leftPattern.empty())
+      throw CLI::ValidationError("--simulate or --left-images/--right-images", "one of them is needed");
+    const auto b = pm::app::parseNumbers(boardText, 4, "--board");
+    pm::calib::TagBoard board;
+    board.rows = static_cast<int>(b[0]);
+    board.cols = static_cast<int>(b[1]);
+    board.tagSizeMm = b[2];
+    board.pitchMm = b[3];
+    board.validate();
+    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    std::vector<vpHomogeneousMatrix> perPair;
+    std::vector<double> rms;
+    vpImage<vpRGBa> firstL, firstR;
+    std::vector<vpImagePoint> cornersL, cornersR;
+    std::vector<std::string> problems;
+    auto usePair = [&](const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R, const std::string &name) {
+      if (L.getWidth() != R.getWidth() || L.getHeight() != R.getHeight())
+        throw pm::Error(name + ": the left and right images differ in size (" + std::to_string(L.getWidth()) + "x" +
+                        std::to_string(L.getHeight()) + " and " + std::to_string(R.getWidth()) + "x" +
+                        std::to_string(R.getHeight()) + ")");
+      if (L.getWidth() != rig.left.width || L.getHeight() != rig.left.height)
+        throw pm::Error(name + ": the images are " + std::to_string(L.getWidth()) + "x" + std::to_string(L.getHeight()) +
+                        " but the rig's cameras are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
+      const pm::calib::BoardView vl = pm::calib::findBoard(L, rig.left.cam, board, name + " left");
+      const pm::calib::BoardView vr = pm::calib::findBoard(R, rig.right.cam, board, name + " right");
+      perPair.push_back(vl.cMb * vr.cMb.inverse());
+      rms.push_back(std::sqrt(0.5 * (vl.reprojectionRmsPx * vl.reprojectionRmsPx + vr.reprojectionRmsPx * vr.reprojectionRmsPx)));
+      if (firstL.getSize() == 0) {
+        firstL = L;
+        firstR = R;
+        cornersL = vl.corners;
+        cornersR = vr.corners;
+      }
+    };
+    std::string source;
+    if (simulate) {
+      const pm::StereoRig truthRig = trueRigPath.empty() ? pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"))
+                                                         : pm::io::loadRig(trueRigPath);
+      pm::sim::TargetShape shape = pm::sim::targetFromImage(board.render(8.0), board.widthMm(), 0, "tag board");
+      shape.originCol = (shape.cols - 1) / 2.0; // the board's frame: its centre
+      shape.originRow = (shape.rows - 1) / 2.0;
+      const pm::sim::Scene scene(shape, sp);
+      std::mt19937 rng(static_cast<std::uint32_t>(sp.seed));
+      std::uniform_real_distribution<double> u(-1, 1);
+      pm::app::Progress progress("rendering and detecting", static_cast<std::size_t>(simulate), quiet);
+      for (int k = 0; k < simulate; ++k) {
+        const pm::Phi p{20 * u(rng), 20 * u(rng), 500 + 40 * u(rng), 0.12 * u(rng), 0.12 * u(rng), 0.2 * u(rng)};
+        const auto im = scene.renderStereo(truthRig, pm::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
+        usePair(im.left, im.right, "simulated pair " + std::to_string(k));
+        progress.step();
+      }
+      progress.finish();
+      source = "simulation, " + std::to_string(simulate) + " pairs";
+    } else {
+      int k = firstFrame;
+      for (; std::filesystem::exists(frameName(leftPattern, k)) || std::filesystem::exists(frameName(rightPattern, k)); ++k)
+        usePair(pm::io::readColorImage(frameName(leftPattern, k)), pm::io::readColorImage(frameName(rightPattern, k)),
+                "pair " + std::to_string(k));
+      if (k == firstFrame)
+        throw pm::Error("no image pair " + frameName(leftPattern, firstFrame) + " / " + frameName(rightPattern, firstFrame));
+      source = "images " + leftPattern + " + " + rightPattern;
+    }
+    const pm::calib::BaselineResult r = pm::calib::aggregateBaseline(perPair, rms, rig);
+    const bool agrees = std::fabs(r.baselineErrorMm) <= tolMm && r.translationErrorMm <= tolMm && r.rotationErrorDeg <= tolDeg;
+
+    pm::io::StagedFiles files(out);
+    vpImage<vpRGBa> L = firstL, R = firstR;
+    for (const auto &c : cornersL)
+      vpImageDraw::drawCross(L, c, 9, vpColor::green, 2);
+    for (const auto &c : cornersR)
+      vpImageDraw::drawCross(R, c, 9, vpColor::green, 2);
+    pm::app::drawLabel(L, "tag corners found, left", 8, 8, vpRGBa(255, 255, 255));
+    pm::app::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
+    pm::io::writeImage(pm::app::sideBySide(L, R), files.stage("detections.png"));
+    const nlohmann::json summary{{"source", source},
+                                 {"rig", rigPath},
+                                 {"baseline_mm", r.baselineMm},
+                                 {"baseline_error_mm", r.baselineErrorMm},
+                                 {"translation_error_mm", r.translationErrorMm},
+                                 {"rotation_error_deg", r.rotationErrorDeg},
+                                 {"n_pairs_used", r.pairsUsed},
+                                 {"n_pairs_rejected", r.pairsRejected},
+                                 {"spread_mm", r.spreadMm},
+                                 {"spread_deg", r.spreadDeg},
+                                 {"reprojection_rms_px", r.reprojectionRmsPx},
+                                 {"tolerance_mm", tolMm},
+                                 {"tolerance_deg", tolDeg},
+                                 {"agrees", agrees}};
+    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+    files.commit();
+    if (!quiet)
+      std::cout << std::fixed << std::setprecision(3) << "stereo rig check (" << source << ", " << r.pairsUsed << " pairs used, "
+                << r.pairsRejected << " rejected)\n  baseline " << r.baselineMm << " mm (rig file: "
+                << r.baselineMm - r.baselineErrorMm << " mm, difference " << r.baselineErrorMm << " mm; translation "
+                << r.translationErrorMm << " mm), rotation difference " << r.rotationErrorDeg << " deg\n  spread "
+                << r.spreadMm << " mm, " << r.spreadDeg << " deg; reprojection " << r.reprojectionRmsPx << " px\n  "
+                << (agrees ? "the rig file agrees" : "THE RIG FILE DOES NOT AGREE") << " (tolerances " << tolMm << " mm, "
+                << tolDeg << " deg)" << std::endl;
+    return agrees ? 0 : 3;
+  });
+}

@@ -1,0 +1,55 @@
+#pragma once
+/*!
+  \file StereoBaseline.h
+  The stereo rig's check from pairs of images of a tag board: in each image ViSP's
+  vpDetectorAprilTag (36h11) finds the tags, their corners are matched to the board's and one
+  vpPose over all of them gives the board's pose in that camera; a pair gives
+  cLMcR = cLMb * cRMb^-1. Over N pairs, those farther than 3 median deviations from the median
+  are rejected and the others averaged (translation; rotation by theta-u about the first).
+*/
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpImagePoint.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/calib/TagBoard.h"
+#include "pm/core/StereoRig.h"
+
+namespace pm::calib {
+
+//! The board seen by one camera.
+struct BoardView
+{
+  vpHomogeneousMatrix cMb;              //!< board pose in the camera frame
+  int tags = 0;                         //!< tags of the board found
+  double reprojectionRmsPx = 0;         //!< of the board's corners at cMb
+  std::vector<vpImagePoint> corners;    //!< detected corners, for drawing
+};
+
+/*!
+  Finds the board in \e I. Throws pm::Error if fewer than \e minTags of its tags are found
+  (message says how many, in which image \e name).
+*/
+BoardView findBoard(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const TagBoard &board, const std::string &name,
+                    int minTags = 2);
+
+struct BaselineResult
+{
+  vpHomogeneousMatrix cLMcR;   //!< the estimate
+  double baselineMm = 0;       //!< |t|
+  double spreadMm = 0;         //!< standard deviation of the inliers' translations
+  double spreadDeg = 0;        //!< of their rotations
+  int pairsUsed = 0, pairsRejected = 0;
+  double reprojectionRmsPx = 0;
+  //! Against a rig: baseline length difference (mm), translation difference (mm), rotation (deg).
+  double baselineErrorMm = 0, translationErrorMm = 0, rotationErrorDeg = 0;
+};
+
+//! Aggregates the per-pair estimates (throws pm::Error if there is none) and compares with \e rig.
+BaselineResult aggregateBaseline(const std::vector<vpHomogeneousMatrix> &perPair, const std::vector<double> &rmsPx,
+                                 const StereoRig &rig);
+
+} // namespace pm::calib
