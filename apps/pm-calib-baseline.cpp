@@ -19,28 +19,6 @@
 #include "pm/io/StagedFiles.h"
 #include "pm/sim/Scene.h"
 
-namespace {
-
-std::string frameName(const std::string &pattern, int index)
-{
-  const auto p = pattern.find("%");
-  const auto d = pattern.find('d', p == std::string::npos ? 0 : p);
-  if (p == std::string::npos || d == std::string::npos || pattern.find('%', p + 1) != std::string::npos)
-    throw pm::Error("the image pattern '" + pattern + "' must hold one frame-number field, %d or %0Nd");
-  const std::string spec = pattern.substr(p + 1, d - p - 1);
-  int width = 0;
-  for (char c : spec) {
-    if (c < '0' || c > '9')
-      throw pm::Error("the image pattern '" + pattern + "' must hold one frame-number field, %d or %0Nd");
-    width = width * 10 + (c - '0');
-  }
-  std::string num = std::to_string(index);
-  if (static_cast<int>(num.size()) < width)
-    num.insert(0, static_cast<std::size_t>(width) - num.size(), spec.size() && spec[0] == '0' ? '0' : ' ');
-  return pattern.substr(0, p) + num + pattern.substr(d + 1);
-}
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -129,11 +107,11 @@ int main(int argc, char **argv)
       source = "simulation, " + std::to_string(simulate) + " pairs";
     } else {
       int k = firstFrame;
-      for (; std::filesystem::exists(frameName(leftPattern, k)) || std::filesystem::exists(frameName(rightPattern, k)); ++k)
-        usePair(pm::io::readColorImage(frameName(leftPattern, k)), pm::io::readColorImage(frameName(rightPattern, k)),
+      for (; std::filesystem::exists(pm::app::frameFileName(leftPattern, k)) || std::filesystem::exists(pm::app::frameFileName(rightPattern, k)); ++k)
+        usePair(pm::io::readColorImage(pm::app::frameFileName(leftPattern, k)), pm::io::readColorImage(pm::app::frameFileName(rightPattern, k)),
                 "pair " + std::to_string(k));
       if (k == firstFrame)
-        throw pm::Error("no image pair " + frameName(leftPattern, firstFrame) + " / " + frameName(rightPattern, firstFrame));
+        throw pm::Error("no image pair " + pm::app::frameFileName(leftPattern, firstFrame) + " / " + pm::app::frameFileName(rightPattern, firstFrame));
       source = "images " + leftPattern + " + " + rightPattern;
     }
     const pm::calib::BaselineResult r = pm::calib::aggregateBaseline(perPair, rms, rig);

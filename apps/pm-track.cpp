@@ -45,42 +45,6 @@ struct FrameRecord
   pm::TrackResult r;
 };
 
-/*!
-  The file name of frame \e index from a pattern with one printf-style integer field ("%d" or
-  "%0Nd"; "%%" is a literal %). Throws pm::Error for any other pattern (never passed to printf).
-*/
-std::string formatPattern(const std::string &pattern, int index)
-{
-  std::string out;
-  int fields = 0;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') {
-      out += pattern[i];
-      continue;
-    }
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      out += '%';
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    int width = 0;
-    bool zero = j < pattern.size() && pattern[j] == '0';
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
-      width = width * 10 + (pattern[j++] - '0');
-    if (j >= pattern.size() || pattern[j] != 'd' || ++fields > 1)
-      throw pm::Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
-    std::string num = std::to_string(index);
-    if (static_cast<int>(num.size()) < width)
-      num.insert(0, static_cast<std::size_t>(width) - num.size(), zero ? '0' : ' ');
-    out += num;
-    i = j;
-  }
-  if (fields != 1)
-    throw pm::Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
-  return out;
-}
-
 } // namespace
 
 int main(int argc, char **argv)
@@ -132,8 +96,8 @@ int main(int argc, char **argv)
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     const bool recorded = !leftPattern.empty();
     if (recorded) { // check both patterns before anything else
-      formatPattern(leftPattern, 0);
-      formatPattern(rightPattern, 0);
+      pm::app::frameFileName(leftPattern, 0);
+      pm::app::frameFileName(rightPattern, 0);
     }
 
     pm::PhotoModel model;
@@ -150,11 +114,11 @@ int main(int argc, char **argv)
           truthByFrame[frame] = pose;
       // The sequence runs while either image of a frame exists.
       auto exists = [](const std::string &f) { return std::filesystem::exists(f); };
-      while (exists(formatPattern(leftPattern, firstFrame + nFrames)) || exists(formatPattern(rightPattern, firstFrame + nFrames)))
+      while (exists(pm::app::frameFileName(leftPattern, firstFrame + nFrames)) || exists(pm::app::frameFileName(rightPattern, firstFrame + nFrames)))
         ++nFrames;
       if (nFrames == 0)
-        throw pm::Error("the sequence is empty: no frame " + formatPattern(leftPattern, firstFrame) + " nor " +
-                        formatPattern(rightPattern, firstFrame));
+        throw pm::Error("the sequence is empty: no frame " + pm::app::frameFileName(leftPattern, firstFrame) + " nor " +
+                        pm::app::frameFileName(rightPattern, firstFrame));
       if (durationS > 0)
         nFrames = std::min(nFrames, static_cast<int>(std::floor(durationS * fps)) + 1);
       source = "recorded sequence " + leftPattern + " + " + rightPattern;
@@ -190,8 +154,8 @@ int main(int argc, char **argv)
       if (recorded) {
         const int idx = firstFrame + k;
         try {
-          IL = pm::io::readColorImage(formatPattern(leftPattern, idx));
-          IR = pm::io::readColorImage(formatPattern(rightPattern, idx));
+          IL = pm::io::readColorImage(pm::app::frameFileName(leftPattern, idx));
+          IR = pm::io::readColorImage(pm::app::frameFileName(rightPattern, idx));
           if (IL.getWidth() != rig.left.width || IL.getHeight() != rig.left.height || IR.getWidth() != rig.right.width ||
               IR.getHeight() != rig.right.height)
             throw pm::Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");

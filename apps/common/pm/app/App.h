@@ -22,6 +22,12 @@ std::string dataDir();
 //! dataDir() + "/" + relative.
 std::string dataPath(const std::string &relative);
 
+/*!
+  The file name of frame \e index from a pattern with one printf-style integer field ("%d" or
+  "%0Nd"; "%%" is a literal %). Throws pm::Error for any other pattern (never passed to printf).
+*/
+std::string frameFileName(const std::string &pattern, int index);
+
 //! Parses "a,b,c,..." into exactly \e n numbers; throws CLI::ValidationError otherwise.
 std::vector<double> parseNumbers(const std::string &text, std::size_t n, const std::string &what);
 
