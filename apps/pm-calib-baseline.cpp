@@ -15,9 +15,14 @@
 #include "pm/calib/StereoBaseline.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
+#include "pm/io/QuietStdout.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
+#include "pm/lab/ClosedLoop.h"
+#include "pm/sim/RobotPA10.h"
 #include "pm/sim/Scene.h"
+
+#include <visp3/vision/vpHandEyeCalibration.h>
 
 
 int main(int argc, char **argv)
@@ -30,8 +35,8 @@ int main(int argc, char **argv)
                "pm-calib-baseline"};
   app.option_defaults()->always_capture_default();
   std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trueRigPath, leftPattern, rightPattern, boardText = "3,3,40,55";
-  int simulate = 0, firstFrame = 0;
-  double tolMm = 1.0, tolDeg = 0.3;
+  int simulate = 0, firstFrame = 0, handEye = 0;
+  double tolMm = 1.0, tolDeg = 0.3, handEyeTolMm = 3.0, handEyeTolDeg = 0.5;
   bool quiet = false;
   pm::sim::SceneParams sp;
   sp.supersampling = 3;
@@ -43,10 +48,16 @@ int main(int argc, char **argv)
   auto *optR = app.add_option("--right-images", rightPattern, "right images, printf pattern");
   optL->needs(optR)->excludes(optSim);
   optR->needs(optL);
+  app.add_option("--hand-eye", handEye, "simulation: also move the PA-10 through M poses in front of a fixed board and "
+                                       "estimate each camera's hMc with vpHandEyeCalibration")
+      ->needs(optSim)
+      ->check(CLI::Range(3, 1000));
   app.add_option("--first-frame", firstFrame, "index of the first image pair")->check(CLI::Range(0, 100000000));
   app.add_option("--board", boardText, "rows,cols,tag_size_mm,pitch_mm of the board (ids from 0, row by row)");
   app.add_option("--tolerance-mm", tolMm, "largest acceptable baseline / translation difference (mm)")->check(CLI::PositiveNumber);
   app.add_option("--tolerance-deg", tolDeg, "largest acceptable rotation difference (deg)")->check(CLI::PositiveNumber);
+  app.add_option("--hand-eye-tolerance-mm", handEyeTolMm, "largest acceptable hMc translation difference (mm)")->check(CLI::PositiveNumber);
+  app.add_option("--hand-eye-tolerance-deg", handEyeTolDeg, "largest acceptable hMc rotation difference (deg)")->check(CLI::PositiveNumber);
   app.add_option("--noise", sp.noiseSigma, "simulation: sensor noise (grey levels)")->check(CLI::Range(0.0, 100.0));
   app.add_option("--seed", sp.seed, "simulation: seed of the noise and the board's poses");
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
@@ -115,6 +126,70 @@ int main(int argc, char **argv)
       source = "images " + leftPattern + " + " + rightPattern;
     }
     const pm::calib::BaselineResult r = pm::calib::aggregateBaseline(perPair, rms, rig);
+    // Hand-eye: the PA-10 moves the rig around a board fixed in the world; each camera's board
+    // poses and the flange poses give its hMc (vpHandEyeCalibration), compared with the rig file.
+    nlohmann::json handEyeJson;
+    bool handEyeAgrees = true;
+    if (handEye > 0) {
+      const pm::StereoRig truthRig = trueRigPath.empty() ? pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"))
+                                                         : pm::io::loadRig(trueRigPath);
+      pm::sim::TargetShape shape = pm::sim::targetFromImage(board.render(8.0), board.widthMm(), 0, "tag board");
+      shape.originCol = (shape.cols - 1) / 2.0;
+      shape.originRow = (shape.rows - 1) / 2.0;
+      const pm::sim::Scene scene(shape, sp);
+      pm::sim::RobotPA10 robot;
+      const vpColVector q0 = pm::lab::LoopParams::startJoints();
+      const vpHomogeneousMatrix wMb = pm::sim::RobotPA10::forward(q0) * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0);
+      std::mt19937 rng(static_cast<std::uint32_t>(sp.seed) + 17);
+      std::uniform_real_distribution<double> u(-1, 1);
+      std::vector<vpHomogeneousMatrix> fMe, cMb[2];
+      pm::sim::Rasterizer raster;
+      for (int m = 0; m < handEye; ++m) {
+        vpColVector q = q0;
+        for (unsigned i = 0; i < 7; ++i)
+          q[i] += 0.12 * u(rng); // up to 7 deg on each joint: the board stays in both views
+        const vpHomogeneousMatrix fMh = pm::sim::RobotPA10::forward(q);
+        const vpHomogeneousMatrix hMb = fMh.inverse() * wMb;
+        bool seen = true;
+        vpHomogeneousMatrix views[2];
+        for (int c = 0; c < 2 && seen; ++c) {
+          const pm::RigCamera &cam = c ? truthRig.right : truthRig.left;
+          vpImage<vpRGBa> I;
+          scene.render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
+          try {
+            const pm::calib::BoardView view = pm::calib::findBoard(I, (c ? rig.right : rig.left).cam, board, "hand-eye pose " + std::to_string(m),
+                                                                   board.rows * board.cols);
+            if (view.reprojectionRmsPx > 0.5) // a doubtful pose (partly hidden board) would spoil the calibration
+              throw pm::Error("reprojection " + std::to_string(view.reprojectionRmsPx) + " px");
+            views[c] = view.cMb;
+          } catch (const pm::Error &) {
+            seen = false; // the board left the view at this pose: skip it
+          }
+        }
+        if (!seen)
+          continue;
+        fMe.push_back(fMh);
+        cMb[0].push_back(views[0]);
+        cMb[1].push_back(views[1]);
+      }
+      if (fMe.size() < 3)
+        throw pm::Error("hand-eye: the board was seen from only " + std::to_string(fMe.size()) + " poses (3 needed)");
+      for (int c = 0; c < 2; ++c) {
+        vpHomogeneousMatrix eMc;
+        int status = 0;
+        {
+          pm::io::QuietStdout silence; // vpHandEyeCalibration reports on std::cout
+          status = vpHandEyeCalibration::calibrate(cMb[c], fMe, eMc);
+        }
+        if (status != 0)
+          throw pm::Error("hand-eye: vpHandEyeCalibration failed (poses too alike?)");
+        const vpHomogeneousMatrix ref = (c ? rig.right : rig.left).hMc;
+        const double dt = (eMc.getTranslationVector() - ref.getTranslationVector()).frobeniusNorm() * 1e3;
+        const double dr = (ref.inverse() * eMc).getThetaUVector().getTheta() * 180 / M_PI;
+        handEyeAgrees = handEyeAgrees && dt <= handEyeTolMm && dr <= handEyeTolDeg;
+        handEyeJson[c ? "right" : "left"] = {{"translation_error_mm", dt}, {"rotation_error_deg", dr}, {"poses", fMe.size()}};
+      }
+    }
     const bool agrees = std::fabs(r.baselineErrorMm) <= tolMm && r.translationErrorMm <= tolMm && r.rotationErrorDeg <= tolDeg;
 
     pm::io::StagedFiles files(out);
@@ -126,7 +201,7 @@ int main(int argc, char **argv)
     pm::app::drawLabel(L, "tag corners found, left", 8, 8, vpRGBa(255, 255, 255));
     pm::app::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
     pm::io::writeImage(pm::app::sideBySide(L, R), files.stage("detections.png"));
-    const nlohmann::json summary{{"source", source},
+    nlohmann::json summary{{"source", source},
                                  {"rig", rigPath},
                                  {"baseline_mm", r.baselineMm},
                                  {"baseline_error_mm", r.baselineErrorMm},
@@ -140,6 +215,10 @@ int main(int argc, char **argv)
                                  {"tolerance_mm", tolMm},
                                  {"tolerance_deg", tolDeg},
                                  {"agrees", agrees}};
+    if (handEye > 0) {
+      summary["hand_eye"] = handEyeJson;
+      summary["hand_eye_agrees"] = handEyeAgrees;
+    }
     pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
     files.commit();
     if (!quiet)
@@ -150,6 +229,12 @@ int main(int argc, char **argv)
                 << r.spreadMm << " mm, " << r.spreadDeg << " deg; reprojection " << r.reprojectionRmsPx << " px\n  "
                 << (agrees ? "the rig file agrees" : "THE RIG FILE DOES NOT AGREE") << " (tolerances " << tolMm << " mm, "
                 << tolDeg << " deg)" << std::endl;
-    return agrees ? 0 : 3;
+    if (!quiet && handEye > 0)
+      for (const char *c : {"left", "right"})
+        std::cout << "  hand-eye, " << c << " camera: hMc differs from the rig file by "
+                  << handEyeJson[c]["translation_error_mm"].get<double>() << " mm, "
+                  << handEyeJson[c]["rotation_error_deg"].get<double>() << " deg (" << handEyeJson[c]["poses"].get<std::size_t>()
+                  << " poses)" << std::endl;
+    return agrees && handEyeAgrees ? 0 : 3;
   });
 }

@@ -97,3 +97,16 @@ TEST(StereoBaseline, BadInputIsAClearError)
   expectError(run("L_%d.png", "R_%d.png", " --rig " + d.file("norig.json")), "missing.xml");
   EXPECT_FALSE(std::filesystem::exists(d.file("o/summary.json")));
 }
+
+TEST(StereoBaseline, HandEyeFromThePA10MovingInFrontOfTheBoard)
+{
+  TempDir d("calib");
+  const auto r = runProgram("pm-calib-baseline", "--simulate 4 --hand-eye 30 --quiet --out " + d.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("summary.json")));
+  for (const char *c : {"left", "right"}) {
+    EXPECT_LT(s.at("hand_eye").at(c).at("translation_error_mm").get<double>(), 3.0) << c;
+    EXPECT_LT(s.at("hand_eye").at(c).at("rotation_error_deg").get<double>(), 0.5) << c;
+    EXPECT_GE(s.at("hand_eye").at(c).at("poses").get<int>(), 5) << c;
+  }
+}

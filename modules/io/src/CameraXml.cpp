@@ -9,24 +9,10 @@
 #include <visp3/core/vpXmlParserCamera.h>
 
 #include "pm/core/Error.h"
+#include "pm/io/QuietStdout.h"
 
 namespace pm::io {
 
-namespace {
-//! vpXmlParserCamera reports on std::cout; keep that out of the programs' output.
-class QuietStdout
-{
-public:
-  QuietStdout() : m_old(std::cout.rdbuf(m_sink.rdbuf())) {}
-  ~QuietStdout() { std::cout.rdbuf(m_old); }
-  QuietStdout(const QuietStdout &) = delete;
-  QuietStdout &operator=(const QuietStdout &) = delete;
-
-private:
-  std::ostringstream m_sink;
-  std::streambuf *m_old;
-};
-} // namespace
 
 vpCameraParameters readCameraXml(const std::string &xml, const std::string &name, unsigned w, unsigned h)
 {
