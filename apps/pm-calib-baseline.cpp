@@ -1,5 +1,8 @@
 //! pm-calib-baseline: checks the stereo rig's baseline and relative rotation with an AprilTag board.
 #include <cmath>
+#include <cstring>
+
+#include <opencv2/imgproc.hpp>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -25,6 +28,20 @@
 #include <visp3/vision/vpHandEyeCalibration.h>
 
 
+namespace {
+//! A camera's defocus: a Gaussian blur of sigma \e px (OpenCV).
+vpImage<vpRGBa> blurred(const vpImage<vpRGBa> &I, double px)
+{
+  if (px <= 0)
+    return I;
+  cv::Mat m(static_cast<int>(I.getHeight()), static_cast<int>(I.getWidth()), CV_8UC4, const_cast<vpRGBa *>(I.bitmap)), b;
+  cv::GaussianBlur(m, b, cv::Size(0, 0), px);
+  vpImage<vpRGBa> out(I.getHeight(), I.getWidth());
+  std::memcpy(static_cast<void *>(out.bitmap), b.data, I.getSize() * sizeof(vpRGBa));
+  return out;
+}
+} // namespace
+
 int main(int argc, char **argv)
 {
   CLI::App app{"Checks the stereo rig against images of an AprilTag (36h11) board: the board's pose in each camera "
@@ -36,7 +53,7 @@ int main(int argc, char **argv)
   app.option_defaults()->always_capture_default();
   std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trueRigPath, leftPattern, rightPattern, boardText = "3,3,40,55";
   int simulate = 0, firstFrame = 0, handEye = 0;
-  double tolMm = 1.0, tolDeg = 0.3, handEyeTolMm = 3.0, handEyeTolDeg = 0.5;
+  double tolMm = 1.0, tolDeg = 0.3, handEyeTolMm = 3.0, handEyeTolDeg = 0.5, blurPx = 0.7;
   bool quiet = false;
   pm::sim::SceneParams sp;
   sp.supersampling = 3;
@@ -59,6 +76,7 @@ int main(int argc, char **argv)
   app.add_option("--hand-eye-tolerance-mm", handEyeTolMm, "largest acceptable hMc translation difference (mm)")->check(CLI::PositiveNumber);
   app.add_option("--hand-eye-tolerance-deg", handEyeTolDeg, "largest acceptable hMc rotation difference (deg)")->check(CLI::PositiveNumber);
   app.add_option("--noise", sp.noiseSigma, "simulation: sensor noise (grey levels)")->check(CLI::Range(0.0, 100.0));
+  app.add_option("--blur-px", blurPx, "simulation: Gaussian blur of the images (sigma, px; 0: none)")->check(CLI::Range(0.0, 10.0));
   app.add_option("--seed", sp.seed, "simulation: seed of the noise and the board's poses");
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
@@ -111,7 +129,7 @@ int main(int argc, char **argv)
       for (int k = 0; k < simulate; ++k) {
         const pm::Phi p{20 * u(rng), 20 * u(rng), 500 + 40 * u(rng), 0.12 * u(rng), 0.12 * u(rng), 0.2 * u(rng)};
         const auto im = scene.renderStereo(truthRig, pm::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
-        usePair(im.left, im.right, "simulated pair " + std::to_string(k));
+        usePair(blurred(im.left, blurPx), blurred(im.right, blurPx), "simulated pair " + std::to_string(k));
         progress.step();
       }
       progress.finish();
@@ -156,6 +174,7 @@ int main(int argc, char **argv)
           const pm::RigCamera &cam = c ? truthRig.right : truthRig.left;
           vpImage<vpRGBa> I;
           scene.render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
+          I = blurred(I, blurPx);
           try {
             const pm::calib::BoardView view = pm::calib::findBoard(I, (c ? rig.right : rig.left).cam, board, "hand-eye pose " + std::to_string(m),
                                                                    board.rows * board.cols);
