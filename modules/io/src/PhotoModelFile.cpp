@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "JsonFormat.h"
 #include "pm/core/Error.h"
 #include "pm/io/StagedFiles.h"
 
@@ -69,10 +70,7 @@ PhotoModel loadPhotoModel(const std::string &path)
   PhotoModel m;
   try {
     const json j = json::parse(f);
-    if (!j.is_object() || j.value("format", "") != kFormat)
-      throw Error(std::string("\"format\" must be \"") + kFormat + "\"");
-    if (j.value("version", 0) != 1)
-      throw Error("unsupported \"version\" (this program reads version 1)");
+    detail::checkFormat(j, kFormat);
     m.distanceMm = j.at("distance_mm").get<double>();
     const json &c = j.at("camera");
     m.px = c.at("px").get<double>();

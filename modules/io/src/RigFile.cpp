@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <visp3/core/vpException.h>
 
+#include "JsonFormat.h"
 #include "pm/core/Error.h"
 #include "pm/io/CameraXml.h"
 #include "pm/io/StagedFiles.h"
@@ -48,10 +49,7 @@ StereoRig loadRig(const std::string &path)
   StereoRig rig;
   try {
     const json j = json::parse(f);
-    if (j.value("format", "") != kFormat)
-      throw Error("\"format\" must be \"" + std::string(kFormat) + "\"");
-    if (j.value("version", 0) != 1)
-      throw Error("unsupported \"version\" (this program reads version 1)");
+    detail::checkFormat(j, kFormat);
     const fs::path xml = fs::path(path).parent_path() / j.at("intrinsics_xml").get<std::string>();
     if (!fs::is_regular_file(xml))
       throw Error("the intrinsics file '" + xml.string() + "' does not exist");

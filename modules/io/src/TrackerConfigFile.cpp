@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "JsonFormat.h"
 #include "pm/core/Error.h"
 
 using nlohmann::json;
@@ -36,10 +37,7 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
   TrackerParams p = defaults;
   try {
     const json j = json::parse(f);
-    if (!j.is_object() || j.value("format", "") != kFormat)
-      throw Error(std::string("\"format\" must be \"") + kFormat + "\"");
-    if (j.value("version", 0) != 1)
-      throw Error("unsupported \"version\" (this program reads version 1)");
+    detail::checkFormat(j, kFormat);
     checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
                   "init_spread", "search_space", "rmga", "fitness"}, "");
     get(j, "budget_ms", p.budgetMs);
