@@ -1,4 +1,5 @@
-//! pm-calib-baseline: checks the stereo rig's baseline and relative rotation with an AprilTag board.
+//! pm-calib-baseline: checks the stereo rig's baseline and relative rotation with an AprilTag board
+//! or a chessboard.
 #include <cmath>
 #include <cstring>
 
@@ -6,6 +7,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <random>
 
 #include <nlohmann/json.hpp>
@@ -40,18 +42,59 @@ vpImage<vpRGBa> blurred(const vpImage<vpRGBa> &I, double px)
   std::memcpy(static_cast<void *>(out.bitmap), b.data, I.getSize() * sizeof(vpRGBa));
   return out;
 }
+
+//! The pattern named on the command line; \e layout empty: the pattern's default.
+std::unique_ptr<pm::calib::Pattern> makePattern(const std::string &kind, const std::string &layout)
+{
+  if (kind == "chessboard") {
+    auto b = std::make_unique<pm::calib::ChessBoard>();
+    if (!layout.empty()) {
+      const auto v = pm::app::parseNumbers(layout, 3, "--board");
+      if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+        throw CLI::ValidationError("--board", "the inner corner counts must be whole numbers");
+      b->innerRows = static_cast<int>(v[0]);
+      b->innerCols = static_cast<int>(v[1]);
+      b->squareMm = v[2];
+      b->marginMm = v[2];
+    }
+    b->validate();
+    return b;
+  }
+  auto b = std::make_unique<pm::calib::TagBoard>();
+  if (!layout.empty()) {
+    const auto v = pm::app::parseNumbers(layout, 4, "--board");
+    if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+      throw CLI::ValidationError("--board", "the tag counts must be whole numbers");
+    b->rows = static_cast<int>(v[0]);
+    b->cols = static_cast<int>(v[1]);
+    b->tagSizeMm = v[2];
+    b->pitchMm = v[3];
+  }
+  b->validate();
+  return b;
+}
+
+//! The pattern as a flat target of the simulator, its frame at the pattern's centre.
+pm::sim::TargetShape patternShape(const pm::calib::Pattern &pattern)
+{
+  pm::sim::TargetShape shape = pm::sim::targetFromImage(pattern.render(8.0), pattern.widthMm(), 0, "calibration pattern");
+  shape.originCol = (shape.cols - 1) / 2.0;
+  shape.originRow = (shape.rows - 1) / 2.0;
+  return shape;
+}
 } // namespace
 
 int main(int argc, char **argv)
 {
-  CLI::App app{"Checks the stereo rig against images of an AprilTag (36h11) board: the board's pose in each camera "
-               "(vpDetectorAprilTag, vpPose on all its corners) gives cLMcR per pair; outliers are rejected and the "
-               "rest averaged; the result is compared with the rig file. --simulate N renders the board at N poses "
+  CLI::App app{"Checks the stereo rig against images of an AprilTag (36h11) board or a chessboard: the pattern's "
+               "pose in each camera (vpDetectorAprilTag or OpenCV's corner finder, then vpPose on all its corners) "
+               "gives cLMcR per pair; outliers are rejected and the rest averaged; the result is compared with the "
+               "rig file. --simulate N renders the pattern at N poses "
                "seen by --true-rig (default: the lab's) with sensor noise. Exit status 0 when the rig agrees, 3 when "
                "it does not (baseline or rotation beyond the tolerances), 1 for errors.",
                "pm-calib-baseline"};
   app.option_defaults()->always_capture_default();
-  std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trueRigPath, leftPattern, rightPattern, boardText = "3,3,40,55";
+  std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trueRigPath, leftPattern, rightPattern, boardText, patternKind = "tags";
   int simulate = 0, firstFrame = 0, handEye = 0;
   double tolMm = 1.0, tolDeg = 0.3, handEyeTolMm = 3.0, handEyeTolDeg = 0.5, blurPx = 0.7;
   bool quiet = false;
@@ -70,7 +113,10 @@ int main(int argc, char **argv)
       ->needs(optSim)
       ->check(CLI::Range(3, 1000));
   app.add_option("--first-frame", firstFrame, "index of the first image pair")->check(CLI::Range(0, 100000000));
-  app.add_option("--board", boardText, "rows,cols,tag_size_mm,pitch_mm of the board (ids from 0, row by row)");
+  app.add_option("--pattern", patternKind, "tags: an AprilTag 36h11 board; chessboard: OpenCV's corner finder")
+      ->check(CLI::IsMember({"tags", "chessboard"}));
+  app.add_option("--board", boardText, "the pattern's layout. tags: rows,cols,tag_size_mm,pitch_mm (ids from 0, row by row; "
+                                       "default 3,3,40,55); chessboard: inner_rows,inner_cols,square_mm (default 6,9,20)");
   app.add_option("--tolerance-mm", tolMm, "largest acceptable baseline / translation difference (mm)")->check(CLI::PositiveNumber);
   app.add_option("--tolerance-deg", tolDeg, "largest acceptable rotation difference (deg)")->check(CLI::PositiveNumber);
   app.add_option("--hand-eye-tolerance-mm", handEyeTolMm, "largest acceptable hMc translation difference (mm)")->check(CLI::PositiveNumber);
@@ -83,13 +129,7 @@ int main(int argc, char **argv)
   return pm::app::run(app, argc, argv, [&] {
     if (!simulate && leftPattern.empty())
       throw CLI::ValidationError("--simulate or --left-images/--right-images", "one of them is needed");
-    const auto b = pm::app::parseNumbers(boardText, 4, "--board");
-    pm::calib::TagBoard board;
-    board.rows = static_cast<int>(b[0]);
-    board.cols = static_cast<int>(b[1]);
-    board.tagSizeMm = b[2];
-    board.pitchMm = b[3];
-    board.validate();
+    const std::unique_ptr<pm::calib::Pattern> pattern = makePattern(patternKind, boardText);
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     std::vector<vpHomogeneousMatrix> perPair;
     std::vector<double> rms;
@@ -104,8 +144,8 @@ int main(int argc, char **argv)
       if (L.getWidth() != rig.left.width || L.getHeight() != rig.left.height)
         throw pm::Error(name + ": the images are " + std::to_string(L.getWidth()) + "x" + std::to_string(L.getHeight()) +
                         " but the rig's cameras are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
-      const pm::calib::BoardView vl = pm::calib::findBoard(L, rig.left.cam, board, name + " left");
-      const pm::calib::BoardView vr = pm::calib::findBoard(R, rig.right.cam, board, name + " right");
+      const pm::calib::BoardView vl = pattern->find(L, rig.left.cam, name + " left");
+      const pm::calib::BoardView vr = pattern->find(R, rig.right.cam, name + " right");
       perPair.push_back(vl.cMb * vr.cMb.inverse());
       rms.push_back(std::sqrt(0.5 * (vl.reprojectionRmsPx * vl.reprojectionRmsPx + vr.reprojectionRmsPx * vr.reprojectionRmsPx)));
       if (firstL.getSize() == 0) {
@@ -119,10 +159,7 @@ int main(int argc, char **argv)
     if (simulate) {
       const pm::StereoRig truthRig = trueRigPath.empty() ? pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"))
                                                          : pm::io::loadRig(trueRigPath);
-      pm::sim::TargetShape shape = pm::sim::targetFromImage(board.render(8.0), board.widthMm(), 0, "tag board");
-      shape.originCol = (shape.cols - 1) / 2.0; // the board's frame: its centre
-      shape.originRow = (shape.rows - 1) / 2.0;
-      const pm::sim::Scene scene(shape, sp);
+      const pm::sim::Scene scene(patternShape(*pattern), sp);
       std::mt19937 rng(static_cast<std::uint32_t>(sp.seed));
       std::uniform_real_distribution<double> u(-1, 1);
       pm::app::Progress progress("rendering and detecting", static_cast<std::size_t>(simulate), quiet);
@@ -151,10 +188,7 @@ int main(int argc, char **argv)
     if (handEye > 0) {
       const pm::StereoRig truthRig = trueRigPath.empty() ? pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"))
                                                          : pm::io::loadRig(trueRigPath);
-      pm::sim::TargetShape shape = pm::sim::targetFromImage(board.render(8.0), board.widthMm(), 0, "tag board");
-      shape.originCol = (shape.cols - 1) / 2.0;
-      shape.originRow = (shape.rows - 1) / 2.0;
-      const pm::sim::Scene scene(shape, sp);
+      const pm::sim::Scene scene(patternShape(*pattern), sp);
       pm::sim::RobotPA10 robot;
       const vpColVector q0 = pm::lab::LoopParams::startJoints();
       const vpHomogeneousMatrix wMb = pm::sim::RobotPA10::forward(q0) * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0);
@@ -176,8 +210,7 @@ int main(int argc, char **argv)
           scene.render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
           I = blurred(I, blurPx);
           try {
-            const pm::calib::BoardView view = pm::calib::findBoard(I, (c ? rig.right : rig.left).cam, board, "hand-eye pose " + std::to_string(m),
-                                                                   board.rows * board.cols);
+            const pm::calib::BoardView view = pattern->find(I, (c ? rig.right : rig.left).cam, "hand-eye pose " + std::to_string(m), true);
             if (view.reprojectionRmsPx > 0.5) // a doubtful pose (partly hidden board) would spoil the calibration
               throw pm::Error("reprojection " + std::to_string(view.reprojectionRmsPx) + " px");
             views[c] = view.cMb;
@@ -217,10 +250,11 @@ int main(int argc, char **argv)
       vpImageDraw::drawCross(L, c, 9, vpColor::green, 2);
     for (const auto &c : cornersR)
       vpImageDraw::drawCross(R, c, 9, vpColor::green, 2);
-    pm::app::drawLabel(L, "tag corners found, left", 8, 8, vpRGBa(255, 255, 255));
+    pm::app::drawLabel(L, "corners found, left", 8, 8, vpRGBa(255, 255, 255));
     pm::app::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
     pm::io::writeImage(pm::app::sideBySide(L, R), files.stage("detections.png"));
     nlohmann::json summary{{"source", source},
+                                 {"pattern", pattern->describe()},
                                  {"rig", rigPath},
                                  {"baseline_mm", r.baselineMm},
                                  {"baseline_error_mm", r.baselineErrorMm},
@@ -241,7 +275,7 @@ int main(int argc, char **argv)
     pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
     files.commit();
     if (!quiet)
-      std::cout << std::fixed << std::setprecision(3) << "stereo rig check (" << source << ", " << r.pairsUsed << " pairs used, "
+      std::cout << std::fixed << std::setprecision(3) << "stereo rig check (" << pattern->describe() << "; " << source << ", " << r.pairsUsed << " pairs used, "
                 << r.pairsRejected << " rejected)\n  baseline " << r.baselineMm << " mm (rig file: "
                 << r.baselineMm - r.baselineErrorMm << " mm, difference " << r.baselineErrorMm << " mm; translation "
                 << r.translationErrorMm << " mm), rotation difference " << r.rotationErrorDeg << " deg\n  spread "

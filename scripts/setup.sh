@@ -1,29 +1,45 @@
 # Sourced by demo.sh and test.sh: installs what is missing from Debian 12, configures and builds.
-# pm_setup [release|sanitize]  ->  sets PM_BUILD_DIR to the built tree.
+# pm_setup [release|sanitize] [optional packages...]  ->  sets PM_BUILD_DIR to the built tree.
 
 PM_DEBIAN_PACKAGES=(build-essential cmake ninja-build pkg-config libvisp-dev libopencv-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libapriltag-dev)
 
-pm_install_deps() {
-  local missing=()
-  for p in "${PM_DEBIAN_PACKAGES[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+# Only for the tests: ViSP's images (the AprilTag benchmark test is skipped without them).
+PM_TEST_PACKAGES=(visp-images-data)
+
+# pm_missing packages...  ->  prints those not installed
+pm_missing() {
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
   done
-  [ ${#missing[@]} -eq 0 ] && return 0
-  echo "installing: ${missing[*]}" >&2
+}
+
+# pm_install_deps [optional packages...]: the required ones or fail; the optional ones if we can.
+pm_install_deps() {
+  local missing optional
+  missing=($(pm_missing "${PM_DEBIAN_PACKAGES[@]}"))
+  optional=($(pm_missing "$@"))
+  [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
   if [ "$(id -u)" -ne 0 ]; then
+    [ ${#optional[@]} -gt 0 ] && echo "note: not installed (some tests will be skipped): ${optional[*]}" >&2
+    [ ${#missing[@]} -eq 0 ] && return 0
     echo "error: missing Debian packages; run as root: apt-get install ${missing[*]}" >&2
     return 1
   fi
+  echo "installing: ${missing[*]} ${optional[*]}" >&2
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
-  apt-get install -y -qq "${missing[@]}" >/dev/null
+  [ ${#missing[@]} -eq 0 ] || apt-get install -y -qq "${missing[@]}" >/dev/null
+  [ ${#optional[@]} -eq 0 ] || apt-get install -y -qq "${optional[@]}" >/dev/null ||
+    echo "note: could not install ${optional[*]} (some tests will be skipped)" >&2
 }
 
 pm_setup() {
   local mode="${1:-release}" root
   root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-  pm_install_deps
+  shift || true
+  pm_install_deps "$@"
   case "$mode" in
     release)  PM_BUILD_DIR="$root/build";      set -- -DCMAKE_BUILD_TYPE=Release -DPM_SANITIZE=OFF ;;
     sanitize) PM_BUILD_DIR="$root/build-asan"; set -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPM_SANITIZE=ON ;;

@@ -11,7 +11,7 @@ case "${1:-}" in
   --sanitize) mode=sanitize ;;
   *) echo "usage: bash scripts/test.sh [--sanitize]" >&2; exit 2 ;;
 esac
-pm_setup "$mode"
+pm_setup "$mode" "${PM_TEST_PACKAGES[@]}"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:${ASAN_OPTIONS:-}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
 ctest --test-dir "$PM_BUILD_DIR" --output-on-failure -j "$(nproc)"

@@ -2,84 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-
-#include <visp3/core/vpImageConvert.h>
-#include <visp3/core/vpMeterPixelConversion.h>
-#include <visp3/core/vpPixelMeterConversion.h>
-#include <visp3/detection/vpDetectorAprilTag.h>
-#include <visp3/vision/vpPose.h>
+#include <array>
 
 #include "pm/core/Error.h"
 
 namespace pm::calib {
-
-BoardView findBoard(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const TagBoard &board, const std::string &name,
-                    int minTags)
-{
-  board.validate();
-  vpImage<unsigned char> grey;
-  vpImageConvert::convert(I, grey);
-  vpDetectorAprilTag det(vpDetectorAprilTag::TAG_36h11);
-  det.setZAlignedWithCameraAxis(true); // the tag frame then matches the board's (z into the board)
-  det.detect(grey);
-  BoardView view;
-  vpPose pose;
-  std::vector<vpPoint> used;
-  for (std::size_t i = 0; i < det.getNbObjects(); ++i) {
-    int id = -1;
-    if (std::sscanf(det.getMessage(i).c_str(), "36h11 id: %d", &id) != 1 || !board.hasId(id))
-      continue;
-    // Match each detected corner with the board corner that the tag's own pose projects nearest.
-    vpHomogeneousMatrix cMt;
-    if (!det.getPose(i, board.tagSizeMm * 1e-3, cam, cMt))
-      continue;
-    const vpPoint o = board.centre(id);
-    const vpHomogeneousMatrix cMb = cMt * vpHomogeneousMatrix(-o.get_oX(), -o.get_oY(), 0, 0, 0, 0);
-    const auto model = board.corners(id);
-    int matched = 0;
-    for (const vpImagePoint &ip : det.getPolygon(i)) {
-      double best = 1e30;
-      int bj = -1;
-      for (int j = 0; j < 4; ++j) {
-        vpPoint P = model[static_cast<std::size_t>(j)];
-        P.track(cMb);
-        double u = 0, v = 0;
-        vpMeterPixelConversion::convertPoint(cam, P.get_x(), P.get_y(), u, v);
-        const double d = std::hypot(u - ip.get_u(), v - ip.get_v());
-        if (d < best)
-          best = d, bj = j;
-      }
-      if (best > 5.0)
-        continue;
-      vpPoint P = model[static_cast<std::size_t>(bj)];
-      double x = 0, y = 0;
-      vpPixelMeterConversion::convertPoint(cam, ip, x, y);
-      P.set_x(x);
-      P.set_y(y);
-      pose.addPoint(P);
-      used.push_back(P);
-      view.corners.push_back(ip);
-      ++matched;
-    }
-    view.tags += matched == 4 ? 1 : 0;
-  }
-  if (view.tags < minTags)
-    throw Error("tag board: " + std::to_string(view.tags) + " of its tags found in the " + name + " image (at least " +
-                std::to_string(minTags) + " needed: is the board in view, sharp, and the layout right?)");
-  pose.computePose(vpPose::DEMENTHON_VIRTUAL_VS, view.cMb);
-  double s2 = 0;
-  for (vpPoint P : used) {
-    const double xm = P.get_x(), ym = P.get_y();
-    P.track(view.cMb);
-    double u0 = 0, v0 = 0, u1 = 0, v1 = 0;
-    vpMeterPixelConversion::convertPoint(cam, xm, ym, u0, v0);
-    vpMeterPixelConversion::convertPoint(cam, P.get_x(), P.get_y(), u1, v1);
-    s2 += (u0 - u1) * (u0 - u1) + (v0 - v1) * (v0 - v1);
-  }
-  view.reprojectionRmsPx = std::sqrt(s2 / static_cast<double>(used.size()));
-  return view;
-}
 
 namespace {
 double median(std::vector<double> v)

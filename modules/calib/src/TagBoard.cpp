@@ -1,15 +1,29 @@
 #include "pm/calib/TagBoard.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
 
+#include <visp3/core/vpImageConvert.h>
+#include <visp3/core/vpMeterPixelConversion.h>
+#include <visp3/detection/vpDetectorAprilTag.h>
+
 #include "pm/core/Error.h"
 
 namespace pm::calib {
+
+std::string TagBoard::describe() const
+{
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%dx%d AprilTag 36h11 board (ids %d..%d), %g mm tags, %g mm apart", rows, cols, firstId,
+                firstId + rows * cols - 1, tagSizeMm, pitchMm);
+  return buf;
+}
 
 void TagBoard::validate() const
 {
@@ -18,6 +32,8 @@ void TagBoard::validate() const
   // The black square is 8 of the tag's 10 cells: the white border takes tagSize / 8 on each side.
   if (!(tagSizeMm > 0) || !(pitchMm >= tagSizeMm * 10.0 / 8.0) || !(marginMm >= 0))
     throw Error("tag board: the pitch must leave the tags' white borders (pitch >= 1.25 x tag size)");
+  if (minTags < 1)
+    throw Error("tag board: at least one tag is needed for a pose");
 }
 
 vpPoint TagBoard::centre(int id) const
@@ -58,5 +74,55 @@ vpImage<vpRGBa> TagBoard::render(double pixelsPerMm) const
   }
   return img;
 }
+
+BoardView TagBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name, bool whole) const
+{
+  validate();
+  vpImage<unsigned char> grey;
+  vpImageConvert::convert(I, grey);
+  vpDetectorAprilTag det(vpDetectorAprilTag::TAG_36h11);
+  det.setZAlignedWithCameraAxis(true); // the tag frame then matches the board's (z into the board)
+  det.detect(grey);
+  BoardView view;
+  CornerMatches matches;
+  for (std::size_t i = 0; i < det.getNbObjects(); ++i) {
+    int id = -1;
+    if (std::sscanf(det.getMessage(i).c_str(), "36h11 id: %d", &id) != 1 || !hasId(id))
+      continue;
+    // Match each detected corner with the board corner that the tag's own pose projects nearest.
+    vpHomogeneousMatrix cMt;
+    if (!det.getPose(i, tagSizeMm * 1e-3, cam, cMt))
+      continue;
+    const vpPoint o = centre(id);
+    const vpHomogeneousMatrix cMb = cMt * vpHomogeneousMatrix(-o.get_oX(), -o.get_oY(), 0, 0, 0, 0);
+    const auto model = corners(id);
+    int n = 0;
+    for (const vpImagePoint &ip : det.getPolygon(i)) {
+      double best = 1e30;
+      int bj = -1;
+      for (int j = 0; j < 4; ++j) {
+        vpPoint P = model[static_cast<std::size_t>(j)];
+        P.track(cMb);
+        double u = 0, v = 0;
+        vpMeterPixelConversion::convertPoint(cam, P.get_x(), P.get_y(), u, v);
+        const double d = std::hypot(u - ip.get_u(), v - ip.get_v());
+        if (d < best)
+          best = d, bj = j;
+      }
+      if (best > 5.0)
+        continue;
+      matches.add(model[static_cast<std::size_t>(bj)], ip, cam);
+      ++n;
+    }
+    view.features += n == 4 ? 1 : 0;
+  }
+  const int needed = whole ? rows * cols : std::min(minTags, rows * cols);
+  if (view.features < needed)
+    throw Error("tag board: " + std::to_string(view.features) + " of its tags found in the " + name + " image (at least " +
+                std::to_string(needed) + " needed: is the board in view, sharp, and the layout right?)");
+  solveBoardPose(matches, cam, view);
+  return view;
+}
+
 
 } // namespace pm::calib

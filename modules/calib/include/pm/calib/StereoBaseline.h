@@ -1,9 +1,8 @@
 #pragma once
 /*!
   \file StereoBaseline.h
-  The stereo rig's check from pairs of images of a tag board: in each image ViSP's
-  vpDetectorAprilTag (36h11) finds the tags, their corners are matched to the board's and one
-  vpPose over all of them gives the board's pose in that camera; a pair gives
+  The stereo rig's check from pairs of images of a calibration pattern (pm::calib::Pattern: an
+  AprilTag board or a chessboard): the pattern's pose in each camera gives, for a pair,
   cLMcR = cLMb * cRMb^-1. Over N pairs, those farther than 3 median deviations from the median
   are rejected and the others averaged (translation; rotation by theta-u about the first).
 */
@@ -15,26 +14,11 @@
 #include <visp3/core/vpImagePoint.h>
 #include <visp3/core/vpRGBa.h>
 
+#include "pm/calib/ChessBoard.h"
 #include "pm/calib/TagBoard.h"
 #include "pm/core/StereoRig.h"
 
 namespace pm::calib {
-
-//! The board seen by one camera.
-struct BoardView
-{
-  vpHomogeneousMatrix cMb;              //!< board pose in the camera frame
-  int tags = 0;                         //!< tags of the board found
-  double reprojectionRmsPx = 0;         //!< of the board's corners at cMb
-  std::vector<vpImagePoint> corners;    //!< detected corners, for drawing
-};
-
-/*!
-  Finds the board in \e I. Throws pm::Error if fewer than \e minTags of its tags are found
-  (message says how many, in which image \e name).
-*/
-BoardView findBoard(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const TagBoard &board, const std::string &name,
-                    int minTags = 2);
 
 struct BaselineResult
 {

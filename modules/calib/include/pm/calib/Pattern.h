@@ -1,0 +1,64 @@
+#pragma once
+/*!
+  \file Pattern.h
+  A calibration pattern of known layout (an AprilTag board, a chessboard): it can be drawn, and
+  found in an image, which gives its pose in the camera. Every pattern's frame has its origin at
+  the pattern's centre, x right, y down, z into the board (as a camera looking at it).
+*/
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpCameraParameters.h>
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpImagePoint.h>
+#include <visp3/core/vpPoint.h>
+#include <visp3/core/vpRGBa.h>
+
+namespace pm::calib {
+
+//! The pattern seen by one camera.
+struct BoardView
+{
+  vpHomogeneousMatrix cMb;              //!< pattern pose in the camera frame
+  int features = 0;                     //!< tags (AprilTag board) or corners (chessboard) found
+  double reprojectionRmsPx = 0;         //!< of the matched corners at cMb
+  std::vector<vpImagePoint> corners;    //!< detected corners, for drawing
+};
+
+class Pattern
+{
+public:
+  virtual ~Pattern() = default;
+  //! One line for people, e.g. "3x3 AprilTag 36h11 board, 40 mm tags".
+  virtual std::string describe() const = 0;
+  //! Throws pm::Error for a layout that cannot be used.
+  virtual void validate() const = 0;
+  virtual double widthMm() const = 0;
+  virtual double heightMm() const = 0;
+  //! The printed pattern at \e pixelsPerMm, white margin included.
+  virtual vpImage<vpRGBa> render(double pixelsPerMm) const = 0;
+  /*!
+    Finds the pattern in \e I seen by a camera of intrinsics \e cam. Throws pm::Error naming the
+    image (\e name) when it is not found, or when \e whole is set and part of it is missing.
+  */
+  virtual BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
+                         bool whole = false) const = 0;
+};
+
+//! Pattern points (oX, oY, oZ, metres) matched with the pixels where they were found.
+struct CornerMatches
+{
+  std::vector<vpPoint> points;      //!< with their measured normalized coordinates (x, y)
+  std::vector<vpImagePoint> pixels;
+  void add(vpPoint model, const vpImagePoint &ip, const vpCameraParameters &cam);
+};
+
+/*!
+  The pattern's pose from its matched corners: vpPose (Dementhon then virtual visual servoing)
+  gives cMb; the reprojection RMS is in pixels of \e cam; the pixels become the view's corners.
+  Throws pm::Error with fewer than 4 matches.
+*/
+void solveBoardPose(const CornerMatches &matches, const vpCameraParameters &cam, BoardView &view);
+
+} // namespace pm::calib
