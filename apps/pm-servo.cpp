@@ -129,12 +129,7 @@ int main(int argc, char **argv)
   app.add_flag("--feed-forward,!--no-feed-forward", servo.feedForward, "follow the target's estimated velocity");
   pm::app::addModelOptions(app, mp);
   pm::app::addSceneOptions(app, sp);
-  pm::TrackerParams defaults;
-  defaults.ga.predictMotion = true;
-  defaults.ga.refineEvaluations = 100;
-  defaults.ga.restartGenerations = 30;
-  defaults.budgetMs = 5;
-  pm::app::TrackerOptions trackerOptions(app, defaults);
+  pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(5.0));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {

@@ -84,11 +84,7 @@ int main(int argc, char **argv)
   app.add_option("--distance-mm", distanceMm, "simulator: photo distance of the model")->check(CLI::PositiveNumber);
   pm::app::addModelOptions(app, mp);
   pm::app::addSceneOptions(app, sp);
-  pm::TrackerParams defaults;
-  defaults.ga.predictMotion = true;     // our options, chosen by measurement (README): motion prediction,
-  defaults.ga.refineEvaluations = 100;  // a local refinement of the best,
-  defaults.ga.restartGenerations = 30;  // restarts of all but the best when a frame's search stagnates
-  pm::app::TrackerOptions trackerOptions(app, defaults);
+  pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(pm::TrackerParams().budgetMs));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {

@@ -4,6 +4,16 @@
 
 namespace pm::app {
 
+TrackerParams measuredTrackerDefaults(double budgetMs)
+{
+  TrackerParams t;
+  t.ga.predictMotion = true;
+  t.ga.refineEvaluations = 100;
+  t.ga.restartGenerations = 30;
+  t.budgetMs = budgetMs;
+  return t;
+}
+
 void addModelOptions(CLI::App &app, PhotoModelParams &p)
 {
   const char *g = "Photo-model";

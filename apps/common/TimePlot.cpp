@@ -69,21 +69,42 @@ void drawPanel(cv::Mat &img, cv::Rect area, const Panel &p, const std::string &x
   putLabel(img, p.title, {area.x + left, area.y + 19}, 0.5);
   putLabel(img, xLabel, {plot.x + plot.width / 2, area.y + area.height - 6}, 0.42, 1);
   putLabel(img, p.yLabel, {area.x + 4, plot.y - 6}, 0.4);
-  int lx = plot.x + plot.width - 4;
-  for (auto it = p.series.rbegin(); it != p.series.rend(); ++it) {
-    int base = 0;
-    const int w = cv::getTextSize(it->name, cv::FONT_HERSHEY_SIMPLEX, 0.4, 1, &base).width;
-    putLabel(img, it->name, {lx, area.y + 19}, 0.4, 2);
-    cv::line(img, {lx - w - 26, area.y + 15}, {lx - w - 6, area.y + 15}, cv::Scalar(it->color.B, it->color.G, it->color.R), 2);
-    lx -= w + 34;
+  // The legend: on the title line when it fits beside the title, else a boxed list in the plot's top right.
+  int base = 0, total = 0, widest = 0;
+  for (const auto &s : p.series) {
+    const int w = cv::getTextSize(s.name, cv::FONT_HERSHEY_SIMPLEX, 0.4, 1, &base).width;
+    total += w + 34;
+    widest = std::max(widest, w);
+  }
+  const int titleW = cv::getTextSize(p.title, cv::FONT_HERSHEY_SIMPLEX, 0.5, 1, &base).width;
+  if (left + titleW + 16 + total <= area.width - right) {
+    int lx = plot.x + plot.width - 4;
+    for (auto it = p.series.rbegin(); it != p.series.rend(); ++it) {
+      const int w = cv::getTextSize(it->name, cv::FONT_HERSHEY_SIMPLEX, 0.4, 1, &base).width;
+      putLabel(img, it->name, {lx, area.y + 19}, 0.4, 2);
+      cv::line(img, {lx - w - 26, area.y + 15}, {lx - w - 6, area.y + 15}, cv::Scalar(it->color.B, it->color.G, it->color.R), 2);
+      lx -= w + 34;
+    }
+  } else {
+    const int bw = widest + 40, bh = 16 * static_cast<int>(p.series.size()) + 8;
+    const cv::Rect box(plot.x + plot.width - bw - 6, plot.y + 6, bw, bh);
+    cv::rectangle(img, box, cv::Scalar(255, 255, 255), cv::FILLED);
+    cv::rectangle(img, box, cv::Scalar(180, 180, 180));
+    int y = box.y + 16;
+    for (const auto &s : p.series) {
+      cv::line(img, {box.x + 6, y - 4}, {box.x + 26, y - 4}, cv::Scalar(s.color.B, s.color.G, s.color.R), 2);
+      putLabel(img, s.name, {box.x + 32, y}, 0.4);
+      y += 16;
+    }
   }
 }
 
 } // namespace
 
-vpImage<vpRGBa> drawTimePlots(const std::vector<Panel> &panels, int cols, const std::string &title, const std::string &xLabel)
+vpImage<vpRGBa> drawTimePlots(const std::vector<Panel> &panels, int cols, const std::string &title, const std::string &xLabel,
+                              int panelWidth)
 {
-  const int pw = 520, ph = 300, head = 36;
+  const int pw = panelWidth, ph = 300, head = 36;
   const int rows = static_cast<int>((panels.size() + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
   cv::Mat img(head + rows * ph, cols * pw, CV_8UC3, cv::Scalar(255, 255, 255));
   putLabel(img, title, {cols * pw / 2, 25}, 0.6, 1);

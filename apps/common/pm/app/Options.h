@@ -21,6 +21,13 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p);
 void addFitnessOptions(CLI::App &app, FitnessParams &p);
 
 /*!
+  Our tracker's options as chosen by measurement (README, "Which options"): motion prediction,
+  a local refinement of the best (100 evaluations), restarts after 30 stagnant generations;
+  the frame budget \e budgetMs.
+*/
+TrackerParams measuredTrackerDefaults(double budgetMs);
+
+/*!
   The tracker's options: --config FILE (JSON, see TrackerConfigFile.h), then --budget-ms,
   --budget-evals, --population, --elite, --tournament, --crossover-rate, --mutation-per-bit,
   --predict / --no-predict, --refine-evals, --restart-generations, --ga-seed, --lock-quality,

@@ -28,8 +28,8 @@ struct Panel
   std::vector<double> marks;     //!< vertical dotted lines at these times (e.g. convergence)
 };
 
-//! The panels in \e cols columns, each about 520 x 300 px, under a title.
+//! The panels in \e cols columns, each \e panelWidth x 300 px, under a title.
 vpImage<vpRGBa> drawTimePlots(const std::vector<Panel> &panels, int cols, const std::string &title,
-                              const std::string &xLabel = "time [s]");
+                              const std::string &xLabel = "time [s]", int panelWidth = 520);
 
 } // namespace pm::app

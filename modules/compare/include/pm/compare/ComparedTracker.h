@@ -1,0 +1,36 @@
+#pragma once
+/*!
+  \file ComparedTracker.h
+  One tracker of pm-compare's line-up, behind one interface: started on the first stereo pair
+  (with the true pose if it needs one), then fed every stereo pair of a sequence; it returns
+  hMm, the pose of the model frame in the hand frame, so that all are scored the same way.
+*/
+#include <memory>
+#include <string>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+namespace pm::compare {
+
+struct Estimate
+{
+  vpHomogeneousMatrix hMm; //!< the tracker's pose of the model in the hand frame
+  bool valid = false;      //!< false: the tracker has no pose for this frame (it says it lost the target, or threw)
+};
+
+class ComparedTracker
+{
+public:
+  virtual ~ComparedTracker() = default;
+  virtual std::string name() const = 0;
+  //! It cannot start by itself: start() needs the true pose.
+  virtual bool needsInitialPose() const = 0;
+  //! Starts on the first pair; \e hMmTrue is used only when needsInitialPose().
+  virtual void start(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const vpHomogeneousMatrix &hMmTrue) = 0;
+  //! One frame. Never throws for a tracking failure: the estimate is then invalid.
+  virtual Estimate track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) = 0;
+};
+
+} // namespace pm::compare

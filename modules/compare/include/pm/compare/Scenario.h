@@ -1,0 +1,51 @@
+#pragma once
+/*!
+  \file Scenario.h
+  The sequences pm-compare runs every tracker on: per frame, where the target is (the toy's
+  frame in the hand frame, the PA-10 held still) and what happens to the images.
+  - table2: the 20 steps of the paper's Table 2 (hold 1.5 s, move 1 s), as pm-track;
+  - sinusoid: x, y and a turn about the optical axis, sines of 0.5 and 0.25 Hz;
+  - fast: moves of 80 mm in 0.25 s (peak 600 mm/s, about 30 px per frame);
+  - occlusion: a strand of seaweed in front of the toy for 4 s while it moves slowly;
+  - lighting: the exposure falls to 0.4 and rises to 1.5 while the light swings from the
+    upper left to the right;
+  - loss: the frames go blank for 0.5 s while the target moves 60 mm, then later the target
+    jumps 50 mm and 8 degrees from one frame to the next.
+*/
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+
+#include "pm/core/Pose.h"
+
+namespace pm::compare {
+
+struct ScenarioFrame
+{
+  vpHomogeneousMatrix hMo;   //!< the toy's frame in the hand frame
+  bool moving = false;
+  bool blank = false;        //!< the camera delivers black frames
+  bool occluded = false;     //!< the seaweed is in front of the toy
+  double exposure = 1.0;
+  double lightX = -0.35;     //!< x of the direction toward the light (hand frame; y -0.6, z -1)
+};
+
+struct Scenario
+{
+  std::string name, description;
+  double fps = 30;
+  std::vector<ScenarioFrame> frames;
+  std::vector<int> lossEnds; //!< first frame after each forced loss (blank frames end, the jump)
+};
+
+//! The scenarios' names, in the order pm-compare runs them.
+const std::vector<std::string> &scenarioNames();
+
+/*!
+  The scenario \e name (one of scenarioNames()); \e table2 are the waypoints of Table 2;
+  \e steps > 0 keeps only the first steps of table2. Throws pm::Error for an unknown name.
+*/
+Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, int steps = 0);
+
+} // namespace pm::compare

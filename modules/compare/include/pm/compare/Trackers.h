@@ -1,0 +1,40 @@
+#pragma once
+/*!
+  \file Trackers.h
+  The trackers pm-compare runs side by side:
+  - ours, the photo-model tracker (PhotoModelTracker), started with no initial pose;
+  - ViSP's vpMbGenericTracker in stereo (Camera1 = left, Camera2 = right, the rig's cRMcL) as
+    EDGE, KLT or EDGE|KLT on the outline's one-face .cao model, settings from an XML file,
+    started from the true pose;
+  - ViSP's vpTemplateTracker (SSD or ZNCC, inverse compositional, homography warp) on the left
+    image, the template being the outline's inside in the first image; the pose comes from the
+    homography and the plane known at the start (points of the plane warped, then vpPose).
+*/
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpPoint.h>
+
+#include "pm/compare/ComparedTracker.h"
+#include "pm/core/PhotoModel.h"
+#include "pm/core/StereoRig.h"
+#include "pm/tracker/PhotoModelTracker.h"
+
+namespace pm::compare {
+
+std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params);
+
+enum class MbtFeatures { Edge, Klt, EdgeKlt };
+/*!
+  \e caoPath: the model file; \e xmlPath: vpMbGenericTracker's settings (moving edges, KLT,
+  visibility), the same for both cameras; the intrinsics come from the rig.
+*/
+std::unique_ptr<ComparedTracker> makeMbtTracker(const StereoRig &rig, MbtFeatures features, const std::string &caoPath,
+                                                const std::string &xmlPath);
+
+enum class TemplateCost { Ssd, Zncc };
+//! \e polygon: the outline in the model frame (outlinePolygon()).
+std::unique_ptr<ComparedTracker> makeTemplateTracker(const StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon);
+
+} // namespace pm::compare

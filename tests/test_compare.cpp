@@ -1,0 +1,172 @@
+// pm-compare: the outline model given to ViSP's trackers, the scores, the scenarios, and the
+// program run on the forced-loss scenario against ground truth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "TestSupport.h"
+#include "pm/compare/Metrics.h"
+#include "pm/compare/OutlineModel.h"
+#include "pm/compare/Scenario.h"
+#include "pm/compare/Trackers.h"
+#include "pm/core/Error.h"
+#include "pm/io/RigFile.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+
+using pm::compare::FrameScore;
+using pm::test::runProgram;
+using pm::test::TempDir;
+
+TEST(OutlineModel, ASquareRegionGivesItsFourCornersInTheModelFrameCounterClockwiseAsSeen)
+{
+  // A 100 x 60 px region photographed at 500 mm with px = py = 1000: 50 x 30 mm.
+  vpImage<unsigned char> region(200, 300, 0);
+  for (unsigned i = 70; i < 130; ++i)
+    for (unsigned j = 100; j < 200; ++j)
+      region[i][j] = 255;
+  pm::PhotoModel m;
+  m.distanceMm = 500;
+  m.px = m.py = 1000;
+  m.centroidU = 149.5;
+  m.centroidV = 99.5;
+  const auto poly = pm::compare::outlinePolygon(region, m, 1.0);
+  ASSERT_EQ(poly.size(), 4u);
+  double minX = 1, maxX = -1, minY = 1, maxY = -1, area2 = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const vpPoint &a = poly[i], &b = poly[(i + 1) % 4];
+    minX = std::min(minX, a.get_oX());
+    maxX = std::max(maxX, a.get_oX());
+    minY = std::min(minY, a.get_oY());
+    maxY = std::max(maxY, a.get_oY());
+    EXPECT_EQ(a.get_oZ(), 0.0);
+    area2 += a.get_oX() * b.get_oY() - b.get_oX() * a.get_oY();
+  }
+  // Contour pixels are the region's border pixels: 99 x 59 px between their centres.
+  EXPECT_NEAR(maxX - minX, 0.0495, 1e-9);
+  EXPECT_NEAR(maxY - minY, 0.0295, 1e-9);
+  EXPECT_NEAR(minX + maxX, 0.0, 1e-9); // centred on the centroid
+  // Seen from the camera (looking along +z, y down), counter-clockwise: negative signed area in (x, y).
+  EXPECT_LT(area2, 0);
+  const std::string cao = pm::compare::caoText(poly, "test");
+  EXPECT_EQ(cao.rfind("V1\n", 0), 0u);
+  EXPECT_NE(cao.find("\n4 0 1 2 3\n"), std::string::npos);
+  EXPECT_THROW(pm::compare::outlinePolygon(vpImage<unsigned char>(10, 10, 0), m), pm::Error);
+}
+
+TEST(Metrics, ErrorsSuccessRatesAndRecoveryFromKnownScores)
+{
+  const vpHomogeneousMatrix truth(0.01, 0.02, 0.5, 0, 0, 0);
+  const FrameScore s = pm::compare::scoreFrame(truth * vpHomogeneousMatrix(0.003, 0, 0.004, 0, 0, 0.1), truth);
+  EXPECT_NEAR(s.translationMm, 5.0, 1e-9);
+  EXPECT_NEAR(s.rotationDeg, 0.1 * 180 / M_PI, 1e-9);
+
+  // 20 frames: fine, then lost at frame 8 (error 300 mm), back within 5 cm from frame 12 on,
+  // and a second loss at 18 that never recovers.
+  std::vector<FrameScore> f(20);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    f[k].translationMm = k < 8 ? 4 : k < 12 ? 300 : k < 18 ? 20 : 300;
+    f[k].rotationDeg = 1;
+    f[k].ms = static_cast<double>(k + 1);
+  }
+  const pm::compare::Summary r = pm::compare::summarize(f, {8, 18});
+  EXPECT_DOUBLE_EQ(r.success5cm5deg, 14.0 / 20);
+  EXPECT_DOUBLE_EQ(r.success1cm2deg, 8.0 / 20);
+  EXPECT_DOUBLE_EQ(r.maxTranslationMm, 300);
+  EXPECT_DOUBLE_EQ(r.meanMs, 10.5);
+  EXPECT_DOUBLE_EQ(r.p99Ms, 20);
+  ASSERT_EQ(r.recovery.size(), 2u);
+  ASSERT_TRUE(r.recovery[0].has_value());
+  EXPECT_EQ(*r.recovery[0], 4); // frames 8..11 lost, 12..16 the first 5 good frames in a row
+  EXPECT_FALSE(r.recovery[1].has_value());
+  EXPECT_TRUE(r.neverRecovered());
+  EXPECT_FALSE(r.worstRecovery().has_value());
+}
+
+TEST(Scenario, TheForcedLossBlanksTheFramesAndTheTargetJumps)
+{
+  const pm::compare::Scenario s = pm::compare::makeScenario("loss", {});
+  ASSERT_EQ(s.lossEnds.size(), 2u);
+  const int blankEnd = s.lossEnds[0], jump = s.lossEnds[1];
+  EXPECT_TRUE(s.frames[static_cast<std::size_t>(blankEnd - 1)].blank);
+  EXPECT_FALSE(s.frames[static_cast<std::size_t>(blankEnd)].blank);
+  const vpHomogeneousMatrix a = s.frames[static_cast<std::size_t>(jump - 1)].hMo, b = s.frames[static_cast<std::size_t>(jump)].hMo;
+  EXPECT_NEAR((a.getTranslationVector() - b.getTranslationVector()).frobeniusNorm(), 0.05, 1e-9);
+  EXPECT_NEAR((a.inverse() * b).getThetaUVector().getTheta() * 180 / M_PI, 8.0, 1e-6);
+  for (const auto &name : pm::compare::scenarioNames())
+    EXPECT_FALSE(pm::compare::makeScenario(name, {pm::Phi{0, 0, 500, 0, 0, 0}, pm::Phi{20, 0, 500, 0, 0, 0}}).frames.empty()) << name;
+  EXPECT_THROW(pm::compare::makeScenario("nope", {}), pm::Error);
+}
+
+TEST(ComparedTrackers, ViSPsTrackersStartedAtTheTruthStayNearItOnSlowMotion)
+{
+  // The .cao model and the template are right if ViSP's trackers, started at the true pose,
+  // follow a slow move: KLT (stereo) and the SSD template within 10 mm and 3 deg.
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::Scene scene(pm::sim::makeTarget("C12"));
+  const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, 500);
+  const auto outline = pm::compare::outlinePolygon(sm.build.region, sm.build.model);
+  TempDir d("compare");
+  pm::test::writeText(d.file("model.cao"), pm::compare::caoText(outline, "test"));
+  std::vector<std::unique_ptr<pm::compare::ComparedTracker>> ts;
+  ts.push_back(pm::compare::makeMbtTracker(rig, pm::compare::MbtFeatures::Klt, d.file("model.cao"), pm::test::dataPath("compare/mbt.xml")));
+  ts.push_back(pm::compare::makeTemplateTracker(rig, pm::compare::TemplateCost::Ssd, outline));
+  for (int k = 0; k < 15; ++k) {
+    const vpHomogeneousMatrix hMo(0.002 * k, 0.001 * k, 0.5, 0, 0, 0.004 * k);
+    const auto im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
+    for (auto &t : ts) {
+      if (k == 0)
+        t->start(im.left, im.right, hMo * sm.oMm);
+      const pm::compare::Estimate e = t->track(im.left, im.right);
+      const FrameScore s = pm::compare::scoreFrame(e.hMm, hMo * sm.oMm);
+      EXPECT_TRUE(e.valid) << t->name() << " frame " << k;
+      EXPECT_LT(s.translationMm, 10.0) << t->name() << " frame " << k;
+      EXPECT_LT(s.rotationDeg, 3.0) << t->name() << " frame " << k;
+    }
+  }
+}
+
+TEST(PmCompare, OursRecoversFromTheForcedLossWithinTenFramesViSPsDoNot)
+{
+  TempDir d("compare");
+  const auto r = runProgram("pm-compare", "--scenarios loss --trackers ours,mbt-klt,template-ssd --quiet --out " + d.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("summary.json")));
+  ASSERT_EQ(s.at("trackers").size(), 3u);
+  for (const auto &t : s.at("trackers"))
+    for (const char *key : {"name", "mean_frame_ms", "p99_frame_ms", "time_ratio_to_ours", "mean_translation_error_mm",
+                            "max_translation_error_mm", "mean_rotation_error_deg", "success_5cm5deg", "success_1cm2deg",
+                            "recovery_frames", "needs_initial_pose"})
+      EXPECT_TRUE(t.contains(key)) << t.at("name") << " " << key;
+  const auto &ours = s.at("trackers")[0];
+  EXPECT_FALSE(ours.at("needs_initial_pose").get<bool>());
+  ASSERT_TRUE(ours.at("recovery_frames").is_number()) << ours.at("recovery_frames");
+  EXPECT_LE(ours.at("recovery_frames").get<int>(), 10);
+  EXPECT_DOUBLE_EQ(ours.at("time_ratio_to_ours").get<double>(), 1.0);
+  for (std::size_t i = 1; i < 3; ++i) {
+    EXPECT_TRUE(s.at("trackers")[i].at("needs_initial_pose").get<bool>());
+    EXPECT_EQ(s.at("trackers")[i].at("recovery_frames"), "never") << s.at("trackers")[i].at("name");
+  }
+  for (const char *f : {"table.md", "frames.csv", "model.cao", "errors_loss.png", "snapshots_loss.png"})
+    EXPECT_TRUE(std::filesystem::exists(d.file(f))) << f;
+}
+
+TEST(PmCompare, BadInputIsAClearError)
+{
+  TempDir d("compare");
+  const auto a = runProgram("pm-compare", "--scenarios nope --out " + d.file("o"));
+  EXPECT_EQ(a.status, 2) << a.err;
+  const auto b = runProgram("pm-compare", "--scenarios loss --mbt-config " + d.file("missing.xml") + " --out " + d.file("o"));
+  EXPECT_EQ(b.status, 1);
+  EXPECT_EQ(b.err.rfind("error: ", 0), 0u) << b.err;
+  EXPECT_NE(b.err.find("missing.xml"), std::string::npos) << b.err;
+  pm::test::writeText(d.file("bad.xml"), "<conf><ecm><mask><size>oops");
+  const auto c = runProgram("pm-compare", "--scenarios loss --trackers mbt-edge --mbt-config " + d.file("bad.xml") + " --out " + d.file("o"));
+  EXPECT_EQ(c.status, 1) << c.err;
+  EXPECT_EQ(c.err.rfind("error: ", 0), 0u) << c.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("o/summary.json")));
+}
