@@ -54,6 +54,14 @@ std::string recoveryText(const Summary &s, bool hadLoss)
   return std::to_string(s.worstRecovery().value_or(0));
 }
 
+nlohmann::json recoveryPerLoss(const Summary &s)
+{
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto &r : s.recovery)
+    a.push_back(r ? nlohmann::json(*r) : nlohmann::json("never"));
+  return a;
+}
+
 nlohmann::json recoveryJson(const Summary &s)
 {
   if (s.recovery.empty())
@@ -250,7 +258,8 @@ int main(int argc, char **argv)
                               {"max_rotation_error_deg", p.maxRotationDeg},
                               {"success_5cm5deg", p.success5cm5deg},
                               {"success_1cm2deg", p.success1cm2deg},
-                              {"recovery_frames", recoveryJson(p)}};
+                              {"recovery_frames", recoveryJson(p)},
+                              {"recovery_frames_per_loss", recoveryPerLoss(p)}};
       }
       jt.push_back({{"name", names[ti]},
                     {"key", trackers[ti]},
