@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <random>
 
 #include <nlohmann/json.hpp>
@@ -43,45 +44,42 @@ vpImage<vpRGBa> blurred(const vpImage<vpRGBa> &I, double px)
   return out;
 }
 
+//! v as a whole number, else a usage error about --board.
+int wholeNumber(double v, const char *what)
+{
+  if (v != std::floor(v))
+    throw CLI::ValidationError("--board", std::string("the ") + what + " must be whole numbers");
+  return static_cast<int>(v);
+}
+
 //! The pattern named on the command line; \e layout empty: the pattern's default.
 std::unique_ptr<pm::calib::Pattern> makePattern(const std::string &kind, const std::string &layout)
 {
+  std::unique_ptr<pm::calib::Pattern> pattern;
   if (kind == "chessboard") {
     auto b = std::make_unique<pm::calib::ChessBoard>();
     if (!layout.empty()) {
       const auto v = pm::app::parseNumbers(layout, 3, "--board");
-      if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-        throw CLI::ValidationError("--board", "the inner corner counts must be whole numbers");
-      b->innerRows = static_cast<int>(v[0]);
-      b->innerCols = static_cast<int>(v[1]);
-      b->squareMm = v[2];
-      b->marginMm = v[2];
+      b->innerRows = wholeNumber(v[0], "inner corner counts");
+      b->innerCols = wholeNumber(v[1], "inner corner counts");
+      b->squareMm = b->marginMm = v[2];
     }
-    b->validate();
-    return b;
+    pattern = std::move(b);
+  } else {
+    auto b = std::make_unique<pm::calib::TagBoard>();
+    if (!layout.empty()) {
+      const auto v = pm::app::parseNumbers(layout, 4, "--board");
+      b->rows = wholeNumber(v[0], "tag counts");
+      b->cols = wholeNumber(v[1], "tag counts");
+      b->tagSizeMm = v[2];
+      b->pitchMm = v[3];
+    }
+    pattern = std::move(b);
   }
-  auto b = std::make_unique<pm::calib::TagBoard>();
-  if (!layout.empty()) {
-    const auto v = pm::app::parseNumbers(layout, 4, "--board");
-    if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-      throw CLI::ValidationError("--board", "the tag counts must be whole numbers");
-    b->rows = static_cast<int>(v[0]);
-    b->cols = static_cast<int>(v[1]);
-    b->tagSizeMm = v[2];
-    b->pitchMm = v[3];
-  }
-  b->validate();
-  return b;
+  pattern->validate();
+  return pattern;
 }
 
-//! The pattern as a flat target of the simulator, its frame at the pattern's centre.
-pm::sim::TargetShape patternShape(const pm::calib::Pattern &pattern)
-{
-  pm::sim::TargetShape shape = pm::sim::targetFromImage(pattern.render(8.0), pattern.widthMm(), 0, "calibration pattern");
-  shape.originCol = (shape.cols - 1) / 2.0;
-  shape.originRow = (shape.rows - 1) / 2.0;
-  return shape;
-}
 } // namespace
 
 int main(int argc, char **argv)
@@ -135,7 +133,6 @@ int main(int argc, char **argv)
     std::vector<double> rms;
     vpImage<vpRGBa> firstL, firstR;
     std::vector<vpImagePoint> cornersL, cornersR;
-    std::vector<std::string> problems;
     auto usePair = [&](const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R, const std::string &name) {
       if (L.getWidth() != R.getWidth() || L.getHeight() != R.getHeight())
         throw pm::Error(name + ": the left and right images differ in size (" + std::to_string(L.getWidth()) + "x" +
@@ -155,17 +152,21 @@ int main(int argc, char **argv)
         cornersR = vr.corners;
       }
     };
+    // Simulation (also the hand-eye check's): the rig that takes the pictures, the pattern printed flat.
+    std::optional<pm::StereoRig> truthRig;
+    std::optional<pm::sim::Scene> scene;
+    if (simulate) {
+      truthRig = pm::io::loadRig(trueRigPath.empty() ? pm::app::dataPath("rig/pa10_stereo.json") : trueRigPath);
+      scene.emplace(pm::sim::flatPrint(pattern->render(8.0), pattern->widthMm(), "calibration pattern"), sp);
+    }
     std::string source;
     if (simulate) {
-      const pm::StereoRig truthRig = trueRigPath.empty() ? pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"))
-                                                         : pm::io::loadRig(trueRigPath);
-      const pm::sim::Scene scene(patternShape(*pattern), sp);
       std::mt19937 rng(static_cast<std::uint32_t>(sp.seed));
       std::uniform_real_distribution<double> u(-1, 1);
       pm::app::Progress progress("rendering and detecting", static_cast<std::size_t>(simulate), quiet);
       for (int k = 0; k < simulate; ++k) {
         const pm::Phi p{20 * u(rng), 20 * u(rng), 500 + 40 * u(rng), 0.12 * u(rng), 0.12 * u(rng), 0.2 * u(rng)};
-        const auto im = scene.renderStereo(truthRig, pm::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
+        const auto im = scene->renderStereo(*truthRig, pm::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
         usePair(blurred(im.left, blurPx), blurred(im.right, blurPx), "simulated pair " + std::to_string(k));
         progress.step();
       }
@@ -185,11 +186,7 @@ int main(int argc, char **argv)
     // poses and the flange poses give its hMc (vpHandEyeCalibration), compared with the rig file.
     nlohmann::json handEyeJson;
     bool handEyeAgrees = true;
-    if (handEye > 0) {
-      const pm::StereoRig truthRig = trueRigPath.empty() ? pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"))
-                                                         : pm::io::loadRig(trueRigPath);
-      const pm::sim::Scene scene(patternShape(*pattern), sp);
-      pm::sim::RobotPA10 robot;
+    if (handEye > 0) { // --hand-eye needs --simulate: truthRig and scene are set
       const vpColVector q0 = pm::lab::LoopParams::startJoints();
       const vpHomogeneousMatrix wMb = pm::sim::RobotPA10::forward(q0) * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0);
       std::mt19937 rng(static_cast<std::uint32_t>(sp.seed) + 17);
@@ -205,9 +202,9 @@ int main(int argc, char **argv)
         bool seen = true;
         vpHomogeneousMatrix views[2];
         for (int c = 0; c < 2 && seen; ++c) {
-          const pm::RigCamera &cam = c ? truthRig.right : truthRig.left;
+          const pm::RigCamera &cam = c ? truthRig->right : truthRig->left;
           vpImage<vpRGBa> I;
-          scene.render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
+          scene->render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
           I = blurred(I, blurPx);
           try {
             const pm::calib::BoardView view = pattern->find(I, (c ? rig.right : rig.left).cam, "hand-eye pose " + std::to_string(m), true);

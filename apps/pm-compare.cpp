@@ -82,6 +82,23 @@ void drawOutline(vpImage<vpRGBa> &I, const std::vector<vpPoint> &outline, const 
   }
 }
 
+//! The scores of a summary, as summary.json gives them (per tracker, per scenario).
+nlohmann::json scoresJson(const Summary &s)
+{
+  return {{"frames", s.frames},
+          {"mean_frame_ms", s.meanMs},
+          {"p99_frame_ms", s.p99Ms},
+          {"mean_translation_error_mm", s.meanTranslationMm},
+          {"max_translation_error_mm", s.maxTranslationMm},
+          {"mean_rotation_error_deg", s.meanRotationDeg},
+          {"max_rotation_error_deg", s.maxRotationDeg},
+          {"success_5cm5deg", s.success5cm5deg},
+          {"success_1cm2deg", s.success1cm2deg},
+          {"recovery_frames", recoveryJson(s)},
+          {"recovery_frames_per_loss", recoveryPerLoss(s)},
+          {"claimed_pose_fraction", s.validFraction}};
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -249,34 +266,15 @@ int main(int argc, char **argv)
     for (std::size_t ti = 0; ti < nT; ++ti) {
       const Summary &s = overall[ti];
       nlohmann::json per = nlohmann::json::object();
-      for (std::size_t si = 0; si < seqs.size(); ++si) {
-        const Summary &p = perScenario[si][ti];
-        per[seqs[si].name] = {{"mean_frame_ms", p.meanMs},
-                              {"mean_translation_error_mm", p.meanTranslationMm},
-                              {"max_translation_error_mm", p.maxTranslationMm},
-                              {"mean_rotation_error_deg", p.meanRotationDeg},
-                              {"max_rotation_error_deg", p.maxRotationDeg},
-                              {"success_5cm5deg", p.success5cm5deg},
-                              {"success_1cm2deg", p.success1cm2deg},
-                              {"recovery_frames", recoveryJson(p)},
-                              {"recovery_frames_per_loss", recoveryPerLoss(p)}};
-      }
-      jt.push_back({{"name", names[ti]},
-                    {"key", trackers[ti]},
-                    {"frames", s.frames},
-                    {"mean_frame_ms", s.meanMs},
-                    {"p99_frame_ms", s.p99Ms},
-                    {"time_ratio_to_ours", haveOurs ? nlohmann::json(s.meanMs / overall[ours].meanMs) : nlohmann::json()},
-                    {"mean_translation_error_mm", s.meanTranslationMm},
-                    {"max_translation_error_mm", s.maxTranslationMm},
-                    {"mean_rotation_error_deg", s.meanRotationDeg},
-                    {"max_rotation_error_deg", s.maxRotationDeg},
-                    {"success_5cm5deg", s.success5cm5deg},
-                    {"success_1cm2deg", s.success1cm2deg},
-                    {"recovery_frames", recoveryJson(s)},
-                    {"needs_initial_pose", static_cast<bool>(needsPose[ti])},
-                    {"claimed_pose_fraction", s.validFraction},
-                    {"scenarios", per}});
+      for (std::size_t si = 0; si < seqs.size(); ++si)
+        per[seqs[si].name] = scoresJson(perScenario[si][ti]);
+      nlohmann::json t = scoresJson(s);
+      t["name"] = names[ti];
+      t["key"] = trackers[ti];
+      t["time_ratio_to_ours"] = haveOurs ? nlohmann::json(s.meanMs / overall[ours].meanMs) : nlohmann::json();
+      t["needs_initial_pose"] = static_cast<bool>(needsPose[ti]);
+      t["scenarios"] = per;
+      jt.push_back(t);
     }
     nlohmann::json js = nlohmann::json::array();
     for (const auto &s : seqs)

@@ -28,6 +28,20 @@ Scenario fromTrajectory(const pm::sim::Trajectory &traj, double fps)
   return s;
 }
 
+//! \e seconds of frames, each made by \e frameAt(t), all moving.
+template <typename F>
+Scenario timed(double seconds, double fps, F frameAt)
+{
+  Scenario s;
+  s.fps = fps;
+  for (int k = 0; k < static_cast<int>(seconds * fps); ++k) {
+    ScenarioFrame f = frameAt(k / fps);
+    f.moving = true;
+    s.frames.push_back(f);
+  }
+  return s;
+}
+
 //! A slow sway about the rest pose, for the scenarios that test something else than motion.
 Phi sway(double t)
 {
@@ -57,14 +71,12 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
     s = fromTrajectory(pm::sim::Trajectory(w, 1.5, 1.0), fps);
     s.description = "Table 2's " + std::to_string(w.size()) + " steps, hold 1.5 s, move 1 s";
   } else if (name == "sinusoid") {
-    for (int k = 0; k < static_cast<int>(10 * fps); ++k) {
-      const double t = k / fps;
+    s = timed(10, fps, [](double t) {
       ScenarioFrame f;
       f.hMo = toHomogeneousMatrix(Phi{60 * std::sin(2 * M_PI * 0.5 * t), 30 * std::sin(2 * M_PI * 0.25 * t), 500, 0, 0,
                                       0.1 * std::sin(2 * M_PI * 0.5 * t)});
-      f.moving = true;
-      s.frames.push_back(f);
-    }
+      return f;
+    });
     s.description = "x 60 mm at 0.5 Hz, y 30 mm at 0.25 Hz, 11 deg about z at 0.5 Hz, 10 s";
   } else if (name == "fast") {
     const std::vector<Phi> w{{0, 0, 500, 0, 0, 0},    {80, 0, 500, 0, 0, 0},  {80, 60, 500, 0, 0, 0.05},
@@ -72,25 +84,21 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
     s = fromTrajectory(pm::sim::Trajectory(w, 0.5, 0.25), fps);
     s.description = "moves of 60 to 100 mm in 0.25 s (up to 600 mm/s), held 0.5 s";
   } else if (name == "occlusion") {
-    for (int k = 0; k < static_cast<int>(8 * fps); ++k) {
-      const double t = k / fps;
+    s = timed(8, fps, [](double t) {
       ScenarioFrame f;
       f.hMo = toHomogeneousMatrix(sway(t));
-      f.moving = true;
       f.occluded = t >= 2 && t < 6;
-      s.frames.push_back(f);
-    }
+      return f;
+    });
     s.description = "slow sway; a strand of seaweed in front of the toy from 2 s to 6 s";
   } else if (name == "lighting") {
-    for (int k = 0; k < static_cast<int>(8 * fps); ++k) {
-      const double t = k / fps;
+    s = timed(8, fps, [](double t) {
       ScenarioFrame f;
       f.hMo = toHomogeneousMatrix(sway(t));
-      f.moving = true;
       f.exposure = t < 4 ? ramp(t, 1, 2.5, 1.0, 0.4) : ramp(t, 4, 5.5, 0.4, 1.5);
       f.lightX = ramp(t, 1, 7, -0.35, 0.8);
-      s.frames.push_back(f);
-    }
+      return f;
+    });
     s.description = "slow sway; exposure 1 to 0.4 (1-2.5 s), then 1.5 (4-5.5 s); the light swings left to right";
   } else if (name == "loss") {
     const int blank0 = static_cast<int>(2 * fps), blank1 = blank0 + static_cast<int>(0.5 * fps), jump = static_cast<int>(5 * fps);

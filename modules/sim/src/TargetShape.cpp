@@ -191,4 +191,12 @@ TargetShape targetFromImage(const vpImage<vpRGBa> &image, double widthMm, double
   return s;
 }
 
+TargetShape flatPrint(const vpImage<vpRGBa> &image, double widthMm, const std::string &name)
+{
+  TargetShape s = targetFromImage(image, widthMm, 0, name);
+  s.originCol = (s.cols - 1) / 2.0;
+  s.originRow = (s.rows - 1) / 2.0;
+  return s;
+}
+
 } // namespace pm::sim

@@ -66,6 +66,12 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm = 1.0, float specul
 */
 TargetShape targetFromImage(const vpImage<vpRGBa> &image, double widthMm, double depthMm, const std::string &name);
 
+/*!
+  A flat printed sheet (a calibration pattern) \e widthMm wide, its frame at the image's centre
+  (x right, y down), as pm::calib's patterns define theirs.
+*/
+TargetShape flatPrint(const vpImage<vpRGBa> &image, double widthMm, const std::string &name);
+
 //! Height profile of a rounded edge: 0 at the outline, 1 from \e t = 1 inward (quarter circle),
 //! continued below 0 outside with the slope of its first \e stepFrac.
 double edgeProfile(double t, double stepFrac);
