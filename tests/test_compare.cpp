@@ -147,12 +147,13 @@ TEST(PmCompare, OursRecoversFromTheForcedLossViSPsDoNot)
   const auto &ours = s.at("trackers")[0];
   EXPECT_FALSE(ours.at("needs_initial_pose").get<bool>());
   EXPECT_DOUBLE_EQ(ours.at("time_ratio_to_ours").get<double>(), 1.0);
-  // Back within 5 cm and 5 deg after the blank frames within 10 frames, and after the jump.
+  // Back within 5 cm and 5 deg within 10 frames, after the blank frames and after the jump.
   const auto &perLoss = ours.at("scenarios").at("loss").at("recovery_frames_per_loss");
   ASSERT_EQ(perLoss.size(), 2u);
-  ASSERT_TRUE(perLoss[0].is_number()) << perLoss;
-  EXPECT_LE(perLoss[0].get<int>(), 10);
-  EXPECT_TRUE(perLoss[1].is_number()) << perLoss;
+  for (const auto &frames : perLoss) {
+    ASSERT_TRUE(frames.is_number()) << perLoss;
+    EXPECT_LE(frames.get<int>(), 10) << perLoss;
+  }
   for (std::size_t i = 1; i < 3; ++i) {
     EXPECT_TRUE(s.at("trackers")[i].at("needs_initial_pose").get<bool>());
     EXPECT_EQ(s.at("trackers")[i].at("recovery_frames"), "never") << s.at("trackers")[i].at("name");

@@ -148,6 +148,63 @@ TEST(RmGa, PredictionFollowsAMovingPeakBetter)
   EXPECT_LT(with, 0.7 * without) << "with prediction " << with << " mm, without " << without << " mm";
 }
 
+TEST(RmGa, PredictionKeepsTheLastBestWhereItWas)
+{
+  // The peak jumps 60 mm and stays there: the best's jump looks like a velocity, so the prediction
+  // would carry everyone 60 mm past the peak. The last best, kept unmoved, is still on it.
+  Peak f;
+  pm::RmGaParams p;
+  p.seed = 3;
+  p.predictMotion = true;
+  pm::RmGa ga(pm::SearchSpace(), p);
+  ga.seedAround(f.centre, 0.0);
+  for (int frame = 0; frame < 3; ++frame)
+    ga.evolve(f, pm::FrameBudget::evals(400));
+  f.centre.x += 60;
+  const pm::FrameResult jumped = ga.evolve(f, pm::FrameBudget::evals(20000));
+  ASSERT_LT(distance(jumped.best, f.centre), 5.0) << "the GA did not follow the jump: " << jumped.best.toString();
+  // The next frame: only the population's evaluation (no generations).
+  const pm::FrameResult next = ga.evolve(f, pm::FrameBudget::evals(p.population));
+  EXPECT_EQ(next.generations, 0);
+  EXPECT_LT(distance(next.best, f.centre), distance(jumped.best, f.centre) + 1.0) << next.best.toString();
+}
+
+TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBest)
+{
+  Peak f;
+  pm::RmGaParams p;
+  p.seed = 8;
+  pm::RmGa ga(pm::SearchSpace(), p);
+  ga.evolve(f, pm::FrameBudget::evals(2000));
+  const pm::Genome best = ga.population().front().genome; // sorted by the last generation
+  ga.restart(1, 10);
+  const auto &pop = ga.population();
+  ASSERT_EQ(static_cast<int>(pop.size()), p.population);
+  EXPECT_EQ(pop[0].genome, best);
+  int positionOnly = 0, orientationOnly = 0, near = 0;
+  for (std::size_t k = 1; k < pop.size(); ++k) {
+    const auto &g = pop[k].genome.gene;
+    auto same = [&](std::size_t from) { return g[from] == best.gene[from] && g[from + 1] == best.gene[from + 1] && g[from + 2] == best.gene[from + 2]; };
+    bool close = true;
+    for (std::size_t i = 0; i < 6; ++i)
+      close = close && std::abs(static_cast<int>(g[i]) - static_cast<int>(best.gene[i])) <= pm::Genome::kMax / 20;
+    positionOnly += same(0) && !same(3);
+    orientationOnly += same(3) && !same(0);
+    near += close && !same(0) && !same(3);
+  }
+  // 19 new ones in four kinds: random, position kept, orientation kept, near (5, 5, 5, 4).
+  EXPECT_EQ(positionOnly, 5);
+  EXPECT_EQ(orientationOnly, 5);
+  EXPECT_GE(near, 4);
+  EXPECT_LE(near, 5); // a random one is near only by a rare chance
+  // With nothing kept, all are random: none keeps the old best's position.
+  ga.restart(0);
+  int kept = 0;
+  for (const auto &i : ga.population())
+    kept += i.genome.gene[0] == best.gene[0] && i.genome.gene[1] == best.gene[1] && i.genome.gene[2] == best.gene[2];
+  EXPECT_EQ(kept, 0);
+}
+
 TEST(RmGa, RefinementSharpensTheBest)
 {
   auto error = [](int refine) {

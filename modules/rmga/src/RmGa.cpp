@@ -8,6 +8,11 @@
 
 namespace pm {
 
+namespace {
+bool lessFit(const Individual &a, const Individual &b) { return a.fitness < b.fitness; }
+bool moreFit(const Individual &a, const Individual &b) { return a.fitness > b.fitness; }
+} // namespace
+
 void RmGaParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
@@ -68,16 +73,26 @@ void RmGa::seedAround(const Phi &p, double spread)
   m_havePrev = m_havePrev2 = false;
 }
 
-void RmGa::restart(int keep)
+void RmGa::restart(int keep, int isolate)
 {
   std::uniform_int_distribution<int> gene(0, Genome::kMax);
-  std::sort(m_pop.begin(), m_pop.end(), [](const Individual &a, const Individual &b) { return a.fitness > b.fitness; });
-  for (std::size_t k = static_cast<std::size_t>(std::max(0, keep)); k < m_pop.size(); ++k) {
-    Genome g;
-    for (auto &v : g.gene)
-      v = static_cast<std::uint16_t>(gene(m_rng));
+  std::uniform_int_distribution<int> near(-Genome::kMax / 20, Genome::kMax / 20);
+  std::sort(m_pop.begin(), m_pop.end(), moreFit);
+  const std::size_t first = static_cast<std::size_t>(std::max(0, keep));
+  for (std::size_t k = first; k < m_pop.size(); ++k) {
+    // Blocks: 0 all random; 1 the best's position; 2 the best's orientation; 3 near the best.
+    const std::size_t block = first > 0 ? (k - first) % 4 : 0;
+    Genome g = m_pop[0].genome;
+    for (std::size_t i = 0; i < 6; ++i)
+      if (block == 3)
+        g.gene[i] = static_cast<std::uint16_t>(std::clamp(static_cast<int>(g.gene[i]) + near(m_rng), 0, static_cast<int>(Genome::kMax)));
+      else if (block == 0 || (block == 1) == (i >= 3))
+        g.gene[i] = static_cast<std::uint16_t>(gene(m_rng));
     m_pop[k] = make(g);
   }
+  m_isolation = first > 0 ? std::max(0, isolate) : 0;
+  if (m_isolation > 0)
+    m_isolated = m_pop[0].genome;
 }
 
 void RmGa::transform(const std::function<Phi(const Phi &)> &f)
@@ -109,9 +124,15 @@ void RmGa::evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_
 const Individual &RmGa::tournament()
 {
   std::uniform_int_distribution<std::size_t> pick(0, m_pop.size() - 1);
-  const Individual *best = &m_pop[pick(m_rng)];
+  auto draw = [&]() -> const Individual & { // anyone but the isolated best, if drawn again soon enough
+    const Individual *c = &m_pop[pick(m_rng)];
+    for (std::size_t tries = 0; m_isolation > 0 && c->genome == m_isolated && tries < m_pop.size(); ++tries)
+      c = &m_pop[pick(m_rng)];
+    return *c;
+  };
+  const Individual *best = &draw();
   for (int k = 1; k < m_params.tournament; ++k) {
-    const Individual &c = m_pop[pick(m_rng)];
+    const Individual &c = draw();
     if (c.fitness > best->fitness)
       best = &c;
   }
@@ -131,7 +152,7 @@ void RmGa::mutate(Genome &g)
 void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
 {
   // Pattern search on the genes of the best individual: +-step on each variable, halving the step.
-  auto bestIt = std::max_element(m_pop.begin(), m_pop.end(), [](const Individual &a, const Individual &b) { return a.fitness < b.fitness; });
+  auto bestIt = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
   Individual best = *bestIt;
   long used = 0;
   std::vector<Individual> trial(1);
@@ -177,12 +198,17 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
     Phi v;
     for (std::size_t i = 0; i < 6; ++i)
       v[i] = m_prev[i] - m_prev2[i];
+    // The prediction is a guess: the best of the last frame also stays where it was, in place of
+    // the worst, so that a wrong velocity (after a jump of the estimate) cannot carry it away.
+    const Individual stay = *std::max_element(m_pop.begin(), m_pop.end(), lessFit);
+    const auto worst = std::min_element(m_pop.begin(), m_pop.end(), lessFit) - m_pop.begin();
     for (auto &ind : m_pop) {
       Phi q = ind.phi;
       for (std::size_t i = 0; i < 6; ++i)
         q[i] += v[i];
       ind = make(encode(m_space.clamp(q), m_space));
     }
+    m_pop[static_cast<std::size_t>(worst)] = stay;
   }
   // 3. Evaluate everyone on the new frame.
   long evals = 0;
@@ -219,14 +245,16 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
     evaluate(f, m_children, 0, evals);
     // The best n of parents and children survive.
     m_pop.insert(m_pop.end(), m_children.begin(), m_children.end());
-    std::stable_sort(m_pop.begin(), m_pop.end(), [](const Individual &x, const Individual &y) { return x.fitness > y.fitness; });
+    std::stable_sort(m_pop.begin(), m_pop.end(), moreFit);
     m_pop.resize(static_cast<std::size_t>(n));
     ++r.generations;
+    if (m_isolation > 0)
+      --m_isolation;
     if (m_pop[0].fitness > bestSoFar) {
       bestSoFar = m_pop[0].fitness;
       stagnant = 0;
     } else if (m_params.restartGenerations > 0 && ++stagnant >= m_params.restartGenerations) {
-      restart(1);
+      restart(1, m_params.restartGenerations);
       evaluate(f, m_pop, 1, evals);
       stagnant = 0;
       r.restarted = true;
@@ -236,7 +264,7 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
   if (refineEvals > 0)
     refine(f, byEvals ? budget.evaluations - evals : refineEvals, evals);
   // 9. The best is the frame's pose.
-  const auto best = std::max_element(m_pop.begin(), m_pop.end(), [](const Individual &x, const Individual &y) { return x.fitness < y.fitness; });
+  const auto best = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
   r.best = best->phi;
   r.fitness = best->fitness;
   r.evaluations = evals;

@@ -132,7 +132,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     r.state = prev; // searching or lost, until locked
   }
   if (r.state == TrackState::Lost && prev != TrackState::Lost)
-    m_ga.restart(1); // search again, keeping the best guess
+    m_ga.restart(1, m_params.ga.restartGenerations); // search again, keeping the best guess apart
   r.computeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   m_last = r;
   return r;

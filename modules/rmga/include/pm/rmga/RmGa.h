@@ -6,13 +6,14 @@
 
   Per frame, evolve():
    1. (the first frame) the population is random over the search space;
-   2. [option] every individual is moved by the motion predicted from the last two frames;
+   2. [option] every individual is moved by the motion predicted from the last two frames,
+     except that the last frame's best also stays where it was (in place of the worst);
    3. every individual is evaluated on the new frame;
    4-7. generations until the budget is spent: parents by tournament, single-point crossover of
         the 72-bit strings, bit-flip mutation; only the children are evaluated (the others'
         fitness on this frame is known); the best N of parents and children survive (elitism);
         [option] when the best has not improved for some generations, all but the best
-        restart at random;
+        restart (see restart()); the best does not breed while the new ones search;
    8. [option] a local refinement of the best (pattern search on the genes);
    9. the best individual is the pose of the frame.
 
@@ -89,8 +90,15 @@ public:
   //! A population around \e p: the first individual is p, the others p plus uniform noise of
   //! +-spread times each range (clamped). Forgets the motion.
   void seedAround(const Phi &p, double spread);
-  //! Replaces all but the best \e keep individuals by random ones (a restart).
-  void restart(int keep = 1);
+  /*!
+    A restart: all but the best \e keep individuals are replaced, a quarter each by random ones,
+    by the best's position with a random orientation, by the best's orientation with a random
+    position, and by the best plus noise of +-5 % of each range (all random if keep is 0). The
+    kept best stays in the population but is not chosen as a parent for the next \e isolate
+    generations, so the new ones search on their own instead of collapsing onto it at once: a
+    lock on a wrong pose (often right in position or in orientation only) is left this way.
+  */
+  void restart(int keep = 1, int isolate = 0);
   /*!
     Moves every individual (and the remembered best poses of the last frames, for the motion
     prediction) by \e f, e.g. when the frame they are expressed in moved: the tracker compensates
@@ -123,6 +131,8 @@ private:
   std::vector<double> m_scores;
   bool m_havePrev = false, m_havePrev2 = false;
   Phi m_prev, m_prev2; //!< best of the last two frames, for the motion prediction
+  Genome m_isolated;   //!< the best kept by the last restart, which does not breed ...
+  int m_isolation = 0; //!< ... for this many more generations
 };
 
 } // namespace pm

@@ -11,7 +11,7 @@
   - searching: after initialize(), until q >= lockQuality;
   - tracking: q >= lockQuality was reached; it stays while q >= lostQuality;
   - lost: q < lostQuality for lostFrames frames in a row; the population then restarts (all
-    but the best individual random) and searches until q >= lockQuality again.
+    but the best individual new, see RmGa::restart) and searches until q >= lockQuality again.
 
       pm::PhotoModelTracker tracker(rig, model);
       tracker.initialize();
