@@ -1,11 +1,14 @@
 # Sourced by demo.sh and test.sh: installs what is missing from Debian 12, configures and builds.
-# pm_setup [release|sanitize] [optional packages...]  ->  sets PM_BUILD_DIR to the built tree.
+# pm_setup [release|sanitize|fuzz] [optional packages...]  ->  sets PM_BUILD_DIR to the built tree.
 
 PM_DEBIAN_PACKAGES=(build-essential cmake ninja-build pkg-config libvisp-dev libopencv-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libapriltag-dev)
 
 # Only for the tests: ViSP's images (the AprilTag benchmark test is skipped without them).
 PM_TEST_PACKAGES=(visp-images-data)
+
+# Only for the fuzz targets (scripts/fuzz.sh): clang, its libFuzzer runtime, its OpenMP.
+PM_FUZZ_PACKAGES=(clang libclang-rt-14-dev libomp-dev)
 
 # pm_missing packages...  ->  prints those not installed
 pm_missing() {
@@ -18,7 +21,7 @@ pm_missing() {
 # pm_install_deps [optional packages...]: the required ones or fail; the optional ones if we can.
 pm_install_deps() {
   local missing optional
-  missing=($(pm_missing "${PM_DEBIAN_PACKAGES[@]}"))
+  missing=($(pm_missing "${PM_DEBIAN_PACKAGES[@]}" ${PM_EXTRA_PACKAGES[@]+"${PM_EXTRA_PACKAGES[@]}"}))
   optional=($(pm_missing "$@"))
   [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
   if [ "$(id -u)" -ne 0 ]; then
@@ -39,13 +42,17 @@ pm_setup() {
   local mode="${1:-release}" root
   root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
   shift || true
+  local target=all
+  [ "$mode" = fuzz ] && PM_EXTRA_PACKAGES=("${PM_FUZZ_PACKAGES[@]}")
   pm_install_deps "$@"
   case "$mode" in
     release)  PM_BUILD_DIR="$root/build";      set -- -DCMAKE_BUILD_TYPE=Release -DPM_SANITIZE=OFF ;;
     sanitize) PM_BUILD_DIR="$root/build-asan"; set -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPM_SANITIZE=ON ;;
-    *) echo "error: unknown build mode '$mode' (release or sanitize)" >&2; return 2 ;;
+    fuzz)     PM_BUILD_DIR="$root/build-fuzz"; target=pm_fuzz_all
+              set -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DPM_FUZZ=ON -DPM_BUILD_APPS=OFF -DPM_BUILD_TESTS=OFF ;;
+    *) echo "error: unknown build mode '$mode' (release, sanitize or fuzz)" >&2; return 2 ;;
   esac
   cmake -S "$root" -B "$PM_BUILD_DIR" -G Ninja "$@" >/dev/null
-  cmake --build "$PM_BUILD_DIR" -j "$(nproc)"
+  cmake --build "$PM_BUILD_DIR" --target "$target" -j "$(nproc)"
   export PM_BUILD_DIR
 }

@@ -1,11 +1,15 @@
 #include "pm/io/ImageFile.h"
 
 #include <algorithm>
+#include <cctype>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <memory>
+#include <vector>
 
 #include <jpeglib.h>
 #include <png.h>
@@ -17,6 +21,9 @@
 namespace pm::io {
 
 namespace {
+
+//! Larger images are refused: 100 Mpx, 400 MB as vpRGBa (a camera's frame is a few Mpx).
+constexpr double kMaxPixels = 1e8;
 
 std::string lowerExtension(const std::string &path)
 {
@@ -42,7 +49,7 @@ vpImage<vpRGBa> readPng(const std::string &path)
   if (!png_image_begin_read_from_file(&img, path.c_str()))
     throw Error("cannot read image '" + path + "': not a valid PNG (" + img.message + ")");
   img.format = PNG_FORMAT_RGBA;
-  if (img.width == 0 || img.height == 0 || static_cast<double>(img.width) * img.height > 1e9) {
+  if (img.width == 0 || img.height == 0 || static_cast<double>(img.width) * img.height > kMaxPixels) {
     png_image_free(&img);
     throw Error("cannot read image '" + path + "': unreasonable size " + std::to_string(img.width) + "x" +
                 std::to_string(img.height));
@@ -95,9 +102,14 @@ vpImage<vpRGBa> readJpeg(const std::string &path)
   jpeg_create_decompress(&cinfo);
   jpeg_stdio_src(&cinfo, f.get());
   jpeg_read_header(&cinfo, TRUE);
+  if (static_cast<double>(cinfo.image_width) * cinfo.image_height > kMaxPixels) {
+    jpeg_destroy_decompress(&cinfo);
+    throw Error("cannot read image '" + path + "': unreasonable size " + std::to_string(cinfo.image_width) + "x" +
+                std::to_string(cinfo.image_height));
+  }
   cinfo.out_color_space = JCS_RGB;
   jpeg_start_decompress(&cinfo);
-  if (static_cast<double>(cinfo.output_width) * cinfo.output_height > 1e9 || cinfo.output_components != 3) {
+  if (static_cast<double>(cinfo.output_width) * cinfo.output_height > kMaxPixels || cinfo.output_components != 3) {
     jpeg_destroy_decompress(&cinfo);
     throw Error("cannot read image '" + path + "': unsupported JPEG");
   }
@@ -118,6 +130,48 @@ vpImage<vpRGBa> readJpeg(const std::string &path)
   return I;
 }
 
+/*!
+  Binary PGM (P5) and PPM (P6), 8 bits. Ours rather than ViSP's: vpImageIo::readPPM hangs on
+  some malformed headers, and picks the format from the file name (it throws std::out_of_range
+  on a name without an extension). Found by fuzz/fuzz_image.
+*/
+vpImage<vpRGBa> readPnm(const std::string &path)
+{
+  std::ifstream f(path, std::ios::binary);
+  std::string magic;
+  f >> magic;
+  if (magic != "P5" && magic != "P6")
+    throw Error("cannot read image '" + path + "': not a PNG, JPEG or binary PGM/PPM image");
+  long header[3] = {0, 0, 0}; // width, height, maximum value
+  for (long &v : header) {
+    while (f >> std::ws && f.peek() == '#') // comments
+      f.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    if (!(f >> v))
+      throw Error("cannot read image '" + path + "': truncated " + magic + " header");
+  }
+  const long w = header[0], h = header[1];
+  if (w <= 0 || h <= 0 || static_cast<double>(w) * static_cast<double>(h) > kMaxPixels)
+    throw Error("cannot read image '" + path + "': bad or unreasonable size " + std::to_string(w) + "x" + std::to_string(h));
+  if (header[2] < 1 || header[2] > 255)
+    throw Error("cannot read image '" + path + "': only 8-bit PGM/PPM are read (maximum value " + std::to_string(header[2]) + ")");
+  if (!std::isspace(f.get())) // one whitespace, then the pixels
+    throw Error("cannot read image '" + path + "': malformed " + magic + " header");
+  const std::size_t channels = magic == "P6" ? 3 : 1;
+  std::vector<unsigned char> row(channels * static_cast<std::size_t>(w));
+  vpImage<vpRGBa> I(static_cast<unsigned>(h), static_cast<unsigned>(w));
+  for (unsigned v = 0; v < I.getHeight(); ++v) {
+    if (!f.read(reinterpret_cast<char *>(row.data()), static_cast<std::streamsize>(row.size())))
+      throw Error("cannot read image '" + path + "': truncated " + magic + " pixels");
+    for (auto &c : row) // onto 0..255, whatever the maximum value
+      c = static_cast<unsigned char>(std::min<long>(255, (255 * static_cast<long>(c) + header[2] / 2) / header[2]));
+    for (unsigned u = 0; u < I.getWidth(); ++u) {
+      const unsigned char *p = &row[channels * u];
+      I[v][u] = channels == 3 ? vpRGBa(p[0], p[1], p[2], 255) : vpRGBa(p[0], p[0], p[0], 255);
+    }
+  }
+  return I;
+}
+
 } // namespace
 
 vpImage<vpRGBa> readColorImage(const std::string &path)
@@ -132,15 +186,7 @@ vpImage<vpRGBa> readColorImage(const std::string &path)
     return readPng(path);
   if (startsWith(path, jpegMagic, 3) || ext == ".jpg" || ext == ".jpeg")
     return readJpeg(path);
-  vpImage<vpRGBa> I; // other formats (PPM, PGM, ...) through ViSP
-  try {
-    vpImageIo::read(I, path);
-  } catch (const vpException &e) {
-    throw Error("cannot read image '" + path + "': not a readable PNG/JPEG/PNM image (" + e.getStringMessage() + ")");
-  }
-  if (I.getSize() == 0)
-    throw Error("cannot read image '" + path + "': it is empty or corrupt");
-  return I;
+  return readPnm(path);
 }
 
 namespace {

@@ -11,7 +11,8 @@
 
 namespace pm::io {
 
-//! Reads a colour image. Throws pm::Error if the file is missing, unreadable, corrupt or empty.
+//! Reads a colour image: PNG, JPEG (by their magic bytes or extension), binary PGM/PPM. Throws
+//! pm::Error if the file is missing, unreadable, corrupt, empty or over 100 Mpx.
 vpImage<vpRGBa> readColorImage(const std::string &path);
 //! Writes a colour image; the format follows the extension. Throws pm::Error.
 void writeImage(const vpImage<vpRGBa> &I, const std::string &path);

@@ -1,0 +1,25 @@
+// Fuzz target: the stereo rig file (pm::io::loadRig), its intrinsics file next to it being valid.
+#include "FuzzFile.h"
+#include "pm/core/Error.h"
+#include "pm/io/CameraXml.h"
+#include "pm/io/RigFile.h"
+
+extern "C" int LLVMFuzzerInitialize(int *, char ***)
+{
+  // The intrinsics the seed rigs name: a valid file, so that the fuzzer gets past it.
+  const std::string xml = (pm::fuzz::scratchDir() / "rig_cameras.xml").string();
+  const vpCameraParameters cam(800, 800, 320, 240);
+  pm::io::writeCameraXml(cam, xml, "left", 640, 480);
+  pm::io::writeCameraXml(cam, xml, "right", 640, 480);
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
+{
+  const std::string path = pm::fuzz::writeScratch("rig.json", data, size);
+  try {
+    (void)pm::io::loadRig(path);
+  } catch (const pm::Error &) {
+  }
+  return 0;
+}
