@@ -2,7 +2,10 @@
 // no half-written output, and the outputs of a successful run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <sstream>
+#include <tuple>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -238,4 +241,52 @@ TEST(Apps, AModelThatDoesNotFitTheRigIsRefused)
   expectOneLineError(runProgram("pm-detect", "--left " + d.file("L_0000.png") + " --right " + d.file("R_0000.png") + " --model " +
                                                  d.file("huge.json") + " --out " + d.file("o")),
                      "does not fit the rig");
+}
+
+namespace {
+//! A CSV without the named columns (timings): what must be the same from run to run.
+std::string withoutColumns(const std::string &csv, const std::vector<std::string> &drop)
+{
+  std::istringstream in(csv);
+  std::string line, out;
+  std::vector<bool> keep;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');)
+      cells.push_back(c);
+    if (keep.empty())
+      for (const auto &c : cells)
+        keep.push_back(std::find(drop.begin(), drop.end(), c) == drop.end());
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (i >= keep.size() || keep[i])
+        out += cells[i] + ",";
+    out += "\n";
+  }
+  return out;
+}
+} // namespace
+
+TEST(Reproducibility, SameSeedSameInputsSameCsvTimingsAside)
+{
+  // On an evaluation budget the runs are deterministic: every column but the timings is the same
+  // to the byte, for the closed loop (pm-servo) and the tracker (pm-track).
+  pm::test::TempDir d("repro");
+  const std::string servo = "--trajectory sine --duration-s 1.5 --budget-evals 800 --ga-seed 7 --seed 3 --supersampling 1 "
+                            "--no-video --overlay-every 0 --quiet --out ";
+  const std::string track = "--steps 2 --hold-s 0.5 --move-s 0.5 --budget-evals 800 --ga-seed 7 --quiet --out ";
+  for (const auto &[program, args, drop] :
+       std::vector<std::tuple<std::string, std::string, std::vector<std::string>>>{{"pm-servo", servo, {"compute_ms"}},
+                                                                                   {"pm-track", track, {"compute_ms"}}}) {
+    std::string csv[2];
+    for (int run = 0; run < 2; ++run) {
+      const std::string out = d.file(program + std::to_string(run));
+      const auto r = runProgram(program, args + out);
+      ASSERT_EQ(r.status, 0) << program << ": " << r.err;
+      csv[run] = pm::test::readText(out + "/frames.csv");
+    }
+    ASSERT_GT(csv[0].size(), 1000u) << program;
+    EXPECT_TRUE(withoutColumns(csv[0], drop) == withoutColumns(csv[1], drop)) << program << ": the runs differ";
+    EXPECT_EQ(withoutColumns(csv[0], drop).size(), withoutColumns(csv[1], drop).size()) << program;
+  }
 }

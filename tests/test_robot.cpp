@@ -1,6 +1,7 @@
 // The PA-10 (kinematics, Jacobians, limits), the TC-robot, PBVS and the closed loop.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "TestSupport.h"
@@ -8,6 +9,7 @@
 #include "pm/io/RigFile.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/servo/PbvsServo.h"
+#include "pm/servo/SafeCommand.h"
 #include "pm/sim/RobotPA10.h"
 #include "pm/sim/TargetCatalog.h"
 #include "pm/sim/TcRobot.h"
@@ -189,4 +191,139 @@ TEST(ClosedLoop, OracleFollowsAStepOfTheTarget)
   EXPECT_LT(f.translationErrorMm, 2.0); // and settles
   EXPECT_LT(f.rotationErrorDeg, 0.5);
   EXPECT_EQ(loop.robot().limitHits(), 0);
+}
+
+TEST(SafeCommand, StopsAndStartsWithinTheLimits)
+{
+  const RobotPA10 robot;
+  const vpColVector vmax = robot.speedLimits(), amax = robot.accelerationLimits();
+  pm::SafeCommand safe(vmax, amax);
+  const double dt = 1.0 / 30;
+  vpColVector wanted(7, 0.0);
+  wanted[0] = 5; // over the speed limit of S1 (1 rad/s): scaled down as a whole
+  wanted[3] = 1;
+  vpColVector prev = safe.last();
+  int frames = 0;
+  while (std::fabs(safe.last()[0] - 1.0) > 1e-12 && frames < 1000) {
+    const vpColVector &c = safe.next(wanted, dt);
+    for (unsigned i = 0; i < 7; ++i) {
+      EXPECT_LE(std::fabs(c[i]), vmax[i] + 1e-12);
+      EXPECT_LE(std::fabs(c[i] - prev[i]), amax[i] * dt + 1e-9);
+    }
+    EXPECT_NEAR(c[3], 0.2 * c[0], 1e-12); // the direction is kept
+    prev = c;
+    ++frames;
+  }
+  EXPECT_EQ(frames, 15); // 1 rad/s at 2 rad/s^2: 0.5 s
+  // A NaN is a stop, reached by a ramp.
+  wanted[2] = NAN;
+  frames = 0;
+  while (!safe.stopped() && frames < 1000) {
+    const vpColVector &c = safe.next(wanted, dt);
+    EXPECT_LE(std::fabs(c[0] - prev[0]), amax[0] * dt + 1e-9);
+    prev = c;
+    ++frames;
+  }
+  EXPECT_EQ(frames, 15);
+  EXPECT_THROW(safe.next(wanted, 0), pm::Error);
+  EXPECT_THROW(pm::SafeCommand(vmax, vpColVector(3, 1.0)), pm::Error);
+}
+
+namespace {
+struct FaultRun
+{
+  std::vector<pm::lab::LoopFrame> frames;
+  int limitHits = 0;
+};
+
+/*!
+  The closed loop with the tracker (no oracle, a deterministic budget), the target swaying 30 mm
+  along x at 0.2 Hz, \e faults injected; \e trackerTarget: the target whose photo-model the
+  tracker is given (C12 is the one in the scene). Every command is checked against the PA-10's
+  speed and acceleration limits.
+*/
+FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std::string &trackerTarget = "C12")
+{
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::SceneParams sp;
+  sp.supersampling = 1;
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp);
+  const pm::sim::Scene other(pm::sim::makeTarget(trackerTarget), sp);
+  const auto sm = pm::sim::makeSimulatedPhotoModel(other, rig.left.cam, 640, 480, 500);
+  pm::TrackerParams tp;
+  tp.budgetEvaluations = 1900;
+  tp.ga.predictMotion = true;
+  tp.ga.refineEvaluations = 100;
+  tp.ga.restartGenerations = 30;
+  pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::ServoParams(), pm::lab::LoopParams(), [&](const vpHomogeneousMatrix &wMh0) {
+    return std::make_unique<pm::sim::TcRobot>(wMh0, pm::Phi{0, 0, 500, 0, 0, 0}, 0, 30.0, 0.2, 200.0, 500.0);
+  });
+  loop.setFaults(faults);
+  const vpColVector vmax = loop.robot().speedLimits(), amax = loop.robot().accelerationLimits();
+  FaultRun run;
+  vpColVector prev(7, 0.0);
+  for (int k = 0; k < frames; ++k) {
+    run.frames.push_back(loop.step());
+    const vpColVector &qd = run.frames.back().qdot;
+    for (unsigned i = 0; i < 7; ++i) {
+      EXPECT_TRUE(std::isfinite(qd[i])) << "frame " << k;
+      EXPECT_LE(std::fabs(qd[i]), vmax[i] + 1e-9) << "frame " << k << " joint " << i;
+      EXPECT_LE(std::fabs(qd[i] - prev[i]), amax[i] / 30 + 1e-9) << "frame " << k << " joint " << i;
+    }
+    prev = qd;
+  }
+  run.limitHits = loop.robot().limitHits();
+  return run;
+}
+
+//! First frame at or after \e from where the servo runs again and the hand is within \e mm.
+int resumedAt(const FaultRun &r, int from, double mm)
+{
+  for (std::size_t k = static_cast<std::size_t>(from); k < r.frames.size(); ++k)
+    if (r.frames[k].servoing && r.frames[k].translationErrorMm < mm)
+      return static_cast<int>(k);
+  return -1;
+}
+} // namespace
+
+TEST(ClosedLoop, FailSafeUnderBlankFramesAFrozenCameraAndAJump)
+{
+  pm::lab::LoopFaults faults;
+  faults.camera = [](long k) {
+    if (k >= 45 && k < 60)
+      return pm::lab::CameraFault::Blank;
+    if (k >= 100 && k < 115)
+      return pm::lab::CameraFault::Frozen;
+    return pm::lab::CameraFault::None;
+  };
+  faults.jumpFrame = 160; // 40 mm sideways and 5 deg at once
+  faults.wJump.buildFrom(0, 0.04, 0, 0, 0, vpMath::rad(5));
+  const FaultRun r = runWithFaults(faults, 230);
+  ASSERT_EQ(r.frames.size(), 230u);
+  EXPECT_EQ(r.limitHits, 0);
+  EXPECT_GE(resumedAt(r, 0, 20), 0) << "never locked on before the faults";
+  for (int k = 45; k < 60; ++k) // blank: no servoing, the arm ramps down to a stop
+    EXPECT_FALSE(r.frames[static_cast<std::size_t>(k)].servoing) << k;
+  EXPECT_EQ(r.frames[59].qdot.frobeniusNorm(), 0.0);
+  for (int k = 101; k < 115; ++k) // frozen (the first frozen pair is a new one)
+    EXPECT_TRUE(r.frames[static_cast<std::size_t>(k)].frozen && !r.frames[static_cast<std::size_t>(k)].servoing) << k;
+  // It resumes after each fault, within a second, back within 20 mm of the desired pose.
+  for (int end : {60, 115, 160}) {
+    const int at = resumedAt(r, end, 20);
+    EXPECT_GE(at, end) << "no resumption after the fault ending at frame " << end;
+    EXPECT_LE(at, end + 30) << "slow resumption after the fault ending at frame " << end;
+  }
+  EXPECT_LT(r.frames.back().translationErrorMm, 20.0);
+}
+
+TEST(ClosedLoop, FailSafeWithAWrongModel)
+{
+  // The tracker is given the photo-model of another target (C01, the seahorse, for the crab C12): it
+  // never finds a pose good enough to servo on, so the arm never moves.
+  const FaultRun r = runWithFaults(pm::lab::LoopFaults(), 90, "C01");
+  EXPECT_EQ(r.limitHits, 0);
+  for (const auto &f : r.frames) {
+    EXPECT_FALSE(f.servoing) << "t = " << f.t << " s, q = " << f.track.quality;
+    EXPECT_EQ(f.qdot.frobeniusNorm(), 0.0) << "t = " << f.t << " s";
+  }
 }

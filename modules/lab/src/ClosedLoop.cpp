@@ -1,5 +1,6 @@
 #include "pm/lab/ClosedLoop.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "pm/core/Error.h"
@@ -19,10 +20,12 @@ ClosedLoop::ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim:
                        const TrackerParams &tp, const ServoParams &sp, const LoopParams &lp,
                        const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &)> &makeTc)
     : m_rig(rig), m_scene(scene), m_oMm(model.oMm), m_hdMo(sp.hdMo), m_lp(lp), m_tracker(rig, model.build.model, tp),
-      m_servo(sp), m_filter(lp.filterParams)
+      m_servo(sp), m_safe(m_robot.speedLimits(), m_robot.accelerationLimits()), m_filter(lp.filterParams)
 {
   if (!(lp.fps > 0 && lp.robotDt > 0 && lp.robotDt <= 1.0 / lp.fps))
     throw Error("closed loop: the frame rate must be positive and the robot step at most a frame");
+  if (!(lp.qualityDrop > 0 && lp.qualityMemoryPerS >= 0))
+    throw Error("closed loop: the quality drop must be positive and its memory rate non-negative");
   m_robot.setPosition(vpRobot::JOINT_STATE, lp.q0);
   m_robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
   // The target starts at the desired pose in front of the hand.
@@ -38,12 +41,29 @@ LoopFrame ClosedLoop::step()
   f.t = time();
   f.moving = m_tc->moving(f.t);
   const vpHomogeneousMatrix fMh = m_robot.fMe();
-  const vpHomogeneousMatrix hMo = fMh.inverse() * m_tc->wMo(f.t); // the toy in the hand frame
+  vpHomogeneousMatrix wMo = m_tc->wMo(f.t);
+  if (m_faults.jumpFrame >= 0 && m_frame >= m_faults.jumpFrame)
+    wMo = m_faults.wJump * wMo;
+  const vpHomogeneousMatrix hMo = fMh.inverse() * wMo; // the toy in the hand frame
   f.hMmTrue = hMo * m_oMm;
-  m_images = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(m_frame));
+  f.fault = m_faults.camera ? m_faults.camera(m_frame) : CameraFault::None;
+  if (f.fault == CameraFault::Blank) {
+    m_images.left.resize(m_rig.left.height, m_rig.left.width, vpRGBa(0, 0, 0, 255));
+    m_images.right.resize(m_rig.right.height, m_rig.right.width, vpRGBa(0, 0, 0, 255));
+  } else if (f.fault == CameraFault::None || m_frame == 0) {
+    m_images = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(m_frame));
+  } // frozen: the last pair again
+  f.frozen = m_frame > 0 && m_images.left == m_last.left && m_images.right == m_last.right;
+  m_last = m_images;
   // The tracker runs in both modes (its estimate is recorded); the oracle servos on the truth.
   f.track = m_tracker.track(m_images.left, m_images.right);
-  const bool usable = m_lp.oracle || f.track.state == TrackState::Tracking;
+  m_qRef -= m_lp.qualityMemoryPerS / m_lp.fps;
+  const bool usable = m_lp.oracle || (f.track.state == TrackState::Tracking && !f.frozen &&
+                                      f.track.quality >= m_tracker.params().lostQuality &&
+                                      f.track.quality >= m_qRef - m_lp.qualityDrop && f.track.phi.isValid() &&
+                                      m_tracker.params().space.contains(f.track.phi));
+  if (usable)
+    m_qRef = std::max(m_qRef, f.track.quality);
   vpColVector twist;
   if (m_lp.oracle) {
     f.hMmUsed = f.hMmTrue;
@@ -58,14 +78,19 @@ LoopFrame ClosedLoop::step()
   }
   vpMatrix eJe;
   m_robot.get_eJe(eJe);
-  vpColVector qdot;
+  vpColVector wanted;
+  f.servoing = usable;
   if (usable) {
-    qdot = m_servo.computeJointVelocity(f.hMmUsed, fMh, eJe, m_robot.q(), m_robot.jointMin(), m_robot.jointMax(),
-                                        1.0 / m_lp.fps, twist.size() == 6 ? &twist : nullptr);
-    f.servoing = true;
-  } else {
-    qdot = m_servo.stop(sim::RobotPA10::kDof); // fail-safe
+    try {
+      wanted = m_servo.computeJointVelocity(f.hMmUsed, fMh, eJe, m_robot.q(), m_robot.jointMin(), m_robot.jointMax(),
+                                            1.0 / m_lp.fps, twist.size() == 6 ? &twist : nullptr);
+    } catch (const Error &) { // a pose vpServo must not see
+      f.servoing = false;
+    }
   }
+  if (!f.servoing)
+    wanted = m_servo.stop(sim::RobotPA10::kDof); // fail-safe: SafeCommand ramps down to it
+  const vpColVector qdot = m_safe.next(wanted, 1.0 / m_lp.fps);
   m_robot.setVelocity(vpRobot::JOINT_STATE, qdot);
   f.qdot = m_robot.qdot(); // as clamped to the speed limits
   const int n = std::max(1, static_cast<int>(std::lround(1.0 / m_lp.fps / m_lp.robotDt)));

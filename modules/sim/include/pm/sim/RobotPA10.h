@@ -57,6 +57,12 @@ public:
   vpColVector jointMin() const;
   vpColVector jointMax() const;
   vpColVector speedLimits() const;
+  /*!
+    Acceleration limits (rad/s^2) for the commands: 2, 2, 4, 4, 4 pi, 4 pi, 4 pi, i.e. each joint
+    from rest to full speed in 0.5 s. Our choice (the PA-10's servo amplifiers' figures were not
+    found); pm::SafeCommand holds the commands to them.
+  */
+  vpColVector accelerationLimits() const;
   //! Times a joint reached its limit and was stopped there (should stay 0).
   int limitHits() const { return m_limitHits; }
 
