@@ -187,7 +187,7 @@ TEST(ClosedLoop, OracleFollowsAStepOfTheTarget)
       EXPECT_GE(f.q[i], loop.robot().jointMin()[i]);
     }
   }
-  EXPECT_LT(maxMoving, 10.0);          // the hand keeps up with the move
+  EXPECT_LT(maxMoving, 10.0) << "max error while moving";          // the hand keeps up with the move
   EXPECT_LT(f.translationErrorMm, 2.0); // and settles
   EXPECT_LT(f.rotationErrorDeg, 0.5);
   EXPECT_EQ(loop.robot().limitHits(), 0);
