@@ -214,7 +214,7 @@ TEST(SafeCommand, StopsAndStartsWithinTheLimits)
     prev = c;
     ++frames;
   }
-  EXPECT_EQ(frames, 15); // 1 rad/s at 2 rad/s^2: 0.5 s
+  EXPECT_EQ(frames, 6); // 1 rad/s at 5 rad/s^2: 0.2 s
   // A NaN is a stop, reached by a ramp.
   wanted[2] = NAN;
   frames = 0;
@@ -224,7 +224,7 @@ TEST(SafeCommand, StopsAndStartsWithinTheLimits)
     prev = c;
     ++frames;
   }
-  EXPECT_EQ(frames, 15);
+  EXPECT_EQ(frames, 6);
   EXPECT_THROW(safe.next(wanted, 0), pm::Error);
   EXPECT_THROW(pm::SafeCommand(vmax, vpColVector(3, 1.0)), pm::Error);
 }

@@ -204,6 +204,6 @@ vpColVector RobotPA10::speedLimits() const
   return v;
 }
 
-vpColVector RobotPA10::accelerationLimits() const { return speedLimits() * 2.0; }
+vpColVector RobotPA10::accelerationLimits() const { return speedLimits() * 5.0; }
 
 } // namespace pm::sim

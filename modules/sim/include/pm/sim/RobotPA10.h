@@ -58,9 +58,10 @@ public:
   vpColVector jointMax() const;
   vpColVector speedLimits() const;
   /*!
-    Acceleration limits (rad/s^2) for the commands: 2, 2, 4, 4, 4 pi, 4 pi, 4 pi, i.e. each joint
-    from rest to full speed in 0.5 s. Our choice (the PA-10's servo amplifiers' figures were not
-    found); pm::SafeCommand holds the commands to them.
+    Acceleration limits (rad/s^2) for the commands: 5, 5, 10, 10, 10 pi, 10 pi, 10 pi, i.e. each
+    joint from rest to full speed in 0.2 s. Our choice (the PA-10's servo amplifiers' figures were
+    not found; with 0.5 s the hand overshot the end of Table 2's moves by 20 mm); pm::SafeCommand
+    holds the commands to them.
   */
   vpColVector accelerationLimits() const;
   //! Times a joint reached its limit and was stopped there (should stay 0).
