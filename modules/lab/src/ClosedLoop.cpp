@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "pm/core/Error.h"
 
@@ -47,14 +48,17 @@ LoopFrame ClosedLoop::step()
   const vpHomogeneousMatrix hMo = fMh.inverse() * wMo; // the toy in the hand frame
   f.hMmTrue = hMo * m_oMm;
   f.fault = m_faults.camera ? m_faults.camera(m_frame) : CameraFault::None;
+  sim::StereoImages next;
   if (f.fault == CameraFault::Blank) {
-    m_images.left.resize(m_rig.left.height, m_rig.left.width, vpRGBa(0, 0, 0, 255));
-    m_images.right.resize(m_rig.right.height, m_rig.right.width, vpRGBa(0, 0, 0, 255));
+    next.left.resize(m_rig.left.height, m_rig.left.width, vpRGBa(0, 0, 0, 255));
+    next.right.resize(m_rig.right.height, m_rig.right.width, vpRGBa(0, 0, 0, 255));
   } else if (f.fault == CameraFault::None || m_frame == 0) {
-    m_images = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(m_frame));
-  } // frozen: the last pair again
-  f.frozen = m_frame > 0 && m_images.left == m_last.left && m_images.right == m_last.right;
-  m_last = m_images;
+    next = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(m_frame));
+  } else {
+    next = m_images; // frozen: the last pair again
+  }
+  f.frozen = m_frame > 0 && next.left == m_images.left && next.right == m_images.right;
+  m_images = std::move(next);
   // The tracker runs in both modes (its estimate is recorded); the oracle servos on the truth.
   f.track = m_tracker.track(m_images.left, m_images.right);
   m_qRef -= m_lp.qualityMemoryPerS / m_lp.fps;

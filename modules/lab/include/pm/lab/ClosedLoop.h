@@ -112,7 +112,7 @@ private:
   SafeCommand m_safe;            //!< after m_robot: made from its limits
   LoopFaults m_faults;
   std::unique_ptr<sim::TcRobot> m_tc;
-  sim::StereoImages m_images, m_last; //!< this frame's pair, and the last one (to tell a frozen camera)
+  sim::StereoImages m_images;
   long m_frame = 0;
   double m_qRef = 0;             //!< the recent best quality (see LoopParams::qualityDrop)
   PoseFilter m_filter;           //!< the target's estimated pose in the base frame
