@@ -14,6 +14,8 @@
 
 #include <unistd.h>
 
+#include "pm/core/Error.h"
+
 namespace pm::fuzz {
 
 //! A folder of this process's own under the system's temporary folder, made on first use.
@@ -39,6 +41,16 @@ inline std::string writeScratch(const std::string &name, const std::uint8_t *dat
 inline std::string writeScratch(const std::string &name, const std::string &text)
 {
   return writeScratch(name, reinterpret_cast<const std::uint8_t *>(text.data()), text.size());
+}
+
+//! Runs \e load: a pm::Error is a refusal, which is fine; anything else escapes, a finding.
+template <class Load>
+void loadOrRefuse(Load &&load)
+{
+  try {
+    load();
+  } catch (const pm::Error &) {
+  }
 }
 
 } // namespace pm::fuzz

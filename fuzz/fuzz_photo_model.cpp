@@ -1,14 +1,10 @@
 // Fuzz target: the photo-model file (pm::io::loadPhotoModel).
 #include "FuzzFile.h"
-#include "pm/core/Error.h"
 #include "pm/io/PhotoModelFile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
   const std::string path = pm::fuzz::writeScratch("model.json", data, size);
-  try {
-    (void)pm::io::loadPhotoModel(path);
-  } catch (const pm::Error &) {
-  }
+  pm::fuzz::loadOrRefuse([&] { (void)pm::io::loadPhotoModel(path); });
   return 0;
 }

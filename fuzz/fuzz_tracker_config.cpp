@@ -1,14 +1,10 @@
 // Fuzz target: the tracker's configuration file (pm::io::loadTrackerConfig).
 #include "FuzzFile.h"
-#include "pm/core/Error.h"
 #include "pm/io/TrackerConfigFile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
   const std::string path = pm::fuzz::writeScratch("tracker.json", data, size);
-  try {
-    (void)pm::io::loadTrackerConfig(path);
-  } catch (const pm::Error &) {
-  }
+  pm::fuzz::loadOrRefuse([&] { (void)pm::io::loadTrackerConfig(path); });
   return 0;
 }
