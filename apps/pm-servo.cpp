@@ -24,6 +24,7 @@
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/lab/ClosedLoop.h"
+#include "pm/lab/RunLog.h"
 #include "pm/sim/TargetCatalog.h"
 
 namespace {
@@ -47,6 +48,34 @@ cv::Mat toMat(const vpImage<vpRGBa> &I)
       m.at<cv::Vec3b>(static_cast<int>(v), static_cast<int>(u)) = cv::Vec3b(p.B, p.G, p.R);
     }
   return m;
+}
+
+void writeCsvHeader(std::ostream &csv)
+{
+  csv << std::setprecision(8) << "t,moving,true_x,true_y,true_z,true_e1,true_e2,true_e3,used_x,used_y,used_z,used_e1,used_e2,used_e3,"
+         "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms";
+  for (int i = 1; i <= 7; ++i)
+    csv << ",q" << i;
+  for (int i = 1; i <= 7; ++i)
+    csv << ",qdot" << i;
+  csv << "\n";
+}
+
+void writeCsvRow(std::ostream &csv, const pm::lab::LoopFrame &f, bool oracle)
+{
+  const pm::Phi a = pm::fromHomogeneousMatrix(f.hMmTrue), b = pm::fromHomogeneousMatrix(f.hMmUsed);
+  csv << f.t << "," << (f.moving ? 1 : 0);
+  for (std::size_t i = 0; i < 6; ++i)
+    csv << "," << a[i];
+  for (std::size_t i = 0; i < 6; ++i)
+    csv << "," << b[i];
+  csv << "," << f.translationErrorMm << "," << f.rotationErrorDeg << "," << f.track.fitness << ","
+      << (oracle ? "oracle" : pm::toString(f.track.state)) << "," << (f.servoing ? 1 : 0) << "," << f.track.computeMs;
+  for (unsigned i = 0; i < 7; ++i)
+    csv << "," << f.q[i];
+  for (unsigned i = 0; i < 7; ++i)
+    csv << "," << f.qdot[i];
+  csv << "\n";
 }
 
 struct RunSummary
@@ -227,8 +256,12 @@ int main(int argc, char **argv)
       return std::make_unique<pm::sim::TcRobot>(wMh0, phi0, ax, amplitude, frequency, maxVelocity, maxAcceleration);
     };
     pm::lab::ClosedLoop loop(rig, scene, sm, tp, servo, lp, makeTc);
-    std::vector<pm::lab::LoopFrame> rec;
-    rec.reserve(static_cast<std::size_t>(nFrames));
+    // Nothing here grows with the run: frames.csv is written as the frames come, the figures are
+    // computed online and the plots drawn from a decimated record (pm::lab::RunLog).
+    pm::lab::RunLog log(nFrames, fps, loop.robot());
+    std::ofstream csv(files.stage("frames.csv"));
+    writeCsvHeader(csv);
+    std::vector<double> memoryMb; // resident memory at the start of each tenth of the run, and at its end
     cv::VideoWriter video;
     const std::string videoPath = noVideo ? "" : files.stage("servo.avi");
     // The video at half size and half rate (15 fps for 30 fps cameras): a minute of servoing in ~30 MB.
@@ -237,8 +270,11 @@ int main(int argc, char **argv)
       throw pm::Error("cannot write the video '" + files.finalPath("servo.avi") + "' (OpenCV's MJPG writer failed)");
     int overlays = 0;
     for (long k = 0; k < nFrames; ++k) {
+      if (k * 10 / nFrames >= static_cast<long>(memoryMb.size()))
+        memoryMb.push_back(pm::app::residentMemoryMb());
       const pm::lab::LoopFrame f = loop.step();
-      rec.push_back(f);
+      log.add(f);
+      writeCsvRow(csv, f, lp.oracle);
       const bool wantOverlay = overlayEvery > 0 && k % overlayEvery == 0;
       const bool wantVideo = !noVideo && k % 2 == 0;
       if (wantVideo || wantOverlay) {
@@ -264,75 +300,21 @@ int main(int argc, char **argv)
       progress.step();
     }
     progress.finish();
+    memoryMb.push_back(pm::app::residentMemoryMb());
+    log.finish();
     if (!noVideo)
       video.release();
+    csv.close();
+    if (!csv)
+      throw pm::Error("cannot write " + files.finalPath("frames.csv"));
 
-    // Convergence: the true relative pose within 10 mm and 2 deg of the desired one for 1 s.
-    const std::size_t window = static_cast<std::size_t>(std::lround(fps));
-    long converged = -1;
-    for (std::size_t k = 0; k < rec.size() && converged < 0; ++k) {
-      bool ok = true;
-      for (std::size_t j = k; j < std::min(rec.size(), k + window) && ok; ++j)
-        ok = rec[j].translationErrorMm <= 10 && rec[j].rotationErrorDeg <= 2;
-      if (ok)
-        converged = static_cast<long>(k);
-    }
-    struct Stat
-    {
-      double s2 = 0, mx = 0, r2 = 0, rmx = 0;
-      std::size_t n = 0;
-    } rest, moving;
-    for (std::size_t k = converged < 0 ? 0 : static_cast<std::size_t>(converged); k < rec.size(); ++k) {
-      Stat &s = rec[k].moving ? moving : rest;
-      s.s2 += rec[k].translationErrorMm * rec[k].translationErrorMm;
-      s.mx = std::max(s.mx, rec[k].translationErrorMm);
-      s.r2 += rec[k].rotationErrorDeg * rec[k].rotationErrorDeg;
-      s.rmx = std::max(s.rmx, rec[k].rotationErrorDeg);
-      ++s.n;
-    }
-    auto rms = [](double s2, std::size_t n) { return n ? std::sqrt(s2 / static_cast<double>(n)) : 0.0; };
-    std::vector<double> ms;
-    int violations = loop.robot().limitHits();
-    const vpColVector qmin = loop.robot().jointMin(), qmax = loop.robot().jointMax(), vmax = loop.robot().speedLimits();
-    double maxJointSpeedRatio = 0;
-    for (const auto &f : rec) {
-      ms.push_back(f.track.computeMs);
-      for (unsigned i = 0; i < 7; ++i) {
-        violations += (f.q[i] < qmin[i] || f.q[i] > qmax[i]) ? 1 : 0;
-        maxJointSpeedRatio = std::max(maxJointSpeedRatio, std::fabs(f.qdot[i]) / vmax[i]);
-      }
-    }
-    const double meanMs = std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
-
-    {
-      std::ofstream csv(files.stage("frames.csv"));
-      csv << std::setprecision(8) << "t,moving,true_x,true_y,true_z,true_e1,true_e2,true_e3,used_x,used_y,used_z,used_e1,used_e2,used_e3,"
-             "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms";
-      for (int i = 1; i <= 7; ++i)
-        csv << ",q" << i;
-      for (int i = 1; i <= 7; ++i)
-        csv << ",qdot" << i;
-      csv << "\n";
-      for (const auto &f : rec) {
-        const pm::Phi a = pm::fromHomogeneousMatrix(f.hMmTrue), b = pm::fromHomogeneousMatrix(f.hMmUsed);
-        csv << f.t << "," << (f.moving ? 1 : 0);
-        for (std::size_t i = 0; i < 6; ++i)
-          csv << "," << a[i];
-        for (std::size_t i = 0; i < 6; ++i)
-          csv << "," << b[i];
-        csv << "," << f.translationErrorMm << "," << f.rotationErrorDeg << "," << f.track.fitness << ","
-            << (lp.oracle ? "oracle" : pm::toString(f.track.state)) << "," << (f.servoing ? 1 : 0) << "," << f.track.computeMs;
-        for (unsigned i = 0; i < 7; ++i)
-          csv << "," << f.q[i];
-        for (unsigned i = 0; i < 7; ++i)
-          csv << "," << f.qdot[i];
-        csv << "\n";
-      }
-      if (!csv)
-        throw pm::Error("cannot write " + files.finalPath("frames.csv"));
-    }
-    // Figures.
-    const std::vector<double> marks = converged >= 0 ? std::vector<double>{rec[static_cast<std::size_t>(converged)].t} : std::vector<double>{};
+    const int violations = loop.robot().limitHits() + log.jointLimitViolations();
+    const double meanMs = log.meanComputeMs();
+    const pm::lab::ErrorStats &rest = log.atRest(), &moving = log.moving();
+    // Figures (the plotted errors are the maxima over the frames each sample stands for).
+    const std::vector<pm::lab::RunSample> &rec = log.samples();
+    const std::string every = log.framesPerSample() > 1 ? " (max of every " + std::to_string(log.framesPerSample()) + " frames)" : "";
+    const std::vector<double> marks = log.converged() ? std::vector<double>{log.convergedAfterS()} : std::vector<double>{};
     pm::app::Series te{"translation", vpRGBa(40, 90, 200), {}, {}, false}, re{"rotation", vpRGBa(220, 60, 40), {}, {}, false};
     for (const auto &f : rec) {
       te.t.push_back(f.t);
@@ -340,19 +322,20 @@ int main(int argc, char **argv)
       re.t.push_back(f.t);
       re.y.push_back(f.rotationErrorDeg);
     }
-    pm::io::writeImage(pm::app::drawTimePlots({{"relative pose error, translation (goal 10 mm moving, 2 mm at rest)", "mm", {te}, 10, marks},
-                                               {"relative pose error, rotation (goal 2 deg moving, 0.5 deg at rest)", "deg", {re}, 2, marks}},
-                                              2, std::string("PA-10 following ") + scene.target().info.name +
-                                                     (lp.oracle ? " (oracle: true pose)" : " (photo-model tracker)")),
+    pm::io::writeImage(pm::app::drawTimePlots({{"relative pose error, translation (goal 10 mm moving, 2 mm at rest)" + every, "mm", {te}, 10, marks},
+                                               {"relative pose error, rotation (goal 2 deg moving, 0.5 deg at rest)" + every, "deg", {re}, 2, marks}},
+                                              1, std::string("PA-10 following ") + scene.target().info.name +
+                                                     (lp.oracle ? " (oracle: true pose)" : " (photo-model tracker)"),
+                                              "time [s]", 860),
                        files.stage("errors.png"));
     std::vector<pm::app::Panel> rel;
     for (std::size_t i = 0; i < 6; ++i) {
       pm::app::Series a{"truth", vpRGBa(40, 40, 40), {}, {}, true}, b{"used by the servo", vpRGBa(220, 60, 40), {}, {}, false};
       for (const auto &f : rec) {
         a.t.push_back(f.t);
-        a.y.push_back(pm::fromHomogeneousMatrix(f.hMmTrue)[i]);
+        a.y.push_back(f.truth[i]);
         b.t.push_back(f.t);
-        b.y.push_back(pm::fromHomogeneousMatrix(f.hMmUsed)[i]);
+        b.y.push_back(f.used[i]);
       }
       rel.push_back({std::string("target in the hand frame: ") + (i < 3 ? std::string(1, "xyz"[i]) : std::string("eps") + std::to_string(i - 2)),
                      i < 3 ? "mm" : "", {a, b}, 0, marks});
@@ -371,18 +354,27 @@ int main(int argc, char **argv)
     }
     pm::io::writeImage(pm::app::drawTimePlots({{"PA-10 joints", "deg", js, 0, marks}}, 1, "joint trajectories"), files.stage("joints.png"));
 
+    nlohmann::json tenths = nlohmann::json::array();
+    for (const auto &s : log.tenths())
+      tenths.push_back({{"frames", s.frames}, {"rms_error_mm", s.rmsMm()}, {"max_error_mm", s.maxMm}, {"rms_rotation_error_deg", s.rmsDeg()},
+                        {"max_rotation_error_deg", s.maxDeg}});
+    nlohmann::json memory = nlohmann::json::array();
+    for (double m : memoryMb)
+      memory.push_back(std::isfinite(m) ? nlohmann::json(m) : nlohmann::json());
     const nlohmann::json summary{
         {"target", scene.target().info.code},
         {"trajectory", trajectory == "steps" ? "steps (" + std::to_string(waypoints.size()) + ")" : "sine " + axis + " " + std::to_string(amplitude) + " at " + std::to_string(frequency) + " Hz"},
         {"oracle", lp.oracle},
-        {"frames", rec.size()},
-        {"converged_after_s", converged >= 0 ? nlohmann::json(rec[static_cast<std::size_t>(converged)].t) : nlohmann::json()},
-        {"rms_error_mm", {{"at_rest", rms(rest.s2, rest.n)}, {"moving", rms(moving.s2, moving.n)}}},
-        {"max_error_mm", {{"at_rest", rest.mx}, {"moving", moving.mx}}},
-        {"rms_rotation_error_deg", {{"at_rest", rms(rest.r2, rest.n)}, {"moving", rms(moving.r2, moving.n)}}},
-        {"max_rotation_error_deg", {{"at_rest", rest.rmx}, {"moving", moving.rmx}}},
+        {"frames", log.frames()},
+        {"converged_after_s", log.converged() ? nlohmann::json(log.convergedAfterS()) : nlohmann::json()},
+        {"rms_error_mm", {{"at_rest", rest.rmsMm()}, {"moving", moving.rmsMm()}}},
+        {"max_error_mm", {{"at_rest", rest.maxMm}, {"moving", moving.maxMm}}},
+        {"rms_rotation_error_deg", {{"at_rest", rest.rmsDeg()}, {"moving", moving.rmsDeg()}}},
+        {"max_rotation_error_deg", {{"at_rest", rest.maxDeg}, {"moving", moving.maxDeg}}},
+        {"by_tenth_of_the_run", tenths},
+        {"resident_memory_mb", memory},
         {"joint_limit_violations", violations},
-        {"max_joint_speed_fraction", maxJointSpeedRatio},
+        {"max_joint_speed_fraction", log.maxJointSpeedFraction()},
         {"mean_frame_ms", meanMs},
         {"overlays", overlays},
         {"video", noVideo ? "" : "servo.avi"}};
@@ -391,15 +383,15 @@ int main(int argc, char **argv)
     if (!quiet) {
       std::cout << std::fixed << std::setprecision(2) << "PA-10 following " << scene.target().info.code << " ("
                 << scene.target().info.name << "), " << summary["trajectory"].get<std::string>() << ", "
-                << (lp.oracle ? "oracle pose" : "photo-model tracker") << ", " << rec.size() << " frames\n";
-      if (converged >= 0)
-        std::cout << "  converged after " << rec[static_cast<std::size_t>(converged)].t << " s\n";
+                << (lp.oracle ? "oracle pose" : "photo-model tracker") << ", " << log.frames() << " frames\n";
+      if (log.converged())
+        std::cout << "  converged after " << log.convergedAfterS() << " s\n";
       else
         std::cout << "  never within 10 mm and 2 deg for 1 s\n";
-      std::cout << "  relative pose error at rest: rms " << rms(rest.s2, rest.n) << " mm, max " << rest.mx << " mm; rotation rms "
-                << rms(rest.r2, rest.n) << " deg, max " << rest.rmx << " deg\n"
-                << "  while moving: rms " << rms(moving.s2, moving.n) << " mm, max " << moving.mx << " mm; rotation rms "
-                << rms(moving.r2, moving.n) << " deg, max " << moving.rmx << " deg\n"
+      std::cout << "  relative pose error at rest: rms " << rest.rmsMm() << " mm, max " << rest.maxMm << " mm; rotation rms "
+                << rest.rmsDeg() << " deg, max " << rest.maxDeg << " deg\n"
+                << "  while moving: rms " << moving.rmsMm() << " mm, max " << moving.maxMm << " mm; rotation rms "
+                << moving.rmsDeg() << " deg, max " << moving.maxDeg << " deg\n"
                 << "  joint limit violations " << violations << ", tracker " << meanMs << " ms per frame\n"
                 << "  written to " << files.dir() << "/ (frames.csv, errors.png, relative_pose.png, joints.png, "
                 << (noVideo ? "" : "servo.avi, ") << "summary.json)" << std::endl;

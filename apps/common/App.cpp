@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <iostream>
 #include <sstream>
 
@@ -115,6 +117,20 @@ std::vector<double> parseNumbers(const std::string &text, std::size_t n, const s
   if (v.size() != n)
     throw CLI::ValidationError(what, "expects " + std::to_string(n) + " comma-separated numbers, got '" + text + "'");
   return v;
+}
+
+double residentMemoryMb()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmRSS:", 0) == 0) {
+      std::istringstream in(line.substr(6));
+      double kb = 0;
+      if (in >> kb)
+        return kb / 1024.0;
+    }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 } // namespace pm::app

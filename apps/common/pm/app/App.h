@@ -31,4 +31,7 @@ std::string frameFileName(const std::string &pattern, int index);
 //! Parses "a,b,c,..." into exactly \e n numbers; throws CLI::ValidationError otherwise.
 std::vector<double> parseNumbers(const std::string &text, std::size_t n, const std::string &what);
 
+//! This process's resident memory (VmRSS of /proc/self/status) in MB; NaN where it cannot be read.
+double residentMemoryMb();
+
 } // namespace pm::app

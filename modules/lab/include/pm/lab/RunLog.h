@@ -1,0 +1,100 @@
+#pragma once
+/*!
+  \file RunLog.h
+  What a closed-loop run leaves behind, in memory that does not grow with the run: the figures
+  of the run computed online (convergence, errors at rest and while moving, per tenth of the run,
+  joint checks, tracker time) and a decimated record for the plots (at most \e maxSamples
+  samples; each keeps the largest errors of the frames it stands for, so no peak is lost).
+
+  \code
+    pm::lab::RunLog log(nFrames, fps, robot);
+    for (long k = 0; k < nFrames; ++k) { const LoopFrame f = loop.step(); writeCsvRow(f); log.add(f); }
+    log.finish();
+    log.convergedAfterS(); log.atRest(); log.samples();
+  \endcode
+*/
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include <visp3/core/vpColVector.h>
+
+#include "pm/core/Pose.h"
+#include "pm/lab/ClosedLoop.h"
+
+namespace pm::lab {
+
+//! Error statistics of a set of frames.
+struct ErrorStats
+{
+  std::size_t frames = 0;
+  double sumSquaredMm = 0, maxMm = 0, sumSquaredDeg = 0, maxDeg = 0;
+  void add(double mm, double deg);
+  void add(const ErrorStats &o);
+  double rmsMm() const;
+  double rmsDeg() const;
+};
+
+//! One plot sample: the first frame of a bucket of frames, with the bucket's largest errors.
+struct RunSample
+{
+  double t = 0;
+  double translationErrorMm = 0, rotationErrorDeg = 0; //!< maxima over the bucket
+  Phi truth{}, used{};                                 //!< the relative pose at the bucket's first frame
+  std::array<double, 7> q{};                           //!< the joints at the bucket's first frame (rad)
+};
+
+class RunLog
+{
+public:
+  /*!
+    \e expectedFrames: the run's length (sets the decimation and the tenths). More frames are
+    accepted: they count in the last tenth, and the samples are merged by pairs when they reach
+    twice \e maxSamples, so memory stays bounded. \e robot gives the joint and speed limits.
+    Convergence: the true relative pose within \e convergedMm and \e convergedDeg for 1 s.
+  */
+  RunLog(long expectedFrames, double fps, const sim::RobotPA10 &robot, std::size_t maxSamples = 4000,
+         double convergedMm = 10, double convergedDeg = 2);
+
+  void add(const LoopFrame &f);
+  //! Closes the last bucket and the convergence (a run within the bounds at its very end counts).
+  void finish();
+
+  long frames() const { return m_frames; }
+  //! The time from which the run stayed within the bounds for 1 s; negative if never.
+  double convergedAfterS() const { return m_convergedT; }
+  bool converged() const { return m_convergedT >= 0; }
+  //! From convergence on (the whole run if it never converged).
+  const ErrorStats &atRest() const { return converged() ? m_rest : m_allRest; }
+  const ErrorStats &moving() const { return converged() ? m_moving : m_allMoving; }
+  //! All frames of each tenth of the expected run (to see a drift).
+  const std::array<ErrorStats, 10> &tenths() const { return m_tenths; }
+  int jointLimitViolations() const { return m_violations; }
+  double maxJointSpeedFraction() const { return m_maxSpeedFraction; }
+  double meanComputeMs() const { return m_frames ? m_sumMs / static_cast<double>(m_frames) : 0; }
+  const std::vector<RunSample> &samples() const { return m_samples; }
+  long framesPerSample() const { return m_bucket; }
+
+private:
+  void halveSamples();
+
+  long m_expected, m_bucket, m_window;
+  double m_mm, m_deg;
+  vpColVector m_qmin, m_qmax, m_vmax;
+  std::size_t m_maxSamples;
+  long m_frames = 0;
+  // Convergence, online: the current run of frames within the bounds, and its statistics.
+  long m_runLength = 0;
+  double m_runStartT = 0;
+  ErrorStats m_runRest, m_runMoving;
+  double m_convergedT = -1;
+  ErrorStats m_rest, m_moving, m_allRest, m_allMoving;
+  std::array<ErrorStats, 10> m_tenths{};
+  int m_violations = 0;
+  double m_maxSpeedFraction = 0, m_sumMs = 0;
+  std::vector<RunSample> m_samples;
+  RunSample m_open;
+  long m_inBucket = 0;
+};
+
+} // namespace pm::lab

@@ -1,0 +1,124 @@
+#include "pm/lab/RunLog.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pm/core/Error.h"
+
+namespace pm::lab {
+
+void ErrorStats::add(double mm, double deg)
+{
+  ++frames;
+  sumSquaredMm += mm * mm;
+  maxMm = std::max(maxMm, mm);
+  sumSquaredDeg += deg * deg;
+  maxDeg = std::max(maxDeg, deg);
+}
+
+void ErrorStats::add(const ErrorStats &o)
+{
+  frames += o.frames;
+  sumSquaredMm += o.sumSquaredMm;
+  maxMm = std::max(maxMm, o.maxMm);
+  sumSquaredDeg += o.sumSquaredDeg;
+  maxDeg = std::max(maxDeg, o.maxDeg);
+}
+
+double ErrorStats::rmsMm() const { return frames ? std::sqrt(sumSquaredMm / static_cast<double>(frames)) : 0.0; }
+double ErrorStats::rmsDeg() const { return frames ? std::sqrt(sumSquaredDeg / static_cast<double>(frames)) : 0.0; }
+
+RunLog::RunLog(long expectedFrames, double fps, const sim::RobotPA10 &robot, std::size_t maxSamples, double convergedMm,
+               double convergedDeg)
+  : m_expected(expectedFrames), m_mm(convergedMm), m_deg(convergedDeg), m_qmin(robot.jointMin()), m_qmax(robot.jointMax()),
+    m_vmax(robot.speedLimits()), m_maxSamples(maxSamples)
+{
+  if (expectedFrames < 1 || maxSamples < 1 || !(fps > 0))
+    throw Error("RunLog: the run needs at least one frame, one plot sample and a positive frame rate");
+  const long ms = static_cast<long>(maxSamples);
+  m_bucket = (expectedFrames + ms - 1) / ms;
+  m_window = std::max(1L, std::lround(fps));
+  m_samples.reserve(2 * maxSamples);
+}
+
+void RunLog::add(const LoopFrame &f)
+{
+  const double mm = f.translationErrorMm, deg = f.rotationErrorDeg;
+  // Convergence: the first frame that starts m_window frames in a row within the bounds.
+  if (!converged()) {
+    if (mm <= m_mm && deg <= m_deg) {
+      if (m_runLength == 0) {
+        m_runStartT = f.t;
+        m_runRest = m_runMoving = ErrorStats{};
+      }
+      ++m_runLength;
+      (f.moving ? m_runMoving : m_runRest).add(mm, deg);
+      if (m_runLength >= m_window) {
+        m_convergedT = m_runStartT;
+        m_rest = m_runRest;
+        m_moving = m_runMoving;
+      }
+    } else
+      m_runLength = 0;
+  } else
+    (f.moving ? m_moving : m_rest).add(mm, deg);
+  (f.moving ? m_allMoving : m_allRest).add(mm, deg);
+  const long tenth = std::min(9L, m_frames * 10 / m_expected);
+  m_tenths[static_cast<std::size_t>(tenth)].add(mm, deg);
+
+  for (unsigned i = 0; i < 7 && i < f.q.size() && i < f.qdot.size(); ++i) {
+    m_violations += (f.q[i] < m_qmin[i] || f.q[i] > m_qmax[i]) ? 1 : 0;
+    m_maxSpeedFraction = std::max(m_maxSpeedFraction, std::fabs(f.qdot[i]) / m_vmax[i]);
+  }
+  m_sumMs += f.track.computeMs;
+
+  if (m_inBucket == 0) {
+    m_open = RunSample{};
+    m_open.t = f.t;
+    m_open.truth = fromHomogeneousMatrix(f.hMmTrue);
+    m_open.used = fromHomogeneousMatrix(f.hMmUsed);
+    for (unsigned i = 0; i < 7 && i < f.q.size(); ++i)
+      m_open.q[i] = f.q[i];
+  }
+  m_open.translationErrorMm = std::max(m_open.translationErrorMm, mm);
+  m_open.rotationErrorDeg = std::max(m_open.rotationErrorDeg, deg);
+  if (++m_inBucket == m_bucket) {
+    m_samples.push_back(m_open);
+    m_inBucket = 0;
+    if (m_samples.size() >= 2 * m_maxSamples)
+      halveSamples();
+  }
+  ++m_frames;
+}
+
+// A run longer than expected: pairs of samples become one, and buckets twice as long.
+void RunLog::halveSamples()
+{
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < m_samples.size(); i += 2, ++j) {
+    RunSample s = m_samples[i];
+    if (i + 1 < m_samples.size()) {
+      s.translationErrorMm = std::max(s.translationErrorMm, m_samples[i + 1].translationErrorMm);
+      s.rotationErrorDeg = std::max(s.rotationErrorDeg, m_samples[i + 1].rotationErrorDeg);
+    }
+    m_samples[j] = s;
+  }
+  m_samples.resize(j);
+  m_bucket *= 2;
+}
+
+void RunLog::finish()
+{
+  if (m_inBucket > 0) {
+    m_samples.push_back(m_open);
+    m_inBucket = 0;
+  }
+  // A run within the bounds that reaches the end of the record counts, as it did in the batch rule.
+  if (!converged() && m_runLength > 0) {
+    m_convergedT = m_runStartT;
+    m_rest = m_runRest;
+    m_moving = m_runMoving;
+  }
+}
+
+} // namespace pm::lab

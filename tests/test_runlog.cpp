@@ -1,0 +1,140 @@
+// RunLog: the online figures of a closed-loop run equal those computed from the whole record,
+// and its memory does not grow with the run.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "pm/lab/RunLog.h"
+
+namespace {
+
+using pm::lab::LoopFrame;
+
+//! A synthetic run: errors large for \e settle frames, then small with rare spikes; moving in blocks.
+std::vector<LoopFrame> syntheticRun(long n, long settle, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<LoopFrame> run;
+  for (long k = 0; k < n; ++k) {
+    LoopFrame f;
+    f.t = static_cast<double>(k) / 30.0;
+    f.moving = (k / 45) % 2 == 1;
+    const bool spike = u(rng) < 0.01;
+    f.translationErrorMm = k < settle ? 20 + 30 * u(rng) : (spike ? 12 + 40 * u(rng) : 8 * u(rng));
+    f.rotationErrorDeg = k < settle ? 3 + 5 * u(rng) : (spike ? 2.5 : 1.5 * u(rng));
+    f.q = pm::lab::LoopParams::startJoints();
+    f.qdot.resize(7);
+    for (unsigned i = 0; i < 7; ++i)
+      f.qdot[i] = 0.5 * (u(rng) - 0.5);
+    f.track.computeMs = 1 + u(rng);
+    run.push_back(f);
+  }
+  return run;
+}
+
+//! The batch rule: the first frame from which 30 frames in a row (1 s) stay within 10 mm and 2 deg.
+long batchConvergence(const std::vector<LoopFrame> &run)
+{
+  for (std::size_t k = 0; k < run.size(); ++k) {
+    bool ok = true;
+    for (std::size_t j = k; j < std::min(run.size(), k + 30) && ok; ++j)
+      ok = run[j].translationErrorMm <= 10 && run[j].rotationErrorDeg <= 2;
+    if (ok)
+      return static_cast<long>(k);
+  }
+  return -1;
+}
+
+} // namespace
+
+TEST(RunLog, OnlineFiguresEqualTheBatchOnes)
+{
+  const pm::sim::RobotPA10 robot;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const std::vector<LoopFrame> run = syntheticRun(3000, 100 * seed, seed);
+    pm::lab::RunLog log(static_cast<long>(run.size()), 30, robot, 500);
+    for (const auto &f : run)
+      log.add(f);
+    log.finish();
+
+    const long c = batchConvergence(run);
+    ASSERT_GE(c, 0) << "seed " << seed;
+    ASSERT_TRUE(log.converged());
+    EXPECT_DOUBLE_EQ(log.convergedAfterS(), run[static_cast<std::size_t>(c)].t) << "seed " << seed;
+    double s2 = 0, mx = 0, r2 = 0, rmx = 0, sumMs = 0;
+    std::size_t n = 0;
+    for (std::size_t k = static_cast<std::size_t>(c); k < run.size(); ++k)
+      if (run[k].moving) {
+        s2 += run[k].translationErrorMm * run[k].translationErrorMm;
+        mx = std::max(mx, run[k].translationErrorMm);
+        r2 += run[k].rotationErrorDeg * run[k].rotationErrorDeg;
+        rmx = std::max(rmx, run[k].rotationErrorDeg);
+        ++n;
+      }
+    for (const auto &f : run)
+      sumMs += f.track.computeMs;
+    EXPECT_EQ(log.moving().frames, n);
+    EXPECT_NEAR(log.moving().rmsMm(), std::sqrt(s2 / static_cast<double>(n)), 1e-9);
+    EXPECT_DOUBLE_EQ(log.moving().maxMm, mx);
+    EXPECT_NEAR(log.moving().rmsDeg(), std::sqrt(r2 / static_cast<double>(n)), 1e-9);
+    EXPECT_DOUBLE_EQ(log.moving().maxDeg, rmx);
+    EXPECT_EQ(log.atRest().frames + log.moving().frames, run.size() - static_cast<std::size_t>(c));
+    EXPECT_NEAR(log.meanComputeMs(), sumMs / static_cast<double>(run.size()), 1e-9);
+    std::size_t inTenths = 0;
+    for (const auto &t : log.tenths()) {
+      EXPECT_EQ(t.frames, run.size() / 10);
+      inTenths += t.frames;
+    }
+    EXPECT_EQ(inTenths, run.size());
+    EXPECT_EQ(log.jointLimitViolations(), 0);
+    EXPECT_LE(log.maxJointSpeedFraction(), 0.25 / robot.speedLimits().getMinValue() + 1e-12);
+  }
+}
+
+TEST(RunLog, NeverConvergedMeansTheWholeRun)
+{
+  const pm::sim::RobotPA10 robot;
+  std::vector<LoopFrame> run = syntheticRun(300, 300, 7); // never within the bounds
+  pm::lab::RunLog log(300, 30, robot);
+  for (const auto &f : run)
+    log.add(f);
+  log.finish();
+  EXPECT_FALSE(log.converged());
+  EXPECT_EQ(log.atRest().frames + log.moving().frames, run.size());
+}
+
+TEST(RunLog, SamplesStayBoundedAndKeepThePeaks)
+{
+  const pm::sim::RobotPA10 robot;
+  const std::vector<LoopFrame> run = syntheticRun(100000, 50, 3);
+  const double peak = std::max_element(run.begin(), run.end(), [](const LoopFrame &a, const LoopFrame &b) {
+                        return a.translationErrorMm < b.translationErrorMm;
+                      })->translationErrorMm;
+  // As expected: 100,000 frames in at most 1,000 samples of 100 frames.
+  pm::lab::RunLog log(100000, 30, robot, 1000);
+  // Longer than announced: 100 times the expected frames still fit in twice the samples.
+  pm::lab::RunLog longer(1000, 30, robot, 1000);
+  for (const auto &f : run) {
+    log.add(f);
+    longer.add(f);
+  }
+  log.finish();
+  longer.finish();
+  EXPECT_EQ(log.samples().size(), 1000u);
+  EXPECT_EQ(log.framesPerSample(), 100);
+  EXPECT_LE(longer.samples().size(), 2000u);
+  EXPECT_GE(longer.samples().size(), 500u);
+  for (const auto *l : {&log, &longer}) {
+    double sampledPeak = 0;
+    for (const auto &s : l->samples())
+      sampledPeak = std::max(sampledPeak, s.translationErrorMm);
+    EXPECT_DOUBLE_EQ(sampledPeak, peak);
+    EXPECT_DOUBLE_EQ(l->samples().front().t, 0.0);
+    EXPECT_LT(l->samples().back().t, run.back().t + 1e-9);
+  }
+  EXPECT_EQ(longer.tenths()[9].frames, run.size() - 900);
+}
