@@ -1,6 +1,7 @@
 // The stereo fitness (Eqs. 8-11): exact scores, wrap-around, off-image points, kernels, threads,
 // errors, and the fitness maps of the 12 targets (Figs. 10, 11).
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <random>
 #include <thread>
@@ -124,6 +125,11 @@ TEST(Fitness, InvalidInputIsRefused)
   fit.setImages(uniform(0, 0, 0), uniform(0, 0, 0));
   EXPECT_THROW(fit.evaluate({0, 0, 500, 0.8, 0.8, 0}), pm::Error);
   EXPECT_THROW(fit.evaluate({NAN, 0, 500, 0, 0, 0}), pm::Error);
+  // One invalid pose in a batch: refused before any thread starts.
+  std::vector<pm::Phi> batch(20, kAhead);
+  batch[13] = {0, 0, 500, 0.8, 0.8, 0};
+  std::vector<double> out(batch.size());
+  EXPECT_THROW(fit.evaluate(batch.data(), batch.size(), out.data()), pm::Error);
   pm::PhotoModel empty = gridModel(0.f);
   empty.inner.clear();
   EXPECT_THROW(pm::StereoFitness(rig, empty), pm::Error);
@@ -218,6 +224,13 @@ TEST_F(FitnessOnC12, ThreadSafeAndBatchEqualsSingle)
   t1.join();
   t2.join();
   EXPECT_EQ(seq, par);
+  // The batch runs on the cores (OpenMP): the same values with one thread.
+  std::vector<double> one(ps.size());
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  fit->evaluate(ps.data(), ps.size(), one.data());
+  omp_set_num_threads(threads);
+  EXPECT_EQ(seq, one);
 }
 
 TEST_F(FitnessOnC12, TruthBeatsPosesThirtyMillimetresOrOneTenthAway)

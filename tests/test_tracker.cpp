@@ -105,6 +105,41 @@ TEST(Tracker, BlankFramesAreLostThenTheTargetIsFoundAgain)
   EXPECT_NEAR(t.lastResult().phi.y, S.truth.y, 2.0);
 }
 
+TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
+{
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(1000);
+  p.steadyBudgetFraction = 0.3;
+  p.steadyAfterFrames = 5;
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  std::vector<pm::TrackResult> r;
+  for (int k = 0; k < 10; ++k)
+    r.push_back(t.track(S.im.left, S.im.right));
+  for (int k = 0; k < 10; ++k) {
+    ASSERT_EQ(r[static_cast<std::size_t>(k)].state, pm::TrackState::Tracking) << "frame " << k;
+    // The first frames of a lock have the whole budget; from the sixth on, the steady one.
+    EXPECT_EQ(r[static_cast<std::size_t>(k)].steady, k >= 5) << "frame " << k;
+    if (k < 5)
+      EXPECT_GT(r[static_cast<std::size_t>(k)].evaluations, 900) << "frame " << k;
+    else
+      EXPECT_LE(r[static_cast<std::size_t>(k)].evaluations, 300) << "frame " << k;
+  }
+  EXPECT_NEAR(r.back().phi.x, S.truth.x, 2.0);
+  EXPECT_NEAR(r.back().phi.y, S.truth.y, 2.0);
+  // A blank frame: still a steady budget for it (it was not known), q falls, so the next has all.
+  const vpImage<vpRGBa> blank(480, 640, vpRGBa(90, 90, 90));
+  const pm::TrackResult b = t.track(blank, blank);
+  EXPECT_TRUE(b.steady);
+  EXPECT_LT(b.quality, 0.2);
+  const pm::TrackResult next = t.track(S.im.left, S.im.right);
+  EXPECT_FALSE(next.steady);
+  EXPECT_GT(next.evaluations, 900);
+  // Out of range: refused.
+  p.steadyBudgetFraction = 0;
+  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::Error);
+}
+
 TEST(Tracker, SameSeedSameEstimates)
 {
   const C12Scene &S = c12();
@@ -145,12 +180,14 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.ga.population = 33;
   p.ga.predictMotion = true;
   p.fitness.inTolDeg = 25;
+  p.steadyBudgetFraction = 0.4;
   pm::test::writeText(d.file("t.json"), pm::io::trackerConfigToJson(p));
   const pm::TrackerParams q = pm::io::loadTrackerConfig(d.file("t.json"));
   EXPECT_EQ(q.budgetEvaluations, 1234);
   EXPECT_EQ(q.ga.population, 33);
   EXPECT_TRUE(q.ga.predictMotion);
   EXPECT_DOUBLE_EQ(q.fitness.inTolDeg, 25);
+  EXPECT_DOUBLE_EQ(q.steadyBudgetFraction, 0.4);
   // Partial files keep the defaults.
   pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
   EXPECT_EQ(pm::io::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
@@ -160,6 +197,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
       {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"populaton":10}})", "populaton"},
       {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"population":"many"}})", "not valid"},
       {R"({"format":"visp-photomodel-tracker","version":1,"lock_quality":0.1,"lost_quality":0.5})", "lost < lock"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"steady_budget_fraction":1.5})", "steady"},
       {"{ not json", "not valid"},
       {R"({"format":"x"})", "format"}};
   for (const auto &[text, expect] : bad) {

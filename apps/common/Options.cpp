@@ -63,6 +63,10 @@ TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m
   add(app.add_option("--budget-evals", p.budgetEvaluations, "compute budget per frame, fitness evaluations "
                                                             "(deterministic; overrides --budget-ms)")->check(CLI::Range(0L, 100000000L)),
       [](TrackerParams &t, const TrackerParams &c) { t.budgetEvaluations = c.budgetEvaluations; });
+  add(app.add_option("--steady-budget", p.steadyBudgetFraction, "fraction of the budget for a steady frame (tracked "
+                                                                "for a while, q near its recent best; 1: all frames alike)")
+          ->check(CLI::Range(0.01, 1.0)),
+      [](TrackerParams &t, const TrackerParams &c) { t.steadyBudgetFraction = c.steadyBudgetFraction; });
   add(app.add_option("--population", p.ga.population, "RM-GA individuals")->check(CLI::Range(2, 100000)),
       [](TrackerParams &t, const TrackerParams &c) { t.ga.population = c.ga.population; });
   add(app.add_option("--elite", p.ga.elite, "RM-GA individuals always kept"),

@@ -39,13 +39,16 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat);
     checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
-                  "init_spread", "search_space", "rmga", "fitness"}, "");
+                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "search_space", "rmga", "fitness"}, "");
     get(j, "budget_ms", p.budgetMs);
     get(j, "budget_evaluations", p.budgetEvaluations);
     get(j, "lock_quality", p.lockQuality);
     get(j, "lost_quality", p.lostQuality);
     get(j, "lost_frames", p.lostFrames);
     get(j, "init_spread", p.initSpread);
+    get(j, "steady_budget_fraction", p.steadyBudgetFraction);
+    get(j, "steady_after_frames", p.steadyAfterFrames);
+    get(j, "steady_quality_drop", p.steadyQualityDrop);
     if (j.contains("search_space")) {
       const json &s = j.at("search_space");
       checkKeys(s, {"lo", "hi"}, " in \"search_space\"");
@@ -100,6 +103,9 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"lost_quality", p.lostQuality},
                {"lost_frames", p.lostFrames},
                {"init_spread", p.initSpread},
+               {"steady_budget_fraction", p.steadyBudgetFraction},
+               {"steady_after_frames", p.steadyAfterFrames},
+               {"steady_quality_drop", p.steadyQualityDrop},
                {"search_space", {{"lo", p.space.lo}, {"hi", p.space.hi}}},
                {"rmga",
                 {{"population", p.ga.population},

@@ -1,6 +1,8 @@
 #include "pm/tracker/PhotoModelTracker.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "pm/core/Error.h"
 
@@ -33,6 +35,16 @@ void TrackerParams::validate() const
     throw Error("tracker: lost frames must be at least 1");
   if (!(initSpread >= 0 && initSpread <= 1))
     throw Error("tracker: the initial spread must lie in [0, 1]");
+  if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1))
+    throw Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1 and the steady "
+                "quality drop lie in [0, 1)");
+}
+
+FrameBudget TrackerParams::steadyBudget() const
+{
+  if (budgetEvaluations > 0)
+    return FrameBudget::evals(std::max<long>(ga.population, std::lround(steadyBudgetFraction * static_cast<double>(budgetEvaluations))));
+  return FrameBudget::ms(steadyBudgetFraction * budgetMs);
 }
 
 namespace {
@@ -78,6 +90,8 @@ void PhotoModelTracker::initialize()
   m_last = TrackResult();
   m_last.state = TrackState::Searching;
   m_lowFrames = 0;
+  m_steadyFrames = 0;
+  m_recentBestQ = 0;
 }
 
 void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
@@ -89,6 +103,8 @@ void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
   m_last.phi = p;
   m_last.state = TrackState::Tracking;
   m_lowFrames = 0;
+  m_steadyFrames = 0;
+  m_recentBestQ = 0;
 }
 
 void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
@@ -108,7 +124,8 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   const auto t0 = std::chrono::steady_clock::now();
   m_fitness.setImages(left, right);
   Objective objective(m_fitness);
-  FrameBudget budget = m_params.budget();
+  const bool steady = m_steadyFrames >= m_params.steadyAfterFrames;
+  FrameBudget budget = steady ? m_params.steadyBudget() : m_params.budget();
   if (budget.milliseconds > 0) // the hue planes are part of the frame's time
     budget.milliseconds = std::max(0.05, budget.milliseconds - std::chrono::duration<double, std::milli>(
                                                                     std::chrono::steady_clock::now() - t0).count());
@@ -133,6 +150,10 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   }
   if (r.state == TrackState::Lost && prev != TrackState::Lost)
     m_ga.restart(1, m_params.ga.restartGenerations); // search again, keeping the best guess apart
+  // Steadiness for the next frame's budget.
+  r.steady = steady;
+  m_recentBestQ = r.state == TrackState::Tracking ? std::max(r.quality, m_recentBestQ - 0.001) : 0.0;
+  m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
   r.computeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   m_last = r;
   return r;

@@ -7,6 +7,7 @@
         "format": "visp-photomodel-tracker", "version": 1,
         "budget_ms": 24, "budget_evaluations": 0,
         "lock_quality": 0.35, "lost_quality": 0.2, "lost_frames": 3, "init_spread": 0.02,
+        "steady_budget_fraction": 1, "steady_after_frames": 15, "steady_quality_drop": 0.03,
         "search_space": { "lo": [-180, -180, 320, -0.37, -0.37, -0.37], "hi": [180, 180, 680, 0.37, 0.37, 0.37] },
         "rmga": { "population": 20, "elite": 2, "tournament": 2, "crossover_rate": 0.9,
                   "mutation_per_bit": 0.0278, "predict_motion": true, "refine_evaluations": 0,

@@ -55,10 +55,21 @@ struct TrackerParams
   double lostQuality = 0.2;     //!< q below which, for lostFrames frames, it is lost
   int lostFrames = 3;
   double initSpread = 0.02;     //!< initFromPose: population spread, fraction of each range
+  /*!
+    Steady frames: once the target has been tracked for steadyAfterFrames frames in a row with q
+    no more than steadyQualityDrop under its recent best (forgotten at 0.001 per frame), a frame
+    gets only this fraction of the budget; any other frame (searching, lost, just locked, q
+    dropping: a jump, an occlusion, a wrong lock) gets the whole budget. 1: every frame the same.
+  */
+  double steadyBudgetFraction = 1.0;
+  int steadyAfterFrames = 15;
+  double steadyQualityDrop = 0.03;
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
   FrameBudget budget() const { return budgetEvaluations > 0 ? FrameBudget::evals(budgetEvaluations) : FrameBudget::ms(budgetMs); }
+  //! The budget of a steady frame (see steadyBudgetFraction); never under one population's evaluations.
+  FrameBudget steadyBudget() const;
 };
 
 struct TrackResult
@@ -71,6 +82,7 @@ struct TrackResult
   long evaluations = 0;
   int generations = 0;
   double computeMs = 0;     //!< time spent in track() (hue planes + RM-GA)
+  bool steady = false;      //!< the frame had the steady budget
 };
 
 class PhotoModelTracker
@@ -117,6 +129,8 @@ private:
   TrackResult m_last;
   double m_fBackground = 0, m_fMax = 1;
   int m_lowFrames = 0;
+  int m_steadyFrames = 0;  //!< frames tracked in a row near the recent best q
+  double m_recentBestQ = 0;
 };
 
 } // namespace pm
