@@ -393,6 +393,13 @@ int main(int argc, char **argv)
                 << "  while moving: rms " << moving.rmsMm() << " mm, max " << moving.maxMm << " mm; rotation rms "
                 << moving.rmsDeg() << " deg, max " << moving.maxDeg << " deg\n"
                 << "  joint limit violations " << violations << ", tracker " << meanMs << " ms per frame\n"
+                << "  by tenth of the run, rms error (mm):";
+      for (const auto &t : log.tenths())
+        std::cout << " " << t.rmsMm();
+      std::cout << "\n  by tenth of the run, resident memory (MB):";
+      for (double m : memoryMb)
+        std::cout << " " << std::setprecision(1) << m;
+      std::cout << std::setprecision(2) << "\n"
                 << "  written to " << files.dir() << "/ (frames.csv, errors.png, relative_pose.png, joints.png, "
                 << (noVideo ? "" : "servo.avi, ") << "summary.json)" << std::endl;
     }

@@ -8,6 +8,7 @@
 #define PM_HAVE_X86 1
 #endif
 
+#include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 
 namespace pm {
@@ -399,12 +400,9 @@ void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out) const
 {
   for (std::size_t i = 0; i < n; ++i) // first, so that nothing throws inside the parallel loop
     check(phis[i]);
-  // The poses on the cores: each result depends on its pose only, so they are the same whatever
-  // the number of threads. A small batch is not worth waking the threads for.
-  const long m = static_cast<long>(n);
-#pragma omp parallel for schedule(static) if (m >= 8)
-  for (long i = 0; i < m; ++i)
-    out[i] = 0.5 * (score(countCamera(0, phis[i])) + score(countCamera(1, phis[i])));
+  // On two cores (BatchPool: the caller never waits for the helper to start). Each result depends
+  // on its pose only, so they are the same whoever computes them.
+  BatchPool::shared().run(n, [&](std::size_t i) { out[i] = 0.5 * (score(countCamera(0, phis[i])) + score(countCamera(1, phis[i]))); });
 }
 
 FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const

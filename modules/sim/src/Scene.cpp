@@ -1,7 +1,9 @@
 #include "pm/sim/Scene.h"
 
 #include <cmath>
+#include <exception>
 
+#include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 #include "pm/sim/Noise.h"
 
@@ -85,9 +87,19 @@ StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix
   Rasterizer r[2];
   const RigCamera *cams[2] = {&rig.left, &rig.right};
   vpImage<vpRGBa> *outs[2] = {&im.left, &im.right};
-#pragma omp parallel for num_threads(2)
-  for (int i = 0; i < 2; ++i)
-    render(r[i], *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i]);
+  // The two cameras on two cores, through the pool the fitness uses: an OpenMP region here left
+  // libgomp's worker spinning for ~14 ms after it, taking the core the tracker's helper needs.
+  std::exception_ptr error[2];
+  BatchPool::shared().run(2, [&](std::size_t i) {
+    try {
+      render(r[i], *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i]);
+    } catch (...) {
+      error[i] = std::current_exception();
+    }
+  });
+  for (const auto &e : error)
+    if (e)
+      std::rethrow_exception(e);
   return im;
 }
 

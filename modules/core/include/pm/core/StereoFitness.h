@@ -88,7 +88,7 @@ public:
 
   //! F(phi). Throws pm::Error if phi is invalid or no images were set.
   double evaluate(const Phi &phi) const;
-  //! F for \e n poses into \e out, on all cores (OpenMP) from 8 poses on; the same values. Same contract.
+  //! F for \e n poses into \e out, on two cores (BatchPool); the same values. Same contract.
   void evaluate(const Phi *phis, std::size_t n, double *out) const;
   //! F, F_L, F_R and the class counts of each camera.
   FitnessDetail evaluateDetail(const Phi &phi) const;
