@@ -33,9 +33,9 @@ namespace {
 using pm::compare::FrameScore;
 using pm::compare::Summary;
 
-const char *kTrackerKeys[] = {"ours", "mbt-edge", "mbt-klt", "mbt-edge-klt", "template-ssd", "template-zncc"};
+const char *kTrackerKeys[] = {"ours", "ours-steady", "mbt-edge", "mbt-klt", "mbt-edge-klt", "template-ssd", "template-zncc"};
 
-const vpRGBa kColors[] = {vpRGBa(220, 50, 40), vpRGBa(40, 90, 200), vpRGBa(40, 160, 80), vpRGBa(140, 60, 170),
+const vpRGBa kColors[] = {vpRGBa(220, 50, 40), vpRGBa(240, 120, 150), vpRGBa(40, 90, 200), vpRGBa(40, 160, 80), vpRGBa(140, 60, 170),
                           vpRGBa(230, 150, 20), vpRGBa(90, 90, 90)};
 
 std::string fmt(double v, int precision)
@@ -104,7 +104,8 @@ nlohmann::json scoresJson(const Summary &s)
 int main(int argc, char **argv)
 {
   CLI::App app{"Runs our photo-model tracker and ViSP's own trackers on the same rendered stereo sequences, in the "
-               "same process: ours started with no initial pose; vpMbGenericTracker (stereo, EDGE, KLT, EDGE|KLT) on a "
+               "same process: ours started with no initial pose (twice: with the whole budget on every frame, and with a "
+               "fraction of it on steady frames, --steady-variant); vpMbGenericTracker (stereo, EDGE, KLT, EDGE|KLT) on a "
                "one-face .cao model of the target's outline from the photo-model, and vpTemplateTracker (SSD, ZNCC, "
                "homography) on the left image, both started from the true pose. Scenarios: table2, sinusoid, fast, "
                "occlusion, lighting, loss. Writes summary.json (a 'trackers' list), table.md, frames.csv, model.cao "
@@ -116,7 +117,7 @@ int main(int argc, char **argv)
   std::vector<std::string> scenarios = pm::compare::scenarioNames();
   std::vector<std::string> trackers(std::begin(kTrackerKeys), std::end(kTrackerKeys));
   int steps = 0;
-  double distanceMm = 500, outlineTolPx = 1.5;
+  double distanceMm = 500, outlineTolPx = 1.5, steadyVariant = 0.25;
   bool quiet = false;
   pm::sim::SceneParams sp;
   sp.occluderSizeMm[0] = 40; // a wide strand: about a third of the crab in the occlusion scenario
@@ -135,6 +136,8 @@ int main(int argc, char **argv)
   app.add_option("--outline-tolerance-px", outlineTolPx, "simplification of the outline for ViSP's trackers (px of the photo)")
       ->check(CLI::Range(0.1, 50.0));
   app.add_option("--distance-mm", distanceMm, "photo distance of the photo-model")->check(CLI::PositiveNumber);
+  app.add_option("--steady-variant", steadyVariant, "ours-steady: ours with this fraction of the budget on steady frames "
+                                                   "(see --steady-budget)")->check(CLI::Range(0.01, 1.0));
   pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(5.0));
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
@@ -163,6 +166,12 @@ int main(int argc, char **argv)
     auto makeTracker = [&](const std::string &key) -> std::unique_ptr<pm::compare::ComparedTracker> {
       if (key == "ours")
         return pm::compare::makeOurTracker(rig, sm.build.model, tp);
+      if (key == "ours-steady") {
+        pm::TrackerParams fast = tp;
+        fast.steadyBudgetFraction = steadyVariant;
+        return pm::compare::makeOurTracker(rig, sm.build.model, fast, "photo-model (ours, steady frames " +
+                                                                         std::to_string(std::lround(100 * steadyVariant)) + " %)");
+      }
       if (key == "mbt-edge")
         return pm::compare::makeMbtTracker(rig, pm::compare::MbtFeatures::Edge, caoPath, mbtXml);
       if (key == "mbt-klt")
@@ -225,14 +234,14 @@ int main(int argc, char **argv)
           sc.valid = e.valid;
           scores[si][ti].push_back(sc);
           if (snap)
-            drawOutline(shot, outline, e.hMm, rig.left, kColors[ti % 6]);
+            drawOutline(shot, outline, e.hMm, rig.left, kColors[ti % 7]);
           csv << seq.name << "," << k << "," << static_cast<double>(k) / seq.fps << "," << trackers[ti] << "," << sc.translationMm << ","
               << sc.rotationDeg << "," << sc.ms << "," << (sc.valid ? 1 : 0) << "\n";
         }
         if (snap) {
           pm::app::drawLabel(shot, seq.name + ", frame " + std::to_string(k) + " (white: truth)", 8, 8, vpRGBa(255, 255, 255));
           for (std::size_t ti = 0; ti < nT; ++ti)
-            pm::app::drawLabel(shot, names[ti], 28 + 18 * static_cast<int>(ti), 8, kColors[ti % 6]);
+            pm::app::drawLabel(shot, names[ti], 28 + 18 * static_cast<int>(ti), 8, kColors[ti % 7]);
           snapshots.push_back(shot);
         }
         progress.step();
@@ -326,7 +335,7 @@ int main(int argc, char **argv)
         pr.marks.push_back(e / seqs[si].fps);
       }
       for (std::size_t ti = 0; ti < nT; ++ti) {
-        pm::app::Series a{names[ti], kColors[ti % 6], {}, {}, false}, b = a;
+        pm::app::Series a{names[ti], kColors[ti % 7], {}, {}, false}, b = a;
         for (std::size_t k = 0; k < scores[si][ti].size(); ++k) {
           a.t.push_back(static_cast<double>(k) / seqs[si].fps);
           a.y.push_back(std::min(100.0, scores[si][ti][k].translationMm));

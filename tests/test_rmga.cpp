@@ -169,7 +169,7 @@ TEST(RmGa, PredictionKeepsTheLastBestWhereItWas)
   EXPECT_LT(distance(next.best, f.centre), distance(jumped.best, f.centre) + 1.0) << next.best.toString();
 }
 
-TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBest)
+TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBestMirrorsAndLevelsItsTilt)
 {
   Peak f;
   pm::RmGaParams p;
@@ -181,22 +181,33 @@ TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBest)
   const auto &pop = ga.population();
   ASSERT_EQ(static_cast<int>(pop.size()), p.population);
   EXPECT_EQ(pop[0].genome, best);
-  int positionOnly = 0, orientationOnly = 0, near = 0;
+  const pm::Phi b = pop[0].phi;
+  int positionOnly = 0, orientationOnly = 0, near = 0, mirrored = 0, facing = 0;
+  const double quantum = 2 * 0.37 / pm::Genome::kMax; // one gene step of e1, e2
   for (std::size_t k = 1; k < pop.size(); ++k) {
     const auto &g = pop[k].genome.gene;
+    const pm::Phi &q = pop[k].phi;
     auto same = [&](std::size_t from) { return g[from] == best.gene[from] && g[from + 1] == best.gene[from + 1] && g[from + 2] == best.gene[from + 2]; };
     bool close = true;
     for (std::size_t i = 0; i < 6; ++i)
       close = close && std::abs(static_cast<int>(g[i]) - static_cast<int>(best.gene[i])) <= pm::Genome::kMax / 20;
-    positionOnly += same(0) && !same(3);
+    const bool turnKept = std::abs(q.e3 - b.e3) <= quantum;
+    const bool isMirrored = same(0) && turnKept && std::abs(q.e1 + b.e1) <= quantum && std::abs(q.e2 + b.e2) <= quantum;
+    const bool isFacing = same(0) && turnKept && std::abs(q.e1) <= quantum && std::abs(q.e2) <= quantum;
+    mirrored += isMirrored;
+    facing += isFacing;
+    positionOnly += same(0) && !same(3) && !isMirrored && !isFacing;
     orientationOnly += same(3) && !same(0);
     near += close && !same(0) && !same(3);
   }
-  // 19 new ones in four kinds: random, position kept, orientation kept, near (5, 5, 5, 4).
-  EXPECT_EQ(positionOnly, 5);
-  EXPECT_EQ(orientationOnly, 5);
-  EXPECT_GE(near, 4);
-  EXPECT_LE(near, 5); // a random one is near only by a rare chance
+  // 19 new ones in six kinds: random 4, position kept 3, orientation kept 3, near 3, tilt mirrored 3, facing 3.
+  ASSERT_GT(std::hypot(b.e1, b.e2), 10 * quantum); // the best is tilted: mirrored and facing differ from it
+  EXPECT_EQ(positionOnly, 3);
+  EXPECT_EQ(orientationOnly, 3);
+  EXPECT_EQ(mirrored, 3);
+  EXPECT_EQ(facing, 3);
+  EXPECT_GE(near, 3);
+  EXPECT_LE(near, 4); // a random one is near only by a rare chance
   // With nothing kept, all are random: none keeps the old best's position.
   ga.restart(0);
   int kept = 0;

@@ -45,8 +45,11 @@ private:
 class OurTracker : public ComparedTracker
 {
 public:
-  OurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params) : m_tracker(rig, model, params) {}
-  std::string name() const override { return "photo-model (ours)"; }
+  OurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params, std::string name)
+    : m_tracker(rig, model, params), m_name(std::move(name))
+  {
+  }
+  std::string name() const override { return m_name; }
   bool needsInitialPose() const override { return false; }
   void start(const vpImage<vpRGBa> &, const vpImage<vpRGBa> &, const vpHomogeneousMatrix &) override { m_tracker.initialize(); }
   Estimate track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) override
@@ -57,6 +60,7 @@ public:
 
 private:
   PhotoModelTracker m_tracker;
+  std::string m_name;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -216,9 +220,10 @@ private:
 
 } // namespace
 
-std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
+std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params,
+                                                const std::string &name)
 {
-  return std::make_unique<OurTracker>(rig, model, params);
+  return std::make_unique<OurTracker>(rig, model, params, name);
 }
 
 std::unique_ptr<ComparedTracker> makeMbtTracker(const StereoRig &rig, MbtFeatures features, const std::string &caoPath,

@@ -80,10 +80,19 @@ void RmGa::restart(int keep, int isolate)
   std::sort(m_pop.begin(), m_pop.end(), moreFit);
   const std::size_t first = static_cast<std::size_t>(std::max(0, keep));
   for (std::size_t k = first; k < m_pop.size(); ++k) {
-    // Blocks: 0 all random; 1 the best's position; 2 the best's orientation; 3 near the best.
-    const std::size_t block = first > 0 ? (k - first) % 4 : 0;
+    // Blocks: 0 all random; 1 the best's position; 2 the best's orientation; 3 near the best;
+    // 4 the best's position with its tilt mirrored (e1, e2 negated: the other pose of a nearly
+    // planar target under perspective, the classic ambiguity); 5 the best's position, facing
+    // the cameras (e1 = e2 = 0). 4 and 5 keep the best's turn e3.
+    const std::size_t block = first > 0 ? (k - first) % 6 : 0;
     Genome g = m_pop[0].genome;
-    for (std::size_t i = 0; i < 6; ++i)
+    if (block >= 4) {
+      Phi q = m_pop[0].phi;
+      q.e1 = block == 4 ? -q.e1 : 0.0;
+      q.e2 = block == 4 ? -q.e2 : 0.0;
+      g = encode(m_space.clamp(q), m_space);
+    }
+    for (std::size_t i = 0; i < 6 && block < 4; ++i)
       if (block == 3)
         g.gene[i] = static_cast<std::uint16_t>(std::clamp(static_cast<int>(g.gene[i]) + near(m_rng), 0, static_cast<int>(Genome::kMax)));
       else if (block == 0 || (block == 1) == (i >= 3))

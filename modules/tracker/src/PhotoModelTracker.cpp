@@ -152,7 +152,9 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     m_ga.restart(1, m_params.ga.restartGenerations); // search again, keeping the best guess apart
   // Steadiness for the next frame's budget.
   r.steady = steady;
-  m_recentBestQ = r.state == TrackState::Tracking ? std::max(r.quality, m_recentBestQ - 0.001) : 0.0;
+  // The recent best is remembered through a loss, so that a relock on a wrong pose (lower q) is
+  // not taken for steady and keeps the whole budget to find the true one.
+  m_recentBestQ = std::max(r.state == TrackState::Tracking ? r.quality : 0.0, m_recentBestQ - 0.001);
   m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
   r.computeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   m_last = r;

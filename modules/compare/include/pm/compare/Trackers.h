@@ -23,7 +23,8 @@
 
 namespace pm::compare {
 
-std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params);
+std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params,
+                                                const std::string &name = "photo-model (ours)");
 
 enum class MbtFeatures { Edge, Klt, EdgeKlt };
 /*!

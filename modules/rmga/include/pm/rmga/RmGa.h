@@ -91,9 +91,10 @@ public:
   //! +-spread times each range (clamped). Forgets the motion.
   void seedAround(const Phi &p, double spread);
   /*!
-    A restart: all but the best \e keep individuals are replaced, a quarter each by random ones,
+    A restart: all but the best \e keep individuals are replaced, a sixth each by random ones,
     by the best's position with a random orientation, by the best's orientation with a random
-    position, and by the best plus noise of +-5 % of each range (all random if keep is 0). The
+    position, by the best plus noise of +-5 % of each range, by the best with its tilt mirrored
+    (e1, e2 negated) and by the best facing the cameras (e1 = e2 = 0) (all random if keep is 0). The
     kept best stays in the population but is not chosen as a parent for the next \e isolate
     generations, so the new ones search on their own instead of collapsing onto it at once: a
     lock on a wrong pose (often right in position or in orientation only) is left this way.
