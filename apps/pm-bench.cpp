@@ -9,6 +9,7 @@
 #include <visp3/core/vpMeterPixelConversion.h>
 
 #include "pm/app/App.h"
+#include "pm/core/BatchPool.h"
 #include "pm/core/FitnessMap.h"
 #include "pm/core/Hue.h"
 #include "pm/core/StereoFitness.h"
@@ -91,6 +92,24 @@ void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scala
 }
 
 void Fitness_DefaultModel(benchmark::State &s) { runFitness(s, setup().model, false); }
+
+//! One RM-GA generation's batch (18 children) of the default model, on two cores through
+//! pm::BatchPool as the tracker runs it; wall time, to compare with 18 x Fitness_DefaultModel.
+void Fitness_DefaultModel_GenerationBatch(benchmark::State &state)
+{
+  pm::StereoFitness fit(setup().rig, setup().model);
+  fit.setImages(setup().images.left, setup().images.right);
+  const auto ps = poses(18);
+  std::vector<double> out(ps.size());
+  for (auto _ : state) {
+    fit.evaluate(ps.data(), ps.size(), out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(ps.size()));
+  state.counters["stereo_evals_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * static_cast<long>(ps.size())), benchmark::Counter::kIsRate);
+  state.SetLabel(pm::BatchPool::shared().hasHelper() ? "two cores" : "one core");
+}
 void Fitness_1000Points(benchmark::State &s) { runFitness(s, setup().model1000, false); }
 void Fitness_1000Points_Scalar(benchmark::State &s) { runFitness(s, setup().model1000, true); }
 
@@ -207,6 +226,7 @@ void FitnessMaps_FourGrids(benchmark::State &state)
 } // namespace
 
 BENCHMARK(Fitness_DefaultModel);
+BENCHMARK(Fitness_DefaultModel_GenerationBatch)->UseRealTime();
 BENCHMARK(Fitness_1000Points);
 BENCHMARK(Fitness_1000Points_Scalar);
 BENCHMARK(Fitness_1000Points_ViSPTypes);
