@@ -39,10 +39,11 @@ while kill -0 "$pid" 2>/dev/null; do
 done
 wait "$pid"
 cp "$rss" "$out/rss.csv"
-# Warm-up: the first tenth of the samples; growth: the largest later sample against the last warm-up one.
-awk -F, 'NR > 1 { t[NR - 1] = $1; r[NR - 1] = $2; n = NR - 1 }
+# Warm-up: the first tenth of the samples (the one at 0 s, taken as the program starts, aside);
+# growth: the largest later sample against the last warm-up one.
+awk -F, 'NR > 1 && $1 > 0 { ++n; t[n] = $1; r[n] = $2 }
   END {
-    if (n < 2) { print "resident memory: too few samples (run longer)"; exit }
+    if (n < 2) { print "resident memory: too few samples to tell a growth (run longer)"; exit }
     w = int(n / 10); if (w < 1) w = 1
     mx = 0; for (i = w + 1; i <= n; ++i) if (r[i] > mx) mx = r[i]
     printf "resident memory: %.1f MB after the warm-up (%d s), at most %.1f MB after it: growth %.2f %%\n",
