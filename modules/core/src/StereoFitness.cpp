@@ -393,7 +393,7 @@ double StereoFitness::score(const FitnessCounts &c) const
 double StereoFitness::evaluate(const Phi &phi) const
 {
   check(phi);
-  return 0.5 * (score(countCamera(0, phi)) + score(countCamera(1, phi)));
+  return stereoScore(phi);
 }
 
 void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out) const
@@ -402,7 +402,7 @@ void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out) const
     check(phis[i]);
   // On two cores (BatchPool: the caller never waits for the helper to start). Each result depends
   // on its pose only, so they are the same whoever computes them.
-  BatchPool::shared().run(n, [&](std::size_t i) { out[i] = 0.5 * (score(countCamera(0, phis[i])) + score(countCamera(1, phis[i]))); });
+  BatchPool::shared().run(n, [&](std::size_t i) { out[i] = stereoScore(phis[i]); });
 }
 
 FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const

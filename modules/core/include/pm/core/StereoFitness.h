@@ -124,6 +124,8 @@ private:
   struct Projection projectionOf(int cam, const Phi &phi) const;
   FitnessCounts countCamera(int cam, const Phi &phi) const;
   double score(const FitnessCounts &c) const;
+  //! F of a pose already checked.
+  double stereoScore(const Phi &phi) const { return 0.5 * (score(countCamera(0, phi)) + score(countCamera(1, phi))); }
 
   FitnessParams m_params;
   Camera m_cams[2];
