@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -234,14 +235,14 @@ int main(int argc, char **argv)
           sc.valid = e.valid;
           scores[si][ti].push_back(sc);
           if (snap)
-            drawOutline(shot, outline, e.hMm, rig.left, kColors[ti % 7]);
+            drawOutline(shot, outline, e.hMm, rig.left, kColors[ti % std::size(kColors)]);
           csv << seq.name << "," << k << "," << static_cast<double>(k) / seq.fps << "," << trackers[ti] << "," << sc.translationMm << ","
               << sc.rotationDeg << "," << sc.ms << "," << (sc.valid ? 1 : 0) << "\n";
         }
         if (snap) {
           pm::app::drawLabel(shot, seq.name + ", frame " + std::to_string(k) + " (white: truth)", 8, 8, vpRGBa(255, 255, 255));
           for (std::size_t ti = 0; ti < nT; ++ti)
-            pm::app::drawLabel(shot, names[ti], 28 + 18 * static_cast<int>(ti), 8, kColors[ti % 7]);
+            pm::app::drawLabel(shot, names[ti], 28 + 18 * static_cast<int>(ti), 8, kColors[ti % std::size(kColors)]);
           snapshots.push_back(shot);
         }
         progress.step();
@@ -335,7 +336,7 @@ int main(int argc, char **argv)
         pr.marks.push_back(e / seqs[si].fps);
       }
       for (std::size_t ti = 0; ti < nT; ++ti) {
-        pm::app::Series a{names[ti], kColors[ti % 7], {}, {}, false}, b = a;
+        pm::app::Series a{names[ti], kColors[ti % std::size(kColors)], {}, {}, false}, b = a;
         for (std::size_t k = 0; k < scores[si][ti].size(); ++k) {
           a.t.push_back(static_cast<double>(k) / seqs[si].fps);
           a.y.push_back(std::min(100.0, scores[si][ti][k].translationMm));

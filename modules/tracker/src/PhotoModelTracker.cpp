@@ -84,14 +84,19 @@ PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &mod
   initialize();
 }
 
+void PhotoModelTracker::resetCounters()
+{
+  m_lowFrames = 0;
+  m_steadyFrames = 0;
+  m_recentBestQ = 0;
+}
+
 void PhotoModelTracker::initialize()
 {
   m_ga.randomize();
   m_last = TrackResult();
   m_last.state = TrackState::Searching;
-  m_lowFrames = 0;
-  m_steadyFrames = 0;
-  m_recentBestQ = 0;
+  resetCounters();
 }
 
 void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
@@ -102,9 +107,7 @@ void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
   m_last.hMo = hMo;
   m_last.phi = p;
   m_last.state = TrackState::Tracking;
-  m_lowFrames = 0;
-  m_steadyFrames = 0;
-  m_recentBestQ = 0;
+  resetCounters();
 }
 
 void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)

@@ -123,6 +123,8 @@ public:
   const TrackerParams &params() const { return m_params; }
 
 private:
+  void resetCounters(); //!< the state machine's and the steadiness's, for a new start
+
   TrackerParams m_params;
   StereoFitness m_fitness;
   RmGa m_ga;
