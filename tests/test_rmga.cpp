@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include "pm/core/Error.h"
 #include "pm/rmga/RmGa.h"
@@ -32,6 +33,17 @@ public:
 double distance(const pm::Phi &a, const pm::Phi &b)
 {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+//! A GA whose whole population starts on the peak, with or without the motion prediction.
+pm::RmGa gaOnThePeak(const Peak &f, std::uint64_t seed, bool predict)
+{
+  pm::RmGaParams p;
+  p.seed = seed;
+  p.predictMotion = predict;
+  pm::RmGa ga(pm::SearchSpace(), p);
+  ga.seedAround(f.centre, 0.0);
+  return ga;
 }
 
 } // namespace
@@ -130,11 +142,7 @@ TEST(RmGa, PredictionFollowsAMovingPeakBetter)
   // The peak moves 2 mm per frame along x; with the motion predicted, the error is smaller.
   auto meanError = [](bool predict) {
     Peak f;
-    pm::RmGaParams p;
-    p.seed = 5;
-    p.predictMotion = predict;
-    pm::RmGa ga(pm::SearchSpace(), p);
-    ga.seedAround(f.centre, 0.0);
+    pm::RmGa ga = gaOnThePeak(f, 5, predict);
     double sum = 0;
     for (int frame = 0; frame < 80; ++frame) {
       f.centre.x = -80 + 2.0 * frame;
@@ -153,18 +161,14 @@ TEST(RmGa, PredictionKeepsTheLastBestWhereItWas)
   // The peak jumps 60 mm and stays there: the best's jump looks like a velocity, so the prediction
   // would carry everyone 60 mm past the peak. The last best, kept unmoved, is still on it.
   Peak f;
-  pm::RmGaParams p;
-  p.seed = 3;
-  p.predictMotion = true;
-  pm::RmGa ga(pm::SearchSpace(), p);
-  ga.seedAround(f.centre, 0.0);
+  pm::RmGa ga = gaOnThePeak(f, 3, true);
   for (int frame = 0; frame < 3; ++frame)
     ga.evolve(f, pm::FrameBudget::evals(400));
   f.centre.x += 60;
   const pm::FrameResult jumped = ga.evolve(f, pm::FrameBudget::evals(20000));
   ASSERT_LT(distance(jumped.best, f.centre), 5.0) << "the GA did not follow the jump: " << jumped.best.toString();
   // The next frame: only the population's evaluation (no generations).
-  const pm::FrameResult next = ga.evolve(f, pm::FrameBudget::evals(p.population));
+  const pm::FrameResult next = ga.evolve(f, pm::FrameBudget::evals(ga.params().population));
   EXPECT_EQ(next.generations, 0);
   EXPECT_LT(distance(next.best, f.centre), distance(jumped.best, f.centre) + 1.0) << next.best.toString();
 }
