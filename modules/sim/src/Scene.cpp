@@ -88,7 +88,8 @@ StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix
   const RigCamera *cams[2] = {&rig.left, &rig.right};
   vpImage<vpRGBa> *outs[2] = {&im.left, &im.right};
   // The two cameras on two cores, through the pool the fitness uses: an OpenMP region here left
-  // libgomp's worker spinning for ~14 ms after it, taking the core the tracker's helper needs.
+  // libgomp's worker spinning after it, on the core the tracker's helper needs (1,900 evaluations
+  // took 5.0 ms with it, 3.2 ms with OMP_WAIT_POLICY=passive).
   std::exception_ptr error[2];
   BatchPool::shared().run(2, [&](std::size_t i) {
     try {
