@@ -71,9 +71,9 @@ int main(int argc, char **argv)
   std::string out, target = "C12", left, right, modelPath, pose = "0,0,500,0,0,0", truthText;
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   bool quiet = false, allTargets = false;
-  double maxTimeS = 10, distanceMm = 500;
+  double maxTimeS = 10;
+  pm::app::LabModelChoice lab;
   int patience = 20;
-  pm::PhotoModelParams mp;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
   auto *optTarget = app.add_option("--target", target, "simulated target C01..C12");
@@ -90,8 +90,8 @@ int main(int argc, char **argv)
   app.add_option("--rig", rigPath, "stereo rig file");
   app.add_option("--max-time-s", maxTimeS, "give up after this long")->check(CLI::Range(0.001, 3600.0));
   app.add_option("--patience", patience, "stop when the best has not improved for this many frames")->check(CLI::Range(1, 100000));
-  app.add_option("--distance-mm", distanceMm, "simulator: photo distance of the model")->check(CLI::PositiveNumber);
-  pm::app::addModelOptions(app, mp);
+  pm::app::addLabModelOptions(app, lab);
+  pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
   pm::TrackerParams defaults;
   defaults.ga.population = 100;       // detection from scratch: a larger population ...
@@ -124,7 +124,7 @@ int main(int argc, char **argv)
         source = "stereo pair " + left + " + " + right + ", model " + modelPath;
       } else {
         const pm::sim::Scene scene(pm::sim::makeTarget(code), sp);
-        const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
+        const auto sm = pm::app::makeLabModel(scene, rig, lab);
         model = sm.build.model;
         const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(ref);
         truth = sm.truth(hMo);

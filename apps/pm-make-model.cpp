@@ -1,5 +1,6 @@
 //! pm-make-model: builds a photo-model (Fig. 4 of the paper) from two photos or from the simulator.
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -10,6 +11,7 @@
 #include "pm/app/Overlay.h"
 #include "pm/core/Error.h"
 #include "pm/core/PhotoModelBuilder.h"
+#include "pm/core/StereoPhotoModelBuilder.h"
 #include "pm/io/CameraXml.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
@@ -22,13 +24,20 @@
 
 int main(int argc, char **argv)
 {
-  CLI::App app{"Builds a photo-model (the paper's Fig. 4): from a photo of the background alone and a photo of the "
-               "target on it, taken by one camera at a known distance; or from the simulator, which takes those two "
-               "photos of one of the 12 targets (--target) or of a user's image (--texture). Writes model.json, "
-               "overlay.png (S_in and S_out on the photo), model.png and summary.json.",
+  CLI::App app{"Builds a photo-model (the paper's Fig. 4). Flat (the paper's): a photo of the background alone and a "
+               "photo of the target on it, taken by one camera at a known distance. Stereo (with depth): the rig's "
+               "two cameras take the background pair, then the photo pair, from one hand pose (--left-background, "
+               "--right-background, --left-photo, --right-photo, --rig); every point gets its relief by stereo "
+               "matching and no distance is needed. Or from the simulator, which takes the photos of a lab target "
+               "(--target; --stereo for the stereo model) or of a user's image (--texture). Writes model.json, "
+               "overlay.png (S_in and S_out on the photo), model.png, summary.json and, for a stereo model, "
+               "depth.png (the relief).",
                "pm-make-model"};
   app.option_defaults()->always_capture_default();
   std::string out, target = "C12", background, photo, texture, intrinsics, cameraName = "left";
+  std::string leftBg, rightBg, leftPhoto, rightPhoto;
+  bool stereo = false;
+  pm::StereoModelParams smp;
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   double distanceMm = 500, widthMm = 150, depthMm = 20;
   bool quiet = false;
@@ -43,6 +52,24 @@ int main(int argc, char **argv)
   auto *optTex = app.add_option("--texture", texture, "simulate a target from this image (PNG/JPEG, alpha = outline)");
   optTex->excludes(optBg)->excludes(optTarget);
   optTarget->excludes(optBg);
+  auto *optLB = app.add_option("--left-background", leftBg, "stereo: the left camera's photo of the background alone");
+  auto *optRB = app.add_option("--right-background", rightBg, "stereo: the right camera's photo of the background alone");
+  auto *optLP = app.add_option("--left-photo", leftPhoto, "stereo: the left camera's photo of the target (same hand pose)");
+  auto *optRP = app.add_option("--right-photo", rightPhoto, "stereo: the right camera's photo of the target");
+  for (auto *o : {optLB, optRB, optLP, optRP}) {
+    for (auto *q : {optLB, optRB, optLP, optRP})
+      if (q != o)
+        o->needs(q);
+    o->excludes(optBg)->excludes(optTarget)->excludes(optTex);
+  }
+  auto *optStereo = app.add_flag("--stereo", stereo, "simulator: the stereo model (the rig's two cameras, depth per point)");
+  optStereo->excludes(optBg);
+  app.add_option("--backdrop-mm", smp.backdropMm, "stereo: the backdrop's distance from the left camera (0: measured "
+                 "from the background pair; give it for a plain backdrop)")->check(CLI::NonNegativeNumber);
+  app.add_option("--max-relief-mm", smp.maxReliefMm, "stereo: search depths this far in front of the backdrop")
+      ->check(CLI::Range(1.0, 2000.0));
+  app.add_option("--min-matched", smp.minMatchedFraction, "stereo: refuse the model when fewer S_in points match")
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--width-mm", widthMm, "with --texture: the image's physical width (mm)")->check(CLI::PositiveNumber);
   app.add_option("--depth-mm", depthMm, "with --texture: relief of the default dome (mm, 0 = flat)")->check(CLI::NonNegativeNumber);
   app.add_option("--distance-mm", distanceMm, "distance from the camera to the target when the photo was taken (mm)")
@@ -59,7 +86,23 @@ int main(int argc, char **argv)
     vpImage<vpRGBa> bg, tg;
     pm::PhotoModelBuild build;
     std::string source;
-    if (!background.empty()) {
+    vpImage<float> depth;
+    std::vector<pm::ModelPoint> dropped;
+    double backdropMm = 0;
+    smp.photo = mp;
+    if (!leftBg.empty()) {
+      const pm::StereoRig rig = pm::io::loadRig(rigPath);
+      vpImage<vpRGBa> bgR = pm::io::readColorImage(rightBg), tgR = pm::io::readColorImage(rightPhoto);
+      bg = pm::io::readColorImage(leftBg);
+      tg = pm::io::readColorImage(leftPhoto);
+      pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bg, bgR, tg, tgR, smp);
+      build.model = std::move(b.model);
+      build.region = std::move(b.regionLeft);
+      depth = std::move(b.depthLeft);
+      dropped = std::move(b.dropped);
+      backdropMm = b.backdropMm;
+      source = "stereo photos " + leftPhoto + " + " + rightPhoto;
+    } else if (!background.empty()) {
       bg = pm::io::readColorImage(background);
       tg = pm::io::readColorImage(photo);
       if (bg.getWidth() != tg.getWidth() || bg.getHeight() != tg.getHeight())
@@ -84,17 +127,27 @@ int main(int argc, char **argv)
       }
       const pm::sim::Scene scene(shape, sp);
       pm::sim::SimulatedPhotoModel sm =
-          pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
+          stereo ? pm::sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm, smp)
+                 : pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
       bg = std::move(sm.background);
       tg = std::move(sm.photo);
       build = std::move(sm.build);
+      depth = std::move(sm.depth);
+      dropped = std::move(sm.dropped);
+      backdropMm = sm.backdropMm;
+      if (stereo)
+        source += ", stereo";
     }
     const pm::PhotoModel &m = build.model;
+    const bool hasDepth = m.hasDepth();
 
     pm::io::StagedFiles files(out);
     pm::io::savePhotoModel(m, files.stage("model.json"));
     pm::io::writeImage(pm::app::drawModelOnPhoto(tg, build.region, m), files.stage("overlay.png"));
     pm::io::writeImage(pm::app::drawModel(m), files.stage("model.png"));
+    if (hasDepth)
+      pm::io::writeImage(pm::app::drawDepth(tg, depth, m, dropped, m.depthRangeMm[0], m.depthRangeMm[1]),
+                         files.stage("depth.png"));
     if (background.empty()) {
       pm::io::writeImage(bg, files.stage("photo_background.png"));
       pm::io::writeImage(tg, files.stage("photo_target.png"));
@@ -104,7 +157,8 @@ int main(int argc, char **argv)
     for (unsigned i = 0; i < build.region.getSize(); ++i)
       area += build.region.bitmap[i] ? 1u : 0u;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const nlohmann::json summary{{"source", source},
+    nlohmann::json summary{{"source", source},
+                                 {"kind", hasDepth ? "stereo" : "flat"},
                                  {"n_in", m.inner.size()},
                                  {"n_out", m.outer.size()},
                                  {"background_hue_deg", m.backgroundHue},
@@ -115,6 +169,13 @@ int main(int argc, char **argv)
                                  {"model_origin_offset_mm", {offX, offY}},
                                  {"step_px", mp.stepPx},
                                  {"time_s", seconds}};
+    if (hasDepth) {
+      summary.erase("model_origin_offset_mm");
+      summary["model_origin_in_hand_mm"] = {m.originInHandMm[0], m.originInHandMm[1], m.originInHandMm[2]};
+      summary["depth_range_mm"] = {m.depthRangeMm[0], m.depthRangeMm[1]};
+      summary["n_in_dropped"] = m.nInDropped;
+      summary["backdrop_mm"] = backdropMm;
+    }
     pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
     files.commit();
     if (!quiet)
@@ -122,7 +183,13 @@ int main(int argc, char **argv)
                 << "  S_in " << m.inner.size() << " points, S_out " << m.outer.size() << " points, region "
                 << area << " px\n"
                 << "  background hue " << m.backgroundHue << " deg, target hue " << m.targetHue << " deg\n"
-                << "  written to " << files.dir() << "/ (model.json, overlay.png, model.png, summary.json) in "
+                << (hasDepth ? "  relief " + std::to_string(static_cast<int>(std::lround(m.depthRangeMm[0]))) + " to " +
+                                   std::to_string(static_cast<int>(std::lround(m.depthRangeMm[1]))) +
+                                   " mm in the hand frame, origin at z " +
+                                   std::to_string(static_cast<int>(std::lround(m.originInHandMm[2]))) + " mm, " +
+                                   std::to_string(m.nInDropped) + " S_in points without a reliable match dropped\n"
+                             : std::string())
+                << "  written to " << files.dir() << "/ (model.json, overlay.png, model.png, " << (hasDepth ? "depth.png, " : "") << "summary.json) in "
                 << std::setprecision(2) << seconds << " s" << std::endl;
     return 0;
   });

@@ -28,6 +28,24 @@ void addModelOptions(CLI::App &app, PhotoModelParams &p)
   app.add_option("--min-saturation", p.minSaturation, "photo pixels less saturated carry no hue")->check(CLI::Range(0.0, 0.99))->group(g);
 }
 
+void addLabModelOptions(CLI::App &app, LabModelChoice &c)
+{
+  app.add_flag("--stereo", c.stereo, "simulator: the stereo photo-model (the rig's two cameras take the photos, every "
+               "point gets its relief); without it the paper's flat model");
+  app.add_option("--distance-mm", c.distanceMm, "simulator: the toy's distance when its photos are taken (the flat "
+                 "model's photo distance)")->check(CLI::PositiveNumber);
+}
+
+sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c)
+{
+  if (c.stereo) {
+    StereoModelParams sp;
+    sp.photo = c.photo;
+    return sim::makeSimulatedStereoPhotoModel(scene, rig, c.distanceMm, sp);
+  }
+  return sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, c.distanceMm, c.photo);
+}
+
 void addSceneOptions(CLI::App &app, sim::SceneParams &p)
 {
   const char *g = "Simulator";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <visp3/core/vpColor.h>
 #include <visp3/core/vpFont.h>
@@ -20,6 +21,49 @@ vpColor hueColor(float hueDeg)
                  static_cast<unsigned char>(255 * tab[i][2]));
 }
 } // namespace
+
+namespace {
+//! A colour from red (t = 0) through yellow, green, cyan to blue (t = 1).
+vpRGBa depthColor(double t)
+{
+  t = std::min(1.0, std::max(0.0, t));
+  const vpColor c = hueColor(static_cast<float>(240.0 * t));
+  return vpRGBa(c.R, c.G, c.B);
+}
+} // namespace
+
+vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &depthMm, const PhotoModel &m,
+                          const std::vector<ModelPoint> &dropped, double nearMm, double farMm)
+{
+  const unsigned h = photo.getHeight(), w = photo.getWidth(), bar = 40;
+  vpImage<vpRGBa> I(h + bar, w, vpRGBa(255, 255, 255));
+  const double span = farMm > nearMm ? farMm - nearMm : 1.0;
+  for (unsigned v = 0; v < h; ++v)
+    for (unsigned u = 0; u < w; ++u) {
+      const vpRGBa &p = photo[v][u];
+      const auto g = static_cast<unsigned char>(0.5 * (0.3 * p.R + 0.59 * p.G + 0.11 * p.B) + 40);
+      const bool has = depthMm.getHeight() == h && depthMm.getWidth() == w && std::isfinite(depthMm[v][u]);
+      I[v][u] = has ? depthColor((depthMm[v][u] - nearMm) / span) : vpRGBa(g, g, g);
+    }
+  for (const auto &p : m.inner)
+    vpImageDraw::drawPoint(I, vpImagePoint(p.v, p.u), vpColor::white, 2);
+  for (const auto &p : dropped)
+    vpImageDraw::drawPoint(I, vpImagePoint(p.v, p.u), vpColor::black, 2);
+  const unsigned x0 = 100, x1 = w > 200 ? w - 100 : w;
+  for (unsigned u = x0; u < x1; ++u)
+    for (unsigned v = h + 6; v < h + 18; ++v)
+      I[v][u] = depthColor(static_cast<double>(u - x0) / std::max(1u, x1 - x0 - 1));
+  char text[96];
+  std::snprintf(text, sizeof text, "%.0f mm", nearMm);
+  drawLabel(I, text, static_cast<int>(h + 22), static_cast<int>(x0), vpRGBa(0, 0, 0));
+  std::snprintf(text, sizeof text, "%.0f mm", farMm);
+  drawLabel(I, text, static_cast<int>(h + 22), static_cast<int>(x1) - 50, vpRGBa(0, 0, 0));
+  drawLabel(I, "depth in the hand frame: near", static_cast<int>(h + 6), 4, vpRGBa(0, 0, 0));
+  drawLabel(I, "far", static_cast<int>(h + 6), static_cast<int>(x1) + 8, vpRGBa(0, 0, 0));
+  drawLabel(I, "S_in kept (white) " + std::to_string(m.inner.size()) + ", dropped (black) " + std::to_string(dropped.size()),
+            8, 8, vpRGBa(255, 255, 255));
+  return I;
+}
 
 vpImage<vpRGBa> drawModelOnPhoto(const vpImage<vpRGBa> &photo, const vpImage<unsigned char> &region, const PhotoModel &m)
 {

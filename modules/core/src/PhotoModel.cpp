@@ -10,6 +10,15 @@ namespace {
 bool finite(float a) { return std::isfinite(a); }
 } // namespace
 
+bool PhotoModel::hasDepth() const
+{
+  for (const auto *set : {&inner, &outer})
+    for (const ModelPoint &p : *set)
+      if (p.z != 0.f)
+        return true;
+  return false;
+}
+
 void PhotoModel::validate(const std::string &source) const
 {
   const std::string where = "photo-model " + source + ": ";

@@ -53,6 +53,13 @@ struct Tolerances
   std::int32_t bg, in, inBg, outBg;
 };
 
+//! The model's points as the kernels read them: x, y, z (mm), hue (tenths of a degree).
+struct ModelSoA
+{
+  const float *x, *y, *z;
+  const std::int32_t *hue;
+};
+
 inline std::int32_t wrapDist(std::int32_t a, std::int32_t b)
 {
   const std::int32_t d = a > b ? a - b : b - a;
@@ -60,15 +67,20 @@ inline std::int32_t wrapDist(std::int32_t a, std::int32_t b)
 }
 
 /*!
-  Projects point (X, Y, 0) and returns the image hue there (tenths of a degree, or kNoHue), or
-  -1 if it falls off the image. The operations are those of the AVX2 kernel, in the same order
-  (fused multiply-adds, one division, round to nearest), so both give the same pixel.
+  Projects point (X, Y, Z) (Z = 0 when \e kDepth is false: the flat model, exactly the paper's
+  operations) and returns the image hue there (tenths of a degree, or kNoHue), or -1 if it falls
+  off the image. The operations are those of the AVX2 kernel, in the same order (fused
+  multiply-adds, one division, round to nearest), so both give the same pixel.
 */
-inline std::int32_t sampleScalar(const Projection &p, float X, float Y)
+template <bool kDepth>
+inline std::int32_t sampleScalar(const Projection &p, float X, float Y, float Z)
 {
-  const float xc = std::fmaf(p.r[0], X, std::fmaf(p.r[1], Y, p.t[0]));
-  const float yc = std::fmaf(p.r[3], X, std::fmaf(p.r[4], Y, p.t[1]));
-  const float zc = std::fmaf(p.r[6], X, std::fmaf(p.r[7], Y, p.t[2]));
+  const float t0 = kDepth ? std::fmaf(p.r[2], Z, p.t[0]) : p.t[0];
+  const float t1 = kDepth ? std::fmaf(p.r[5], Z, p.t[1]) : p.t[1];
+  const float t2 = kDepth ? std::fmaf(p.r[8], Z, p.t[2]) : p.t[2];
+  const float xc = std::fmaf(p.r[0], X, std::fmaf(p.r[1], Y, t0));
+  const float yc = std::fmaf(p.r[3], X, std::fmaf(p.r[4], Y, t1));
+  const float zc = std::fmaf(p.r[6], X, std::fmaf(p.r[7], Y, t2));
   if (!(zc > 1e-3f))
     return -1;
   const float iz = 1.f / zc;
@@ -106,22 +118,31 @@ inline void classifyOut(std::int32_t h, const Tolerances &t, FitnessCounts &c)
     ++c.outOther;
 }
 
-void countScalar(const Projection &p, const Tolerances &t, const float *x, const float *y, const std::int32_t *hm,
-                 std::size_t inBegin, std::size_t inEnd, std::size_t outBegin, std::size_t outEnd, FitnessCounts &c)
+template <bool kDepth>
+void countScalar(const Projection &p, const Tolerances &t, const ModelSoA &m, std::size_t inBegin, std::size_t inEnd,
+                 std::size_t outBegin, std::size_t outEnd, FitnessCounts &c)
 {
   for (std::size_t i = inBegin; i < inEnd; ++i)
-    classifyIn(sampleScalar(p, x[i], y[i]), hm[i], t, c);
+    classifyIn(sampleScalar<kDepth>(p, m.x[i], m.y[i], kDepth ? m.z[i] : 0.f), m.hue[i], t, c);
   for (std::size_t i = outBegin; i < outEnd; ++i)
-    classifyOut(sampleScalar(p, x[i], y[i]), t, c);
+    classifyOut(sampleScalar<kDepth>(p, m.x[i], m.y[i], kDepth ? m.z[i] : 0.f), t, c);
 }
 
 #ifdef PM_HAVE_X86
-__attribute__((target("avx2,fma"))) inline __m256i sample8(const Projection &p, const float *x, const float *y)
+template <bool kDepth>
+__attribute__((target("avx2,fma"))) inline __m256i sample8(const Projection &p, const ModelSoA &m, std::size_t i)
 {
-  const __m256 X = _mm256_loadu_ps(x), Y = _mm256_loadu_ps(y);
-  const __m256 xc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[0]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[1]), Y, _mm256_set1_ps(p.t[0])));
-  const __m256 yc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[3]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[4]), Y, _mm256_set1_ps(p.t[1])));
-  const __m256 zc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[6]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[7]), Y, _mm256_set1_ps(p.t[2])));
+  const __m256 X = _mm256_loadu_ps(m.x + i), Y = _mm256_loadu_ps(m.y + i);
+  __m256 t0 = _mm256_set1_ps(p.t[0]), t1 = _mm256_set1_ps(p.t[1]), t2 = _mm256_set1_ps(p.t[2]);
+  if (kDepth) {
+    const __m256 Z = _mm256_loadu_ps(m.z + i);
+    t0 = _mm256_fmadd_ps(_mm256_set1_ps(p.r[2]), Z, t0);
+    t1 = _mm256_fmadd_ps(_mm256_set1_ps(p.r[5]), Z, t1);
+    t2 = _mm256_fmadd_ps(_mm256_set1_ps(p.r[8]), Z, t2);
+  }
+  const __m256 xc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[0]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[1]), Y, t0));
+  const __m256 yc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[3]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[4]), Y, t1));
+  const __m256 zc = _mm256_fmadd_ps(_mm256_set1_ps(p.r[6]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[7]), Y, t2));
   const __m256 front = _mm256_cmp_ps(zc, _mm256_set1_ps(1e-3f), _CMP_GT_OQ);
   const __m256 iz = _mm256_div_ps(_mm256_set1_ps(1.f), zc);
   const __m256 u = _mm256_fmadd_ps(_mm256_set1_ps(p.px), _mm256_mul_ps(xc, iz), _mm256_set1_ps(p.u0));
@@ -156,10 +177,10 @@ __attribute__((target("avx2,fma"))) inline int hsum(__m256i v)
   return _mm_cvtsi128_si32(s);
 }
 
-__attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const Tolerances &t, const float *x,
-                                                   const float *y, const std::int32_t *hm, std::size_t inBegin,
-                                                   std::size_t inEnd, std::size_t outBegin, std::size_t outEnd,
-                                                   FitnessCounts &c)
+template <bool kDepth>
+__attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const Tolerances &t, const ModelSoA &m,
+                                                   std::size_t inBegin, std::size_t inEnd, std::size_t outBegin,
+                                                   std::size_t outEnd, FitnessCounts &c)
 {
   const __m256i neg = _mm256_set1_epi32(-1), noHue = _mm256_set1_epi32(HuePlane::kNoHue);
   const __m256i bg = _mm256_set1_epi32(t.bg);
@@ -167,10 +188,10 @@ __attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const To
   __m256i nMatch = _mm256_setzero_si256(), nBg = _mm256_setzero_si256(), nOff = _mm256_setzero_si256();
   std::size_t i = inBegin;
   for (; i + 8 <= inEnd; i += 8) {
-    const __m256i h = sample8(p, x + i, y + i);
+    const __m256i h = sample8<kDepth>(p, m, i);
     const __m256i off = _mm256_cmpeq_epi32(h, neg);
     const __m256i hasHue = _mm256_andnot_si256(_mm256_or_si256(off, _mm256_cmpeq_epi32(h, noHue)), neg);
-    const __m256i match = _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tIn, wrapDist8(h, _mm256_loadu_si256(reinterpret_cast<const __m256i *>(hm + i)))));
+    const __m256i match = _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tIn, wrapDist8(h, _mm256_loadu_si256(reinterpret_cast<const __m256i *>(m.hue + i)))));
     const __m256i isBg = _mm256_andnot_si256(match, _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tInBg, wrapDist8(h, bg))));
     nMatch = _mm256_sub_epi32(nMatch, match);
     nBg = _mm256_sub_epi32(nBg, isBg);
@@ -181,12 +202,12 @@ __attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const To
   c.inBackground += hsum(nBg);
   c.inOff += hsum(nOff);
   c.inOther += inVec - hsum(nMatch) - hsum(nBg) - hsum(nOff);
-  countScalar(p, t, x, y, hm, i, inEnd, 0, 0, c);
+  countScalar<kDepth>(p, t, m, i, inEnd, 0, 0, c);
 
   __m256i oBg = _mm256_setzero_si256(), oOff = _mm256_setzero_si256();
   std::size_t j = outBegin;
   for (; j + 8 <= outEnd; j += 8) {
-    const __m256i h = sample8(p, x + j, y + j);
+    const __m256i h = sample8<kDepth>(p, m, j);
     const __m256i off = _mm256_cmpeq_epi32(h, neg);
     const __m256i hasHue = _mm256_andnot_si256(_mm256_or_si256(off, _mm256_cmpeq_epi32(h, noHue)), neg);
     oBg = _mm256_sub_epi32(oBg, _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tOutBg, wrapDist8(h, bg))));
@@ -196,7 +217,7 @@ __attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const To
   c.outBackground += hsum(oBg);
   c.outOff += hsum(oOff);
   c.outOther += outVec - hsum(oBg) - hsum(oOff);
-  countScalar(p, t, x, y, hm, 0, 0, j, outEnd, c);
+  countScalar<kDepth>(p, t, m, 0, 0, j, outEnd, c);
 }
 #endif
 
@@ -232,12 +253,15 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
   const std::size_t n = m_nIn + m_nOut;
   m_x.resize(n);
   m_y.resize(n);
+  m_z.resize(n);
   m_hue.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const ModelPoint &p = i < m_nIn ? model.inner[i] : model.outer[i - m_nIn];
     m_x[i] = p.x;
     m_y[i] = p.y;
+    m_z[i] = p.z;
     m_hue[i] = deci(p.hue) % 3600;
+    m_hasDepth = m_hasDepth || p.z != 0.f;
   }
   m_bgHue = deci(model.backgroundHue) % 3600;
   m_tolIn = deci(params.inTolDeg);
@@ -294,14 +318,21 @@ FitnessCounts StereoFitness::countCamera(int cam, const Phi &phi) const
   const Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
   FitnessCounts counts;
   const std::size_t n = m_nIn + m_nOut;
+  const ModelSoA m{m_x.data(), m_y.data(), m_z.data(), m_hue.data()};
 #ifdef PM_HAVE_X86
   static const bool avx2 = cpuHasAvx2();
   if (avx2 && !g_forceScalar) {
-    countAvx2(p, tol, m_x.data(), m_y.data(), m_hue.data(), 0, m_nIn, m_nIn, n, counts);
+    if (m_hasDepth)
+      countAvx2<true>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
+    else
+      countAvx2<false>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
     return counts;
   }
 #endif
-  countScalar(p, tol, m_x.data(), m_y.data(), m_hue.data(), 0, m_nIn, m_nIn, n, counts);
+  if (m_hasDepth)
+    countScalar<true>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
+  else
+    countScalar<false>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
   return counts;
 }
 
@@ -312,8 +343,9 @@ double StereoFitness::visibleFraction(const Phi &phi, int camera) const
   const Projection p = projectionOf(camera, phi);
   std::size_t in = 0;
   for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
-    const double xc = p.r[0] * m_x[i] + p.r[1] * m_y[i] + p.t[0], yc = p.r[3] * m_x[i] + p.r[4] * m_y[i] + p.t[1];
-    const double zc = p.r[6] * m_x[i] + p.r[7] * m_y[i] + p.t[2];
+    const double X = m_x[i], Y = m_y[i], Z = m_z[i];
+    const double xc = p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1];
+    const double zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
     if (zc <= 1e-3)
       continue;
     const double u = p.px * xc / zc + p.u0, v = p.py * yc / zc + p.v0;
@@ -335,9 +367,9 @@ double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
       bool front = true;
       for (int k = 0; k < 2; ++k) {
         const Projection &p = k ? pb : pa;
-        const double X = m_x[i], Y = m_y[i];
-        const double xc = p.r[0] * X + p.r[1] * Y + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.t[1];
-        const double zc = p.r[6] * X + p.r[7] * Y + p.t[2];
+        const double X = m_x[i], Y = m_y[i], Z = m_z[i];
+        const double xc = p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1];
+        const double zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
         front = front && zc > 1e-3;
         uv[k][0] = p.px * xc / zc + p.u0;
         uv[k][1] = p.py * yc / zc + p.v0;
@@ -360,14 +392,15 @@ std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) c
   for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
     const bool inner = i < m_nIn;
     FitnessCounts c;
-    const std::int32_t h = sampleScalar(p, m_x[i], m_y[i]);
+    const std::int32_t h = m_hasDepth ? sampleScalar<true>(p, m_x[i], m_y[i], m_z[i]) : sampleScalar<false>(p, m_x[i], m_y[i], 0.f);
     if (inner)
       classifyIn(h, m_hue[i], tol, c);
     else
       classifyOut(h, tol, c);
     PointScore s;
-    const float xc = p.r[0] * m_x[i] + p.r[1] * m_y[i] + p.t[0], yc = p.r[3] * m_x[i] + p.r[4] * m_y[i] + p.t[1];
-    const float zc = p.r[6] * m_x[i] + p.r[7] * m_y[i] + p.t[2];
+    const float X = m_x[i], Y = m_y[i], Z = m_z[i];
+    const float xc = p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1];
+    const float zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
     s.u = zc > 0 ? p.px * xc / zc + p.u0 : -1.f;
     s.v = zc > 0 ? p.py * yc / zc + p.v0 : -1.f;
     s.inner = inner;

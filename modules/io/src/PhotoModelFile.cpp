@@ -16,29 +16,32 @@ namespace {
 
 constexpr const char *kFormat = "visp-photomodel-model";
 
-json pointsToJson(const std::vector<ModelPoint> &pts)
+json pointsToJson(const std::vector<ModelPoint> &pts, bool withZ)
 {
   json a = json::array();
   for (const auto &p : pts)
-    a.push_back({p.x, p.y, p.hue, p.u, p.v});
+    a.push_back(withZ ? json{p.x, p.y, p.z, p.hue, p.u, p.v} : json{p.x, p.y, p.hue, p.u, p.v});
   return a;
 }
 
-std::vector<ModelPoint> pointsFromJson(const json &a, const char *name)
+std::vector<ModelPoint> pointsFromJson(const json &a, const char *name, bool withZ)
 {
+  const std::string shape = withZ ? "[x_mm, y_mm, z_mm, hue_deg, u_px, v_px]" : "[x_mm, y_mm, hue_deg, u_px, v_px]";
   if (!a.is_array())
-    throw Error(std::string("\"") + name + "\" must be an array of [x_mm, y_mm, hue_deg, u_px, v_px]");
+    throw Error(std::string("\"") + name + "\" must be an array of " + shape);
   std::vector<ModelPoint> pts;
   pts.reserve(a.size());
+  const std::size_t n = withZ ? 6 : 5, k = withZ ? 1 : 0;
   for (const auto &e : a) {
-    if (!e.is_array() || e.size() != 5)
-      throw Error(std::string("every point of \"") + name + "\" must be [x_mm, y_mm, hue_deg, u_px, v_px]");
+    if (!e.is_array() || e.size() != n)
+      throw Error(std::string("every point of \"") + name + "\" must be " + shape);
     ModelPoint p;
     p.x = e[0].get<float>();
     p.y = e[1].get<float>();
-    p.hue = e[2].get<float>();
-    p.u = e[3].get<float>();
-    p.v = e[4].get<float>();
+    p.z = withZ ? e[2].get<float>() : 0.f;
+    p.hue = e[2 + k].get<float>();
+    p.u = e[3 + k].get<float>();
+    p.v = e[4 + k].get<float>();
     pts.push_back(p);
   }
   return pts;
@@ -48,15 +51,21 @@ std::vector<ModelPoint> pointsFromJson(const json &a, const char *name)
 
 std::string photoModelToJson(const PhotoModel &m)
 {
+  const bool depth = m.hasDepth();
   json j{{"format", kFormat},
-         {"version", 1},
+         {"version", depth ? 2 : 1},
          {"distance_mm", m.distanceMm},
          {"camera", {{"px", m.px}, {"py", m.py}, {"u0", m.u0}, {"v0", m.v0}, {"width", m.photoWidth}, {"height", m.photoHeight}}},
          {"centroid_px", {m.centroidU, m.centroidV}},
          {"background_hue_deg", m.backgroundHue},
          {"target_hue_deg", m.targetHue},
-         {"s_in", pointsToJson(m.inner)},
-         {"s_out", pointsToJson(m.outer)}};
+         {"s_in", pointsToJson(m.inner, depth)},
+         {"s_out", pointsToJson(m.outer, depth)}};
+  if (depth) {
+    j["origin_in_hand_mm"] = {m.originInHandMm[0], m.originInHandMm[1], m.originInHandMm[2]};
+    j["depth_range_mm"] = {m.depthRangeMm[0], m.depthRangeMm[1]};
+    j["n_in_dropped"] = m.nInDropped;
+  }
   return j.dump() + "\n";
 }
 
@@ -70,7 +79,7 @@ PhotoModel loadPhotoModel(const std::string &path)
   PhotoModel m;
   try {
     const json j = json::parse(f);
-    detail::checkFormat(j, kFormat);
+    const int version = detail::checkFormat(j, kFormat, 2);
     m.distanceMm = j.at("distance_mm").get<double>();
     const json &c = j.at("camera");
     m.px = c.at("px").get<double>();
@@ -86,8 +95,19 @@ PhotoModel loadPhotoModel(const std::string &path)
     m.centroidV = cen[1];
     m.backgroundHue = j.at("background_hue_deg").get<float>();
     m.targetHue = j.value("target_hue_deg", 0.f);
-    m.inner = pointsFromJson(j.at("s_in"), "s_in");
-    m.outer = pointsFromJson(j.at("s_out"), "s_out");
+    m.inner = pointsFromJson(j.at("s_in"), "s_in", version == 2);
+    m.outer = pointsFromJson(j.at("s_out"), "s_out", version == 2);
+    if (version == 2) {
+      const auto o = j.at("origin_in_hand_mm").get<std::vector<double>>();
+      const auto r = j.at("depth_range_mm").get<std::vector<double>>();
+      if (o.size() != 3 || r.size() != 2)
+        throw Error("\"origin_in_hand_mm\" must be [x, y, z] and \"depth_range_mm\" [near, far]");
+      for (int i = 0; i < 3; ++i)
+        m.originInHandMm[i] = o[static_cast<std::size_t>(i)];
+      m.depthRangeMm[0] = r[0];
+      m.depthRangeMm[1] = r[1];
+      m.nInDropped = j.value("n_in_dropped", 0);
+    }
   } catch (const Error &e) {
     throw Error("photo-model file '" + path + "' is corrupt: " + e.what());
   } catch (const json::exception &e) {

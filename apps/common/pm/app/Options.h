@@ -9,6 +9,7 @@
 #include "pm/core/PhotoModelBuilder.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/tracker/PhotoModelTracker.h"
 
 namespace pm::app {
@@ -17,6 +18,18 @@ namespace pm::app {
 void addModelOptions(CLI::App &app, PhotoModelParams &p);
 //! --noise, --exposure, --occluder, --supersampling, --seed
 void addSceneOptions(CLI::App &app, sim::SceneParams &p);
+//! Which photo-model the lab makes of its target: the paper's flat one or the stereo one (with depth).
+struct LabModelChoice
+{
+  bool stereo = false;      //!< --stereo: the rig's two cameras take the photos, every point gets its relief
+  double distanceMm = 500;  //!< --distance-mm: where the toy is when its photos are taken (and, flat, the photo distance)
+  PhotoModelParams photo;   //!< region and sampling (addModelOptions)
+};
+//! --stereo, --distance-mm (the photo distance of the flat model, the toy's distance for the stereo one)
+void addLabModelOptions(CLI::App &app, LabModelChoice &c);
+//! The lab's model of \e scene's toy, as chosen, with its true frame. Throws pm::Error.
+sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c);
+
 //! --in-tol-deg, --in-bg-tol-deg, --out-bg-tol-deg
 void addFitnessOptions(CLI::App &app, FitnessParams &p);
 

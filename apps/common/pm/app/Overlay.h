@@ -24,6 +24,13 @@ vpImage<vpRGBa> drawModel(const PhotoModel &m);
 */
 vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<PointScore> &scores,
                                 const std::string &label);
+/*!
+  The relief the rig measured: the photo in grey, each matched region pixel coloured by its depth
+  in the hand frame (\e depthMm, NaN where unmatched; red near, blue far over [near, far]), the
+  S_in points kept (white) and dropped (black), and a colour bar with the depths in mm.
+*/
+vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &depthMm, const PhotoModel &m,
+                          const std::vector<ModelPoint> &dropped, double nearMm, double farMm);
 //! Writes \e text at (row, col) with ViSP's font, in \e color.
 void drawLabel(vpImage<vpRGBa> &I, const std::string &text, int row, int col, const vpRGBa &color);
 //! Places \e b to the right of \e a.

@@ -9,6 +9,14 @@
   lengths px, py becomes M_r = ((u - cu) d / px, (v - cv) d / py, 0) in millimetres, where
   (cu, cv) is the centroid of the target region: the model frame's origin is the region's
   centroid (our choice, SPEC.md section 3).
+
+  The stereo photo-model (buildStereoPhotoModel) gives every point its relief instead: z is
+  measured by the rig when the photos are taken, the origin is the 3-D centroid of S_in and the
+  axes are those of the hand frame at the photo pose. Both kinds share this type; hasDepth()
+  tells them apart, and the fitness projects (x, y, z) either way.
+
+      pm::PhotoModel m = pm::io::loadPhotoModel("model.json");   // version 1 (flat) or 2 (depth)
+      if (m.hasDepth()) std::cout << "relief " << m.depthRangeMm[0] << " to " << m.depthRangeMm[1] << " mm\n";
 */
 #include <string>
 #include <vector>
@@ -33,8 +41,14 @@ struct PhotoModel
   float targetHue = 0;             //!< circular mean hue of S_in (deg), for reports
   std::vector<ModelPoint> inner;   //!< S_in
   std::vector<ModelPoint> outer;   //!< S_out
+  // Stereo models only (reports; the fitness needs the points alone):
+  double originInHandMm[3] = {0, 0, 0}; //!< the model origin in the hand frame at the photo pose (mm)
+  double depthRangeMm[2] = {0, 0};      //!< nearest and farthest S_in point along the hand's z (mm)
+  int nInDropped = 0;                   //!< S_in points dropped for want of a reliable stereo match
 
   std::size_t size() const { return inner.size() + outer.size(); }
+  //! True when some point lies off the plane z = 0 (a stereo model).
+  bool hasDepth() const;
   /*!
     Throws pm::Error if the model cannot be used: S_in empty, a non-finite coordinate or
     hue outside [0, 360), a non-positive distance or focal length. \e source names the

@@ -13,7 +13,8 @@
       F_L = (sum of p over S_in and S_out) / n,  F = (F_L + F_R) / 2
 
   Hue distances wrap around the circle; a point projected off the image (or behind the camera)
-  scores \e offImage (0). Tolerances and scores are parameters with the paper's defaults.
+  scores \e offImage (0). A model point is (x, y, z) in the model frame: z = 0 for the paper's
+  flat model (then the kernels run exactly the flat operations), the relief for a stereo model. Tolerances and scores are parameters with the paper's defaults.
 
   Each point is counted into its class and F is made from the integer counts, so the result is
   exact and identical whatever the instruction set (AVX2 or scalar) and the order of points.
@@ -106,6 +107,8 @@ public:
 
   const HuePlane &huePlane(int camera) const { return m_planes[static_cast<std::size_t>(camera)]; }
   std::size_t modelSize() const { return m_nIn + m_nOut; }
+  //! True when the model carries depth (some point off the plane z = 0): the kernels then project (x, y, z).
+  bool hasDepth() const { return m_hasDepth; }
   const FitnessParams &params() const { return m_params; }
   //! "avx2" or "scalar": the kernel this machine runs.
   static const char *kernelName();
@@ -130,12 +133,13 @@ private:
   FitnessParams m_params;
   Camera m_cams[2];
   std::size_t m_nIn = 0, m_nOut = 0;
-  // Model points, structure of arrays padded to a multiple of 8: x, y (mm), hue (tenths of a degree).
-  std::vector<float> m_x, m_y;
+  // Model points, structure of arrays: x, y, z (mm), hue (tenths of a degree).
+  std::vector<float> m_x, m_y, m_z;
   std::vector<std::int32_t> m_hue;
   std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
   std::array<HuePlane, 2> m_planes;
   bool m_hasImages = false;
+  bool m_hasDepth = false; //!< some point has z != 0 (the 3-D model); else the flat model's exact kernel
 };
 
 } // namespace pm

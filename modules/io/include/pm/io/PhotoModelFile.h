@@ -13,6 +13,21 @@
         "s_in":  [[x_mm, y_mm, hue_deg, u_px, v_px], ...],   // z = 0 on the model plane
         "s_out": [[x_mm, y_mm, hue_deg, u_px, v_px], ...]    // hue: the background's there
       }
+
+  Version 2 (a stereo model, with depth) has a z per point and what the rig measured:
+
+      {
+        "format": "visp-photomodel-model", "version": 2,
+        ... as version 1 (distance_mm: the origin's depth in the hand frame; camera: the left one),
+        "origin_in_hand_mm": [x, y, z],        // the model origin in the hand frame at the photo pose
+        "depth_range_mm": [near, far],         // S_in's extent along the hand's z
+        "n_in_dropped": 12,                    // S_in points without a reliable stereo match
+        "s_in":  [[x_mm, y_mm, z_mm, hue_deg, u_px, v_px], ...],
+        "s_out": [[x_mm, y_mm, z_mm, hue_deg, u_px, v_px], ...]
+      }
+
+  A model with every z = 0 is written as version 1, byte for byte as before; version 1 files
+  load as flat models and behave exactly as they always did.
 */
 #include <string>
 

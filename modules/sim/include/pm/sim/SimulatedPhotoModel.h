@@ -4,8 +4,16 @@
   The photo-model of a simulated target, made as a user would make it: the scene's two photos
   (Fig. 4 (a), (b)) taken by one camera at a known distance, then buildPhotoModel().
   Also gives where the model frame sits in the toy's frame, for ground truth.
+
+  The stereo model is made as a user of a rig would make it: the rig on the hand, the toy
+  \e distanceMm ahead (its base, facing the hand), the backdrop pair then the photo pair, then
+  buildStereoPhotoModel(). No distance is given to the builder: it measures it.
+
+      const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
+      const pm::Phi truth = sm.truth(hMo);   // the model's true pose for a toy at hMo
 */
 #include "pm/core/PhotoModelBuilder.h"
+#include "pm/core/StereoPhotoModelBuilder.h"
 #include "pm/core/Pose.h"
 #include "pm/sim/Scene.h"
 
@@ -14,8 +22,15 @@ namespace pm::sim {
 struct SimulatedPhotoModel
 {
   PhotoModelBuild build;
-  vpImage<vpRGBa> background, photo; //!< the two photos
+  vpImage<vpRGBa> background, photo; //!< the two photos (the left ones for a stereo model)
   vpHomogeneousMatrix oMm;           //!< the model frame in the toy's frame (metres)
+  // Stereo models only:
+  bool stereo = false;
+  vpImage<vpRGBa> backgroundRight, photoRight;
+  vpImage<float> depth;              //!< hand-frame z (mm) of the matched left region pixels, NaN elsewhere
+  double backdropMm = 0;             //!< the backdrop's depth the builder measured (left camera, mm)
+  int nOutFallback = 0;
+  std::vector<ModelPoint> dropped;   //!< S_in points without a reliable match
 
   /*!
     The model's true pose in the hand frame for a toy at \e hMo: hMm = hMo * oMm. The model
@@ -28,5 +43,12 @@ struct SimulatedPhotoModel
 //! Photos by camera \e cam (w x h) at \e distanceMm, then the model. Throws pm::Error.
 SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraParameters &cam, unsigned w, unsigned h,
                                             double distanceMm, const PhotoModelParams &params = PhotoModelParams());
+
+/*!
+  The stereo model of the toy at hMo = (0, 0, \e distanceMm) in the hand frame (facing the rig),
+  from the rig's backdrop pair and photo pair. Throws pm::Error as buildStereoPhotoModel().
+*/
+SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const StereoRig &rig, double distanceMm = 500,
+                                                  const StereoModelParams &params = StereoModelParams());
 
 } // namespace pm::sim

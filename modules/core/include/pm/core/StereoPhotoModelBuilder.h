@@ -1,0 +1,83 @@
+#pragma once
+/*!
+  \file StereoPhotoModelBuilder.h
+  The stereo photo-model: the rig's own two cameras take the photos (the backdrop alone, then
+  the target on it, from one hand pose), and every model point gets its relief.
+
+  1. The target region in each view, as buildPhotoModel() finds it (the left view's S_in and
+     S_out are sampled as in the flat model). A target missing from one view, or a background
+     pair that does not match the photo pair, is an error.
+  2. The backdrop's depth: OpenCV's semi-global matcher (cv::StereoSGBM) on the rectified
+     background pair (cv::stereoRectify), the median over the target's surroundings; or given.
+  3. The photo pair, rectified, is matched by cv::StereoSGBM with the disparity search bounded
+     by the backdrop (from \e behindBackdropMm behind it to \e maxReliefMm in front), with
+     OpenCV's uniqueness and left-right checks. Each S_in point takes the disparity where its
+     pixel lands in the rectified left image (bilinear over valid neighbours whose spread is
+     under \e maxDisparitySpreadPx): its 3-D position is on its own pixel's ray at that depth.
+     Points without a reliable match, or whose depth lies more than \e maxLocalDeviationMm off
+     the median of the matched pixels around them, are dropped and counted.
+  4. Each S_out point lies on its pixel's ray at the depth of the silhouette next to it (the
+     median depth of the matched region pixels within \e silhouetteRadiusPx of it).
+  5. The model frame: origin at the 3-D centroid of S_in, axes those of the hand frame at the
+     photo pose (so hMm = translation(origin) at that pose).
+
+  A target with too little texture to match (under \e minMatchedFraction of S_in matched) is
+  refused, not faked: a flat model at a guessed depth is what the stereo model replaces, and the
+  user can still choose it knowingly (buildPhotoModel, pm-make-model --flat).
+
+      const pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bgL, bgR, L, R);
+      pm::io::savePhotoModel(b.model, "model.json");            // version 2: z per point
+      std::cout << "origin in the hand frame " << b.hMm.getTranslationVector().t() << "\n";
+*/
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/core/PhotoModelBuilder.h"
+#include "pm/core/StereoRig.h"
+
+namespace pm {
+
+struct StereoModelParams
+{
+  PhotoModelParams photo;            //!< region and sampling, as the flat model
+  double backdropMm = 0;             //!< the backdrop's depth along the left camera's axis (0: measured)
+  double maxReliefMm = 200;          //!< search this far in front of the backdrop (mm)
+  double behindBackdropMm = 20;      //!< ... and this far behind it (mm)
+  int blockPx = 5;                   //!< SGBM block size (odd)
+  int uniquenessPercent = 5;         //!< SGBM uniqueness ratio
+  double maxDisparitySpreadPx = 1.5; //!< a point's neighbouring disparities must agree within this
+  double localRadiusPx = 8;          //!< a point's depth is checked against the matched pixels this close ...
+  double maxLocalDeviationMm = 8;    //!< ... and dropped beyond this from their median (a wrong match)
+  double silhouetteRadiusPx = 12;    //!< S_out takes the depth of region pixels this close
+  double minMatchedFraction = 0.5;   //!< fewer S_in points matched: refused (too little texture)
+  double maxRegionFraction = 0.5;    //!< a larger region means the background pair does not match
+
+  //! Throws pm::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+struct StereoPhotoModelBuild
+{
+  PhotoModel model;                    //!< points in the model frame, z included
+  vpImage<unsigned char> regionLeft, regionRight;
+  vpImage<float> depthLeft;            //!< hand-frame z (mm) of each matched region pixel of the left photo, NaN elsewhere
+  vpHomogeneousMatrix hMm;             //!< the model frame in the hand frame at the photo pose (metres)
+  double backdropMm = 0;               //!< backdrop depth used (left camera's z, mm)
+  bool backdropMeasured = false;       //!< measured from the background pair (else given)
+  int nOutFallback = 0;                //!< S_out points with no matched region pixel near them (median depth used)
+  std::vector<ModelPoint> dropped;     //!< the S_in points dropped (u, v, hue as sampled), for pictures
+};
+
+/*!
+  Builds the stereo model from the background pair (\e bgL, \e bgR) and the photo pair (\e L,
+  \e R), all taken by \e rig from one hand pose. Throws pm::Error with what to do for: images
+  whose size differs from the rig's cameras, a background pair that does not match the photo
+  pair, the target missing from (or cut by) one view, a backdrop that cannot be matched (give
+  \e backdropMm), too little texture to match.
+*/
+StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL,
+                                            const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
+                                            const vpImage<vpRGBa> &R, const StereoModelParams &params = StereoModelParams());
+
+} // namespace pm

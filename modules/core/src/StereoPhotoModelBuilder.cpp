@@ -1,0 +1,414 @@
+#include "pm/core/StereoPhotoModelBuilder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "pm/core/Error.h"
+#include "pm/core/Hue.h"
+
+namespace pm {
+
+void StereoModelParams::validate() const
+{
+  photo.validate();
+  auto check = [](bool ok, const char *what) {
+    if (!ok)
+      throw Error(std::string("stereo photo-model parameter ") + what);
+  };
+  check(backdropMm >= 0 && std::isfinite(backdropMm), "backdrop distance must be 0 (measured) or positive");
+  check(maxReliefMm > 0 && maxReliefMm <= 2000, "maximum relief must lie in (0, 2000] mm");
+  check(behindBackdropMm >= 0 && behindBackdropMm <= 1000, "distance behind the backdrop must lie in [0, 1000] mm");
+  check(blockPx >= 1 && blockPx <= 21 && blockPx % 2 == 1, "block size must be odd, in [1, 21] px");
+  check(uniquenessPercent >= 0 && uniquenessPercent <= 100, "uniqueness must lie in [0, 100] %");
+  check(maxDisparitySpreadPx > 0 && maxDisparitySpreadPx <= 50, "disparity spread must lie in (0, 50] px");
+  check(silhouetteRadiusPx >= 1 && silhouetteRadiusPx <= 100, "silhouette radius must lie in [1, 100] px");
+  check(localRadiusPx >= 1 && localRadiusPx <= 100, "local radius must lie in [1, 100] px");
+  check(maxLocalDeviationMm > 0 && std::isfinite(maxLocalDeviationMm), "local deviation must be positive");
+  check(minMatchedFraction >= 0 && minMatchedFraction <= 1, "minimum matched fraction must lie in [0, 1]");
+  check(maxRegionFraction > 0 && maxRegionFraction <= 1, "maximum region fraction must lie in (0, 1]");
+}
+
+namespace {
+
+cv::Mat toBgr(const vpImage<vpRGBa> &im)
+{
+  cv::Mat m(static_cast<int>(im.getHeight()), static_cast<int>(im.getWidth()), CV_8UC3);
+  for (int v = 0; v < m.rows; ++v)
+    for (int u = 0; u < m.cols; ++u) {
+      const vpRGBa &p = im[static_cast<unsigned>(v)][static_cast<unsigned>(u)];
+      m.at<cv::Vec3b>(v, u) = cv::Vec3b(p.B, p.G, p.R);
+    }
+  return m;
+}
+
+cv::Matx33d intrinsics(const vpCameraParameters &c)
+{
+  return cv::Matx33d(c.get_px(), 0, c.get_u0(), 0, c.get_py(), c.get_v0(), 0, 0, 1);
+}
+
+//! The rectified geometry of the rig (pinhole cameras) and the maps of both views.
+struct Rectification
+{
+  cv::Matx33d K[2];
+  cv::Mat R1, R2, P1, P2, Q, map[2][2];
+  double f = 0, cx1 = 0, cx2 = 0, cy = 0, Tx = 0; // Tx: the right camera's x in the rectified left frame (mm)
+  cv::Size size;
+
+  Rectification(const StereoRig &rig)
+  {
+    size = cv::Size(static_cast<int>(rig.left.width), static_cast<int>(rig.left.height));
+    K[0] = intrinsics(rig.left.cam);
+    K[1] = intrinsics(rig.right.cam);
+    const vpHomogeneousMatrix cRMcL = rig.cLMcR().inverse(); // X_R = R X_L + T (OpenCV's convention)
+    cv::Matx33d R;
+    cv::Vec3d T;
+    for (unsigned i = 0; i < 3; ++i) {
+      for (unsigned j = 0; j < 3; ++j)
+        R(static_cast<int>(i), static_cast<int>(j)) = cRMcL[i][j];
+      T[static_cast<int>(i)] = cRMcL[i][3] * 1e3;
+    }
+    const cv::Mat noDistortion = cv::Mat::zeros(1, 5, CV_64F);
+    // Each view keeps its own principal point (no CALIB_ZERO_DISPARITY): a toed-in rig's target
+    // stays in both rectified images; alpha 0 keeps only valid pixels at the original size.
+    cv::stereoRectify(K[0], noDistortion, K[1], noDistortion, size, R, T, R1, R2, P1, P2, Q, 0, 0, size);
+    for (int k = 0; k < 2; ++k)
+      cv::initUndistortRectifyMap(K[k], noDistortion, k ? R2 : R1, k ? P2 : P1, size, CV_32FC1, map[k][0], map[k][1]);
+    f = P1.at<double>(0, 0);
+    cx1 = P1.at<double>(0, 2);
+    cx2 = P2.at<double>(0, 2);
+    cy = P1.at<double>(1, 2);
+    Tx = P2.at<double>(0, 3) / P2.at<double>(0, 0);
+  }
+  cv::Mat remap(const cv::Mat &im, int k, int interpolation = cv::INTER_LINEAR) const
+  {
+    cv::Mat out;
+    cv::remap(im, out, map[k][0], map[k][1], interpolation, cv::BORDER_CONSTANT);
+    return out;
+  }
+  //! Disparity (px) of a point at depth Z (mm) along the rectified axis, and back.
+  double disparityAt(double Z) const { return -f * Tx / Z + cx1 - cx2; }
+  double depthAt(double d) const { return -f * Tx / (d - (cx1 - cx2)); }
+  //! Where original left pixels land in the rectified left image.
+  std::vector<cv::Point2f> rectifiedLeft(const std::vector<cv::Point2f> &pts) const
+  {
+    std::vector<cv::Point2f> out;
+    if (!pts.empty())
+      cv::undistortPoints(pts, out, K[0], cv::noArray(), R1, P1);
+    return out;
+  }
+};
+
+//! SGBM disparity (px, float; NaN where invalid) of a rectified pair over [dMin, dMin + n).
+cv::Mat disparity(const cv::Mat &L, const cv::Mat &R, int dMin, int n, const StereoModelParams &p)
+{
+  const int cn = L.channels(), b = p.blockPx;
+  cv::Ptr<cv::StereoSGBM> sgbm = cv::StereoSGBM::create(dMin, n, b, 8 * cn * b * b, 32 * cn * b * b, 1, 31,
+                                                        p.uniquenessPercent, 100, 2, cv::StereoSGBM::MODE_HH);
+  // SGBM leaves the first minDisparity + numDisparities columns without a match, and a toed-in rig's
+  // disparities are large: both images are padded on the left (and on the right for negative
+  // disparities) so that every pixel of the original images can be matched over the whole range.
+  const int padL = std::max(0, dMin + n), padR = std::max(0, -dMin);
+  cv::Mat Lp, Rp, d16p;
+  cv::copyMakeBorder(L, Lp, 0, 0, padL, padR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+  cv::copyMakeBorder(R, Rp, 0, 0, padL, padR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+  sgbm->compute(Lp, Rp, d16p);
+  const cv::Mat d16 = d16p.colRange(padL, padL + L.cols);
+  cv::Mat d(d16.size(), CV_32F);
+  const short invalid = static_cast<short>((dMin - 1) * 16);
+  for (int v = 0; v < d.rows; ++v)
+    for (int u = 0; u < d.cols; ++u) {
+      const short s = d16.at<short>(v, u);
+      d.at<float>(v, u) = s <= invalid ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(s) / 16.f;
+    }
+  return d;
+}
+
+//! Bilinear disparity at (x, y) when its four neighbours are valid and agree within \e spread; NaN otherwise.
+float sampleDisparity(const cv::Mat &d, float x, float y, double spread)
+{
+  const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+  if (i < 0 || j < 0 || i + 1 >= d.cols || j + 1 >= d.rows)
+    return std::numeric_limits<float>::quiet_NaN();
+  const float a = d.at<float>(j, i), b = d.at<float>(j, i + 1), c = d.at<float>(j + 1, i), e = d.at<float>(j + 1, i + 1);
+  if (!(std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(e)))
+    return std::numeric_limits<float>::quiet_NaN();
+  if (std::max({a, b, c, e}) - std::min({a, b, c, e}) > spread)
+    return std::numeric_limits<float>::quiet_NaN();
+  const float fx = x - static_cast<float>(i), fy = y - static_cast<float>(j);
+  return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + e * fx) * fy;
+}
+
+double median(std::vector<double> v)
+{
+  if (v.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+//! Median of the finite values of \e z within \e radius px of \e p (NaN if none).
+double localMedian(const cv::Mat &z, const cv::Point2f &p, double radius)
+{
+  std::vector<double> v;
+  const int r = static_cast<int>(std::ceil(radius)), u0 = static_cast<int>(std::lround(p.x)), v0 = static_cast<int>(std::lround(p.y));
+  for (int y = std::max(0, v0 - r); y <= std::min(z.rows - 1, v0 + r); ++y)
+    for (int x = std::max(0, u0 - r); x <= std::min(z.cols - 1, u0 + r); ++x)
+      if ((x - u0) * (x - u0) + (y - v0) * (y - v0) <= radius * radius && std::isfinite(z.at<float>(y, x)))
+        v.push_back(z.at<float>(y, x));
+  return median(v);
+}
+
+void checkSize(const vpImage<vpRGBa> &im, const RigCamera &cam, const char *what)
+{
+  if (im.getWidth() != cam.width || im.getHeight() != cam.height)
+    throw Error(std::string("stereo photo-model: the ") + what + " is " + std::to_string(im.getWidth()) + "x" +
+                std::to_string(im.getHeight()) + " but the rig's " + cam.name + " camera is " +
+                std::to_string(cam.width) + "x" + std::to_string(cam.height) +
+                " (take the photos with the rig's cameras at their calibrated size)");
+}
+
+//! The flat build of one view, with an error that names the view.
+PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im, const RigCamera &cam,
+                           const StereoModelParams &p)
+{
+  PhotoModelBuild b;
+  try {
+    b = buildPhotoModel(bg, im, cam.cam, 500, p.photo);
+  } catch (const Error &e) {
+    throw Error("stereo photo-model: the target is not found in the " + cam.name + " view (" + e.what() +
+                "); it must be whole in both views");
+  }
+  const unsigned w = b.region.getWidth(), h = b.region.getHeight();
+  std::size_t area = 0, border = 0;
+  for (unsigned v = 0; v < h; ++v)
+    for (unsigned u = 0; u < w; ++u)
+      if (b.region[v][u]) {
+        ++area;
+        border += (u == 0 || v == 0 || u + 1 == w || v + 1 == h) ? 1 : 0;
+      }
+  if (static_cast<double>(area) > p.maxRegionFraction * w * h)
+    throw Error("stereo photo-model: " + std::to_string(static_cast<int>(100.0 * static_cast<double>(area) / (w * h))) + " % of the " +
+                cam.name + " photo differs from its background photo: the background pair does not match the photo "
+                "pair (take both pairs from the same hand pose, the backdrop alone first)");
+  if (border > 0)
+    throw Error("stereo photo-model: the target touches the border of the " + cam.name +
+                " view; it must be whole in both views (move the rig back or centre the target)");
+  return b;
+}
+
+} // namespace
+
+StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR,
+                                            const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R,
+                                            const StereoModelParams &params)
+{
+  params.validate();
+  rig.validate();
+  if (rig.left.width != rig.right.width || rig.left.height != rig.right.height)
+    throw Error("stereo photo-model: both cameras of the rig must have the same image size");
+  checkSize(bgL, rig.left, "left background photo");
+  checkSize(bgR, rig.right, "right background photo");
+  checkSize(L, rig.left, "left photo");
+  checkSize(R, rig.right, "right photo");
+
+  StereoPhotoModelBuild out;
+  PhotoModelBuild left = viewRegion(bgL, L, rig.left, params);
+  const PhotoModelBuild right = viewRegion(bgR, R, rig.right, params);
+  std::size_t areaL = 0, areaR = 0;
+  for (unsigned i = 0; i < left.region.getSize(); ++i) {
+    areaL += left.region.bitmap[i] ? 1u : 0u;
+    areaR += right.region.bitmap[i] ? 1u : 0u;
+  }
+  if (static_cast<double>(std::min(areaL, areaR)) < 0.5 * static_cast<double>(std::max(areaL, areaR)))
+    throw Error("stereo photo-model: the target covers " + std::to_string(areaL) + " px in the left view but " +
+                std::to_string(areaR) + " px in the right: it is hidden or cut in one view (both must see it whole)");
+
+  const Rectification rect(rig);
+  const cv::Mat regionL(left.region.getHeight(), left.region.getWidth(), CV_8U, left.region.bitmap);
+  const cv::Mat rRegionL = rect.remap(regionL, 0, cv::INTER_NEAREST);
+
+  // The backdrop's depth (rectified left z, mm): given, or matched on the background pair at a
+  // quarter of the resolution over a wide range, the median over the target's region.
+  double backdrop = params.backdropMm;
+  out.backdropMeasured = backdrop <= 0;
+  if (out.backdropMeasured) {
+    cv::Mat a = rect.remap(toBgr(bgL), 0), b = rect.remap(toBgr(bgR), 1);
+    cv::pyrDown(a, a);
+    cv::pyrDown(a, a);
+    cv::pyrDown(b, b);
+    cv::pyrDown(b, b);
+    const double dNear = rect.disparityAt(150.0) / 4, dFar = rect.disparityAt(5000.0) / 4;
+    const int dMin = static_cast<int>(std::floor(std::min(dNear, dFar))) - 2;
+    const int n = std::max(16, ((static_cast<int>(std::ceil(std::fabs(dNear - dFar))) + 4 + 15) / 16) * 16);
+    StereoModelParams coarse = params;
+    coarse.blockPx = 5;
+    const cv::Mat d = disparity(a, b, dMin, n, coarse);
+    cv::Mat mask;
+    cv::resize(rRegionL, mask, d.size(), 0, 0, cv::INTER_NEAREST);
+    cv::dilate(mask, mask, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(9, 9)));
+    std::vector<double> ds;
+    for (int v = 0; v < d.rows; ++v)
+      for (int u = 0; u < d.cols; ++u)
+        if (mask.at<unsigned char>(v, u) && std::isfinite(d.at<float>(v, u)))
+          ds.push_back(4.0 * d.at<float>(v, u));
+    std::size_t maskArea = static_cast<std::size_t>(cv::countNonZero(mask));
+    if (ds.size() < 20 || static_cast<double>(ds.size()) < 0.2 * static_cast<double>(maskArea))
+      throw Error("stereo photo-model: the backdrop behind the target cannot be matched in the background pair (" +
+                  std::to_string(ds.size()) + " of " + std::to_string(maskArea) +
+                  " pixels matched; a plain backdrop has no texture): give its distance (--backdrop-mm)");
+    backdrop = rect.depthAt(median(ds));
+    if (!(backdrop > 0) || !std::isfinite(backdrop))
+      throw Error("stereo photo-model: the backdrop's depth came out invalid; give its distance (--backdrop-mm)");
+  }
+  out.backdropMm = backdrop;
+
+  // The photo pair at full resolution, disparities bounded by the backdrop.
+  const double dFar = rect.disparityAt(backdrop + params.behindBackdropMm);
+  const double dNear = rect.disparityAt(std::max(50.0, backdrop - params.maxReliefMm));
+  const int dMin = static_cast<int>(std::floor(std::min(dFar, dNear)));
+  const int n = std::max(16, ((static_cast<int>(std::ceil(std::fabs(dNear - dFar))) + 15) / 16) * 16);
+  const cv::Mat disp = disparity(rect.remap(toBgr(L), 0), rect.remap(toBgr(R), 1), dMin, n, params);
+
+  // A left pixel's position in the hand frame (mm) from its rectified disparity.
+  const vpHomogeneousMatrix hMcL = rig.left.hMc;
+  cv::Matx33d R1t;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      R1t(i, j) = rect.R1.at<double>(j, i);
+  auto leftCameraPoint = [&](const cv::Point2f &r, double d) {
+    const double Z = rect.depthAt(d);
+    const cv::Vec3d Xr((r.x - rect.cx1) * Z / rect.f, (r.y - rect.cy) * Z / rect.f, Z);
+    return R1t * Xr;
+  };
+  auto toHand = [&](const cv::Vec3d &c) {
+    cv::Vec3d h;
+    for (unsigned i = 0; i < 3; ++i)
+      h[static_cast<int>(i)] = hMcL[i][0] * c[0] + hMcL[i][1] * c[1] + hMcL[i][2] * c[2] + hMcL[i][3] * 1e3;
+    return h;
+  };
+
+  // Dense depth of the left region: the left camera's z (for S_out) and the hand's z (depth.png).
+  const unsigned w = rig.left.width, h = rig.left.height;
+  std::vector<cv::Point2f> regionPx;
+  for (unsigned v = 0; v < h; ++v)
+    for (unsigned u = 0; u < w; ++u)
+      if (left.region[v][u])
+        regionPx.emplace_back(static_cast<float>(u), static_cast<float>(v));
+  const std::vector<cv::Point2f> regionRect = rect.rectifiedLeft(regionPx);
+  cv::Mat camZ(static_cast<int>(h), static_cast<int>(w), CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
+  out.depthLeft.resize(h, w, std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t i = 0; i < regionPx.size(); ++i) {
+    const float d = sampleDisparity(disp, regionRect[i].x, regionRect[i].y, params.maxDisparitySpreadPx);
+    if (!std::isfinite(d))
+      continue;
+    const cv::Vec3d c = leftCameraPoint(regionRect[i], d);
+    const int u = static_cast<int>(regionPx[i].x), v = static_cast<int>(regionPx[i].y);
+    camZ.at<float>(v, u) = static_cast<float>(c[2]);
+    out.depthLeft[static_cast<unsigned>(v)][static_cast<unsigned>(u)] = static_cast<float>(toHand(c)[2]);
+  }
+
+  // S_in: each point at its matched depth, on its own pixel's ray; the rest dropped.
+  PhotoModel &m = out.model;
+  m = left.model;
+  std::vector<cv::Point2f> inPx;
+  for (const ModelPoint &p : left.model.inner)
+    inPx.emplace_back(p.u, p.v);
+  const std::vector<cv::Point2f> inRect = rect.rectifiedLeft(inPx);
+  std::vector<ModelPoint> inner;
+  std::vector<cv::Vec3d> inHand;
+  std::vector<float> inHues;
+  for (std::size_t i = 0; i < inPx.size(); ++i) {
+    const float d = sampleDisparity(disp, inRect[i].x, inRect[i].y, params.maxDisparitySpreadPx);
+    const cv::Vec3d c = std::isfinite(d) ? leftCameraPoint(inRect[i], d) : cv::Vec3d();
+    // A match off the relief around it (a wrong match on a thin part or an edge) is no match.
+    const double local = std::isfinite(d) ? localMedian(camZ, inPx[i], params.localRadiusPx) : 0.0;
+    if (!std::isfinite(d) || !(std::fabs(c[2] - local) <= params.maxLocalDeviationMm)) {
+      out.dropped.push_back(left.model.inner[i]);
+      continue;
+    }
+    inHand.push_back(toHand(c));
+    inner.push_back(left.model.inner[i]);
+    inHues.push_back(left.model.inner[i].hue);
+  }
+  m.nInDropped = static_cast<int>(inPx.size() - inner.size());
+  const double matched = inPx.empty() ? 0.0 : static_cast<double>(inner.size()) / static_cast<double>(inPx.size());
+  if (inner.empty() || matched < params.minMatchedFraction)
+    throw Error("stereo photo-model: too little texture to match the two views: " + std::to_string(inner.size()) +
+                " of " + std::to_string(inPx.size()) + " S_in points matched (at least " +
+                std::to_string(static_cast<int>(100 * params.minMatchedFraction)) +
+                " % needed); refused rather than guessed: use the flat model (--flat --distance-mm) if you know the "
+                "target's distance");
+
+  // S_out: on each point's ray at the depth of the silhouette next to it.
+  std::vector<cv::Vec3d> outHand;
+  std::vector<double> allZ;
+  const int rad = static_cast<int>(std::ceil(params.silhouetteRadiusPx + params.photo.stripGapPx + params.photo.stripWidthPx));
+  std::vector<int> fallback;
+  for (const ModelPoint &p : left.model.outer) {
+    std::vector<double> zs;
+    const int u0 = static_cast<int>(std::lround(p.u)), v0 = static_cast<int>(std::lround(p.v));
+    // The nearest matched region pixels: grow the window until some are found (up to rad).
+    for (int r = 4; r <= rad && zs.empty(); r += 4)
+      for (int v = std::max(0, v0 - r); v <= std::min(static_cast<int>(h) - 1, v0 + r); ++v)
+        for (int u = std::max(0, u0 - r); u <= std::min(static_cast<int>(w) - 1, u0 + r); ++u) {
+          const float z = camZ.at<float>(v, u);
+          if (std::isfinite(z) && (u - u0) * (u - u0) + (v - v0) * (v - v0) <= r * r)
+            zs.push_back(z);
+        }
+    const double z = median(zs);
+    if (!std::isfinite(z))
+      fallback.push_back(static_cast<int>(outHand.size()));
+    else
+      allZ.push_back(z);
+    const vpCameraParameters &c = rig.left.cam;
+    const double zz = std::isfinite(z) ? z : 0.0;
+    outHand.push_back(toHand(cv::Vec3d((p.u - c.get_u0()) / c.get_px() * zz, (p.v - c.get_v0()) / c.get_py() * zz, zz)));
+  }
+  if (!fallback.empty()) {
+    const double z = median(allZ.empty() ? std::vector<double>{backdrop} : allZ);
+    const vpCameraParameters &c = rig.left.cam;
+    for (int k : fallback) {
+      const ModelPoint &p = left.model.outer[static_cast<std::size_t>(k)];
+      outHand[static_cast<std::size_t>(k)] =
+          toHand(cv::Vec3d((p.u - c.get_u0()) / c.get_px() * z, (p.v - c.get_v0()) / c.get_py() * z, z));
+    }
+  }
+  out.nOutFallback = static_cast<int>(fallback.size());
+
+  // The model frame: origin at the 3-D centroid of S_in, axes of the hand frame.
+  cv::Vec3d o(0, 0, 0);
+  for (const cv::Vec3d &p : inHand)
+    o += p;
+  o *= 1.0 / static_cast<double>(inHand.size());
+  double zNear = 1e300, zFar = -1e300;
+  for (std::size_t i = 0; i < inner.size(); ++i) {
+    inner[i].x = static_cast<float>(inHand[i][0] - o[0]);
+    inner[i].y = static_cast<float>(inHand[i][1] - o[1]);
+    inner[i].z = static_cast<float>(inHand[i][2] - o[2]);
+    zNear = std::min(zNear, inHand[i][2]);
+    zFar = std::max(zFar, inHand[i][2]);
+  }
+  for (std::size_t i = 0; i < m.outer.size(); ++i) {
+    m.outer[i].x = static_cast<float>(outHand[i][0] - o[0]);
+    m.outer[i].y = static_cast<float>(outHand[i][1] - o[1]);
+    m.outer[i].z = static_cast<float>(outHand[i][2] - o[2]);
+  }
+  m.inner = std::move(inner);
+  m.targetHue = circularMeanHue(inHues);
+  m.distanceMm = o[2];
+  for (int i = 0; i < 3; ++i)
+    m.originInHandMm[i] = o[i];
+  m.depthRangeMm[0] = zNear;
+  m.depthRangeMm[1] = zFar;
+  m.validate("(stereo build)");
+  out.hMm = vpHomogeneousMatrix(o[0] * 1e-3, o[1] * 1e-3, o[2] * 1e-3, 0, 0, 0);
+  out.regionLeft = left.region;
+  out.regionRight = right.region;
+  return out;
+}
+
+} // namespace pm
