@@ -57,10 +57,10 @@ int main(int argc, char **argv)
   std::string out, target = "C04", left, right, modelPath, pose = "0,0,500,0,0,0";
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   bool quiet = false;
-  pm::PhotoModelParams mp;
+  pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
   pm::FitnessParams fp;
-  double posStep = 1, epsStep = 0.01, distanceMm = 500, reliefScale = 1;
+  double posStep = 1, epsStep = 0.01, reliefScale = 1;
   app.add_option("--out", out, "output folder (created if missing)")->required();
   auto *optTarget = app.add_option("--target", target, "simulated target C01..C12");
   auto *optL = app.add_option("--left", left, "left image of a user's stereo pair");
@@ -74,9 +74,9 @@ int main(int argc, char **argv)
   app.add_option("--rig", rigPath, "stereo rig file");
   app.add_option("--pos-step", posStep, "grid step of x, y, z (mm)")->check(CLI::Range(0.1, 50.0));
   app.add_option("--eps-step", epsStep, "grid step of eps (quaternion vector)")->check(CLI::Range(0.001, 0.1));
-  app.add_option("--distance-mm", distanceMm, "simulator: photo distance of the model")->check(CLI::PositiveNumber);
+  pm::app::addLabModelOptions(app, lab);
   app.add_option("--relief-scale", reliefScale, "simulator: scale of the toy's relief (0: flat)")->check(CLI::Range(0.0, 3.0));
-  pm::app::addModelOptions(app, mp);
+  pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
   pm::app::addFitnessOptions(app, fp);
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
@@ -112,7 +112,7 @@ int main(int argc, char **argv)
         shape.scaleRelief(reliefScale);
         const pm::sim::Scene scene(shape, sp);
         const pm::sim::SimulatedPhotoModel sm =
-            pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
+            pm::app::makeLabModel(scene, rig, lab);
         model = sm.build.model;
         truth = sm.truth(hMo);
         const pm::sim::StereoImages im = scene.renderStereo(rig, hMo, 0);

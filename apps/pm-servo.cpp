@@ -124,7 +124,7 @@ int main(int argc, char **argv)
   bool quiet = false, noVideo = false, freqSweep = false;
   pm::lab::LoopParams lp;
   pm::ServoParams servo;
-  pm::PhotoModelParams mp;
+  pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)");
   app.add_option("--target", target, "simulated target C01..C12");
@@ -155,7 +155,8 @@ int main(int argc, char **argv)
   app.add_option("--gain-zero", servo.gainAtZero, "vpAdaptiveGain: gain at zero error (1/s)")->check(CLI::PositiveNumber);
   app.add_option("--gain-infinity", servo.gainAtInfinity, "vpAdaptiveGain: gain at infinite error (1/s)")->check(CLI::PositiveNumber);
   app.add_flag("--feed-forward,!--no-feed-forward", servo.feedForward, "follow the target's estimated velocity");
-  pm::app::addModelOptions(app, mp);
+  pm::app::addLabModelOptions(app, lab);
+  pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
   pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(5.0));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
@@ -165,7 +166,7 @@ int main(int argc, char **argv)
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     lp.fps = fps;
     const pm::sim::Scene scene(pm::sim::makeTarget(target), sp);
-    const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, 500, mp);
+    const auto sm = pm::app::makeLabModel(scene, rig, lab);
     const int ax = axisIndex(axis);
     const pm::Phi phi0{0, 0, 500, 0, 0, 0};
     std::vector<pm::Phi> waypoints;

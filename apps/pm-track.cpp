@@ -58,10 +58,10 @@ int main(int argc, char **argv)
   app.option_defaults()->always_capture_default();
   std::string out, target = "C12", trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json"), leftPattern, rightPattern, modelPath, truthPath;
-  double holdS = 1.5, moveS = 1.0, fps = 30, distanceMm = 500, durationS = 0;
+  double holdS = 1.5, moveS = 1.0, fps = 30, durationS = 0;
   int firstFrame = 0, steps = 0;
   bool quiet = false;
-  pm::PhotoModelParams mp;
+  pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
   auto *optTarget = app.add_option("--target", target, "simulated target C01..C12");
@@ -81,8 +81,8 @@ int main(int argc, char **argv)
   optT->needs(optL);
   app.add_option("--first-frame", firstFrame, "recorded sequence: index of the first frame")->check(CLI::Range(0, 100000000));
   app.add_option("--rig", rigPath, "stereo rig file");
-  app.add_option("--distance-mm", distanceMm, "simulator: photo distance of the model")->check(CLI::PositiveNumber);
-  pm::app::addModelOptions(app, mp);
+  pm::app::addLabModelOptions(app, lab);
+  pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
   pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(pm::TrackerParams().budgetMs));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
@@ -126,7 +126,7 @@ int main(int argc, char **argv)
         w.resize(static_cast<std::size_t>(steps));
       trajectory = std::make_unique<pm::sim::Trajectory>(w, holdS, moveS);
       scene = std::make_unique<pm::sim::Scene>(pm::sim::makeTarget(target), sp);
-      const auto sm = pm::sim::makeSimulatedPhotoModel(*scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
+      const auto sm = pm::app::makeLabModel(*scene, rig, lab);
       model = sm.build.model;
       oMm = sm.oMm;
       const double d = durationS > 0 ? std::min(durationS, trajectory->duration()) : trajectory->duration();

@@ -7,9 +7,11 @@
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 #include "pm/core/PhotoModelBuilder.h"
+#include "pm/core/StereoPhotoModelBuilder.h"
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 
 namespace {
@@ -189,4 +191,184 @@ TEST(PhotoModel, CorruptFilesAreClearErrors)
     EXPECT_NE(e.find("m.json"), std::string::npos) << "got: " << e;
   }
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("none.json")); }).find("does not exist"), std::string::npos);
+}
+
+// ---- The stereo photo-model (the rig's two cameras, a depth per point) ----
+
+namespace {
+
+pm::StereoRig stereoLabRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
+
+//! A w x h picture of saturated patches of many hues (not the backdrop's blue) with fine detail.
+vpImage<vpRGBa> colourfulPicture(unsigned w, unsigned h, unsigned seed)
+{
+  vpImage<vpRGBa> I(h, w);
+  std::uint32_t s = seed * 2654435761u + 1;
+  auto rnd = [&s] {
+    s = s * 1664525u + 1013904223u;
+    return static_cast<double>(s >> 8) / 16777216.0;
+  };
+  const double hues[5] = {0, 35, 60, 110, 300}; // red, orange, yellow, green, magenta
+  const int cell = 6;
+  for (unsigned v = 0; v < h; v += cell)
+    for (unsigned u = 0; u < w; u += cell) {
+      const double hue = hues[static_cast<int>(rnd() * 5) % 5] + 10 * rnd(), val = 0.45 + 0.55 * rnd();
+      const double hh = std::fmod(hue, 360.0) / 60.0, f = hh - std::floor(hh), sat = 0.85;
+      const double p = val * (1 - sat), q = val * (1 - sat * f), t = val * (1 - sat * (1 - f));
+      const double tab[6][3] = {{val, t, p}, {q, val, p}, {p, val, t}, {p, q, val}, {t, p, val}, {val, p, q}};
+      const double *c = tab[static_cast<int>(hh) % 6];
+      const vpRGBa rgb(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
+                       static_cast<unsigned char>(255 * c[2]));
+      for (unsigned j = v; j < std::min(h, v + cell); ++j)
+        for (unsigned i = u; i < std::min(w, u + cell); ++i)
+          I[j][i] = rgb;
+    }
+  return I;
+}
+
+struct StereoPhotos
+{
+  vpImage<vpRGBa> bgL, bgR, L, R;
+};
+
+StereoPhotos stereoPhotos(const pm::sim::Scene &scene, const pm::StereoRig &rig, double distanceMm)
+{
+  StereoPhotos p;
+  pm::sim::Rasterizer r;
+  const vpHomogeneousMatrix hMo(0, 0, distanceMm * 1e-3, 0, 0, 0);
+  scene.render(r, rig.left, hMo, 0, 4, p.bgL, false);
+  scene.render(r, rig.right, hMo, 0, 5, p.bgR, false);
+  scene.render(r, rig.left, hMo, 0, 6, p.L, true);
+  scene.render(r, rig.right, hMo, 0, 7, p.R, true);
+  return p;
+}
+
+} // namespace
+
+TEST(StereoPhotoModel, ABoxTopLiesAtItsHeightAndTheOriginAtItsCentroid)
+{
+  // A 120 x 90 mm picture on a block whose top is flat 30 mm in front of its base, beyond a
+  // rounded edge 30 mm wide: the points of the flat top must lie at hand z = 500 - 30.
+  const pm::StereoRig rig = stereoLabRig();
+  const pm::sim::TargetShape box = pm::sim::targetFromImage(colourfulPicture(480, 360, 3), 120, 30, "box");
+  const pm::sim::Scene scene(box);
+  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig, 500);
+  const pm::PhotoModel &m = sm.build.model;
+  ASSERT_TRUE(m.hasDepth());
+  EXPECT_NEAR(sm.backdropMm, 500, 25); // the backdrop measured, not given (left camera's axis)
+  EXPECT_LT(m.nInDropped, static_cast<int>(m.inner.size())); // most of a textured picture matches
+  int onTop = 0;
+  double sum[3] = {0, 0, 0};
+  for (const auto &q : m.inner) {
+    const double xh = q.x + m.originInHandMm[0], yh = q.y + m.originInHandMm[1], zh = q.z + m.originInHandMm[2];
+    sum[0] += xh;
+    sum[1] += yh;
+    sum[2] += zh;
+    if (std::fabs(xh) < 25 && std::fabs(yh) < 10) { // the flat top, 30 mm from every edge
+      ++onTop;
+      EXPECT_NEAR(zh, 470, 1.5) << "point at " << xh << ", " << yh;
+    }
+    EXPECT_GT(zh, 470 - 3); // nothing in front of the top
+    EXPECT_LT(zh, 500 + 3); // nothing behind the base
+  }
+  EXPECT_GT(onTop, 10);
+  for (int i = 0; i < 3; ++i) // the origin is the 3-D centroid of S_in
+    EXPECT_NEAR(sum[i] / static_cast<double>(m.inner.size()), m.originInHandMm[i], 1e-3);
+  EXPECT_NEAR(m.depthRangeMm[0], 470, 2);
+  EXPECT_NEAR(m.depthRangeMm[1], 500, 3);
+  // The model frame in the toy's: the toy's origin is at its base, so z is the centroid's height.
+  EXPECT_NEAR(sm.oMm[2][3] * 1e3, m.originInHandMm[2] - 500, 1e-6);
+  // S_out lies at the depth of the matched surface next to the silhouette: between the top and
+  // the base, nearer the base. (The box's true silhouette is at its base, where its rounded edge
+  // is vertical; the last few millimetres of that edge are too steep to match, so S_out sits up to
+  // about 18 mm in front of it: the limit of matching, stated in the README.)
+  std::vector<double> outZ;
+  for (const auto &q : m.outer) {
+    outZ.push_back(q.z + m.originInHandMm[2]);
+    EXPECT_GT(outZ.back(), 470 - 2);
+    EXPECT_LT(outZ.back(), 500 + 5); // region pixels on the edge that matched the backdrop just behind it
+  }
+  std::nth_element(outZ.begin(), outZ.begin() + static_cast<long>(outZ.size() / 2), outZ.end());
+  EXPECT_GT(outZ[outZ.size() / 2], 485.0) << "median depth of S_out";
+}
+
+TEST(StereoPhotoModel, FileVersionTwoKeepsDepthAndAFlatModelStaysVersionOne)
+{
+  const pm::StereoRig rig = stereoLabRig();
+  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(pm::sim::Scene(pm::sim::makeTarget("C12", 0.5)), rig, 500);
+  const pm::PhotoModel &m = sm.build.model;
+  pm::test::TempDir dir("model2");
+  pm::io::savePhotoModel(m, dir.file("m.json"));
+  EXPECT_NE(pm::test::readText(dir.file("m.json")).find("\"version\":2"), std::string::npos);
+  const pm::PhotoModel r = pm::io::loadPhotoModel(dir.file("m.json"));
+  ASSERT_EQ(r.inner.size(), m.inner.size());
+  ASSERT_EQ(r.outer.size(), m.outer.size());
+  for (std::size_t i = 0; i < m.inner.size(); ++i) {
+    EXPECT_FLOAT_EQ(r.inner[i].z, m.inner[i].z);
+    EXPECT_FLOAT_EQ(r.inner[i].hue, m.inner[i].hue);
+  }
+  for (std::size_t i = 0; i < m.outer.size(); ++i)
+    EXPECT_FLOAT_EQ(r.outer[i].z, m.outer[i].z);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_DOUBLE_EQ(r.originInHandMm[i], m.originInHandMm[i]);
+  EXPECT_EQ(r.nInDropped, m.nInDropped);
+  // A flat model is written as before: version 1, five numbers a point.
+  const Disc d = redDisc();
+  const std::string flat = pm::io::photoModelToJson(pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
+  EXPECT_NE(flat.find("\"version\":1"), std::string::npos);
+  EXPECT_EQ(flat.find("origin_in_hand_mm"), std::string::npos);
+  // A version 2 file with points of five numbers, or a version 3, is refused with pm::Error.
+  pm::test::writeText(dir.file("bad.json"), pm::test::readText(dir.file("m.json")).replace(
+                                                pm::test::readText(dir.file("m.json")).find("\"version\":2"), 11, "\"version\":3"));
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad.json")); }).find("version"), std::string::npos);
+  std::string v2five = pm::io::photoModelToJson(pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
+  v2five.replace(v2five.find("\"version\":1"), 11, "\"version\":2");
+  pm::test::writeText(dir.file("bad2.json"), v2five);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad2.json")); }), "");
+}
+
+TEST(StereoPhotoModel, BadInputIsAClearError)
+{
+  const pm::StereoRig rig = stereoLabRig();
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
+  const StereoPhotos p = stereoPhotos(scene, rig, 500);
+  auto build = [&](const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
+                   const vpImage<vpRGBa> &R) {
+    return pm::test::errorOf([&] { pm::buildStereoPhotoModel(rig, bgL, bgR, L, R); });
+  };
+  // The target in the left view only.
+  EXPECT_NE(build(p.bgL, p.bgR, p.L, p.bgR).find("not found in the right view"), std::string::npos);
+  // The target cut by the right view's border: the right photo taken with the toy 150 mm to the left.
+  {
+    pm::sim::Rasterizer r;
+    vpImage<vpRGBa> R2;
+    scene.render(r, rig.right, vpHomogeneousMatrix(0.16, 0, 0.5, 0, 0, 0), 0, 7, R2, true);
+    const std::string e = build(p.bgL, p.bgR, p.L, R2);
+    EXPECT_TRUE(e.find("right view") != std::string::npos || e.find("right") != std::string::npos) << e;
+  }
+  // Photos whose size differs from the rig's.
+  const vpImage<vpRGBa> small(240, 320, vpRGBa(0, 0, 255));
+  EXPECT_NE(build(p.bgL, p.bgR, small, p.R).find("rig's left camera is 640x480"), std::string::npos);
+  // A background pair that does not match the photo pair (another backdrop).
+  {
+    pm::sim::SceneParams other;
+    other.seaBottom.seed = 99;
+    other.exposure = 0.5;
+    const StereoPhotos q = stereoPhotos(pm::sim::Scene(pm::sim::makeTarget("C12", 0.5), other), rig, 500);
+    const std::string e = build(q.bgL, q.bgR, p.L, p.R);
+    EXPECT_NE(e.find("background pair does not match"), std::string::npos) << e;
+  }
+  // A target with too little texture to match: refused, not faked.
+  {
+    const vpImage<vpRGBa> plain(200, 300, vpRGBa(200, 30, 30));
+    pm::sim::SceneParams sp;
+    sp.noiseSigma = 0;
+    sp.specular = 0;
+    const pm::sim::Scene plainScene(pm::sim::targetFromImage(plain, 120, 15, "plain"), sp);
+    const StereoPhotos u = stereoPhotos(plainScene, rig, 500);
+    pm::StereoModelParams strict;
+    strict.minMatchedFraction = 0.9;
+    const std::string e = pm::test::errorOf([&] { pm::buildStereoPhotoModel(rig, u.bgL, u.bgR, u.L, u.R, strict); });
+    EXPECT_NE(e.find("too little texture"), std::string::npos) << e;
+  }
 }

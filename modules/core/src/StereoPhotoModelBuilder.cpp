@@ -30,6 +30,7 @@ void StereoModelParams::validate() const
   check(maxLocalDeviationMm > 0 && std::isfinite(maxLocalDeviationMm), "local deviation must be positive");
   check(minMatchedFraction >= 0 && minMatchedFraction <= 1, "minimum matched fraction must lie in [0, 1]");
   check(maxRegionFraction > 0 && maxRegionFraction <= 1, "maximum region fraction must lie in (0, 1]");
+  check(maxBackgroundChange >= 0 && maxBackgroundChange <= 255, "maximum background change must lie in [0, 255]");
 }
 
 namespace {
@@ -194,6 +195,24 @@ PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im,
     throw Error("stereo photo-model: " + std::to_string(static_cast<int>(100.0 * static_cast<double>(area) / (w * h))) + " % of the " +
                 cam.name + " photo differs from its background photo: the background pair does not match the photo "
                 "pair (take both pairs from the same hand pose, the backdrop alone first)");
+  // Outside the target the photo shows what the background photo shows (up to noise): else the
+  // two were not taken from the same pose, or of the same backdrop.
+  cv::Mat grown;
+  const cv::Mat region(static_cast<int>(h), static_cast<int>(w), CV_8U, b.region.bitmap);
+  cv::dilate(region, grown, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(31, 31)));
+  std::vector<double> diffs;
+  for (unsigned v = 0; v < h; v += 2)
+    for (unsigned u = 0; u < w; u += 2)
+      if (!grown.at<unsigned char>(static_cast<int>(v), static_cast<int>(u))) {
+        const vpRGBa &a = bg[v][u], &c = im[v][u];
+        diffs.push_back((std::abs(a.R - c.R) + std::abs(a.G - c.G) + std::abs(a.B - c.B)) / 3.0);
+      }
+  const double mad = median(diffs);
+  if (!(mad <= p.maxBackgroundChange))
+    throw Error("stereo photo-model: outside the target the " + cam.name + " photo differs from its background photo by " +
+                std::to_string(static_cast<int>(std::lround(mad))) + " grey levels (median): the background pair does "
+                "not match the photo pair (take both pairs from the same hand pose, the backdrop alone first, under the "
+                "same light)");
   if (border > 0)
     throw Error("stereo photo-model: the target touches the border of the " + cam.name +
                 " view; it must be whole in both views (move the rig back or centre the target)");
@@ -351,14 +370,18 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   for (const ModelPoint &p : left.model.outer) {
     std::vector<double> zs;
     const int u0 = static_cast<int>(std::lround(p.u)), v0 = static_cast<int>(std::lround(p.v));
-    // The nearest matched region pixels: grow the window until some are found (up to rad).
-    for (int r = 4; r <= rad && zs.empty(); r += 4)
-      for (int v = std::max(0, v0 - r); v <= std::min(static_cast<int>(h) - 1, v0 + r); ++v)
-        for (int u = std::max(0, u0 - r); u <= std::min(static_cast<int>(w) - 1, u0 + r); ++u) {
-          const float z = camZ.at<float>(v, u);
-          if (std::isfinite(z) && (u - u0) * (u - u0) + (v - v0) * (v - v0) <= r * r)
-            zs.push_back(z);
-        }
+    for (int v = std::max(0, v0 - rad); v <= std::min(static_cast<int>(h) - 1, v0 + rad); ++v)
+      for (int u = std::max(0, u0 - rad); u <= std::min(static_cast<int>(w) - 1, u0 + rad); ++u) {
+        const float z = camZ.at<float>(v, u);
+        if (std::isfinite(z) && (u - u0) * (u - u0) + (v - v0) * (v - v0) <= rad * rad)
+          zs.push_back(z);
+      }
+    // The silhouette is where the surface turns away from the camera: the farthest of the matched
+    // surface next to the point (its 90th percentile, robust to a wrong match).
+    if (!zs.empty()) {
+      std::nth_element(zs.begin(), zs.begin() + static_cast<long>(zs.size() * 9 / 10), zs.end());
+      zs = {zs[zs.size() * 9 / 10]};
+    }
     const double z = median(zs);
     if (!std::isfinite(z))
       fallback.push_back(static_cast<int>(outHand.size()));

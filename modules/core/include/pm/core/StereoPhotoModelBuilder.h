@@ -16,8 +16,9 @@
      under \e maxDisparitySpreadPx): its 3-D position is on its own pixel's ray at that depth.
      Points without a reliable match, or whose depth lies more than \e maxLocalDeviationMm off
      the median of the matched pixels around them, are dropped and counted.
-  4. Each S_out point lies on its pixel's ray at the depth of the silhouette next to it (the
-     median depth of the matched region pixels within \e silhouetteRadiusPx of it).
+  4. Each S_out point lies on its pixel's ray at the depth of the silhouette next to it: where the
+     surface turns away from the camera, the farthest of the matched region pixels within
+     \e silhouetteRadiusPx (plus the strip's width) of it (their 90th percentile of depth).
   5. The model frame: origin at the 3-D centroid of S_in, axes those of the hand frame at the
      photo pose (so hMm = translation(origin) at that pose).
 
@@ -52,6 +53,7 @@ struct StereoModelParams
   double silhouetteRadiusPx = 12;    //!< S_out takes the depth of region pixels this close
   double minMatchedFraction = 0.5;   //!< fewer S_in points matched: refused (too little texture)
   double maxRegionFraction = 0.5;    //!< a larger region means the background pair does not match
+  double maxBackgroundChange = 12;   //!< ... and so does a median change over this (grey levels) outside the target
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
