@@ -24,7 +24,7 @@ namespace {
 struct Setup
 {
   pm::StereoRig rig;
-  pm::PhotoModel model, model1000;
+  pm::PhotoModel model, model1000, model1000Depth;
   pm::sim::StereoImages images;
   pm::Phi truth;
 
@@ -48,6 +48,11 @@ struct Setup
       model1000.inner.push_back(d.inner[i * d.inner.size() / nIn]);
     for (std::size_t i = 0; i < nOut; ++i)
       model1000.outer.push_back(d.outer[i * d.outer.size() / nOut]);
+    // The same 1,000 points with a relief (a dome 30 mm high): the 3-D kernel, same point count.
+    model1000Depth = model1000;
+    for (auto *set : {&model1000Depth.inner, &model1000Depth.outer})
+      for (pm::ModelPoint &p : *set)
+        p.z = -30.f * std::max(0.05f, 1.f - (p.x * p.x + p.y * p.y) / (90.f * 90.f));
     images = scene.renderStereo(rig, hMo, 0);
   }
 };
@@ -112,6 +117,9 @@ void Fitness_DefaultModel_GenerationBatch(benchmark::State &state)
 }
 void Fitness_1000Points(benchmark::State &s) { runFitness(s, setup().model1000, false); }
 void Fitness_1000Points_Scalar(benchmark::State &s) { runFitness(s, setup().model1000, true); }
+//! The same 1,000 points with depth (the stereo model's kernel): compare with Fitness_1000Points.
+void Fitness_1000Points_Depth(benchmark::State &s) { runFitness(s, setup().model1000Depth, false); }
+void Fitness_1000Points_Depth_Scalar(benchmark::State &s) { runFitness(s, setup().model1000Depth, true); }
 
 /*!
   The peer: the same stereo fitness of the 1,000-point model written with ViSP's own types, as a
@@ -229,6 +237,8 @@ BENCHMARK(Fitness_DefaultModel);
 BENCHMARK(Fitness_DefaultModel_GenerationBatch)->UseRealTime();
 BENCHMARK(Fitness_1000Points);
 BENCHMARK(Fitness_1000Points_Scalar);
+BENCHMARK(Fitness_1000Points_Depth);
+BENCHMARK(Fitness_1000Points_Depth_Scalar);
 BENCHMARK(Fitness_1000Points_ViSPTypes);
 BENCHMARK(Hue_StereoPair_Ours)->Unit(benchmark::kMillisecond);
 BENCHMARK(Hue_StereoPair_ViSP)->Unit(benchmark::kMillisecond);

@@ -14,6 +14,8 @@
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
+#include "pm/sim/Rasterizer.h"
+#include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -289,4 +291,50 @@ TEST(Reproducibility, SameSeedSameInputsSameCsvTimingsAside)
     EXPECT_TRUE(withoutColumns(csv[0], drop) == withoutColumns(csv[1], drop)) << program << ": the runs differ";
     EXPECT_EQ(withoutColumns(csv[0], drop).size(), withoutColumns(csv[1], drop).size()) << program;
   }
+}
+
+TEST(Apps, MakeStereoModelFromAUsersFourPhotosAndRefuseBadOnes)
+{
+  // The rig's two cameras photograph the backdrop, then the crab on it, from one hand pose: the
+  // four files a user of a real rig has. The model has depth, and pm-detect finds the crab with it.
+  TempDir dir("stereo");
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
+  const vpHomogeneousMatrix hMo(0, 0, 0.5, 0, 0, 0);
+  pm::sim::Rasterizer r;
+  vpImage<vpRGBa> I;
+  const char *names[4] = {"bgL.png", "bgR.png", "L.png", "R.png"};
+  for (unsigned k = 0; k < 4; ++k) {
+    scene.render(r, k % 2 ? rig.right : rig.left, hMo, 0, 4 + k, I, k >= 2);
+    pm::io::writeImage(I, dir.file(names[k]));
+  }
+  const std::string files = " --left-background " + dir.file("bgL.png") + " --right-background " + dir.file("bgR.png") +
+                            " --left-photo " + dir.file("L.png") + " --right-photo " + dir.file("R.png");
+  const auto ok = runProgram("pm-make-model", files + " --out " + dir.file("model") + " --quiet");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  for (const char *f : {"model.json", "overlay.png", "model.png", "depth.png", "summary.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir.file("model/") + f)) << f;
+  const auto s = nlohmann::json::parse(pm::test::readText(dir.file("model/summary.json")));
+  EXPECT_EQ(s["kind"], "stereo");
+  EXPECT_EQ(s["model_origin_in_hand_mm"].size(), 3u);
+  EXPECT_NEAR(s["model_origin_in_hand_mm"][2].get<double>(), 480, 20); // a 40 mm deep crab on a backdrop 500 mm away
+  EXPECT_GE(s["n_in_dropped"].get<int>(), 0);
+  EXPECT_LT(s["depth_range_mm"][0].get<double>(), s["depth_range_mm"][1].get<double>());
+  EXPECT_TRUE(pm::io::loadPhotoModel(dir.file("model/model.json")).hasDepth());
+
+  // Bad input: a photo of another size, the target in one view only; one-line errors, nothing written.
+  vpImage<vpRGBa> small(240, 320, vpRGBa(10, 20, 200));
+  pm::io::writeImage(small, dir.file("small.png"));
+  expectOneLineError(runProgram("pm-make-model", " --left-background " + dir.file("bgL.png") + " --right-background " +
+                                                     dir.file("bgR.png") + " --left-photo " + dir.file("small.png") +
+                                                     " --right-photo " + dir.file("R.png") + " --out " + dir.file("bad1")),
+                     "640x480");
+  expectOneLineError(runProgram("pm-make-model", " --left-background " + dir.file("bgL.png") + " --right-background " +
+                                                     dir.file("bgR.png") + " --left-photo " + dir.file("L.png") +
+                                                     " --right-photo " + dir.file("bgR.png") + " --out " + dir.file("bad2")),
+                     "right view");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("bad1")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("bad2")));
+  // The four stereo files go together.
+  EXPECT_EQ(runProgram("pm-make-model", " --left-photo " + dir.file("L.png") + " --out " + dir.file("bad3")).status, 2);
 }

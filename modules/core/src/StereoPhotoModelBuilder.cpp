@@ -359,7 +359,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
     throw Error("stereo photo-model: too little texture to match the two views: " + std::to_string(inner.size()) +
                 " of " + std::to_string(inPx.size()) + " S_in points matched (at least " +
                 std::to_string(static_cast<int>(100 * params.minMatchedFraction)) +
-                " % needed); refused rather than guessed: use the flat model (--flat --distance-mm) if you know the "
+                " % needed); refused rather than guessed: use the flat model (one photo pair, --background --photo --distance-mm) if you know the "
                 "target's distance");
 
   // S_out: on each point's ray at the depth of the silhouette next to it.

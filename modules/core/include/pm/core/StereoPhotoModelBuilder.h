@@ -24,7 +24,7 @@
 
   A target with too little texture to match (under \e minMatchedFraction of S_in matched) is
   refused, not faked: a flat model at a guessed depth is what the stereo model replaces, and the
-  user can still choose it knowingly (buildPhotoModel, pm-make-model --flat).
+  user can still choose it knowingly (buildPhotoModel; pm-make-model --background --photo --distance-mm).
 
       const pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bgL, bgR, L, R);
       pm::io::savePhotoModel(b.model, "model.json");            // version 2: z per point
