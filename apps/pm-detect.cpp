@@ -220,7 +220,18 @@ int main(int argc, char **argv)
     nlohmann::json all = nlohmann::json::array();
     pm::app::Progress progress("detecting", pm::sim::targetCatalog().size(), quiet);
     for (const auto &info : pm::sim::targetCatalog()) {
-      const nlohmann::json s = runOne(info.code, files.dir() + "/" + info.code);
+      nlohmann::json s;
+      try {
+        s = runOne(info.code, files.dir() + "/" + info.code);
+      } catch (const pm::Error &err) {
+        // A target whose model cannot be made (a stereo model refused for want of texture) is a
+        // row of the table, not the end of the run.
+        md << "| " << info.code << " " << info.name << " | model refused: " << err.what() << " |||||||||||\n";
+        csv << info.code << ",,,,,,,,,,,,,\n";
+        all.push_back({{"target", info.code}, {"error", err.what()}});
+        progress.step();
+        continue;
+      }
       const auto &e = s["error_vector"];
       char row[512];
       std::snprintf(row, sizeof row, "| %s %s | %+.1f | %+.1f | %+.1f | %+.3f | %+.3f | %+.3f | %.1f | %.1f | %.3f | %.2f | %ld |\n",
