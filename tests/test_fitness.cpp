@@ -167,6 +167,18 @@ TEST(HuePlane, MatchesThePerPixelFormula)
   EXPECT_EQ(plane.at(1, 1), pm::HuePlane::kNoHue); // grey has no hue when a minimum saturation is set
 }
 
+//! The AVX2 and the scalar kernels give exactly the same F for every pose of \e ps.
+static void expectKernelsAgree(const pm::StereoFitness &fit, const std::vector<pm::Phi> &ps)
+{
+  std::vector<double> a(ps.size()), b(ps.size());
+  fit.evaluate(ps.data(), ps.size(), a.data());
+  pm::StereoFitness::forceScalar(true);
+  fit.evaluate(ps.data(), ps.size(), b.data());
+  pm::StereoFitness::forceScalar(false);
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    ASSERT_EQ(a[i], b[i]) << ps[i].toString() << " kernel " << pm::StereoFitness::kernelName();
+}
+
 class FitnessOnC12 : public ::testing::Test
 {
 protected:
@@ -205,14 +217,7 @@ pm::Phi FitnessOnC12::truth;
 
 TEST_F(FitnessOnC12, Avx2AndScalarKernelsAgreeExactly)
 {
-  const auto ps = randomPoses(2000);
-  std::vector<double> a(ps.size()), b(ps.size());
-  fit->evaluate(ps.data(), ps.size(), a.data());
-  pm::StereoFitness::forceScalar(true);
-  fit->evaluate(ps.data(), ps.size(), b.data());
-  pm::StereoFitness::forceScalar(false);
-  for (std::size_t i = 0; i < ps.size(); ++i)
-    ASSERT_EQ(a[i], b[i]) << ps[i].toString() << " kernel " << pm::StereoFitness::kernelName();
+  expectKernelsAgree(*fit, randomPoses(2000));
 }
 
 TEST_F(FitnessOnC12, ThreadSafeAndBatchEqualsSingle)
@@ -383,13 +388,7 @@ TEST_F(FitnessOnC12Stereo, Avx2AndScalarKernelsAgreeExactlyWithDepth)
   std::vector<pm::Phi> ps;
   for (int i = 0; i < 2000; ++i)
     ps.push_back({pos(rng), pos(rng), z(rng), e(rng), e(rng), e(rng)});
-  std::vector<double> a(ps.size()), b(ps.size());
-  fit->evaluate(ps.data(), ps.size(), a.data());
-  pm::StereoFitness::forceScalar(true);
-  fit->evaluate(ps.data(), ps.size(), b.data());
-  pm::StereoFitness::forceScalar(false);
-  for (std::size_t i = 0; i < ps.size(); ++i)
-    ASSERT_EQ(a[i], b[i]) << ps[i].toString() << " kernel " << pm::StereoFitness::kernelName();
+  expectKernelsAgree(*fit, ps);
 }
 
 TEST_F(FitnessOnC12Stereo, PointsAreProjectedWithTheirDepthAsViSPDoes)
