@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iomanip>
 #include <iostream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -55,7 +56,7 @@ int main(int argc, char **argv)
   int repeat = 5;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
-  auto *optTarget = app.add_option("--target", target, "target C01..C12");
+  auto *optTarget = app.add_option("--target", target, "target C01..C12, or a relief target R1..R3 (box, head, tower)");
   app.add_flag("--all-targets", all, "render the 12 targets and a gallery.png")->excludes(optTarget);
   app.add_option("--texture", texture, "render a target made from this image instead (PNG/JPEG)")->excludes(optTarget);
   app.add_option("--width-mm", widthMm, "with --texture: physical width (mm)")->check(CLI::PositiveNumber);
@@ -63,6 +64,13 @@ int main(int argc, char **argv)
   app.add_option("--pose", pose, "phi = x,y,z,eps1,eps2,eps3 of the target in the hand frame (mm, quaternion vector)");
   app.add_option("--rig", rigPath, "stereo rig file");
   pm::app::addSceneOptions(app, sp);
+  const std::map<std::string, pm::sim::ShadowMode> shadowModes{
+      {"auto", pm::sim::ShadowMode::Auto}, {"on", pm::sim::ShadowMode::On}, {"off", pm::sim::ShadowMode::Off}};
+  app.add_option("--shadows", sp.shadows,
+                 "light: auto (a light fixed in the scene with cast shadows for R1..R3, the hand light for the "
+                 "others), on, or off (the hand light, no shadows)")
+      ->transform(CLI::CheckedTransformer(shadowModes, CLI::ignore_case))
+      ->group("Simulator");
   app.add_option("--repeat", repeat, "stereo frames rendered to time the renderer")->check(CLI::Range(1, 1000));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 

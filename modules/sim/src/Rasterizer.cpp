@@ -56,6 +56,15 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
     Co[i] = oMc[static_cast<unsigned>(i)][3];
   }
 
+  const ShadowMap *shadow = light.shadow;
+  if (shadow) {
+    const double *t = shadow->towardLight();
+    if (std::fabs(t[0] - Lo[0]) + std::fabs(t[1] - Lo[1]) + std::fabs(t[2] - Lo[2]) > 1e-6)
+      throw Error("renderer: the shadow map was made for another light direction");
+  }
+  const double specK = light.specular >= 0 ? light.specular : static_cast<double>(mesh.specular);
+  const double shin = light.shininess >= 0 ? light.shininess : static_cast<double>(mesh.shininess);
+
   double R[3][4];
   for (unsigned i = 0; i < 3; ++i)
     for (unsigned j = 0; j < 4; ++j)
@@ -87,16 +96,37 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
     double Hh[3] = {Lo[0] + V[0], Lo[1] + V[1], Lo[2] + V[2]};
     const double hn = std::sqrt(Hh[0] * Hh[0] + Hh[1] * Hh[1] + Hh[2] * Hh[2]);
     const double nh = hn > 0 ? std::max(0.0, (n[0] * Hh[0] + n[1] * Hh[1] + n[2] * Hh[2]) / hn) : 0.0;
-    const double diff = light.ambient + light.diffuse * nl;
-    const double spec = nl > 0 ? mesh.specular * std::pow(nh, static_cast<double>(mesh.shininess)) : 0.0;
+    // With shadows the ambient term is added per fragment (it is all a shadowed fragment gets).
+    const double diff = shadow ? light.diffuse * nl : light.ambient + light.diffuse * nl;
+    const double spec = nl > 0 ? specK * std::pow(nh, shin) : 0.0;
     p.s = static_cast<float>(v.s * w);
     p.t = static_cast<float>(v.t * w);
     p.mask = static_cast<float>(v.mask * w);
     p.diff = static_cast<float>(diff * w);
     p.spec = static_cast<float>(spec * w);
+    if (shadow) {
+      // Slope-scaled bias: a surface lit at incidence theta changes depth by tan(theta) per unit across the light.
+      const double c = std::max(nl, 0.1), tanInc = std::sqrt(1.0 - c * c) / c;
+      const double bias = light.shadowBiasM + light.shadowSlopeBias * shadow->texel() * tanInc;
+      double su = 0, sv = 0, sd = 0;
+      shadow->project(v.x, v.y, v.z, su, sv, sd);
+      p.su = static_cast<float>(su * w);
+      p.sv = static_cast<float>(sv * w);
+      p.sd = static_cast<float>((sd - bias) * w);
+    }
   }
+  if (shadow)
+    drawTriangles<true>(mesh, light, id);
+  else
+    drawTriangles<false>(mesh, light, id);
+}
+
+template <bool kShadow>
+void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uint8_t id)
+{
 
   const Texture &tex = *mesh.texture;
+  [[maybe_unused]] const float ambient = static_cast<float>(light.ambient);
   const int W = static_cast<int>(m_W), H = static_cast<int>(m_H);
   // Edge functions in fixed point (1/256 px) and 64-bit integers: exact, so two triangles that
   // share an edge cover each sample on it exactly once (top-left rule), with no crack between them.
@@ -125,10 +155,24 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
       area = -area;
     }
     const ProjVertex &a = *pa, &b = *pb, &c = *pc;
-    const int x0 = std::max(0, static_cast<int>(std::ceil(std::min({a.X, b.X, c.X}))));
-    const int x1 = std::min(W - 1, static_cast<int>(std::floor(std::max({a.X, b.X, c.X}))));
-    const int y0 = std::max(0, static_cast<int>(std::ceil(std::min({a.Y, b.Y, c.Y}))));
-    const int y1 = std::min(H - 1, static_cast<int>(std::floor(std::max({a.Y, b.Y, c.Y}))));
+    // The bounding box from the same fixed-point coordinates as the edge test (from the floats, a
+    // vertex at 342.9999 whose fixed value is 343 dropped the samples of column 343 that lie on
+    // its edges from both triangles: a crack along a mesh line that projects onto a sample column).
+    // Kept off by default (setExactBounds) so that existing images stay bit-identical.
+    auto floorDiv = [](std::int64_t q) { return q >= 0 ? q / 256 : -((-q + 255) / 256); };
+    auto ceilDiv = [&](std::int64_t q) { return -floorDiv(-q); };
+    int x0, x1, y0, y1;
+    if (m_exactBounds) {
+      x0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.x, B.x, C.x}))));
+      x1 = static_cast<int>(std::min<std::int64_t>(W - 1, floorDiv(std::max({A.x, B.x, C.x}))));
+      y0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.y, B.y, C.y}))));
+      y1 = static_cast<int>(std::min<std::int64_t>(H - 1, floorDiv(std::max({A.y, B.y, C.y}))));
+    } else {
+      x0 = std::max(0, static_cast<int>(std::ceil(std::min({a.X, b.X, c.X}))));
+      x1 = std::min(W - 1, static_cast<int>(std::floor(std::max({a.X, b.X, c.X}))));
+      y0 = std::max(0, static_cast<int>(std::ceil(std::min({a.Y, b.Y, c.Y}))));
+      y1 = std::min(H - 1, static_cast<int>(std::floor(std::max({a.Y, b.Y, c.Y}))));
+    }
     if (x0 > x1 || y0 > y1)
       continue;
     // E_pq(x, y) = (q.x - p.x)(y - p.y) - (q.y - p.y)(x - p.x), >= 0 inside; the edge opposite a is b->c.
@@ -164,13 +208,27 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
         m_invDepth[idx] = w;
         m_id[idx] = id;
         float *o = &m_color[3 * idx];
-        o[0] = col[0] * diff + spec;
-        o[1] = col[1] * diff + spec;
-        o[2] = col[2] * diff + spec;
+        if constexpr (kShadow) {
+          const float su = (wa * a.su + wb * b.su + wc * c.su) * iz;
+          const float sv = (wa * a.sv + wb * b.sv + wc * c.sv) * iz;
+          const float sd = (wa * a.sd + wb * b.sd + wc * c.sd) * iz;
+          const float lit = light.shadow->visibility(su, sv, sd);
+          const float d = ambient + lit * diff, sp = lit * spec;
+          o[0] = col[0] * d + sp;
+          o[1] = col[1] * d + sp;
+          o[2] = col[2] * d + sp;
+        } else {
+          o[0] = col[0] * diff + spec;
+          o[1] = col[1] * diff + spec;
+          o[2] = col[2] * diff + spec;
+        }
       }
     }
   }
 }
+
+template void Rasterizer::drawTriangles<true>(const Mesh &, const Lighting &, std::uint8_t);
+template void Rasterizer::drawTriangles<false>(const Mesh &, const Lighting &, std::uint8_t);
 
 void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const
 {

@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <exception>
+#include <mutex>
 
 #include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 #include "pm/sim/Noise.h"
+#include "pm/sim/TargetCatalog.h"
 
 namespace pm::sim {
 
@@ -24,9 +26,51 @@ void SceneParams::validate() const
             std::fabs(lightDirHand[0]) + std::fabs(lightDirHand[1]) + std::fabs(lightDirHand[2]) > 0,
         "light direction must be a non-zero vector");
   check(occluderSizeMm[0] > 0 && occluderSizeMm[1] > 0, "occluder size must be positive");
+  check(shadows == ShadowMode::Auto || shadows == ShadowMode::Off || shadows == ShadowMode::On,
+        "shadow mode must be Auto, Off or On");
+  check(std::isfinite(sceneLightDir[0] + sceneLightDir[1] + sceneLightDir[2]) && sceneLightDir[2] < 0,
+        "scene light direction must be finite and point toward the front (negative z: the viewer's side)");
+  check(sceneSpecular >= 0 && sceneSpecular <= 10, "scene specular must lie in [0, 10]");
+  check(sceneShininess >= 1 && sceneShininess <= 1000, "scene shininess must lie in [1, 1000]");
+  check(shadowTexelMm >= 0.05 && shadowTexelMm <= 5, "shadow texel must lie in [0.05, 5] mm");
 }
 
-Scene::Scene(const TargetShape &target, const SceneParams &params) : m_target(target), m_params(params)
+struct Scene::ShadowCache
+{
+  std::mutex mutex;
+  std::shared_ptr<const ShadowMap> map;
+  double dir[3] = {0, 0, 0}, texelMm = 0;
+};
+
+bool Scene::sceneLit() const
+{
+  switch (m_params.shadows) {
+  case ShadowMode::On:
+    return true;
+  case ShadowMode::Off:
+    return false;
+  case ShadowMode::Auto:
+    break;
+  }
+  return isReliefTarget(m_target.info.code);
+}
+
+std::shared_ptr<const ShadowMap> Scene::shadowMap() const
+{
+  std::lock_guard<std::mutex> lock(m_shadowCache->mutex);
+  ShadowCache &c = *m_shadowCache;
+  const double *d = m_params.sceneLightDir;
+  if (!c.map || c.dir[0] != d[0] || c.dir[1] != d[1] || c.dir[2] != d[2] || c.texelMm != m_params.shadowTexelMm) {
+    m_params.validate();
+    c.map = std::make_shared<const ShadowMap>(m_toy, d, m_params.shadowTexelMm * 1e-3);
+    std::copy(d, d + 3, c.dir);
+    c.texelMm = m_params.shadowTexelMm;
+  }
+  return c.map;
+}
+
+Scene::Scene(const TargetShape &target, const SceneParams &params)
+    : m_target(target), m_params(params), m_shadowCache(std::make_shared<ShadowCache>())
 {
   m_params.validate();
   m_toy = buildTargetMesh(m_target, m_params.meshStepMm, static_cast<float>(m_params.specular));
@@ -62,6 +106,8 @@ void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogene
   if (raster.width() != camera.width || raster.height() != camera.height)
     raster.reset(camera.width, camera.height, m_params.supersampling);
   raster.clear(0.04f, 0.06f, 0.09f); // the dark tank beyond the panel
+  const bool lit = sceneLit();
+  raster.setExactBounds(lit || isReliefTarget(m_target.info.code));
   const vpHomogeneousMatrix cMh = camera.cMh();
   const vpHomogeneousMatrix cMo = cMh * hMo;
   Lighting light;
@@ -72,9 +118,27 @@ void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogene
     for (unsigned k = 0; k < 3; ++k)
       light.dirCamera[i] += cMh[i][k] * m_params.lightDirHand[k];
   }
+  std::shared_ptr<const ShadowMap> shadow;
+  Lighting toyLight = light;
+  if (lit) {
+    // The scene light, fixed in the target frame, in this camera's frame; the toy's shadow map.
+    shadow = shadowMap();
+    const double *t = shadow->towardLight();
+    for (unsigned i = 0; i < 3; ++i) {
+      light.dirCamera[i] = 0;
+      for (unsigned k = 0; k < 3; ++k)
+        light.dirCamera[i] += cMo[i][k] * t[k];
+    }
+    toyLight = light;
+    toyLight.shadow = shadow.get();
+    if (withTarget) // no toy, no shadow (the background photo)
+      light.shadow = shadow.get();
+    toyLight.specular = m_params.sceneSpecular;
+    toyLight.shininess = m_params.sceneShininess;
+  }
   raster.draw(m_backdrop, cMo, camera.cam, light, 1);
   if (withTarget)
-    raster.draw(m_toy, cMo, camera.cam, light, 2);
+    raster.draw(m_toy, cMo, camera.cam, toyLight, 2);
   if (m_params.occluder)
     raster.draw(m_occluder, cMo, camera.cam, light, 3);
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));

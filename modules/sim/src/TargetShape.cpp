@@ -70,12 +70,18 @@ void TargetShape::scaleRelief(double s)
   info.depthMm *= s;
   for (float &h : height)
     h *= static_cast<float>(s);
+  for (float &b : base)
+    b *= static_cast<float>(s);
 }
 
 Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
 {
   if (shape.cols < 2 || shape.rows < 2)
     throw Error("target '" + shape.info.code + "': empty shape grid");
+  const std::size_t cells = static_cast<std::size_t>(shape.cols) * static_cast<std::size_t>(shape.rows);
+  if (shape.sdf.size() != cells || shape.height.size() != cells || shape.rgb.size() != 3 * cells ||
+      (!shape.base.empty() && shape.base.size() != cells))
+    throw Error("target '" + shape.info.code + "': its grids do not match its size");
   const double x0 = -shape.originCol * shape.texelMm, y0 = -shape.originRow * shape.texelMm;
   const double x1 = (shape.cols - 1 - shape.originCol) * shape.texelMm;
   const double y1 = (shape.rows - 1 - shape.originRow) * shape.texelMm;
@@ -91,7 +97,9 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
   mesh.useMask = true;
   mesh.specular = specular;
 
-  std::vector<std::int64_t> index(static_cast<std::size_t>(nx) * ny, -1);
+  std::vector<std::int64_t> index(static_cast<std::size_t>(nx) * ny, -1), indexUnder;
+  if (!shape.base.empty())
+    indexUnder.assign(index.size(), -1);
   std::vector<float> sd(static_cast<std::size_t>(nx) * ny);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
@@ -132,6 +140,40 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
       const std::uint32_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
       mesh.triangles.push_back({a, b, c});
       mesh.triangles.push_back({a, c, d});
+    }
+  if (shape.base.empty())
+    return mesh;
+  // The underside: z = -base, its normal toward the backdrop (+z), the texture of the top above it.
+  auto under = [&](int i, int j) -> std::uint32_t {
+    std::int64_t &id = indexUnder[static_cast<std::size_t>(j) * nx + i];
+    if (id >= 0)
+      return static_cast<std::uint32_t>(id);
+    const double x = x0 + i * stepMm, y = y0 + j * stepMm, e = 0.5 * stepMm;
+    const double h = shape.sampleGrid(shape.base, x, y);
+    const double hx = (shape.sampleGrid(shape.base, x + e, y) - shape.sampleGrid(shape.base, x - e, y)) / (2 * e);
+    const double hy = (shape.sampleGrid(shape.base, x, y + e) - shape.sampleGrid(shape.base, x, y - e)) / (2 * e);
+    const double n = std::sqrt(hx * hx + hy * hy + 1);
+    MeshVertex v;
+    v.x = static_cast<float>(x * 1e-3);
+    v.y = static_cast<float>(y * 1e-3);
+    v.z = static_cast<float>(-h * 1e-3);
+    v.nx = static_cast<float>(hx / n);
+    v.ny = static_cast<float>(hy / n);
+    v.nz = static_cast<float>(1 / n);
+    v.s = static_cast<float>(x / shape.texelMm + shape.originCol);
+    v.t = static_cast<float>(y / shape.texelMm + shape.originRow);
+    v.mask = sd[static_cast<std::size_t>(j) * nx + i];
+    id = static_cast<std::int64_t>(mesh.vertices.size());
+    mesh.vertices.push_back(v);
+    return static_cast<std::uint32_t>(id);
+  };
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      if (!cellKept(i, j))
+        continue;
+      const std::uint32_t a = under(i, j), b = under(i + 1, j), c = under(i + 1, j + 1), d = under(i, j + 1);
+      mesh.triangles.push_back({a, c, b});
+      mesh.triangles.push_back({a, d, c});
     }
   return mesh;
 }

@@ -3,7 +3,13 @@
   \file Scene.h
   The simulated lab scene: a 3-D toy resting on a sea-bottom panel (both in the target frame),
   an optional occluder in front of it, seen by the stereo rig on the hand with per-pixel
-  sensor noise and an exposure (brightness) change. Rendering is deterministic: the noise of
+  sensor noise and an exposure (brightness) change.
+
+  Two lightings: the hand light (lightDirHand: a lamp on the rig, moving with the cameras; no
+  shadows), the default for the 12 sea creatures; and the scene light (sceneLightDir: a lamp
+  fixed in the target frame, off the cameras) with cast shadows of the toy on the backdrop and on
+  itself (a ShadowMap of the toy, built once per scene) and a stronger gloss on the toy, the
+  default for the relief targets R1..R3 (ShadowMode::Auto). Rendering is deterministic: the noise of
   an image is a function of (seed, frame, camera).
 */
 #include <cstdint>
@@ -15,10 +21,20 @@
 #include "pm/core/StereoRig.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/sim/SeaBottom.h"
+#include "pm/sim/ShadowMap.h"
 #include "pm/sim/TargetShape.h"
 
 namespace pm::sim {
 
+//! Which light a scene uses: see SceneParams::shadows.
+enum class ShadowMode
+{
+  Auto, //!< On for the relief targets (R1..R3), Off for the others
+  Off,  //!< the hand light, no shadows (the images of the 12 sea creatures, unchanged)
+  On    //!< the scene light with cast shadows and the scene gloss
+};
+
+//! Everything that sets how a scene looks; validate() checks the ranges.
 struct SceneParams
 {
   unsigned supersampling = 2;               //!< SSxSS samples per pixel (anti-aliasing)
@@ -34,6 +50,17 @@ struct SceneParams
   double occluderCentreMm[3] = {25, 0, -70};//!< its centre in the target frame
   double occluderSizeMm[2] = {22, 260};     //!< its width and height
   std::uint64_t seed = 1;                   //!< noise seed
+  /*!
+    On: the scene light (sceneLightDir, fixed in the target frame) replaces the hand light and
+    the toy casts shadows (where hidden from it a surface gets the ambient term only), and the toy
+    shines with sceneSpecular / sceneShininess instead of specular.
+  */
+  ShadowMode shadows = ShadowMode::Auto;
+  //! Toward the scene light, target frame: upper left, in front, 40 deg off the view axis (-z).
+  double sceneLightDir[3] = {-0.59341, -0.59341, -1.0};
+  double sceneSpecular = 0.35;              //!< the toy's specular strength under the scene light
+  double sceneShininess = 40;               //!< its Blinn-Phong exponent under the scene light
+  double shadowTexelMm = 0.35;              //!< shadow-map texel (across the light)
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
@@ -64,6 +91,14 @@ public:
   void renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, double distanceMm, vpImage<vpRGBa> &background,
                     vpImage<vpRGBa> &withTarget) const;
 
+  //! True if this scene is lit by the scene light with shadows (params().shadows, Auto resolved).
+  bool sceneLit() const;
+  /*!
+    The shadow map of the toy for the current params() (built on first use and whenever the scene
+    light changed; thread-safe).
+  */
+  std::shared_ptr<const ShadowMap> shadowMap() const;
+
   const TargetShape &target() const { return m_target; }
   const SceneParams &params() const { return m_params; }
   SceneParams &params() { return m_params; }
@@ -73,6 +108,8 @@ private:
   TargetShape m_target;
   SceneParams m_params;
   Mesh m_toy, m_backdrop, m_occluder;
+  struct ShadowCache;
+  std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
 };
 
 } // namespace pm::sim

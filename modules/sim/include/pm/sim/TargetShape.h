@@ -41,6 +41,16 @@ struct TargetShape
   std::vector<std::uint8_t> rgb;       //!< albedo, 3 per texel
   std::vector<float> sdf;              //!< signed distance to the outline (mm), negative inside
   std::vector<float> height;           //!< relief above the base (mm); continued linearly below 0 outside
+  /*!
+    The underside (optional): its height above the base plane (the backdrop, z = 0) in mm, on the
+    same grid. Empty: the toy lies flat on its base, its outline at z = 0 (the 12 sea creatures).
+    Otherwise the toy is a closed body between the underside (z = -base) and the top
+    (z = -height), which meet on the outline: its outline sits at the height \e base has there,
+    above the backdrop, and only where base = 0 (a stand) does the toy touch the backdrop.
+    Outside the outline, base is continued linearly upward (height downward) so that the two
+    sheets cross on it.
+  */
+  std::vector<float> base;
 
   //! Extent of the outline (sdf < 0) along x and y (mm), measured on the grid.
   void measuredExtent(double &widthMm, double &heightMm) const;
@@ -48,13 +58,14 @@ struct TargetShape
   float sampleGrid(const std::vector<float> &grid, double xMm, double yMm) const;
   //! Recentres the frame origin on the outline's centroid.
   void centreOnOutline();
-  //! Multiplies the relief (heights and depth) by \e s >= 0 (0: a flat picture of the toy).
+  //! Multiplies the relief (heights, underside and depth) by \e s >= 0 (0: a flat picture of the toy).
   void scaleRelief(double s);
 };
 
 /*!
   The height-field mesh of a target, vertices every \e stepMm (the outline itself is cut at
-  the zero of the interpolated signed distance, much finer than the step).
+  the zero of the interpolated signed distance, much finer than the step). When the shape has an
+  underside (TargetShape::base), a second sheet for it, cut by the same outline: a closed body.
 */
 Mesh buildTargetMesh(const TargetShape &shape, double stepMm = 1.0, float specular = 0.12f);
 
