@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <vector>
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/ShadowMap.h"
+#include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 
 namespace {
@@ -287,4 +290,43 @@ TEST(ReliefTargets, BadSceneLightParametersAreRefused)
   p = pm::sim::SceneParams();
   p.shadows = static_cast<pm::sim::ShadowMode>(7);
   EXPECT_THROW(p.validate(), pm::Error);
+}
+
+namespace {
+
+//! |error| quantile q of the stereo model's S_in depths against the renderer's depth (mm).
+double depthErrorQuantile(const pm::sim::SimulatedPhotoModel &sm, double q)
+{
+  std::vector<double> a;
+  for (double e : sm.inDepthErrorsMm())
+    if (std::isfinite(e))
+      a.push_back(std::fabs(e));
+  if (a.empty())
+    return std::numeric_limits<double>::infinity();
+  std::sort(a.begin(), a.end());
+  return a[std::min(a.size() - 1, static_cast<std::size_t>(q * static_cast<double>(a.size())))];
+}
+
+} // namespace
+
+TEST(ReliefTargets, TheRenderersDepthIsTheGroundTruthOfTheStereoModel)
+{
+  // The poster box's flat front lies 30 mm in front of its base (hand z 470 at the photo pose):
+  // the depth buffer read back says so, and the stereo model's points lie on it.
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::sim::Scene box(pm::sim::makeTarget("R1", 0.25));
+  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(box, rig, 500);
+  ASSERT_EQ(sm.trueDepth.getWidth(), rig.left.width);
+  const unsigned uc = rig.left.width / 2, vc = rig.left.height / 2;
+  EXPECT_NEAR(sm.trueDepth[vc][uc], 470.0, 0.05);
+  EXPECT_FALSE(std::isfinite(sm.trueDepth[5][5])); // the backdrop is not the toy
+  const auto errors = sm.inDepthErrorsMm();
+  ASSERT_EQ(errors.size(), sm.build.model.inner.size());
+  EXPECT_LT(depthErrorQuantile(sm, 0.5), 0.5);
+  EXPECT_LT(depthErrorQuantile(sm, 0.9), 1.0);
+
+  // The most textured sea creature (C11): its rounded relief matched within a millimetre or so.
+  const auto fish = pm::sim::makeSimulatedStereoPhotoModel(pm::sim::Scene(pm::sim::makeTarget("C11", 0.25)), rig, 500);
+  EXPECT_LT(depthErrorQuantile(fish, 0.5), 1.0);
+  EXPECT_LT(depthErrorQuantile(fish, 0.9), 3.0);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "pm/core/Error.h"
 #include "pm/sim/Noise.h"
@@ -265,6 +266,21 @@ double Rasterizer::coverage(unsigned u, unsigned v, std::uint8_t id) const
     for (unsigned i = 0; i < m_ss; ++i)
       n += m_id[(static_cast<std::size_t>(v) * m_ss + j) * m_W + static_cast<std::size_t>(u) * m_ss + i] == id;
   return static_cast<double>(n) / (m_ss * m_ss);
+}
+
+double Rasterizer::depthAt(unsigned u, unsigned v, std::uint8_t id) const
+{
+  if (u >= m_w || v >= m_h)
+    return std::numeric_limits<double>::quiet_NaN();
+  double z = 0;
+  for (unsigned j = 0; j < m_ss; ++j)
+    for (unsigned i = 0; i < m_ss; ++i) {
+      const std::size_t idx = (static_cast<std::size_t>(v) * m_ss + j) * m_W + static_cast<std::size_t>(u) * m_ss + i;
+      if (m_id[idx] != id || !(m_invDepth[idx] > 0.f))
+        return std::numeric_limits<double>::quiet_NaN();
+      z += 1.0 / m_invDepth[idx];
+    }
+  return z / (m_ss * m_ss);
 }
 
 } // namespace pm::sim

@@ -1,6 +1,7 @@
 #include "pm/sim/SimulatedPhotoModel.h"
 
 #include <cmath>
+#include <limits>
 
 #include "pm/core/Error.h"
 
@@ -25,12 +26,25 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const Ster
     throw Error("photo distance must be positive");
   SimulatedPhotoModel s;
   s.stereo = true;
+  s.photoHMo = vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0);
   const vpHomogeneousMatrix hMo(0, 0, distanceMm * 1e-3, 0, 0, 0);
   Rasterizer r;
   // Streams 4 to 7: images of their own noise, apart from the tracking frames' (0, 1).
   scene.render(r, rig.left, hMo, 0, 4, s.background, false);
   scene.render(r, rig.right, hMo, 0, 5, s.backgroundRight, false);
   scene.render(r, rig.left, hMo, 0, 6, s.photo, true);
+  // The toy's true depth at each left pixel, from the renderer's depth buffer (id 2: the toy).
+  const vpHomogeneousMatrix hMc = rig.left.hMc;
+  const vpCameraParameters &c = rig.left.cam;
+  s.trueDepth.resize(rig.left.height, rig.left.width, std::numeric_limits<float>::quiet_NaN());
+  for (unsigned v = 0; v < rig.left.height; ++v)
+    for (unsigned u = 0; u < rig.left.width; ++u) {
+      const double z = r.depthAt(u, v, 2);
+      if (std::isfinite(z)) {
+        const double x = (u - c.get_u0()) / c.get_px() * z, y = (v - c.get_v0()) / c.get_py() * z;
+        s.trueDepth[v][u] = static_cast<float>(1e3 * (hMc[2][0] * x + hMc[2][1] * y + hMc[2][2] * z + hMc[2][3]));
+      }
+    }
   scene.render(r, rig.right, hMo, 0, 7, s.photoRight, true);
   StereoPhotoModelBuild b = buildStereoPhotoModel(rig, s.background, s.backgroundRight, s.photo, s.photoRight, params);
   s.build.model = std::move(b.model);
@@ -41,6 +55,24 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const Ster
   s.dropped = std::move(b.dropped);
   s.oMm = hMo.inverse() * b.hMm;
   return s;
+}
+
+std::vector<double> SimulatedPhotoModel::inDepthErrorsMm() const
+{
+  std::vector<double> e;
+  if (!stereo)
+    return e;
+  const PhotoModel &m = build.model;
+  const vpHomogeneousMatrix hMm = photoHMo * oMm;
+  for (const ModelPoint &p : m.inner) {
+    const long u = std::lround(p.u), v = std::lround(p.v);
+    float t = std::numeric_limits<float>::quiet_NaN();
+    if (u >= 0 && v >= 0 && u < static_cast<long>(trueDepth.getWidth()) && v < static_cast<long>(trueDepth.getHeight()))
+      t = trueDepth[static_cast<unsigned>(v)][static_cast<unsigned>(u)];
+    const double z = 1e3 * (hMm[2][0] * p.x * 1e-3 + hMm[2][1] * p.y * 1e-3 + hMm[2][2] * p.z * 1e-3 + hMm[2][3]);
+    e.push_back(z - static_cast<double>(t));
+  }
+  return e;
 }
 
 } // namespace pm::sim

@@ -205,6 +205,15 @@ void hsvToRgb(const Hsv3 &c, double rgb[3])
   rgb[0] = tab[i][0], rgb[1] = tab[i][1], rgb[2] = tab[i][2];
 }
 
+//! Writes colour \e c into texel \e k of \e s (8-bit RGB).
+void setTexel(TargetShape &s, std::size_t k, const Hsv3 &c)
+{
+  double rgb[3];
+  hsvToRgb(c, rgb);
+  for (int ch = 0; ch < 3; ++ch)
+    s.rgb[3 * k + static_cast<std::size_t>(ch)] = static_cast<std::uint8_t>(std::lround(std::clamp(rgb[ch], 0.0, 1.0) * 255));
+}
+
 bool inPattern(const Part &p, double x, double y, std::uint64_t seed)
 {
   switch (p.pattern) {
@@ -324,10 +333,7 @@ TargetShape rasterise(const Creature &cr, double texelMm)
       const double m = 1.0 + cr.mottle * (2.0 * fbm(x / 9.0, y / 9.0, cr.seed, 4) - 1.0);
       col.v *= m;
       col.h += 6.0 * (fbm(x / 25.0, y / 25.0, cr.seed + 99, 2) - 0.5);
-      double rgb[3];
-      hsvToRgb(col, rgb);
-      for (int ch = 0; ch < 3; ++ch)
-        s.rgb[3 * k + static_cast<std::size_t>(ch)] = static_cast<std::uint8_t>(std::lround(std::clamp(rgb[ch], 0.0, 1.0) * 255));
+      setTexel(s, k, col);
     }
   s.centreOnOutline();
   return s;
@@ -654,10 +660,7 @@ TargetShape reliefGrid(const TargetInfo &info, double texelMm, bool underside, s
       Hsv3 col = t.col;
       // Fine grain for stereo matching: a little value noise at the texel scale.
       col.v *= 1.0 + 0.06 * (2.0 * latticeValue(c, r, seed + 77) - 1.0);
-      double rgb[3];
-      hsvToRgb(col, rgb);
-      for (int ch = 0; ch < 3; ++ch)
-        s.rgb[3 * k + static_cast<std::size_t>(ch)] = static_cast<std::uint8_t>(std::lround(std::clamp(rgb[ch], 0.0, 1.0) * 255));
+      setTexel(s, k, col);
     }
   s.centreOnOutline();
   return s;
@@ -867,25 +870,18 @@ std::string upper(const std::string &code)
   return u;
 }
 
-int indexOf(const std::string &code)
+int indexIn(const std::vector<TargetInfo> &cat, const std::string &code)
 {
   const std::string u = upper(code);
-  const auto &cat = targetCatalog();
   for (std::size_t i = 0; i < cat.size(); ++i)
     if (cat[i].code == u)
       return static_cast<int>(i);
   return -1;
 }
 
-int reliefIndexOf(const std::string &code)
-{
-  const std::string u = upper(code);
-  const auto &cat = reliefTargetCatalog();
-  for (std::size_t i = 0; i < cat.size(); ++i)
-    if (cat[i].code == u)
-      return static_cast<int>(i);
-  return -1;
-}
+int indexOf(const std::string &code) { return indexIn(targetCatalog(), code); }
+
+int reliefIndexOf(const std::string &code) { return indexIn(reliefTargetCatalog(), code); }
 
 } // namespace
 
@@ -905,6 +901,16 @@ const std::vector<TargetInfo> &reliefTargetCatalog()
   static const std::vector<TargetInfo> cat = {{"R1", "poster box", 140, 100, 30},
                                               {"R2", "head on a stand", 120, 150, 55},
                                               {"R3", "pagoda tower", 70, 90, 110}};
+  return cat;
+}
+
+const std::vector<TargetInfo> &labTargetCatalog()
+{
+  static const std::vector<TargetInfo> cat = [] {
+    std::vector<TargetInfo> v = targetCatalog();
+    v.insert(v.end(), reliefTargetCatalog().begin(), reliefTargetCatalog().end());
+    return v;
+  }();
   return cat;
 }
 

@@ -110,71 +110,49 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
     return std::min({sd[static_cast<std::size_t>(j) * nx + i], sd[static_cast<std::size_t>(j) * nx + i + 1],
                      sd[static_cast<std::size_t>(j + 1) * nx + i], sd[static_cast<std::size_t>(j + 1) * nx + i + 1]}) < keep;
   };
-  auto vertex = [&](int i, int j) -> std::uint32_t {
-    std::int64_t &id = index[static_cast<std::size_t>(j) * nx + i];
-    if (id >= 0)
+  // One sheet of the body: the top (z = -height, facing the viewer, -z) or the underside
+  // (z = -base, facing the backdrop, +z), on the same cells, the texture of the top on both.
+  auto addSheet = [&](const std::vector<float> &grid, std::vector<std::int64_t> &ids, float facing) {
+    auto vertex = [&](int i, int j) -> std::uint32_t {
+      std::int64_t &id = ids[static_cast<std::size_t>(j) * nx + i];
+      if (id >= 0)
+        return static_cast<std::uint32_t>(id);
+      const double x = x0 + i * stepMm, y = y0 + j * stepMm, e = 0.5 * stepMm;
+      const double h = shape.sampleGrid(grid, x, y);
+      const double hx = (shape.sampleGrid(grid, x + e, y) - shape.sampleGrid(grid, x - e, y)) / (2 * e);
+      const double hy = (shape.sampleGrid(grid, x, y + e) - shape.sampleGrid(grid, x, y - e)) / (2 * e);
+      const double n = std::sqrt(hx * hx + hy * hy + 1);
+      MeshVertex v;
+      v.x = static_cast<float>(x * 1e-3);
+      v.y = static_cast<float>(y * 1e-3);
+      v.z = static_cast<float>(-h * 1e-3); // the base at z = 0, the relief toward the viewer
+      v.nx = static_cast<float>(facing * hx / n);
+      v.ny = static_cast<float>(facing * hy / n);
+      v.nz = static_cast<float>(facing / n);
+      v.s = static_cast<float>(x / shape.texelMm + shape.originCol);
+      v.t = static_cast<float>(y / shape.texelMm + shape.originRow);
+      v.mask = sd[static_cast<std::size_t>(j) * nx + i];
+      id = static_cast<std::int64_t>(mesh.vertices.size());
+      mesh.vertices.push_back(v);
       return static_cast<std::uint32_t>(id);
-    const double x = x0 + i * stepMm, y = y0 + j * stepMm, e = 0.5 * stepMm;
-    const double h = shape.sampleGrid(shape.height, x, y);
-    const double hx = (shape.sampleGrid(shape.height, x + e, y) - shape.sampleGrid(shape.height, x - e, y)) / (2 * e);
-    const double hy = (shape.sampleGrid(shape.height, x, y + e) - shape.sampleGrid(shape.height, x, y - e)) / (2 * e);
-    const double n = std::sqrt(hx * hx + hy * hy + 1);
-    MeshVertex v;
-    v.x = static_cast<float>(x * 1e-3);
-    v.y = static_cast<float>(y * 1e-3);
-    v.z = static_cast<float>(-h * 1e-3); // the base at z = 0, the relief toward the viewer
-    v.nx = static_cast<float>(-hx / n);
-    v.ny = static_cast<float>(-hy / n);
-    v.nz = static_cast<float>(-1 / n);
-    v.s = static_cast<float>(x / shape.texelMm + shape.originCol);
-    v.t = static_cast<float>(y / shape.texelMm + shape.originRow);
-    v.mask = sd[static_cast<std::size_t>(j) * nx + i];
-    id = static_cast<std::int64_t>(mesh.vertices.size());
-    mesh.vertices.push_back(v);
-    return static_cast<std::uint32_t>(id);
+    };
+    for (int j = 0; j + 1 < ny; ++j)
+      for (int i = 0; i + 1 < nx; ++i) {
+        if (!cellKept(i, j))
+          continue;
+        const std::uint32_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+        if (facing < 0) { // counter-clockwise seen from the viewer
+          mesh.triangles.push_back({a, b, c});
+          mesh.triangles.push_back({a, c, d});
+        } else {
+          mesh.triangles.push_back({a, c, b});
+          mesh.triangles.push_back({a, d, c});
+        }
+      }
   };
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i) {
-      if (!cellKept(i, j))
-        continue;
-      const std::uint32_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
-      mesh.triangles.push_back({a, b, c});
-      mesh.triangles.push_back({a, c, d});
-    }
-  if (shape.base.empty())
-    return mesh;
-  // The underside: z = -base, its normal toward the backdrop (+z), the texture of the top above it.
-  auto under = [&](int i, int j) -> std::uint32_t {
-    std::int64_t &id = indexUnder[static_cast<std::size_t>(j) * nx + i];
-    if (id >= 0)
-      return static_cast<std::uint32_t>(id);
-    const double x = x0 + i * stepMm, y = y0 + j * stepMm, e = 0.5 * stepMm;
-    const double h = shape.sampleGrid(shape.base, x, y);
-    const double hx = (shape.sampleGrid(shape.base, x + e, y) - shape.sampleGrid(shape.base, x - e, y)) / (2 * e);
-    const double hy = (shape.sampleGrid(shape.base, x, y + e) - shape.sampleGrid(shape.base, x, y - e)) / (2 * e);
-    const double n = std::sqrt(hx * hx + hy * hy + 1);
-    MeshVertex v;
-    v.x = static_cast<float>(x * 1e-3);
-    v.y = static_cast<float>(y * 1e-3);
-    v.z = static_cast<float>(-h * 1e-3);
-    v.nx = static_cast<float>(hx / n);
-    v.ny = static_cast<float>(hy / n);
-    v.nz = static_cast<float>(1 / n);
-    v.s = static_cast<float>(x / shape.texelMm + shape.originCol);
-    v.t = static_cast<float>(y / shape.texelMm + shape.originRow);
-    v.mask = sd[static_cast<std::size_t>(j) * nx + i];
-    id = static_cast<std::int64_t>(mesh.vertices.size());
-    mesh.vertices.push_back(v);
-    return static_cast<std::uint32_t>(id);
-  };
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i) {
-      if (!cellKept(i, j))
-        continue;
-      const std::uint32_t a = under(i, j), b = under(i + 1, j), c = under(i + 1, j + 1), d = under(i, j + 1);
-      mesh.triangles.push_back({a, c, b});
-      mesh.triangles.push_back({a, d, c});
-    }
+  addSheet(shape.height, index, -1.f);
+  if (!shape.base.empty())
+    addSheet(shape.base, indexUnder, 1.f);
   return mesh;
 }
 

@@ -55,6 +55,12 @@ public:
   void resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const;
   //! Fraction of the samples of pixel (u, v) that show object \e id.
   double coverage(unsigned u, unsigned v, std::uint8_t id) const;
+  /*!
+    Depth (the camera's z, in the units of cMo's translation) of object \e id at pixel (u, v),
+    averaged over its samples when all of them show \e id; NaN otherwise (an edge, or not there).
+    The ground truth of a stereo reconstruction.
+  */
+  double depthAt(unsigned u, unsigned v, std::uint8_t id) const;
 
   /*!
     Triangle bounding boxes from the edge test's own fixed-point vertices (true) or from the

@@ -31,6 +31,15 @@ struct SimulatedPhotoModel
   double backdropMm = 0;             //!< the backdrop's depth the builder measured (left camera, mm)
   int nOutFallback = 0;
   std::vector<ModelPoint> dropped;   //!< S_in points without a reliable match
+  vpHomogeneousMatrix photoHMo;      //!< the toy's pose in the hand frame when the photos were taken
+  vpImage<float> trueDepth;          //!< ground truth: hand-frame z (mm) of the toy at each left photo pixel, NaN off it
+
+  /*!
+    Stereo models: for each S_in point, its hand-frame z in the model (at the photo pose) minus the
+    toy's true z at its photo pixel (mm; NaN where the pixel is on the toy's edge). The accuracy
+    of the matching.
+  */
+  std::vector<double> inDepthErrorsMm() const;
 
   /*!
     The model's true pose in the hand frame for a toy at \e hMo: hMm = hMo * oMm. The model

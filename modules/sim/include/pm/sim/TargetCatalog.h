@@ -31,6 +31,8 @@ const std::vector<TargetInfo> &targetCatalog();
   stays the 12 of Fig. 8.
 */
 const std::vector<TargetInfo> &reliefTargetCatalog();
+//! All the lab's targets: C01..C12 then R1..R3 (what pm-detect --all-targets measures).
+const std::vector<TargetInfo> &labTargetCatalog();
 //! True if \e code names a catalogue target: C01..C12 or R1..R3, case-insensitive.
 bool isCatalogTarget(const std::string &code);
 //! True if \e code names one of the relief targets R1..R3 (case-insensitive).
