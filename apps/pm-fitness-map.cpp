@@ -62,7 +62,7 @@ int main(int argc, char **argv)
   pm::FitnessParams fp;
   double posStep = 1, epsStep = 0.01, reliefScale = 1;
   app.add_option("--out", out, "output folder (created if missing)")->required();
-  auto *optTarget = app.add_option("--target", target, "simulated target C01..C12");
+  auto *optTarget = app.add_option("--target", target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
   auto *optL = app.add_option("--left", left, "left image of a user's stereo pair");
   auto *optR = app.add_option("--right", right, "right image of a user's stereo pair");
   auto *optM = app.add_option("--model", modelPath, "photo-model file (with --left/--right)");

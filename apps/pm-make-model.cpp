@@ -44,7 +44,7 @@ int main(int argc, char **argv)
   pm::PhotoModelParams mp;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
-  auto *optTarget = app.add_option("--target", target, "simulated target C01..C12 (used when no photos are given)");
+  auto *optTarget = app.add_option("--target", target, "simulated target C01..C12 or R1..R3 (used when no photos are given)");
   auto *optBg = app.add_option("--background", background, "photo of the background alone (PNG/JPEG)");
   auto *optPhoto = app.add_option("--photo", photo, "photo of the target on that background (PNG/JPEG)");
   optBg->needs(optPhoto);

@@ -127,7 +127,7 @@ int main(int argc, char **argv)
   pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)");
-  app.add_option("--target", target, "simulated target C01..C12");
+  app.add_option("--target", target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
   app.add_option("--trajectory", trajectory, "the TC-robot's motion: steps (Table 2) or sine")->check(CLI::IsMember({"steps", "sine"}));
   app.add_option("--steps-file", stepsPath, "waypoints of the steps (step,x,y,z,e1,e2,e3, in the hand frame at the start)");
   app.add_option("--steps", steps, "use only the first N waypoints (0: all)")->check(CLI::Range(0, 100000));

@@ -64,7 +64,7 @@ int main(int argc, char **argv)
   pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
-  auto *optTarget = app.add_option("--target", target, "simulated target C01..C12");
+  auto *optTarget = app.add_option("--target", target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
   app.add_option("--trajectory", trajectoryPath, "waypoints (step,x,y,z,e1,e2,e3), the target's poses in the hand frame");
   app.add_option("--hold-s", holdS, "time each step is held (s)")->check(CLI::Range(0.0, 3600.0));
   app.add_option("--move-s", moveS, "duration of each move between steps (s)")->check(CLI::Range(0.01, 3600.0));

@@ -162,6 +162,24 @@ TEST(PmCompare, OursRecoversFromTheForcedLossViSPsDoNot)
     EXPECT_TRUE(std::filesystem::exists(d.file(f))) << f;
 }
 
+TEST(PmCompare, TheFlatAndTheThreeDModelSideBySideEachAgainstItsOwnTruth)
+{
+  // The crab's flat model is biased in depth by its relief (about 5 mm); its stereo model is not.
+  // Each is scored against the truth of its own model frame.
+  TempDir d("compare3d");
+  const auto r = runProgram("pm-compare", "--scenarios table2 --steps 3 --trackers ours,ours-3d --budget-evals 1900 --ga-seed 1 "
+                                          "--quiet --out " + d.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("summary.json")));
+  ASSERT_EQ(s.at("trackers").size(), 2u);
+  const auto &flat = s.at("trackers")[0], &depth = s.at("trackers")[1];
+  EXPECT_EQ(depth.at("key"), "ours-3d");
+  EXPECT_FALSE(depth.at("needs_initial_pose").get<bool>());
+  EXPECT_GT(depth.at("success_1cm2deg").get<double>(), 0.9);
+  EXPECT_GT(depth.at("success_1cm2deg").get<double>(), flat.at("success_1cm2deg").get<double>() + 0.2);
+  EXPECT_LT(depth.at("mean_translation_error_mm").get<double>(), flat.at("mean_translation_error_mm").get<double>());
+}
+
 TEST(PmCompare, BadInputIsAClearError)
 {
   TempDir d("compare");
