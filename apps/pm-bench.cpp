@@ -75,7 +75,7 @@ std::vector<pm::Phi> poses(std::size_t n)
   return v;
 }
 
-void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scalar)
+void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scalar, bool smooth = false)
 {
   pm::StereoFitness::forceScalar(scalar);
   pm::StereoFitness fit(setup().rig, model);
@@ -84,7 +84,7 @@ void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scala
   std::size_t i = 0;
   double sink = 0;
   for (auto _ : state) {
-    sink += fit.evaluate(ps[i++ & 255]);
+    sink += smooth ? fit.evaluateSmooth(ps[i++ & 255]) : fit.evaluate(ps[i++ & 255]);
     benchmark::DoNotOptimize(sink);
   }
   pm::StereoFitness::forceScalar(false);
@@ -93,7 +93,7 @@ void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scala
   state.counters["stereo_evals_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["ns_per_point"] = benchmark::Counter(static_cast<double>(state.iterations() * model.size() * 2),
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(scalar ? "scalar" : pm::StereoFitness::kernelName());
+  state.SetLabel(smooth ? "smooth (bilinear, scalar)" : scalar ? "scalar" : pm::StereoFitness::kernelName());
 }
 
 void Fitness_DefaultModel(benchmark::State &s) { runFitness(s, setup().model, false); }
@@ -120,6 +120,8 @@ void Fitness_1000Points_Scalar(benchmark::State &s) { runFitness(s, setup().mode
 //! The same 1,000 points with depth (the stereo model's kernel): compare with Fitness_1000Points.
 void Fitness_1000Points_Depth(benchmark::State &s) { runFitness(s, setup().model1000Depth, false); }
 void Fitness_1000Points_Depth_Scalar(benchmark::State &s) { runFitness(s, setup().model1000Depth, true); }
+//! The smooth score of the local refinement (StereoFitness::evaluateSmooth): its cost against F's.
+void Fitness_1000Points_Depth_Smooth(benchmark::State &s) { runFitness(s, setup().model1000Depth, true, true); }
 
 /*!
   The peer: the same stereo fitness of the 1,000-point model written with ViSP's own types, as a
@@ -239,6 +241,7 @@ BENCHMARK(Fitness_1000Points);
 BENCHMARK(Fitness_1000Points_Scalar);
 BENCHMARK(Fitness_1000Points_Depth);
 BENCHMARK(Fitness_1000Points_Depth_Scalar);
+BENCHMARK(Fitness_1000Points_Depth_Smooth);
 BENCHMARK(Fitness_1000Points_ViSPTypes);
 BENCHMARK(Hue_StereoPair_Ours)->Unit(benchmark::kMillisecond);
 BENCHMARK(Hue_StereoPair_ViSP)->Unit(benchmark::kMillisecond);

@@ -15,6 +15,8 @@
 #include "pm/core/HuePlane.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/io/RigFile.h"
+#include "pm/rmga/LocalSimplex.h"
+#include "pm/tracker/PhotoModelTracker.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
@@ -431,4 +433,83 @@ TEST_F(FitnessOnC12Stereo, PeakIsAtTheTruthInDepthAndTilt)
   EXPECT_LE(std::fabs(argmax(2, 20, 0.5)), 1.5) << "z";
   EXPECT_LE(std::fabs(argmax(3, 0.08, 0.0025)), 0.01) << "eps1";
   EXPECT_LE(std::fabs(argmax(4, 0.08, 0.0025)), 0.01) << "eps2";
+}
+
+TEST(SmoothFitness, EqualsTheFitnessWhereEveryPixelScoresAlike)
+{
+  const pm::StereoRig rig = labRig();
+  pm::StereoFitness fit(rig, gridModel(0.f));
+  for (const vpImage<vpRGBa> &im : {uniform(0, 127, 255), uniform(255, 0, 0), uniform(0, 255, 0)}) {
+    fit.setImages(im, im);
+    for (const pm::Phi &p : {kAhead, pm::Phi{3.3, -7.1, 480.2, 0.05, -0.02, 0.3}})
+      EXPECT_NEAR(fit.evaluateSmooth(p), fit.evaluate(p), 1e-12);
+  }
+  EXPECT_DOUBLE_EQ(fit.evaluateSmooth({5000, 0, 500, 0, 0, 0}), 0.0); // off the images
+  EXPECT_THROW(fit.evaluateSmooth({0, 0, 500, 0.8, 0.8, 0}), pm::Error);
+}
+
+TEST_F(FitnessOnC12, SmoothFitnessIsContinuousWhereTheFitnessIsAStaircase)
+{
+  // From 300 poses along x, the largest change of each score over a step of h and of h / 10:
+  // F is a staircase (its largest jump is a whole point's worth whatever the step), the smooth
+  // score is continuous (its largest change shrinks with the step).
+  auto largestChange = [&](double h, bool smooth) {
+    double m = 0;
+    for (int i = 0; i < 300; ++i) {
+      pm::Phi a = truth;
+      a.x += 0.02 * i; // 0.02 mm is about 1/30 px at 500 mm
+      pm::Phi b = a;
+      b.x += h;
+      m = std::max(m, smooth ? std::fabs(fit->evaluateSmooth(b) - fit->evaluateSmooth(a)) : std::fabs(fit->evaluate(b) - fit->evaluate(a)));
+    }
+    return m;
+  };
+  const double h = 0.02, point = 2.0 / (2.0 * static_cast<double>(fit->modelSize())); // an S_in point matching in one camera
+  EXPECT_GT(largestChange(h / 10, false), 0.5 * point);
+  EXPECT_LT(largestChange(h / 10, true), 0.2 * point);
+  EXPECT_LT(largestChange(h / 10, true), 0.2 * largestChange(h, true));
+  EXPECT_GT(largestChange(h, true), 0.0);
+  // Near the truth both scores agree within a few points' worth.
+  EXPECT_NEAR(fit->evaluateSmooth(truth), fit->evaluate(truth), 10 * point);
+}
+
+TEST(SmoothFitness, ItsLocalSearchFindsTheBoxFromTwoMillimetresAndADegreeAway)
+{
+  // The poster box's stereo model (its depth exact to a fraction of a millimetre): RM-GA's
+  // staircase fitness is flat over about a degree of tilt; the simplex on the smooth score climbs
+  // back to the truth from a pose 2 mm and 1 deg off.
+  const pm::StereoRig rig = labRig();
+  const pm::sim::Scene box(pm::sim::makeTarget("R1", 0.25));
+  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(box, rig, 500);
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({8, -6, 520, 0.03, -0.02, 0.04});
+  const pm::Phi truth = sm.truth(hMo);
+  pm::StereoFitness fit(rig, sm.build.model, pm::trackerFitnessDefaults());
+  const auto im = box.renderStereo(rig, hMo, 0);
+  fit.setImages(im.left, im.right);
+  struct Smooth : pm::FitnessFunction
+  {
+    const pm::StereoFitness &f;
+    explicit Smooth(const pm::StereoFitness &ff) : f(ff) {}
+    void evaluate(const pm::Phi *p, std::size_t n, double *o) override
+    {
+      for (std::size_t i = 0; i < n; ++i)
+        o[i] = f.evaluateSmooth(p[i]);
+    }
+  } smooth(fit);
+  auto rotationDeg = [](const pm::Phi &a, const pm::Phi &b) {
+    return (pm::toHomogeneousMatrix(a).inverse() * pm::toHomogeneousMatrix(b)).getThetaUVector().getTheta() * 180 / M_PI;
+  };
+  pm::Phi start = truth;
+  start.x += 1.2;
+  start.z -= 1.6;
+  start.e1 += 0.0087 * 0.8; // about 0.8 deg
+  start.e2 -= 0.0087 * 0.6;
+  pm::LocalSimplexParams p;
+  p.maxEvaluations = 300;
+  const pm::LocalSimplexResult r = pm::refineLocalSimplex(smooth, start, p);
+  const double dPos = std::hypot(r.best.x - truth.x, r.best.y - truth.y, r.best.z - truth.z);
+  EXPECT_NEAR(std::hypot(start.x - truth.x, start.z - truth.z), 2.0, 0.01);
+  EXPECT_NEAR(rotationDeg(start, truth), 1.0, 0.05);
+  EXPECT_LT(dPos, 0.5);
+  EXPECT_LT(rotationDeg(r.best, truth), 0.3);
 }

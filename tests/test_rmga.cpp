@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "pm/core/Error.h"
+#include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
 
 namespace {
@@ -251,4 +252,48 @@ TEST(RmGa, BadBudgetsAndParametersAreRefused)
   pm::SearchSpace s;
   s.hi[2] = s.lo[2];
   EXPECT_THROW(pm::RmGa(s, pm::RmGaParams()), pm::Error);
+}
+
+TEST(LocalSimplex, ClimbsASmoothPeakFromAStartOffItWithinItsBudget)
+{
+  Peak f;
+  pm::Phi start = f.centre;
+  start.x += 4;
+  start.y -= 3;
+  start.z += 6;
+  start.e1 += 0.02;
+  start.e3 -= 0.015;
+  pm::LocalSimplexParams p;
+  p.maxEvaluations = 600;
+  p.tolerance = 0.001;
+  const pm::LocalSimplexResult r = pm::refineLocalSimplex(f, start, p);
+  EXPECT_LE(r.evaluations, p.maxEvaluations);
+  EXPECT_EQ(f.calls, r.evaluations); // every evaluation counted, none of an invalid pose hidden
+  EXPECT_GT(r.fitness, r.startFitness);
+  EXPECT_LT(distance(r.best, f.centre), 0.3);
+  for (std::size_t k = 3; k < 6; ++k)
+    EXPECT_NEAR(r.best[k], f.centre[k], 0.002) << "eps " << k - 2;
+  // A small budget stops early, never below the start, never past the budget.
+  Peak g;
+  p.maxEvaluations = 20;
+  const pm::LocalSimplexResult s = pm::refineLocalSimplex(g, start, p);
+  EXPECT_LE(s.evaluations, 20);
+  EXPECT_GE(s.fitness, s.startFitness);
+}
+
+TEST(LocalSimplex, NeverReturnsAnInvalidPoseAndRefusesBadInput)
+{
+  // The peak lies beyond |eps| = 1: the search may push against it but returns a valid pose.
+  Peak f;
+  f.centre = {0, 0, 500, 0.9, 0.5, 0.0};
+  const pm::LocalSimplexResult r = pm::refineLocalSimplex(f, {0, 0, 500, 0.8, 0.5, 0.0}, pm::LocalSimplexParams());
+  EXPECT_TRUE(r.best.isValid());
+  EXPECT_GE(r.fitness, r.startFitness);
+  pm::LocalSimplexParams bad;
+  bad.step[4] = 0;
+  EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::Error);
+  bad = pm::LocalSimplexParams();
+  bad.maxEvaluations = 6;
+  EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::Error);
+  EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0.9, 0.9, 0}, pm::LocalSimplexParams()), pm::Error);
 }

@@ -153,6 +153,31 @@ TEST(Tracker, SameSeedSameEstimates)
   EXPECT_EQ(run(), run());
 }
 
+TEST(Tracker, SmoothRefinementRunsOnLockedFramesWithinItsBudgetAndKeepsTheFitness)
+{
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(1000);
+  p.smoothRefineEvaluations = 60;
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initialize(); // searching: q is low on the first frames, no refinement there
+  int refined = 0;
+  for (int k = 0; k < 30; ++k) {
+    const pm::TrackResult r = t.track(S.im.left, S.im.right);
+    EXPECT_LE(r.smoothEvaluations, 60);
+    if (r.quality < p.lockQuality - p.smoothRefineMaxDrop) {
+      EXPECT_EQ(r.smoothEvaluations, 0);
+    }
+    refined += r.smoothEvaluations > 0;
+    EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // the fitness reported is the pose's
+  }
+  EXPECT_GT(refined, 10);
+  pm::TrackerParams bad = p;
+  bad.smoothRefineEvaluations = 3; // fewer than the first simplex
+  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::Error);
+  bad.smoothRefineEvaluations = -1;
+  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::Error);
+}
+
 TEST(Tracker, BadInputIsRefused)
 {
   const C12Scene &S = c12();
@@ -181,6 +206,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.ga.predictMotion = true;
   p.fitness.inTolDeg = 25;
   p.steadyBudgetFraction = 0.4;
+  p.smoothRefineEvaluations = 77;
   pm::test::writeText(d.file("t.json"), pm::io::trackerConfigToJson(p));
   const pm::TrackerParams q = pm::io::loadTrackerConfig(d.file("t.json"));
   EXPECT_EQ(q.budgetEvaluations, 1234);
@@ -188,6 +214,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_TRUE(q.ga.predictMotion);
   EXPECT_DOUBLE_EQ(q.fitness.inTolDeg, 25);
   EXPECT_DOUBLE_EQ(q.steadyBudgetFraction, 0.4);
+  EXPECT_EQ(q.smoothRefineEvaluations, 77);
   // Partial files keep the defaults.
   pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
   EXPECT_EQ(pm::io::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
@@ -198,6 +225,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
       {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"population":"many"}})", "not valid"},
       {R"({"format":"visp-photomodel-tracker","version":1,"lock_quality":0.1,"lost_quality":0.5})", "lost < lock"},
       {R"({"format":"visp-photomodel-tracker","version":1,"steady_budget_fraction":1.5})", "steady"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"smooth_refine_evaluations":3})", "evaluations are needed"},
       {"{ not json", "not valid"},
       {R"({"format":"x"})", "format"}};
   for (const auto &[text, expect] : bad) {

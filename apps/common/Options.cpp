@@ -101,6 +101,11 @@ TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m
   add(app.add_option("--refine-evals", p.ga.refineEvaluations, "option: local refinement of the best, evaluations per frame")
           ->check(CLI::Range(0, 1000000)),
       [](TrackerParams &t, const TrackerParams &c) { t.ga.refineEvaluations = c.ga.refineEvaluations; });
+  add(app.add_option("--smooth-refine", p.smoothRefineEvaluations,
+                     "option: after RM-GA, a local continuous search of the smooth score from the best, this many "
+                     "evaluations per frame (each costs about 11 of F; on top of the frame budget; 0: off)")
+          ->check(CLI::Range(0, 1000000)),
+      [](TrackerParams &t, const TrackerParams &c) { t.smoothRefineEvaluations = c.smoothRefineEvaluations; });
   add(app.add_option("--restart-generations", p.ga.restartGenerations,
                      "option: restart all but the best after this many generations without gain (0: never)")
           ->check(CLI::Range(0, 1000000)),

@@ -438,6 +438,51 @@ void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out) const
   BatchPool::shared().run(n, [&](std::size_t i) { out[i] = stereoScore(phis[i]); });
 }
 
+double StereoFitness::smoothCamera(int cam, const Phi &phi) const
+{
+  const Projection p = projectionOf(cam, phi);
+  const FitnessParams &q = m_params;
+  const std::int32_t noHue = HuePlane::kNoHue;
+  // A pixel's score for an S_in point of hue hm (or, hm < 0, for an S_out point): Eqs. (8), (9).
+  auto pixelScore = [&](std::int32_t h, std::int32_t hm) {
+    const bool hasHue = h != noHue;
+    if (hm < 0)
+      return hasHue && wrapDist(h, m_bgHue) <= m_tolOutBg ? q.outBackground : q.outOther;
+    if (hasHue && wrapDist(h, hm) <= m_tolIn)
+      return q.inMatch;
+    return hasHue && wrapDist(h, m_bgHue) <= m_tolInBg ? q.inBackground : q.inOther;
+  };
+  double sum = 0;
+  for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
+    const double X = m_x[i], Y = m_y[i], Z = m_z[i];
+    const double xc = p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1];
+    const double zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
+    if (!(zc > 1e-3)) {
+      sum += q.offImage;
+      continue;
+    }
+    const double u = p.px * xc / zc + p.u0, v = p.py * yc / zc + p.v0;
+    if (!(u >= 0 && v >= 0 && u < p.w - 1 && v < p.h - 1)) {
+      sum += q.offImage;
+      continue;
+    }
+    const int ui = static_cast<int>(u), vi = static_cast<int>(v);
+    const double fu = u - ui, fv = v - vi;
+    const std::uint16_t *row = p.hue + static_cast<std::size_t>(vi) * static_cast<std::size_t>(p.w) + static_cast<std::size_t>(ui);
+    const std::int32_t hm = i < m_nIn ? m_hue[i] : -1;
+    sum += (1 - fv) * ((1 - fu) * pixelScore(row[0], hm) + fu * pixelScore(row[1], hm)) +
+           fv * ((1 - fu) * pixelScore(row[p.w], hm) + fu * pixelScore(row[p.w + 1], hm));
+  }
+  return sum;
+}
+
+double StereoFitness::evaluateSmooth(const Phi &phi) const
+{
+  check(phi);
+  const double n = static_cast<double>(m_nIn + m_nOut);
+  return 0.5 * (smoothCamera(0, phi) + smoothCamera(1, phi)) / n;
+}
+
 FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const
 {
   check(phi);

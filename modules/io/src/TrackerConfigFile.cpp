@@ -39,7 +39,7 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat);
     checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
-                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "search_space", "rmga", "fitness"}, "");
+                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "smooth_refine_evaluations", "smooth_refine_max_drop", "search_space", "rmga", "fitness"}, "");
     get(j, "budget_ms", p.budgetMs);
     get(j, "budget_evaluations", p.budgetEvaluations);
     get(j, "lock_quality", p.lockQuality);
@@ -49,6 +49,8 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     get(j, "steady_budget_fraction", p.steadyBudgetFraction);
     get(j, "steady_after_frames", p.steadyAfterFrames);
     get(j, "steady_quality_drop", p.steadyQualityDrop);
+    get(j, "smooth_refine_evaluations", p.smoothRefineEvaluations);
+    get(j, "smooth_refine_max_drop", p.smoothRefineMaxDrop);
     if (j.contains("search_space")) {
       const json &s = j.at("search_space");
       checkKeys(s, {"lo", "hi"}, " in \"search_space\"");
@@ -106,6 +108,8 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"steady_budget_fraction", p.steadyBudgetFraction},
                {"steady_after_frames", p.steadyAfterFrames},
                {"steady_quality_drop", p.steadyQualityDrop},
+               {"smooth_refine_evaluations", p.smoothRefineEvaluations},
+               {"smooth_refine_max_drop", p.smoothRefineMaxDrop},
                {"search_space", {{"lo", p.space.lo}, {"hi", p.space.hi}}},
                {"rmga",
                 {{"population", p.ga.population},

@@ -33,6 +33,13 @@ void TrackerParams::validate() const
     throw Error("tracker: the qualities must satisfy -1 < lost < lock < 1");
   if (lostFrames < 1)
     throw Error("tracker: lost frames must be at least 1");
+  if (smoothRefineEvaluations < 0 || smoothRefineEvaluations > 1000000 || !(smoothRefineMaxDrop >= 0))
+    throw Error("tracker: the smooth refinement's evaluations must lie in [0, 1000000] and its fitness drop be non-negative");
+  if (smoothRefineEvaluations > 0) {
+    LocalSimplexParams sp = smoothRefine;
+    sp.maxEvaluations = smoothRefineEvaluations;
+    sp.validate();
+  }
   if (!(initSpread >= 0 && initSpread <= 1))
     throw Error("tracker: the initial spread must lie in [0, 1]");
   if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1))
@@ -54,6 +61,20 @@ class Objective : public FitnessFunction
 public:
   explicit Objective(const StereoFitness &f) : m_f(f) {}
   void evaluate(const Phi *p, std::size_t n, double *out) override { m_f.evaluate(p, n, out); }
+
+private:
+  const StereoFitness &m_f;
+};
+
+class SmoothObjective : public FitnessFunction
+{
+public:
+  explicit SmoothObjective(const StereoFitness &f) : m_f(f) {}
+  void evaluate(const Phi *p, std::size_t n, double *out) override
+  {
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = m_f.evaluateSmooth(p[i]);
+  }
 
 private:
   const StereoFitness &m_f;
@@ -135,9 +156,22 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   const FrameResult fr = m_ga.evolve(objective, budget);
   TrackResult r;
   r.phi = fr.best;
-  r.hMo = toHomogeneousMatrix(fr.best);
   r.fitness = fr.fitness;
-  r.quality = quality(fr.fitness);
+  if (m_params.smoothRefineEvaluations > 0 && quality(fr.fitness) >= m_params.lockQuality) {
+    // The top of F's plateau: a continuous search of the smooth score from RM-GA's best.
+    SmoothObjective smooth(m_fitness);
+    LocalSimplexParams sp = m_params.smoothRefine;
+    sp.maxEvaluations = m_params.smoothRefineEvaluations;
+    const LocalSimplexResult lr = refineLocalSimplex(smooth, fr.best, sp);
+    r.smoothEvaluations = lr.evaluations;
+    const double f = m_fitness.evaluate(lr.best);
+    if (f >= fr.fitness - m_params.smoothRefineMaxDrop) {
+      r.phi = lr.best;
+      r.fitness = f;
+    }
+  }
+  r.hMo = toHomogeneousMatrix(r.phi);
+  r.quality = quality(r.fitness);
   r.evaluations = fr.evaluations;
   r.generations = fr.generations;
   // The state machine.

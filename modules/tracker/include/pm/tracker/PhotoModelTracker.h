@@ -28,6 +28,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/StereoFitness.h"
+#include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
 
 namespace pm {
@@ -65,6 +66,18 @@ struct TrackerParams
   int steadyAfterFrames = 15;
   double steadyQualityDrop = 0.03;
 
+  /*!
+    Option: after RM-GA, a local continuous search (refineLocalSimplex) of this many evaluations
+    of the smooth score (StereoFitness::evaluateSmooth; each costs about 11 evaluations of F,
+    pm-bench) from the frame's best, on frames whose q reaches lockQuality, on top of the frame
+    budget; the pose it finds is the frame's pose when F there is not lower than at RM-GA's best
+    by more than smoothRefineMaxDrop. 0: off (the default: measured, it moves the static and the
+    Table 2 errors by a few tenths either way, README).
+  */
+  int smoothRefineEvaluations = 0;
+  double smoothRefineMaxDrop = 0.01;
+  LocalSimplexParams smoothRefine; //!< its first steps (its evaluations: smoothRefineEvaluations)
+
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
   FrameBudget budget() const { return budgetEvaluations > 0 ? FrameBudget::evals(budgetEvaluations) : FrameBudget::ms(budgetMs); }
@@ -83,6 +96,7 @@ struct TrackResult
   int generations = 0;
   double computeMs = 0;     //!< time spent in track() (hue planes + RM-GA)
   bool steady = false;      //!< the frame had the steady budget
+  int smoothEvaluations = 0; //!< evaluations of the smooth score by the local refinement (0: none)
 };
 
 class PhotoModelTracker

@@ -1,0 +1,51 @@
+#pragma once
+/*!
+  \file LocalSimplex.h
+  A local continuous search of the six pose variables (the Nelder-Mead simplex: reflection,
+  expansion, contraction, shrink), started at a pose and bounded in evaluations. RM-GA's own
+  refinement steps along the 12-bit genes and compares the staircase fitness F; this one moves
+  freely and is meant for a smooth score (StereoFitness::evaluateSmooth), where it climbs to the
+  top of the broad, flat maximum that F only knows as a plateau.
+
+  Invalid poses (|eps| > 1) score -infinity and are never returned. Allocates nothing.
+
+      struct Smooth : pm::FitnessFunction {
+        const pm::StereoFitness &f;
+        explicit Smooth(const pm::StereoFitness &ff) : f(ff) {}
+        void evaluate(const pm::Phi *p, std::size_t n, double *o) override {
+          for (std::size_t i = 0; i < n; ++i) o[i] = f.evaluateSmooth(p[i]);
+        }
+      } smooth(fitness);
+      const pm::LocalSimplexResult r = pm::refineLocalSimplex(smooth, gaBest, pm::LocalSimplexParams());
+      use(r.best); // r.fitness >= the start's
+*/
+#include "pm/core/Pose.h"
+#include "pm/rmga/RmGa.h"
+
+namespace pm {
+
+struct LocalSimplexParams
+{
+  //! The first simplex: the start plus these steps, one variable at a time (mm, mm, mm, eps, eps, eps).
+  double step[6] = {1.0, 1.0, 2.0, 0.004, 0.004, 0.004};
+  int maxEvaluations = 120; //!< including the first simplex's seven
+  //! Stops early when every vertex lies within this fraction of the first steps of the best.
+  double tolerance = 0.02;
+
+  void validate() const; //!< throws pm::Error naming the parameter out of range
+};
+
+struct LocalSimplexResult
+{
+  Phi best;
+  double fitness = 0;  //!< the score at best (never below the start's)
+  double startFitness = 0;
+  int evaluations = 0;
+};
+
+/*!
+  Maximises \e f from \e start. Throws pm::Error for invalid parameters or an invalid start.
+*/
+LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, const LocalSimplexParams &params);
+
+} // namespace pm
