@@ -43,12 +43,7 @@ nlohmann::json phiJson(const pm::Phi &p) { return {p.x, p.y, p.z, p.e1, p.e2, p.
 //! The fitness peak nearest \e start: a pattern search of the genes (the paper measures Table 1 against it).
 pm::Phi localPeak(const pm::StereoFitness &fit, const pm::Phi &start, const pm::SearchSpace &space)
 {
-  struct Obj : pm::FitnessFunction
-  {
-    const pm::StereoFitness &f;
-    explicit Obj(const pm::StereoFitness &ff) : f(ff) {}
-    void evaluate(const pm::Phi *p, std::size_t n, double *o) override { f.evaluate(p, n, o); }
-  } obj(fit);
+  pm::StereoObjective obj(fit);
   pm::RmGaParams gp;
   gp.population = 2;
   gp.elite = 1;

@@ -16,6 +16,7 @@
 #include "pm/core/StereoFitness.h"
 #include "pm/io/RigFile.h"
 #include "pm/rmga/LocalSimplex.h"
+#include "pm/rmga/StereoObjective.h"
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
@@ -486,16 +487,7 @@ TEST(SmoothFitness, ItsLocalSearchFindsTheBoxFromTwoMillimetresAndADegreeAway)
   pm::StereoFitness fit(rig, sm.build.model, pm::trackerFitnessDefaults());
   const auto im = box.renderStereo(rig, hMo, 0);
   fit.setImages(im.left, im.right);
-  struct Smooth : pm::FitnessFunction
-  {
-    const pm::StereoFitness &f;
-    explicit Smooth(const pm::StereoFitness &ff) : f(ff) {}
-    void evaluate(const pm::Phi *p, std::size_t n, double *o) override
-    {
-      for (std::size_t i = 0; i < n; ++i)
-        o[i] = f.evaluateSmooth(p[i]);
-    }
-  } smooth(fit);
+  pm::StereoObjective smooth(fit, pm::StereoObjective::Score::Smooth);
   auto rotationDeg = [](const pm::Phi &a, const pm::Phi &b) {
     return (pm::toHomogeneousMatrix(a).inverse() * pm::toHomogeneousMatrix(b)).getThetaUVector().getTheta() * 180 / M_PI;
   };

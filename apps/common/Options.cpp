@@ -103,7 +103,7 @@ TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m
       [](TrackerParams &t, const TrackerParams &c) { t.ga.refineEvaluations = c.ga.refineEvaluations; });
   add(app.add_option("--smooth-refine", p.smoothRefineEvaluations,
                      "option: after RM-GA, a local continuous search of the smooth score from the best, this many "
-                     "evaluations per frame (each costs about 11 of F; on top of the frame budget; 0: off)")
+                     "evaluations per frame (each costs about 13 of F; on top of the frame budget; 0: off)")
           ->check(CLI::Range(0, 1000000)),
       [](TrackerParams &t, const TrackerParams &c) { t.smoothRefineEvaluations = c.smoothRefineEvaluations; });
   add(app.add_option("--restart-generations", p.ga.restartGenerations,

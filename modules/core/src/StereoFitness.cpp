@@ -442,15 +442,17 @@ double StereoFitness::smoothCamera(int cam, const Phi &phi) const
 {
   const Projection p = projectionOf(cam, phi);
   const FitnessParams &q = m_params;
-  const std::int32_t noHue = HuePlane::kNoHue;
-  // A pixel's score for an S_in point of hue hm (or, hm < 0, for an S_out point): Eqs. (8), (9).
+  const Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
+  // A pixel's score for an S_in point of hue hm (or, hm < 0, for an S_out point): the classes of
+  // Eqs. (8), (9) as the kernels count them.
   auto pixelScore = [&](std::int32_t h, std::int32_t hm) {
-    const bool hasHue = h != noHue;
-    if (hm < 0)
-      return hasHue && wrapDist(h, m_bgHue) <= m_tolOutBg ? q.outBackground : q.outOther;
-    if (hasHue && wrapDist(h, hm) <= m_tolIn)
-      return q.inMatch;
-    return hasHue && wrapDist(h, m_bgHue) <= m_tolInBg ? q.inBackground : q.inOther;
+    FitnessCounts c;
+    if (hm >= 0)
+      classifyIn(h, hm, tol, c);
+    else
+      classifyOut(h, tol, c);
+    return q.inMatch * c.inMatch + q.inBackground * c.inBackground + q.inOther * c.inOther +
+           q.outBackground * c.outBackground + q.outOther * c.outOther;
   };
   double sum = 0;
   for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {

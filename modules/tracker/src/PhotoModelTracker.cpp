@@ -54,33 +54,6 @@ FrameBudget TrackerParams::steadyBudget() const
   return FrameBudget::ms(steadyBudgetFraction * budgetMs);
 }
 
-namespace {
-//! The stereo fitness as RM-GA's objective.
-class Objective : public FitnessFunction
-{
-public:
-  explicit Objective(const StereoFitness &f) : m_f(f) {}
-  void evaluate(const Phi *p, std::size_t n, double *out) override { m_f.evaluate(p, n, out); }
-
-private:
-  const StereoFitness &m_f;
-};
-
-class SmoothObjective : public FitnessFunction
-{
-public:
-  explicit SmoothObjective(const StereoFitness &f) : m_f(f) {}
-  void evaluate(const Phi *p, std::size_t n, double *out) override
-  {
-    for (std::size_t i = 0; i < n; ++i)
-      out[i] = m_f.evaluateSmooth(p[i]);
-  }
-
-private:
-  const StereoFitness &m_f;
-};
-} // namespace
-
 PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
     : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga)
 {
@@ -147,7 +120,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
 {
   const auto t0 = std::chrono::steady_clock::now();
   m_fitness.setImages(left, right);
-  Objective objective(m_fitness);
+  StereoObjective objective(m_fitness);
   const bool steady = m_steadyFrames >= m_params.steadyAfterFrames;
   FrameBudget budget = steady ? m_params.steadyBudget() : m_params.budget();
   if (budget.milliseconds > 0) // the hue planes are part of the frame's time
@@ -159,7 +132,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   r.fitness = fr.fitness;
   if (m_params.smoothRefineEvaluations > 0 && quality(fr.fitness) >= m_params.lockQuality) {
     // The top of F's plateau: a continuous search of the smooth score from RM-GA's best.
-    SmoothObjective smooth(m_fitness);
+    StereoObjective smooth(m_fitness, StereoObjective::Score::Smooth);
     LocalSimplexParams sp = m_params.smoothRefine;
     sp.maxEvaluations = m_params.smoothRefineEvaluations;
     const LocalSimplexResult lr = refineLocalSimplex(smooth, fr.best, sp);

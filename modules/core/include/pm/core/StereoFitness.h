@@ -95,7 +95,7 @@ public:
     F with each point's score interpolated bilinearly between the four pixels around its exact
     projection (each pixel scored as evaluate() scores the pixel a point lands on): continuous in
     phi, so that a local continuous search can climb it where F is a staircase (steps of one
-    pixel, flat in tilt over a degree or two). Scalar, four samples per point: about 11 times the
+    pixel, flat in tilt over a degree or two). Scalar, four samples per point: about 13 times the
     cost of evaluate() with AVX2 (pm-bench Fitness_1000Points_Depth_Smooth); allocates
     nothing. Same contract as evaluate().
   */

@@ -9,13 +9,7 @@
 
   Invalid poses (|eps| > 1) score -infinity and are never returned. Allocates nothing.
 
-      struct Smooth : pm::FitnessFunction {
-        const pm::StereoFitness &f;
-        explicit Smooth(const pm::StereoFitness &ff) : f(ff) {}
-        void evaluate(const pm::Phi *p, std::size_t n, double *o) override {
-          for (std::size_t i = 0; i < n; ++i) o[i] = f.evaluateSmooth(p[i]);
-        }
-      } smooth(fitness);
+      pm::StereoObjective smooth(fitness, pm::StereoObjective::Score::Smooth);
       const pm::LocalSimplexResult r = pm::refineLocalSimplex(smooth, gaBest, pm::LocalSimplexParams());
       use(r.best); // r.fitness >= the start's
 */

@@ -30,6 +30,7 @@
 #include "pm/core/StereoFitness.h"
 #include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
+#include "pm/rmga/StereoObjective.h"
 
 namespace pm {
 
@@ -68,7 +69,7 @@ struct TrackerParams
 
   /*!
     Option: after RM-GA, a local continuous search (refineLocalSimplex) of this many evaluations
-    of the smooth score (StereoFitness::evaluateSmooth; each costs about 11 evaluations of F,
+    of the smooth score (StereoFitness::evaluateSmooth; each costs about 13 evaluations of F,
     pm-bench) from the frame's best, on frames whose q reaches lockQuality, on top of the frame
     budget; the pose it finds is the frame's pose when F there is not lower than at RM-GA's best
     by more than smoothRefineMaxDrop. 0: off (the default: measured, it moves the static and the
