@@ -141,8 +141,8 @@ int main(int argc, char **argv)
       if (L.getWidth() != rig.left.width || L.getHeight() != rig.left.height)
         throw pm::Error(name + ": the images are " + std::to_string(L.getWidth()) + "x" + std::to_string(L.getHeight()) +
                         " but the rig's cameras are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
-      const pm::calib::BoardView vl = pattern->find(L, rig.left.cam, name + " left");
-      const pm::calib::BoardView vr = pattern->find(R, rig.right.cam, name + " right");
+      const pm::calib::BoardView vl = pattern->find(L, rig.left.cam, rig.left.distortion, name + " left");
+      const pm::calib::BoardView vr = pattern->find(R, rig.right.cam, rig.right.distortion, name + " right");
       perPair.push_back(vl.cMb * vr.cMb.inverse());
       rms.push_back(std::sqrt(0.5 * (vl.reprojectionRmsPx * vl.reprojectionRmsPx + vr.reprojectionRmsPx * vr.reprojectionRmsPx)));
       if (firstL.getSize() == 0) {
@@ -207,7 +207,7 @@ int main(int argc, char **argv)
           scene->render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
           I = blurred(I, blurPx);
           try {
-            const pm::calib::BoardView view = pattern->find(I, (c ? rig.right : rig.left).cam, "hand-eye pose " + std::to_string(m), true);
+            const pm::calib::BoardView view = pattern->find(I, (c ? rig.right : rig.left).cam, (c ? rig.right : rig.left).distortion, "hand-eye pose " + std::to_string(m), true);
             if (view.reprojectionRmsPx > 0.5) // a doubtful pose (partly hidden board) would spoil the calibration
               throw pm::Error("reprojection " + std::to_string(view.reprojectionRmsPx) + " px");
             views[c] = view.cMb;

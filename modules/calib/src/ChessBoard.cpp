@@ -51,7 +51,7 @@ vpImage<vpRGBa> ChessBoard::render(double pixelsPerMm) const
   return img;
 }
 
-BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name, bool) const
+std::vector<vpImagePoint> ChessBoard::findCorners(const vpImage<vpRGBa> &I, const std::string &name) const
 {
   validate();
   vpImage<unsigned char> grey;
@@ -72,19 +72,33 @@ BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &c
   const int half = std::clamp(static_cast<int>(spacing / 3), 2, 11);
   cv::cornerSubPix(g, pts, cv::Size(half, half), cv::Size(-1, -1),
                    cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 40, 0.001));
-
   // OpenCV lists the corners row by row, starting next to the black corner square when the
   // board is not the same turned by 180 degrees (validate() requires that); the test
   // ChessBoard.PoseFoundWhicheverWayTheBoardIsTurned holds OpenCV to it.
+  std::vector<vpImagePoint> out(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    out[i] = vpImagePoint(pts[i].y, pts[i].x);
+  return out;
+}
+
+BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name, bool whole) const
+{
+  return find(I, cam, LensDistortion(), name, whole);
+}
+
+BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+                           const std::string &name, bool) const
+{
+  const std::vector<vpImagePoint> raw = findCorners(I, name);
+  const std::vector<vpImagePoint> ideal = distortion.undistort(cam, raw);
   CornerMatches matches;
   for (int r = 0; r < innerRows; ++r)
-    for (int c = 0; c < innerCols; ++c) {
-      const cv::Point2f &p = pts[static_cast<std::size_t>(r * innerCols + c)];
-      matches.add(corner(r, c), vpImagePoint(p.y, p.x), cam);
-    }
+    for (int c = 0; c < innerCols; ++c)
+      matches.add(corner(r, c), ideal[static_cast<std::size_t>(r * innerCols + c)], cam);
   BoardView view;
   view.features = static_cast<int>(matches.points.size());
   solveBoardPose(matches, cam, view);
+  view.corners = raw;
   return view;
 }
 

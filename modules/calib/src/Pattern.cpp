@@ -7,6 +7,7 @@
 #include <visp3/vision/vpPose.h>
 
 #include "pm/core/Error.h"
+#include "pm/core/UndistortMap.h"
 
 namespace pm::calib {
 
@@ -18,6 +19,21 @@ void CornerMatches::add(vpPoint model, const vpImagePoint &ip, const vpCameraPar
   model.set_y(y);
   points.push_back(model);
   pixels.push_back(ip);
+}
+
+BoardView Pattern::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+                        const std::string &name, bool whole) const
+{
+  if (distortion.isNone())
+    return find(I, cam, name, whole);
+  RigCamera camera{name, cam, I.getWidth(), I.getHeight(), vpHomogeneousMatrix(), distortion};
+  const UndistortMap map(camera);
+  vpImage<vpRGBa> ideal;
+  map.undistort(I, ideal);
+  BoardView view = find(ideal, cam, name, whole);
+  for (vpImagePoint &p : view.corners)
+    p = distortion.distort(cam, p);
+  return view;
 }
 
 void solveBoardPose(const CornerMatches &matches, const vpCameraParameters &cam, BoardView &view)

@@ -1,5 +1,8 @@
 #include "pm/core/HuePlane.h"
 
+#include "pm/core/Error.h"
+#include "pm/core/UndistortMap.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -92,6 +95,23 @@ void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation)
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i)
     dst[i] = hueOf(src[i].R, src[i].G, src[i].B, minSaturation);
+}
+
+void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation, const UndistortMap &map)
+{
+  if (I.getWidth() != map.width() || I.getHeight() != map.height())
+    throw Error("hue plane: the image is " + std::to_string(I.getWidth()) + "x" + std::to_string(I.getHeight()) +
+                " but its camera's undistortion map is " + std::to_string(map.width()) + "x" + std::to_string(map.height()));
+  compute(I, minSaturation);
+  m_raw.swap(m_hue); // the raw image's hue, then gathered into the ideal image
+  if (m_hue.size() != m_raw.size())
+    m_hue.assign(m_raw.size(), kNoHue);
+  const std::int32_t *idx = map.nearest().data();
+  const std::uint16_t *src = m_raw.data();
+  std::uint16_t *dst = m_hue.data();
+  const std::size_t n = map.nearest().size();
+  for (std::size_t i = 0; i < n; ++i)
+    dst[i] = idx[i] >= 0 ? src[idx[i]] : kNoHue;
 }
 
 } // namespace pm

@@ -247,6 +247,10 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
     c.v0 = static_cast<float>(cams[k]->cam.get_v0());
     c.width = static_cast<int>(cams[k]->width);
     c.height = static_cast<int>(cams[k]->height);
+    m_distortion[static_cast<std::size_t>(k)] = cams[k]->distortion;
+    m_intrinsics[static_cast<std::size_t>(k)] = cams[k]->cam;
+    if (!cams[k]->distortion.isNone())
+      m_undistort[static_cast<std::size_t>(k)] = std::make_shared<const UndistortMap>(*cams[k]);
   }
   m_nIn = model.inner.size();
   m_nOut = model.outer.size();
@@ -278,7 +282,10 @@ void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa>
                   std::to_string(im[k]->getHeight()) + " but the rig's camera is " + std::to_string(m_cams[k].width) +
                   "x" + std::to_string(m_cams[k].height));
   for (int k = 0; k < 2; ++k)
-    m_planes[static_cast<std::size_t>(k)].compute(*im[k], m_params.minSaturation);
+    if (const auto &map = m_undistort[static_cast<std::size_t>(k)])
+      m_planes[static_cast<std::size_t>(k)].compute(*im[k], m_params.minSaturation, *map);
+    else
+      m_planes[static_cast<std::size_t>(k)].compute(*im[k], m_params.minSaturation);
   m_hasImages = true;
 }
 
@@ -403,6 +410,12 @@ std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) c
     const float zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
     s.u = zc > 0 ? p.px * xc / zc + p.u0 : -1.f;
     s.v = zc > 0 ? p.py * yc / zc + p.v0 : -1.f;
+    const LensDistortion &lens = m_distortion[static_cast<std::size_t>(camera)];
+    if (zc > 0 && !lens.isNone()) {
+      const vpImagePoint raw = lens.distort(m_intrinsics[static_cast<std::size_t>(camera)], vpImagePoint(s.v, s.u));
+      s.u = static_cast<float>(raw.get_u());
+      s.v = static_cast<float>(raw.get_v());
+    }
     s.inner = inner;
     s.cls = c.inMatch ? PointScore::InMatch
             : c.inBackground ? PointScore::InBackground

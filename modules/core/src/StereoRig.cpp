@@ -10,8 +10,8 @@ StereoRig StereoRig::symmetric(const vpCameraParameters &cam, unsigned w, unsign
                                double toeInRad)
 {
   StereoRig rig;
-  rig.left = {"left", cam, w, h, vpHomogeneousMatrix(-baselineM / 2, 0, 0, 0, toeInRad, 0)};
-  rig.right = {"right", cam, w, h, vpHomogeneousMatrix(baselineM / 2, 0, 0, 0, -toeInRad, 0)};
+  rig.left = {"left", cam, w, h, vpHomogeneousMatrix(-baselineM / 2, 0, 0, 0, toeInRad, 0), LensDistortion()};
+  rig.right = {"right", cam, w, h, vpHomogeneousMatrix(baselineM / 2, 0, 0, 0, -toeInRad, 0), LensDistortion()};
   return rig;
 }
 
@@ -34,6 +34,7 @@ void StereoRig::validate() const
                   " must be positive");
     if (!c->hMc.isAnHomogeneousMatrix())
       throw Error("camera '" + c->name + "': hMc is not a rigid transformation");
+    c->distortion.validate(c->cam, c->width, c->height, "camera '" + c->name + "'");
   }
 }
 

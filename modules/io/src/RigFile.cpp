@@ -1,5 +1,6 @@
 #include "pm/io/RigFile.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -8,6 +9,7 @@
 
 #include "JsonFormat.h"
 #include "pm/core/Error.h"
+#include "pm/io/CameraFile.h"
 #include "pm/io/CameraXml.h"
 #include "pm/io/StagedFiles.h"
 
@@ -41,6 +43,43 @@ json poseToJson(const vpHomogeneousMatrix &M)
 
 } // namespace
 
+vpCameraParameters vispDistortionModel(const RigCamera &camera)
+{
+  const vpCameraParameters &cam = camera.cam;
+  vpCameraParameters out;
+  if (camera.distortion.isVispModel()) {
+    const double k = camera.distortion.coefficients.empty() ? 0.0 : camera.distortion.coefficients[0];
+    // kdu: ViSP's inverse (distorted to undistorted), fitted as below.
+    double num = 0, den = 0;
+    const double rMax = std::hypot(std::max(cam.get_u0(), camera.width - cam.get_u0()) / cam.get_px(),
+                                   std::max(cam.get_v0(), camera.height - cam.get_v0()) / cam.get_py());
+    for (int i = 1; i <= 200; ++i) {
+      const double r = rMax * i / 200.0, rd = r * (1 + k * r * r);
+      num += rd * rd * rd * (r - rd);
+      den += rd * rd * rd * rd * rd * rd;
+    }
+    out.initPersProjWithDistortion(cam.get_px(), cam.get_py(), cam.get_u0(), cam.get_v0(), k, den > 0 ? num / den : 0.0);
+    return out;
+  }
+  // Least squares over the image's radii: r (1 + kud r^2) against the lens's distorted radius,
+  // and r_d (1 + kdu r_d^2) against the ideal one.
+  const double rCorner = std::hypot(std::max(cam.get_u0(), camera.width - cam.get_u0()) / cam.get_px(),
+                                    std::max(cam.get_v0(), camera.height - cam.get_v0()) / cam.get_py());
+  double nu = 0, du = 0, nd = 0, dd = 0;
+  for (int i = 1; i <= 200; ++i) {
+    const double rd = rCorner * i / 200.0; // a raw radius inside the image
+    const vpImagePoint ideal = camera.distortion.undistort(cam, vpImagePoint(cam.get_v0(), cam.get_u0() + rd * cam.get_px()));
+    const double r = (ideal.get_u() - cam.get_u0()) / cam.get_px();
+    nu += r * r * r * (rd - r);
+    du += r * r * r * r * r * r;
+    nd += rd * rd * rd * (r - rd);
+    dd += rd * rd * rd * rd * rd * rd;
+  }
+  out.initPersProjWithDistortion(cam.get_px(), cam.get_py(), cam.get_u0(), cam.get_v0(), du > 0 ? nu / du : 0.0,
+                                 dd > 0 ? nd / dd : 0.0);
+  return out;
+}
+
 StereoRig loadRig(const std::string &path)
 {
   std::ifstream f(path);
@@ -49,9 +88,10 @@ StereoRig loadRig(const std::string &path)
   StereoRig rig;
   try {
     const json j = json::parse(f);
-    detail::checkFormat(j, kFormat);
-    const fs::path xml = fs::path(path).parent_path() / j.at("intrinsics_xml").get<std::string>();
-    if (!fs::is_regular_file(xml))
+    detail::checkFormat(j, kFormat, 2);
+    const fs::path dir = fs::path(path).parent_path();
+    const fs::path xml = j.contains("intrinsics_xml") ? dir / j.at("intrinsics_xml").get<std::string>() : fs::path();
+    if (!xml.empty() && !fs::is_regular_file(xml))
       throw Error("the intrinsics file '" + xml.string() + "' does not exist");
     const json &cams = j.at("cameras");
     if (!cams.is_array() || cams.size() != 2)
@@ -66,7 +106,13 @@ StereoRig loadRig(const std::string &path)
       c.width = static_cast<unsigned>(w);
       c.height = static_cast<unsigned>(h);
       c.hMc = poseFromJson(cams[i].at("hMc"));
-      c.cam = readCameraXml(xml.string(), c.name, c.width, c.height);
+      // The camera's own intrinsics file (any format readCameraFile knows), else the rig's ViSP XML.
+      const fs::path file = cams[i].contains("intrinsics") ? dir / cams[i].at("intrinsics").get<std::string>() : xml;
+      if (file.empty())
+        throw Error("camera '" + c.name + "' has no \"intrinsics\" file and the rig no \"intrinsics_xml\"");
+      const CameraIntrinsics in = readCameraFile(file.string(), c.name, c.width, c.height);
+      c.cam = in.cam;
+      c.distortion = in.distortion;
     }
     rig.validate();
   } catch (const Error &e) {
@@ -89,18 +135,42 @@ void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::st
   std::error_code ec;
   fs::remove(xmlTmp, ec);
   json cams = json::array();
+  bool exactFiles = false;
+  std::vector<std::pair<fs::path, fs::path>> written; // staged, final
+  const auto cleanUp = [&] {
+    fs::remove(xmlTmp, ec);
+    for (const auto &w : written)
+      fs::remove(w.first, ec);
+  };
   for (const RigCamera *c : {&rig.left, &rig.right}) {
+    json cj{{"name", c->name}, {"image_width", c->width}, {"image_height", c->height}, {"hMc", poseToJson(c->hMc)}};
     try {
-      writeCameraXml(c->cam, xmlTmp.string(), c->name, c->width, c->height);
+      // ViSP's XML: the pinhole model, or ViSP's one-coefficient model of the lens (exact when
+      // the lens is one, a least-squares fit otherwise).
+      writeCameraXml(c->distortion.isNone() ? c->cam : vispDistortionModel(*c), xmlTmp.string(), c->name, c->width, c->height);
+      if (!c->distortion.isVispModel()) {
+        // A lens ViSP's model cannot hold: the exact one in OpenCV's YAML, which the rig then names.
+        const std::string name = fs::path(rigJsonPath).stem().string() + "_" + c->name + ".yml";
+        const fs::path tmp = dir / (".partial-" + name);
+        writeOpenCvCameraFile(*c, tmp.string());
+        written.emplace_back(tmp, dir / name);
+        cj["intrinsics"] = name;
+        exactFiles = true;
+      }
     } catch (const Error &) {
-      fs::remove(xmlTmp, ec);
+      cleanUp();
       throw;
     }
-    cams.push_back({{"name", c->name}, {"image_width", c->width}, {"image_height", c->height}, {"hMc", poseToJson(c->hMc)}});
+    cams.push_back(cj);
   }
-  json j{{"format", kFormat}, {"version", 1}, {"intrinsics_xml", xmlName}, {"cameras", cams}};
+  json j{{"format", kFormat}, {"version", exactFiles ? 2 : 1}, {"intrinsics_xml", xmlName}, {"cameras", cams}};
   if (!description.empty())
     j["description"] = description;
+  for (const auto &w : written) {
+    fs::rename(w.first, w.second, ec);
+    if (ec)
+      throw Error("cannot write the intrinsics file '" + w.second.string() + "': " + ec.message());
+  }
   fs::rename(xmlTmp, xml, ec);
   if (ec)
     throw Error("cannot write the intrinsics file '" + xml.string() + "': " + ec.message());

@@ -257,6 +257,21 @@ void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigm
     }
 }
 
+void Rasterizer::addNoise(vpImage<vpRGBa> &out, double noiseSigma, std::uint64_t noiseSeed)
+{
+  if (!(noiseSigma > 0))
+    return;
+  const unsigned w = out.getWidth(), h = out.getHeight();
+  for (unsigned v = 0; v < h; ++v)
+    for (unsigned u = 0; u < w; ++u) {
+      unsigned char *c[3] = {&out[v][u].R, &out[v][u].G, &out[v][u].B};
+      for (int k = 0; k < 3; ++k) {
+        const double val = *c[k] + noiseSigma * static_cast<double>(fastGaussian(noiseSeed, (static_cast<std::uint64_t>(v) * w + u) * 3 + static_cast<std::uint64_t>(k)));
+        *c[k] = static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, val))));
+      }
+    }
+}
+
 double Rasterizer::coverage(unsigned u, unsigned v, std::uint8_t id) const
 {
   if (u >= m_w || v >= m_h)

@@ -4,6 +4,8 @@
 #include <exception>
 #include <mutex>
 
+#include <opencv2/imgproc.hpp>
+
 #include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 #include "pm/sim/Noise.h"
@@ -69,8 +71,70 @@ std::shared_ptr<const ShadowMap> Scene::shadowMap() const
   return c.map;
 }
 
+//! A distorted camera's ideal canvas (big enough for the whole raw image) and the raw image's map into it.
+struct LensWarp
+{
+  vpCameraParameters canvasCam;
+  unsigned canvasW = 0, canvasH = 0;
+  cv::Mat mapU, mapV; //!< canvas position of each raw pixel
+  std::vector<double> key;
+};
+
+struct Scene::LensCache
+{
+  std::mutex mutex;
+  std::vector<std::shared_ptr<const LensWarp>> warps;
+  std::shared_ptr<const LensWarp> get(const RigCamera &camera)
+  {
+    std::vector<double> key{camera.cam.get_px(), camera.cam.get_py(), camera.cam.get_u0(), camera.cam.get_v0(),
+                            static_cast<double>(camera.width), static_cast<double>(camera.height)};
+    key.insert(key.end(), camera.distortion.coefficients.begin(), camera.distortion.coefficients.end());
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto &w : warps)
+      if (w->key == key)
+        return w;
+    camera.distortion.validate(camera.cam, camera.width, camera.height, camera.name + " camera");
+    auto w = std::make_shared<LensWarp>();
+    w->key = key;
+    const int W = static_cast<int>(camera.width), H = static_cast<int>(camera.height);
+    std::vector<vpImagePoint> raw;
+    raw.reserve(static_cast<std::size_t>(W) * static_cast<std::size_t>(H));
+    for (int v = 0; v < H; ++v)
+      for (int u = 0; u < W; ++u)
+        raw.emplace_back(v, u);
+    const std::vector<vpImagePoint> ideal = camera.distortion.undistort(camera.cam, raw);
+    double umin = 0, umax = W - 1, vmin = 0, vmax = H - 1;
+    for (const vpImagePoint &p : ideal) {
+      umin = std::min(umin, p.get_u());
+      umax = std::max(umax, p.get_u());
+      vmin = std::min(vmin, p.get_v());
+      vmax = std::max(vmax, p.get_v());
+    }
+    umin = std::floor(umin) - 2;
+    vmin = std::floor(vmin) - 2;
+    w->canvasW = static_cast<unsigned>(std::ceil(umax - umin) + 3);
+    w->canvasH = static_cast<unsigned>(std::ceil(vmax - vmin) + 3);
+    if (w->canvasW > 4 * camera.width || w->canvasH > 4 * camera.height)
+      throw Error(camera.name + " camera: its lens (" + camera.distortion.describe() +
+                  ") spreads the image over more than four times its size; the simulator does not render it");
+    w->canvasCam.initPersProjWithoutDistortion(camera.cam.get_px(), camera.cam.get_py(), camera.cam.get_u0() - umin,
+                                               camera.cam.get_v0() - vmin);
+    w->mapU.create(H, W, CV_32F);
+    w->mapV.create(H, W, CV_32F);
+    for (int v = 0; v < H; ++v)
+      for (int u = 0; u < W; ++u) {
+        const vpImagePoint &p = ideal[static_cast<std::size_t>(v) * static_cast<std::size_t>(W) + static_cast<std::size_t>(u)];
+        w->mapU.at<float>(v, u) = static_cast<float>(p.get_u() - umin);
+        w->mapV.at<float>(v, u) = static_cast<float>(p.get_v() - vmin);
+      }
+    warps.push_back(w);
+    return w;
+  }
+};
+
 Scene::Scene(const TargetShape &target, const SceneParams &params)
-    : m_target(target), m_params(params), m_shadowCache(std::make_shared<ShadowCache>())
+    : m_target(target), m_params(params), m_shadowCache(std::make_shared<ShadowCache>()),
+      m_lensCache(std::make_shared<LensCache>())
 {
   m_params.validate();
   m_toy = buildTargetMesh(m_target, m_params.meshStepMm, static_cast<float>(m_params.specular));
@@ -102,6 +166,28 @@ Scene::Scene(const TargetShape &target, const SceneParams &params)
 
 void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget) const
+{
+  if (camera.distortion.isNone()) {
+    renderIdeal(raster, camera, hMo, frame, stream, out, withTarget, m_params.noiseSigma);
+    return;
+  }
+  const std::shared_ptr<const LensWarp> warp = m_lensCache->get(camera);
+  RigCamera ideal = camera;
+  ideal.cam = warp->canvasCam;
+  ideal.width = warp->canvasW;
+  ideal.height = warp->canvasH;
+  ideal.distortion = LensDistortion();
+  vpImage<vpRGBa> canvas;
+  renderIdeal(raster, ideal, hMo, frame, stream, canvas, withTarget, 0.0);
+  out.resize(camera.height, camera.width);
+  const cv::Mat src(static_cast<int>(canvas.getHeight()), static_cast<int>(canvas.getWidth()), CV_8UC4, canvas.bitmap);
+  cv::Mat dst(static_cast<int>(camera.height), static_cast<int>(camera.width), CV_8UC4, out.bitmap);
+  cv::remap(src, dst, warp->mapU, warp->mapV, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  Rasterizer::addNoise(out, m_params.noiseSigma, hash64(m_params.seed ^ hash64(frame * 8 + stream)));
+}
+
+void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                        unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const
 {
   if (raster.width() != camera.width || raster.height() != camera.height)
     raster.reset(camera.width, camera.height, m_params.supersampling);
@@ -142,7 +228,7 @@ void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogene
   if (m_params.occluder)
     raster.draw(m_occluder, cMo, camera.cam, light, 3);
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
-  raster.resolve(out, m_params.exposure, m_params.noiseSigma, noiseSeed);
+  raster.resolve(out, m_params.exposure, noiseSigma, noiseSeed);
 }
 
 StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const
@@ -173,7 +259,7 @@ void Scene::renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, 
 {
   if (!(distanceMm > 0))
     throw Error("photo distance must be positive");
-  const RigCamera photo{"photo", cam, w, h, vpHomogeneousMatrix()};
+  const RigCamera photo{"photo", cam, w, h, vpHomogeneousMatrix(), LensDistortion()};
   const vpHomogeneousMatrix hMo(0, 0, distanceMm * 1e-3, 0, 0, 0);
   Rasterizer r;
   render(r, photo, hMo, 0, 2, background, false);

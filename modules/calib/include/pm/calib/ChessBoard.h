@@ -32,6 +32,14 @@ struct ChessBoard : Pattern
   //! Throws pm::Error unless all the inner corners are found (\e whole changes nothing).
   BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
                  bool whole = false) const override;
+  //! Finds the corners in the raw image and undistorts them before the pose (more exact than undistorting the image).
+  BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+                 const std::string &name, bool whole = false) const override;
+  /*!
+    The inner corners found in \e I (row by row, the first next to the black corner square),
+    refined to sub-pixel. Throws pm::Error naming \e name unless all are found.
+  */
+  std::vector<vpImagePoint> findCorners(const vpImage<vpRGBa> &I, const std::string &name) const;
 };
 
 } // namespace pm::calib

@@ -14,6 +14,7 @@
 #include <visp3/core/vpImagePoint.h>
 #include <visp3/core/vpPoint.h>
 #include <visp3/core/vpRGBa.h>
+#include "pm/core/LensDistortion.h"
 
 namespace pm::calib {
 
@@ -44,6 +45,13 @@ public:
   */
   virtual BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
                          bool whole = false) const = 0;
+  /*!
+    The same in the raw image of a camera whose lens has \e distortion (cam: its pinhole part); the
+    view's corners are raw pixels, its reprojection RMS in ideal pixels. Without distortion, the
+    call above. This default undistorts the image (UndistortMap) and finds the pattern in it.
+  */
+  virtual BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+                         const std::string &name, bool whole = false) const;
 };
 
 //! Pattern points (oX, oY, oZ, metres) matched with the pixels where they were found.

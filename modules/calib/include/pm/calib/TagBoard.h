@@ -40,6 +40,7 @@ struct TagBoard : Pattern
   //! Throws pm::Error if fewer than minTags (all with \e whole) of its tags are found.
   BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
                  bool whole = false) const override;
+  using Pattern::find; // the raw image of a lens with distortion: undistorted first
 };
 
 } // namespace pm::calib

@@ -9,6 +9,8 @@
   compute() is a vectorisable pass over the image (about 1 ms for 640x480 on one core, see
   pm-bench); it allocates only when the image size changes. The plane is padded so that
   32-bit gathers at its last pixel stay inside it.
+  Given an UndistortMap, the plane is the camera's ideal (pinhole) image: the raw image's hue,
+  then one gather per pixel through the map (pixels the raw image does not cover get kNoHue).
 */
 #include <cstdint>
 #include <vector>
@@ -18,6 +20,8 @@
 
 namespace pm {
 
+class UndistortMap;
+
 class HuePlane
 {
 public:
@@ -25,6 +29,8 @@ public:
 
   //! Fills the plane from \e I; pixels with saturation < \e minSaturation get kNoHue.
   void compute(const vpImage<vpRGBa> &I, float minSaturation = 0.f);
+  //! The same in the ideal image of \e map's camera (\e I is the raw image, of the map's size).
+  void compute(const vpImage<vpRGBa> &I, float minSaturation, const UndistortMap &map);
 
   unsigned width() const { return m_w; }
   unsigned height() const { return m_h; }
@@ -35,6 +41,7 @@ public:
 private:
   unsigned m_w = 0, m_h = 0;
   std::vector<std::uint16_t> m_hue;
+  std::vector<std::uint16_t> m_raw; //!< the raw image's hue when undistorting
 };
 
 //! Hue of one colour in tenths of a degree (same formula as rgbToHsv, rounded), or kNoHue.

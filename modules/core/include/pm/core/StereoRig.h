@@ -1,8 +1,8 @@
 #pragma once
 /*!
   \file StereoRig.h
-  The stereo rig on the robot's hand: two pinhole cameras (ViSP's vpCameraParameters,
-  no distortion) and where each sits on the hand.
+  The stereo rig on the robot's hand: two cameras (ViSP's vpCameraParameters for the pinhole
+  part, a LensDistortion for the lens) and where each sits on the hand.
 
   Frames: the hand frame H has z pointing forward (toward the target), x to the right and
   y down, like a camera frame, with its origin midway between the two optical centres.
@@ -13,16 +13,18 @@
 
 #include <visp3/core/vpCameraParameters.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
+#include "pm/core/LensDistortion.h"
 
 namespace pm {
 
 struct RigCamera
 {
   std::string name;             //!< "left" / "right"
-  vpCameraParameters cam;       //!< intrinsics (perspective projection without distortion)
+  vpCameraParameters cam;       //!< intrinsics of the ideal (pinhole) image: px, py, u0, v0
   unsigned width = 0;           //!< image width in pixels
   unsigned height = 0;          //!< image height in pixels
   vpHomogeneousMatrix hMc;      //!< camera pose in the hand frame (metres)
+  LensDistortion distortion;    //!< the lens (none: a pinhole camera, the raw image is the ideal one)
   vpHomogeneousMatrix cMh() const { return hMc.inverse(); }
 };
 

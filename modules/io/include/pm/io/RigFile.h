@@ -16,6 +16,9 @@
             { "name": "right", ... } ]
         }
 
+  A camera may name its own intrinsics file instead, "intrinsics": "left.yml" (version 2):
+  any format pm::io::readCameraFile knows (ViSP XML, OpenCV YAML/XML, ROS camera_info), with the
+  lens distortion it holds. ViSP's XML may hold ViSP's distortion model (kud), read as k1.
   hMc is the camera's pose in the hand frame: translation in millimetres, rotation as a
   theta-u vector in degrees (ViSP's vpThetaUVector).
 */
@@ -27,8 +30,16 @@ namespace pm::io {
 
 //! Reads a rig; throws pm::Error naming the file and the field that is missing or wrong.
 StereoRig loadRig(const std::string &rigJsonPath);
-//! Writes the rig JSON and its intrinsics XML (name relative to the JSON's folder). Throws pm::Error.
+/*!
+  Writes the rig JSON and its intrinsics XML (name relative to the JSON's folder). A camera with
+  a lens ViSP's model cannot hold exactly (more than k1) also gets an OpenCV YAML file
+  (<rig stem>_<camera>.yml), which the JSON names (version 2); the XML then holds ViSP's model
+  fitted to the lens, for ViSP programs. Throws pm::Error; nothing is left half-written.
+*/
 void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
              const std::string &description = "");
+
+//! ViSP's one-coefficient model (kud, kdu) of \e camera's lens: exact for k1 alone, else a least-squares fit over the image.
+vpCameraParameters vispDistortionModel(const RigCamera &camera);
 
 } // namespace pm::io

@@ -53,6 +53,8 @@ public:
     Gaussian noise of \e noiseSigma grey levels per channel drawn from \e noiseSeed.
   */
   void resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const;
+  //! The sensor noise resolve() adds, on an image made otherwise (the same draws for the same pixel and seed).
+  static void addNoise(vpImage<vpRGBa> &out, double noiseSigma, std::uint64_t noiseSeed);
   //! Fraction of the samples of pixel (u, v) that show object \e id.
   double coverage(unsigned u, unsigned v, std::uint8_t id) const;
   /*!

@@ -79,6 +79,9 @@ public:
   /*!
     Renders what \e camera sees with the target at hMo (pose of the target frame in the hand
     frame); \e stream distinguishes images of the same frame (0 left, 1 right, 2+ others).
+    A camera with lens distortion sees through it: the scene is rendered in an ideal image large
+    enough to hold the whole raw one, resampled into the raw image (bilinear, through a map
+    computed once per camera and kept), then the sensor noise is added.
   */
   void render(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
               unsigned stream, vpImage<vpRGBa> &out, bool withTarget = true) const;
@@ -110,6 +113,10 @@ private:
   Mesh m_toy, m_backdrop, m_occluder;
   struct ShadowCache;
   std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
+  struct LensCache;
+  std::shared_ptr<LensCache> m_lensCache; // the distorted cameras' resampling maps, shared by copies
+  void renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                   unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const;
 };
 
 } // namespace pm::sim

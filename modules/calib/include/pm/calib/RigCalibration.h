@@ -1,0 +1,90 @@
+#pragma once
+/*!
+  \file RigCalibration.h
+  Calibrating a stereo rig from image pairs of a chessboard: OpenCV's corner finder
+  (findChessboardCorners, cornerSubPix) on each image, a sharpness check
+  (estimateChessboardSharpness), cv::calibrateCamera for each camera (intrinsics and five
+  distortion coefficients k1, k2, p1, p2, k3), then cv::stereoCalibrate with those intrinsics
+  fixed for the pose of the right camera in the left one. Each camera's intrinsics use every view
+  where that camera sees the whole board sharply (a pair whose other image misses it still helps
+  cover the image's edges, where the lens bends most); the stereo pose uses the pairs where both do. Nothing of the calibration is written
+  by hand: this is the bookkeeping around OpenCV's, with every rejected view and its reason.
+
+  The rig it returns has the project's hand frame (StereoRig.h): its origin midway between the
+  optical centres and its axes turned halfway from the left camera's to the right one's (for a
+  symmetric toed-in rig, z along the bisector), lengths in the board's unit taken as mm.
+  A view is rejected when the whole board is not found in it or it is blurred (board edges wider
+  than maxEdgeWidthPx), a pair when its images differ in size from the first pair's; fewer than
+  minPairs pairs usable for the stereo pose (or views for a camera) is an error.
+
+      std::vector<pm::calib::StereoImagePair> pairs = ...;   // raw images, as the cameras give them
+      pm::calib::ChessBoard board;  board.innerRows = 6;  board.innerCols = 9;  board.squareMm = 25;
+      const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+      pm::io::saveRig(c.rig, "rig.json", ...);   // then pm-calib-baseline, pm-make-model, pm-track
+*/
+#include <string>
+#include <vector>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpImagePoint.h>
+#include <visp3/core/vpRGBa.h>
+#include "pm/calib/ChessBoard.h"
+#include "pm/core/StereoRig.h"
+
+namespace pm::calib {
+
+struct StereoImagePair
+{
+  std::string name;                   //!< for reports, e.g. "left01.jpg + right01.jpg"
+  vpImage<vpRGBa> left, right;
+};
+
+struct RigCalibrationParams
+{
+  int minPairs = 5;             //!< usable pairs needed
+  double maxEdgeWidthPx = 5.0;  //!< blur limit: mean width of the board's edges (estimateChessboardSharpness)
+  void validate() const;        //!< throws pm::Error for a value out of range
+};
+
+//! One pair's fate and, when used, its residuals.
+struct PairReport
+{
+  std::string name;
+  bool used = false;            //!< for the stereo pose (both views usable)
+  bool usedBy[2] = {false, false}; //!< for each camera's intrinsics
+  std::string reason;           //!< why it was not used for the stereo pose ("" when used)
+  double edgeWidthPx[2] = {0, 0};
+  double rmsPx[2] = {0, 0};     //!< reprojection rms of each camera in the stereo calibration (used pairs)
+  std::vector<vpImagePoint> corners[2];   //!< detected (raw image)
+  std::vector<vpImagePoint> projected[2]; //!< the board's corners reprojected by the calibration
+};
+
+struct RigCalibration
+{
+  StereoRig rig;                  //!< intrinsics with distortion, poses in the hand frame
+  double rmsLeftPx = 0, rmsRightPx = 0; //!< cv::calibrateCamera of each camera
+  double rmsStereoPx = 0;         //!< cv::stereoCalibrate (both cameras' corners)
+  double baselineMm = 0;          //!< |T| in the board's unit
+  double rotationDeg = 0;         //!< angle between the two cameras
+  int pairsUsed = 0;              //!< for the stereo pose
+  int viewsUsed[2] = {0, 0};      //!< for each camera's intrinsics
+  bool k3Fixed[2] = {false, false}; //!< k3 held at 0: the five-coefficient model folded the image (too few views at its edges)
+  std::vector<PairReport> pairs;  //!< every pair given, in order
+};
+
+/*!
+  Calibrates the rig. Throws pm::Error for an invalid board or parameters, an empty list, or
+  fewer than params.minPairs usable pairs (the message lists the rejected pairs and why).
+*/
+RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const ChessBoard &board,
+                            const RigCalibrationParams &params = RigCalibrationParams());
+
+/*!
+  The hand frame of a rig whose right camera sits at cLMcR in the left one: origin midway between
+  the optical centres, axes halfway between the cameras' (theta-u halved). Returns hMcL, hMcR.
+*/
+void handFrameOf(const vpHomogeneousMatrix &cLMcR, vpHomogeneousMatrix &hMcL, vpHomogeneousMatrix &hMcR);
+
+//! A picture of where the corners fell in each camera, with the residuals as arrows (x \e gain), side by side.
+vpImage<vpRGBa> coverageImage(const RigCalibration &c, double gain = 20);
+
+} // namespace pm::calib

@@ -1,0 +1,49 @@
+#pragma once
+/*!
+  \file UndistortMap.h
+  Where each pixel of a camera's ideal (pinhole) image is seen in its raw image, computed once
+  per camera (cv::initUndistortRectifyMap with the camera's own intrinsics as the new ones, so
+  the ideal image has the raw image's size and the same px, py, u0, v0).
+  - nearest(): the raw pixel index under each ideal pixel (-1 off the raw image), which the
+    fitness's hue planes gather through (HuePlane::compute): one lookup per pixel per frame;
+  - undistort(): the raw image resampled bilinearly into the ideal one, for the model builders
+    and the calibration check, which work on whole photos once.
+  With barrel distortion the raw image's corners fall outside the ideal image and are not used.
+
+      const pm::UndistortMap map(rig.left);           // once
+      vpImage<vpRGBa> ideal;
+      map.undistort(rawLeft, ideal);                  // a photo for the builder
+      plane.compute(rawLeft, 0.1f, &map);             // the hue plane in the ideal image
+*/
+#include <cstdint>
+#include <vector>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+#include "pm/core/StereoRig.h"
+
+namespace pm {
+
+class UndistortMap
+{
+public:
+  //! Throws pm::Error if the camera's distortion is invalid (LensDistortion::validate).
+  explicit UndistortMap(const RigCamera &camera);
+  unsigned width() const { return m_w; }
+  unsigned height() const { return m_h; }
+  //! For each ideal pixel (row-major), the index of the nearest raw pixel, or -1 outside the raw image.
+  const std::vector<std::int32_t> &nearest() const { return m_nearest; }
+  /*!
+    The raw image \e raw resampled into the ideal image \e ideal (bilinear; black where the ideal
+    pixel falls off the raw image). Throws pm::Error if \e raw's size is not the camera's.
+  */
+  void undistort(const vpImage<vpRGBa> &raw, vpImage<vpRGBa> &ideal) const;
+  //! Fraction of the ideal image that the raw image covers.
+  double coverage() const;
+
+private:
+  unsigned m_w = 0, m_h = 0;
+  std::vector<float> m_mapU, m_mapV; //!< raw position of each ideal pixel
+  std::vector<std::int32_t> m_nearest;
+};
+
+} // namespace pm

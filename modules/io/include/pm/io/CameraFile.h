@@ -1,0 +1,42 @@
+#pragma once
+/*!
+  \file CameraFile.h
+  One camera's intrinsics and lens distortion from the files calibration tools write, the
+  format told by the content:
+  - ViSP's camera XML (vpXmlParserCamera): the model with distortion when the file has one
+    (k1 = kud), else the pinhole model; \e name picks the camera;
+  - OpenCV's cv::FileStorage (YAML or XML): camera_matrix and distortion_coefficients (4, 5, 8,
+    12 or 14), image_width and image_height if present (as cv::calibrateCamera's samples write);
+  - ROS camera_info YAML: camera_matrix and distortion_coefficients as {rows, cols, data},
+    distortion_model plumb_bob or rational_polynomial.
+
+      const pm::io::CameraIntrinsics c = pm::io::readCameraFile("left.yml", "left", 640, 480);
+      rig.left.cam = c.cam;  rig.left.distortion = c.distortion;
+*/
+#include <string>
+#include <visp3/core/vpCameraParameters.h>
+#include "pm/core/LensDistortion.h"
+#include "pm/core/StereoRig.h"
+
+namespace pm::io {
+
+struct CameraIntrinsics
+{
+  vpCameraParameters cam;     //!< px, py, u0, v0 (pinhole part)
+  LensDistortion distortion;  //!< OpenCV's model; none for a pinhole
+  unsigned width = 0, height = 0; //!< as the file gives them (0 if it does not)
+  std::string format;         //!< "visp-xml", "opencv", "ros"
+};
+
+/*!
+  Reads \e path. \e name selects the camera in a ViSP XML (ignored otherwise); \e w, \e h the
+  image size the camera must have (0: any). Throws pm::Error naming the file and what is wrong:
+  missing, unknown format, no such camera, a matrix of the wrong shape, a focal length not
+  positive, an image size that differs, a distortion that folds the image.
+*/
+CameraIntrinsics readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h);
+
+//! Writes \e camera's intrinsics and distortion as an OpenCV YAML file (cv::FileStorage). Throws pm::Error.
+void writeOpenCvCameraFile(const RigCamera &camera, const std::string &path);
+
+} // namespace pm::io

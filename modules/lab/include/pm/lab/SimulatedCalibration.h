@@ -1,0 +1,48 @@
+#pragma once
+/*!
+  \file SimulatedCalibration.h
+  The rig calibration in the lab: chessboard pairs rendered through a rig whose cameras have a
+  known lens distortion, and how far a calibration of them lands from that rig.
+
+      const pm::StereoRig truth = pm::lab::labRigWithLens(pm::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
+      const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 20, pm::lab::SimulatedCalibrationParams());
+      const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+      const pm::lab::CalibrationErrors e = pm::lab::compareRigs(c.rig, truth);
+*/
+#include <functional>
+#include <vector>
+#include "pm/calib/RigCalibration.h"
+
+namespace pm::lab {
+
+struct SimulatedCalibrationParams
+{
+  //! The lens of both cameras when no rig is given: strong barrel distortion, as OpenCV's sample cameras.
+  LensDistortion distortion{{-0.25, 0.08, 0.001, -0.0005, 0.0}};
+  double noiseSigma = 2.0;  //!< sensor noise (grey levels)
+  std::uint64_t seed = 1;   //!< the board's poses and the noise
+};
+
+//! The lab's rig (data/rig/pa10_stereo.json's geometry: 754 px, 640x480, 323 mm, toed in at 500 mm) with \e lens on both cameras.
+StereoRig labRigWithLens(const LensDistortion &lens);
+
+/*!
+  \e n stereo pairs of \e board seen by \e rig at random poses around 500 mm (spread so that the
+  corners cover the images, where the distortion is strongest). \e step is called after each pair.
+*/
+std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::ChessBoard &board, int n,
+                                                           const SimulatedCalibrationParams &params,
+                                                           const std::function<void()> &step = {});
+
+struct CalibrationErrors
+{
+  double baselineErrorMm = 0;      //!< |T| estimated minus true
+  double translationErrorMm = 0;   //!< |T_est - T_true|
+  double rotationErrorDeg = 0;     //!< between the estimated and true cLMcR rotations
+  double reprojectionRmsPx[2] = {0, 0}; //!< each camera: rms distance, over a grid of the raw image, between where the estimated and the true camera see the same ray
+};
+
+//! How far \e estimated is from \e truth (frame-free: cLMcR, and each camera's pixel-to-ray map).
+CalibrationErrors compareRigs(const StereoRig &estimated, const StereoRig &truth);
+
+} // namespace pm::lab

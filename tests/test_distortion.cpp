@@ -1,0 +1,471 @@
+// Lens distortion: the model against ViSP's and OpenCV's, the camera files that carry it, the
+// simulator that renders through it, the fitness that reads through it, and the rig calibration
+// (OpenCV's real stereo chessboard pairs when opencv-doc is installed; a known simulated rig).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <visp3/core/vpMeterPixelConversion.h>
+#include <visp3/core/vpXmlParserCamera.h>
+
+#include "TestSupport.h"
+#include "pm/calib/RigCalibration.h"
+#include "pm/core/Error.h"
+#include "pm/core/HuePlane.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/core/UndistortMap.h"
+#include "pm/io/CameraFile.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/RigFile.h"
+#include "pm/lab/SimulatedCalibration.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+#include "pm/sim/TargetShape.h"
+
+using pm::test::errorOf;
+using pm::test::runProgram;
+using pm::test::TempDir;
+
+namespace {
+
+const std::string kOpenCvData = "/usr/share/doc/opencv-doc/examples/data/";
+
+vpCameraParameters labCam()
+{
+  vpCameraParameters c;
+  c.initPersProjWithoutDistortion(754, 754, 320, 240);
+  return c;
+}
+
+const pm::LensDistortion kBarrel{{-0.25, 0.08, 0.001, -0.0005, 0.0}};
+
+} // namespace
+
+TEST(LensDistortion, DistortAndUndistortAreInverseOverTheImage)
+{
+  const vpCameraParameters cam = labCam();
+  kBarrel.validate(cam, 640, 480, "test");
+  std::vector<vpImagePoint> raw;
+  for (int v = 0; v <= 480; v += 40)
+    for (int u = 0; u <= 640; u += 40)
+      raw.emplace_back(v, u);
+  const auto ideal = kBarrel.undistort(cam, raw);
+  double worst = 0, moved = 0;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    worst = std::max(worst, vpImagePoint::distance(kBarrel.distort(cam, ideal[i]), raw[i]));
+    moved = std::max(moved, vpImagePoint::distance(ideal[i], raw[i]));
+  }
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_GT(moved, 20.0); // barrel: the corners' rays lie far outside where a pinhole puts them
+  const pm::LensDistortion none;
+  EXPECT_TRUE(none.isNone());
+  EXPECT_EQ(vpImagePoint::distance(none.distort(cam, vpImagePoint(10, 20)), vpImagePoint(10, 20)), 0.0);
+}
+
+TEST(LensDistortion, ViSPsModelIsK1)
+{
+  // ViSP's perspectiveProjWithDistortion: u = u0 + px x (1 + kud r^2); ours with k1 = kud must agree.
+  vpCameraParameters visp;
+  visp.initPersProjWithDistortion(754, 750, 322, 238, -0.21, 0.23);
+  vpCameraParameters pin;
+  pin.initPersProjWithoutDistortion(754, 750, 322, 238);
+  const pm::LensDistortion d{{-0.21, 0, 0, 0, 0}};
+  EXPECT_TRUE(d.isVispModel());
+  EXPECT_FALSE(kBarrel.isVispModel());
+  for (double x : {-0.4, -0.1, 0.0, 0.25})
+    for (double y : {-0.3, 0.05, 0.3}) {
+      double u = 0, v = 0;
+      vpMeterPixelConversion::convertPoint(visp, x, y, u, v);
+      const vpImagePoint ours = d.distort(pin, vpImagePoint(238 + 750 * y, 322 + 754 * x));
+      EXPECT_NEAR(ours.get_u(), u, 1e-9);
+      EXPECT_NEAR(ours.get_v(), v, 1e-9);
+    }
+}
+
+TEST(LensDistortion, ALensThatFoldsTheImageOrABadCountIsRefused)
+{
+  const vpCameraParameters cam = labCam();
+  // k1 = -0.6: the distorted radius peaks at r = 0.745 (0.497) before the corner (0.53): two rays per pixel.
+  EXPECT_NE(errorOf([&] { pm::LensDistortion{{-0.6, 0, 0, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("folds the image"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::LensDistortion{{-0.1, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("3 distortion coefficients"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::LensDistortion{{NAN, 0, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("not finite"),
+            std::string::npos);
+  vpCameraParameters small;
+  small.initPersProjWithoutDistortion(754, 754, 100, 100);
+  EXPECT_EQ(errorOf([&] { pm::LensDistortion{{-0.6, 0, 0, 0, 0}}.validate(small, 200, 200, "small"); }), ""); // inside its fold
+  pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  rig.right.distortion = pm::LensDistortion{{-0.6, 0, 0, 0, 0}};
+  EXPECT_NE(errorOf([&] { rig.validate(); }).find("camera 'right'"), std::string::npos);
+}
+
+TEST(UndistortMap, EachIdealPixelLooksWhereTheLensPutsIt)
+{
+  pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  const pm::UndistortMap map(rig.left);
+  const auto &idx = map.nearest();
+  for (unsigned v = 0; v < 480; v += 37)
+    for (unsigned u = 0; u < 640; u += 41) {
+      const vpImagePoint raw = kBarrel.distort(rig.left.cam, vpImagePoint(v, u));
+      const std::int32_t i = idx[static_cast<std::size_t>(v) * 640 + u];
+      ASSERT_GE(i, 0); // barrel: every ideal pixel is seen by the raw image
+      EXPECT_LE(std::fabs(static_cast<double>(i % 640) - raw.get_u()), 0.5 + 1e-3);
+      EXPECT_LE(std::fabs(static_cast<double>(i / 640) - raw.get_v()), 0.5 + 1e-3);
+    }
+  // A pinhole camera's map is the identity.
+  rig.right.distortion = pm::LensDistortion();
+  const pm::UndistortMap id(rig.right);
+  for (std::size_t i = 0; i < id.nearest().size(); i += 997)
+    EXPECT_EQ(id.nearest()[i], static_cast<std::int32_t>(i));
+  EXPECT_DOUBLE_EQ(id.coverage(), 1.0);
+}
+
+TEST(UndistortMap, TheSimulatorRendersThroughTheLensWhereItProjects)
+{
+  // A chessboard rendered by a distorted camera: its corners, found in the raw image and undistorted,
+  // lie where the pinhole camera projects the board's true corners.
+  const pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  pm::calib::ChessBoard board;
+  board.squareMm = board.marginMm = 25;
+  pm::sim::SceneParams sp;
+  sp.supersampling = 3;
+  sp.shadows = pm::sim::ShadowMode::Off;
+  const pm::sim::Scene scene(pm::sim::flatPrint(board.render(8.0), board.widthMm(), "board"), sp);
+  const vpHomogeneousMatrix hMb(0.09, 0.06, 0.47, 0.1, -0.15, 0.2); // off-centre: the lens bends its corners by pixels
+  vpImage<vpRGBa> I;
+  pm::sim::Rasterizer raster;
+  scene.render(raster, rig.left, hMb, 0, 0, I);
+  const auto raw = board.findCorners(I, "test");
+  const auto ideal = kBarrel.undistort(rig.left.cam, raw);
+  const vpHomogeneousMatrix cMb = rig.left.cMh() * hMb;
+  double s2 = 0, bend = 0;
+  for (int r = 0; r < board.innerRows; ++r)
+    for (int c = 0; c < board.innerCols; ++c) {
+      vpPoint P = board.corner(r, c);
+      P.track(cMb);
+      double u = 0, v = 0;
+      vpMeterPixelConversion::convertPoint(rig.left.cam, P.get_x(), P.get_y(), u, v);
+      const std::size_t k = static_cast<std::size_t>(r * board.innerCols + c);
+      s2 += vpImagePoint::sqrDistance(ideal[k], vpImagePoint(v, u));
+      bend = std::max(bend, vpImagePoint::distance(raw[k], vpImagePoint(v, u)));
+    }
+  const double rms = std::sqrt(s2 / (board.innerRows * board.innerCols));
+  EXPECT_LT(rms, 0.15);
+  EXPECT_GT(bend, 5.0); // the raw corners are pixels away from the pinhole's
+  // The chessboard's own pose with the lens: the rendered pose.
+  const pm::calib::BoardView view = board.find(I, rig.left.cam, rig.left.distortion, "test");
+  EXPECT_LT((view.cMb.getTranslationVector() - cMb.getTranslationVector()).frobeniusNorm() * 1e3, 0.5);
+  EXPECT_LT((cMb.inverse() * view.cMb).getThetaUVector().getTheta() * 180 / M_PI, 0.1);
+  // Without it, the pose is off.
+  const pm::calib::BoardView pinhole = board.find(I, rig.left.cam, "test");
+  EXPECT_GT((pinhole.cMb.getTranslationVector() - cMb.getTranslationVector()).frobeniusNorm() * 1e3, 3.0);
+}
+
+TEST(UndistortMap, TheFitnessReadsThroughTheLens)
+{
+  // C12 rendered by a distorted rig: F at the truth, read through the lens, equals the pinhole rig's F
+  // on its own images within a few per cent; read as if the lens were a pinhole, it is lower.
+  pm::sim::SceneParams quiet;
+  quiet.noiseSigma = 0; // the same noise at the same raw pixel would make the raw planes look alike
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"), quiet);
+  const pm::StereoRig pin = pm::lab::labRigWithLens(pm::LensDistortion());
+  const pm::StereoRig lens = pm::lab::labRigWithLens(pm::LensDistortion{{-0.3, 0.1, 0, 0, 0}});
+  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, pin);
+  const vpHomogeneousMatrix hMo(0.14, 0.08, 0.5, 0.1, 0.05, 0.3); // off-centre in both images, where the lens bends
+  const pm::Phi truth = sm.truth(hMo);
+  pm::StereoFitness fPin(pin, sm.build.model), fLens(lens, sm.build.model), fNaive(pin, sm.build.model);
+  const auto imPin = scene.renderStereo(pin, hMo, 0), imLens = scene.renderStereo(lens, hMo, 0);
+  fPin.setImages(imPin.left, imPin.right);
+  fLens.setImages(imLens.left, imLens.right);
+  fNaive.setImages(imLens.left, imLens.right);
+  EXPECT_NEAR(fLens.evaluate(truth), fPin.evaluate(truth), 0.05 * fPin.evaluate(truth));
+  // Where F peaks in x, y around the truth: through the lens, at the truth; reading the raw images as
+  // a pinhole's, off by the lens's bend (barrel: toward the image centre).
+  auto peak = [&](const pm::StereoFitness &f) {
+    double best = -1e9, bx = 0, by = 0;
+    for (int dx = -12; dx <= 12; ++dx)
+      for (int dy = -12; dy <= 12; ++dy) {
+        pm::Phi p = truth;
+        p.x += dx;
+        p.y += dy;
+        const double v = f.evaluate(p);
+        if (v > best)
+          best = v, bx = dx, by = dy;
+      }
+    return std::hypot(bx, by);
+  };
+  EXPECT_LE(peak(fLens), 1.5);
+  EXPECT_GE(peak(fNaive), 3.0);
+  // The drawn points land on the raw image where the lens puts them.
+  const auto pts = fLens.pointScores(truth, 0), flat = fPin.pointScores(truth, 0);
+  ASSERT_EQ(pts.size(), flat.size());
+  const vpImagePoint expect = lens.left.distortion.distort(lens.left.cam, vpImagePoint(flat[0].v, flat[0].u));
+  EXPECT_NEAR(pts[0].u, expect.get_u(), 1e-3);
+  EXPECT_NEAR(pts[0].v, expect.get_v(), 1e-3);
+}
+
+TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
+{
+  TempDir d("camfile");
+  // ViSP's XML with its distortion model.
+  vpCameraParameters visp;
+  visp.initPersProjWithDistortion(700, 701, 330, 250, -0.2, 0.22);
+  {
+    vpXmlParserCamera p;
+    ASSERT_EQ(p.save(visp, d.file("cam.xml"), "left", 640, 480), vpXmlParserCamera::SEQUENCE_OK);
+  }
+  const auto x = pm::io::readCameraFile(d.file("cam.xml"), "left", 640, 480);
+  EXPECT_EQ(x.format, "visp-xml");
+  EXPECT_DOUBLE_EQ(x.cam.get_px(), 700);
+  ASSERT_EQ(x.distortion.coefficients.size(), 5u);
+  EXPECT_DOUBLE_EQ(x.distortion.coefficients[0], -0.2);
+  // ROS camera_info.
+  pm::test::writeText(d.file("ros.yaml"), "image_width: 640\nimage_height: 480\ncamera_name: narrow_stereo/left\n"
+                                          "camera_matrix:\n  rows: 3\n  cols: 3\n  data: [535.9, 0, 342.3, 0, 536.1, 235.6, 0, 0, 1]\n"
+                                          "distortion_model: plumb_bob\ndistortion_coefficients:\n  rows: 1\n  cols: 5\n"
+                                          "  data: [-0.266, -0.0386, 0.00178, -0.00028, 0.238]\n");
+  const auto r = pm::io::readCameraFile(d.file("ros.yaml"), "left", 640, 480);
+  EXPECT_EQ(r.format, "ros");
+  EXPECT_DOUBLE_EQ(r.cam.get_py(), 536.1);
+  EXPECT_DOUBLE_EQ(r.distortion.coefficients[4], 0.238);
+  // OpenCV's own sample calibration file, when opencv-doc is installed.
+  if (std::filesystem::exists(kOpenCvData + "left_intrinsics.yml")) {
+    const auto o = pm::io::readCameraFile(kOpenCvData + "left_intrinsics.yml", "left", 640, 480);
+    EXPECT_EQ(o.format, "opencv");
+    EXPECT_NEAR(o.cam.get_px(), 535.9157, 1e-3);
+    EXPECT_NEAR(o.distortion.coefficients[0], -0.26637, 1e-5);
+  }
+  // Written by us, read back.
+  pm::RigCamera cam{"left", r.cam, 640, 480, vpHomogeneousMatrix(), r.distortion};
+  pm::io::writeOpenCvCameraFile(cam, d.file("back.yml"));
+  const auto b = pm::io::readCameraFile(d.file("back.yml"), "left", 640, 480);
+  EXPECT_EQ(b.distortion.coefficients, r.distortion.coefficients);
+  EXPECT_DOUBLE_EQ(b.cam.get_u0(), 342.3);
+}
+
+TEST(CameraFile, BadFilesAreClearErrors)
+{
+  TempDir d("camfile-bad");
+  const std::string head = "%YAML:1.0\n---\n";
+  const std::string K = "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ 500., 0., 320., 0., 500., 240., 0., 0., 1. ]\n";
+  struct Case { std::string text, expect; };
+  const Case cases[] = {
+      {"hello: 1\n", "not a camera file"},
+      {head + "image_width: 640\n", "no \"camera_matrix\""},
+      {head + "camera_matrix: !!opencv-matrix\n   rows: 2\n   cols: 2\n   dt: d\n   data: [ 1., 0., 0., 1. ]\n", "must be 3x3"},
+      {head + "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ -5., 0., 320., 0., 500., 240., 0., 0., 1. ]\n", "focal lengths must be positive"},
+      {head + K + "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 3\n   dt: d\n   data: [ 0.1, 0., 0. ]\n", "3 distortion coefficients"},
+      {head + K + "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 5\n   dt: d\n   data: [ -0.9, 0., 0., 0., 0. ]\n", "folds the image"},
+      {head + K + "image_width: 320\nimage_height: 240\n", "for 320x240 images"},
+      {"image_width: 640\ncamera_matrix:\n  rows: 3\n  cols: 3\n  data: [1, 2]\n", "holds 2 values"},
+      {"camera_matrix:\n  rows: 3\n  cols: 3\n  data: [500, 0, 320, 0, 500, 240, 0, 0, 1]\ndistortion_model: equidistant\n", "not supported"},
+      {head + "camera_matrix: [ 1, 2\n", "cannot be parsed"},
+  };
+  for (const Case &c : cases) {
+    pm::test::writeText(d.file("c.yml"), c.text);
+    const std::string e = errorOf([&] { pm::io::readCameraFile(d.file("c.yml"), "left", 640, 480); });
+    EXPECT_NE(e.find(c.expect), std::string::npos) << c.text << " -> " << e;
+    EXPECT_NE(e.find("c.yml"), std::string::npos) << e;
+  }
+  EXPECT_NE(errorOf([&] { pm::io::readCameraFile(d.file("none.yml"), "left", 640, 480); }).find("does not exist"), std::string::npos);
+}
+
+TEST(RigFile, ALensSurvivesTheRoundTripInOpenCvAndViSPFiles)
+{
+  TempDir d("rig-lens");
+  pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  pm::io::saveRig(rig, d.file("rig.json"), "cams.xml");
+  const pm::StereoRig back = pm::io::loadRig(d.file("rig.json"));
+  EXPECT_EQ(back.left.distortion.coefficients, kBarrel.coefficients);
+  EXPECT_EQ(back.right.distortion.coefficients, kBarrel.coefficients);
+  EXPECT_TRUE(std::filesystem::exists(d.file("rig_left.yml")));
+  const auto j = nlohmann::json::parse(pm::test::readText(d.file("rig.json")));
+  EXPECT_EQ(j["version"], 2);
+  // The XML holds ViSP's one-coefficient model fitted to the lens: within a pixel over the image.
+  const auto x = pm::io::readCameraFile(d.file("cams.xml"), "left", 640, 480);
+  double worst = 0;
+  for (int v = 0; v <= 480; v += 60)
+    for (int u = 0; u <= 640; u += 80)
+      worst = std::max(worst, vpImagePoint::distance(x.distortion.distort(x.cam, vpImagePoint(v, u)),
+                                                     kBarrel.distort(rig.left.cam, vpImagePoint(v, u))));
+  EXPECT_LT(worst, 2.0);
+  EXPECT_GT(worst, 0.0);
+  // A lens ViSP's model holds exactly stays in the XML alone (version 1).
+  rig.left.distortion = rig.right.distortion = pm::LensDistortion{{-0.2, 0, 0, 0, 0}};
+  pm::io::saveRig(rig, d.file("rig1.json"), "cams1.xml");
+  EXPECT_EQ(nlohmann::json::parse(pm::test::readText(d.file("rig1.json")))["version"], 1);
+  EXPECT_DOUBLE_EQ(pm::io::loadRig(d.file("rig1.json")).left.distortion.coefficients[0], -0.2);
+  // A pinhole rig is written as before: no distortion.
+  const pm::StereoRig lab = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  EXPECT_TRUE(lab.left.distortion.isNone());
+}
+
+TEST(RigCalibration, ASimulatedRigWithALensIsRecovered)
+{
+  pm::calib::ChessBoard board;
+  board.squareMm = board.marginMm = 25;
+  const pm::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
+  pm::lab::SimulatedCalibrationParams sp;
+  const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 60, sp);
+  const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+  const pm::lab::CalibrationErrors e = pm::lab::compareRigs(c.rig, truth);
+  EXPECT_LT(e.translationErrorMm, 0.5);
+  EXPECT_LT(std::fabs(e.baselineErrorMm), 0.5);
+  EXPECT_LT(e.rotationErrorDeg, 0.1);
+  EXPECT_LT(c.rmsStereoPx, 0.3);
+  EXPECT_LT(e.reprojectionRmsPx[0], 0.6); // over the whole image, corners included
+  EXPECT_LT(e.reprojectionRmsPx[1], 0.6);
+  EXPECT_GE(c.pairsUsed, 10);
+  EXPECT_GT(c.viewsUsed[0], c.pairsUsed); // views of one camera alone help its lens
+  for (const auto &p : c.pairs) {
+    if (!p.used)
+      EXPECT_NE(p.reason.find("not all found"), std::string::npos) << p.reason;
+  }
+}
+
+TEST(RigCalibration, TooFewUsableViewsSayWhichAndWhy)
+{
+  pm::calib::ChessBoard board;
+  const pm::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
+  pm::sim::SceneParams sp;
+  sp.shadows = pm::sim::ShadowMode::Off;
+  const pm::sim::Scene scene(pm::sim::flatPrint(board.render(8.0), board.widthMm(), "board"), sp);
+  const auto im = scene.renderStereo(truth, vpHomogeneousMatrix(0, 0, 0.5, 0.05, 0, 0), 0);
+  std::vector<pm::calib::StereoImagePair> pairs(1);
+  pairs[0].name = "good pair";
+  pairs[0].left = im.left;
+  pairs[0].right = im.right;
+  pm::calib::StereoImagePair blank;
+  blank.name = "blank pair";
+  blank.left = blank.right = vpImage<vpRGBa>(480, 640, vpRGBa(128, 128, 128));
+  pairs.push_back(blank);
+  pm::calib::StereoImagePair small = pairs[0];
+  small.name = "small pair";
+  small.right = vpImage<vpRGBa>(240, 320, vpRGBa(128, 128, 128));
+  pairs.push_back(small);
+  // A blurred pair: the board found, its edges too wide.
+  pm::calib::StereoImagePair blurred = pairs[0];
+  blurred.name = "blurred pair";
+  for (vpImage<vpRGBa> *I : {&blurred.left, &blurred.right}) {
+    cv::Mat m(static_cast<int>(I->getHeight()), static_cast<int>(I->getWidth()), CV_8UC4, I->bitmap);
+    cv::GaussianBlur(m, m, cv::Size(0, 0), 4.0);
+  }
+  pairs.push_back(blurred);
+  const std::string e = errorOf([&] { pm::calib::calibrateRig(pairs, board); });
+  EXPECT_NE(e.find("1 usable pair of 4"), std::string::npos) << e;
+  EXPECT_NE(e.find("blank pair: chessboard"), std::string::npos) << e;
+  EXPECT_NE(e.find("small pair: right image is 320x240"), std::string::npos) << e;
+  EXPECT_NE(e.find("blurred pair: blurred"), std::string::npos) << e;
+  EXPECT_NE(errorOf([&] { pm::calib::calibrateRig({}, board); }).find("no image pair"), std::string::npos);
+}
+
+TEST(RigCalibration, OpenCvsRealStereoPairsAsOpenCvCalibratesThem)
+{
+  if (!std::filesystem::exists(kOpenCvData + "left01.jpg"))
+    GTEST_SKIP() << "opencv-doc is not installed (apt-get install opencv-doc)";
+  // The reference: OpenCV's own pipeline on the same images, written out here.
+  const cv::Size ps(9, 6);
+  std::vector<std::vector<cv::Point2f>> L, R;
+  std::vector<std::vector<cv::Point3f>> O;
+  std::vector<pm::calib::StereoImagePair> pairs;
+  for (int i = 1; i <= 14; ++i) {
+    if (i == 10)
+      continue; // not in the package
+    char n[16];
+    std::snprintf(n, sizeof n, "%02d.jpg", i);
+    pm::calib::StereoImagePair p;
+    p.name = n;
+    p.left = pm::io::readColorImage(kOpenCvData + "left" + n);
+    p.right = pm::io::readColorImage(kOpenCvData + "right" + n);
+    pairs.push_back(p);
+    cv::Mat l = cv::imread(kOpenCvData + "left" + n, cv::IMREAD_GRAYSCALE), r = cv::imread(kOpenCvData + "right" + n, cv::IMREAD_GRAYSCALE);
+    std::vector<cv::Point2f> cl, cr;
+    ASSERT_TRUE(cv::findChessboardCorners(l, ps, cl, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE));
+    ASSERT_TRUE(cv::findChessboardCorners(r, ps, cr, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE));
+    const cv::TermCriteria tc(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 30, 0.01);
+    cv::cornerSubPix(l, cl, {11, 11}, {-1, -1}, tc);
+    cv::cornerSubPix(r, cr, {11, 11}, {-1, -1}, tc);
+    L.push_back(cl);
+    R.push_back(cr);
+    std::vector<cv::Point3f> o;
+    for (int y = 0; y < 6; ++y)
+      for (int x = 0; x < 9; ++x)
+        o.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.f);
+    O.push_back(o);
+  }
+  cv::Mat K1, D1, K2, D2, Rs, T, E, F;
+  std::vector<cv::Mat> rv, tv;
+  cv::calibrateCamera(O, L, {640, 480}, K1, D1, rv, tv);
+  cv::calibrateCamera(O, R, {640, 480}, K2, D2, rv, tv);
+  const double refRms = cv::stereoCalibrate(O, L, R, K1, D1, K2, D2, {640, 480}, Rs, T, E, F, cv::CALIB_FIX_INTRINSIC);
+
+  pm::calib::ChessBoard board;
+  board.innerRows = 6;
+  board.innerCols = 9;
+  board.squareMm = board.marginMm = 1;
+  const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+  EXPECT_EQ(c.pairsUsed, 13);
+  EXPECT_NEAR(c.rmsStereoPx, refRms, 0.1 * refRms);
+  EXPECT_NEAR(c.rmsStereoPx, 0.447, 0.0447); // the figure
+  EXPECT_NEAR(c.baselineMm, 3.345, 0.005 * 3.345);
+  EXPECT_NEAR(c.baselineMm, cv::norm(T), 0.005 * 3.345);
+  EXPECT_NEAR(c.rig.left.distortion.coefficients[0], -0.27, 0.03); // strong barrel
+  EXPECT_NEAR(c.rig.baseline() * 1e3, 3.345, 0.005 * 3.345);
+
+  // Written as a rig, its check on the same pairs agrees; a baseline 5 % longer does not.
+  TempDir d("cv-rig");
+  pm::io::saveRig(c.rig, d.file("rig.json"), "cameras.xml");
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    pm::io::writeImage(pairs[i].left, d.file("L_" + std::to_string(i) + ".png"));
+    pm::io::writeImage(pairs[i].right, d.file("R_" + std::to_string(i) + ".png"));
+  }
+  const std::string args = " --pattern chessboard --board 6,9,1 --tolerance-mm 0.05 --left-images " + d.file("L_%d.png") +
+                           " --right-images " + d.file("R_%d.png") + " --quiet --out " + d.file("check");
+  const auto ok = runProgram("pm-calib-baseline", "--rig " + d.file("rig.json") + args);
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  pm::StereoRig longer = c.rig;
+  longer.left.hMc = vpHomogeneousMatrix(longer.left.hMc.getTranslationVector() * 1.05, longer.left.hMc.getRotationMatrix());
+  longer.right.hMc = vpHomogeneousMatrix(longer.right.hMc.getTranslationVector() * 1.05, longer.right.hMc.getRotationMatrix());
+  pm::io::saveRig(longer, d.file("longer.json"), "longer.xml");
+  const auto bad = runProgram("pm-calib-baseline", "--rig " + d.file("longer.json") + args);
+  EXPECT_EQ(bad.status, 3) << bad.err;
+  // The same rig read as a pinhole (the lens dropped) does not agree: the false alarm the lens removes.
+  pm::StereoRig pin = c.rig;
+  pin.left.distortion = pin.right.distortion = pm::LensDistortion();
+  pm::io::saveRig(pin, d.file("pin.json"), "pin.xml");
+  EXPECT_EQ(runProgram("pm-calib-baseline", "--rig " + d.file("pin.json") + args).status, 3);
+}
+
+TEST(PmCalibrateRig, WritesTheRigItsReportAndRefusesBadInput)
+{
+  TempDir d("calibrate-rig");
+  const auto r = runProgram("pm-calibrate-rig", "--simulate 16 --board 6,9,25 --quiet --out " + d.file("o"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char *f : {"rig.json", "cameras.xml", "rig_left.yml", "rig_right.yml", "coverage.png", "summary.json"})
+    EXPECT_TRUE(std::filesystem::exists(d.file(std::string("o/") + f))) << f;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("o/summary.json")));
+  EXPECT_LT(s["truth"]["rotation_error_deg"].get<double>(), 0.3);
+  const pm::StereoRig rig = pm::io::loadRig(d.file("o/rig.json"));
+  EXPECT_FALSE(rig.left.distortion.isNone());
+  EXPECT_NEAR(rig.baseline() * 1e3, 323, 2);
+  // Bad input: no images, unequal lists, a missing file, too few views; nothing written.
+  EXPECT_EQ(runProgram("pm-calibrate-rig", "--out " + d.file("x")).status, 2);
+  const auto unequal = runProgram("pm-calibrate-rig", "--left a.png b.png --right a.png --out " + d.file("x"));
+  EXPECT_EQ(unequal.status, 2);
+  EXPECT_NE(unequal.err.find("2 left images but 1 right"), std::string::npos) << unequal.err;
+  const auto missing = runProgram("pm-calibrate-rig", "--left " + d.file("nope.png") + " --right " + d.file("nope.png") + " --out " + d.file("x"));
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_EQ(missing.err.rfind("error: ", 0), 0u) << missing.err;
+  pm::io::writeImage(vpImage<vpRGBa>(480, 640, vpRGBa(90, 90, 90)), d.file("blank.png"));
+  const auto few = runProgram("pm-calibrate-rig", "--left " + d.file("blank.png") + " --right " + d.file("blank.png") + " --out " + d.file("x"));
+  EXPECT_EQ(few.status, 1);
+  EXPECT_NE(few.err.find("0 usable pairs of 1"), std::string::npos) << few.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("x")));
+}
