@@ -9,9 +9,12 @@
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
 #include "pm/app/Overlay.h"
+#include "pm/capture/VideoCaptureSource.h"
 #include "pm/core/Error.h"
 #include "pm/core/PhotoModelBuilder.h"
 #include "pm/core/StereoPhotoModelBuilder.h"
+#include "pm/core/UndistortMap.h"
+#include "pm/io/CameraFile.h"
 #include "pm/io/CameraXml.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
@@ -35,7 +38,8 @@ int main(int argc, char **argv)
                "pm-make-model"};
   app.option_defaults()->always_capture_default();
   std::string out, target = "C12", background, photo, texture, intrinsics, cameraName = "left";
-  std::string leftBg, rightBg, leftPhoto, rightPhoto;
+  std::string leftBg, rightBg, leftPhoto, rightPhoto, leftSource, rightSource;
+  long backgroundFrame = 0, photoFrame = -1;
   bool stereo = false;
   pm::StereoModelParams smp;
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
@@ -62,6 +66,16 @@ int main(int argc, char **argv)
         o->needs(q);
     o->excludes(optBg)->excludes(optTarget)->excludes(optTex);
   }
+  auto *optLS = app.add_option("--left-source", leftSource, "stereo, live: the left camera through OpenCV's VideoCapture "
+                                                           "(device index, V4L2 path, video file or GStreamer pipeline)");
+  auto *optRS = app.add_option("--right-source", rightSource, "stereo, live: the right camera, the same way");
+  app.add_option("--background-frame", backgroundFrame, "live: the pair (counted from 0) that shows the backdrop alone")
+      ->check(CLI::Range(0L, 100000000L))->needs(optLS);
+  app.add_option("--photo-frame", photoFrame, "live: the pair that shows the target (later than the background's; "
+                                              "without it, on a terminal, press Enter when the target is in place)")
+      ->check(CLI::Range(0L, 100000000L))->needs(optLS);
+  optLS->needs(optRS)->excludes(optLB)->excludes(optTarget)->excludes(optTex);
+  optRS->needs(optLS);
   auto *optStereo = app.add_flag("--stereo", stereo, "simulator: the stereo model (the rig's two cameras, depth per point)");
   optStereo->excludes(optBg);
   app.add_option("--backdrop-mm", smp.backdropMm, "stereo: the backdrop's distance from the left camera (0: measured "
@@ -74,7 +88,7 @@ int main(int argc, char **argv)
   app.add_option("--depth-mm", depthMm, "with --texture: relief of the default dome (mm, 0 = flat)")->check(CLI::NonNegativeNumber);
   app.add_option("--distance-mm", distanceMm, "distance from the camera to the target when the photo was taken (mm)")
       ->check(CLI::PositiveNumber);
-  auto *optXml = app.add_option("--intrinsics", intrinsics, "ViSP camera XML of the photo camera (photos mode)");
+  auto *optXml = app.add_option("--intrinsics", intrinsics, "intrinsics file of the photo camera (photos mode): ViSP XML, OpenCV YAML/XML or ROS camera_info; its lens distortion is corrected");
   app.add_option("--camera-name", cameraName, "camera name in --intrinsics")->needs(optXml);
   app.add_option("--rig", rigPath, "stereo rig; its left camera takes the photos when --intrinsics is not given");
   pm::app::addModelOptions(app, mp);
@@ -90,12 +104,30 @@ int main(int argc, char **argv)
     std::vector<pm::ModelPoint> dropped;
     double backdropMm = 0;
     smp.photo = mp;
-    if (!leftBg.empty()) {
+    if (!leftBg.empty() || !leftSource.empty()) {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
-      vpImage<vpRGBa> bgR = pm::io::readColorImage(rightBg), tgR = pm::io::readColorImage(rightPhoto);
-      bg = pm::io::readColorImage(leftBg);
-      tg = pm::io::readColorImage(leftPhoto);
+      vpImage<vpRGBa> bgR, tgR;
+      if (!leftSource.empty()) {
+        pm::capture::VideoCaptureSource src(leftSource, rightSource);
+        const pm::capture::ModelPairs p = pm::capture::grabModelPairs(src, backgroundFrame, photoFrame);
+        bg = p.background.left;
+        bgR = p.background.right;
+        tg = p.photo.left;
+        tgR = p.photo.right;
+        leftPhoto = leftSource;
+        rightPhoto = rightSource;
+      } else {
+        bgR = pm::io::readColorImage(rightBg);
+        tgR = pm::io::readColorImage(rightPhoto);
+        bg = pm::io::readColorImage(leftBg);
+        tg = pm::io::readColorImage(leftPhoto);
+      }
       pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bg, bgR, tg, tgR, smp);
+      if (!rig.left.distortion.isNone()) { // the region and depths are the ideal image's: draw on it
+        vpImage<vpRGBa> u;
+        pm::UndistortMap(rig.left).undistort(tg, u);
+        tg = u;
+      }
       build.model = std::move(b.model);
       build.region = std::move(b.regionLeft);
       depth = std::move(b.depthLeft);
@@ -110,10 +142,22 @@ int main(int argc, char **argv)
                         std::to_string(bg.getHeight()) + " but the target photo '" + photo + "' is " +
                         std::to_string(tg.getWidth()) + "x" + std::to_string(tg.getHeight()) +
                         "; take both with the same camera at the same size");
-      const vpCameraParameters cam = intrinsics.empty()
-                                         ? pm::io::loadRig(rigPath).left.cam
-                                         : pm::io::readCameraXml(intrinsics, cameraName, bg.getWidth(), bg.getHeight());
-      build = pm::buildPhotoModel(bg, tg, cam, distanceMm, mp);
+      pm::RigCamera cam;
+      if (intrinsics.empty()) {
+        cam = pm::io::loadRig(rigPath).left;
+      } else {
+        const pm::io::CameraIntrinsics in = pm::io::readCameraFile(intrinsics, cameraName, bg.getWidth(), bg.getHeight());
+        cam = {cameraName, in.cam, bg.getWidth(), bg.getHeight(), vpHomogeneousMatrix(), in.distortion};
+      }
+      if (!cam.distortion.isNone()) { // the lens corrected first: the model is the ideal camera's
+        const pm::UndistortMap map(cam);
+        vpImage<vpRGBa> u;
+        map.undistort(bg, u);
+        bg = u;
+        map.undistort(tg, u);
+        tg = u;
+      }
+      build = pm::buildPhotoModel(bg, tg, cam.cam, distanceMm, mp);
       source = "photos " + background + " + " + photo;
     } else {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
@@ -131,6 +175,11 @@ int main(int argc, char **argv)
                  : pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
       bg = std::move(sm.background);
       tg = std::move(sm.photo);
+      if (stereo && !rig.left.distortion.isNone()) {
+        vpImage<vpRGBa> u;
+        pm::UndistortMap(rig.left).undistort(tg, u);
+        tg = u;
+      }
       build = std::move(sm.build);
       depth = std::move(sm.depth);
       dropped = std::move(sm.dropped);

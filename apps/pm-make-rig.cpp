@@ -1,6 +1,7 @@
 //! pm-make-rig: writes a symmetric stereo rig (rig JSON + ViSP camera XML).
 #include <cmath>
 #include <iostream>
+#include <vector>
 #include <sstream>
 
 #include "pm/app/App.h"
@@ -11,7 +12,7 @@
 
 int main(int argc, char **argv)
 {
-  CLI::App app{"Writes a symmetric stereo rig: two identical pinhole cameras, the baseline along the hand's x "
+  CLI::App app{"Writes a symmetric stereo rig: two identical cameras (pinhole, or with the lens of --distortion), the baseline along the hand's x "
                "axis, each toed in toward the hand's z axis. Defaults: the lab's PA-10 rig (Sony FCB-IX11A at "
                "640x480, 323 mm baseline, converging 500 mm ahead).",
                "pm-make-rig"};
@@ -33,6 +34,9 @@ int main(int argc, char **argv)
   app.add_option("--toe-in-deg", toeInDeg, "toe-in angle of each camera instead (0: parallel cameras)")
       ->excludes(conv)
       ->check(CLI::Range(-45.0, 45.0));
+  std::vector<double> lens;
+  app.add_option("--distortion", lens, "both cameras' lens distortion, OpenCV's k1 k2 p1 p2 [k3 ...] (the rig then "
+                                       "also gets <name>_left.yml and <name>_right.yml)")->expected(4, 14);
   bool quiet = false;
   app.add_flag("--quiet", quiet, "print nothing on success");
 
@@ -43,7 +47,9 @@ int main(int argc, char **argv)
                                             : toeInDeg * M_PI / 180.0;
     if (std::isnan(toeInDeg) && !(convergeMm > 0))
       throw pm::Error("--converge-mm must be positive");
-    const pm::StereoRig rig = pm::StereoRig::symmetric(cam, width, height, baselineMm * 1e-3, toe);
+    pm::StereoRig rig = pm::StereoRig::symmetric(cam, width, height, baselineMm * 1e-3, toe);
+    rig.left.distortion.coefficients = rig.right.distortion.coefficients = lens;
+    rig.validate();
     pm::io::StagedFiles files(out); // creates the folder
     const std::string json = files.finalPath(name + ".json");
     std::ostringstream desc;

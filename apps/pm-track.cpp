@@ -18,7 +18,10 @@
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
 #include "pm/app/Overlay.h"
+#include "pm/app/LiveView.h"
 #include "pm/app/Progress.h"
+#include "pm/capture/ImageSequenceSource.h"
+#include "pm/capture/VideoCaptureSource.h"
 #include "pm/app/TimePlot.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
@@ -60,7 +63,9 @@ int main(int argc, char **argv)
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json"), leftPattern, rightPattern, modelPath, truthPath;
   double holdS = 1.5, moveS = 1.0, fps = 30, durationS = 0;
   int firstFrame = 0, steps = 0;
-  bool quiet = false;
+  bool quiet = false, display = false;
+  std::string leftSource, rightSource;
+  pm::capture::VideoCaptureParams vcp;
   pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
@@ -75,9 +80,19 @@ int main(int argc, char **argv)
   auto *optR = app.add_option("--right-images", rightPattern, "recorded sequence: right images, printf pattern");
   auto *optM = app.add_option("--model", modelPath, "recorded sequence: photo-model file");
   auto *optT = app.add_option("--truth", truthPath, "recorded sequence: ground truth, rows frame,x,y,z,e1,e2,e3");
+  auto *optLS = app.add_option("--left-source", leftSource, "live: the left camera through OpenCV's VideoCapture: a device "
+                                                           "index, a V4L2 path, a video file or a GStreamer pipeline");
+  auto *optRS = app.add_option("--right-source", rightSource, "live: the right camera, the same way");
+  app.add_option("--max-skew-ms", vcp.maxSkewMs, "live: largest time difference of a left and a right frame paired")
+      ->check(CLI::NonNegativeNumber)->needs(optLS);
+  app.add_option("--stall-s", vcp.stallTimeoutS, "live: a camera silent this long is an error")->check(CLI::PositiveNumber)->needs(optLS);
+  optLS->needs(optRS)->needs(optM)->excludes(optTarget)->excludes(optL);
+  optRS->needs(optLS);
+  app.add_flag("--display", display, "show both views with the model, the state and the frame time in a ViSP window "
+                                     "(vpDisplayX; its last picture, read back from the X server, into display.png); "
+                                     "without it, or without an X display, headless");
   optL->needs(optR)->needs(optM)->excludes(optTarget);
   optR->needs(optL);
-  optM->needs(optL);
   optT->needs(optL);
   app.add_option("--first-frame", firstFrame, "recorded sequence: index of the first frame")->check(CLI::Range(0, 100000000));
   app.add_option("--rig", rigPath, "stereo rig file");
@@ -90,8 +105,9 @@ int main(int argc, char **argv)
   return pm::app::run(app, argc, argv, [&] {
     const pm::TrackerParams tp = trackerOptions.resolve();
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
-    const bool recorded = !leftPattern.empty();
-    if (recorded) { // check both patterns before anything else
+    const bool live = !leftSource.empty();
+    const bool recorded = !leftPattern.empty() || live;
+    if (!leftPattern.empty()) { // check both patterns before anything else
       pm::app::frameFileName(leftPattern, 0);
       pm::app::frameFileName(rightPattern, 0);
     }
@@ -101,6 +117,7 @@ int main(int argc, char **argv)
     std::unique_ptr<pm::sim::Trajectory> trajectory;
     vpHomogeneousMatrix oMm;
     std::map<int, pm::Phi> truthByFrame;
+    std::unique_ptr<pm::capture::StereoSource> input; // recorded or live pairs (the simulator renders its own)
     std::string source;
     int nFrames = 0;
     if (recorded) {
@@ -108,16 +125,18 @@ int main(int argc, char **argv)
       if (!truthPath.empty())
         for (const auto &[frame, pose] : pm::io::readPoseTable(truthPath, "frame"))
           truthByFrame[frame] = pose;
-      // The sequence runs while either image of a frame exists.
-      auto exists = [](const std::string &f) { return std::filesystem::exists(f); };
-      while (exists(pm::app::frameFileName(leftPattern, firstFrame + nFrames)) || exists(pm::app::frameFileName(rightPattern, firstFrame + nFrames)))
-        ++nFrames;
-      if (nFrames == 0)
-        throw pm::Error("the sequence is empty: no frame " + pm::app::frameFileName(leftPattern, firstFrame) + " nor " +
-                        pm::app::frameFileName(rightPattern, firstFrame));
-      if (durationS > 0)
-        nFrames = std::min(nFrames, static_cast<int>(std::floor(durationS * fps)) + 1);
-      source = "recorded sequence " + leftPattern + " + " + rightPattern;
+      if (live) {
+        vcp.maxPairs = durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0;
+        input = std::make_unique<pm::capture::VideoCaptureSource>(leftSource, rightSource, vcp);
+        nFrames = static_cast<int>(vcp.maxPairs);
+      } else {
+        auto seq = std::make_unique<pm::capture::ImageSequenceSource>(
+            leftPattern, rightPattern, firstFrame, fps, rig.left.width, rig.left.height,
+            durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0);
+        nFrames = static_cast<int>(seq->length());
+        input = std::move(seq);
+      }
+      source = input->describe();
     } else {
       std::vector<pm::Phi> w;
       for (const auto &row : pm::io::readPoseTable(trajectoryPath, "step"))
@@ -139,31 +158,32 @@ int main(int argc, char **argv)
     tracker.initialize(); // no initial pose: a random population
     std::vector<FrameRecord> rec;
     rec.reserve(static_cast<std::size_t>(nFrames));
-    int unreadable = 0;
-    std::vector<std::string> unreadableList;
     vpImage<vpRGBa> firstL, firstR, lastL, lastR;
-    pm::app::Progress progress("tracking", static_cast<std::size_t>(nFrames), quiet);
-    for (int k = 0; k < nFrames; ++k) {
+    pm::app::Progress progress("tracking", static_cast<std::size_t>(nFrames), quiet || nFrames <= 0);
+    pm::app::LiveView view;
+    if (display)
+      view.open("pm-track: " + source);
+    pm::capture::StereoFrame sf;
+    for (int k = 0; input || k < nFrames; ++k) {
       FrameRecord f;
       f.t = k / fps;
       vpImage<vpRGBa> IL, IR;
-      if (recorded) {
-        const int idx = firstFrame + k;
-        try {
-          IL = pm::io::readColorImage(pm::app::frameFileName(leftPattern, idx));
-          IR = pm::io::readColorImage(pm::app::frameFileName(rightPattern, idx));
-          if (IL.getWidth() != rig.left.width || IL.getHeight() != rig.left.height || IR.getWidth() != rig.right.width ||
-              IR.getHeight() != rig.right.height)
-            throw pm::Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");
-        } catch (const pm::Error &e) {
-          ++unreadable;
-          unreadableList.push_back(e.what());
+      if (input) {
+        const long skippedBefore = input->stats().skipped;
+        if (!input->next(sf))
+          break;
+        for (long s2 = skippedBefore; s2 < input->stats().skipped; ++s2) {
           if (!quiet)
-            std::cerr << "warning: frame " << idx << " skipped: " << e.what() << std::endl;
+            std::cerr << "warning: " << input->stats().problems[static_cast<std::size_t>(s2)] << " (skipped)" << std::endl;
           progress.step();
-          continue;
         }
-        const auto it = truthByFrame.find(idx);
+        if (sf.left.getWidth() != rig.left.width || sf.left.getHeight() != rig.left.height)
+          throw pm::Error("the cameras deliver " + std::to_string(sf.left.getWidth()) + "x" + std::to_string(sf.left.getHeight()) +
+                          " images but the rig's are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
+        IL = std::move(sf.left);
+        IR = std::move(sf.right);
+        f.t = sf.timeS;
+        const auto it = truthByFrame.find(static_cast<int>(sf.index));
         if (it != truthByFrame.end()) {
           f.haveTruth = true;
           f.truth = it->second;
@@ -187,9 +207,20 @@ int main(int argc, char **argv)
       lastL = IL;
       lastR = IR;
       rec.push_back(f);
+      if (display) {
+        std::ostringstream status;
+        status << std::fixed << std::setprecision(2) << pm::toString(f.r.state) << ", q " << f.r.quality << ", "
+               << std::setprecision(1) << f.r.computeMs << " ms, frame " << k;
+        view.show(IL, IR, tracker.pointScores(0), tracker.pointScores(1), status.str());
+      }
       progress.step();
     }
     progress.finish();
+    const int unreadable = input ? static_cast<int>(input->stats().skipped) : 0;
+    std::vector<std::string> unreadableList;
+    if (input)
+      for (long i = 0; i < unreadable; ++i)
+        unreadableList.push_back(input->stats().problems[static_cast<std::size_t>(i)]);
     if (rec.empty())
       throw pm::Error("no frame of the sequence could be read (" + std::to_string(unreadable) + " unreadable)");
 
@@ -327,6 +358,16 @@ int main(int argc, char **argv)
                            {"mean_evaluations_per_frame", static_cast<double>(evals) / static_cast<double>(rec.size())},
                            {"states", states},
                            {"tracker", nlohmann::json::parse(pm::io::trackerConfigToJson(tp))}};
+    if (view.isOpen())
+      view.capture(files.stage("display.png"));
+    if (live) {
+      const pm::capture::SourceStats &st = input->stats();
+      summary["capture"] = {{"pairs", st.pairs},
+                            {"frames_read", {st.framesRead[0], st.framesRead[1]}},
+                            {"unpaired", {st.unpaired[0], st.unpaired[1]}},
+                            {"largest_skew_ms", st.maxSkewMs},
+                            {"notes", st.problems}};
+    }
     pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
     files.commit();
     if (!quiet) {

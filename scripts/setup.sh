@@ -6,7 +6,7 @@ PM_DEBIAN_PACKAGES=(build-essential cmake ninja-build pkg-config libvisp-dev lib
 
 # Only for the tests: ViSP's images (the AprilTag benchmark test is skipped without them) and OpenCV's
 # sample data (real stereo chessboard pairs and a calibration file; their tests are skipped without them).
-PM_TEST_PACKAGES=(visp-images-data opencv-doc)
+PM_TEST_PACKAGES=(visp-images-data opencv-doc xvfb)
 
 # Only for the fuzz targets (scripts/fuzz.sh): clang, its libFuzzer runtime, its OpenMP.
 PM_FUZZ_PACKAGES=(clang libclang-rt-14-dev libomp-dev)

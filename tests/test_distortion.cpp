@@ -325,8 +325,9 @@ TEST(RigCalibration, ASimulatedRigWithALensIsRecovered)
   EXPECT_GE(c.pairsUsed, 10);
   EXPECT_GT(c.viewsUsed[0], c.pairsUsed); // views of one camera alone help its lens
   for (const auto &p : c.pairs) {
-    if (!p.used)
+    if (!p.used) {
       EXPECT_NE(p.reason.find("not all found"), std::string::npos) << p.reason;
+    }
   }
 }
 

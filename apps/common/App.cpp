@@ -61,42 +61,6 @@ std::string dataDir()
   return "data";
 }
 
-/*!
-  The file name of frame \e index from a pattern with one printf-style integer field ("%d" or
-  "%0Nd"; "%%" is a literal %). Throws Error for any other pattern (never passed to printf).
-*/
-std::string frameFileName(const std::string &pattern, int index)
-{
-  std::string out;
-  int fields = 0;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') {
-      out += pattern[i];
-      continue;
-    }
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      out += '%';
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    int width = 0;
-    bool zero = j < pattern.size() && pattern[j] == '0';
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
-      width = width * 10 + (pattern[j++] - '0');
-    if (j >= pattern.size() || pattern[j] != 'd' || ++fields > 1)
-      throw Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
-    std::string num = std::to_string(index);
-    if (static_cast<int>(num.size()) < width)
-      num.insert(0, static_cast<std::size_t>(width) - num.size(), zero ? '0' : ' ');
-    out += num;
-    i = j;
-  }
-  if (fields != 1)
-    throw Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
-  return out;
-}
-
 std::string dataPath(const std::string &relative) { return dataDir() + "/" + relative; }
 
 std::vector<double> parseNumbers(const std::string &text, std::size_t n, const std::string &what)

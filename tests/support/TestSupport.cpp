@@ -45,9 +45,13 @@ void writeText(const std::string &path, const std::string &text)
 
 RunResult runProgram(const std::string &name, const std::string &args)
 {
+  return runCommand(std::string(PM_TEST_BIN_DIR) + "/" + name + " " + args);
+}
+
+RunResult runCommand(const std::string &command)
+{
   TempDir tmp("run");
-  const std::string cmd = std::string(PM_TEST_BIN_DIR) + "/" + name + " " + args + " > " + tmp.file("out") + " 2> " +
-                          tmp.file("err") + " < /dev/null";
+  const std::string cmd = command + " > " + tmp.file("out") + " 2> " + tmp.file("err") + " < /dev/null";
   const int raw = std::system(cmd.c_str());
   RunResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + (WIFSIGNALED(raw) ? WTERMSIG(raw) : 0);

@@ -32,6 +32,8 @@ struct RunResult
 
 //! Runs program \e name of the build (e.g. "pm-make-model") with \e args (shell words).
 RunResult runProgram(const std::string &name, const std::string &args);
+//! Runs a shell command line (e.g. "xvfb-run -a /path/pm-track ...").
+RunResult runCommand(const std::string &command);
 std::string dataPath(const std::string &relative);
 std::string readText(const std::string &path);
 void writeText(const std::string &path, const std::string &text);

@@ -54,9 +54,9 @@ void LensDistortion::validate(const vpCameraParameters &cam, unsigned w, unsigne
     const double rd = radial(coefficients, r);
     if (!(rd > prev)) {
       std::ostringstream os;
-      os << who << ": the lens distortion (" << describe() << ") folds the image: the distorted radius stops growing at "
-         << std::lround(r * cam.get_px()) << " px from the centre, inside the image (its corner is at "
-         << std::lround(rc * cam.get_px()) << " px); the coefficients do not describe this camera";
+      os << who << ": the lens distortion (" << describe() << ") folds the image: rays farther out land back inside "
+         << std::lround(prev * cam.get_px()) << " px from the centre, short of the image's corner at "
+         << std::lround(rc * cam.get_px()) << " px; the coefficients do not describe this camera";
       throw Error(os.str());
     }
     if (rd >= rc)

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pm/core/Error.h"
+#include "pm/core/UndistortMap.h"
 #include "pm/core/Hue.h"
 
 namespace pm {
@@ -233,6 +234,18 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   checkSize(bgR, rig.right, "right background photo");
   checkSize(L, rig.left, "left photo");
   checkSize(R, rig.right, "right photo");
+  if (!rig.left.distortion.isNone() || !rig.right.distortion.isNone()) {
+    // A lens: the four photos undistorted once (bilinear), then built as a pinhole rig's.
+    StereoRig ideal = rig;
+    ideal.left.distortion = ideal.right.distortion = LensDistortion();
+    const UndistortMap mapL(rig.left), mapR(rig.right);
+    vpImage<vpRGBa> u[4];
+    mapL.undistort(bgL, u[0]);
+    mapR.undistort(bgR, u[1]);
+    mapL.undistort(L, u[2]);
+    mapR.undistort(R, u[3]);
+    return buildStereoPhotoModel(ideal, u[0], u[1], u[2], u[3], params);
+  }
 
   StereoPhotoModelBuild out;
   PhotoModelBuild left = viewRegion(bgL, L, rig.left, params);

@@ -33,6 +33,13 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const Ster
   scene.render(r, rig.left, hMo, 0, 4, s.background, false);
   scene.render(r, rig.right, hMo, 0, 5, s.backgroundRight, false);
   scene.render(r, rig.left, hMo, 0, 6, s.photo, true);
+  if (!rig.left.distortion.isNone()) {
+    // The model's pixels are the ideal image's: the true depth of that image (a pinhole render).
+    RigCamera ideal = rig.left;
+    ideal.distortion = LensDistortion();
+    vpImage<vpRGBa> unused;
+    scene.render(r, ideal, hMo, 0, 6, unused, true);
+  }
   // The toy's true depth at each left pixel, from the renderer's depth buffer (id 2: the toy).
   const vpHomogeneousMatrix hMc = rig.left.hMc;
   const vpCameraParameters &c = rig.left.cam;

@@ -10,6 +10,8 @@
 #include <functional>
 #include <string>
 
+#include "pm/capture/ImageSequenceSource.h"
+
 #include <CLI/CLI.hpp>
 
 namespace pm::app {
@@ -22,11 +24,8 @@ std::string dataDir();
 //! dataDir() + "/" + relative.
 std::string dataPath(const std::string &relative);
 
-/*!
-  The file name of frame \e index from a pattern with one printf-style integer field ("%d" or
-  "%0Nd"; "%%" is a literal %). Throws pm::Error for any other pattern (never passed to printf).
-*/
-std::string frameFileName(const std::string &pattern, int index);
+//! The file name of frame \e index from a printf-style pattern (pm::capture::frameFileName).
+using capture::frameFileName;
 
 //! Parses "a,b,c,..." into exactly \e n numbers; throws CLI::ValidationError otherwise.
 std::vector<double> parseNumbers(const std::string &text, std::size_t n, const std::string &what);

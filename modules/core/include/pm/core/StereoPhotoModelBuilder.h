@@ -77,6 +77,8 @@ struct StereoPhotoModelBuild
   whose size differs from the rig's cameras, a background pair that does not match the photo
   pair, the target missing from (or cut by) one view, a backdrop that cannot be matched (give
   \e backdropMm), too little texture to match.
+  A rig whose cameras have lens distortion: the four photos are undistorted first (UndistortMap),
+  and regionLeft, regionRight and depthLeft are those of the left camera's ideal (undistorted) image.
 */
 StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL,
                                             const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,

@@ -1,0 +1,63 @@
+#include "pm/capture/StereoSource.h"
+
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "pm/core/Error.h"
+
+namespace pm::capture {
+
+std::string SourceStats::describe() const
+{
+  std::ostringstream os;
+  os << pairs << " pairs";
+  if (framesRead[0] || framesRead[1])
+    os << " (frames read: " << framesRead[0] << " left, " << framesRead[1] << " right; unpaired " << unpaired[0]
+       << " left, " << unpaired[1] << " right; largest skew " << maxSkewMs << " ms)";
+  if (skipped)
+    os << ", " << skipped << " skipped";
+  return os.str();
+}
+
+namespace {
+//! Reads up to pair \e index (or, with \e fresh, \e fresh more pairs) into \e f.
+void readUntil(StereoSource &source, long index, StereoFrame &f, const char *what)
+{
+  do {
+    if (!source.next(f))
+      throw Error("the source ended at pair " + std::to_string(source.stats().pairs) + ", before the " + what + " pair (" +
+                  std::to_string(index) + ")");
+  } while (f.index < index);
+}
+} // namespace
+
+ModelPairs grabModelPairs(StereoSource &source, long backgroundIndex, long photoIndex)
+{
+  ModelPairs p;
+  if (photoIndex >= 0) {
+    if (photoIndex <= backgroundIndex)
+      throw Error("the photo pair (" + std::to_string(photoIndex) + ") must come after the background pair (" +
+                  std::to_string(backgroundIndex) + ")");
+    readUntil(source, backgroundIndex, p.background, "background");
+    readUntil(source, photoIndex, p.photo, "photo");
+    return p;
+  }
+  if (!::isatty(STDIN_FILENO))
+    throw Error("no --photo-frame given and no terminal to ask on: give --background-frame and --photo-frame");
+  const auto ask = [&](const char *prompt, StereoFrame &f) {
+    std::cerr << prompt << std::flush;
+    std::string line;
+    std::getline(std::cin, line);
+    // The freshest pair: skip what the cameras buffered while waiting.
+    const long from = source.stats().pairs;
+    readUntil(source, from + 4, f, "requested");
+  };
+  ask("Only the backdrop in view of both cameras? Press Enter. ", p.background);
+  ask("Now place the target (same hand pose) and press Enter. ", p.photo);
+  return p;
+}
+
+} // namespace pm::capture

@@ -1,0 +1,158 @@
+#include "pm/capture/VideoCaptureSource.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "pm/core/Error.h"
+
+namespace pm::capture {
+
+namespace {
+bool allDigits(const std::string &s)
+{
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+double nowMs()
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+} // namespace
+
+struct VideoCaptureSource::Stream
+{
+  std::string spec, side;
+  cv::VideoCapture cap;
+  bool live = false;       //!< a camera (device index or /dev path), not a file
+  bool held = false, ended = false;
+  cv::Mat frame;
+  double t = 0;            //!< the held frame's time (ms)
+  bool useArrival = false; //!< the backend gives no timestamps
+  double lastT = -1;
+
+  //! Reads the next frame into the hold; false at the end of the stream.
+  bool read(const VideoCaptureParams &p, SourceStats &stats, int k)
+  {
+    const double t0 = nowMs();
+    const bool ok = cap.read(frame);
+    const double waited = nowMs() - t0;
+    if (live && waited > p.stallTimeoutS * 1e3)
+      throw Error("the " + side + " camera '" + spec + "' stalled: no frame for " + std::to_string(waited / 1e3) + " s");
+    if (!ok || frame.empty()) {
+      ended = true;
+      stats.problems.push_back("the " + side + " stream '" + spec + "' ended after " + std::to_string(stats.framesRead[k]) + " frames");
+      return false;
+    }
+    ++stats.framesRead[k];
+    double ts = cap.get(cv::CAP_PROP_POS_MSEC);
+    if (!useArrival && (!std::isfinite(ts) || (stats.framesRead[k] > 1 && ts <= lastT)))
+      useArrival = true; // no usable timestamps from this backend: times of arrival
+    t = useArrival ? nowMs() : ts;
+    lastT = ts;
+    held = true;
+    return true;
+  }
+};
+
+void VideoCaptureParams::validate() const
+{
+  if (!(maxSkewMs >= 0) || !std::isfinite(maxSkewMs))
+    throw Error("video capture: the largest skew must be a non-negative number of milliseconds");
+  if (!(stallTimeoutS > 0))
+    throw Error("video capture: the stall timeout must be positive");
+}
+
+VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::string &right, const VideoCaptureParams &params)
+    : m_params(params)
+{
+  params.validate();
+  const std::string specs[2] = {left, right};
+  for (int k = 0; k < 2; ++k) {
+    m_s[k] = std::make_unique<Stream>();
+    Stream &s = *m_s[k];
+    s.spec = specs[k];
+    s.side = k ? "right" : "left";
+    s.live = allDigits(s.spec) || s.spec.rfind("/dev/", 0) == 0;
+    const bool pipeline = s.spec.find('!') != std::string::npos;
+    if (!allDigits(s.spec) && !pipeline && !std::filesystem::exists(s.spec))
+      throw Error("cannot open the " + s.side + " source '" + s.spec + "': no such file or device");
+    bool opened = false;
+    try {
+      if (allDigits(s.spec))
+        opened = s.cap.open(std::stoi(s.spec), cv::CAP_ANY);
+      else if (s.spec.find('!') != std::string::npos)
+        opened = s.cap.open(s.spec, cv::CAP_GSTREAMER);
+      else
+        opened = s.cap.open(s.spec, cv::CAP_ANY);
+    } catch (const cv::Exception &) {
+      opened = false;
+    }
+    if (!opened || !s.cap.isOpened())
+      throw Error("cannot open the " + s.side + " source '" + s.spec +
+                  "' (a device index such as 0, a V4L2 path such as /dev/video0, a video file, or a GStreamer pipeline "
+                  "ending in appsink)");
+  }
+}
+
+VideoCaptureSource::~VideoCaptureSource() = default;
+
+bool VideoCaptureSource::next(StereoFrame &f)
+{
+  if (m_params.maxPairs > 0 && m_stats.pairs >= m_params.maxPairs)
+    return false;
+  Stream &L = *m_s[0], &R = *m_s[1];
+  for (;;) {
+    for (int k = 0; k < 2; ++k) {
+      Stream &s = *m_s[k];
+      if (s.ended)
+        return false;
+      if (!s.held && !s.read(m_params, m_stats, k))
+        return false;
+    }
+    const double d = L.t - R.t;
+    if (std::fabs(d) <= m_params.maxSkewMs)
+      break;
+    Stream &older = d < 0 ? L : R; // drop the older frame: its partner has gone by
+    older.held = false;
+    ++m_stats.unpaired[d < 0 ? 0 : 1];
+  }
+  if (L.frame.size() != R.frame.size()) {
+    std::ostringstream os;
+    os << "the two streams differ in size: left '" << L.spec << "' is " << L.frame.cols << "x" << L.frame.rows
+       << ", right '" << R.spec << "' is " << R.frame.cols << "x" << R.frame.rows;
+    throw Error(os.str());
+  }
+  vpImage<vpRGBa> *dst[2] = {&f.left, &f.right};
+  for (int k = 0; k < 2; ++k) {
+    const cv::Mat &m = m_s[k]->frame;
+    cv::Mat rgba;
+    if (m.channels() == 1)
+      cv::cvtColor(m, rgba, cv::COLOR_GRAY2RGBA);
+    else if (m.channels() == 4)
+      cv::cvtColor(m, rgba, cv::COLOR_BGRA2RGBA);
+    else
+      cv::cvtColor(m, rgba, cv::COLOR_BGR2RGBA);
+    dst[k]->resize(static_cast<unsigned>(rgba.rows), static_cast<unsigned>(rgba.cols));
+    for (int r = 0; r < rgba.rows; ++r)
+      std::memcpy(static_cast<void *>((*dst[k])[r]), rgba.ptr(r), static_cast<std::size_t>(rgba.cols) * 4);
+    m_s[k]->held = false;
+  }
+  if (m_t0 < 0)
+    m_t0 = L.t;
+  f.index = m_stats.pairs;
+  f.timeS = (L.t - m_t0) * 1e-3;
+  f.skewMs = L.t - R.t;
+  m_stats.maxSkewMs = std::max(m_stats.maxSkewMs, std::fabs(f.skewMs));
+  ++m_stats.pairs;
+  return true;
+}
+
+std::string VideoCaptureSource::describe() const { return "video sources " + m_s[0]->spec + " + " + m_s[1]->spec; }
+
+} // namespace pm::capture

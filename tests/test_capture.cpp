@@ -1,0 +1,246 @@
+// Live input: two video streams read through OpenCV's VideoCapture and paired by timestamp (the
+// lab writes the videos), streams of other rates, lengths and sizes, a source that does not open,
+// pm-track on them, and its ViSP window under Xvfb.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "TestSupport.h"
+#include "pm/capture/ImageSequenceSource.h"
+#include "pm/capture/VideoCaptureSource.h"
+#include "pm/core/Error.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/PhotoModelFile.h"
+#include "pm/io/RigFile.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+
+using pm::test::errorOf;
+using pm::test::runProgram;
+using pm::test::TempDir;
+
+namespace {
+
+cv::Mat toBgr(const vpImage<vpRGBa> &I)
+{
+  cv::Mat rgba(static_cast<int>(I.getHeight()), static_cast<int>(I.getWidth()), CV_8UC4, const_cast<vpRGBa *>(I.bitmap)), bgr;
+  cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
+  return bgr;
+}
+
+//! The lab's two cameras filming C12 sliding along x: frames 0..n-1 at 30 fps; the right camera
+//! keeps every \e rightEvery-th frame (its rate is 30 / rightEvery) and stops after \e rightFrames of them.
+struct Recording
+{
+  std::string left, right, model;
+};
+
+Recording record(const TempDir &d, int n, int rightEvery = 1, int rightFrames = -1, int rightScale = 1)
+{
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::SceneParams sp;
+  sp.supersampling = 1;
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp);
+  const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
+  Recording r{d.file("left.avi"), d.file("right.avi"), d.file("model.json")};
+  pm::io::savePhotoModel(sm.build.model, r.model);
+  const int fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
+  cv::VideoWriter wl(r.left, fourcc, 30.0, cv::Size(640, 480));
+  cv::VideoWriter wr(r.right, fourcc, 30.0 / rightEvery, cv::Size(640 / rightScale, 480 / rightScale));
+  EXPECT_TRUE(wl.isOpened() && wr.isOpened());
+  int written = 0;
+  for (int k = 0; k < n; ++k) {
+    const auto im = scene.renderStereo(rig, vpHomogeneousMatrix(0.001 * k, 0, 0.5, 0, 0, 0), static_cast<std::uint64_t>(k));
+    wl.write(toBgr(im.left));
+    if (k % rightEvery == 0 && (rightFrames < 0 || written < rightFrames)) {
+      cv::Mat b = toBgr(im.right);
+      if (rightScale != 1)
+        cv::resize(b, b, cv::Size(), 1.0 / rightScale, 1.0 / rightScale);
+      wr.write(b);
+      ++written;
+    }
+  }
+  return r;
+}
+
+long countPairs(pm::capture::StereoSource &s)
+{
+  pm::capture::StereoFrame f;
+  long n = 0;
+  while (s.next(f))
+    ++n;
+  return n;
+}
+
+} // namespace
+
+TEST(VideoCapture, TwoFilesOfOneRateMakeOnePairPerFrame)
+{
+  TempDir d("capture");
+  const Recording r = record(d, 12);
+  pm::capture::VideoCaptureSource src(r.left, r.right);
+  pm::capture::StereoFrame f;
+  ASSERT_TRUE(src.next(f));
+  EXPECT_EQ(f.left.getWidth(), 640u);
+  EXPECT_EQ(f.right.getHeight(), 480u);
+  EXPECT_NEAR(f.timeS, 0.0, 1e-9);
+  // The colours survive the video codec: the crab's red and the sea's blue.
+  EXPECT_GT(f.left[240][320].R + 0, 0);
+  EXPECT_EQ(countPairs(src) + 1, 12);
+  EXPECT_EQ(src.stats().pairs, 12);
+  EXPECT_EQ(src.stats().unpaired[0] + src.stats().unpaired[1], 0);
+  EXPECT_LE(src.stats().maxSkewMs, 1e-6);
+  EXPECT_NE(src.stats().describe().find("12 pairs"), std::string::npos);
+}
+
+TEST(VideoCapture, AStreamAtHalfTheRatePairsEveryOtherFrameAndCountsTheRest)
+{
+  TempDir d("capture");
+  const Recording r = record(d, 12, 2);
+  pm::capture::VideoCaptureSource src(r.left, r.right);
+  pm::capture::StereoFrame f;
+  double lastT = -1;
+  long n = 0;
+  while (src.next(f)) {
+    EXPECT_NEAR(f.timeS - lastT, lastT < 0 ? f.timeS + 1 : 2.0 / 30, 1e-3); // pairs 1/15 s apart
+    EXPECT_LE(std::fabs(f.skewMs), 10.0);
+    lastT = f.timeS;
+    ++n;
+  }
+  EXPECT_EQ(n, 6);
+  EXPECT_EQ(src.stats().unpaired[0], 5); // the left frames between the right ones (the 12th has no partner: the right stream ended)
+  EXPECT_EQ(src.stats().unpaired[1], 0);
+}
+
+TEST(VideoCapture, AStreamThatEndsEndsThePairsAndSaysSo)
+{
+  TempDir d("capture");
+  const Recording r = record(d, 10, 1, 6);
+  pm::capture::VideoCaptureSource src(r.left, r.right);
+  EXPECT_EQ(countPairs(src), 6);
+  ASSERT_FALSE(src.stats().problems.empty());
+  EXPECT_NE(src.stats().problems.back().find("right stream"), std::string::npos) << src.stats().problems.back();
+  EXPECT_NE(src.stats().problems.back().find("ended after 6 frames"), std::string::npos) << src.stats().problems.back();
+}
+
+TEST(VideoCapture, StreamsOfDifferentSizesOrASourceThatDoesNotOpenAreErrors)
+{
+  TempDir d("capture");
+  const Recording r = record(d, 3, 1, -1, 2);
+  pm::capture::VideoCaptureSource src(r.left, r.right);
+  pm::capture::StereoFrame f;
+  EXPECT_NE(errorOf([&] { src.next(f); }).find("differ in size: left '" + r.left + "' is 640x480, right '" + r.right + "' is 320x240"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::capture::VideoCaptureSource(d.file("none.avi"), r.right); }).find("cannot open the left source"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::capture::VideoCaptureSource(r.left, "97"); }).find("cannot open the right source '97'"),
+            std::string::npos);
+  pm::capture::VideoCaptureParams bad;
+  bad.maxSkewMs = -1;
+  EXPECT_NE(errorOf([&] { pm::capture::VideoCaptureSource(r.left, r.right, bad); }).find("skew"), std::string::npos);
+}
+
+TEST(ImageSequence, UnreadablePairsAreSkippedAndCounted)
+{
+  TempDir d("sequence");
+  const vpImage<vpRGBa> I(48, 64, vpRGBa(10, 20, 30)), small(24, 32, vpRGBa(10, 20, 30));
+  for (int k = 0; k < 4; ++k) {
+    pm::io::writeImage(k == 2 ? small : I, d.file("L_" + std::to_string(k) + ".png"));
+    if (k != 1)
+      pm::io::writeImage(I, d.file("R_" + std::to_string(k) + ".png"));
+  }
+  pm::capture::ImageSequenceSource src(d.file("L_%d.png"), d.file("R_%d.png"), 0, 10.0, 64, 48);
+  EXPECT_EQ(src.length(), 4);
+  pm::capture::StereoFrame f;
+  std::vector<long> got;
+  while (src.next(f))
+    got.push_back(f.index);
+  EXPECT_EQ(got, (std::vector<long>{0, 3}));
+  EXPECT_EQ(src.stats().skipped, 2);
+  EXPECT_NE(src.stats().problems[1].find("frame 2: image size differs"), std::string::npos) << src.stats().problems[1];
+  EXPECT_NE(errorOf([&] { pm::capture::ImageSequenceSource(d.file("X_%d.png"), d.file("Y_%d.png"), 0, 10.0); }).find("empty"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::capture::frameFileName("L_%s.png", 1); }).find("frame-number field"), std::string::npos);
+}
+
+TEST(PmTrack, TracksTwoVideoStreamsAndShowsThemInAViSPWindow)
+{
+  TempDir d("track-video");
+  const Recording r = record(d, 45);
+  const std::string args = "--left-source " + r.left + " --right-source " + r.right + " --model " + r.model +
+                           " --budget-evals 1900 --ga-seed 1 --quiet --out ";
+  const auto run = runProgram("pm-track", args + d.file("o"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("o/summary.json")));
+  EXPECT_EQ(s["capture"]["pairs"], 45);
+  EXPECT_EQ(s["frames"], 45);
+  EXPECT_GT(s["states"].value("tracking", 0), 30) << s["states"].dump();
+  // No X display: a plain line, then headless.
+  const auto headless = pm::test::runCommand("env -u DISPLAY " + std::string(PM_TEST_BIN_DIR) + "/pm-track " + args + d.file("h") + " --display");
+  EXPECT_EQ(headless.status, 0) << headless.err;
+  EXPECT_NE(headless.err.find("no X display"), std::string::npos) << headless.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("h/display.png")));
+  // Under Xvfb, the window's own picture read back from the X server.
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb)";
+  const auto shown = pm::test::runCommand("xvfb-run -a -s '-screen 0 1400x600x24' " + std::string(PM_TEST_BIN_DIR) + "/pm-track " +
+                                          args + d.file("x") + " --display");
+  ASSERT_EQ(shown.status, 0) << shown.err;
+  const vpImage<vpRGBa> shot = pm::io::readColorImage(d.file("x/display.png"));
+  EXPECT_GE(shot.getWidth(), 1280u);
+  EXPECT_EQ(shot.getHeight(), 480u);
+  // The model is drawn: green points (S_in on the crab) in the left view.
+  int green = 0;
+  for (unsigned v = 0; v < 480; ++v)
+    for (unsigned u = 0; u < 640; ++u)
+      green += shot[v][u].G > 200 && shot[v][u].R < 100 && shot[v][u].B < 100;
+  EXPECT_GT(green, 50);
+}
+
+TEST(PmMakeModel, MakesAStereoModelFromTwoVideoStreams)
+{
+  // The rig films the backdrop alone (pairs 0-2), then the toy placed on it (pairs 3-5), from one hand pose.
+  TempDir d("model-video");
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
+  const int fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
+  cv::VideoWriter wl(d.file("l.avi"), fourcc, 30.0, cv::Size(640, 480)), wr(d.file("r.avi"), fourcc, 30.0, cv::Size(640, 480));
+  ASSERT_TRUE(wl.isOpened() && wr.isOpened());
+  pm::sim::Rasterizer raster;
+  const vpHomogeneousMatrix hMo(0, 0, 0.5, 0, 0, 0);
+  for (int k = 0; k < 6; ++k) {
+    vpImage<vpRGBa> L, R;
+    scene.render(raster, rig.left, hMo, static_cast<std::uint64_t>(k), 0, L, k >= 3);
+    scene.render(raster, rig.right, hMo, static_cast<std::uint64_t>(k), 1, R, k >= 3);
+    wl.write(toBgr(L));
+    wr.write(toBgr(R));
+  }
+  wl.release();
+  wr.release();
+  const std::string src = "--left-source " + d.file("l.avi") + " --right-source " + d.file("r.avi");
+  const auto r = runProgram("pm-make-model", src + " --background-frame 1 --photo-frame 4 --quiet --out " + d.file("m"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("m/summary.json")));
+  EXPECT_EQ(s["kind"], "stereo");
+  // As the same rig's model from lossless photos, but for the video codec's losses.
+  const auto lab = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
+  EXPECT_NEAR(s["n_in"].get<double>(), static_cast<double>(lab.build.model.inner.size()), 0.15 * static_cast<double>(lab.build.model.inner.size()));
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(s["model_origin_in_hand_mm"][static_cast<std::size_t>(i)].get<double>(), lab.build.model.originInHandMm[i], 3.0) << i;
+  EXPECT_TRUE(std::filesystem::exists(d.file("m/depth.png")));
+  // The source ends before the photo pair; frames in the wrong order; no frames and no terminal.
+  const auto late = runProgram("pm-make-model", src + " --photo-frame 9 --out " + d.file("x"));
+  EXPECT_EQ(late.status, 1);
+  EXPECT_NE(late.err.find("ended at pair 6, before the photo pair (9)"), std::string::npos) << late.err;
+  const auto order = runProgram("pm-make-model", src + " --background-frame 4 --photo-frame 2 --out " + d.file("x"));
+  EXPECT_NE(order.err.find("must come after the background pair"), std::string::npos) << order.err;
+  const auto ask = runProgram("pm-make-model", src + " --out " + d.file("x"));
+  EXPECT_NE(ask.err.find("no terminal to ask on"), std::string::npos) << ask.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("x")));
+}
