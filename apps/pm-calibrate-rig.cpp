@@ -111,7 +111,8 @@ int main(int argc, char **argv)
 
     nlohmann::json views = nlohmann::json::array();
     for (const auto &p : c.pairs) {
-      nlohmann::json v{{"name", p.name}, {"used", p.used}, {"edge_width_px", {p.edgeWidthPx[0], p.edgeWidthPx[1]}}};
+      nlohmann::json v{{"name", p.name}, {"used", p.used}, {"views_used", {p.usedBy[0], p.usedBy[1]}},
+                       {"edge_width_px", {p.edgeWidthPx[0], p.edgeWidthPx[1]}}};
       if (p.used)
         v["rms_px"] = {p.rmsPx[0], p.rmsPx[1]};
       else
@@ -149,8 +150,8 @@ int main(int argc, char **argv)
                     "calibrated by pm-calibrate-rig from " + source);
     if (!quiet) {
       std::cout << std::fixed << std::setprecision(4) << "stereo rig calibration (" << board.describe() << "; " << source
-                << ", " << c.pairsUsed << " pairs used, " << c.pairs.size() - static_cast<std::size_t>(c.pairsUsed)
-                << " rejected)\n  rms: left " << c.rmsLeftPx << " px, right " << c.rmsRightPx << " px, stereo "
+                << ": " << c.pairsUsed << " pairs for the stereo pose, views " << c.viewsUsed[0] << " left and "
+                << c.viewsUsed[1] << " right for the lenses)\n  rms: left " << c.rmsLeftPx << " px, right " << c.rmsRightPx << " px, stereo "
                 << c.rmsStereoPx << " px\n  baseline " << c.baselineMm << ", " << c.rotationDeg
                 << " deg between the cameras\n  left lens: " << c.rig.left.distortion.describe()
                 << "\n  right lens: " << c.rig.right.distortion.describe() << "\n";
@@ -160,7 +161,9 @@ int main(int argc, char **argv)
                     << "add views with the board near the image's edges)\n";
       for (const auto &p : c.pairs)
         if (!p.used)
-          std::cout << "  rejected " << p.name << ": " << p.reason << "\n";
+          std::cout << "  " << p.name << " not in the stereo pose"
+                    << (p.usedBy[0] ? " (its left view calibrates the left lens)" : p.usedBy[1] ? " (its right view calibrates the right lens)" : "")
+                    << ": " << p.reason << "\n";
       if (truth)
         std::cout << "  against the true rig: baseline " << err.baselineErrorMm << " mm, translation "
                   << err.translationErrorMm << " mm, rotation " << err.rotationErrorDeg
