@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -142,7 +143,12 @@ int main(int argc, char **argv)
                           {"reprojection_error_rms_px", {err.reprojectionRmsPx[0], err.reprojectionRmsPx[1]}}};
     }
     pm::io::StagedFiles files(out);
-    pm::io::writeImage(pm::calib::coverageImage(c, arrowGain), files.stage("coverage.png"));
+    vpImage<vpRGBa> coverage = pm::calib::coverageImage(c, arrowGain);
+    std::ostringstream legend;
+    legend << "left: corners found (a colour per view), residuals x" << arrowGain << " (red)";
+    pm::app::drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
+    pm::app::drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
+    pm::io::writeImage(coverage, files.stage("coverage.png"));
     pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
     files.commit();
     // The rig's own files are written last, each one whole (saveRig stages its own).

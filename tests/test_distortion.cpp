@@ -242,6 +242,16 @@ TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
     EXPECT_NEAR(o.cam.get_px(), 535.9157, 1e-3);
     EXPECT_NEAR(o.distortion.coefficients[0], -0.26637, 1e-5);
   }
+  // OpenCV's XML form of the same.
+  pm::test::writeText(d.file("cv.xml"), "<?xml version=\"1.0\"?>\n<opencv_storage>\n<camera_matrix type_id=\"opencv-matrix\">"
+                                        "<rows>3</rows><cols>3</cols><dt>d</dt><data>536. 0. 342. 0. 537. 235. 0. 0. 1.</data>"
+                                        "</camera_matrix>\n<distortion_coefficients type_id=\"opencv-matrix\"><rows>4</rows>"
+                                        "<cols>1</cols><dt>d</dt><data>-0.2 0.01 0.001 0.002</data></distortion_coefficients>\n"
+                                        "</opencv_storage>\n");
+  const auto cx = pm::io::readCameraFile(d.file("cv.xml"), "left", 640, 480);
+  EXPECT_EQ(cx.format, "opencv");
+  EXPECT_DOUBLE_EQ(cx.cam.get_py(), 537);
+  EXPECT_EQ(cx.distortion.coefficients, (std::vector<double>{-0.2, 0.01, 0.001, 0.002}));
   // Written by us, read back.
   pm::RigCamera cam{"left", r.cam, 640, 480, vpHomogeneousMatrix(), r.distortion};
   pm::io::writeOpenCvCameraFile(cam, d.file("back.yml"));

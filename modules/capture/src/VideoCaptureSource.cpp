@@ -86,10 +86,12 @@ VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::strin
     try {
       if (allDigits(s.spec))
         opened = s.cap.open(std::stoi(s.spec), cv::CAP_ANY);
-      else if (s.spec.find('!') != std::string::npos)
+      else if (pipeline)
         opened = s.cap.open(s.spec, cv::CAP_GSTREAMER);
-      else
-        opened = s.cap.open(s.spec, cv::CAP_ANY);
+      else if (s.live)
+        opened = s.cap.open(s.spec, cv::CAP_V4L2);
+      else // a video file: FFmpeg, else GStreamer (not every backend: some probe USB cameras for a file name)
+        opened = s.cap.open(s.spec, cv::CAP_FFMPEG) || s.cap.open(s.spec, cv::CAP_GSTREAMER);
     } catch (const cv::Exception &) {
       opened = false;
     }
