@@ -17,6 +17,7 @@
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
 #include "pm/app/Overlay.h"
+#include "pm/app/Patterns.h"
 #include "pm/app/Progress.h"
 #include "pm/calib/StereoBaseline.h"
 #include "pm/core/Error.h"
@@ -42,42 +43,6 @@ vpImage<vpRGBa> blurred(const vpImage<vpRGBa> &I, double px)
   vpImage<vpRGBa> out(I.getHeight(), I.getWidth());
   std::memcpy(static_cast<void *>(out.bitmap), b.data, I.getSize() * sizeof(vpRGBa));
   return out;
-}
-
-//! v as a whole number, else a usage error about --board.
-int wholeNumber(double v, const char *what)
-{
-  if (v != std::floor(v))
-    throw CLI::ValidationError("--board", std::string("the ") + what + " must be whole numbers");
-  return static_cast<int>(v);
-}
-
-//! The pattern named on the command line; \e layout empty: the pattern's default.
-std::unique_ptr<pm::calib::Pattern> makePattern(const std::string &kind, const std::string &layout)
-{
-  std::unique_ptr<pm::calib::Pattern> pattern;
-  if (kind == "chessboard") {
-    auto b = std::make_unique<pm::calib::ChessBoard>();
-    if (!layout.empty()) {
-      const auto v = pm::app::parseNumbers(layout, 3, "--board");
-      b->innerRows = wholeNumber(v[0], "inner corner counts");
-      b->innerCols = wholeNumber(v[1], "inner corner counts");
-      b->squareMm = b->marginMm = v[2];
-    }
-    pattern = std::move(b);
-  } else {
-    auto b = std::make_unique<pm::calib::TagBoard>();
-    if (!layout.empty()) {
-      const auto v = pm::app::parseNumbers(layout, 4, "--board");
-      b->rows = wholeNumber(v[0], "tag counts");
-      b->cols = wholeNumber(v[1], "tag counts");
-      b->tagSizeMm = v[2];
-      b->pitchMm = v[3];
-    }
-    pattern = std::move(b);
-  }
-  pattern->validate();
-  return pattern;
 }
 
 } // namespace
@@ -127,7 +92,7 @@ int main(int argc, char **argv)
   return pm::app::run(app, argc, argv, [&] {
     if (!simulate && leftPattern.empty())
       throw CLI::ValidationError("--simulate or --left-images/--right-images", "one of them is needed");
-    const std::unique_ptr<pm::calib::Pattern> pattern = makePattern(patternKind, boardText);
+    const std::unique_ptr<pm::calib::Pattern> pattern = pm::app::makePattern(patternKind, boardText);
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     std::vector<vpHomogeneousMatrix> perPair;
     std::vector<double> rms;

@@ -12,6 +12,7 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Overlay.h"
+#include "pm/app/Patterns.h"
 #include "pm/app/Progress.h"
 #include "pm/calib/RigCalibration.h"
 #include "pm/lab/SimulatedCalibration.h"
@@ -32,7 +33,7 @@ nlohmann::json cameraJson(const pm::RigCamera &c)
 
 int main(int argc, char **argv)
 {
-  CLI::App app{"Calibrates a stereo rig from image pairs of a chessboard: each camera's intrinsics and lens distortion "
+  CLI::App app{"Calibrates a stereo rig from image pairs of a chessboard or an AprilTag board: each camera's intrinsics and lens distortion "
                "(cv::calibrateCamera, k1 k2 p1 p2 k3), then the right camera's pose in the left one "
                "(cv::stereoCalibrate). Pairs whose board is not whole in both images, or blurred, are rejected with the "
                "reason. Writes rig.json (the hand frame midway between the cameras, axes halfway between theirs), "
@@ -42,7 +43,7 @@ int main(int argc, char **argv)
                "pm-calibrate-rig"};
   app.option_defaults()->always_capture_default();
   std::vector<std::string> leftFiles, rightFiles;
-  std::string out, boardText = "6,9,20", trueRigPath;
+  std::string out, boardText, trueRigPath, patternKind = "chessboard";
   int simulate = 0;
   double arrowGain = 20;
   bool quiet = false;
@@ -60,8 +61,12 @@ int main(int argc, char **argv)
   app.add_option("--true-distortion", simParams.distortion.coefficients,
                  "simulation: both cameras' lens, OpenCV's k1 k2 p1 p2 k3 (ignored with --true-rig)")
       ->expected(5)->needs(optSim);
-  app.add_option("--board", boardText, "chessboard: inner_rows,inner_cols,square (the square's unit is the rig's: mm; "
-                                       "one count odd, the other even)");
+  app.add_option("--pattern", patternKind, "chessboard (OpenCV's corner finder) or tags (an AprilTag 36h11 board, "
+                                           "vpDetectorAprilTag; a board seen in part still counts)")
+      ->check(CLI::IsMember({"tags", "chessboard"}));
+  app.add_option("--board", boardText, "the pattern's layout, in the rig's unit (mm). chessboard: inner_rows,inner_cols,square "
+                                       "(default 6,9,20; one count odd, the other even); tags: rows,cols,tag_size,pitch "
+                                       "(default 3,3,40,55)");
   app.add_option("--min-pairs", params.minPairs, "usable pairs needed")->check(CLI::Range(3, 100000));
   app.add_option("--max-edge-width-px", params.maxEdgeWidthPx, "reject a view whose board edges are wider (blurred; "
                                                                 "cv::estimateChessboardSharpness)")->check(CLI::PositiveNumber);
@@ -76,14 +81,8 @@ int main(int argc, char **argv)
     if (leftFiles.size() != rightFiles.size())
       throw CLI::ValidationError("--left/--right", std::to_string(leftFiles.size()) + " left images but " +
                                                        std::to_string(rightFiles.size()) + " right ones");
-    const auto b = pm::app::parseNumbers(boardText, 3, "--board");
-    pm::calib::ChessBoard board;
-    if (b[0] != std::floor(b[0]) || b[1] != std::floor(b[1]))
-      throw CLI::ValidationError("--board", "the inner corner counts must be whole numbers");
-    board.innerRows = static_cast<int>(b[0]);
-    board.innerCols = static_cast<int>(b[1]);
-    board.squareMm = board.marginMm = b[2];
-    board.validate();
+    const std::unique_ptr<pm::calib::Pattern> pattern = pm::app::makePattern(patternKind, boardText);
+    const pm::calib::Pattern &board = *pattern;
 
     std::vector<pm::calib::StereoImagePair> pairs;
     std::optional<pm::StereoRig> truth;

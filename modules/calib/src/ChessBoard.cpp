@@ -81,6 +81,18 @@ std::vector<vpImagePoint> ChessBoard::findCorners(const vpImage<vpRGBa> &I, cons
   return out;
 }
 
+PatternDetection ChessBoard::detect(const vpImage<vpRGBa> &I, const std::string &name) const
+{
+  PatternDetection d;
+  d.pixels = findCorners(I, name);
+  for (int r = 0; r < innerRows; ++r)
+    for (int c = 0; c < innerCols; ++c) {
+      d.ids.push_back(r * innerCols + c);
+      d.points.push_back(corner(r, c));
+    }
+  return d;
+}
+
 BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name, bool whole) const
 {
   return find(I, cam, LensDistortion(), name, whole);

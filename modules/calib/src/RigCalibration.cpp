@@ -66,7 +66,7 @@ void handFrameOf(const vpHomogeneousMatrix &cLMcR, vpHomogeneousMatrix &hMcL, vp
   hMcR = hMcL * cLMcR;
 }
 
-RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const ChessBoard &board, const RigCalibrationParams &params)
+RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pattern &board, const RigCalibrationParams &params)
 {
   board.validate();
   params.validate();
@@ -78,57 +78,79 @@ RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Che
   std::vector<std::vector<cv::Point2f>> image[2], monoImage[2];
   std::vector<std::size_t> usedIndex;
   std::vector<int> monoOfStereo[2]; // for each stereo pair, its index among the camera's views
-  std::vector<cv::Point3f> boardPoints;
-  for (int r = 0; r < board.innerRows; ++r)
-    for (int c = 0; c < board.innerCols; ++c) {
-      const vpPoint P = board.corner(r, c);
-      boardPoints.emplace_back(static_cast<float>(P.get_oX() * 1e3), static_cast<float>(P.get_oY() * 1e3), 0.f);
-    }
-  const cv::Size patternSize(board.innerCols, board.innerRows);
+  const auto onBoard = [](const vpPoint &P) {
+    return cv::Point3f(static_cast<float>(P.get_oX() * 1e3), static_cast<float>(P.get_oY() * 1e3), 0.f);
+  };
+  const ChessBoard *chess = dynamic_cast<const ChessBoard *>(&board);
   for (const StereoImagePair &p : pairs) {
     PairReport rep;
     rep.name = p.name;
     const vpImage<vpRGBa> *im[2] = {&p.left, &p.right};
     std::string why[2];
+    PatternDetection det[2];
     for (int k = 0; k < 2; ++k) {
       const char *side = k ? "right" : "left";
       try {
         if (im[k]->getWidth() != w || im[k]->getHeight() != h)
           throw Error(std::string(side) + " image is " + std::to_string(im[k]->getWidth()) + "x" +
                       std::to_string(im[k]->getHeight()) + ", the first pair's are " + std::to_string(w) + "x" + std::to_string(h));
-        rep.corners[k] = board.findCorners(*im[k], side);
-        vpImage<unsigned char> g;
-        const cv::Scalar sh = cv::estimateChessboardSharpness(grey(*im[k], g), patternSize, toCv(rep.corners[k]));
-        rep.edgeWidthPx[k] = sh[0];
-        if (!(sh[0] <= params.maxEdgeWidthPx)) {
-          std::ostringstream os;
-          os.precision(2);
-          os << std::fixed << "blurred: the " << side << " board's edges are " << sh[0] << " px wide (limit "
-             << params.maxEdgeWidthPx << ")";
-          throw Error(os.str());
+        det[k] = board.detect(*im[k], side);
+        if (det[k].pixels.size() < 6)
+          throw Error(std::string("only ") + std::to_string(det[k].pixels.size()) + " features in the " + side + " image (6 needed)");
+        if (chess) {
+          vpImage<unsigned char> g;
+          const cv::Scalar sh = cv::estimateChessboardSharpness(grey(*im[k], g), cv::Size(chess->innerCols, chess->innerRows),
+                                                                toCv(det[k].pixels));
+          rep.edgeWidthPx[k] = sh[0];
+          if (!(sh[0] <= params.maxEdgeWidthPx)) {
+            std::ostringstream os;
+            os.precision(2);
+            os << std::fixed << "blurred: the " << side << " board's edges are " << sh[0] << " px wide (limit "
+               << params.maxEdgeWidthPx << ")";
+            throw Error(os.str());
+          }
         }
         rep.usedBy[k] = true;
       } catch (const Error &e) {
         why[k] = e.what();
-        rep.corners[k].clear();
+        det[k] = PatternDetection();
       }
     }
-    rep.used = rep.usedBy[0] && rep.usedBy[1];
-    rep.reason = rep.used ? "" : (!why[0].empty() ? why[0] : why[1]);
     for (int k = 0; k < 2; ++k)
       if (rep.usedBy[k]) {
-        monoObject[k].push_back(boardPoints);
-        monoImage[k].push_back(toCv(rep.corners[k]));
+        std::vector<cv::Point3f> o;
+        for (const vpPoint &P : det[k].points)
+          o.push_back(onBoard(P));
+        monoObject[k].push_back(o);
+        monoImage[k].push_back(toCv(det[k].pixels));
         result.viewsUsed[k]++;
+        rep.corners[k] = det[k].pixels;
       }
-    if (rep.used) {
-      object.push_back(boardPoints);
-      for (int k = 0; k < 2; ++k) {
-        image[k].push_back(toCv(rep.corners[k]));
-        monoOfStereo[k].push_back(static_cast<int>(monoImage[k].size()) - 1);
+    if (rep.usedBy[0] && rep.usedBy[1]) {
+      // The features both cameras found (a tag board may be seen in part), in the left camera's order.
+      std::vector<cv::Point3f> o;
+      std::vector<vpImagePoint> common[2];
+      for (std::size_t i = 0; i < det[0].ids.size(); ++i)
+        for (std::size_t j = 0; j < det[1].ids.size(); ++j)
+          if (det[0].ids[i] == det[1].ids[j]) {
+            o.push_back(onBoard(det[0].points[i]));
+            common[0].push_back(det[0].pixels[i]);
+            common[1].push_back(det[1].pixels[j]);
+          }
+      if (o.size() >= 6) {
+        rep.used = true;
+        object.push_back(o);
+        for (int k = 0; k < 2; ++k) {
+          image[k].push_back(toCv(common[k]));
+          rep.corners[k] = common[k];
+          monoOfStereo[k].push_back(static_cast<int>(monoImage[k].size()) - 1);
+        }
+        usedIndex.push_back(result.pairs.size());
+      } else {
+        why[0] = "only " + std::to_string(o.size()) + " features seen by both cameras (6 needed)";
       }
-      usedIndex.push_back(result.pairs.size());
     }
+    rep.reason = rep.used ? "" : (!why[0].empty() ? why[0] : why[1]);
     result.pairs.push_back(std::move(rep));
   }
   result.pairsUsed = static_cast<int>(usedIndex.size());
@@ -201,7 +223,7 @@ RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Che
     const cv::Mat rv2[2] = {rvecs[0][li], rvr}, tv2[2] = {tvecs[0][li], tr};
     for (int k = 0; k < 2; ++k) {
       std::vector<cv::Point2f> proj;
-      cv::projectPoints(boardPoints, rv2[k], tv2[k], K[k], D[k], proj);
+      cv::projectPoints(object[i], rv2[k], tv2[k], K[k], D[k], proj);
       double s2 = 0;
       rep.projected[k].resize(proj.size());
       for (std::size_t j = 0; j < proj.size(); ++j) {

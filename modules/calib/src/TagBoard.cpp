@@ -125,4 +125,36 @@ BoardView TagBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam
 }
 
 
+PatternDetection TagBoard::detect(const vpImage<vpRGBa> &I, const std::string &name) const
+{
+  validate();
+  vpImage<unsigned char> grey;
+  vpImageConvert::convert(I, grey);
+  vpDetectorAprilTag det(vpDetectorAprilTag::TAG_36h11);
+  det.setZAlignedWithCameraAxis(true);
+  det.detect(grey);
+  PatternDetection d;
+  int tags = 0;
+  for (std::size_t i = 0; i < det.getNbObjects(); ++i) {
+    int id = -1;
+    if (std::sscanf(det.getMessage(i).c_str(), "36h11 id: %d", &id) != 1 || !hasId(id))
+      continue;
+    const std::vector<vpImagePoint> poly = det.getPolygon(i);
+    if (poly.size() != 4)
+      continue;
+    const auto model = corners(id);
+    for (int k = 0; k < 4; ++k) {
+      d.ids.push_back(4 * id + (3 - k)); // the detector's corner k is the tag frame's corner 3 - k (test TagBoard.DetectNumbersCornersAsFind)
+      d.pixels.push_back(poly[static_cast<std::size_t>(k)]);
+      d.points.push_back(model[static_cast<std::size_t>(3 - k)]);
+    }
+    ++tags;
+  }
+  const int needed = std::min(minTags, rows * cols);
+  if (tags < needed)
+    throw Error("tag board: " + std::to_string(tags) + " of its tags found in the " + name + " image (at least " +
+                std::to_string(needed) + " needed: is the board in view, sharp, and the layout right?)");
+  return d;
+}
+
 } // namespace pm::calib

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <opencv2/core.hpp>
+#include <yaml-cpp/yaml.h>
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpXmlParserCamera.h>
 
@@ -28,67 +29,130 @@ std::string readAll(const std::string &path)
   return ss.str();
 }
 
-//! A matrix node: OpenCV's !!opencv-matrix, or ROS's {rows, cols, data}; row-major values.
-std::vector<double> matrixValues(const cv::FileNode &n, const std::string &key, int &rows, int &cols)
+//! What a camera file says, whatever its syntax.
+struct Fields
 {
-  if (n.empty() || n.isNone())
-    throw Error("no \"" + key + "\"");
-  std::vector<double> v;
-  if (n.isMap() && !n["data"].empty() && n["dt"].empty()) { // ROS
-    rows = static_cast<int>(n["rows"]);
-    cols = static_cast<int>(n["cols"]);
-    const cv::FileNode d = n["data"];
-    if (!d.isSeq())
-      throw Error("\"" + key + ".data\" is not a list");
-    for (auto it = d.begin(); it != d.end(); ++it) {
-      if (!(*it).isReal() && !(*it).isInt())
-        throw Error("\"" + key + ".data\" holds something that is not a number");
-      v.push_back(static_cast<double>(*it));
-    }
-  } else if (n.isSeq()) { // a plain list
-    for (auto it = n.begin(); it != n.end(); ++it) {
-      if (!(*it).isReal() && !(*it).isInt())
-        throw Error("\"" + key + "\" holds something that is not a number");
-      v.push_back(static_cast<double>(*it));
-    }
-    rows = 1;
-    cols = static_cast<int>(v.size());
-  } else {
-    cv::Mat m;
-    try {
-      n >> m;
-    } catch (const cv::Exception &) {
-      m.release();
-    }
-    if (m.empty())
-      throw Error("\"" + key + "\" is not a matrix");
-    m.convertTo(m, CV_64F);
-    rows = m.rows;
-    cols = m.cols;
-    v.assign(m.begin<double>(), m.end<double>());
-  }
-  if (rows * cols != static_cast<int>(v.size()))
-    throw Error("\"" + key + "\" says " + std::to_string(rows) + "x" + std::to_string(cols) + " but holds " +
-                std::to_string(v.size()) + " values");
-  return v;
+  struct Matrix
+  {
+    bool present = false;
+    long long rows = 0, cols = 0;
+    std::vector<double> values;
+  };
+  Matrix K, D;
+  long long width = 0, height = 0; //!< 0: not given
+  std::string distortionModel;
+};
+
+void checkShape(const Fields::Matrix &m, const std::string &key)
+{
+  if (m.rows < 1 || m.cols < 1 || m.rows > 1000 || m.cols > 1000)
+    throw Error("\"" + key + "\" says " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + ": not a matrix of this kind");
+  if (m.rows * m.cols != static_cast<long long>(m.values.size()))
+    throw Error("\"" + key + "\" says " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + " but holds " +
+                std::to_string(m.values.size()) + " values");
 }
 
-CameraIntrinsics fromFileStorage(const std::string &text, bool ros)
+//! YAML (OpenCV's and ROS's) through yaml-cpp: OpenCV's own YAML parser loops forever on some
+//! malformed files (fuzzing found one), yaml-cpp refuses them.
+Fields yamlFields(std::string text)
 {
-  cv::FileStorage fs;
+  if (text.rfind("%YAML:", 0) == 0) // OpenCV's header is not YAML's directive
+    text.erase(0, text.find('\n') == std::string::npos ? text.size() : text.find('\n') + 1);
+  Fields f;
   try {
-    fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
-  } catch (const cv::Exception &e) {
-    throw Error(std::string("it cannot be parsed: ") + e.err);
+    const YAML::Node root = YAML::Load(text);
+    if (!root.IsMap())
+      throw Error("it is not a map of fields");
+    const auto matrix = [&](const char *key, Fields::Matrix &m) {
+      const YAML::Node n = root[key];
+      if (!n)
+        return;
+      m.present = true;
+      if (n.IsSequence()) { // a plain list
+        for (const YAML::Node &x : n)
+          m.values.push_back(x.as<double>());
+        m.rows = 1;
+        m.cols = static_cast<long long>(m.values.size());
+      } else if (n.IsMap() && n["data"] && n["data"].IsSequence() && n["rows"] && n["cols"]) {
+        m.rows = n["rows"].as<long long>();
+        m.cols = n["cols"].as<long long>();
+        for (const YAML::Node &x : n["data"])
+          m.values.push_back(x.as<double>());
+      } else {
+        throw Error(std::string("\"") + key + "\" is not a matrix (rows, cols, data)");
+      }
+      checkShape(m, key);
+    };
+    matrix("camera_matrix", f.K);
+    matrix("distortion_coefficients", f.D);
+    for (const char *key : {"image_width", "image_height"})
+      if (root[key])
+        (key[6] == 'w' ? f.width : f.height) = root[key].as<long long>();
+    if (root["distortion_model"])
+      f.distortionModel = root["distortion_model"].as<std::string>();
+  } catch (const YAML::Exception &e) {
+    throw Error("it cannot be read: " + e.msg);
   }
-  if (!fs.isOpened())
-    throw Error("it cannot be parsed");
+  return f;
+}
+
+//! OpenCV's XML through cv::FileStorage.
+Fields xmlFields(const std::string &text)
+{
+  Fields f;
+  try {
+    cv::FileStorage fs(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
+    if (!fs.isOpened())
+      throw Error("it cannot be parsed");
+    const auto matrix = [&](const char *key, Fields::Matrix &m) {
+      const cv::FileNode n = fs[key];
+      if (n.empty() || n.isNone())
+        return;
+      m.present = true;
+      const cv::FileNode nr = n["rows"], nc = n["cols"], d = n["data"];
+      if (!nr.isInt() || !nc.isInt() || d.empty())
+        throw Error(std::string("\"") + key + "\" is not a matrix (rows, cols, data)");
+      m.rows = static_cast<int>(nr);
+      m.cols = static_cast<int>(nc);
+      if (m.rows < 1 || m.cols < 1 || m.rows > 1000 || m.cols > 1000) // checked before OpenCV allocates (fuzzing found 17 GB asked for)
+        checkShape(m, key);
+      cv::Mat mat;
+      n >> mat;
+      if (mat.empty())
+        throw Error(std::string("\"") + key + "\" is not a matrix");
+      mat.convertTo(mat, CV_64F);
+      m.values.assign(mat.begin<double>(), mat.end<double>());
+      checkShape(m, key);
+    };
+    matrix("camera_matrix", f.K);
+    matrix("distortion_coefficients", f.D);
+    for (const char *key : {"image_width", "image_height"}) {
+      const cv::FileNode n = fs[key];
+      if (n.empty() || n.isNone())
+        continue;
+      if (!n.isInt())
+        throw Error(std::string("\"") + key + "\" must be a positive integer");
+      (key[6] == 'w' ? f.width : f.height) = static_cast<int>(n);
+    }
+  } catch (const cv::Exception &e) {
+    throw Error(std::string("it cannot be read: ") + e.err);
+  } catch (const Error &) {
+    throw;
+  } catch (const std::exception &e) { // OpenCV's parser lets some standard exceptions out
+    throw Error(std::string("it cannot be read (") + e.what() + ")");
+  }
+  return f;
+}
+
+CameraIntrinsics fromFields(const Fields &f, bool ros)
+{
   CameraIntrinsics c;
   c.format = ros ? "ros" : "opencv";
-  int rows = 0, cols = 0;
-  const std::vector<double> K = matrixValues(fs["camera_matrix"], "camera_matrix", rows, cols);
-  if (rows != 3 || cols != 3)
-    throw Error("\"camera_matrix\" must be 3x3, it is " + std::to_string(rows) + "x" + std::to_string(cols));
+  if (!f.K.present)
+    throw Error("no \"camera_matrix\"");
+  if (f.K.rows != 3 || f.K.cols != 3)
+    throw Error("\"camera_matrix\" must be 3x3, it is " + std::to_string(f.K.rows) + "x" + std::to_string(f.K.cols));
+  const std::vector<double> &K = f.K.values;
   for (double x : K)
     if (!std::isfinite(x))
       throw Error("\"camera_matrix\" holds a value that is not finite");
@@ -98,22 +162,18 @@ CameraIntrinsics fromFileStorage(const std::string &text, bool ros)
   if (K[1] != 0 || K[3] != 0 || K[6] != 0 || K[7] != 0 || K[8] != 1)
     throw Error("\"camera_matrix\" is not a camera matrix [fx 0 cx; 0 fy cy; 0 0 1] (a skew is not supported)");
   c.cam.initPersProjWithoutDistortion(K[0], K[4], K[2], K[5]);
-  const cv::FileNode d = fs["distortion_coefficients"];
-  if (!d.empty() && !d.isNone())
-    c.distortion.coefficients = matrixValues(d, "distortion_coefficients", rows, cols);
+  if (f.D.present)
+    c.distortion.coefficients = f.D.values;
   if (ros) {
-    const std::string model = fs["distortion_model"].empty() ? "plumb_bob" : fs["distortion_model"].string();
+    const std::string model = f.distortionModel.empty() ? "plumb_bob" : f.distortionModel;
     if (model != "plumb_bob" && model != "rational_polynomial")
       throw Error("distortion_model \"" + model + "\" is not supported (plumb_bob or rational_polynomial)");
   }
-  for (const char *key : {"image_width", "image_height"}) {
-    const cv::FileNode n = fs[key];
-    if (n.empty() || n.isNone())
-      continue;
-    if (!n.isInt() || static_cast<int>(n) <= 0)
-      throw Error(std::string("\"") + key + "\" must be a positive integer");
-    (key[6] == 'w' ? c.width : c.height) = static_cast<unsigned>(static_cast<int>(n));
-  }
+  for (const long long *v : {&f.width, &f.height})
+    if (*v < 0 || *v > 1000000)
+      throw Error(std::string("\"") + (v == &f.width ? "image_width" : "image_height") + "\" must be a positive integer");
+  c.width = static_cast<unsigned>(f.width);
+  c.height = static_cast<unsigned>(f.height);
   return c;
 }
 
@@ -141,16 +201,6 @@ CameraIntrinsics fromVispXml(const std::string &path, const std::string &name, u
   return c;
 }
 
-//! OpenCV's parser and node readers throw cv::Exception on malformed content: a pm::Error here.
-template <class F> CameraIntrinsics guarded(F &&f)
-{
-  try {
-    return f();
-  } catch (const cv::Exception &e) {
-    throw Error(std::string("it cannot be read: ") + e.err);
-  }
-}
-
 } // namespace
 
 CameraIntrinsics readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h)
@@ -160,16 +210,22 @@ CameraIntrinsics readCameraFile(const std::string &path, const std::string &name
   const std::string text = readAll(path);
   CameraIntrinsics c;
   try {
+    // Text only: OpenCV's XML parser crashes on a NUL byte (fuzzing found it), and no camera file holds control characters.
+    if (text.size() > 1000000)
+      throw Error("it is " + std::to_string(text.size()) + " bytes long: not a camera file");
+    for (unsigned char ch : text)
+      if (ch < 0x20 && ch != '\t' && ch != '\n' && ch != '\r')
+        throw Error("it holds a control character (byte " + std::to_string(static_cast<int>(ch)) + "): not a text file");
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     const bool xml = first != std::string::npos && text[first] == '<';
     if (xml && text.find("<opencv_storage") != std::string::npos)
-      c = guarded([&] { return fromFileStorage(text, false); });
+      c = fromFields(xmlFields(text), false);
     else if (xml && text.find("<camera>") != std::string::npos)
       c = fromVispXml(path, name, w, h);
     else if (text.rfind("%YAML", 0) == 0)
-      c = guarded([&] { return fromFileStorage(text, false); });
+      c = fromFields(yamlFields(text), false);
     else if (text.find("camera_matrix") != std::string::npos)
-      c = guarded([&] { return fromFileStorage("%YAML:1.0\n---\n" + text, true); }); // ROS writes YAML without OpenCV's header
+      c = fromFields(yamlFields(text), true); // ROS's camera_info
     else
       throw Error("not a camera file this program knows (ViSP camera XML, OpenCV FileStorage with camera_matrix, "
                   "ROS camera_info YAML)");

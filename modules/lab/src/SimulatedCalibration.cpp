@@ -21,7 +21,7 @@ StereoRig labRigWithLens(const LensDistortion &lens)
   return rig;
 }
 
-std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::ChessBoard &board, int n,
+std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::Pattern &board, int n,
                                                            const SimulatedCalibrationParams &params,
                                                            const std::function<void()> &step)
 {

@@ -40,6 +40,8 @@ struct ChessBoard : Pattern
     refined to sub-pixel. Throws pm::Error naming \e name unless all are found.
   */
   std::vector<vpImagePoint> findCorners(const vpImage<vpRGBa> &I, const std::string &name) const;
+  PatternDetection detect(const vpImage<vpRGBa> &I, const std::string &name) const override;
+  bool isChessboard() const override { return true; }
 };
 
 } // namespace pm::calib

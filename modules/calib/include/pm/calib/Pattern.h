@@ -27,6 +27,14 @@ struct BoardView
   std::vector<vpImagePoint> corners;    //!< detected corners, for drawing
 };
 
+//! A pattern's features found in an image, without a camera model (what a calibration starts from).
+struct PatternDetection
+{
+  std::vector<int> ids;             //!< each feature's number on the board (chessboard: corner r * cols + c; tags: 4 id + corner)
+  std::vector<vpImagePoint> pixels; //!< where it was found
+  std::vector<vpPoint> points;      //!< where it is on the board (metres, oX, oY, 0)
+};
+
 class Pattern
 {
 public:
@@ -52,6 +60,14 @@ public:
   */
   virtual BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
                          const std::string &name, bool whole = false) const;
+  /*!
+    The pattern's features in \e I, numbered and placed on the board, with no camera model.
+    Throws pm::Error naming the image (\e name) when too little of it is found (a chessboard: not
+    whole; tags: fewer than the board's minimum).
+  */
+  virtual PatternDetection detect(const vpImage<vpRGBa> &I, const std::string &name) const = 0;
+  //! True for a chessboard, whose edges tell how sharp a view is (cv::estimateChessboardSharpness).
+  virtual bool isChessboard() const { return false; }
 };
 
 //! Pattern points (oX, oY, oZ, metres) matched with the pixels where they were found.

@@ -1,11 +1,12 @@
 #pragma once
 /*!
   \file RigCalibration.h
-  Calibrating a stereo rig from image pairs of a chessboard: OpenCV's corner finder
-  (findChessboardCorners, cornerSubPix) on each image, a sharpness check
-  (estimateChessboardSharpness), cv::calibrateCamera for each camera (intrinsics and five
+  Calibrating a stereo rig from image pairs of a chessboard or an AprilTag board: the pattern's
+  features in each image (Pattern::detect: OpenCV's findChessboardCorners and cornerSubPix, or
+  vpDetectorAprilTag's tag corners, numbered so that a board seen in part still pairs up), a
+  sharpness check for a chessboard (estimateChessboardSharpness), cv::calibrateCamera for each camera (intrinsics and five
   distortion coefficients k1, k2, p1, p2, k3), then cv::stereoCalibrate with those intrinsics
-  fixed for the pose of the right camera in the left one. Each camera's intrinsics use every view
+  fixed for the pose of the right camera in the left one (on the features both cameras found). Each camera's intrinsics use every view
   where that camera sees the whole board sharply (a pair whose other image misses it still helps
   cover the image's edges, where the lens bends most); the stereo pose uses the pairs where both do. Nothing of the calibration is written
   by hand: this is the bookkeeping around OpenCV's, with every rejected view and its reason.
@@ -28,6 +29,7 @@
 #include <visp3/core/vpImagePoint.h>
 #include <visp3/core/vpRGBa.h>
 #include "pm/calib/ChessBoard.h"
+#include "pm/calib/TagBoard.h"
 #include "pm/core/StereoRig.h"
 
 namespace pm::calib {
@@ -75,7 +77,7 @@ struct RigCalibration
   Calibrates the rig. Throws pm::Error for an invalid board or parameters, an empty list, or
   fewer than params.minPairs usable pairs (the message lists the rejected pairs and why).
 */
-RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const ChessBoard &board,
+RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pattern &board,
                             const RigCalibrationParams &params = RigCalibrationParams());
 
 /*!

@@ -41,6 +41,11 @@ struct TagBoard : Pattern
   BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
                  bool whole = false) const override;
   using Pattern::find; // the raw image of a lens with distortion: undistorted first
+  /*!
+    Each tag found (of this board's ids) gives its 4 corners, numbered 4 id + k with k the tag
+    frame's corner (see corners()): vpDetectorAprilTag lists a tag's corners in the reverse of that order.
+  */
+  PatternDetection detect(const vpImage<vpRGBa> &I, const std::string &name) const override;
 };
 
 } // namespace pm::calib

@@ -30,7 +30,7 @@ StereoRig labRigWithLens(const LensDistortion &lens);
   \e n stereo pairs of \e board seen by \e rig at random poses around 500 mm (spread so that the
   corners cover the images, where the distortion is strongest). \e step is called after each pair.
 */
-std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::ChessBoard &board, int n,
+std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::Pattern &board, int n,
                                                            const SimulatedCalibrationParams &params,
                                                            const std::function<void()> &step = {});
 
