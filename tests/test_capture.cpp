@@ -1,14 +1,16 @@
 // Live input: two video streams read through OpenCV's VideoCapture and paired by timestamp (the
 // lab writes the videos), streams of other rates, lengths and sizes, a source that does not open,
-// pm-track on them, and its ViSP window under Xvfb.
+// pm-track on them, and its ViSP window under Xvfb; a live stream that stalls.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+#include <unistd.h>
 
 #include "TestSupport.h"
 #include "pm/capture/ImageSequenceSource.h"
@@ -248,4 +250,46 @@ TEST(PmMakeModel, MakesAStereoModelFromTwoVideoStreams)
   const auto ask = runProgram("pm-make-model", src + " --out " + d.file("x"));
   EXPECT_NE(ask.err.find("no terminal to ask on"), std::string::npos) << ask.err;
   EXPECT_FALSE(std::filesystem::exists(d.file("x")));
+}
+
+TEST(VideoCapture, ALiveStreamThatStallsIsAnErrorAfterItsTimeout)
+{
+  // Two GStreamer pipelines read raw frames from pipes: three frames each, then nothing (the
+  // camera hangs without closing). The three pairs come; the fourth read gives up after --stall-s.
+  std::string pipeline[2];
+  int writeEnd[2] = {-1, -1};
+  const std::vector<unsigned char> frame(64 * 48 * 3, 128);
+  for (int k = 0; k < 2; ++k) {
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    writeEnd[k] = fds[1];
+    for (int i = 0; i < 3; ++i)
+      ASSERT_EQ(::write(fds[1], frame.data(), frame.size()), static_cast<ssize_t>(frame.size()));
+    pipeline[k] = "fdsrc fd=" + std::to_string(fds[0]) +
+                  " ! rawvideoparse width=64 height=48 format=bgr framerate=30/1 ! videoconvert ! video/x-raw,format=BGR ! appsink";
+  }
+  pm::capture::VideoCaptureParams p;
+  p.stallTimeoutS = 0.5;
+  std::unique_ptr<pm::capture::VideoCaptureSource> src;
+  try {
+    src = std::make_unique<pm::capture::VideoCaptureSource>(pipeline[0], pipeline[1], p);
+  } catch (const pm::Error &e) {
+    GTEST_SKIP() << "this OpenCV has no GStreamer pipelines: " << e.what();
+  }
+  pm::capture::StereoFrame f;
+  int n = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string e = errorOf([&] {
+    while (src->next(f))
+      ++n;
+  });
+  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(n, 3);
+  EXPECT_NE(e.find("stalled: no frame for 0.5"), std::string::npos) << e;
+  EXPECT_GE(waited, 0.5);
+  EXPECT_LT(waited, 3.0);
+  EXPECT_NE(errorOf([&] { src->next(f); }).find("stalled earlier"), std::string::npos); // and stays refused
+  // The reading thread still waits on the pipe: close it so that the thread can end.
+  for (int w : writeEnd)
+    ::close(w);
 }

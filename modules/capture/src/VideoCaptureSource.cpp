@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
+#include <mutex>
+#include <thread>
 #include <filesystem>
 #include <sstream>
 
@@ -25,11 +28,22 @@ double nowMs()
 }
 } // namespace
 
+//! One read of a live stream, done by a thread of its own so that a camera that never answers can be given up on.
+struct PendingRead
+{
+  std::mutex mutex;
+  std::condition_variable done;
+  bool finished = false, ok = false;
+  cv::Mat frame;
+};
+
 struct VideoCaptureSource::Stream
 {
   std::string spec, side;
-  cv::VideoCapture cap;
-  bool live = false;       //!< a camera (device index or /dev path), not a file
+  std::shared_ptr<cv::VideoCapture> capture = std::make_shared<cv::VideoCapture>();
+  cv::VideoCapture &cap = *capture;
+  bool live = false;       //!< a camera (device index, /dev path) or a pipeline, not a file
+  bool stalled = false;    //!< a read never came back: the stream cannot be used again
   bool held = false, ended = false;
   cv::Mat frame;
   double t = 0;            //!< the held frame's time (ms)
@@ -37,13 +51,39 @@ struct VideoCaptureSource::Stream
   double lastT = -1;
 
   //! Reads the next frame into the hold; false at the end of the stream.
+  //! A live stream's read, given up after \e timeoutS (the reading thread is left to the driver, holding the capture).
+  bool readLive(double timeoutS)
+  {
+    if (stalled)
+      throw Error("the " + side + " source '" + spec + "' stalled earlier");
+    auto pending = std::make_shared<PendingRead>();
+    std::shared_ptr<cv::VideoCapture> c = capture;
+    std::thread([pending, c] {
+      cv::Mat f;
+      bool ok = false;
+      try {
+        ok = c->read(f);
+      } catch (...) {
+        ok = false;
+      }
+      std::lock_guard<std::mutex> lock(pending->mutex);
+      pending->ok = ok;
+      pending->frame = f;
+      pending->finished = true;
+      pending->done.notify_one();
+    }).detach();
+    std::unique_lock<std::mutex> lock(pending->mutex);
+    if (!pending->done.wait_for(lock, std::chrono::duration<double>(timeoutS), [&] { return pending->finished; })) {
+      stalled = true;
+      throw Error("the " + side + " source '" + spec + "' stalled: no frame for " + std::to_string(timeoutS) + " s");
+    }
+    frame = pending->frame;
+    return pending->ok;
+  }
+
   bool read(const VideoCaptureParams &p, SourceStats &stats, int k)
   {
-    const double t0 = nowMs();
-    const bool ok = cap.read(frame);
-    const double waited = nowMs() - t0;
-    if (live && waited > p.stallTimeoutS * 1e3)
-      throw Error("the " + side + " camera '" + spec + "' stalled: no frame for " + std::to_string(waited / 1e3) + " s");
+    const bool ok = live ? readLive(p.stallTimeoutS) : cap.read(frame);
     if (!ok || frame.empty()) {
       ended = true;
       stats.problems.push_back("the " + side + " stream '" + spec + "' ended after " + std::to_string(stats.framesRead[k]) + " frames");
@@ -78,7 +118,7 @@ VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::strin
     Stream &s = *m_s[k];
     s.spec = specs[k];
     s.side = k ? "right" : "left";
-    s.live = allDigits(s.spec) || s.spec.rfind("/dev/", 0) == 0;
+    s.live = allDigits(s.spec) || s.spec.rfind("/dev/", 0) == 0 || s.spec.find('!') != std::string::npos;
     const bool pipeline = s.spec.find('!') != std::string::npos;
     if (!allDigits(s.spec) && !pipeline && !std::filesystem::exists(s.spec))
       throw Error("cannot open the " + s.side + " source '" + s.spec + "': no such file or device");
@@ -88,7 +128,7 @@ VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::strin
         opened = s.cap.open(std::stoi(s.spec), cv::CAP_ANY);
       else if (pipeline)
         opened = s.cap.open(s.spec, cv::CAP_GSTREAMER);
-      else if (s.live)
+      else if (s.spec.rfind("/dev/", 0) == 0)
         opened = s.cap.open(s.spec, cv::CAP_V4L2);
       else // a video file: FFmpeg, else GStreamer (not every backend: some probe USB cameras for a file name)
         opened = s.cap.open(s.spec, cv::CAP_FFMPEG) || s.cap.open(s.spec, cv::CAP_GSTREAMER);

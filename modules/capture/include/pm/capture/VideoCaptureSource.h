@@ -10,7 +10,9 @@
   pair, otherwise the older one is dropped and counted as unpaired, so streams of different
   rates still pair (the faster one's extra frames dropped). When a backend gives no timestamps,
   the time of arrival is used. The source ends when either stream ends; a camera that delivers
-  nothing for stallTimeoutS, or two streams of different image sizes, are errors.
+  nothing for stallTimeoutS, or two streams of different image sizes, are errors. A live stream
+  (a device or a pipeline) is read by a thread of its own each time, so that a driver that never
+  returns is given up on; a file is read directly.
 
       pm::capture::VideoCaptureSource src("/dev/video0", "/dev/video2");
       pm::capture::StereoFrame f;
