@@ -23,6 +23,8 @@ inline const std::filesystem::path &scratchDir()
 {
   static const std::filesystem::path dir = [] {
     const auto d = std::filesystem::temp_directory_path() / ("pm-fuzz-" + std::to_string(::getpid()));
+    std::error_code ec;
+    std::filesystem::remove_all(d, ec); // a folder left by an earlier process of the same pid (its files would be reused)
     std::filesystem::create_directories(d);
     return d;
   }();

@@ -5,7 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
 #include <vector>
+
+#include <unistd.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size);
 extern "C" __attribute__((weak)) int LLVMFuzzerInitialize(int *argc, char ***argv);
@@ -29,5 +32,7 @@ int main(int argc, char **argv)
     }
   }
   std::printf("%zu inputs replayed, none crashed\n", n);
+  std::error_code ec; // the targets' scratch folder (FuzzFile.h), if one was made
+  std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("pm-fuzz-" + std::to_string(::getpid())), ec);
   return n > 0 ? 0 : 1;
 }
