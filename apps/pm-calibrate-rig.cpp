@@ -142,17 +142,29 @@ int main(int argc, char **argv)
                           {"reprojection_error_rms_px", {err.reprojectionRmsPx[0], err.reprojectionRmsPx[1]}}};
     }
     pm::io::StagedFiles files(out);
-    vpImage<vpRGBa> coverage = pm::calib::coverageImage(c, arrowGain);
-    std::ostringstream legend;
-    legend << "left: corners found (a colour per view), residuals x" << arrowGain << " (red)";
-    pm::app::drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
-    pm::app::drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
-    pm::io::writeImage(coverage, files.stage("coverage.png"));
-    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
-    files.commit();
-    // The rig's own files are written last, each one whole (saveRig stages its own).
-    pm::io::saveRig(c.rig, (std::filesystem::path(out) / "rig.json").string(), "cameras.xml",
-                    "calibrated by pm-calibrate-rig from " + source);
+    // The rig's files (saveRig names them after rig.json) go to a hidden folder first and join the
+    // report only when everything is written: no half-written output.
+    const std::filesystem::path hidden = std::filesystem::path(files.dir()) / ".partial-rig";
+    std::error_code ec;
+    std::filesystem::remove_all(hidden, ec);
+    std::filesystem::create_directories(hidden);
+    try {
+      pm::io::saveRig(c.rig, (hidden / "rig.json").string(), "cameras.xml", "calibrated by pm-calibrate-rig from " + source);
+      vpImage<vpRGBa> coverage = pm::calib::coverageImage(c, arrowGain);
+      std::ostringstream legend;
+      legend << "left: corners found (a colour per view), residuals x" << arrowGain << " (red)";
+      pm::app::drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
+      pm::app::drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
+      pm::io::writeImage(coverage, files.stage("coverage.png"));
+      pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+      files.commit();
+      for (const auto &e : std::filesystem::directory_iterator(hidden))
+        std::filesystem::rename(e.path(), std::filesystem::path(files.dir()) / e.path().filename());
+    } catch (...) {
+      std::filesystem::remove_all(hidden, ec);
+      throw;
+    }
+    std::filesystem::remove_all(hidden, ec);
     if (!quiet) {
       std::cout << std::fixed << std::setprecision(4) << "stereo rig calibration (" << board.describe() << "; " << source
                 << ": " << c.pairsUsed << " pairs for the stereo pose, views " << c.viewsUsed[0] << " left and "

@@ -37,7 +37,7 @@ void expectOneLineError(const pm::test::RunResult &r, const std::string &fragmen
 TEST(Apps, HelpExitsZeroAndShowsDefaults)
 {
   for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
-                        "pm-calib-baseline", "pm-bench"}) {
+                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-bench"}) {
     const auto r = runProgram(p, "--help");
     EXPECT_EQ(r.status, 0) << p;
     EXPECT_NE(r.out.find(std::string(p) == "pm-bench" ? "benchmark" : "--out"), std::string::npos) << p;
