@@ -123,11 +123,8 @@ int main(int argc, char **argv)
         tg = pm::io::readColorImage(leftPhoto);
       }
       pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bg, bgR, tg, tgR, smp);
-      if (!rig.left.distortion.isNone()) { // the region and depths are the ideal image's: draw on it
-        vpImage<vpRGBa> u;
-        pm::UndistortMap(rig.left).undistort(tg, u);
-        tg = u;
-      }
+      if (!rig.left.distortion.isNone()) // the region and depths are the ideal image's: draw on it
+        tg = pm::UndistortMap(rig.left).undistorted(tg);
       build.model = std::move(b.model);
       build.region = std::move(b.regionLeft);
       depth = std::move(b.depthLeft);
@@ -151,11 +148,8 @@ int main(int argc, char **argv)
       }
       if (!cam.distortion.isNone()) { // the lens corrected first: the model is the ideal camera's
         const pm::UndistortMap map(cam);
-        vpImage<vpRGBa> u;
-        map.undistort(bg, u);
-        bg = u;
-        map.undistort(tg, u);
-        tg = u;
+        bg = map.undistorted(bg);
+        tg = map.undistorted(tg);
       }
       build = pm::buildPhotoModel(bg, tg, cam.cam, distanceMm, mp);
       source = "photos " + background + " + " + photo;
@@ -175,11 +169,8 @@ int main(int argc, char **argv)
                  : pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
       bg = std::move(sm.background);
       tg = std::move(sm.photo);
-      if (stereo && !rig.left.distortion.isNone()) {
-        vpImage<vpRGBa> u;
-        pm::UndistortMap(rig.left).undistort(tg, u);
-        tg = u;
-      }
+      if (stereo && !rig.left.distortion.isNone())
+        tg = pm::UndistortMap(rig.left).undistorted(tg);
       build = std::move(sm.build);
       depth = std::move(sm.depth);
       dropped = std::move(sm.dropped);

@@ -226,12 +226,16 @@ TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
   EXPECT_DOUBLE_EQ(x.cam.get_px(), 700);
   ASSERT_EQ(x.distortion.coefficients.size(), 5u);
   EXPECT_DOUBLE_EQ(x.distortion.coefficients[0], -0.2);
+  // Writes the text as a camera file and reads it.
+  const auto read = [&](const std::string &name, const std::string &text) {
+    pm::test::writeText(d.file(name), text);
+    return pm::io::readCameraFile(d.file(name), "left", 640, 480);
+  };
   // ROS camera_info.
-  pm::test::writeText(d.file("ros.yaml"), "image_width: 640\nimage_height: 480\ncamera_name: narrow_stereo/left\n"
-                                          "camera_matrix:\n  rows: 3\n  cols: 3\n  data: [535.9, 0, 342.3, 0, 536.1, 235.6, 0, 0, 1]\n"
-                                          "distortion_model: plumb_bob\ndistortion_coefficients:\n  rows: 1\n  cols: 5\n"
-                                          "  data: [-0.266, -0.0386, 0.00178, -0.00028, 0.238]\n");
-  const auto r = pm::io::readCameraFile(d.file("ros.yaml"), "left", 640, 480);
+  const auto r = read("ros.yaml", "image_width: 640\nimage_height: 480\ncamera_name: narrow_stereo/left\n"
+                                  "camera_matrix:\n  rows: 3\n  cols: 3\n  data: [535.9, 0, 342.3, 0, 536.1, 235.6, 0, 0, 1]\n"
+                                  "distortion_model: plumb_bob\ndistortion_coefficients:\n  rows: 1\n  cols: 5\n"
+                                  "  data: [-0.266, -0.0386, 0.00178, -0.00028, 0.238]\n");
   EXPECT_EQ(r.format, "ros");
   EXPECT_DOUBLE_EQ(r.cam.get_py(), 536.1);
   EXPECT_DOUBLE_EQ(r.distortion.coefficients[4], 0.238);
@@ -243,12 +247,11 @@ TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
     EXPECT_NEAR(o.distortion.coefficients[0], -0.26637, 1e-5);
   }
   // OpenCV's XML form of the same.
-  pm::test::writeText(d.file("cv.xml"), "<?xml version=\"1.0\"?>\n<opencv_storage>\n<camera_matrix type_id=\"opencv-matrix\">"
-                                        "<rows>3</rows><cols>3</cols><dt>d</dt><data>536. 0. 342. 0. 537. 235. 0. 0. 1.</data>"
-                                        "</camera_matrix>\n<distortion_coefficients type_id=\"opencv-matrix\"><rows>4</rows>"
-                                        "<cols>1</cols><dt>d</dt><data>-0.2 0.01 0.001 0.002</data></distortion_coefficients>\n"
-                                        "</opencv_storage>\n");
-  const auto cx = pm::io::readCameraFile(d.file("cv.xml"), "left", 640, 480);
+  const auto cx = read("cv.xml", "<?xml version=\"1.0\"?>\n<opencv_storage>\n<camera_matrix type_id=\"opencv-matrix\">"
+                                "<rows>3</rows><cols>3</cols><dt>d</dt><data>536. 0. 342. 0. 537. 235. 0. 0. 1.</data>"
+                                "</camera_matrix>\n<distortion_coefficients type_id=\"opencv-matrix\"><rows>4</rows>"
+                                "<cols>1</cols><dt>d</dt><data>-0.2 0.01 0.001 0.002</data></distortion_coefficients>\n"
+                                "</opencv_storage>\n");
   EXPECT_EQ(cx.format, "opencv");
   EXPECT_DOUBLE_EQ(cx.cam.get_py(), 537);
   EXPECT_EQ(cx.distortion.coefficients, (std::vector<double>{-0.2, 0.01, 0.001, 0.002}));

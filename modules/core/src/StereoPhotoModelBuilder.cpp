@@ -239,12 +239,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
     StereoRig ideal = rig;
     ideal.left.distortion = ideal.right.distortion = LensDistortion();
     const UndistortMap mapL(rig.left), mapR(rig.right);
-    vpImage<vpRGBa> u[4];
-    mapL.undistort(bgL, u[0]);
-    mapR.undistort(bgR, u[1]);
-    mapL.undistort(L, u[2]);
-    mapR.undistort(R, u[3]);
-    return buildStereoPhotoModel(ideal, u[0], u[1], u[2], u[3], params);
+    return buildStereoPhotoModel(ideal, mapL.undistorted(bgL), mapR.undistorted(bgR), mapL.undistorted(L), mapR.undistorted(R), params);
   }
 
   StereoPhotoModelBuild out;

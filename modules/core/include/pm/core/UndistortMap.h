@@ -37,6 +37,13 @@ public:
     pixel falls off the raw image). Throws pm::Error if \e raw's size is not the camera's.
   */
   void undistort(const vpImage<vpRGBa> &raw, vpImage<vpRGBa> &ideal) const;
+  //! The same, returned.
+  vpImage<vpRGBa> undistorted(const vpImage<vpRGBa> &raw) const
+  {
+    vpImage<vpRGBa> ideal;
+    undistort(raw, ideal);
+    return ideal;
+  }
   //! Fraction of the ideal image that the raw image covers.
   double coverage() const;
 
