@@ -137,6 +137,10 @@ int main(int argc, char **argv)
   app.add_option("--outline-tolerance-px", outlineTolPx, "simplification of the outline for ViSP's trackers (px of the photo)")
       ->check(CLI::Range(0.1, 50.0));
   app.add_option("--distance-mm", distanceMm, "photo distance of the photo-model")->check(CLI::PositiveNumber);
+  double viewTurnDeg = 0;
+  app.add_option("--view-turn-deg", viewTurnDeg, "ours-3d: the stereo model's four further photo pairs, the hand "
+                 "turned by this about its x and y axes around the toy (0: one pair)")
+      ->check(CLI::Range(0.0, 45.0));
   app.add_option("--steady-variant", steadyVariant, "ours-steady: ours with this fraction of the budget on steady frames "
                                                    "(see --steady-budget)")->check(CLI::Range(0.01, 1.0));
   pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(5.0));
@@ -163,7 +167,7 @@ int main(int argc, char **argv)
     // distance; its model frame (the 3-D centroid of S_in) is not the flat model's, so each
     // tracker is scored against the truth of its own model frame.
     const bool want3d = std::find(trackers.begin(), trackers.end(), "ours-3d") != trackers.end();
-    const pm::sim::SimulatedPhotoModel sm3d = want3d ? pm::sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm)
+    const pm::sim::SimulatedPhotoModel sm3d = want3d ? pm::sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm, pm::StereoModelParams(), viewTurnDeg)
                                                      : pm::sim::SimulatedPhotoModel();
 
     pm::io::StagedFiles files(out);

@@ -77,6 +77,12 @@ int main(int argc, char **argv)
   optLS->needs(optRS)->excludes(optLB)->excludes(optTarget)->excludes(optTex);
   optRS->needs(optLS);
   auto *optStereo = app.add_flag("--stereo", stereo, "simulator: the stereo model (the rig's two cameras, depth per point)");
+  app.add_flag("--right-view", smp.rightView, "stereo: add the right camera's own view (S_in and S_out sampled in the "
+               "right photo, scored in the right camera; a version 3 model file)");
+  double viewTurnDeg = 0;
+  app.add_option("--view-turn-deg", viewTurnDeg, "simulator, --stereo: four further photo pairs with the hand turned by "
+                 "this about its x and y axes around the toy (a multi-view model; 0: one pair)")
+      ->check(CLI::Range(0.0, 45.0));
   optStereo->excludes(optBg);
   app.add_option("--backdrop-mm", smp.backdropMm, "stereo: the backdrop's distance from the left camera (0: measured "
                  "from the background pair; give it for a plain backdrop)")->check(CLI::NonNegativeNumber);
@@ -165,7 +171,7 @@ int main(int argc, char **argv)
       }
       const pm::sim::Scene scene(shape, sp);
       pm::sim::SimulatedPhotoModel sm =
-          stereo ? pm::sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm, smp)
+          stereo ? pm::sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm, smp, viewTurnDeg)
                  : pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
       bg = std::move(sm.background);
       tg = std::move(sm.photo);

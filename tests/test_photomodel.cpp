@@ -1,6 +1,9 @@
 // Photo-model generation (Fig. 4), its file format and its errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+
 #include <cmath>
 
 #include "TestSupport.h"
@@ -292,39 +295,134 @@ TEST(StereoPhotoModel, ABoxTopLiesAtItsHeightAndTheOriginAtItsCentroid)
   EXPECT_GT(outZ[outZ.size() / 2], 485.0) << "median depth of S_out";
 }
 
-TEST(StereoPhotoModel, FileVersionTwoKeepsDepthAndAFlatModelStaysVersionOne)
+TEST(StereoPhotoModel, FileVersionsTwoAndThreeKeepDepthAndViewsAndAFlatModelStaysVersionOne)
 {
   const pm::StereoRig rig = stereoLabRig();
-  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(pm::sim::Scene(pm::sim::makeTarget("C12", 0.5)), rig, 500);
-  const pm::PhotoModel &m = sm.build.model;
+  const pm::sim::Scene crab(pm::sim::makeTarget("C12", 0.5));
+  pm::StereoModelParams leftOnly;
+  leftOnly.rightView = false;
+  const pm::PhotoModel one = pm::sim::makeSimulatedStereoPhotoModel(crab, rig, 500, leftOnly).build.model;
+  pm::StereoModelParams twoViews;
+  twoViews.rightView = true;
+  const pm::PhotoModel two = pm::sim::makeSimulatedStereoPhotoModel(crab, rig, 500, twoViews).build.model;
+  ASSERT_TRUE(one.views.empty());
+  ASSERT_EQ(two.views.size(), 1u); // the right camera's own view
   pm::test::TempDir dir("model2");
-  pm::io::savePhotoModel(m, dir.file("m.json"));
-  EXPECT_NE(pm::test::readText(dir.file("m.json")).find("\"version\":2"), std::string::npos);
-  const pm::PhotoModel r = pm::io::loadPhotoModel(dir.file("m.json"));
-  ASSERT_EQ(r.inner.size(), m.inner.size());
-  ASSERT_EQ(r.outer.size(), m.outer.size());
-  for (std::size_t i = 0; i < m.inner.size(); ++i) {
-    EXPECT_FLOAT_EQ(r.inner[i].z, m.inner[i].z);
-    EXPECT_FLOAT_EQ(r.inner[i].hue, m.inner[i].hue);
+  auto same = [](const std::vector<pm::ModelPoint> &a, const std::vector<pm::ModelPoint> &b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_FLOAT_EQ(a[i].x, b[i].x);
+      EXPECT_FLOAT_EQ(a[i].z, b[i].z);
+      EXPECT_FLOAT_EQ(a[i].hue, b[i].hue);
+      EXPECT_FLOAT_EQ(a[i].v, b[i].v);
+    }
+  };
+  for (const pm::PhotoModel *m : {&one, &two}) {
+    pm::io::savePhotoModel(*m, dir.file("m.json"));
+    const std::string version = m->views.empty() ? "\"version\":2" : "\"version\":3";
+    EXPECT_NE(pm::test::readText(dir.file("m.json")).find(version), std::string::npos) << version;
+    const pm::PhotoModel r = pm::io::loadPhotoModel(dir.file("m.json"));
+    same(r.inner, m->inner);
+    same(r.outer, m->outer);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_DOUBLE_EQ(r.originInHandMm[i], m->originInHandMm[i]);
+      EXPECT_DOUBLE_EQ(r.cameraMm[i], m->views.empty() ? 0.0 : m->cameraMm[i]);
+    }
+    EXPECT_EQ(r.nInDropped, m->nInDropped);
+    ASSERT_EQ(r.views.size(), m->views.size());
+    for (std::size_t k = 0; k < r.views.size(); ++k) {
+      same(r.views[k].inner, m->views[k].inner);
+      same(r.views[k].outer, m->views[k].outer);
+      for (int i = 0; i < 3; ++i)
+        EXPECT_DOUBLE_EQ(r.views[k].cameraMm[i], m->views[k].cameraMm[i]);
+    }
   }
-  for (std::size_t i = 0; i < m.outer.size(); ++i)
-    EXPECT_FLOAT_EQ(r.outer[i].z, m.outer[i].z);
-  for (int i = 0; i < 3; ++i)
-    EXPECT_DOUBLE_EQ(r.originInHandMm[i], m.originInHandMm[i]);
-  EXPECT_EQ(r.nInDropped, m.nInDropped);
+  // The views' cameras are the rig's, in the model frame: the left and the right camera's centres.
+  for (unsigned i = 0; i < 3; ++i) {
+    EXPECT_NEAR(two.cameraMm[i], rig.left.hMc[i][3] * 1e3 - two.originInHandMm[i], 1e-9);
+    EXPECT_NEAR(two.views[0].cameraMm[i], rig.right.hMc[i][3] * 1e3 - two.originInHandMm[i], 1e-9);
+  }
   // A flat model is written as before: version 1, five numbers a point.
   const Disc d = redDisc();
   const std::string flat = pm::io::photoModelToJson(pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
   EXPECT_NE(flat.find("\"version\":1"), std::string::npos);
   EXPECT_EQ(flat.find("origin_in_hand_mm"), std::string::npos);
-  // A version 2 file with points of five numbers, or a version 3, is refused with pm::Error.
-  pm::test::writeText(dir.file("bad.json"), pm::test::readText(dir.file("m.json")).replace(
-                                                pm::test::readText(dir.file("m.json")).find("\"version\":2"), 11, "\"version\":3"));
-  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad.json")); }).find("version"), std::string::npos);
+  // Refused with pm::Error: a version 4; a version 3 without views or without a view's camera; a
+  // version 2 file with points of five numbers.
+  const std::string v3 = pm::test::readText(dir.file("m.json"));
+  auto refused = [&](std::string text, const std::string &from, const std::string &to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at == std::string::npos)
+      return std::string();
+    text.replace(at, from.size(), to);
+    pm::test::writeText(dir.file("bad.json"), text);
+    return pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad.json")); });
+  };
+  EXPECT_NE(refused(v3, "\"version\":3", "\"version\":4").find("version"), std::string::npos);
+  EXPECT_NE(refused(v3, "\"views\":[", "\"viewz\":[").find("views"), std::string::npos);
+  EXPECT_NE(refused(v3, "\"camera_mm\":[", "\"camera_mm\":[0,0,0],\"unused\":[").find("camera"), std::string::npos);
   std::string v2five = pm::io::photoModelToJson(pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
   v2five.replace(v2five.find("\"version\":1"), 11, "\"version\":2");
   pm::test::writeText(dir.file("bad2.json"), v2five);
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad2.json")); }), "");
+}
+
+TEST(StereoPhotoModel, FurtherPairsAddTheirViewsInTheModelFrame)
+{
+  // The poster box (whose depths the matching gets within 0.2 mm) photographed from five hand poses
+  // (ahead, then turned by 15 deg about the hand's x and y axes around it): nine views, each the
+  // same box in the same model frame.
+  const pm::StereoRig rig = stereoLabRig();
+  const pm::sim::Scene box(pm::sim::makeTarget("R1", 0.5));
+  pm::StereoModelParams twoViews;
+  twoViews.rightView = true;
+  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(box, rig, 500, twoViews, 15);
+  const pm::PhotoModel &m = sm.build.model;
+  ASSERT_EQ(m.views.size(), 9u);
+  auto unit = [](const double c[3]) {
+    const double n = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    return std::array<double, 3>{c[0] / n, c[1] / n, c[2] / n};
+  };
+  const auto left0 = unit(m.cameraMm), right0 = unit(m.views[0].cameraMm);
+  for (std::size_t k = 1; k < m.views.size(); ++k) {
+    const pm::ModelView &v = m.views[k];
+    // Its camera: the first pair's left or right camera turned by 15 deg about the toy.
+    const auto c = unit(v.cameraMm), c0 = k % 2 ? left0 : right0;
+    const double angle = std::acos(std::min(1.0, c[0] * c0[0] + c[1] * c0[1] + c[2] * c0[2])) * 180 / M_PI;
+    EXPECT_NEAR(angle, 15.0, 1.0) << "view " << k;
+    // Its points lie on the first view's surface: half of them nearer to its nearest point than a
+    // point of the same surface can be from a grid of the sampling step (step / sqrt 2; the step is
+    // 8 px, 5 mm at 470 mm), with no offset in depth (a wrong motion would put them tens of
+    // millimetres off).
+    const double stepMm = pm::PhotoModelParams().stepPx * 470 / rig.left.cam.get_px();
+    std::vector<double> dist, dz;
+    for (const pm::ModelPoint &p : v.inner) {
+      double best = 1e30, z = 0;
+      for (const pm::ModelPoint &r : m.inner) {
+        const double d2 = (p.x - r.x) * (p.x - r.x) + (p.y - r.y) * (p.y - r.y) + (p.z - r.z) * (p.z - r.z);
+        if (d2 < best) {
+          best = d2;
+          z = p.z - r.z;
+        }
+      }
+      dist.push_back(std::sqrt(best));
+      dz.push_back(z);
+    }
+    std::sort(dist.begin(), dist.end());
+    std::sort(dz.begin(), dz.end());
+    EXPECT_LT(dist[dist.size() / 2], stepMm / std::sqrt(2.0)) << "view " << k;
+    EXPECT_LT(std::fabs(dz[dz.size() / 2]), 0.5) << "view " << k;
+  }
+  // A further pair that cannot be built names itself; nothing is returned.
+  const StereoPhotos p = stereoPhotos(pm::sim::Scene(pm::sim::makeTarget("C12", 0.5)), rig, 500);
+  std::vector<pm::StereoViewPair> more(2);
+  for (pm::StereoViewPair &q : more)
+    q = {p.bgL, p.bgR, p.L, p.R, vpHomogeneousMatrix()};
+  more[1].right = p.bgR; // the toy missing from its right photo
+  const std::string e = pm::test::errorOf([&] { pm::buildStereoPhotoModel(rig, p.bgL, p.bgR, p.L, p.R, more); });
+  EXPECT_NE(e.find("view pair 3"), std::string::npos) << e;
+  EXPECT_NE(e.find("right view"), std::string::npos) << e;
 }
 
 TEST(StereoPhotoModel, BadInputIsAClearError)

@@ -34,6 +34,12 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
                "point gets its relief); without it the paper's flat model");
   app.add_option("--distance-mm", c.distanceMm, "simulator: the toy's distance when its photos are taken (the flat "
                  "model's photo distance)")->check(CLI::PositiveNumber);
+  app.add_flag("--right-view", c.rightView, "simulator, --stereo: add the right camera's own views (S_in and S_out "
+               "sampled in the right photos, scored in the right camera); without it both cameras are scored with the "
+               "left photos' points");
+  app.add_option("--view-turn-deg", c.viewTurnDeg, "simulator, --stereo: four further photo pairs with the hand "
+                 "turned by this about its x and y axes around the toy (a multi-view model; 0: one pair)")
+      ->check(CLI::Range(0.0, 45.0));
 }
 
 sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c)
@@ -41,7 +47,8 @@ sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &
   if (c.stereo) {
     StereoModelParams sp;
     sp.photo = c.photo;
-    return sim::makeSimulatedStereoPhotoModel(scene, rig, c.distanceMm, sp);
+    sp.rightView = c.rightView;
+    return sim::makeSimulatedStereoPhotoModel(scene, rig, c.distanceMm, sp, c.viewTurnDeg);
   }
   return sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, c.distanceMm, c.photo);
 }

@@ -8,6 +8,28 @@ namespace pm {
 
 namespace {
 bool finite(float a) { return std::isfinite(a); }
+
+void validatePoints(const std::vector<ModelPoint> &inner, const std::vector<ModelPoint> &outer, const std::string &where)
+{
+  for (const auto *set : {&inner, &outer}) {
+    const char *name = set == &inner ? "S_in" : "S_out";
+    for (std::size_t i = 0; i < set->size(); ++i) {
+      const ModelPoint &p = (*set)[i];
+      if (!finite(p.x) || !finite(p.y) || !finite(p.z) || !finite(p.u) || !finite(p.v))
+        throw Error(where + name + " point " + std::to_string(i) + " has a non-finite coordinate");
+      if (!(p.hue >= 0.f && p.hue < 360.f))
+        throw Error(where + name + " point " + std::to_string(i) + " has hue " + std::to_string(p.hue) +
+                    ", outside [0, 360)");
+    }
+  }
+}
+
+//! A camera centre usable as a view direction: finite and at least 1 mm from the model origin.
+bool validCamera(const double c[3])
+{
+  const double n = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  return std::isfinite(n) && n > 1.0;
+}
 } // namespace
 
 bool PhotoModel::hasDepth() const
@@ -30,16 +52,20 @@ void PhotoModel::validate(const std::string &source) const
     throw Error(where + "S_in is empty: the target could not be told from the background");
   if (!(backgroundHue >= 0.f && backgroundHue < 360.f))
     throw Error(where + "background hue must lie in [0, 360) degrees");
-  for (const auto *set : {&inner, &outer}) {
-    const char *name = set == &inner ? "S_in" : "S_out";
-    for (std::size_t i = 0; i < set->size(); ++i) {
-      const ModelPoint &p = (*set)[i];
-      if (!finite(p.x) || !finite(p.y) || !finite(p.z) || !finite(p.u) || !finite(p.v))
-        throw Error(where + name + " point " + std::to_string(i) + " has a non-finite coordinate");
-      if (!(p.hue >= 0.f && p.hue < 360.f))
-        throw Error(where + name + " point " + std::to_string(i) + " has hue " + std::to_string(p.hue) +
-                    ", outside [0, 360)");
-    }
+  validatePoints(inner, outer, where);
+  if (views.empty())
+    return;
+  if (!hasDepth())
+    throw Error(where + "a flat model cannot have further views (only a stereo model can)");
+  if (!validCamera(cameraMm))
+    throw Error(where + "a model with further views needs its camera centre (camera_mm), at least 1 mm from the origin");
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const std::string w = where + "view " + std::to_string(k + 1) + ": ";
+    if (views[k].inner.empty())
+      throw Error(w + "S_in is empty");
+    if (!validCamera(views[k].cameraMm))
+      throw Error(w + "its camera centre (camera_mm) must be finite and at least 1 mm from the origin");
+    validatePoints(views[k].inner, views[k].outer, w);
   }
 }
 

@@ -254,19 +254,28 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
   }
   m_nIn = model.inner.size();
   m_nOut = model.outer.size();
-  const std::size_t n = m_nIn + m_nOut;
-  m_x.resize(n);
-  m_y.resize(n);
-  m_z.resize(n);
-  m_hue.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const ModelPoint &p = i < m_nIn ? model.inner[i] : model.outer[i - m_nIn];
-    m_x[i] = p.x;
-    m_y[i] = p.y;
-    m_z[i] = p.z;
-    m_hue[i] = deci(p.hue) % 3600;
-    m_hasDepth = m_hasDepth || p.z != 0.f;
-  }
+  // Every view's S_in then S_out, one after the other in the same arrays; view 0 is the model's own.
+  auto addView = [&](const std::vector<ModelPoint> &in, const std::vector<ModelPoint> &out, const double cam[3]) {
+    View v;
+    v.inBegin = m_x.size();
+    v.inEnd = v.outBegin = v.inBegin + in.size();
+    v.outEnd = v.outBegin + out.size();
+    const double norm = std::sqrt(cam[0] * cam[0] + cam[1] * cam[1] + cam[2] * cam[2]);
+    for (int k = 0; k < 3; ++k)
+      v.dir[k] = norm > 0 ? cam[k] / norm : 0.0;
+    for (const auto *set : {&in, &out})
+      for (const ModelPoint &p : *set) {
+        m_x.push_back(p.x);
+        m_y.push_back(p.y);
+        m_z.push_back(p.z);
+        m_hue.push_back(deci(p.hue) % 3600);
+        m_hasDepth = m_hasDepth || p.z != 0.f;
+      }
+    m_views.push_back(v);
+  };
+  addView(model.inner, model.outer, model.cameraMm);
+  for (const ModelView &mv : model.views)
+    addView(mv.inner, mv.outer, mv.cameraMm);
   m_bgHue = deci(model.backgroundHue) % 3600;
   m_tolIn = deci(params.inTolDeg);
   m_tolInBg = deci(params.inBgTolDeg);
@@ -319,27 +328,48 @@ Projection StereoFitness::projectionOf(int cam, const Phi &phi) const
   return p;
 }
 
+const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
+{
+  if (m_views.size() == 1)
+    return m_views[0];
+  // The camera's centre in the model frame, -R^T t of cMm, as a direction from the origin: the view
+  // whose camera looked from the nearest direction.
+  double c[3];
+  for (int k = 0; k < 3; ++k)
+    c[k] = -(static_cast<double>(p.r[k]) * p.t[0] + static_cast<double>(p.r[3 + k]) * p.t[1] + static_cast<double>(p.r[6 + k]) * p.t[2]);
+  std::size_t best = 0;
+  double bestDot = -2;
+  for (std::size_t i = 0; i < m_views.size(); ++i) {
+    const double d = m_views[i].dir[0] * c[0] + m_views[i].dir[1] * c[1] + m_views[i].dir[2] * c[2];
+    if (d > bestDot) {
+      bestDot = d;
+      best = i;
+    }
+  }
+  return m_views[best];
+}
+
 FitnessCounts StereoFitness::countCamera(int cam, const Phi &phi) const
 {
   const Projection p = projectionOf(cam, phi);
+  const View &v = viewFor(p);
   const Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
   FitnessCounts counts;
-  const std::size_t n = m_nIn + m_nOut;
   const ModelSoA m{m_x.data(), m_y.data(), m_z.data(), m_hue.data()};
 #ifdef PM_HAVE_X86
   static const bool avx2 = cpuHasAvx2();
   if (avx2 && !g_forceScalar) {
     if (m_hasDepth)
-      countAvx2<true>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
+      countAvx2<true>(p, tol, m, v.inBegin, v.inEnd, v.outBegin, v.outEnd, counts);
     else
-      countAvx2<false>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
+      countAvx2<false>(p, tol, m, v.inBegin, v.inEnd, v.outBegin, v.outEnd, counts);
     return counts;
   }
 #endif
   if (m_hasDepth)
-    countScalar<true>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
+    countScalar<true>(p, tol, m, v.inBegin, v.inEnd, v.outBegin, v.outEnd, counts);
   else
-    countScalar<false>(p, tol, m, 0, m_nIn, m_nIn, n, counts);
+    countScalar<false>(p, tol, m, v.inBegin, v.inEnd, v.outBegin, v.outEnd, counts);
   return counts;
 }
 
@@ -348,8 +378,9 @@ double StereoFitness::visibleFraction(const Phi &phi, int camera) const
   if (!phi.isValid())
     throw Error("visible fraction at an invalid pose " + phi.toString());
   const Projection p = projectionOf(camera, phi);
+  const View &view = viewFor(p);
   std::size_t in = 0;
-  for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
+  for (std::size_t i = view.inBegin; i < view.outEnd; ++i) {
     const double X = m_x[i], Y = m_y[i], Z = m_z[i];
     const double xc = p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1];
     const double zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
@@ -358,7 +389,7 @@ double StereoFitness::visibleFraction(const Phi &phi, int camera) const
     const double u = p.px * xc / zc + p.u0, v = p.py * yc / zc + p.v0;
     in += u >= -0.5 && v >= -0.5 && u < p.w - 0.5 && v < p.h - 0.5;
   }
-  return static_cast<double>(in) / static_cast<double>(m_nIn + m_nOut);
+  return static_cast<double>(in) / static_cast<double>(view.outEnd - view.inBegin);
 }
 
 double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
@@ -394,10 +425,11 @@ std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) c
 {
   check(phi);
   const Projection p = projectionOf(camera, phi);
+  const View &view = viewFor(p);
   const Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
   std::vector<PointScore> out;
-  for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
-    const bool inner = i < m_nIn;
+  for (std::size_t i = view.inBegin; i < view.outEnd; ++i) {
+    const bool inner = i < view.inEnd;
     FitnessCounts c;
     const std::int32_t h = m_hasDepth ? sampleScalar<true>(p, m_x[i], m_y[i], m_z[i]) : sampleScalar<false>(p, m_x[i], m_y[i], 0.f);
     if (inner)
@@ -433,7 +465,21 @@ double StereoFitness::score(const FitnessCounts &c) const
   const FitnessParams &q = m_params;
   const double sum = q.inMatch * c.inMatch + q.inBackground * c.inBackground + q.inOther * c.inOther +
                      q.offImage * (c.inOff + c.outOff) + q.outBackground * c.outBackground + q.outOther * c.outOther;
-  return sum / static_cast<double>(m_nIn + m_nOut);
+  const int nIn = c.inMatch + c.inBackground + c.inOther + c.inOff, nOut = c.outBackground + c.outOther + c.outOff;
+  return normalised(sum, static_cast<std::size_t>(nIn), static_cast<std::size_t>(nOut));
+}
+
+double StereoFitness::normalised(double sum, std::size_t nIn, std::size_t nOut) const
+{
+  if (nIn == m_nIn && nOut == m_nOut) // the model's own view: Eq. (10) as the paper writes it, to the bit
+    return sum / static_cast<double>(nIn + nOut);
+  // A further view holds other numbers of S_in and S_out points, so its best attainable score
+  // (every S_in point on its hue, every S_out point on background) differs: scaled to the model's
+  // own view's, so that no view wins by its proportions alone.
+  const FitnessParams &q = m_params;
+  const double best0 = (q.inMatch * static_cast<double>(m_nIn) + q.outBackground * static_cast<double>(m_nOut)) /
+                       static_cast<double>(m_nIn + m_nOut);
+  return sum * best0 / (q.inMatch * static_cast<double>(nIn) + q.outBackground * static_cast<double>(nOut));
 }
 
 double StereoFitness::evaluate(const Phi &phi) const
@@ -454,6 +500,7 @@ void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out) const
 double StereoFitness::smoothCamera(int cam, const Phi &phi) const
 {
   const Projection p = projectionOf(cam, phi);
+  const View &view = viewFor(p);
   const FitnessParams &q = m_params;
   const Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
   // A pixel's score for an S_in point of hue hm (or, hm < 0, for an S_out point): the classes of
@@ -468,7 +515,7 @@ double StereoFitness::smoothCamera(int cam, const Phi &phi) const
            q.outBackground * c.outBackground + q.outOther * c.outOther;
   };
   double sum = 0;
-  for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
+  for (std::size_t i = view.inBegin; i < view.outEnd; ++i) {
     const double X = m_x[i], Y = m_y[i], Z = m_z[i];
     const double xc = p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0], yc = p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1];
     const double zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
@@ -484,18 +531,17 @@ double StereoFitness::smoothCamera(int cam, const Phi &phi) const
     const int ui = static_cast<int>(u), vi = static_cast<int>(v);
     const double fu = u - ui, fv = v - vi;
     const std::uint16_t *row = p.hue + static_cast<std::size_t>(vi) * static_cast<std::size_t>(p.w) + static_cast<std::size_t>(ui);
-    const std::int32_t hm = i < m_nIn ? m_hue[i] : -1;
+    const std::int32_t hm = i < view.inEnd ? m_hue[i] : -1;
     sum += (1 - fv) * ((1 - fu) * pixelScore(row[0], hm) + fu * pixelScore(row[1], hm)) +
            fv * ((1 - fu) * pixelScore(row[p.w], hm) + fu * pixelScore(row[p.w + 1], hm));
   }
-  return sum;
+  return normalised(sum, view.inEnd - view.inBegin, view.outEnd - view.outBegin);
 }
 
 double StereoFitness::evaluateSmooth(const Phi &phi) const
 {
   check(phi);
-  const double n = static_cast<double>(m_nIn + m_nOut);
-  return 0.5 * (smoothCamera(0, phi) + smoothCamera(1, phi)) / n;
+  return 0.5 * (smoothCamera(0, phi) + smoothCamera(1, phi));
 }
 
 FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const

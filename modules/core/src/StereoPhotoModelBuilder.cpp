@@ -173,6 +173,135 @@ void checkSize(const vpImage<vpRGBa> &im, const RigCamera &cam, const char *what
                 " (take the photos with the rig's cameras at their calibrated size)");
 }
 
+//! A view's points placed in the hand frame (mm; x, y, z of each ModelPoint), before the origin is chosen.
+struct PlacedView
+{
+  std::vector<ModelPoint> inner, outer, dropped;
+  int nOutFallback = 0;
+};
+
+//! The hand-frame point on pixel (u, v)'s ray of \e cam at the camera's depth \e z (mm).
+cv::Vec3d rayPoint(const RigCamera &cam, double u, double v, double z)
+{
+  const vpCameraParameters &c = cam.cam;
+  const double X = (u - c.get_u0()) / c.get_px() * z, Y = (v - c.get_v0()) / c.get_py() * z;
+  cv::Vec3d h;
+  for (unsigned i = 0; i < 3; ++i)
+    h[static_cast<int>(i)] = cam.hMc[i][0] * X + cam.hMc[i][1] * Y + cam.hMc[i][2] * z + cam.hMc[i][3] * 1e3;
+  return h;
+}
+
+/*!
+  Places the S_in and S_out points sampled in one camera's photo, given the camera's depth \e camZ (mm)
+  at its region pixels (NaN where unmatched). S_in: at its pixel's depth, dropped when unmatched or off
+  the median of the matched pixels around it; S_out: at the depth of the silhouette next to it.
+*/
+PlacedView placeView(const PhotoModel &sampled, const cv::Mat &camZ, const RigCamera &cam, const StereoModelParams &params,
+                     double fallbackZ)
+{
+  PlacedView pv;
+  for (const ModelPoint &p : sampled.inner) {
+    const int u = static_cast<int>(std::lround(p.u)), v = static_cast<int>(std::lround(p.v));
+    const double z = (u >= 0 && v >= 0 && u < camZ.cols && v < camZ.rows) ? camZ.at<float>(v, u) : std::nan("");
+    // A match off the relief around it (a wrong match on a thin part or an edge) is no match.
+    const double local = std::isfinite(z) ? localMedian(camZ, cv::Point2f(p.u, p.v), params.localRadiusPx) : 0.0;
+    if (!std::isfinite(z) || !(std::fabs(z - local) <= params.maxLocalDeviationMm)) {
+      pv.dropped.push_back(p);
+      continue;
+    }
+    const cv::Vec3d h = rayPoint(cam, p.u, p.v, z);
+    ModelPoint q = p;
+    q.x = static_cast<float>(h[0]);
+    q.y = static_cast<float>(h[1]);
+    q.z = static_cast<float>(h[2]);
+    pv.inner.push_back(q);
+  }
+  const int w = camZ.cols, h = camZ.rows;
+  const int rad = static_cast<int>(std::ceil(params.silhouetteRadiusPx + params.photo.stripGapPx + params.photo.stripWidthPx));
+  std::vector<double> outZ, allZ;
+  for (const ModelPoint &p : sampled.outer) {
+    std::vector<double> zs;
+    const int u0 = static_cast<int>(std::lround(p.u)), v0 = static_cast<int>(std::lround(p.v));
+    for (int v = std::max(0, v0 - rad); v <= std::min(h - 1, v0 + rad); ++v)
+      for (int u = std::max(0, u0 - rad); u <= std::min(w - 1, u0 + rad); ++u) {
+        const float z = camZ.at<float>(v, u);
+        if (std::isfinite(z) && (u - u0) * (u - u0) + (v - v0) * (v - v0) <= rad * rad)
+          zs.push_back(z);
+      }
+    // The silhouette is where the surface turns away from the camera: the farthest of the matched
+    // surface next to the point (its 90th percentile, robust to a wrong match).
+    double z = std::numeric_limits<double>::quiet_NaN();
+    if (!zs.empty()) {
+      std::nth_element(zs.begin(), zs.begin() + static_cast<long>(zs.size() * 9 / 10), zs.end());
+      z = zs[zs.size() * 9 / 10];
+      allZ.push_back(z);
+    }
+    outZ.push_back(z);
+  }
+  const double fallback = allZ.empty() ? fallbackZ : median(allZ);
+  for (std::size_t i = 0; i < sampled.outer.size(); ++i) {
+    const ModelPoint &p = sampled.outer[i];
+    double z = outZ[i];
+    if (!std::isfinite(z)) {
+      z = fallback;
+      ++pv.nOutFallback;
+    }
+    const cv::Vec3d c = rayPoint(cam, p.u, p.v, z);
+    ModelPoint q = p;
+    q.x = static_cast<float>(c[0]);
+    q.y = static_cast<float>(c[1]);
+    q.z = static_cast<float>(c[2]);
+    pv.outer.push_back(q);
+  }
+  return pv;
+}
+
+//! \e pts moved by -o (hand frame to model frame).
+std::vector<ModelPoint> shifted(std::vector<ModelPoint> pts, const cv::Vec3d &o)
+{
+  for (ModelPoint &p : pts) {
+    p.x = static_cast<float>(p.x - o[0]);
+    p.y = static_cast<float>(p.y - o[1]);
+    p.z = static_cast<float>(p.z - o[2]);
+  }
+  return pts;
+}
+
+/*!
+  Camera \e to's depth (mm) at its \e region pixels from camera \e from's depth map: each matched pixel's
+  3-D point projected into \e to, splatted on the four pixels around it, the nearest surface kept.
+*/
+cv::Mat warpedDepth(const cv::Mat &fromZ, const RigCamera &from, const RigCamera &to, const vpImage<unsigned char> &region)
+{
+  cv::Mat z(fromZ.size(), CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
+  const vpHomogeneousMatrix cMc = to.hMc.inverse() * from.hMc;
+  const vpCameraParameters &a = from.cam, &b = to.cam;
+  for (int v = 0; v < fromZ.rows; ++v)
+    for (int u = 0; u < fromZ.cols; ++u) {
+      const double Z = fromZ.at<float>(v, u);
+      if (!std::isfinite(Z))
+        continue;
+      const double X = (u - a.get_u0()) / a.get_px() * Z, Y = (v - a.get_v0()) / a.get_py() * Z;
+      double c[3];
+      for (unsigned i = 0; i < 3; ++i)
+        c[i] = cMc[i][0] * X + cMc[i][1] * Y + cMc[i][2] * Z + cMc[i][3] * 1e3;
+      if (!(c[2] > 1))
+        continue;
+      const double x = b.get_px() * c[0] / c[2] + b.get_u0(), y = b.get_py() * c[1] / c[2] + b.get_v0();
+      const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx) {
+          const int xx = x0 + dx, yy = y0 + dy;
+          if (xx < 0 || yy < 0 || xx >= z.cols || yy >= z.rows || !region[static_cast<unsigned>(yy)][static_cast<unsigned>(xx)])
+            continue;
+          float &t = z.at<float>(yy, xx);
+          if (!(t <= c[2]))
+            t = static_cast<float>(c[2]);
+        }
+    }
+  return z;
+}
+
 //! The flat build of one view, with an error that names the view.
 PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im, const RigCamera &cam,
                            const StereoModelParams &p)
@@ -338,107 +467,116 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
     out.depthLeft[static_cast<unsigned>(v)][static_cast<unsigned>(u)] = static_cast<float>(toHand(c)[2]);
   }
 
-  // S_in: each point at its matched depth, on its own pixel's ray; the rest dropped.
+  // S_in and S_out of the left view placed on their rays.
   PhotoModel &m = out.model;
   m = left.model;
-  std::vector<cv::Point2f> inPx;
-  for (const ModelPoint &p : left.model.inner)
-    inPx.emplace_back(p.u, p.v);
-  const std::vector<cv::Point2f> inRect = rect.rectifiedLeft(inPx);
-  std::vector<ModelPoint> inner;
-  std::vector<cv::Vec3d> inHand;
-  std::vector<float> inHues;
-  for (std::size_t i = 0; i < inPx.size(); ++i) {
-    const float d = sampleDisparity(disp, inRect[i].x, inRect[i].y, params.maxDisparitySpreadPx);
-    const cv::Vec3d c = std::isfinite(d) ? leftCameraPoint(inRect[i], d) : cv::Vec3d();
-    // A match off the relief around it (a wrong match on a thin part or an edge) is no match.
-    const double local = std::isfinite(d) ? localMedian(camZ, inPx[i], params.localRadiusPx) : 0.0;
-    if (!std::isfinite(d) || !(std::fabs(c[2] - local) <= params.maxLocalDeviationMm)) {
-      out.dropped.push_back(left.model.inner[i]);
-      continue;
-    }
-    inHand.push_back(toHand(c));
-    inner.push_back(left.model.inner[i]);
-    inHues.push_back(left.model.inner[i].hue);
-  }
-  m.nInDropped = static_cast<int>(inPx.size() - inner.size());
-  const double matched = inPx.empty() ? 0.0 : static_cast<double>(inner.size()) / static_cast<double>(inPx.size());
-  if (inner.empty() || matched < params.minMatchedFraction)
-    throw Error("stereo photo-model: too little texture to match the two views: " + std::to_string(inner.size()) +
-                " of " + std::to_string(inPx.size()) + " S_in points matched (at least " +
+  PlacedView pl = placeView(left.model, camZ, rig.left, params, backdrop);
+  const std::size_t nSampled = left.model.inner.size();
+  m.nInDropped = static_cast<int>(nSampled - pl.inner.size());
+  out.dropped = pl.dropped;
+  out.nOutFallback = pl.nOutFallback;
+  const double matched = nSampled == 0 ? 0.0 : static_cast<double>(pl.inner.size()) / static_cast<double>(nSampled);
+  if (pl.inner.empty() || matched < params.minMatchedFraction)
+    throw Error("stereo photo-model: too little texture to match the two views: " + std::to_string(pl.inner.size()) +
+                " of " + std::to_string(nSampled) + " S_in points matched (at least " +
                 std::to_string(static_cast<int>(100 * params.minMatchedFraction)) +
                 " % needed); refused rather than guessed: use the flat model (one photo pair, --background --photo --distance-mm) if you know the "
                 "target's distance");
 
-  // S_out: on each point's ray at the depth of the silhouette next to it.
-  std::vector<cv::Vec3d> outHand;
-  std::vector<double> allZ;
-  const int rad = static_cast<int>(std::ceil(params.silhouetteRadiusPx + params.photo.stripGapPx + params.photo.stripWidthPx));
-  std::vector<int> fallback;
-  for (const ModelPoint &p : left.model.outer) {
-    std::vector<double> zs;
-    const int u0 = static_cast<int>(std::lround(p.u)), v0 = static_cast<int>(std::lround(p.v));
-    for (int v = std::max(0, v0 - rad); v <= std::min(static_cast<int>(h) - 1, v0 + rad); ++v)
-      for (int u = std::max(0, u0 - rad); u <= std::min(static_cast<int>(w) - 1, u0 + rad); ++u) {
-        const float z = camZ.at<float>(v, u);
-        if (std::isfinite(z) && (u - u0) * (u - u0) + (v - v0) * (v - v0) <= rad * rad)
-          zs.push_back(z);
-      }
-    // The silhouette is where the surface turns away from the camera: the farthest of the matched
-    // surface next to the point (its 90th percentile, robust to a wrong match).
-    if (!zs.empty()) {
-      std::nth_element(zs.begin(), zs.begin() + static_cast<long>(zs.size() * 9 / 10), zs.end());
-      zs = {zs[zs.size() * 9 / 10]};
-    }
-    const double z = median(zs);
-    if (!std::isfinite(z))
-      fallback.push_back(static_cast<int>(outHand.size()));
-    else
-      allZ.push_back(z);
-    const vpCameraParameters &c = rig.left.cam;
-    const double zz = std::isfinite(z) ? z : 0.0;
-    outHand.push_back(toHand(cv::Vec3d((p.u - c.get_u0()) / c.get_px() * zz, (p.v - c.get_v0()) / c.get_py() * zz, zz)));
-  }
-  if (!fallback.empty()) {
-    const double z = median(allZ.empty() ? std::vector<double>{backdrop} : allZ);
-    const vpCameraParameters &c = rig.left.cam;
-    for (int k : fallback) {
-      const ModelPoint &p = left.model.outer[static_cast<std::size_t>(k)];
-      outHand[static_cast<std::size_t>(k)] =
-          toHand(cv::Vec3d((p.u - c.get_u0()) / c.get_px() * z, (p.v - c.get_v0()) / c.get_py() * z, z));
-    }
-  }
-  out.nOutFallback = static_cast<int>(fallback.size());
-
   // The model frame: origin at the 3-D centroid of S_in, axes of the hand frame.
   cv::Vec3d o(0, 0, 0);
-  for (const cv::Vec3d &p : inHand)
-    o += p;
-  o *= 1.0 / static_cast<double>(inHand.size());
+  for (const ModelPoint &p : pl.inner)
+    o += cv::Vec3d(p.x, p.y, p.z);
+  o *= 1.0 / static_cast<double>(pl.inner.size());
   double zNear = 1e300, zFar = -1e300;
-  for (std::size_t i = 0; i < inner.size(); ++i) {
-    inner[i].x = static_cast<float>(inHand[i][0] - o[0]);
-    inner[i].y = static_cast<float>(inHand[i][1] - o[1]);
-    inner[i].z = static_cast<float>(inHand[i][2] - o[2]);
-    zNear = std::min(zNear, inHand[i][2]);
-    zFar = std::max(zFar, inHand[i][2]);
+  for (const ModelPoint &p : pl.inner) {
+    zNear = std::min(zNear, static_cast<double>(p.z));
+    zFar = std::max(zFar, static_cast<double>(p.z));
   }
-  for (std::size_t i = 0; i < m.outer.size(); ++i) {
-    m.outer[i].x = static_cast<float>(outHand[i][0] - o[0]);
-    m.outer[i].y = static_cast<float>(outHand[i][1] - o[1]);
-    m.outer[i].z = static_cast<float>(outHand[i][2] - o[2]);
-  }
-  m.inner = std::move(inner);
+  std::vector<float> inHues;
+  for (const ModelPoint &p : pl.inner)
+    inHues.push_back(p.hue);
+  m.inner = shifted(pl.inner, o);
+  m.outer = shifted(pl.outer, o);
   m.targetHue = circularMeanHue(inHues);
   m.distanceMm = o[2];
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
     m.originInHandMm[i] = o[i];
+    m.cameraMm[i] = rig.left.hMc[static_cast<unsigned>(i)][3] * 1e3 - o[i];
+  }
   m.depthRangeMm[0] = zNear;
   m.depthRangeMm[1] = zFar;
+
+  // The right camera's own view: its S_in and S_out sampled in its photo, placed at the depths the
+  // left view's matches give where they land in the right image (the nearest surface wins).
+  if (params.rightView) {
+    const cv::Mat camZR = warpedDepth(camZ, rig.left, rig.right, right.region);
+    PlacedView pr = placeView(right.model, camZR, rig.right, params, backdrop);
+    if (!pr.inner.empty()) {
+      ModelView v;
+      v.inner = shifted(pr.inner, o);
+      v.outer = shifted(pr.outer, o);
+      for (int i = 0; i < 3; ++i)
+        v.cameraMm[i] = rig.right.hMc[static_cast<unsigned>(i)][3] * 1e3 - o[i];
+      m.views.push_back(std::move(v));
+    }
+  }
   m.validate("(stereo build)");
   out.hMm = vpHomogeneousMatrix(o[0] * 1e-3, o[1] * 1e-3, o[2] * 1e-3, 0, 0, 0);
   out.regionLeft = left.region;
   out.regionRight = right.region;
+  return out;
+}
+
+StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR,
+                                            const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R,
+                                            const std::vector<StereoViewPair> &more, const StereoModelParams &params)
+{
+  StereoPhotoModelBuild out = buildStereoPhotoModel(rig, bgL, bgR, L, R, params);
+  PhotoModel &m = out.model;
+  for (std::size_t k = 0; k < more.size(); ++k) {
+    const StereoViewPair &pair = more[k];
+    StereoPhotoModelBuild b;
+    try {
+      b = buildStereoPhotoModel(rig, pair.backgroundLeft, pair.backgroundRight, pair.left, pair.right, params);
+    } catch (const Error &e) {
+      throw Error("view pair " + std::to_string(k + 2) + ": " + e.what());
+    }
+    // Model frame of pair k (origin ok, hand axes) -> its hand frame -> the first pair's hand frame -> the model frame.
+    const vpHomogeneousMatrix h0Mh = pair.hMh0.inverse();
+    const PhotoModel &mk = b.model;
+    auto move = [&](const double p[3], double q[3]) {
+      double hk[3];
+      for (int i = 0; i < 3; ++i)
+        hk[i] = (p[i] + mk.originInHandMm[i]) * 1e-3;
+      for (unsigned i = 0; i < 3; ++i)
+        q[i] = 1e3 * (h0Mh[i][0] * hk[0] + h0Mh[i][1] * hk[1] + h0Mh[i][2] * hk[2] + h0Mh[i][3]) - m.originInHandMm[i];
+    };
+    auto movePoints = [&](std::vector<ModelPoint> pts) {
+      for (ModelPoint &pt : pts) {
+        const double a[3] = {pt.x, pt.y, pt.z};
+        double q[3];
+        move(a, q);
+        pt.x = static_cast<float>(q[0]);
+        pt.y = static_cast<float>(q[1]);
+        pt.z = static_cast<float>(q[2]);
+      }
+      return pts;
+    };
+    ModelView own;
+    move(mk.cameraMm, own.cameraMm);
+    own.inner = movePoints(mk.inner);
+    own.outer = movePoints(mk.outer);
+    m.views.push_back(std::move(own));
+    for (const ModelView &v : mk.views) {
+      ModelView mv;
+      move(v.cameraMm, mv.cameraMm);
+      mv.inner = movePoints(v.inner);
+      mv.outer = movePoints(v.outer);
+      m.views.push_back(std::move(mv));
+    }
+  }
+  m.validate("(stereo build)");
   return out;
 }
 

@@ -53,7 +53,7 @@ std::string photoModelToJson(const PhotoModel &m)
 {
   const bool depth = m.hasDepth();
   json j{{"format", kFormat},
-         {"version", depth ? 2 : 1},
+         {"version", !m.views.empty() ? 3 : depth ? 2 : 1},
          {"distance_mm", m.distanceMm},
          {"camera", {{"px", m.px}, {"py", m.py}, {"u0", m.u0}, {"v0", m.v0}, {"width", m.photoWidth}, {"height", m.photoHeight}}},
          {"centroid_px", {m.centroidU, m.centroidV}},
@@ -65,6 +65,15 @@ std::string photoModelToJson(const PhotoModel &m)
     j["origin_in_hand_mm"] = {m.originInHandMm[0], m.originInHandMm[1], m.originInHandMm[2]};
     j["depth_range_mm"] = {m.depthRangeMm[0], m.depthRangeMm[1]};
     j["n_in_dropped"] = m.nInDropped;
+  }
+  if (!m.views.empty()) {
+    j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
+    json views = json::array();
+    for (const ModelView &v : m.views)
+      views.push_back({{"camera_mm", {v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]}},
+                       {"s_in", pointsToJson(v.inner, true)},
+                       {"s_out", pointsToJson(v.outer, true)}});
+    j["views"] = views;
   }
   return j.dump() + "\n";
 }
@@ -79,7 +88,7 @@ PhotoModel loadPhotoModel(const std::string &path)
   PhotoModel m;
   try {
     const json j = json::parse(f);
-    const int version = detail::checkFormat(j, kFormat, 2);
+    const int version = detail::checkFormat(j, kFormat, 3);
     m.distanceMm = j.at("distance_mm").get<double>();
     const json &c = j.at("camera");
     m.px = c.at("px").get<double>();
@@ -95,9 +104,9 @@ PhotoModel loadPhotoModel(const std::string &path)
     m.centroidV = cen[1];
     m.backgroundHue = j.at("background_hue_deg").get<float>();
     m.targetHue = j.value("target_hue_deg", 0.f);
-    m.inner = pointsFromJson(j.at("s_in"), "s_in", version == 2);
-    m.outer = pointsFromJson(j.at("s_out"), "s_out", version == 2);
-    if (version == 2) {
+    m.inner = pointsFromJson(j.at("s_in"), "s_in", version >= 2);
+    m.outer = pointsFromJson(j.at("s_out"), "s_out", version >= 2);
+    if (version >= 2) {
       const auto o = j.at("origin_in_hand_mm").get<std::vector<double>>();
       const auto r = j.at("depth_range_mm").get<std::vector<double>>();
       if (o.size() != 3 || r.size() != 2)
@@ -107,6 +116,26 @@ PhotoModel loadPhotoModel(const std::string &path)
       m.depthRangeMm[0] = r[0];
       m.depthRangeMm[1] = r[1];
       m.nInDropped = j.value("n_in_dropped", 0);
+    }
+    if (version == 3) {
+      auto camera = [](const json &entry, double out[3]) {
+        const auto v = entry.get<std::vector<double>>();
+        if (v.size() != 3)
+          throw Error("\"camera_mm\" must be [x, y, z]");
+        for (int i = 0; i < 3; ++i)
+          out[i] = v[static_cast<std::size_t>(i)];
+      };
+      camera(j.at("camera_mm"), m.cameraMm);
+      const json &views = j.at("views");
+      if (!views.is_array() || views.empty())
+        throw Error("\"views\" must be a non-empty array of {camera_mm, s_in, s_out}");
+      for (const json &v : views) {
+        ModelView mv;
+        camera(v.at("camera_mm"), mv.cameraMm);
+        mv.inner = pointsFromJson(v.at("s_in"), "s_in", true);
+        mv.outer = pointsFromJson(v.at("s_out"), "s_out", true);
+        m.views.push_back(std::move(mv));
+      }
     }
   } catch (const Error &e) {
     throw Error("photo-model file '" + path + "' is corrupt: " + e.what());

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <visp3/core/vpThetaUVector.h>
+
 #include "pm/core/Error.h"
 
 namespace pm::sim {
@@ -20,10 +22,12 @@ SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraPa
 }
 
 SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const StereoRig &rig, double distanceMm,
-                                                  const StereoModelParams &params)
+                                                  const StereoModelParams &params, double viewTurnDeg)
 {
   if (!(distanceMm > 0) || !std::isfinite(distanceMm))
     throw Error("photo distance must be positive");
+  if (!(viewTurnDeg >= 0 && viewTurnDeg <= 45))
+    throw Error("the further views' turn must lie in [0, 45] deg");
   SimulatedPhotoModel s;
   s.stereo = true;
   s.photoHMo = vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0);
@@ -53,7 +57,27 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const Ster
       }
     }
   scene.render(r, rig.right, hMo, 0, 7, s.photoRight, true);
-  StereoPhotoModelBuild b = buildStereoPhotoModel(rig, s.background, s.backgroundRight, s.photo, s.photoRight, params);
+  // Further views: the hand moved around the scene (toy, backdrop and light turned together about
+  // the toy's origin) by +-viewTurnDeg about the hand's x and y axes.
+  std::vector<StereoViewPair> more;
+  if (viewTurnDeg > 0) {
+    const double a = viewTurnDeg * M_PI / 180.0;
+    const double axes[4][3] = {{a, 0, 0}, {-a, 0, 0}, {0, a, 0}, {0, -a, 0}};
+    for (int k = 0; k < 4; ++k) {
+      const vpHomogeneousMatrix turn(vpTranslationVector(0, 0, 0), vpThetaUVector(axes[k][0], axes[k][1], axes[k][2]));
+      const vpHomogeneousMatrix hMoK = turn * hMo; // turned about the hand's axes through the toy's origin
+      const vpHomogeneousMatrix hMoT(hMo.getTranslationVector(), hMoK.getRotationMatrix());
+      StereoViewPair pr;
+      const std::uint64_t frame = static_cast<std::uint64_t>(k + 1);
+      scene.render(r, rig.left, hMoT, frame, 4, pr.backgroundLeft, false);
+      scene.render(r, rig.right, hMoT, frame, 5, pr.backgroundRight, false);
+      scene.render(r, rig.left, hMoT, frame, 6, pr.left, true);
+      scene.render(r, rig.right, hMoT, frame, 7, pr.right, true);
+      pr.hMh0 = hMoT * hMo.inverse();
+      more.push_back(std::move(pr));
+    }
+  }
+  StereoPhotoModelBuild b = buildStereoPhotoModel(rig, s.background, s.backgroundRight, s.photo, s.photoRight, more, params);
   s.build.model = std::move(b.model);
   s.build.region = std::move(b.regionLeft);
   s.depth = std::move(b.depthLeft);

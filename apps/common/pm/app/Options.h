@@ -24,6 +24,8 @@ struct LabModelChoice
   bool stereo = false;      //!< --stereo: the rig's two cameras take the photos, every point gets its relief
   double distanceMm = 500;  //!< --distance-mm: where the toy is when its photos are taken (and, flat, the photo distance)
   PhotoModelParams photo;   //!< region and sampling (addModelOptions)
+  bool rightView = false;   //!< --right-view: the stereo model adds the right camera's own views
+  double viewTurnDeg = 0;   //!< --view-turn-deg: four further photo pairs, the hand turned by this about x and y (0: one pair)
 };
 //! --stereo, --distance-mm (the photo distance of the flat model, the toy's distance for the stereo one)
 void addLabModelOptions(CLI::App &app, LabModelChoice &c);

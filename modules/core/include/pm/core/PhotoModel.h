@@ -15,7 +15,12 @@
   axes are those of the hand frame at the photo pose. Both kinds share this type; hasDepth()
   tells them apart, and the fitness projects (x, y, z) either way.
 
-      pm::PhotoModel m = pm::io::loadPhotoModel("model.json");   // version 1 (flat) or 2 (depth)
+  A stereo model can hold further views (ModelView): the points each camera sampled in its own
+  photo, placed in the same model frame, with the camera's centre. The fitness scores each
+  camera's projection with the view taken from the direction nearest to that camera's (the toy's
+  outline and sides as that camera sees them), like the view-based models of DLR's trackers.
+
+      pm::PhotoModel m = pm::io::loadPhotoModel("model.json");   // version 1 (flat), 2 or 3 (depth)
       if (m.hasDepth()) std::cout << "relief " << m.depthRangeMm[0] << " to " << m.depthRangeMm[1] << " mm\n";
 */
 #include <string>
@@ -28,6 +33,17 @@ struct ModelPoint
   float x = 0, y = 0, z = 0; //!< position in the model frame (mm)
   float hue = 0;             //!< photo hue in degrees (S_in); background hue for S_out
   float u = 0, v = 0;        //!< where it was sampled in the photo (px)
+};
+
+/*!
+  One further view of a stereo model: S_in and S_out sampled in the photo of one camera, in the
+  model frame (mm), and where that camera's centre was in the model frame when it took the photo.
+*/
+struct ModelView
+{
+  double cameraMm[3] = {0, 0, 0}; //!< the camera's centre in the model frame (mm)
+  std::vector<ModelPoint> inner;  //!< S_in of this view (u, v: pixels of its own photo)
+  std::vector<ModelPoint> outer;  //!< S_out of this view
 };
 
 struct PhotoModel
@@ -45,14 +61,17 @@ struct PhotoModel
   double originInHandMm[3] = {0, 0, 0}; //!< the model origin in the hand frame at the photo pose (mm)
   double depthRangeMm[2] = {0, 0};      //!< nearest and farthest S_in point along the hand's z (mm)
   int nInDropped = 0;                   //!< S_in points dropped for want of a reliable stereo match
+  // Multi-view stereo models only (no views: one view, the points above, for both cameras):
+  double cameraMm[3] = {0, 0, 0};       //!< the centre of the camera that sampled S_in and S_out, in the model frame (mm)
+  std::vector<ModelView> views;         //!< further views; each camera is scored with the view nearest its direction
 
   std::size_t size() const { return inner.size() + outer.size(); }
   //! True when some point lies off the plane z = 0 (a stereo model).
   bool hasDepth() const;
   /*!
     Throws pm::Error if the model cannot be used: S_in empty, a non-finite coordinate or
-    hue outside [0, 360), a non-positive distance or focal length. \e source names the
-    file or the origin for the message.
+    hue outside [0, 360), a non-positive distance or focal length, views on a flat model or a view
+    without S_in or camera centre. \e source names the file or the origin for the message.
   */
   void validate(const std::string &source) const;
 };

@@ -143,7 +143,16 @@ private:
   struct Projection projectionOf(int cam, const Phi &phi) const;
   FitnessCounts countCamera(int cam, const Phi &phi) const;
   double score(const FitnessCounts &c) const;
-  double smoothCamera(int cam, const Phi &phi) const; //!< sum of the interpolated point scores
+  struct View
+  {
+    std::size_t inBegin, inEnd, outBegin, outEnd; //!< its S_in and S_out in m_x, m_y, m_z, m_hue
+    double dir[3];                                //!< unit direction of its camera from the model origin
+  };
+  //! The view scored for a camera at projection \e p: the one whose camera looked from the nearest direction.
+  const View &viewFor(const struct Projection &p) const;
+  double smoothCamera(int cam, const Phi &phi) const; //!< the interpolated point scores of its view, normalised
+  //! A view's summed point scores over its nIn + nOut points, on the scale of the model's own view.
+  double normalised(double sum, std::size_t nIn, std::size_t nOut) const;
   //! F of a pose already checked.
   double stereoScore(const Phi &phi) const { return 0.5 * (score(countCamera(0, phi)) + score(countCamera(1, phi))); }
 
@@ -153,6 +162,7 @@ private:
   // Model points, structure of arrays: x, y, z (mm), hue (tenths of a degree).
   std::vector<float> m_x, m_y, m_z;
   std::vector<std::int32_t> m_hue;
+  std::vector<View> m_views; //!< view 0: the model's own points (the only one of a flat or one-view model)
   std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
   std::array<HuePlane, 2> m_planes;
   std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort; //!< null for a camera without distortion

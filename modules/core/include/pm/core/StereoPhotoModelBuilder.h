@@ -54,6 +54,7 @@ struct StereoModelParams
   double minMatchedFraction = 0.5;   //!< fewer S_in points matched: refused (too little texture)
   double maxRegionFraction = 0.5;    //!< a larger region means the background pair does not match
   double maxBackgroundChange = 12;   //!< ... and so does a median change over this (grey levels) outside the target
+  bool rightView = false;            //!< add the right camera's own view (S_in, S_out sampled in its photo; measured, off: README)
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
@@ -83,5 +84,34 @@ struct StereoPhotoModelBuild
 StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL,
                                             const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
                                             const vpImage<vpRGBa> &R, const StereoModelParams &params = StereoModelParams());
+
+/*!
+  A further pair of photos of the same target for a multi-view model, taken after a known motion
+  of the target or of the hand (a turntable, the robot holding the target, or the arm's own
+  kinematics): its background pair, its photo pair and \e hMh0, which takes a point fixed to the
+  target from the first pair's hand frame into this pair's (metres). For a target turned in front
+  of a still hand from pose hMo0 to hMo: hMh0 = hMo * hMo0^-1; for a hand moved around a still
+  target: hMh0 = (h0Mh)^-1 with h0Mh the hand's motion.
+*/
+struct StereoViewPair
+{
+  vpImage<vpRGBa> backgroundLeft, backgroundRight, left, right;
+  vpHomogeneousMatrix hMh0;
+};
+
+/*!
+  The multi-view stereo model: the model of the first pair (its frame is the model's), and each
+  further pair built the same way, its views (left and right) moved into the model frame by its
+  known motion. Each camera is then scored with the view whose camera looked from the direction
+  nearest its own (StereoFitness). Throws pm::Error as the one-pair build, naming the pair.
+
+      std::vector<pm::StereoViewPair> more(1);
+      more[0] = {bgL, bgR, turnedL, turnedR, hMo_turned * hMo.inverse()};
+      const pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bgL, bgR, L, R, more);
+*/
+StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL,
+                                            const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
+                                            const vpImage<vpRGBa> &R, const std::vector<StereoViewPair> &more,
+                                            const StereoModelParams &params = StereoModelParams());
 
 } // namespace pm

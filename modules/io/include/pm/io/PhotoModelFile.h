@@ -26,6 +26,17 @@
         "s_out": [[x_mm, y_mm, z_mm, hue_deg, u_px, v_px], ...]
       }
 
+  Version 3 (a multi-view stereo model) adds the camera that sampled S_in and S_out, and the
+  further views, each with its own camera centre and points (StereoFitness scores each camera
+  with the view taken from the nearest direction):
+
+      {
+        "format": "visp-photomodel-model", "version": 3,
+        ... as version 2,
+        "camera_mm": [x, y, z],                // the left camera's centre in the model frame
+        "views": [ { "camera_mm": [x, y, z], "s_in": [[x, y, z, hue, u, v], ...], "s_out": [...] }, ... ]
+      }
+
   A model with every z = 0 is written as version 1, byte for byte as before; version 1 files
   load as flat models and behave exactly as they always did.
 */

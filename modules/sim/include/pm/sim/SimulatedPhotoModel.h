@@ -55,9 +55,13 @@ SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraPa
 
 /*!
   The stereo model of the toy at hMo = (0, 0, \e distanceMm) in the hand frame (facing the rig),
-  from the rig's backdrop pair and photo pair. Throws pm::Error as buildStereoPhotoModel().
+  from the rig's backdrop pair and photo pair. With \e viewTurnDeg > 0, four further pairs are taken
+  with the hand moved around the scene by +-viewTurnDeg about its x and y axes (the toy's origin
+  staying in place) and the model holds their views too (a multi-view model). Throws pm::Error as
+  buildStereoPhotoModel().
 */
 SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const StereoRig &rig, double distanceMm = 500,
-                                                  const StereoModelParams &params = StereoModelParams());
+                                                  const StereoModelParams &params = StereoModelParams(),
+                                                  double viewTurnDeg = 0);
 
 } // namespace pm::sim
