@@ -26,8 +26,9 @@ namespace {
 
 pm::StereoRig labRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
 
-//! A model of n_in points of hue \e hue on a 10 mm grid and n_out points around them; background hue 210.
-pm::PhotoModel gridModel(float hue)
+//! A model of (2 half + 1)^2 S_in points of hue \e hue on a grid of \e stepMm and \e nOut S_out points
+//! on a circle of 50 mm around them; background hue 210. The default: 49 S_in on 10 mm, 20 S_out.
+pm::PhotoModel gridModel(float hue, int half = 3, double stepMm = 10, int nOut = 20)
 {
   pm::PhotoModel m;
   m.distanceMm = 500;
@@ -37,18 +38,18 @@ pm::PhotoModel gridModel(float hue)
   m.photoWidth = 640;
   m.photoHeight = 480;
   m.backgroundHue = 210;
-  for (int j = -3; j <= 3; ++j)
-    for (int i = -3; i <= 3; ++i) {
+  for (int j = -half; j <= half; ++j)
+    for (int i = -half; i <= half; ++i) {
       pm::ModelPoint p;
-      p.x = static_cast<float>(10 * i);
-      p.y = static_cast<float>(10 * j);
+      p.x = static_cast<float>(stepMm * i);
+      p.y = static_cast<float>(stepMm * j);
       p.hue = hue;
       m.inner.push_back(p);
     }
-  for (int k = 0; k < 20; ++k) {
+  for (int k = 0; k < nOut; ++k) {
     pm::ModelPoint p;
-    p.x = static_cast<float>(50 * std::cos(k * M_PI / 10));
-    p.y = static_cast<float>(50 * std::sin(k * M_PI / 10));
+    p.x = static_cast<float>(50 * std::cos(k * M_PI / (nOut / 2.0)));
+    p.y = static_cast<float>(50 * std::sin(k * M_PI / (nOut / 2.0)));
     p.hue = 210;
     m.outer.push_back(p);
   }
@@ -103,22 +104,11 @@ TEST(Fitness, EachCameraIsScoredWithTheViewNearestItsDirectionOnOneScale)
     m.cameraMm[i] = mMcL[i][3] * 1e3;
     right.cameraMm[i] = mMcR[i][3] * 1e3;
   }
-  for (int j = -2; j <= 2; ++j)
-    for (int i = -2; i <= 2; ++i) {
-      pm::ModelPoint p;
-      p.x = static_cast<float>(8 * i);
-      p.y = static_cast<float>(8 * j);
-      p.z = -1;
-      p.hue = 120;
-      right.inner.push_back(p);
-    }
-  for (int k = 0; k < 10; ++k) {
-    pm::ModelPoint p;
-    p.x = static_cast<float>(50 * std::cos(k * M_PI / 5));
-    p.y = static_cast<float>(50 * std::sin(k * M_PI / 5));
-    p.hue = 210;
-    right.outer.push_back(p);
-  }
+  const pm::PhotoModel green = gridModel(120.f, 2, 8, 10);
+  right.inner = green.inner;
+  right.outer = green.outer;
+  for (pm::ModelPoint &p : right.inner)
+    p.z = -1;
   m.views.push_back(right);
   pm::StereoFitness fit(rig, m);
   // The left image is red (the left view's S_in all match), the right one green (the right view's do).

@@ -180,15 +180,19 @@ struct PlacedView
   int nOutFallback = 0;
 };
 
-//! The hand-frame point on pixel (u, v)'s ray of \e cam at the camera's depth \e z (mm).
-cv::Vec3d rayPoint(const RigCamera &cam, double u, double v, double z)
+//! \e p placed in the hand frame (mm) on its pixel's ray of \e cam, at the camera's depth \e z (mm).
+ModelPoint onRay(const RigCamera &cam, const ModelPoint &p, double z)
 {
   const vpCameraParameters &c = cam.cam;
-  const double X = (u - c.get_u0()) / c.get_px() * z, Y = (v - c.get_v0()) / c.get_py() * z;
-  cv::Vec3d h;
+  const double X = (p.u - c.get_u0()) / c.get_px() * z, Y = (p.v - c.get_v0()) / c.get_py() * z;
+  float h[3];
   for (unsigned i = 0; i < 3; ++i)
-    h[static_cast<int>(i)] = cam.hMc[i][0] * X + cam.hMc[i][1] * Y + cam.hMc[i][2] * z + cam.hMc[i][3] * 1e3;
-  return h;
+    h[i] = static_cast<float>(cam.hMc[i][0] * X + cam.hMc[i][1] * Y + cam.hMc[i][2] * z + cam.hMc[i][3] * 1e3);
+  ModelPoint q = p;
+  q.x = h[0];
+  q.y = h[1];
+  q.z = h[2];
+  return q;
 }
 
 /*!
@@ -209,12 +213,7 @@ PlacedView placeView(const PhotoModel &sampled, const cv::Mat &camZ, const RigCa
       pv.dropped.push_back(p);
       continue;
     }
-    const cv::Vec3d h = rayPoint(cam, p.u, p.v, z);
-    ModelPoint q = p;
-    q.x = static_cast<float>(h[0]);
-    q.y = static_cast<float>(h[1]);
-    q.z = static_cast<float>(h[2]);
-    pv.inner.push_back(q);
+    pv.inner.push_back(onRay(cam, p, z));
   }
   const int w = camZ.cols, h = camZ.rows;
   const int rad = static_cast<int>(std::ceil(params.silhouetteRadiusPx + params.photo.stripGapPx + params.photo.stripWidthPx));
@@ -246,12 +245,7 @@ PlacedView placeView(const PhotoModel &sampled, const cv::Mat &camZ, const RigCa
       z = fallback;
       ++pv.nOutFallback;
     }
-    const cv::Vec3d c = rayPoint(cam, p.u, p.v, z);
-    ModelPoint q = p;
-    q.x = static_cast<float>(c[0]);
-    q.y = static_cast<float>(c[1]);
-    q.z = static_cast<float>(c[2]);
-    pv.outer.push_back(q);
+    pv.outer.push_back(onRay(cam, p, z));
   }
   return pv;
 }
