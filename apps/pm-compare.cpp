@@ -22,7 +22,6 @@
 #include "pm/compare/Trackers.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
-#include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/sim/Scene.h"
@@ -151,12 +150,7 @@ int main(int argc, char **argv)
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     if (!std::ifstream(mbtXml))
       throw pm::Error("cannot read the MBT settings " + mbtXml);
-    std::vector<pm::Phi> table2;
-    for (const auto &row : pm::io::readPoseTable(trajectoryPath, "step"))
-      table2.push_back(row.second);
-    std::vector<pm::compare::Scenario> seqs;
-    for (const auto &name : scenarios)
-      seqs.push_back(pm::compare::makeScenario(name, table2, steps));
+    const std::vector<pm::compare::Scenario> seqs = pm::compare::makeScenarios(scenarios, trajectoryPath, steps);
     if (trackers.empty())
       throw CLI::ValidationError("--trackers", "at least one tracker");
 
@@ -208,7 +202,6 @@ int main(int argc, char **argv)
     std::ofstream csv(files.stage("frames.csv"));
     csv << "scenario,frame,t,tracker,translation_error_mm,rotation_error_deg,frame_ms,valid\n" << std::setprecision(6);
     pm::app::Progress progress("rendering and tracking", totalFrames, quiet);
-    const vpImage<vpRGBa> black(rig.left.height, rig.left.width, vpRGBa(0, 0, 0, 255));
     // Snapshots: the left image with every tracker's outline, at a few frames of each scenario.
     std::vector<vpImage<vpRGBa>> snapshots;
     for (std::size_t si = 0; si < seqs.size(); ++si) {
@@ -221,14 +214,7 @@ int main(int argc, char **argv)
       }
       for (std::size_t k = 0; k < seq.frames.size(); ++k) {
         const pm::compare::ScenarioFrame &f = seq.frames[k];
-        scene.params().exposure = f.exposure;
-        scene.params().lightDirHand[0] = f.lightX;
-        scene.params().occluder = f.occluded;
-        pm::sim::StereoImages im;
-        if (f.blank)
-          im.left = im.right = black;
-        else
-          im = scene.renderStereo(rig, f.hMo, static_cast<std::uint64_t>(k));
+        const pm::sim::StereoImages im = pm::compare::renderScenarioFrame(scene, rig, seq, k);
         const vpHomogeneousMatrix hMm = f.hMo * sm.oMm;
         const bool snap = k + 1 == seq.frames.size() / 2 || k + 1 == seq.frames.size();
         vpImage<vpRGBa> shot;

@@ -64,6 +64,8 @@ int main(int argc, char **argv)
   app.add_option("--pose", pose, "phi = x,y,z,eps1,eps2,eps3 of the target in the hand frame (mm, quaternion vector)");
   app.add_option("--rig", rigPath, "stereo rig file");
   pm::app::addSceneOptions(app, sp);
+  pm::app::DistractorChoice distractor;
+  pm::app::addDistractorOptions(app, distractor);
   const std::map<std::string, pm::sim::ShadowMode> shadowModes{
       {"auto", pm::sim::ShadowMode::Auto}, {"on", pm::sim::ShadowMode::On}, {"off", pm::sim::ShadowMode::Off}};
   app.add_option("--shadows", sp.shadows,
@@ -95,7 +97,8 @@ int main(int argc, char **argv)
     for (const auto &code : codes) {
       const pm::sim::TargetShape shape = code == "user" ? pm::sim::targetFromImage(pm::io::readColorImage(texture), widthMm, depthMm, texture)
                                                         : pm::sim::makeTarget(code);
-      const pm::sim::Scene scene(shape, sp);
+      pm::sim::Scene scene(shape, sp);
+      distractor.apply(scene);
       pm::sim::StereoImages im;
       double ms = 0;
       for (int r = 0; r < repeat; ++r) {

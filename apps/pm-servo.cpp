@@ -52,7 +52,9 @@ cv::Mat toMat(const vpImage<vpRGBa> &I)
 void writeCsvHeader(std::ostream &csv)
 {
   csv << std::setprecision(8) << "t,moving,true_x,true_y,true_z,true_e1,true_e2,true_e3,used_x,used_y,used_z,used_e1,used_e2,used_e3,"
-         "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms";
+         "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms,estimate_error_mm,estimate_error_deg,"
+         "used_error_mm,used_error_deg,"
+         "confidence,verified,trusted";
   for (int i = 1; i <= 7; ++i)
     csv << ",q" << i;
   for (int i = 1; i <= 7; ++i)
@@ -69,7 +71,9 @@ void writeCsvRow(std::ostream &csv, const pm::lab::LoopFrame &f, bool oracle)
   for (std::size_t i = 0; i < 6; ++i)
     csv << "," << b[i];
   csv << "," << f.translationErrorMm << "," << f.rotationErrorDeg << "," << f.track.fitness << ","
-      << (oracle ? "oracle" : pm::toString(f.track.state)) << "," << (f.servoing ? 1 : 0) << "," << f.track.computeMs;
+      << (oracle ? "oracle" : pm::toString(f.track.state)) << "," << (f.servoing ? 1 : 0) << "," << f.track.computeMs << ","
+      << f.estimateErrorMm << "," << f.estimateErrorDeg << "," << f.usedErrorMm << "," << f.usedErrorDeg << "," << f.track.confidence << "," << (f.track.verified ? 1 : 0) << ","
+      << (f.track.trusted ? 1 : 0);
   for (unsigned i = 0; i < 7; ++i)
     csv << "," << f.q[i];
   for (unsigned i = 0; i < 7; ++i)
@@ -158,6 +162,8 @@ int main(int argc, char **argv)
   pm::app::addLabModelOptions(app, lab);
   pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
+  pm::app::DistractorChoice distractor;
+  pm::app::addDistractorOptions(app, distractor);
   pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(5.0));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
@@ -165,7 +171,8 @@ int main(int argc, char **argv)
     const pm::TrackerParams tp = trackerOptions.resolve();
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     lp.fps = fps;
-    const pm::sim::Scene scene(pm::sim::makeTarget(target), sp);
+    pm::sim::Scene scene(pm::sim::makeTarget(target), sp);
+    distractor.apply(scene);
     const auto sm = pm::app::makeLabModel(scene, rig, lab);
     const int ax = axisIndex(axis);
     const pm::Phi phi0{0, 0, 500, 0, 0, 0};
@@ -374,6 +381,12 @@ int main(int argc, char **argv)
         {"by_tenth_of_the_run", tenths},
         {"resident_memory_mb", memory},
         {"joint_limit_violations", violations},
+        {"frames_servoed", log.framesServoed()},
+        {"frames_held", log.framesHeld()},
+        {"frames_servoed_on_wrong_pose", log.framesServoedOnWrongPose()},
+        {"frames_servoed_on_wrong_raw_estimate", log.framesServoedOnWrongRawEstimate()},
+        {"wrong_pose", "the pose the servo used (the filtered estimate) more than 20 mm or 5 deg from the truth; "
+                       "raw estimate: the tracker's own, before the filter"},
         {"max_joint_speed_fraction", log.maxJointSpeedFraction()},
         {"mean_frame_ms", meanMs},
         {"overlays", overlays},
@@ -393,6 +406,10 @@ int main(int argc, char **argv)
                 << "  while moving: rms " << moving.rmsMm() << " mm, max " << moving.maxMm << " mm; rotation rms "
                 << moving.rmsDeg() << " deg, max " << moving.maxDeg << " deg\n"
                 << "  joint limit violations " << violations << ", tracker " << meanMs << " ms per frame\n"
+                << "  servoed on " << log.framesServoed() << " frames (" << 100.0 * static_cast<double>(log.framesServoed()) /
+                                                                             static_cast<double>(std::max(1L, log.frames()))
+                << " %), held on " << log.framesHeld() << " (estimate not trusted), servoed on a wrong pose on "
+                << log.framesServoedOnWrongPose() << " (the raw estimate wrong on " << log.framesServoedOnWrongRawEstimate() << ")\n"
                 << "  by tenth of the run, rms error (mm):";
       for (const auto &t : log.tenths())
         std::cout << " " << t.rmsMm();

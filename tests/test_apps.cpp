@@ -37,7 +37,7 @@ void expectOneLineError(const pm::test::RunResult &r, const std::string &fragmen
 TEST(Apps, HelpExitsZeroAndShowsDefaults)
 {
   for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
-                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-bench"}) {
+                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-bench"}) {
     const auto r = runProgram(p, "--help");
     EXPECT_EQ(r.status, 0) << p;
     EXPECT_NE(r.out.find(std::string(p) == "pm-bench" ? "benchmark" : "--out"), std::string::npos) << p;
@@ -286,6 +286,10 @@ TEST(Reproducibility, SameSeedSameInputsSameCsvTimingsAside)
       const auto r = runProgram(program, args + out);
       ASSERT_EQ(r.status, 0) << program << ": " << r.err;
       csv[run] = pm::test::readText(out + "/frames.csv");
+      if (program == "pm-servo") { // and the arm never acted on a wrong pose
+        const auto sj = nlohmann::json::parse(pm::test::readText(out + "/summary.json"));
+        EXPECT_EQ(sj.at("frames_servoed_on_wrong_pose").get<long>(), 0);
+      }
     }
     ASSERT_GT(csv[0].size(), 1000u) << program;
     EXPECT_TRUE(withoutColumns(csv[0], drop) == withoutColumns(csv[1], drop)) << program << ": the runs differ";

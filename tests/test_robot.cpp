@@ -242,16 +242,21 @@ struct FaultRun
   tracker is given (C12 is the one in the scene). Every command is checked against the PA-10's
   speed and acceleration limits.
 */
-FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std::string &trackerTarget = "C12")
+FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std::string &trackerTarget = "C12", long budget = 1900,
+                       const std::string &lookAlike = "")
 {
   const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
   sp.supersampling = 1;
-  const pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp);
+  pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp);
+  if (!lookAlike.empty()) { // beside the crab, swaying 40 mm sideways at 0.3 Hz
+    scene.setDistractor(pm::sim::makeTarget(lookAlike));
+    scene.params().distractor = true;
+  }
   const pm::sim::Scene other(pm::sim::makeTarget(trackerTarget), sp);
   const auto sm = pm::sim::makeSimulatedPhotoModel(other, rig.left.cam, 640, 480, 500);
   pm::TrackerParams tp;
-  tp.budgetEvaluations = 1900;
+  tp.budgetEvaluations = budget;
   tp.ga.predictMotion = true;
   tp.ga.refineEvaluations = 100;
   tp.ga.restartGenerations = 30;
@@ -263,7 +268,12 @@ FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std:
   FaultRun run;
   vpColVector prev(7, 0.0);
   for (int k = 0; k < frames; ++k) {
+    scene.params().distractorPose[0] = -190 + 40 * std::sin(2 * M_PI * 0.3 * k / 30.0);
     run.frames.push_back(loop.step());
+    // Never a command on a wrong pose (more than 2 cm or 5 deg off), whatever the fault.
+    EXPECT_FALSE(run.frames.back().servoing && run.frames.back().wrongUsed())
+        << "frame " << k << ": servoed on a pose " << run.frames.back().usedErrorMm << " mm, " << run.frames.back().usedErrorDeg
+        << " deg off";
     const vpColVector &qd = run.frames.back().qdot;
     for (unsigned i = 0; i < 7; ++i) {
       EXPECT_TRUE(std::isfinite(qd[i])) << "frame " << k;
@@ -314,6 +324,34 @@ TEST(ClosedLoop, FailSafeUnderBlankFramesAFrozenCameraAndAJump)
     EXPECT_LE(at, end + 30) << "slow resumption after the fault ending at frame " << end;
   }
   EXPECT_LT(r.frames.back().translationErrorMm, 20.0);
+}
+
+TEST(ClosedLoop, AWrongFirstLockIsNeverServoedOn)
+{
+  // 600 evaluations per frame, no anti-aliasing: the tracker's first lock is the crab tilted by
+  // about 45 deg (issue 17's case; servoed on at once before the lock was verified). The arm holds
+  // until a challenger search has moved the tracker to the crab (here the first one verifies the
+  // wrong lock, whose confidence stays low, and the second, 15 untrusted frames later, finds the
+  // crab), then servos (checked in runWithFaults: never on a wrong pose).
+  const FaultRun r = runWithFaults(pm::lab::LoopFaults(), 120, "C12", 600);
+  ASSERT_TRUE(r.frames[0].track.state == pm::TrackState::Tracking && r.frames[0].wrongEstimate()) << "the case is gone";
+  EXPECT_FALSE(r.frames[0].servoing);
+  EXPECT_GE(resumedAt(r, 0, 20), 0) << "never servoed";
+}
+
+TEST(ClosedLoop, ALookAlikeBesideTheTargetIsNeverServoedOn)
+{
+  // A second crab (the same kind), then a squid of similar hue (the C05 model locks on the crab
+  // with q 0.85), swaying beside the target: the arm servos, and only on the target (checked in
+  // runWithFaults, as is every command); a jump to the look-alike would be a wrong pose.
+  for (const char *lookAlike : {"C12", "C05"}) {
+    const FaultRun r = runWithFaults(pm::lab::LoopFaults(), 120, "C12", 1900, lookAlike);
+    EXPECT_GE(resumedAt(r, 0, 20), 0) << lookAlike << ": never servoed";
+    int servoed = 0;
+    for (const auto &f : r.frames)
+      servoed += f.servoing ? 1 : 0;
+    EXPECT_GT(servoed, 60) << lookAlike;
+  }
 }
 
 TEST(ClosedLoop, FailSafeWithAWrongModel)

@@ -1,6 +1,7 @@
 #include "pm/app/Options.h"
 
 #include "pm/io/TrackerConfigFile.h"
+#include "pm/sim/TargetCatalog.h"
 
 namespace pm::app {
 
@@ -64,6 +65,28 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p)
   app.add_option("--seed", p.seed, "noise seed")->group(g);
 }
 
+void addDistractorOptions(CLI::App &app, DistractorChoice &c)
+{
+  const char *g = "Simulator";
+  app.add_option("--distractor", c.target, "put a look-alike toy beside the target: a catalogue code (the same kind "
+                 "as the target, or another of similar hue, e.g. C05 beside C12)")->group(g);
+  app.add_option("--distractor-at", c.atMm, "the look-alike's position on the backdrop, x,y in the target frame (mm)")
+      ->delimiter(',')
+      ->expected(2)
+      ->group(g);
+}
+
+void DistractorChoice::apply(sim::Scene &scene) const
+{
+  if (target.empty())
+    return;
+  scene.setDistractor(sim::makeTarget(target));
+  scene.params().distractor = true;
+  scene.params().distractorPose[0] = atMm.at(0);
+  scene.params().distractorPose[1] = atMm.at(1);
+  scene.params().validate();
+}
+
 void addFitnessOptions(CLI::App &app, FitnessParams &p)
 {
   const char *g = "Fitness";
@@ -123,6 +146,13 @@ TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m
       [](TrackerParams &t, const TrackerParams &c) { t.lockQuality = c.lockQuality; });
   add(app.add_option("--lost-quality", p.lostQuality, "normalised fitness q below which it is lost"),
       [](TrackerParams &t, const TrackerParams &c) { t.lostQuality = c.lostQuality; });
+  add(app.add_option("--verify-evals", p.verifyEvaluations, "evaluations of the challenger search that verifies a new lock "
+                                                        "before it is trusted (0: every lock trusted at once)")
+          ->check(CLI::Range(0L, 100000000L)),
+      [](TrackerParams &t, const TrackerParams &c) { t.verifyEvaluations = c.verifyEvaluations; });
+  add(app.add_option("--trust-threshold", p.confidence.threshold, "confidence from which an estimate is trusted")
+          ->check(CLI::Range(0.001, 0.999)),
+      [](TrackerParams &t, const TrackerParams &c) { t.confidence.threshold = c.confidence.threshold; });
 }
 
 TrackerParams TrackerOptions::resolve() const

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "pm/core/Error.h"
+#include "pm/io/PoseTableFile.h"
 #include "pm/sim/Trajectory.h"
 
 namespace pm::compare {
@@ -123,6 +124,31 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
   }
   s.name = name;
   return s;
+}
+
+std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const std::string &table2Path, int steps)
+{
+  std::vector<Phi> table2;
+  for (const auto &row : io::readPoseTable(table2Path, "step"))
+    table2.push_back(row.second);
+  std::vector<Scenario> seqs;
+  for (const auto &name : names)
+    seqs.push_back(makeScenario(name, table2, steps));
+  return seqs;
+}
+
+sim::StereoImages renderScenarioFrame(sim::Scene &scene, const StereoRig &rig, const Scenario &s, std::size_t k)
+{
+  const ScenarioFrame &f = s.frames.at(k);
+  scene.params().exposure = f.exposure;
+  scene.params().lightDirHand[0] = f.lightX;
+  scene.params().occluder = f.occluded;
+  if (!f.blank)
+    return scene.renderStereo(rig, f.hMo, static_cast<std::uint64_t>(k));
+  sim::StereoImages im;
+  im.left.resize(rig.left.height, rig.left.width, vpRGBa(0, 0, 0, 255));
+  im.right.resize(rig.right.height, rig.right.width, vpRGBa(0, 0, 0, 255));
+  return im;
 }
 
 } // namespace pm::compare

@@ -1,5 +1,7 @@
 #include "pm/core/Pose.h"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <visp3/core/vpQuaternionVector.h>
@@ -57,6 +59,18 @@ Phi fromHomogeneousMatrix(const vpHomogeneousMatrix &hMo)
   p.e2 = s * q.y();
   p.e3 = s * q.z();
   return p;
+}
+
+double translationDistanceMm(const Phi &a, const Phi &b)
+{
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+double rotationDistanceDeg(const Phi &a, const Phi &b)
+{
+  // The quaternions' dot product is cos(angle / 2), for either sign of each.
+  const double d = std::fabs(a.eta() * b.eta() + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3);
+  return 2.0 * std::acos(std::min(1.0, d)) * 180.0 / M_PI;
 }
 
 } // namespace pm

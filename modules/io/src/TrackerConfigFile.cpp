@@ -39,7 +39,10 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat);
     checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
-                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "smooth_refine_evaluations", "smooth_refine_max_drop", "search_space", "rmga", "fitness"}, "");
+                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "smooth_refine_evaluations", "smooth_refine_max_drop", "verify_evaluations",
+                  "verify_budget_fraction", "verify_margin", "verify_switch_margin", "verify_far_mm", "verify_far_deg",
+                  "verify_same_object_mm", "reverify_after_frames", "confidence", "search_space", "rmga",
+                  "fitness"}, "");
     get(j, "budget_ms", p.budgetMs);
     get(j, "budget_evaluations", p.budgetEvaluations);
     get(j, "lock_quality", p.lockQuality);
@@ -51,6 +54,21 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     get(j, "steady_quality_drop", p.steadyQualityDrop);
     get(j, "smooth_refine_evaluations", p.smoothRefineEvaluations);
     get(j, "smooth_refine_max_drop", p.smoothRefineMaxDrop);
+    get(j, "verify_evaluations", p.verifyEvaluations);
+    get(j, "verify_budget_fraction", p.verifyBudgetFraction);
+    get(j, "verify_margin", p.verifyMargin);
+    get(j, "verify_switch_margin", p.verifySwitchMargin);
+    get(j, "verify_far_mm", p.verifyFarMm);
+    get(j, "verify_far_deg", p.verifyFarDeg);
+    get(j, "verify_same_object_mm", p.verifySameObjectMm);
+    get(j, "reverify_after_frames", p.reverifyAfterFrames);
+    if (j.contains("confidence")) {
+      const json &c = j.at("confidence");
+      checkKeys(c, {"weights", "bias", "threshold"}, " in \"confidence\"");
+      get(c, "weights", p.confidence.weights);
+      get(c, "bias", p.confidence.bias);
+      get(c, "threshold", p.confidence.threshold);
+    }
     if (j.contains("search_space")) {
       const json &s = j.at("search_space");
       checkKeys(s, {"lo", "hi"}, " in \"search_space\"");
@@ -110,6 +128,15 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"steady_quality_drop", p.steadyQualityDrop},
                {"smooth_refine_evaluations", p.smoothRefineEvaluations},
                {"smooth_refine_max_drop", p.smoothRefineMaxDrop},
+               {"verify_evaluations", p.verifyEvaluations},
+               {"verify_budget_fraction", p.verifyBudgetFraction},
+               {"verify_margin", p.verifyMargin},
+               {"verify_switch_margin", p.verifySwitchMargin},
+               {"verify_far_mm", p.verifyFarMm},
+               {"verify_far_deg", p.verifyFarDeg},
+               {"verify_same_object_mm", p.verifySameObjectMm},
+               {"reverify_after_frames", p.reverifyAfterFrames},
+               {"confidence", {{"weights", p.confidence.weights}, {"bias", p.confidence.bias}, {"threshold", p.confidence.threshold}}},
                {"search_space", {{"lo", p.space.lo}, {"hi", p.space.hi}}},
                {"rmga",
                 {{"population", p.ga.population},

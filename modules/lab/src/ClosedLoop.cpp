@@ -62,7 +62,7 @@ LoopFrame ClosedLoop::step()
   // The tracker runs in both modes (its estimate is recorded); the oracle servos on the truth.
   f.track = m_tracker.track(m_images.left, m_images.right);
   m_qRef -= m_lp.qualityMemoryPerS / m_lp.fps;
-  const bool usable = m_lp.oracle || (f.track.state == TrackState::Tracking && !f.frozen &&
+  const bool usable = m_lp.oracle || (f.track.trusted && !f.frozen &&
                                       f.track.quality >= m_tracker.params().lostQuality &&
                                       f.track.quality >= m_qRef - m_lp.qualityDrop && f.track.phi.isValid() &&
                                       m_tracker.params().space.contains(f.track.phi));
@@ -107,6 +107,11 @@ LoopFrame ClosedLoop::step()
   const vpHomogeneousMatrix e = m_hdMo.inverse() * f.hMmTrue;
   f.translationErrorMm = e.getTranslationVector().frobeniusNorm() * 1e3;
   f.rotationErrorDeg = e.getThetaUVector().getTheta() * 180 / M_PI;
+  const Phi truth = fromHomogeneousMatrix(f.hMmTrue), used = fromHomogeneousMatrix(f.hMmUsed);
+  f.estimateErrorMm = translationDistanceMm(f.track.phi, truth);
+  f.estimateErrorDeg = rotationDistanceDeg(f.track.phi, truth);
+  f.usedErrorMm = translationDistanceMm(used, truth);
+  f.usedErrorDeg = rotationDistanceDeg(used, truth);
   ++m_frame;
   return f;
 }

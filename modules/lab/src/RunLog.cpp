@@ -71,6 +71,10 @@ void RunLog::add(const LoopFrame &f)
     m_maxSpeedFraction = std::max(m_maxSpeedFraction, std::fabs(f.qdot[i]) / m_vmax[i]);
   }
   m_sumMs += f.track.computeMs;
+  m_servoedOnWrong += f.servoing && f.wrongUsed() ? 1 : 0;
+  m_servoedOnWrongRaw += f.servoing && f.wrongEstimate() ? 1 : 0;
+  m_held += f.servoing ? 0 : 1;
+  m_servoed += f.servoing ? 1 : 0;
 
   if (m_inBucket == 0) {
     m_open = RunSample{};

@@ -8,6 +8,7 @@
 
 #include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
+#include "pm/core/Pose.h"
 #include "pm/sim/Noise.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -35,6 +36,9 @@ void SceneParams::validate() const
   check(sceneSpecular >= 0 && sceneSpecular <= 10, "scene specular must lie in [0, 10]");
   check(sceneShininess >= 1 && sceneShininess <= 1000, "scene shininess must lie in [1, 1000]");
   check(shadowTexelMm >= 0.05 && shadowTexelMm <= 5, "shadow texel must lie in [0.05, 5] mm");
+  Phi d{distractorPose[0], distractorPose[1], distractorPose[2], distractorPose[3], distractorPose[4], distractorPose[5]};
+  check(d.isValid() && std::fabs(d.x) < 1e4 && std::fabs(d.y) < 1e4 && std::fabs(d.z) < 1e4,
+        "distractor pose must be finite, within 10 m, with |eps| <= 1");
 }
 
 struct Scene::ShadowCache
@@ -164,6 +168,11 @@ Scene::Scene(const TargetShape &target, const SceneParams &params)
   m_occluder.texture = tex;
 }
 
+void Scene::setDistractor(const TargetShape &shape)
+{
+  m_distractor = buildTargetMesh(shape, m_params.meshStepMm, static_cast<float>(m_params.specular));
+}
+
 void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget) const
 {
@@ -225,6 +234,12 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
   raster.draw(m_backdrop, cMo, camera.cam, light, 1);
   if (withTarget)
     raster.draw(m_toy, cMo, camera.cam, toyLight, 2);
+  if (m_params.distractor && hasDistractor()) {
+    const double *d = m_params.distractorPose;
+    Lighting look = toyLight;
+    look.shadow = nullptr; // the toy's shadow map does not hold it
+    raster.draw(m_distractor, cMo * toHomogeneousMatrix(Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), camera.cam, look, 4);
+  }
   if (m_params.occluder)
     raster.draw(m_occluder, cMo, camera.cam, light, 3);
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));

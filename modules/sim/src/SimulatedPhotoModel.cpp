@@ -9,9 +9,20 @@
 
 namespace pm::sim {
 
-SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraParameters &cam, unsigned w, unsigned h,
+namespace {
+//! The scene the model's photos are taken in: the target alone, without a look-alike beside it.
+Scene alone(const Scene &scene)
+{
+  Scene s = scene;
+  s.params().distractor = false;
+  return s;
+}
+} // namespace
+
+SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &inScene, const vpCameraParameters &cam, unsigned w, unsigned h,
                                             double distanceMm, const PhotoModelParams &params)
 {
+  const Scene scene = alone(inScene);
   SimulatedPhotoModel s;
   scene.renderPhotos(cam, w, h, distanceMm, s.background, s.photo);
   s.build = buildPhotoModel(s.background, s.photo, cam, distanceMm, params);
@@ -21,9 +32,10 @@ SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraPa
   return s;
 }
 
-SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const StereoRig &rig, double distanceMm,
+SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const StereoRig &rig, double distanceMm,
                                                   const StereoModelParams &params, double viewTurnDeg)
 {
+  const Scene scene = alone(inScene);
   if (!(distanceMm > 0) || !std::isfinite(distanceMm))
     throw Error("photo distance must be positive");
   if (!(viewTurnDeg >= 0 && viewTurnDeg <= 45))

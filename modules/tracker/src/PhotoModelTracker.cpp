@@ -1,6 +1,7 @@
 #include "pm/tracker/PhotoModelTracker.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -42,6 +43,11 @@ void TrackerParams::validate() const
   }
   if (!(initSpread >= 0 && initSpread <= 1))
     throw Error("tracker: the initial spread must lie in [0, 1]");
+  if (reverifyAfterFrames < 0 || verifyEvaluations < 0 || verifyEvaluations > 100000000 || !(verifyBudgetFraction > 0 && verifyBudgetFraction < 1) || !(verifyMargin >= 0) ||
+      !(verifySwitchMargin >= 0) || !(verifyFarMm > 0) || !(verifyFarDeg > 0) || !(verifySameObjectMm >= 0))
+    throw Error("tracker: the re-verification frames must be non-negative, the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
+                "same-object distance be non-negative and its far distances positive");
+  confidence.validate();
   if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1))
     throw Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1 and the steady "
                 "quality drop lie in [0, 1)");
@@ -54,8 +60,30 @@ FrameBudget TrackerParams::steadyBudget() const
   return FrameBudget::ms(steadyBudgetFraction * budgetMs);
 }
 
+namespace {
+
+//! The challenger's RM-GA: the tracker's, with another seed, no motion prediction and no refinement.
+RmGaParams challengerParams(RmGaParams p)
+{
+  p.seed = p.seed * 0x9E3779B97F4A7C15ULL + 0x632BE59BD9B4E019ULL;
+  p.predictMotion = false;
+  p.refineEvaluations = 0;
+  return p;
+}
+
+//! \e b split: the part \e fraction of it, or the rest; never under one population's evaluations.
+FrameBudget part(const FrameBudget &b, double fraction, int population)
+{
+  if (b.evaluations > 0)
+    return FrameBudget::evals(std::max<long>(population, std::lround(fraction * static_cast<double>(b.evaluations))));
+  return FrameBudget::ms(fraction * b.milliseconds);
+}
+
+} // namespace
+
 PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
-    : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga)
+    : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga),
+      m_challenger(params.space, challengerParams(params.ga))
 {
   const FitnessParams &f = params.fitness;
   const double n = static_cast<double>(model.size());
@@ -83,6 +111,43 @@ void PhotoModelTracker::resetCounters()
   m_lowFrames = 0;
   m_steadyFrames = 0;
   m_recentBestQ = 0;
+  m_verifyLeft = 0;
+  m_verified = false;
+  m_framesTracked = 0;
+  m_untrustedFrames = 0;
+}
+
+void PhotoModelTracker::startVerification(const Phi &lock)
+{
+  m_verified = m_params.verifyEvaluations == 0;
+  m_verifyLeft = m_params.verifyEvaluations;
+  if (m_verifyLeft == 0)
+    return;
+  // Every individual the lock, then all but it replaced by the restart's blocks; the lock does
+  // not breed for the whole verification, so the others search on their own.
+  m_challenger.seedAround(lock, 0.0);
+  m_challenger.restart(1, 1000000);
+}
+
+void PhotoModelTracker::verify(StereoObjective &objective, const FrameBudget &budget, TrackResult &r)
+{
+  const FrameResult c = m_challenger.evolve(objective, budget);
+  r.evaluations += c.evaluations;
+  r.generations += c.generations;
+  const double apartMm = translationDistanceMm(c.best, r.phi);
+  const bool far = apartMm > m_params.verifyFarMm || rotationDistanceDeg(c.best, r.phi) > m_params.verifyFarDeg;
+  if (far && quality(c.fitness) > quality(r.fitness) + m_params.verifySwitchMargin) {
+    // A clearly better pose elsewhere: the tracker moves there, and that lock is verified in turn.
+    m_ga.seedAround(c.best, m_params.initSpread);
+    r.phi = c.best;
+    r.fitness = c.fitness;
+    r.switched = true;
+    startVerification(c.best);
+  } else if (far && apartMm < m_params.verifySameObjectMm && quality(c.fitness) > quality(r.fitness) - m_params.verifyMargin) {
+    startVerification(r.phi); // another pose of the same object scores as well: ambiguous, look again
+  } else if ((m_verifyLeft -= std::min(m_verifyLeft, c.evaluations)) == 0) {
+    m_verified = true;
+  }
 }
 
 void PhotoModelTracker::initialize()
@@ -102,6 +167,8 @@ void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
   m_last.phi = p;
   m_last.state = TrackState::Tracking;
   resetCounters();
+  m_verified = true; // a pose given is taken as verified
+  m_last.verified = true;
 }
 
 void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
@@ -109,6 +176,10 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
   if (!hNowMhPrev.isAnHomogeneousMatrix())
     throw Error("tracker: the hand motion is not a rigid transformation");
   m_ga.transform([&](const Phi &p) {
+    const Phi q = fromHomogeneousMatrix(hNowMhPrev * toHomogeneousMatrix(p));
+    return q.isValid() ? q : p;
+  });
+  m_challenger.transform([&](const Phi &p) {
     const Phi q = fromHomogeneousMatrix(hNowMhPrev * toHomogeneousMatrix(p));
     return q.isValid() ? q : p;
   });
@@ -126,7 +197,8 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   if (budget.milliseconds > 0) // the hue planes are part of the frame's time
     budget.milliseconds = std::max(0.05, budget.milliseconds - std::chrono::duration<double, std::milli>(
                                                                     std::chrono::steady_clock::now() - t0).count());
-  const FrameResult fr = m_ga.evolve(objective, budget);
+  const bool verifying = m_verifyLeft > 0 && m_last.state == TrackState::Tracking;
+  const FrameResult fr = m_ga.evolve(objective, verifying ? part(budget, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population) : budget);
   TrackResult r;
   r.phi = fr.best;
   r.fitness = fr.fitness;
@@ -143,10 +215,12 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
       r.fitness = f;
     }
   }
-  r.hMo = toHomogeneousMatrix(r.phi);
-  r.quality = quality(r.fitness);
   r.evaluations = fr.evaluations;
   r.generations = fr.generations;
+  if (verifying)
+    verify(objective, part(budget, m_params.verifyBudgetFraction, m_params.ga.population), r);
+  r.hMo = toHomogeneousMatrix(r.phi);
+  r.quality = quality(r.fitness);
   // The state machine.
   const TrackState prev = m_last.state;
   if (r.quality >= m_params.lockQuality) {
@@ -160,12 +234,64 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   }
   if (r.state == TrackState::Lost && prev != TrackState::Lost)
     m_ga.restart(1, m_params.ga.restartGenerations); // search again, keeping the best guess apart
+  // A new lock is verified on the next frames; a lost target is no longer.
+  if (r.state == TrackState::Tracking && prev != TrackState::Tracking)
+    startVerification(r.phi);
+  else if (r.state != TrackState::Tracking)
+    m_verified = false, m_verifyLeft = 0;
+  m_framesTracked = r.state == TrackState::Tracking ? m_framesTracked + 1 : 0;
   // Steadiness for the next frame's budget.
   r.steady = steady;
   // The recent best is remembered through a loss, so that a relock on a wrong pose (lower q) is
   // not taken for steady and keeps the whole budget to find the true one.
   m_recentBestQ = std::max(r.state == TrackState::Tracking ? r.quality : 0.0, m_recentBestQ - 0.001);
   m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
+  // The confidence, from the frame's cues.
+  const FitnessDetail d = m_fitness.evaluateDetail(r.phi);
+  ConfidenceCues &c = r.cues;
+  c.quality = r.quality;
+  c.qualityMin = std::min(quality(d.left), quality(d.right));
+  auto shares = [](const FitnessCounts &n, double &in, double &out) {
+    const int nIn = n.inMatch + n.inBackground + n.inOther + n.inOff, nOut = n.outBackground + n.outOther + n.outOff;
+    in = nIn > 0 ? static_cast<double>(n.inMatch) / nIn : 0.0;
+    out = nOut > 0 ? static_cast<double>(n.outBackground) / nOut : 0.0;
+  };
+  double inL, outL, inR, outR;
+  shares(d.countsLeft, inL, outL);
+  shares(d.countsRight, inR, outR);
+  c.inMatchMin = std::min(inL, inR);
+  c.outBackgroundMin = std::min(outL, outR);
+  const double r22 = 1.0 - 2.0 * (r.phi.e1 * r.phi.e1 + r.phi.e2 * r.phi.e2); // the model's z axis . the hand's
+  c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;
+  // Competing poses of the same object: turned about the model's z axis, or the tilt mirrored.
+  const Phi b = r.phi;
+  const vpHomogeneousMatrix hMb = toHomogeneousMatrix(b);
+  std::array<Phi, 8> alt;
+  for (std::size_t k = 0; k < 7; ++k) {
+    const double a = (static_cast<double>(k) - 3.0) * M_PI / 4.0 + (k >= 3 ? M_PI / 4.0 : 0.0); // -135..-45, 45..180 deg
+    alt[k] = fromHomogeneousMatrix(hMb * vpHomogeneousMatrix(0, 0, 0, 0, 0, a));
+  }
+  alt[7] = Phi{b.x, b.y, b.z, -b.e1, -b.e2, b.e3};
+  double qAlt = -1e9;
+  for (const Phi &p : alt)
+    if (p.isValid() && rotationDistanceDeg(p, b) > m_params.verifyFarDeg) // a mirrored small tilt is the same pose
+      qAlt = std::max(qAlt, quality(m_fitness.evaluate(p)));
+  c.competitorMargin = r.quality - qAlt;
+  c.qualityDrop = std::max(0.0, m_recentBestQ - r.quality);
+  c.jumpMm = prev == TrackState::Tracking ? translationDistanceMm(r.phi, m_last.phi) : 0.0;
+  c.jumpDeg = prev == TrackState::Tracking ? rotationDistanceDeg(r.phi, m_last.phi) : 0.0;
+  c.framesTracked = m_framesTracked;
+  c.verified = m_verified;
+  c.tracking = r.state == TrackState::Tracking;
+  r.verified = m_verified;
+  r.confidence = m_params.confidence.confidence(c);
+  r.trusted = c.tracking && r.verified && r.confidence >= m_params.confidence.threshold;
+  // A verified lock that is not trusted for long is doubted: the challenger searches again.
+  m_untrustedFrames = c.tracking && r.verified && !r.trusted ? m_untrustedFrames + 1 : 0;
+  if (m_params.reverifyAfterFrames > 0 && m_untrustedFrames >= m_params.reverifyAfterFrames) {
+    m_untrustedFrames = 0;
+    startVerification(r.phi);
+  }
   r.computeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   m_last = r;
   return r;

@@ -19,6 +19,16 @@ void addModelOptions(CLI::App &app, PhotoModelParams &p);
 //! --noise, --exposure, --occluder, --supersampling, --seed
 void addSceneOptions(CLI::App &app, sim::SceneParams &p);
 //! Which photo-model the lab makes of its target: the paper's flat one or the stereo one (with depth).
+//! --distractor CODE, --distractor-at X,Y: a look-alike toy beside the target (see SceneParams::distractor).
+struct DistractorChoice
+{
+  std::string target;                 //!< its catalogue code (empty: none)
+  std::vector<double> atMm{-190, 0};  //!< its position on the backdrop, target frame (mm)
+  //! Puts it in \e scene (nothing when no target was given). Throws pm::Error for an unknown code.
+  void apply(sim::Scene &scene) const;
+};
+void addDistractorOptions(CLI::App &app, DistractorChoice &c);
+
 struct LabModelChoice
 {
   bool stereo = false;      //!< --stereo: the rig's two cameras take the photos, every point gets its relief

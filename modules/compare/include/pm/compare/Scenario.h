@@ -18,6 +18,8 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 
 #include "pm/core/Pose.h"
+#include "pm/core/StereoRig.h"
+#include "pm/sim/Scene.h"
 
 namespace pm::compare {
 
@@ -47,5 +49,14 @@ const std::vector<std::string> &scenarioNames();
   \e steps > 0 keeps only the first steps of table2. Throws pm::Error for an unknown name.
 */
 Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, int steps = 0);
+//! The scenarios \e names, Table 2's waypoints read from \e table2Path (step,x,y,z,e1,e2,e3). Throws pm::Error.
+std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const std::string &table2Path, int steps = 0);
+
+/*!
+  The images of frame \e k of \e s: the scene set as the frame says (exposure, light, occluder),
+  rendered, or black for a blank frame.
+*/
+sim::StereoImages renderScenarioFrame(sim::Scene &scene, const StereoRig &rig, const Scenario &s, std::size_t k);
+
 
 } // namespace pm::compare

@@ -46,6 +46,11 @@ inline Rot3 rotationOf(const Phi &p)
 
 //! phi -> hMo (metres). Throws pm::Error if phi is not valid (|eps| > 1 or not finite).
 vpHomogeneousMatrix toHomogeneousMatrix(const Phi &phi);
+//! Distance between the positions of \e a and \e b (mm).
+double translationDistanceMm(const Phi &a, const Phi &b);
+//! Angle of the rotation between the orientations of \e a and \e b (deg, in [0, 180]).
+double rotationDistanceDeg(const Phi &a, const Phi &b);
+
 //! hMo (metres) -> phi with eta >= 0. Throws pm::Error if hMo is not a rigid transformation.
 Phi fromHomogeneousMatrix(const vpHomogeneousMatrix &hMo);
 

@@ -6,8 +6,8 @@
   the hand frame (or, in oracle mode, the true pose is used), and PBVS with vpServo commands the
   PA-10's joint velocities, integrated every 2 ms until the next frame.
 
-  Fail-safe: the servo runs only on an estimate that is usable: the tracker reports "tracking",
-  its quality is not under the lost threshold (no grace frames here) nor far under its recent best
+  Fail-safe: the servo runs only on an estimate that is usable: the tracker trusts it
+  (TrackResult::trusted: tracking, its lock verified, its confidence over the threshold), its quality is not under the lost threshold (no grace frames here) nor far under its recent best
   (LoopParams::qualityDrop), the pose lies in the search
   space, and the images are not the very same as the last ones (a frozen camera: real frames are
   never equal to the bit). Otherwise the arm is stopped. Every command goes through
@@ -80,6 +80,15 @@ struct LoopFrame
   vpColVector q, qdot;           //!< joints after the frame, and the velocity commanded (after SafeCommand)
   double translationErrorMm = 0; //!< true relative pose against the desired one
   double rotationErrorDeg = 0;
+  double estimateErrorMm = 0;    //!< the tracker's estimate against the true pose (mm) ...
+  double estimateErrorDeg = 0;   //!< ... and (deg)
+  double usedErrorMm = 0;        //!< the pose the servo used (hMmUsed, the filtered estimate) against the true pose (mm) ...
+  double usedErrorDeg = 0;       //!< ... and (deg)
+  //! The tracker's estimate is wrong: more than kWrongMm or kWrongDeg off the truth.
+  bool wrongEstimate() const { return estimateErrorMm > kWrongMm || estimateErrorDeg > kWrongDeg; }
+  //! The pose the servo used is wrong (the same bounds).
+  bool wrongUsed() const { return usedErrorMm > kWrongMm || usedErrorDeg > kWrongDeg; }
+  static constexpr double kWrongMm = 20, kWrongDeg = 5;
 };
 
 class ClosedLoop

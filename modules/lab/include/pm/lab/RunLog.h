@@ -71,6 +71,13 @@ public:
   const std::array<ErrorStats, 10> &tenths() const { return m_tenths; }
   int jointLimitViolations() const { return m_violations; }
   double maxJointSpeedFraction() const { return m_maxSpeedFraction; }
+  //! Frames the servo acted on a wrong pose (the pose it used, LoopFrame::wrongUsed()).
+  long framesServoedOnWrongPose() const { return m_servoedOnWrong; }
+  //! Frames the servo acted while the tracker's raw estimate was wrong (LoopFrame::wrongEstimate()).
+  long framesServoedOnWrongRawEstimate() const { return m_servoedOnWrongRaw; }
+  //! Frames the arm was held (stopped or stopping: the estimate not usable) and frames it servoed.
+  long framesHeld() const { return m_held; }
+  long framesServoed() const { return m_servoed; }
   double meanComputeMs() const { return m_frames ? m_sumMs / static_cast<double>(m_frames) : 0; }
   const std::vector<RunSample> &samples() const { return m_samples; }
   long framesPerSample() const { return m_bucket; }
@@ -92,6 +99,7 @@ private:
   std::array<ErrorStats, 10> m_tenths{};
   int m_violations = 0;
   double m_maxSpeedFraction = 0, m_sumMs = 0;
+  long m_servoedOnWrong = 0, m_servoedOnWrongRaw = 0, m_held = 0, m_servoed = 0;
   std::vector<RunSample> m_samples;
   RunSample m_open;
   long m_inBucket = 0;

@@ -61,6 +61,13 @@ struct SceneParams
   double sceneSpecular = 0.35;              //!< the toy's specular strength under the scene light
   double sceneShininess = 40;               //!< its Blinn-Phong exponent under the scene light
   double shadowTexelMm = 0.35;              //!< shadow-map texel (across the light)
+  /*!
+    A look-alike in view (Scene::setDistractor gives its shape): drawn when on, at this pose of
+    its own frame in the target frame (x, y, z mm, eps1, eps2, eps3; beside the toy on the same
+    backdrop by default), lit like the toy. A scenario moves it by changing the pose per frame.
+  */
+  bool distractor = false;
+  double distractorPose[6] = {-190, 0, 0, 0, 0, 0};
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
@@ -94,6 +101,13 @@ public:
   void renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, double distanceMm, vpImage<vpRGBa> &background,
                     vpImage<vpRGBa> &withTarget) const;
 
+  /*!
+    The look-alike's shape (a second toy: the same kind as the target, or another of similar hue);
+    it is drawn while params().distractor is on. Throws pm::Error if the shape is invalid.
+  */
+  void setDistractor(const TargetShape &shape);
+  bool hasDistractor() const { return !m_distractor.triangles.empty(); }
+
   //! True if this scene is lit by the scene light with shadows (params().shadows, Auto resolved).
   bool sceneLit() const;
   /*!
@@ -110,7 +124,7 @@ public:
 private:
   TargetShape m_target;
   SceneParams m_params;
-  Mesh m_toy, m_backdrop, m_occluder;
+  Mesh m_toy, m_backdrop, m_occluder, m_distractor;
   struct ShadowCache;
   std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
   struct LensCache;

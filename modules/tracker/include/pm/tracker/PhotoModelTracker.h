@@ -13,12 +13,17 @@
   - lost: q < lostQuality for lostFrames frames in a row; the population then restarts (all
     but the best individual new, see RmGa::restart) and searches until q >= lockQuality again.
 
+  Trust: "tracking" says the model fits somewhere, not that the pose is right. A new lock is
+  verified by a challenger search (TrackerParams::verifyEvaluations), and every frame gets a
+  confidence from its cues (TrackConfidence.h); TrackResult::trusted (tracking, verified,
+  confidence over its threshold) is what a robot should act on.
+
       pm::PhotoModelTracker tracker(rig, model);
       tracker.initialize();
       for (;;) {
         grab(IL, IR);
         const pm::TrackResult r = tracker.track(IL, IR);
-        if (r.state == pm::TrackState::Tracking) use(r.hMo);
+        if (r.trusted) use(r.hMo);
       }
 */
 #include <string>
@@ -31,6 +36,7 @@
 #include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/StereoObjective.h"
+#include "pm/tracker/TrackConfidence.h"
 
 namespace pm {
 
@@ -79,6 +85,33 @@ struct TrackerParams
   double smoothRefineMaxDrop = 0.01;
   LocalSimplexParams smoothRefine; //!< its first steps (its evaluations: smoothRefineEvaluations)
 
+  /*!
+    Verification of a new lock: after the tracker locks (from searching or lost), a challenger
+    RM-GA, started from the lock with every other individual new (random, the lock's position
+    with another orientation, its orientation elsewhere, its tilt mirrored, facing the cameras;
+    see RmGa::restart) and the lock itself kept out of breeding, searches the same frames with
+    verifyBudgetFraction of each frame's budget (taken from the main search, so a frame costs the
+    same). A pose it finds farther than verifyFarMm or verifyFarDeg from the tracker's:
+    - scoring over verifySwitchMargin (in q) above it: the tracker moves there (a wrong first
+      lock), and verification starts again;
+    - within verifySameObjectMm of it and scoring within verifyMargin under it (another pose of
+      the same object as good, e.g. the mirrored tilt): ambiguous, verification starts again;
+    - otherwise (worse, or a twin elsewhere that scores the same): no objection.
+    A lock that lasts verifyEvaluations evaluations of the challenger is verified; 0: off (every
+    lock counts as verified).
+  */
+  long verifyEvaluations = 6000;
+  double verifyBudgetFraction = 0.5;
+  double verifyMargin = 0.02;
+  double verifySwitchMargin = 0.03;
+  double verifyFarMm = 20;
+  double verifyFarDeg = 5;
+  double verifySameObjectMm = 60;
+  //! A verified lock whose confidence stays under the threshold this many tracked frames in a row is verified again (0: never).
+  int reverifyAfterFrames = 15;
+  //! How the frame's confidence is computed from its cues, and its threshold (TrackResult::trusted).
+  ConfidenceModel confidence;
+
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
   FrameBudget budget() const { return budgetEvaluations > 0 ? FrameBudget::evals(budgetEvaluations) : FrameBudget::ms(budgetMs); }
@@ -98,6 +131,13 @@ struct TrackResult
   double computeMs = 0;     //!< time spent in track() (hue planes + RM-GA)
   bool steady = false;      //!< the frame had the steady budget
   int smoothEvaluations = 0; //!< evaluations of the smooth score by the local refinement (0: none)
+
+  ConfidenceCues cues;       //!< what the confidence is computed from
+  double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)
+  bool verified = false;     //!< the lock survived its challenger search (TrackerParams::verifyEvaluations)
+  bool switched = false;     //!< the challenger found a better pose elsewhere this frame and the tracker moved there
+  //! Tracking, verified and confidence at or above the threshold: a pose a robot may act on.
+  bool trusted = false;
 };
 
 class PhotoModelTracker
@@ -139,6 +179,9 @@ public:
 
 private:
   void resetCounters(); //!< the state machine's and the steadiness's, for a new start
+  void startVerification(const Phi &lock);
+  //! Runs the challenger on this frame (objective set on its images); may move \e r to a better pose.
+  void verify(StereoObjective &objective, const FrameBudget &budget, TrackResult &r);
 
   TrackerParams m_params;
   StereoFitness m_fitness;
@@ -148,6 +191,11 @@ private:
   int m_lowFrames = 0;
   int m_steadyFrames = 0;  //!< frames tracked in a row near the recent best q
   double m_recentBestQ = 0;
+  RmGa m_challenger;       //!< the verification's search (see TrackerParams::verifyEvaluations)
+  long m_verifyLeft = 0;   //!< evaluations of verification still to run
+  bool m_verified = false;
+  int m_framesTracked = 0;
+  int m_untrustedFrames = 0; //!< tracked, verified frames in a row under the trust threshold
 };
 
 } // namespace pm

@@ -1,0 +1,123 @@
+#include "pm/compare/Roc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <opencv2/core.hpp>
+
+#include "pm/core/Error.h"
+
+namespace pm::compare {
+
+namespace {
+
+void needBoth(const std::vector<bool> &right, const char *what)
+{
+  const auto nRight = std::count(right.begin(), right.end(), true);
+  if (nRight == 0 || nRight == static_cast<long>(right.size()))
+    throw Error(std::string(what) + ": needs both right and wrong frames");
+}
+
+void checkLabelled(const std::vector<double> &scores, const std::vector<bool> &right)
+{
+  if (scores.size() != right.size())
+    throw Error("ROC: " + std::to_string(scores.size()) + " scores but " + std::to_string(right.size()) + " labels");
+  for (double s : scores)
+    if (!std::isfinite(s))
+      throw Error("ROC: a score is not finite");
+  needBoth(right, "ROC");
+}
+
+} // namespace
+
+std::vector<RocPoint> rocCurve(const std::vector<double> &scores, const std::vector<bool> &right)
+{
+  checkLabelled(scores, right);
+  std::vector<std::size_t> order(scores.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+  const double nRight = static_cast<double>(std::count(right.begin(), right.end(), true));
+  const double nWrong = static_cast<double>(right.size()) - nRight;
+  std::vector<RocPoint> curve{{scores[order[0]] + 1.0, 0.0, 0.0}};
+  double tp = 0, fp = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    (right[order[i]] ? tp : fp) += 1;
+    if (i + 1 == order.size() || scores[order[i + 1]] != scores[order[i]])
+      curve.push_back({scores[order[i]], tp / nRight, fp / nWrong});
+  }
+  return curve;
+}
+
+double auroc(const std::vector<double> &scores, const std::vector<bool> &right)
+{
+  const std::vector<RocPoint> c = rocCurve(scores, right);
+  double area = 0; // trapezoids: a tie block counts half
+  for (std::size_t i = 1; i < c.size(); ++i)
+    area += (c[i].falseAcceptRate - c[i - 1].falseAcceptRate) * 0.5 * (c[i].trueAcceptRate + c[i - 1].trueAcceptRate);
+  return area;
+}
+
+RocPoint thresholdFor(const std::vector<RocPoint> &curve, double maxFalseAcceptRate)
+{
+  RocPoint best = curve.empty() ? RocPoint{} : curve.front();
+  for (const RocPoint &p : curve)
+    if (p.falseAcceptRate <= maxFalseAcceptRate && p.trueAcceptRate >= best.trueAcceptRate)
+      best = p;
+  return best;
+}
+
+LogisticFit fitLogistic(const std::vector<std::vector<double>> &x, const std::vector<bool> &right, double l2, int maxIterations)
+{
+  if (x.empty() || x.size() != right.size())
+    throw Error("logistic fit: needs as many labels as rows, and at least one row");
+  const std::size_t d = x.front().size();
+  for (const auto &row : x) {
+    if (row.size() != d)
+      throw Error("logistic fit: the rows differ in size");
+    for (double v : row)
+      if (!std::isfinite(v))
+        throw Error("logistic fit: a feature is not finite");
+  }
+  needBoth(right, "logistic fit");
+  // Newton's method on the parameters (w, b): H = X^T S X + ridge, g = X^T (y - p) - ridge w.
+  const int n = static_cast<int>(d) + 1;
+  cv::Mat theta = cv::Mat::zeros(n, 1, CV_64F);
+  LogisticFit fit;
+  std::vector<double> xi(static_cast<std::size_t>(n));
+  for (fit.iterations = 1; fit.iterations <= maxIterations; ++fit.iterations) {
+    cv::Mat H = cv::Mat::zeros(n, n, CV_64F), g = cv::Mat::zeros(n, 1, CV_64F);
+    for (std::size_t r = 0; r < x.size(); ++r) {
+      std::copy(x[r].begin(), x[r].end(), xi.begin());
+      xi[d] = 1.0;
+      double s = 0;
+      for (int k = 0; k < n; ++k)
+        s += theta.at<double>(k) * xi[static_cast<std::size_t>(k)];
+      const double p = 1.0 / (1.0 + std::exp(-s)), w = std::max(p * (1 - p), 1e-12), e = (right[r] ? 1.0 : 0.0) - p;
+      for (int a = 0; a < n; ++a) {
+        g.at<double>(a) += e * xi[static_cast<std::size_t>(a)];
+        for (int b = 0; b <= a; ++b)
+          H.at<double>(a, b) += w * xi[static_cast<std::size_t>(a)] * xi[static_cast<std::size_t>(b)];
+      }
+    }
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        H.at<double>(a, b) = H.at<double>(b, a);
+    for (int k = 0; k + 1 < n; ++k) { // the ridge on w, not on b
+      H.at<double>(k, k) += l2 * static_cast<double>(x.size());
+      g.at<double>(k) -= l2 * static_cast<double>(x.size()) * theta.at<double>(k);
+    }
+    cv::Mat step;
+    if (!cv::solve(H, g, step, cv::DECOMP_CHOLESKY))
+      cv::solve(H, g, step, cv::DECOMP_SVD);
+    theta += step;
+    if (cv::norm(step, cv::NORM_INF) < 1e-8)
+      break;
+  }
+  fit.iterations = std::min(fit.iterations, maxIterations);
+  fit.weights.assign(theta.begin<double>(), theta.begin<double>() + static_cast<long>(d));
+  fit.bias = theta.at<double>(n - 1);
+  return fit;
+}
+
+} // namespace pm::compare

@@ -1,0 +1,70 @@
+#pragma once
+/*!
+  \file TrackConfidence.h
+  How much a frame's estimate can be trusted: a logistic model over what the tracker knows of the
+  frame (its cues), fitted on a labelled set of frames (pm-confidence) where a frame is wrong when
+  its estimate is more than 2 cm or 5 degrees from the truth.
+
+  The cues (ConfidenceCues), each from the tracker's own state, none from the truth:
+  - the normalised fitness q of the best pose, and the lower of the two cameras' own q (a pose
+    that fits one view only is suspect);
+  - in the worse camera, the share of S_in points on the model's hue and the share of S_out
+    points on the background (a look-alike toy of another shape fills one but not the other);
+  - the tilt of the model from the hand's optical axis (the flat model is biased by the relief
+    when tilted: its error grows with the tilt);
+  - how far the best stands above competing poses of the same object: the pose turned about the
+    model's own z axis by 45, 90, 135 and 180 degrees either way and with its tilt mirrored (a
+    toy of nearly symmetric outline, such as the octopus, scores nearly as well turned);
+  - how far q lies under its recent best (an occlusion, a drift onto the background);
+  - how far the pose jumped since the last frame (the hand's own motion taken out), in mm and deg;
+  - how long the target has been tracked, and whether the lock was verified (a challenger search
+    after the lock found no better pose elsewhere, see TrackerParams::verifyEvaluations);
+  - whether the tracker says it is tracking at all.
+
+  \code
+    pm::ConfidenceModel m;                 // the shipped coefficients
+    const double c = m.confidence(cues);   // in (0, 1)
+    if (c >= m.threshold) use(pose);
+  \endcode
+*/
+#include <array>
+#include <string>
+
+namespace pm {
+
+struct ConfidenceCues
+{
+  double quality = 0;        //!< q of the best pose
+  double qualityMin = 0;     //!< min(q_left, q_right), each camera's own normalised score
+  double inMatchMin = 0;     //!< min over the cameras of the share of S_in points on the model's hue
+  double outBackgroundMin = 0; //!< min over the cameras of the share of S_out points on the background
+  double tiltDeg = 0;        //!< angle between the model's z axis and the hand's (deg)
+  double competitorMargin = 0; //!< q minus the best q of the competing poses (turned about z, tilt mirrored)
+  double qualityDrop = 0;    //!< max(0, recent best q - q)
+  double jumpMm = 0;         //!< |translation change| since the last frame (mm)
+  double jumpDeg = 0;        //!< rotation change since the last frame (deg)
+  int framesTracked = 0;     //!< frames in a row in the tracking state, this one included
+  bool verified = false;     //!< the lock survived its challenger search
+  bool tracking = false;     //!< the state is tracking
+
+  static constexpr std::size_t kFeatures = 12;
+  //! The features the logistic model weighs (the jumps as log1p, the frames capped at 30, then / 30, the tilt / 10).
+  std::array<double, kFeatures> features() const;
+  static const std::array<const char *, kFeatures> &featureNames();
+};
+
+struct ConfidenceModel
+{
+  //! Weights of the features, then the bias: confidence = 1 / (1 + exp(-(w . x + b))).
+  std::array<double, ConfidenceCues::kFeatures> weights{};
+  double bias = 0;
+  double threshold = 0.5; //!< the confidence from which an estimate is trusted
+
+  //! The shipped model (fitted by pm-confidence, see README "Trust").
+  ConfidenceModel();
+  double confidence(const ConfidenceCues &c) const;
+  //! Throws pm::Error if a coefficient is not finite or the threshold is outside (0, 1).
+  void validate() const;
+};
+
+} // namespace pm
