@@ -41,7 +41,7 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
                   "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "smooth_refine_evaluations", "smooth_refine_max_drop", "verify_evaluations",
                   "verify_budget_fraction", "verify_margin", "verify_switch_margin", "verify_far_mm", "verify_far_deg",
-                  "verify_same_object_mm", "reverify_after_frames", "confidence", "search_space", "rmga",
+                  "verify_same_object_mm", "reverify_after_frames", "reverify_below_confidence", "confidence", "search_space", "rmga",
                   "fitness"}, "");
     get(j, "budget_ms", p.budgetMs);
     get(j, "budget_evaluations", p.budgetEvaluations);
@@ -62,6 +62,7 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     get(j, "verify_far_deg", p.verifyFarDeg);
     get(j, "verify_same_object_mm", p.verifySameObjectMm);
     get(j, "reverify_after_frames", p.reverifyAfterFrames);
+    get(j, "reverify_below_confidence", p.reverifyBelowConfidence);
     if (j.contains("confidence")) {
       const json &c = j.at("confidence");
       checkKeys(c, {"weights", "bias", "threshold"}, " in \"confidence\"");
@@ -136,6 +137,7 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"verify_far_deg", p.verifyFarDeg},
                {"verify_same_object_mm", p.verifySameObjectMm},
                {"reverify_after_frames", p.reverifyAfterFrames},
+               {"reverify_below_confidence", p.reverifyBelowConfidence},
                {"confidence", {{"weights", p.confidence.weights}, {"bias", p.confidence.bias}, {"threshold", p.confidence.threshold}}},
                {"search_space", {{"lo", p.space.lo}, {"hi", p.space.hi}}},
                {"rmga",

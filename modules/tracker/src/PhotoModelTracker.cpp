@@ -43,9 +43,9 @@ void TrackerParams::validate() const
   }
   if (!(initSpread >= 0 && initSpread <= 1))
     throw Error("tracker: the initial spread must lie in [0, 1]");
-  if (reverifyAfterFrames < 0 || verifyEvaluations < 0 || verifyEvaluations > 100000000 || !(verifyBudgetFraction > 0 && verifyBudgetFraction < 1) || !(verifyMargin >= 0) ||
+  if (reverifyAfterFrames < 0 || !(reverifyBelowConfidence >= 0 && reverifyBelowConfidence <= 1) || verifyEvaluations < 0 || verifyEvaluations > 100000000 || !(verifyBudgetFraction > 0 && verifyBudgetFraction < 1) || !(verifyMargin >= 0) ||
       !(verifySwitchMargin >= 0) || !(verifyFarMm > 0) || !(verifyFarDeg > 0) || !(verifySameObjectMm >= 0))
-    throw Error("tracker: the re-verification frames must be non-negative, the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
+    throw Error("tracker: the re-verification frames must be non-negative and its confidence lie in [0, 1], the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
                 "same-object distance be non-negative and its far distances positive");
   confidence.validate();
   if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1))
@@ -192,7 +192,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   const auto t0 = std::chrono::steady_clock::now();
   m_fitness.setImages(left, right);
   StereoObjective objective(m_fitness);
-  const bool steady = m_steadyFrames >= m_params.steadyAfterFrames;
+  const bool steady = m_steadyFrames >= m_params.steadyAfterFrames && m_verifyLeft == 0; // a verifying frame gets the whole budget, split
   FrameBudget budget = steady ? m_params.steadyBudget() : m_params.budget();
   if (budget.milliseconds > 0) // the hue planes are part of the frame's time
     budget.milliseconds = std::max(0.05, budget.milliseconds - std::chrono::duration<double, std::milli>(
@@ -286,8 +286,8 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   r.verified = m_verified;
   r.confidence = m_params.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_params.confidence.threshold;
-  // A verified lock that is not trusted for long is doubted: the challenger searches again.
-  m_untrustedFrames = c.tracking && r.verified && !r.trusted ? m_untrustedFrames + 1 : 0;
+  // A verified lock whose confidence stays low is doubted: the challenger searches again.
+  m_untrustedFrames = c.tracking && r.verified && r.confidence < m_params.reverifyBelowConfidence ? m_untrustedFrames + 1 : 0;
   if (m_params.reverifyAfterFrames > 0 && m_untrustedFrames >= m_params.reverifyAfterFrames) {
     m_untrustedFrames = 0;
     startVerification(r.phi);

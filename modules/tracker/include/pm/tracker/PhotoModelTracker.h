@@ -107,8 +107,14 @@ struct TrackerParams
   double verifyFarMm = 20;
   double verifyFarDeg = 5;
   double verifySameObjectMm = 60;
-  //! A verified lock whose confidence stays under the threshold this many tracked frames in a row is verified again (0: never).
+  /*!
+    A verified lock whose confidence stays under reverifyBelowConfidence this many tracked frames
+    in a row is verified again (0: never): a wrong lock that the challenger missed, its confidence
+    low. Not at the trust threshold: a right pose of middling confidence (a small budget, an
+    occlusion) would be verified over and over, each time with half the frame's budget.
+  */
   int reverifyAfterFrames = 15;
+  double reverifyBelowConfidence = 0.5;
   //! How the frame's confidence is computed from its cues, and its threshold (TrackResult::trusted).
   ConfidenceModel confidence;
 
@@ -195,7 +201,7 @@ private:
   long m_verifyLeft = 0;   //!< evaluations of verification still to run
   bool m_verified = false;
   int m_framesTracked = 0;
-  int m_untrustedFrames = 0; //!< tracked, verified frames in a row under the trust threshold
+  int m_untrustedFrames = 0; //!< tracked, verified frames in a row under reverifyBelowConfidence
 };
 
 } // namespace pm
