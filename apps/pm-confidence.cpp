@@ -1,6 +1,7 @@
 //! pm-confidence: how well the tracker's confidence separates right estimates from wrong ones.
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -112,7 +113,7 @@ int main(int argc, char **argv)
         scene.params().distractor = true;
         sceneAt = [](pm::sim::Scene &sc, double t) { sc.params().distractorPose[0] = -190 + 40 * std::sin(2 * M_PI * 0.2 * t); };
       }
-      std::vector<pm::sim::SimulatedPhotoModel> models;
+      std::deque<pm::sim::SimulatedPhotoModel> models; // never relocated: ViSP 3.5 copies an empty vpImage with memcpy(nullptr)
       for (const auto &r : pass.runs) {
         const pm::sim::Scene own(pm::sim::makeTarget(r.model));
         models.push_back(pm::sim::makeSimulatedPhotoModel(own, rig.left.cam, rig.left.width, rig.left.height, 500));
