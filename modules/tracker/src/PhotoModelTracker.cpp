@@ -53,14 +53,15 @@ void TrackerParams::validate() const
                 "quality drop lie in [0, 1)");
 }
 
-FrameBudget TrackerParams::steadyBudget() const
-{
-  if (budgetEvaluations > 0)
-    return FrameBudget::evals(std::max<long>(ga.population, std::lround(steadyBudgetFraction * static_cast<double>(budgetEvaluations))));
-  return FrameBudget::ms(steadyBudgetFraction * budgetMs);
-}
-
 namespace {
+
+//! The part \e fraction of \e b; never under one population's evaluations.
+FrameBudget part(const FrameBudget &b, double fraction, int population)
+{
+  if (b.evaluations > 0)
+    return FrameBudget::evals(std::max<long>(population, std::lround(fraction * static_cast<double>(b.evaluations))));
+  return FrameBudget::ms(fraction * b.milliseconds);
+}
 
 //! The challenger's RM-GA: the tracker's, with another seed, no motion prediction and no refinement.
 RmGaParams challengerParams(RmGaParams p)
@@ -71,15 +72,12 @@ RmGaParams challengerParams(RmGaParams p)
   return p;
 }
 
-//! \e b split: the part \e fraction of it, or the rest; never under one population's evaluations.
-FrameBudget part(const FrameBudget &b, double fraction, int population)
-{
-  if (b.evaluations > 0)
-    return FrameBudget::evals(std::max<long>(population, std::lround(fraction * static_cast<double>(b.evaluations))));
-  return FrameBudget::ms(fraction * b.milliseconds);
-}
-
 } // namespace
+
+FrameBudget TrackerParams::steadyBudget() const
+{
+  return part(budget(), steadyBudgetFraction, ga.population);
+}
 
 PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
     : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga),
@@ -175,14 +173,13 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
 {
   if (!hNowMhPrev.isAnHomogeneousMatrix())
     throw Error("tracker: the hand motion is not a rigid transformation");
-  m_ga.transform([&](const Phi &p) {
+  const auto moved = [&](const Phi &p) {
     const Phi q = fromHomogeneousMatrix(hNowMhPrev * toHomogeneousMatrix(p));
     return q.isValid() ? q : p;
-  });
-  m_challenger.transform([&](const Phi &p) {
-    const Phi q = fromHomogeneousMatrix(hNowMhPrev * toHomogeneousMatrix(p));
-    return q.isValid() ? q : p;
-  });
+  };
+  m_ga.transform(moved);
+  if (m_verifyLeft > 0) // an idle challenger is started afresh from the next lock
+    m_challenger.transform(moved);
   m_last.hMo = hNowMhPrev * m_last.hMo;
   m_last.phi = fromHomogeneousMatrix(m_last.hMo);
 }
