@@ -73,29 +73,43 @@ void RmGa::seedAround(const Phi &p, double spread)
   m_havePrev = m_havePrev2 = false;
 }
 
+void RmGa::setAnchor(const Phi &p)
+{
+  m_anchor = m_space.clamp(p);
+  m_hasAnchor = true;
+}
+
 void RmGa::restart(int keep, int isolate)
 {
+  const Phi *anchor = m_hasAnchor ? &m_anchor : nullptr;
   std::uniform_int_distribution<int> gene(0, Genome::kMax);
   std::uniform_int_distribution<int> near(-Genome::kMax / 20, Genome::kMax / 20);
+  // Near the anchor is wider: the target may have moved while it was not seen (measured on
+  // pm-compare's loss scenario: 60 mm in a blank half second, a jump of 50 mm and 8 deg).
+  std::uniform_int_distribution<int> nearAnchorPos(-Genome::kMax / 7, Genome::kMax / 7), nearAnchorRot(-Genome::kMax / 10, Genome::kMax / 10);
   std::sort(m_pop.begin(), m_pop.end(), moreFit);
   const std::size_t first = static_cast<std::size_t>(std::max(0, keep));
+  const Genome anchorGenome = anchor ? encode(*anchor, m_space) : Genome();
+  const std::size_t blocks = anchor ? 8 : 6;
   for (std::size_t k = first; k < m_pop.size(); ++k) {
     // Blocks: 0 all random; 1 the best's position; 2 the best's orientation; 3 near the best;
     // 4 the best's position with its tilt mirrored (e1, e2 negated: the other pose of a nearly
     // planar target under perspective, the classic ambiguity); 5 the best's position, facing
-    // the cameras (e1 = e2 = 0). 4 and 5 keep the best's turn e3.
-    const std::size_t block = first > 0 ? (k - first) % 6 : 0;
-    Genome g = m_pop[0].genome;
-    if (block >= 4) {
+    // the cameras (e1 = e2 = 0). 4 and 5 keep the best's turn e3. With an anchor: 6 the
+    // anchor's orientation, 7 near the anchor (+-14 % of each position range, +-10 % of each
+    // orientation range).
+    const std::size_t block = first > 0 ? (k - first) % blocks : (anchor ? (k % 2 == 0 ? 0 : 6 + (k / 2) % 2) : 0);
+    Genome g = block >= 6 ? anchorGenome : m_pop[0].genome;
+    if (block == 4 || block == 5) {
       Phi q = m_pop[0].phi;
       q.e1 = block == 4 ? -q.e1 : 0.0;
       q.e2 = block == 4 ? -q.e2 : 0.0;
       g = encode(m_space.clamp(q), m_space);
     }
-    for (std::size_t i = 0; i < 6 && block < 4; ++i)
-      if (block == 3)
-        g.gene[i] = static_cast<std::uint16_t>(std::clamp(static_cast<int>(g.gene[i]) + near(m_rng), 0, static_cast<int>(Genome::kMax)));
-      else if (block == 0 || (block == 1) == (i >= 3))
+    for (std::size_t i = 0; i < 6 && (block < 4 || block >= 6); ++i)
+      if (block == 3 || block == 7)
+        g.gene[i] = static_cast<std::uint16_t>(std::clamp(static_cast<int>(g.gene[i]) + (block == 3 ? near(m_rng) : i < 3 ? nearAnchorPos(m_rng) : nearAnchorRot(m_rng)), 0, static_cast<int>(Genome::kMax)));
+      else if (block == 0 || (block == 1) == (i >= 3)) // 1: new orientation; 2, 6: new position
         g.gene[i] = static_cast<std::uint16_t>(gene(m_rng));
     m_pop[k] = make(g);
   }
@@ -111,6 +125,8 @@ void RmGa::transform(const std::function<Phi(const Phi &)> &f)
     ind = make(encode(m_space.clamp(f(ind.phi)), m_space));
     ind.fitness = fit;
   }
+  if (m_hasAnchor)
+    m_anchor = m_space.clamp(f(m_anchor));
   if (m_havePrev)
     m_prev = f(m_prev);
   if (m_havePrev2)

@@ -151,6 +151,8 @@ void PhotoModelTracker::verify(StereoObjective &objective, const FrameBudget &bu
 void PhotoModelTracker::initialize()
 {
   m_ga.randomize();
+  m_ga.clearAnchor();
+  m_challenger.clearAnchor();
   m_last = TrackResult();
   m_last.state = TrackState::Searching;
   resetCounters();
@@ -166,6 +168,8 @@ void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
   m_last.state = TrackState::Tracking;
   resetCounters();
   m_verified = true; // a pose given is taken as verified
+  m_ga.setAnchor(p);
+  m_challenger.setAnchor(p);
   m_last.verified = true;
 }
 
@@ -180,6 +184,8 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
   m_ga.transform(moved);
   if (m_verifyLeft > 0) // an idle challenger is started afresh from the next lock
     m_challenger.transform(moved);
+  else if (m_challenger.hasAnchor())
+    m_challenger.setAnchor(moved(m_challenger.anchor()));
   m_last.hMo = hNowMhPrev * m_last.hMo;
   m_last.phi = fromHomogeneousMatrix(m_last.hMo);
 }
@@ -230,7 +236,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     r.state = prev; // searching or lost, until locked
   }
   if (r.state == TrackState::Lost && prev != TrackState::Lost)
-    m_ga.restart(1, m_params.ga.restartGenerations); // search again, keeping the best guess apart
+    m_ga.restart(1, m_params.ga.restartGenerations); // search again, keeping the best guess apart (and near the last trusted pose)
   // A new lock is verified on the next frames; a lost target is no longer.
   if (r.state == TrackState::Tracking && prev != TrackState::Tracking)
     startVerification(r.phi);
@@ -283,6 +289,10 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   r.verified = m_verified;
   r.confidence = m_params.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_params.confidence.threshold;
+  if (r.trusted) { // where the target was last seen for sure: the restarts' anchor
+    m_ga.setAnchor(r.phi);
+    m_challenger.setAnchor(r.phi);
+  }
   // A verified lock whose confidence stays low is doubted: the challenger searches again.
   m_untrustedFrames = c.tracking && r.verified && r.confidence < m_params.reverifyBelowConfidence ? m_untrustedFrames + 1 : 0;
   if (m_params.reverifyAfterFrames > 0 && m_untrustedFrames >= m_params.reverifyAfterFrames) {

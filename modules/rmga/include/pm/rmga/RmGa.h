@@ -98,8 +98,26 @@ public:
     kept best stays in the population but is not chosen as a parent for the next \e isolate
     generations, so the new ones search on their own instead of collapsing onto it at once: a
     lock on a wrong pose (often right in position or in orientation only) is left this way.
+
+    With an anchor (setAnchor(): a pose known to have been right not long ago, e.g. the
+    tracker's last trusted one), two more blocks come from it: its orientation with a random
+    position, and the anchor plus noise of +-14 % of each position range and +-10 % of each
+    orientation range (the target may have moved while unseen); the six blocks above then share
+    the rest (with keep 0, half are random and half from the anchor). The restarts of a stagnant
+    search (RmGaParams::restartGenerations) use it too.
   */
   void restart(int keep = 1, int isolate = 0);
+  /*!
+    The anchor of the restarts (see restart()); transform() moves it with the population.
+    \code
+    ga.setAnchor(lastTrusted); // a lost target is searched for near where it was last seen too
+    ga.restart(1);
+    \endcode
+  */
+  void setAnchor(const Phi &p);
+  void clearAnchor() { m_hasAnchor = false; }
+  bool hasAnchor() const { return m_hasAnchor; }
+  const Phi &anchor() const { return m_anchor; }
   /*!
     Moves every individual (and the remembered best poses of the last frames, for the motion
     prediction) by \e f, e.g. when the frame they are expressed in moved: the tracker compensates
@@ -134,6 +152,8 @@ private:
   Phi m_prev, m_prev2; //!< best of the last two frames, for the motion prediction
   Genome m_isolated;   //!< the best kept by the last restart, which does not breed ...
   int m_isolation = 0; //!< ... for this many more generations
+  bool m_hasAnchor = false;
+  Phi m_anchor;        //!< see setAnchor()
 };
 
 } // namespace pm

@@ -12,6 +12,9 @@
   - tracking: q >= lockQuality was reached; it stays while q >= lostQuality;
   - lost: q < lostQuality for lostFrames frames in a row; the population then restarts (all
     but the best individual new, see RmGa::restart) and searches until q >= lockQuality again.
+  Every restart (of a loss, of a stagnant search, of a verification) also searches near the
+  last trusted pose, moved with the hand (RmGa::setAnchor): a target lost or jumped is most
+  often not far from where it was last seen for sure.
 
   Trust: "tracking" says the model fits somewhere, not that the pose is right. A new lock is
   verified by a challenger search (TrackerParams::verifyEvaluations), and every frame gets a
