@@ -351,6 +351,18 @@ TEST(ClosedLoop, ALookAlikeBesideTheTargetIsNeverServoedOn)
     for (const auto &f : r.frames)
       servoed += f.servoing ? 1 : 0;
     EXPECT_GT(servoed, 60) << lookAlike;
+    // The tracker stays on one of them: once on the target, its estimate never goes over to the
+    // look-alike (190 mm beside it, so more than 100 mm off the target) while it says tracking.
+    bool onTarget = false;
+    int crossings = 0;
+    for (const auto &f : r.frames) {
+      if (f.track.state != pm::TrackState::Tracking)
+        continue;
+      onTarget = onTarget || f.estimateErrorMm < 50;
+      crossings += onTarget && f.estimateErrorMm > 100 ? 1 : 0;
+    }
+    EXPECT_TRUE(onTarget) << lookAlike;
+    EXPECT_EQ(crossings, 0) << lookAlike << ": the estimate went over to the look-alike";
   }
 }
 
