@@ -9,6 +9,7 @@
 #include <visp3/core/vpMeterPixelConversion.h>
 
 #include "pm/app/App.h"
+#include "pm/app/Options.h"
 #include "pm/core/BatchPool.h"
 #include "pm/core/FitnessMap.h"
 #include "pm/core/Hue.h"
@@ -19,6 +20,7 @@
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/PhotoModelTracker.h"
 
 namespace {
 
@@ -28,13 +30,14 @@ struct Setup
   pm::StereoRig rig;
   pm::PhotoModel model, model1000, model1000Depth;
   pm::sim::StereoImages images;
-  pm::Phi truth;
+  pm::Phi truth;        //!< the model's pose (what the tracker estimates) ...
+  vpHomogeneousMatrix hMo; //!< ... of the toy at this pose
 
   Setup()
   {
     rig = pm::io::loadRig(pm::app::dataPath("rig/pa10_stereo.json"));
     const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+    hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
     const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
     model = sm.build.model;
     truth = sm.truth(hMo);
@@ -289,6 +292,53 @@ void FitnessMaps_FourGrids(benchmark::State &state)
   state.counters["evaluations"] = static_cast<double>(evals / state.iterations());
 }
 
+/*!
+  Stages of a tracked frame, as pm-track runs it (measuredTrackerDefaults, the default C12 model,
+  an evaluation budget): the whole frame (hue planes of both images, RM-GA's generations and
+  refinement, the confidence's cues), a steady frame (a quarter of the budget), and a frame on
+  which a new lock is verified (the challenger's half of the budget).
+*/
+void trackerFrame(benchmark::State &state, long evals, double steadyFraction, bool verifying)
+{
+  pm::TrackerParams p = pm::app::measuredTrackerDefaults(5.0);
+  p.budgetEvaluations = evals;
+  p.steadyBudgetFraction = steadyFraction;
+  pm::PhotoModelTracker tracker(setup().rig, setup().model, p);
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(setup().truth);
+  long evaluations = 0, frames = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    if (verifying || frames == 0) {
+      tracker.initialize(); // a first lock: the next frame locks and verifies
+      tracker.initFromPose(hMo);
+      if (verifying) {
+        tracker.initialize();
+        tracker.track(setup().images.left, setup().images.right);
+      }
+    }
+    state.ResumeTiming();
+    const pm::TrackResult r = tracker.track(setup().images.left, setup().images.right);
+    evaluations += r.evaluations;
+    ++frames;
+    benchmark::DoNotOptimize(r.fitness);
+  }
+  state.counters["evaluations"] = static_cast<double>(evaluations) / static_cast<double>(std::max<long>(1, frames));
+}
+void Tracker_Frame_1900Evals(benchmark::State &s) { trackerFrame(s, 1900, 1.0, false); }
+void Tracker_Frame_1900Evals_Steady(benchmark::State &s) { trackerFrame(s, 1900, 0.25, false); }
+void Tracker_Frame_1900Evals_Verifying(benchmark::State &s) { trackerFrame(s, 1900, 1.0, true); }
+
+//! The lab's renderer: a stereo pair of the C12 crab (supersampling 2, the default).
+void Render_StereoPair(benchmark::State &state)
+{
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
+  std::uint64_t k = 0;
+  for (auto _ : state) {
+    const pm::sim::StereoImages im = scene.renderStereo(setup().rig, setup().hMo, k++);
+    benchmark::DoNotOptimize(im.left.bitmap);
+  }
+}
+
 } // namespace
 
 BENCHMARK(Fitness_DefaultModel);
@@ -306,6 +356,10 @@ BENCHMARK(Hue_StereoPair_Lens)->Unit(benchmark::kMillisecond);
 BENCHMARK(Distortion_Project1000Points_Pinhole);
 BENCHMARK(Distortion_Project1000Points_Lens);
 BENCHMARK(FitnessMaps_FourGrids)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(Tracker_Frame_1900Evals)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_1900Evals_Steady)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_1900Evals_Verifying)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Render_StereoPair)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char **argv)
 {
@@ -330,8 +384,9 @@ int main(int argc, char **argv)
                    "--benchmark_repetitions=N]\n"
                    "Prints JSON (Google Benchmark's format) on stdout: stereo fitness evaluations per second on one core "
                    "for the default C12 model and a 1,000-point model (AVX2 and scalar kernels, and the same fitness "
-                   "written with ViSP's types as the peer), hue planes against vpImageConvert::RGBaToHSV, and the four "
-                   "fitness maps on all cores.\n";
+                   "written with ViSP's types as the peer), hue planes against vpImageConvert::RGBaToHSV, the four "
+                   "fitness maps on all cores, the stages of a tracked frame (whole, steady, verifying a lock; 1,900 "
+                   "evaluations) and the lab's renderer (a stereo pair).\n";
       return 0;
     }
   args.push_back(filter.data());
