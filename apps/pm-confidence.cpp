@@ -1,5 +1,6 @@
 //! pm-confidence: how well the tracker's confidence separates right estimates from wrong ones.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <fstream>
@@ -40,9 +41,11 @@ struct Pass
     long budget;
     std::uint64_t seed;
     double steady = 1.0;
+    bool stereo = false; //!< the stereo photo-model (pm-make-model --stereo) instead of the flat one
   };
   std::vector<Run> runs;
   std::string distractor; //!< a look-alike beside the toy (empty: none), swaying 40 mm sideways at 0.2 Hz
+  std::string rig = {};   //!< a rig file under data/ instead of --rig (e.g. one with a lens)
 };
 
 std::vector<Pass> passes(bool quick)
@@ -52,7 +55,13 @@ std::vector<Pass> passes(bool quick)
   return {{"C12", "C12", 2, {{"C12", 1900, 1}, {"C12", 600, 2}, {"C12", 300, 3}, {"C12", 1900, 4, 0.25}, {"C05", 1900, 5}}, ""},
           {"C12, supersampling 1", "C12", 1, {{"C12", 600, 6}, {"C12", 1900, 7}}, ""},
           {"C08", "C08", 2, {{"C08", 1900, 8}, {"C08", 600, 9}}, ""},
-          {"C12 beside a C05 squid (similar hue)", "C12", 2, {{"C12", 1900, 10}, {"C12", 600, 11}}, "C05"}};
+          {"C12 beside a C05 squid (similar hue)", "C12", 2, {{"C12", 1900, 10}, {"C12", 600, 11}}, "C05"},
+          // Conditions the lab's kind toys do not show: steep relief with cast shadows and
+          // highlights, the stereo model, a lens, an identical twin.
+          {"R2 (relief, cast shadows, highlights)", "R2", 2, {{"R2", 1900, 12}, {"R2", 600, 13}}, ""},
+          {"R1 (relief, cast shadows, highlights)", "R1", 2, {{"R1", 1900, 14, 1.0, true}, {"R1", 600, 15}}, ""},
+          {"C12 through a lens (k1 -0.25, k2 0.08)", "C12", 2, {{"C12", 1900, 16}, {"C12", 600, 17}}, "", "rig/pa10_stereo_lens.json"},
+          {"C12 beside its twin", "C12", 2, {{"C12", 1900, 18}, {"C12", 600, 19}}, "C12"}};
 }
 
 std::vector<double> featureRow(const LabelledFrame &f)
@@ -67,7 +76,8 @@ int main(int argc, char **argv)
 {
   CLI::App app{"Measures the tracker's confidence (TrackResult::confidence) on a labelled set of frames: every pm-compare "
                "scenario rendered once per scene and tracked by several runs (seeds, budgets from 300 evaluations, "
-               "supersampling 1, a model of another toy, a look-alike of similar hue beside the toy; C12 and C08), each frame labelled right when the estimate is "
+               "supersampling 1, a model of another toy, a look-alike of similar hue beside the toy, an identical twin beside it, the relief "
+               "toys R1 and R2 with cast shadows and highlights, the stereo model, a lens; C12 and C08), each frame labelled right when the estimate is "
                "within 2 cm and 5 deg of the truth. Writes frames.csv (cues, confidence, label), roc.png and summary.json "
                "(auroc, threshold, accept rates); --fit also fits the logistic model anew (two-fold cross-validated by run) "
                "and prints its coefficients.",
@@ -90,7 +100,7 @@ int main(int argc, char **argv)
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::StereoRig defaultRig = pm::io::loadRig(rigPath);
     const std::vector<pm::compare::Scenario> seqs = pm::compare::makeScenarios(scenarios, trajectoryPath, steps);
     const std::vector<Pass> plan = passes(quick);
     std::size_t total = 0;
@@ -103,6 +113,7 @@ int main(int argc, char **argv)
     pm::io::StagedFiles files(out);
     pm::app::Progress progress("rendering and tracking", total, quiet);
     for (const Pass &pass : plan) {
+      const pm::StereoRig rig = pass.rig.empty() ? defaultRig : pm::io::loadRig(pm::app::dataPath(pass.rig));
       pm::sim::SceneParams sp;
       sp.supersampling = pass.supersampling;
       sp.occluderSizeMm[0] = 40; // pm-compare's strand
@@ -116,7 +127,9 @@ int main(int argc, char **argv)
       std::deque<pm::sim::SimulatedPhotoModel> models; // never relocated: ViSP 3.5 copies an empty vpImage with memcpy(nullptr)
       for (const auto &r : pass.runs) {
         const pm::sim::Scene own(pm::sim::makeTarget(r.model));
-        models.push_back(pm::sim::makeSimulatedPhotoModel(own, rig.left.cam, rig.left.width, rig.left.height, 500));
+        pm::app::LabModelChoice choice;
+        choice.stereo = r.stereo;
+        models.push_back(pm::app::makeLabModel(own, rig, choice));
       }
       std::vector<pm::compare::ConfidenceRun> runs;
       const std::size_t first = runNames.size();
@@ -130,7 +143,7 @@ int main(int argc, char **argv)
         c.params.budgetEvaluations = r.budget;
         c.params.ga.seed = r.seed;
         c.params.steadyBudgetFraction = r.steady;
-        c.name = pass.label + ": model of " + r.model + ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) +
+        c.name = pass.label + ": " + (r.stereo ? "stereo model of " : "model of ") + r.model + ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) +
                  (r.steady < 1 ? ", steady frames 25 %" : "");
         runs.push_back(c);
         runNames.push_back(c.name);
@@ -239,9 +252,19 @@ int main(int argc, char **argv)
                                               2, title.str(), "false accept rate (%)", 560),
                        files.stage("roc.png"));
 
+    // Each run's frames: what the confidence accepts, run by run (where the wrong frames it trusts come from).
+    std::vector<std::array<std::size_t, 4>> perRun(runNames.size(), {0, 0, 0, 0}); // frames, wrong, trusted wrong, trusted right
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      auto &c = perRun[runOf[k]];
+      ++c[0];
+      c[1] += set[k].right ? 0 : 1;
+      c[2] += !set[k].right && set[k].trusted ? 1 : 0;
+      c[3] += set[k].right && set[k].trusted ? 1 : 0;
+    }
     nlohmann::json runsJson = nlohmann::json::array();
-    for (const auto &n : runNames)
-      runsJson.push_back(n);
+    for (std::size_t i = 0; i < runNames.size(); ++i)
+      runsJson.push_back({{"name", runNames[i]}, {"frames", perRun[i][0]}, {"wrong_frames", perRun[i][1]},
+                          {"trusted_wrong_frames", perRun[i][2]}, {"trusted_right_frames", perRun[i][3]}});
     const nlohmann::json summary{{"frames", set.size()},
                                  {"wrong_frames", wrong},
                                  {"wrong_frames_while_tracking", trackingWrong},

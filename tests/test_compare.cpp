@@ -268,6 +268,13 @@ TEST(PmConfidence, ItsFiguresOnASmallSetAndItsErrors)
   EXPECT_GT(s.at("auroc").get<double>(), 0.95);
   EXPECT_LT(s.at("false_accept_rate").get<double>(), 0.01);
   EXPECT_GT(s.at("true_accept_rate").get<double>(), 0.8);
+  // Run by run: the frames add up, and the squid's model has every frame wrong and none trusted.
+  ASSERT_EQ(s.at("runs").size(), 2u);
+  EXPECT_EQ(s.at("runs")[0].at("frames").get<int>() + s.at("runs")[1].at("frames").get<int>(), 2 * 240);
+  EXPECT_EQ(s.at("runs")[1].at("wrong_frames").get<int>(), 240);
+  EXPECT_EQ(s.at("runs")[1].at("trusted_wrong_frames").get<int>(), 0);
+  EXPECT_EQ(s.at("runs")[0].at("trusted_right_frames").get<int>() + s.at("runs")[1].at("trusted_right_frames").get<int>(),
+            static_cast<int>(std::lround(s.at("true_accept_rate").get<double>() * (2 * 240 - s.at("wrong_frames").get<int>()))));
   const std::string csv = pm::test::readText(d.file("frames.csv"));
   EXPECT_EQ(static_cast<int>(std::count(csv.begin(), csv.end(), '\n')), 2 * 240 + 1);
   EXPECT_TRUE(std::filesystem::exists(d.file("roc.png")));
