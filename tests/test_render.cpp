@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "TestSupport.h"
@@ -251,6 +252,41 @@ TEST(Scene, OccluderHidesPartOfTheTarget)
   const auto hidden = pixelsOf(r, 2).size();
   EXPECT_GT(pixelsOf(r, 3).size(), 2000u);
   EXPECT_LT(static_cast<double>(hidden), 0.95 * static_cast<double>(open));
+}
+
+TEST(Scene, AStereoPairIsTheSameWhateverWasRenderedBefore)
+{
+  // The renderer keeps its sample buffers from frame to frame: whatever was rendered before
+  // (another toy, no anti-aliasing, supersampling 3, a look-alike, an occluder), a pair is the
+  // same, bit for bit, as each image rendered alone with a new rasterizer.
+  const pm::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 520, 0.05, 0, 0.1});
+  std::vector<pm::sim::Scene> scenes;
+  scenes.emplace_back(pm::sim::makeTarget("C12", 0.5));
+  pm::sim::SceneParams p;
+  p.supersampling = 1;
+  p.occluder = true;
+  scenes.emplace_back(pm::sim::makeTarget("C05", 0.5), p);
+  scenes.back().setDistractor(pm::sim::makeTarget("C12", 0.5));
+  scenes.back().params().distractor = true;
+  p.supersampling = 3;
+  p.occluder = false;
+  scenes.emplace_back(pm::sim::makeTarget("R1", 0.5), p);
+  scenes.push_back(scenes.front());
+  std::uint64_t frame = 3;
+  for (const pm::sim::Scene &scene : scenes) {
+    const pm::sim::StereoImages pair = scene.renderStereo(rig, hMo, frame);
+    for (unsigned cam = 0; cam < 2; ++cam) {
+      pm::sim::Rasterizer fresh;
+      vpImage<vpRGBa> alone;
+      scene.render(fresh, cam ? rig.right : rig.left, hMo, frame, cam, alone);
+      const vpImage<vpRGBa> &I = cam ? pair.right : pair.left;
+      ASSERT_EQ(I.getSize(), alone.getSize());
+      EXPECT_EQ(0, std::memcmp(I.bitmap, alone.bitmap, alone.getSize() * sizeof(vpRGBa)))
+          << "scene " << &scene - scenes.data() << ", camera " << cam;
+    }
+    ++frame;
+  }
 }
 
 TEST(Targets, TwelveWithTheSizesOfFig8)

@@ -198,7 +198,7 @@ void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogene
 void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                         unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const
 {
-  if (raster.width() != camera.width || raster.height() != camera.height)
+  if (raster.width() != camera.width || raster.height() != camera.height || raster.supersampling() != m_params.supersampling)
     raster.reset(camera.width, camera.height, m_params.supersampling);
   raster.clear(0.04f, 0.06f, 0.09f); // the dark tank beyond the panel
   const bool lit = sceneLit();
@@ -249,7 +249,6 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
 StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const
 {
   StereoImages im;
-  Rasterizer r[2];
   const RigCamera *cams[2] = {&rig.left, &rig.right};
   vpImage<vpRGBa> *outs[2] = {&im.left, &im.right};
   // The two cameras on two cores, through the pool the fitness uses: an OpenMP region here left
@@ -258,7 +257,12 @@ StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix
   std::exception_ptr error[2];
   BatchPool::shared().run(2, [&](std::size_t i) {
     try {
-      render(r[i], *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i]);
+      // Each thread keeps its sample buffers from frame to frame (21 MB at 640 x 480 with
+      // supersampling 2): allocating and zeroing them anew took 6 % of a stereo frame
+      // (pm-bench Render_StereoPair 43.3 -> 40.7 ms). clear() sets every sample, so the images
+      // are the same.
+      thread_local Rasterizer raster;
+      render(raster, *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i]);
     } catch (...) {
       error[i] = std::current_exception();
     }

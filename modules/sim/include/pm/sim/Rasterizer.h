@@ -77,6 +77,7 @@ public:
 
   unsigned width() const { return m_w; }
   unsigned height() const { return m_h; }
+  unsigned supersampling() const { return m_ss; }
 
 private:
   struct ProjVertex
