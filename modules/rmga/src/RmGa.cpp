@@ -180,7 +180,8 @@ void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
   auto bestIt = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
   Individual best = *bestIt;
   long used = 0;
-  std::vector<Individual> trial(1);
+  std::vector<Individual> &trial = m_trial; // a member: the hot path allocates nothing after the first frame
+  trial.resize(1);
   for (int step = 16; step >= 1 && used < maxEvals; step /= 2) {
     bool improved = true;
     while (improved && used < maxEvals) {

@@ -145,7 +145,7 @@ private:
   SearchSpace m_space;
   RmGaParams m_params;
   std::mt19937_64 m_rng;
-  std::vector<Individual> m_pop, m_children;
+  std::vector<Individual> m_pop, m_children, m_trial;
   std::vector<Phi> m_batch;
   std::vector<double> m_scores;
   bool m_havePrev = false, m_havePrev2 = false;
