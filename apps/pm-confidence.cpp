@@ -188,32 +188,19 @@ int main(int argc, char **argv)
     nlohmann::json fitJson;
     if (fit) {
       // Two folds by run (even and odd run indices): each frame scored by the model fitted on the other fold.
-      std::vector<double> held(set.size());
-      for (int fold = 0; fold < 2; ++fold) {
-        std::vector<std::vector<double>> x;
-        std::vector<bool> y;
-        for (std::size_t k = 0; k < set.size(); ++k)
-          if (static_cast<int>(runOf[k] % 2) != fold) {
-            x.push_back(featureRow(set[k]));
-            y.push_back(set[k].right);
-          }
-        if (std::count(y.begin(), y.end(), true) == 0 || std::count(y.begin(), y.end(), false) == 0)
-          throw pm::Error("--fit: the runs of " + std::string(fold ? "even" : "odd") +
-                          " index hold only right or only wrong frames; the cross-validation needs both in each fold");
-        const auto lf = pm::compare::fitLogistic(x, y);
-        for (std::size_t k = 0; k < set.size(); ++k)
-          if (static_cast<int>(runOf[k] % 2) == fold) {
-            const auto row = featureRow(set[k]);
-            double s = lf.bias;
-            for (std::size_t i = 0; i < row.size(); ++i)
-              s += lf.weights[i] * row[i];
-            held[k] = 1.0 / (1.0 + std::exp(-s));
-          }
+      std::vector<std::vector<double>> rows;
+      std::vector<int> fold;
+      for (std::size_t k = 0; k < set.size(); ++k) {
+        rows.push_back(featureRow(set[k]));
+        fold.push_back(static_cast<int>(runOf[k] % 2));
       }
-      std::vector<std::vector<double>> x;
-      for (const auto &f : set)
-        x.push_back(featureRow(f));
-      const auto all = pm::compare::fitLogistic(x, right);
+      std::vector<double> held;
+      try {
+        held = pm::compare::crossValidatedLogistic(rows, right, fold, 2);
+      } catch (const pm::Error &e) {
+        throw pm::Error(std::string("--fit (folds: runs of even and odd index): ") + e.what());
+      }
+      const auto all = pm::compare::fitLogistic(rows, right);
       fitJson = {{"auroc_cross_validated", pm::compare::auroc(held, right)}, {"weights", all.weights}, {"bias", all.bias},
                  {"features", pm::ConfidenceCues::featureNames()}, {"iterations", all.iterations}};
     }

@@ -139,6 +139,48 @@ TEST(Roc, TheLogisticFitRecoversTheModelItsLabelsWereDrawnFrom)
   EXPECT_THROW(pm::compare::fitLogistic({{1.0}, {2.0}}, {true, true}), pm::Error);
 }
 
+TEST(Roc, CrossValidationScoresEachFoldWithAModelThatNeverSawIt)
+{
+  // Labels drawn from a known logistic model; four folds. Each row's held-out score is the
+  // probability under the model fitted on the other three, so it is close to the true one, and
+  // its AUROC close to the in-sample fit's. A fold whose complement has one class only is named.
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::vector<double>> x;
+  std::vector<bool> y;
+  std::vector<int> fold;
+  for (int i = 0; i < 8000; ++i) {
+    const double a = g(rng), c = g(rng);
+    x.push_back({a, c});
+    y.push_back(u(rng) < 1.0 / (1.0 + std::exp(-(1.5 * a - c))));
+    fold.push_back(i % 4);
+  }
+  const std::vector<double> held = pm::compare::crossValidatedLogistic(x, y, fold, 4, 0.0);
+  ASSERT_EQ(held.size(), x.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    worst = std::max(worst, std::abs(held[i] - 1.0 / (1.0 + std::exp(-(1.5 * x[i][0] - x[i][1])))));
+  EXPECT_LT(worst, 0.06);
+  const auto all = pm::compare::fitLogistic(x, y, 0.0);
+  std::vector<double> inSample;
+  for (const auto &row : x)
+    inSample.push_back(all.probability(row));
+  EXPECT_NEAR(pm::compare::auroc(held, y), pm::compare::auroc(inSample, y), 0.005);
+  // Fold 1 holds every wrong row: the training set of fold 1 has right rows only.
+  std::vector<bool> skewed(x.size(), true);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    skewed[i] = fold[i] != 1;
+  try {
+    pm::compare::crossValidatedLogistic(x, skewed, fold, 4);
+    ADD_FAILURE() << "no error";
+  } catch (const pm::Error &e) {
+    EXPECT_NE(std::string(e.what()).find("fold 1"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(pm::compare::crossValidatedLogistic(x, y, std::vector<int>(x.size(), 4), 4), pm::Error);
+  EXPECT_THROW(pm::compare::crossValidatedLogistic(x, y, fold, 1), pm::Error);
+}
+
 TEST(Scenario, TheForcedLossBlanksTheFramesAndTheTargetJumps)
 {
   const pm::compare::Scenario s = pm::compare::makeScenario("loss", {});

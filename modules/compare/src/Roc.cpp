@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string>
 
 #include <opencv2/core.hpp>
 
@@ -118,6 +119,44 @@ LogisticFit fitLogistic(const std::vector<std::vector<double>> &x, const std::ve
   fit.weights.assign(theta.begin<double>(), theta.begin<double>() + static_cast<long>(d));
   fit.bias = theta.at<double>(n - 1);
   return fit;
+}
+
+double LogisticFit::probability(const std::vector<double> &x) const
+{
+  if (x.size() != weights.size())
+    throw Error("logistic model: a row of " + std::to_string(x.size()) + " features for a model of " + std::to_string(weights.size()));
+  double s = bias;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    s += weights[i] * x[i];
+  return 1.0 / (1.0 + std::exp(-s));
+}
+
+std::vector<double> crossValidatedLogistic(const std::vector<std::vector<double>> &x, const std::vector<bool> &right,
+                                           const std::vector<int> &fold, int folds, double l2)
+{
+  if (fold.size() != x.size() || right.size() != x.size() || folds < 2)
+    throw Error("cross-validation: needs a fold and a label per row, and at least two folds");
+  for (int f : fold)
+    if (f < 0 || f >= folds)
+      throw Error("cross-validation: a fold index out of 0.." + std::to_string(folds - 1));
+  std::vector<double> held(x.size());
+  for (int k = 0; k < folds; ++k) {
+    std::vector<std::vector<double>> train;
+    std::vector<bool> y;
+    for (std::size_t r = 0; r < x.size(); ++r)
+      if (fold[r] != k) {
+        train.push_back(x[r]);
+        y.push_back(right[r]);
+      }
+    if (std::count(y.begin(), y.end(), true) == 0 || std::count(y.begin(), y.end(), false) == 0)
+      throw Error("cross-validation: the rows outside fold " + std::to_string(k) +
+                  " hold only right or only wrong ones; each fold's training set needs both");
+    const LogisticFit lf = fitLogistic(train, y, l2);
+    for (std::size_t r = 0; r < x.size(); ++r)
+      if (fold[r] == k)
+        held[r] = lf.probability(x[r]);
+  }
+  return held;
 }
 
 } // namespace pm::compare

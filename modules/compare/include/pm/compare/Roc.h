@@ -43,6 +43,8 @@ struct LogisticFit
   std::vector<double> weights; //!< one per feature
   double bias = 0;
   int iterations = 0;
+  //! P(right | x) for a row \e x of the fitted size.
+  double probability(const std::vector<double> &x) const;
 };
 
 /*!
@@ -52,5 +54,18 @@ struct LogisticFit
 */
 LogisticFit fitLogistic(const std::vector<std::vector<double>> &x, const std::vector<bool> &right, double l2 = 1e-3,
                         int maxIterations = 50);
+
+/*!
+  Cross-validation: each row scored by the logistic model fitted on the rows of the other folds
+  (\e fold: each row's fold, 0..folds-1; e.g. its run's index modulo folds, so that no run is
+  scored by a model that saw it). Throws pm::Error (naming the fold) if the rows of the other
+  folds hold one class only, and as fitLogistic().
+  \code
+    const std::vector<double> held = pm::compare::crossValidatedLogistic(features, right, runIndexMod2, 2);
+    const double heldOutAuroc = pm::compare::auroc(held, right);
+  \endcode
+*/
+std::vector<double> crossValidatedLogistic(const std::vector<std::vector<double>> &x, const std::vector<bool> &right,
+                                           const std::vector<int> &fold, int folds, double l2 = 1e-3);
 
 } // namespace pm::compare
