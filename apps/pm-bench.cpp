@@ -308,13 +308,11 @@ void trackerFrame(benchmark::State &state, long evals, double steadyFraction, bo
   long evaluations = 0, frames = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    if (verifying || frames == 0) {
-      tracker.initialize(); // a first lock: the next frame locks and verifies
-      tracker.initFromPose(hMo);
-      if (verifying) {
-        tracker.initialize();
-        tracker.track(setup().images.left, setup().images.right);
-      }
+    if (verifying) { // a first lock from no pose: the timed frame verifies it
+      tracker.initialize();
+      tracker.track(setup().images.left, setup().images.right);
+    } else if (frames == 0) {
+      tracker.initFromPose(hMo); // a verified lock: the timed frames track
     }
     state.ResumeTiming();
     const pm::TrackResult r = tracker.track(setup().images.left, setup().images.right);

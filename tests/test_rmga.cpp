@@ -174,17 +174,24 @@ TEST(RmGa, PredictionKeepsTheLastBestWhereItWas)
   EXPECT_LT(distance(next.best, f.centre), distance(jumped.best, f.centre) + 1.0) << next.best.toString();
 }
 
-TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBestMirrorsAndLevelsItsTilt)
+//! A GA of default parameters (seed \e seed) after 2,000 evaluations on the Peak: converged on it.
+pm::RmGa convergedOnPeak(std::uint64_t seed)
 {
   Peak f;
   pm::RmGaParams p;
-  p.seed = 8;
+  p.seed = seed;
   pm::RmGa ga(pm::SearchSpace(), p);
   ga.evolve(f, pm::FrameBudget::evals(2000));
+  return ga;
+}
+
+TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBestMirrorsAndLevelsItsTilt)
+{
+  pm::RmGa ga = convergedOnPeak(8);
   const pm::Genome best = ga.population().front().genome; // sorted by the last generation
   ga.restart(1, 10);
   const auto &pop = ga.population();
-  ASSERT_EQ(static_cast<int>(pop.size()), p.population);
+  ASSERT_EQ(static_cast<int>(pop.size()), ga.params().population);
   EXPECT_EQ(pop[0].genome, best);
   const pm::Phi b = pop[0].phi;
   int positionOnly = 0, orientationOnly = 0, near = 0, mirrored = 0, facing = 0;
@@ -223,11 +230,7 @@ TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBestMirrorsAndLevelsItsTi
 
 TEST(RmGa, AnAnchorAddsItsOrientationAndItsNeighbourhoodToRestartsAndMovesWithThePopulation)
 {
-  Peak f;
-  pm::RmGaParams p;
-  p.seed = 9;
-  pm::RmGa ga(pm::SearchSpace(), p);
-  ga.evolve(f, pm::FrameBudget::evals(2000));
+  pm::RmGa ga = convergedOnPeak(9);
   const pm::Phi anchor{-100.0, 90.0, 600.0, -0.2, 0.15, -0.1}; // far from the best, on the peak
   ga.setAnchor(anchor);
   ASSERT_TRUE(ga.hasAnchor());

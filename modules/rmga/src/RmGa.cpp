@@ -180,8 +180,7 @@ void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
   auto bestIt = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
   Individual best = *bestIt;
   long used = 0;
-  std::vector<Individual> &trial = m_trial; // a member: the hot path allocates nothing after the first frame
-  trial.resize(1);
+  m_trial.resize(1); // a member: the hot path allocates nothing after the first frame
   for (int step = 16; step >= 1 && used < maxEvals; step /= 2) {
     bool improved = true;
     while (improved && used < maxEvals) {
@@ -195,12 +194,12 @@ void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
           if (v < 0 || v > Genome::kMax)
             continue;
           g.gene[i] = static_cast<std::uint16_t>(v);
-          trial[0] = make(g);
+          m_trial[0] = make(g);
           long e = 0;
-          evaluate(f, trial, 0, e);
+          evaluate(f, m_trial, 0, e);
           used += e;
-          if (trial[0].fitness > best.fitness) {
-            best = trial[0];
+          if (m_trial[0].fitness > best.fitness) {
+            best = m_trial[0];
             improved = true;
             break;
           }

@@ -123,6 +123,12 @@ void PhotoModelTracker::startVerification(const Phi &lock)
     return;
   // Every individual the lock, then all but it replaced by the restart's blocks; the lock does
   // not breed for the whole verification, so the others search on their own.
+  // The challenger searches near the last trusted pose too (the tracker's anchor; no frame is
+  // trusted while it verifies, so the anchor stays the same until it ends).
+  if (m_ga.hasAnchor())
+    m_challenger.setAnchor(m_ga.anchor());
+  else
+    m_challenger.clearAnchor();
   m_challenger.seedAround(lock, 0.0);
   m_challenger.restart(1, 1000000);
 }
@@ -152,7 +158,6 @@ void PhotoModelTracker::initialize()
 {
   m_ga.randomize();
   m_ga.clearAnchor();
-  m_challenger.clearAnchor();
   m_last = TrackResult();
   m_last.state = TrackState::Searching;
   resetCounters();
@@ -169,7 +174,6 @@ void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
   resetCounters();
   m_verified = true; // a pose given is taken as verified
   m_ga.setAnchor(p);
-  m_challenger.setAnchor(p);
   m_last.verified = true;
 }
 
@@ -184,8 +188,6 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
   m_ga.transform(moved);
   if (m_verifyLeft > 0) // an idle challenger is started afresh from the next lock
     m_challenger.transform(moved);
-  else if (m_challenger.hasAnchor())
-    m_challenger.setAnchor(moved(m_challenger.anchor()));
   m_last.hMo = hNowMhPrev * m_last.hMo;
   m_last.phi = fromHomogeneousMatrix(m_last.hMo);
 }
@@ -289,10 +291,8 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   r.verified = m_verified;
   r.confidence = m_params.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_params.confidence.threshold;
-  if (r.trusted) { // where the target was last seen for sure: the restarts' anchor
+  if (r.trusted) // where the target was last seen for sure: the restarts' anchor
     m_ga.setAnchor(r.phi);
-    m_challenger.setAnchor(r.phi);
-  }
   // A verified lock whose confidence stays low is doubted: the challenger searches again.
   m_untrustedFrames = c.tracking && r.verified && r.confidence < m_params.reverifyBelowConfidence ? m_untrustedFrames + 1 : 0;
   if (m_params.reverifyAfterFrames > 0 && m_untrustedFrames >= m_params.reverifyAfterFrames) {
