@@ -253,7 +253,7 @@ TEST(ReliefTargets, HighlightsAreStrongerUnderTheSceneLight)
   EXPECT_GT(maxGain, 40); // grey levels at the brightest highlight
 }
 
-TEST(ReliefTargets, CreaturesRenderExactlyAsBefore)
+TEST(ReliefTargets, CreaturesRenderTheSameInAutoAndOffModes)
 {
   const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::TargetShape crab = pm::sim::makeTarget("C12");
@@ -265,11 +265,8 @@ TEST(ReliefTargets, CreaturesRenderExactlyAsBefore)
   const pm::sim::StereoImages ia = a.renderStereo(rig, hMo, 0), ib = b.renderStereo(rig, hMo, 0);
   EXPECT_EQ(imageHash(ia.left), imageHash(ib.left));
   EXPECT_EQ(imageHash(ia.right), imageHash(ib.right));
-  // FNV-1a of the R, G, B bytes of C12_left.png / C12_right.png written by
-  // `pm-render --target C12 --repeat 1` (pose 0,0,500,0,0,0, frame 0, default scene) built from the
-  // code before the relief targets and shadows were added.
-  EXPECT_EQ(imageHash(ia.left), 0x50bc2320876f2ca5ULL);
-  EXPECT_EQ(imageHash(ia.right), 0xc57e59701b995333ULL);
+  // Until issue 18 this also held the hashes of the images of the code before the relief targets;
+  // the faster renderer differs from it by at most 1 grey level: Rasterizer.ImagesMatchTheReference...
 }
 
 TEST(ReliefTargets, BadSceneLightParametersAreRefused)

@@ -48,10 +48,11 @@ struct GaussianTable
 };
 } // namespace
 
-float fastGaussian(std::uint64_t seed, std::uint64_t index)
+void fastGaussian3(std::uint64_t seed, std::uint64_t index, float out[3])
 {
   static const GaussianTable table;
-  return table.v[hash64(seed + index * 0x9e3779b97f4a7c15ULL) & 0xffff];
+  for (std::uint64_t k = 0; k < 3; ++k)
+    out[k] = table.v[hash64(seed + (3 * index + k) * 0x9e3779b97f4a7c15ULL) & 0xffff];
 }
 
 } // namespace pm::sim

@@ -2,12 +2,201 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define PM_RASTER_AVX2 1
+#include <immintrin.h>
+#else
+#define PM_RASTER_AVX2 0
+#endif
 
 #include "pm/core/Error.h"
 #include "pm/sim/Noise.h"
 
 namespace pm::sim {
+
+namespace {
+
+//! One colour sample: R, G, B and a pad, so that a sample is one 16-byte vector.
+constexpr std::size_t kStride = 4;
+
+#if defined(__SSE2__)
+//! The 3 channels and the next byte of the texel at \e p, as 4 floats.
+inline __m128 texel4(const std::uint8_t *p)
+{
+  std::int32_t bits;
+  std::memcpy(&bits, p, 4);
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i b = _mm_cvtsi32_si128(bits);
+  return _mm_cvtepi32_ps(_mm_unpacklo_epi16(_mm_unpacklo_epi8(b, zero), zero));
+}
+#endif
+
+/*!
+  Texture::sample's bilinear fetch with the four texels converted at once (the same arithmetic,
+  so the same values), writing R, G, B times \e diff plus \e spec into \e out.
+*/
+inline void shadeTexel(const Texture &tex, float s, float t, float diff, float spec, float *out)
+{
+#if defined(__SSE2__)
+  s = std::min(std::max(s, 0.f), static_cast<float>(tex.width - 1));
+  t = std::min(std::max(t, 0.f), static_cast<float>(tex.height - 1));
+  const int i = std::min(static_cast<int>(s), tex.width - 2 < 0 ? 0 : tex.width - 2);
+  const int j = std::min(static_cast<int>(t), tex.height - 2 < 0 ? 0 : tex.height - 2);
+  const std::size_t di = tex.width > 1 ? 3 : 0, dj = tex.height > 1 ? 3 * static_cast<std::size_t>(tex.width) : 0;
+  const std::size_t k = 3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(tex.width) + static_cast<std::size_t>(i));
+  if (k + dj + di + 4 <= tex.rgb.size()) { // the 4-byte loads stay inside (all but the last texel)
+    const std::uint8_t *p = tex.rgb.data() + k;
+    const __m128 a = _mm_set1_ps(s - static_cast<float>(i)), b = _mm_set1_ps(t - static_cast<float>(j));
+    const __m128 p00 = texel4(p), p10 = texel4(p + di), p01 = texel4(p + dj), p11 = texel4(p + dj + di);
+    const __m128 top = _mm_add_ps(p00, _mm_mul_ps(a, _mm_sub_ps(p10, p00)));
+    const __m128 bot = _mm_add_ps(p01, _mm_mul_ps(a, _mm_sub_ps(p11, p01)));
+    const __m128 col = _mm_mul_ps(_mm_add_ps(top, _mm_mul_ps(b, _mm_sub_ps(bot, top))), _mm_set1_ps(1.f / 255.f));
+    _mm_storeu_ps(out, _mm_add_ps(_mm_mul_ps(col, _mm_set1_ps(diff)), _mm_set1_ps(spec)));
+    return;
+  }
+#endif
+  float col[3];
+  tex.sample(s, t, col);
+  for (int c = 0; c < 3; ++c)
+    out[c] = col[c] * diff + spec;
+}
+
+#if PM_RASTER_AVX2
+/*!
+  The span loop of drawTriangles<false> on 8 samples at a time (AVX2): the same operations in the
+  same order as the scalar loop (no fused multiply-add), so the same values bit for bit; a chunk
+  whose texels reach the texture's last byte is left to the scalar loop. Returns the number of
+  samples done (a multiple of 8, the rest is the caller's).
+*/
+__attribute__((target("avx2"))) std::size_t shadeSpanAvx2(const float *v0, const float *d, std::size_t idx,
+                                                          std::size_t count, float *invDepth, std::uint8_t *ids,
+                                                          float *color, const Texture &tex, bool useMask,
+                                                          std::uint8_t id)
+{
+  const __m256 lane = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m256 maxS = _mm256_set1_ps(static_cast<float>(tex.width - 1)), maxT = _mm256_set1_ps(static_cast<float>(tex.height - 1));
+  const __m256i maxI = _mm256_set1_epi32(tex.width - 2 < 0 ? 0 : tex.width - 2);
+  const __m256i maxJ = _mm256_set1_epi32(tex.height - 2 < 0 ? 0 : tex.height - 2);
+  const __m256i width = _mm256_set1_epi32(tex.width), three = _mm256_set1_epi32(3);
+  const int di = tex.width > 1 ? 3 : 0, dj = tex.height > 1 ? 3 * tex.width : 0;
+  const __m256i vdi = _mm256_set1_epi32(di), vdj = _mm256_set1_epi32(dj);
+  const __m256i lastSafe = _mm256_set1_epi32(static_cast<int>(tex.rgb.size()) - 4 - dj - di); // k <= this: in bounds
+  const __m256i byte = _mm256_set1_epi32(0xff);
+  const __m256 zero = _mm256_setzero_ps(), scale = _mm256_set1_ps(1.f / 255.f);
+  const auto *base = reinterpret_cast<const int *>(tex.rgb.data());
+  std::size_t done = 0;
+  for (; done + 8 <= count; done += 8) {
+    const __m256 kf = _mm256_add_ps(_mm256_set1_ps(static_cast<float>(done)), lane);
+    const std::size_t at = idx + done;
+    const __m256 w = _mm256_add_ps(_mm256_set1_ps(v0[0]), _mm256_mul_ps(kf, _mm256_set1_ps(d[0])));
+    __m256 pass = _mm256_cmp_ps(w, _mm256_loadu_ps(invDepth + at), _CMP_NLE_UQ);
+    const __m256 iz = _mm256_div_ps(_mm256_set1_ps(1.f), w);
+    if (useMask) {
+      const __m256 m = _mm256_add_ps(_mm256_set1_ps(v0[3]), _mm256_mul_ps(kf, _mm256_set1_ps(d[3])));
+      pass = _mm256_and_ps(pass, _mm256_cmp_ps(m, zero, _CMP_NGT_UQ));
+    }
+    int bits = _mm256_movemask_ps(pass);
+    if (!bits)
+      continue;
+    // (Lambdas do not inherit the target attribute: the attribute planes written out.)
+#define PM_ATTR(q) _mm256_mul_ps(_mm256_add_ps(_mm256_set1_ps(v0[q]), _mm256_mul_ps(kf, _mm256_set1_ps(d[q]))), iz)
+    __m256 s = PM_ATTR(1), t = PM_ATTR(2);
+    const __m256 diff = PM_ATTR(4), spec = PM_ATTR(5);
+#undef PM_ATTR
+    s = _mm256_min_ps(_mm256_max_ps(s, zero), maxS);
+    t = _mm256_min_ps(_mm256_max_ps(t, zero), maxT);
+    const __m256i i = _mm256_min_epi32(_mm256_cvttps_epi32(s), maxI), j = _mm256_min_epi32(_mm256_cvttps_epi32(t), maxJ);
+    const __m256 a = _mm256_sub_ps(s, _mm256_cvtepi32_ps(i)), b = _mm256_sub_ps(t, _mm256_cvtepi32_ps(j));
+    const __m256i k = _mm256_mullo_epi32(_mm256_add_epi32(_mm256_mullo_epi32(j, width), i), three);
+    const __m256i active = _mm256_castps_si256(pass);
+    if (_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(active, _mm256_cmpgt_epi32(k, lastSafe)))))
+      return done; // a 4-byte texel load would pass the texture's end: the scalar loop takes over
+    const __m256i g00 = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), base, k, active, 1);
+    const __m256i g10 = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), base, _mm256_add_epi32(k, vdi), active, 1);
+    const __m256i g01 = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), base, _mm256_add_epi32(k, vdj), active, 1);
+    const __m256i g11 = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), base, _mm256_add_epi32(k, _mm256_add_epi32(vdj, vdi)), active, 1);
+    __m256 out[3];
+    for (int c = 0; c < 3; ++c) {
+      const __m128i sh = _mm_cvtsi32_si128(8 * c);
+#define PM_CHAN(g) _mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srl_epi32(g, sh), byte))
+      const __m256 p00 = PM_CHAN(g00), p10 = PM_CHAN(g10), p01 = PM_CHAN(g01), p11 = PM_CHAN(g11);
+#undef PM_CHAN
+      const __m256 top = _mm256_add_ps(p00, _mm256_mul_ps(a, _mm256_sub_ps(p10, p00)));
+      const __m256 bot = _mm256_add_ps(p01, _mm256_mul_ps(a, _mm256_sub_ps(p11, p01)));
+      const __m256 col = _mm256_mul_ps(_mm256_add_ps(top, _mm256_mul_ps(b, _mm256_sub_ps(bot, top))), scale);
+      out[c] = _mm256_add_ps(_mm256_mul_ps(col, diff), spec);
+    }
+    _mm256_maskstore_ps(invDepth + at, active, w);
+    alignas(32) float r[8], g[8], bl[8];
+    _mm256_store_ps(r, out[0]);
+    _mm256_store_ps(g, out[1]);
+    _mm256_store_ps(bl, out[2]);
+    while (bits) {
+      const int q = __builtin_ctz(static_cast<unsigned>(bits));
+      bits &= bits - 1;
+      float *o = color + kStride * (at + static_cast<std::size_t>(q));
+      o[0] = r[q];
+      o[1] = g[q];
+      o[2] = bl[q];
+      ids[at + static_cast<std::size_t>(q)] = id;
+    }
+  }
+  return done;
+}
+#endif
+
+//! floor(q / d) for d > 0, exact: a double quotient (no 64-bit integer division, ~5x slower) corrected by one step.
+inline std::int64_t floorDiv(std::int64_t q, std::int64_t d)
+{
+  auto k = static_cast<std::int64_t>(std::floor(static_cast<double>(q) / static_cast<double>(d)));
+  while (k * d > q)
+    --k;
+  while ((k + 1) * d <= q)
+    ++k;
+  return k;
+}
+inline std::int64_t ceilDiv(std::int64_t q, std::int64_t d) { return -floorDiv(-q, d); }
+
+/*!
+  Narrows [lo, hi] (steps from the row's first sample) to where e + k step + bias >= 0: an edge
+  function is linear along the row, so the samples inside a triangle are one span, found exactly.
+*/
+inline void clipSpan(std::int64_t e, std::int64_t step, std::int64_t bias, std::int64_t &lo, std::int64_t &hi)
+{
+  const std::int64_t e0 = e + bias;
+  if (step > 0) {
+    if (e0 + lo * step < 0)
+      lo = ceilDiv(-e0, step);
+  } else if (step < 0) {
+    if (e0 + hi * step < 0)
+      hi = floorDiv(e0, -step);
+  } else if (e0 < 0) {
+    hi = lo - 1;
+  }
+}
+
+//! std::llround for |x| < 2^52, inline (half away from zero).
+inline std::int64_t roundHalfAway(double x)
+{
+  return x >= 0 ? static_cast<std::int64_t>(x + 0.5) : -static_cast<std::int64_t>(-x + 0.5);
+}
+
+} // namespace
+
+bool Rasterizer::simdAvailable()
+{
+#if PM_RASTER_AVX2
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+#else
+  return false;
+#endif
+}
 
 void Rasterizer::reset(unsigned width, unsigned height, unsigned supersampling)
 {
@@ -19,18 +208,18 @@ void Rasterizer::reset(unsigned width, unsigned height, unsigned supersampling)
   m_W = width * supersampling;
   m_H = height * supersampling;
   const std::size_t n = static_cast<std::size_t>(m_W) * m_H;
-  m_color.assign(3 * n, 0.f);
+  m_color.assign(kStride * n, 0.f);
   m_invDepth.assign(n, 0.f);
   m_id.assign(n, 0);
 }
 
 void Rasterizer::clear(float r, float g, float b)
 {
-  for (std::size_t i = 0; i < m_invDepth.size(); ++i) {
-    m_color[3 * i] = r;
-    m_color[3 * i + 1] = g;
-    m_color[3 * i + 2] = b;
-  }
+  // The colour of a sample is read only where something was drawn (its id is not 0): resolve()
+  // uses the clear colour elsewhere, so the colour buffer (16 bytes a sample) is not written here.
+  m_clearColor[0] = r;
+  m_clearColor[1] = g;
+  m_clearColor[2] = b;
   std::fill(m_invDepth.begin(), m_invDepth.end(), 0.f);
   std::fill(m_id.begin(), m_id.end(), std::uint8_t(0));
 }
@@ -40,6 +229,8 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
 {
   if (!mesh.texture || mesh.texture->width <= 0 || mesh.texture->height <= 0)
     throw Error("renderer: mesh without texture");
+  if (id == 0)
+    throw Error("renderer: object id 0 means nothing drawn; use 1..255");
   const double ss = m_ss;
   const double px = cam.get_px() * ss, py = cam.get_py() * ss;
   const double u0 = cam.get_u0() * ss + (ss - 1) / 2, v0 = cam.get_v0() * ss + (ss - 1) / 2;
@@ -122,6 +313,7 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
     drawTriangles<false>(mesh, light, id);
 }
 
+
 template <bool kShadow>
 void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uint8_t id)
 {
@@ -137,8 +329,12 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
     std::int64_t x, y;
   };
   auto fixedOf = [&](const ProjVertex &v) {
-    return Fixed{static_cast<std::int64_t>(std::llround(v.X * kSub)), static_cast<std::int64_t>(std::llround(v.Y * kSub))};
+    return Fixed{roundHalfAway(v.X * kSub), roundHalfAway(v.Y * kSub)};
   };
+  // The attributes interpolated across a triangle, in the order of ProjVertex (w, s, t, mask, diff,
+  // spec, su, sv, sd): each is a plane in screen space, stepped along a span.
+  constexpr int kAttrs = kShadow ? 9 : 6;
+  [[maybe_unused]] const bool useAvx2 = m_simd && simdAvailable();
   for (const auto &tri : mesh.triangles) {
     const ProjVertex *pa = &m_proj[tri[0]], *pb = &m_proj[tri[1]], *pc = &m_proj[tri[2]];
     if (!pa->valid || !pb->valid || !pc->valid)
@@ -160,14 +356,12 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
     // vertex at 342.9999 whose fixed value is 343 dropped the samples of column 343 that lie on
     // its edges from both triangles: a crack along a mesh line that projects onto a sample column).
     // Kept off by default (setExactBounds) so that existing images stay bit-identical.
-    auto floorDiv = [](std::int64_t q) { return q >= 0 ? q / 256 : -((-q + 255) / 256); };
-    auto ceilDiv = [&](std::int64_t q) { return -floorDiv(-q); };
     int x0, x1, y0, y1;
     if (m_exactBounds) {
-      x0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.x, B.x, C.x}))));
-      x1 = static_cast<int>(std::min<std::int64_t>(W - 1, floorDiv(std::max({A.x, B.x, C.x}))));
-      y0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.y, B.y, C.y}))));
-      y1 = static_cast<int>(std::min<std::int64_t>(H - 1, floorDiv(std::max({A.y, B.y, C.y}))));
+      x0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.x, B.x, C.x}), 256)));
+      x1 = static_cast<int>(std::min<std::int64_t>(W - 1, floorDiv(std::max({A.x, B.x, C.x}), 256)));
+      y0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.y, B.y, C.y}), 256)));
+      y1 = static_cast<int>(std::min<std::int64_t>(H - 1, floorDiv(std::max({A.y, B.y, C.y}), 256)));
     } else {
       x0 = std::max(0, static_cast<int>(std::ceil(std::min({a.X, b.X, c.X}))));
       x1 = std::min(W - 1, static_cast<int>(std::floor(std::max({a.X, b.X, c.X}))));
@@ -184,45 +378,71 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
     const std::int64_t ba0 = bias(B, C), bb0 = bias(C, A), bc0 = bias(A, B);
     const std::int64_t stepAx = -(C.y - B.y) * 256, stepBx = -(A.y - C.y) * 256, stepCx = -(B.y - A.y) * 256;
     const float inv = 1.f / static_cast<float>(area);
+    const float dwa = static_cast<float>(stepAx) * inv, dwb = static_cast<float>(stepBx) * inv, dwc = static_cast<float>(stepCx) * inv;
+    float va[kAttrs], vb[kAttrs], vc[kAttrs], d[kAttrs];
+    {
+      const float fa[9] = {a.w, a.s, a.t, a.mask, a.diff, a.spec, a.su, a.sv, a.sd};
+      const float fb[9] = {b.w, b.s, b.t, b.mask, b.diff, b.spec, b.su, b.sv, b.sd};
+      const float fc[9] = {c.w, c.s, c.t, c.mask, c.diff, c.spec, c.su, c.sv, c.sd};
+      for (int q = 0; q < kAttrs; ++q) {
+        va[q] = fa[q];
+        vb[q] = fb[q];
+        vc[q] = fc[q];
+        d[q] = dwa * fa[q] + dwb * fb[q] + dwc * fc[q];
+      }
+    }
     for (int y = y0; y <= y1; ++y) {
       const std::int64_t sy = static_cast<std::int64_t>(y) * 256, sx0 = static_cast<std::int64_t>(x0) * 256;
-      std::int64_t ea = (C.x - B.x) * (sy - B.y) - (C.y - B.y) * (sx0 - B.x);
-      std::int64_t eb = (A.x - C.x) * (sy - C.y) - (A.y - C.y) * (sx0 - C.x);
-      std::int64_t ec = (B.x - A.x) * (sy - A.y) - (B.y - A.y) * (sx0 - A.x);
-      std::size_t idx = static_cast<std::size_t>(y) * m_W + static_cast<std::size_t>(x0);
-      for (int x = x0; x <= x1; ++x, ++idx, ea += stepAx, eb += stepBx, ec += stepCx) {
-        if (ea + ba0 < 0 || eb + bb0 < 0 || ec + bc0 < 0)
-          continue;
-        const float wa = static_cast<float>(ea) * inv, wb = static_cast<float>(eb) * inv, wc = static_cast<float>(ec) * inv;
-        const float w = wa * a.w + wb * b.w + wc * c.w;
+      const std::int64_t ea = (C.x - B.x) * (sy - B.y) - (C.y - B.y) * (sx0 - B.x);
+      const std::int64_t eb = (A.x - C.x) * (sy - C.y) - (A.y - C.y) * (sx0 - C.x);
+      const std::int64_t ec = (B.x - A.x) * (sy - A.y) - (B.y - A.y) * (sx0 - A.x);
+      std::int64_t lo = 0, hi = x1 - x0;
+      clipSpan(ea, stepAx, ba0, lo, hi);
+      clipSpan(eb, stepBx, bb0, lo, hi);
+      clipSpan(ec, stepCx, bc0, lo, hi);
+      if (lo > hi)
+        continue;
+      // The barycentric weights at the span's first sample, then each attribute's plane along it.
+      const float wa = static_cast<float>(ea + lo * stepAx) * inv, wb = static_cast<float>(eb + lo * stepBx) * inv;
+      const float wc = static_cast<float>(ec + lo * stepCx) * inv;
+      float v0[kAttrs];
+      for (int q = 0; q < kAttrs; ++q)
+        v0[q] = wa * va[q] + wb * vb[q] + wc * vc[q];
+      const std::size_t row = static_cast<std::size_t>(y) * m_W + static_cast<std::size_t>(x0);
+      std::size_t first = row + static_cast<std::size_t>(lo);
+      const std::size_t end = row + static_cast<std::size_t>(hi);
+      float kf = 0.f;
+#if PM_RASTER_AVX2
+      if constexpr (!kShadow) {
+        if (useAvx2) {
+          const std::size_t done = shadeSpanAvx2(v0, d, first, end - first + 1, m_invDepth.data(), m_id.data(),
+                                                 m_color.data(), tex, mesh.useMask, id);
+          first += done;
+          kf = static_cast<float>(done);
+        }
+      }
+#endif
+      for (std::size_t idx = first; idx <= end; ++idx, kf += 1.f) {
+        const float w = v0[0] + kf * d[0];
         if (w <= m_invDepth[idx])
           continue;
         const float iz = 1.f / w;
-        if (mesh.useMask && (wa * a.mask + wb * b.mask + wc * c.mask) * iz > 0.f)
+        if (mesh.useMask && v0[3] + kf * d[3] > 0.f)
           continue;
-        const float s = (wa * a.s + wb * b.s + wc * c.s) * iz;
-        const float t = (wa * a.t + wb * b.t + wc * c.t) * iz;
-        const float diff = (wa * a.diff + wb * b.diff + wc * c.diff) * iz;
-        const float spec = (wa * a.spec + wb * b.spec + wc * c.spec) * iz;
-        float col[3];
-        tex.sample(s, t, col);
+        const float s = (v0[1] + kf * d[1]) * iz;
+        const float t = (v0[2] + kf * d[2]) * iz;
+        float diff = (v0[4] + kf * d[4]) * iz, spec = (v0[5] + kf * d[5]) * iz;
+        if constexpr (kShadow) {
+          const float su = (v0[6] + kf * d[6]) * iz;
+          const float sv = (v0[7] + kf * d[7]) * iz;
+          const float sd = (v0[8] + kf * d[8]) * iz;
+          const float lit = light.shadow->visibility(su, sv, sd);
+          diff = ambient + lit * diff;
+          spec = lit * spec;
+        }
         m_invDepth[idx] = w;
         m_id[idx] = id;
-        float *o = &m_color[3 * idx];
-        if constexpr (kShadow) {
-          const float su = (wa * a.su + wb * b.su + wc * c.su) * iz;
-          const float sv = (wa * a.sv + wb * b.sv + wc * c.sv) * iz;
-          const float sd = (wa * a.sd + wb * b.sd + wc * c.sd) * iz;
-          const float lit = light.shadow->visibility(su, sv, sd);
-          const float d = ambient + lit * diff, sp = lit * spec;
-          o[0] = col[0] * d + sp;
-          o[1] = col[1] * d + sp;
-          o[2] = col[2] * d + sp;
-        } else {
-          o[0] = col[0] * diff + spec;
-          o[1] = col[1] * diff + spec;
-          o[2] = col[2] * diff + spec;
-        }
+        shadeTexel(tex, s, t, diff, spec, &m_color[kStride * idx]);
       }
     }
   }
@@ -231,30 +451,43 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
 template void Rasterizer::drawTriangles<true>(const Mesh &, const Lighting &, std::uint8_t);
 template void Rasterizer::drawTriangles<false>(const Mesh &, const Lighting &, std::uint8_t);
 
+namespace {
+//! A grey level in [0, 255]: \e val clamped and rounded half away from zero (std::lround's rule, inline).
+inline unsigned char toByte(double val)
+{
+  return static_cast<unsigned char>(static_cast<int>(std::min(255.0, std::max(0.0, val)) + 0.5));
+}
+} // namespace
+
 void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const
 {
   out.resize(m_h, m_w);
   const float norm = static_cast<float>(255.0 * exposure / (m_ss * m_ss));
-  for (unsigned v = 0; v < m_h; ++v)
+  const float sigma = static_cast<float>(noiseSigma);
+  for (unsigned v = 0; v < m_h; ++v) {
+    vpRGBa *dst = out[v];
+    const std::size_t row0 = static_cast<std::size_t>(v) * m_ss * m_W;
     for (unsigned u = 0; u < m_w; ++u) {
-      float acc[3] = {0, 0, 0};
+      // The box filter of the pixel's samples (the clear colour where nothing was drawn), the
+      // exposure, the noise, clamped and rounded half up, in single precision.
+      float acc[4] = {0, 0, 0, 0};
       for (unsigned j = 0; j < m_ss; ++j) {
-        const float *p = &m_color[3 * ((static_cast<std::size_t>(v) * m_ss + j) * m_W + static_cast<std::size_t>(u) * m_ss)];
-        for (unsigned i = 0; i < m_ss; ++i, p += 3) {
-          acc[0] += p[0];
-          acc[1] += p[1];
-          acc[2] += p[2];
+        const std::size_t first = row0 + j * m_W + static_cast<std::size_t>(u) * m_ss;
+        for (unsigned i = 0; i < m_ss; ++i) {
+          const float *q = m_id[first + i] ? &m_color[kStride * (first + i)] : m_clearColor;
+          for (std::size_t c = 0; c < 4; ++c)
+            acc[c] += q[c];
         }
       }
+      float g[3] = {0, 0, 0};
+      if (noiseSigma > 0)
+        fastGaussian3(noiseSeed, static_cast<std::uint64_t>(v) * m_w + u, g);
       unsigned char c[3];
-      for (int k = 0; k < 3; ++k) {
-        double val = acc[k] * norm;
-        if (noiseSigma > 0)
-          val += noiseSigma * static_cast<double>(fastGaussian(noiseSeed, (static_cast<std::uint64_t>(v) * m_w + u) * 3 + static_cast<std::uint64_t>(k)));
-        c[k] = static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, val))));
-      }
-      out[v][u] = vpRGBa(c[0], c[1], c[2], 255);
+      for (int k = 0; k < 3; ++k)
+        c[k] = static_cast<unsigned char>(std::min(255.f, std::max(0.f, acc[k] * norm + sigma * g[k])) + 0.5f);
+      dst[u] = vpRGBa(c[0], c[1], c[2], 255);
     }
+  }
 }
 
 void Rasterizer::addNoise(vpImage<vpRGBa> &out, double noiseSigma, std::uint64_t noiseSeed)
@@ -264,11 +497,12 @@ void Rasterizer::addNoise(vpImage<vpRGBa> &out, double noiseSigma, std::uint64_t
   const unsigned w = out.getWidth(), h = out.getHeight();
   for (unsigned v = 0; v < h; ++v)
     for (unsigned u = 0; u < w; ++u) {
-      unsigned char *c[3] = {&out[v][u].R, &out[v][u].G, &out[v][u].B};
-      for (int k = 0; k < 3; ++k) {
-        const double val = *c[k] + noiseSigma * static_cast<double>(fastGaussian(noiseSeed, (static_cast<std::uint64_t>(v) * w + u) * 3 + static_cast<std::uint64_t>(k)));
-        *c[k] = static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, val))));
-      }
+      vpRGBa &px = out[v][u];
+      float g[3];
+      fastGaussian3(noiseSeed, static_cast<std::uint64_t>(v) * w + u, g);
+      px.R = toByte(px.R + noiseSigma * g[0]);
+      px.G = toByte(px.G + noiseSigma * g[1]);
+      px.B = toByte(px.B + noiseSigma * g[2]);
     }
 }
 

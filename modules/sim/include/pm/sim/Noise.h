@@ -34,8 +34,11 @@ double valueNoise(double x, double y, std::uint64_t seed);
 double fbm(double x, double y, std::uint64_t seed, int octaves);
 //! Standard normal sample, a pure function of (seed, index) (Box-Muller: exact but slow).
 double gaussianFromHash(std::uint64_t seed, std::uint64_t index);
-//! Standard normal sample drawn from a fixed table of 65536 quantiles by a hash of (seed, index): fast,
-//! for per-pixel sensor noise.
-float fastGaussian(std::uint64_t seed, std::uint64_t index);
+/*!
+  Three standard normal samples (one per colour channel of pixel \e index), a pure function of
+  (seed, index): a hash of (seed, 3 index + channel) picks each from a fixed table of 65536
+  normal samples. Fast, for per-pixel sensor noise.
+*/
+void fastGaussian3(std::uint64_t seed, std::uint64_t index, float out[3]);
 
 } // namespace pm::sim

@@ -45,7 +45,7 @@ public:
   //! Sets the image size and supersampling factor (1..4) and clears to black.
   void reset(unsigned width, unsigned height, unsigned supersampling);
   void clear(float r, float g, float b);
-  //! Draws \e mesh seen from a camera at cMo; \e id (1..255) is written to the id buffer where visible.
+  //! Draws \e mesh seen from a camera at cMo; \e id (1..255; 0 is refused) is written to the id buffer where visible.
   void draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam, const Lighting &light,
             std::uint8_t id);
   /*!
@@ -75,6 +75,15 @@ public:
   void setExactBounds(bool on) { m_exactBounds = on; }
   bool exactBounds() const { return m_exactBounds; }
 
+  /*!
+    Shade 8 samples at a time with AVX2 where the processor has it (true, the default) or one at a
+    time (false). The two give the same images bit for bit (the same operations in the same order);
+    the switch is there to test that. The cast-shadow path is always one at a time.
+  */
+  void setSimd(bool on) { m_simd = on; }
+  //! True if this processor and build have the 8-wide path.
+  static bool simdAvailable();
+
   unsigned width() const { return m_w; }
   unsigned height() const { return m_h; }
   unsigned supersampling() const { return m_ss; }
@@ -92,7 +101,9 @@ private:
   void drawTriangles(const Mesh &mesh, const Lighting &light, std::uint8_t id);
   unsigned m_w = 0, m_h = 0, m_ss = 1, m_W = 0, m_H = 0;
   bool m_exactBounds = false;
-  std::vector<float> m_color;      // 3 * m_W * m_H
+  bool m_simd = true;
+  std::vector<float> m_color;      // 4 * m_W * m_H (R, G, B, pad); valid where m_id is not 0
+  float m_clearColor[4] = {0, 0, 0, 0};
   std::vector<float> m_invDepth;   // 1/z, 0 = empty
   std::vector<std::uint8_t> m_id;  // object id per sample
   std::vector<ProjVertex> m_proj;  // scratch
