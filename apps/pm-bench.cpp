@@ -298,11 +298,13 @@ void FitnessMaps_FourGrids(benchmark::State &state)
   refinement, the confidence's cues), a steady frame (a quarter of the budget), and a frame on
   which a new lock is verified (the challenger's half of the budget).
 */
-void trackerFrame(benchmark::State &state, long evals, double steadyFraction, bool verifying)
+void trackerFrame(benchmark::State &state, long evals, double steadyFraction, bool verifying, int hueMarginPx = -1)
 {
   pm::TrackerParams p = pm::app::measuredTrackerDefaults(5.0);
   p.budgetEvaluations = evals;
   p.steadyBudgetFraction = steadyFraction;
+  if (hueMarginPx >= 0)
+    p.steadyHueMarginPx = hueMarginPx;
   pm::PhotoModelTracker tracker(setup().rig, setup().model, p);
   const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(setup().truth);
   long evaluations = 0, frames = 0;
@@ -324,6 +326,8 @@ void trackerFrame(benchmark::State &state, long evals, double steadyFraction, bo
 }
 void Tracker_Frame_1900Evals(benchmark::State &s) { trackerFrame(s, 1900, 1.0, false); }
 void Tracker_Frame_1900Evals_Steady(benchmark::State &s) { trackerFrame(s, 1900, 0.25, false); }
+//! Its peer: the same steady frame with the hue of the whole images (TrackerParams::steadyHueMarginPx 0).
+void Tracker_Frame_1900Evals_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, 1900, 0.25, false, 0); }
 void Tracker_Frame_1900Evals_Verifying(benchmark::State &s) { trackerFrame(s, 1900, 1.0, true); }
 
 //! The lab's renderer: a stereo pair of the C12 crab (supersampling 2, the default).
@@ -356,6 +360,7 @@ BENCHMARK(Distortion_Project1000Points_Lens);
 BENCHMARK(FitnessMaps_FourGrids)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK(Tracker_Frame_1900Evals)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_1900Evals_Steady)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_1900Evals_Steady_WholeImages)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_1900Evals_Verifying)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Render_StereoPair)->Unit(benchmark::kMillisecond)->UseRealTime();
 

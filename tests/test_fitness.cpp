@@ -224,6 +224,46 @@ TEST(HuePlane, MatchesThePerPixelFormula)
   EXPECT_EQ(plane.at(1, 1), pm::HuePlane::kNoHue); // grey has no hue when a minimum saturation is set
 }
 
+TEST(HuePlane, AWindowHoldsTheHueInsideAndNoHueOutsideWhateverCameBefore)
+{
+  vpImage<vpRGBa> J(48, 64);
+  std::mt19937 rng(2);
+  std::uniform_int_distribution<int> c(0, 255);
+  for (unsigned k = 0; k < J.getSize(); ++k)
+    J.bitmap[k] = vpRGBa(static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)));
+  pm::HuePlane full, plane;
+  full.compute(J, 0.1f);
+  auto expectWindow = [&](const pm::PixelRect &w, const std::vector<std::int64_t> &extra, const char *what) {
+    for (int v = 0; v < 48; ++v)
+      for (int u = 0; u < 64; ++u) {
+        const bool in = (u >= w.u0 && u < w.u1 && v >= w.v0 && v < w.v1) ||
+                        std::find(extra.begin(), extra.end(), static_cast<std::int64_t>(v * 64 + u)) != extra.end();
+        ASSERT_EQ(plane.at(static_cast<unsigned>(u), static_cast<unsigned>(v)),
+                  in ? full.at(static_cast<unsigned>(u), static_cast<unsigned>(v)) : pm::HuePlane::kNoHue)
+            << what << " pixel " << u << "," << v;
+      }
+  };
+  plane.compute(J, 0.1f); // the whole image first, then windows that overlap, move, shrink, pass the edges
+  const std::vector<pm::PixelRect> windows = {{10, 5, 40, 30}, {20, 15, 60, 47}, {-5, -3, 12, 9}, {30, 20, 31, 21}, {50, 40, 90, 80}, {}};
+  for (const pm::PixelRect &w : windows) {
+    plane.compute(J, 0.1f, w);
+    const pm::PixelRect clipped = w.grown(0, 64, 48);
+    expectWindow(clipped, {}, "window");
+    EXPECT_TRUE(plane.window().u0 == clipped.u0 && plane.window().v0 == clipped.v0 && plane.window().u1 == clipped.u1 &&
+                plane.window().v1 == clipped.v1);
+  }
+  // Pixels added outside the window get their hue, until the next compute.
+  plane.compute(J, 0.1f, {10, 10, 20, 20});
+  const std::vector<std::int64_t> extra = {0, 63, 47 * 64 + 63, 12 * 64 + 40, 15 * 64 + 15};
+  plane.addPixels(J, 0.1f, extra.data(), extra.size());
+  expectWindow({10, 10, 20, 20}, extra, "added pixels");
+  plane.compute(J, 0.1f, {30, 30, 35, 35});
+  expectWindow({30, 30, 35, 35}, {}, "after the added pixels");
+  const std::int64_t bad = 64 * 48;
+  EXPECT_THROW(plane.addPixels(J, 0.1f, &bad, 1), pm::Error);
+  EXPECT_THROW(plane.addPixels(vpImage<vpRGBa>(4, 4), 0.1f, extra.data(), 1), pm::Error);
+}
+
 //! The AVX2 and the scalar kernels give exactly the same F for every pose of \e ps.
 static void expectKernelsAgree(const pm::StereoFitness &fit, const std::vector<pm::Phi> &ps)
 {
@@ -246,14 +286,17 @@ protected:
     const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
     const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig->left.cam, 640, 480, 500);
     fit = new pm::StereoFitness(*rig, sm.build.model);
-    const auto im = scene.renderStereo(*rig, hMo, 0);
-    fit->setImages(im.left, im.right);
+    model = new pm::PhotoModel(sm.build.model);
+    ims = new pm::sim::StereoImages(scene.renderStereo(*rig, hMo, 0));
+    fit->setImages(ims->left, ims->right);
     truth = sm.truth(hMo);
   }
   static void TearDownTestSuite()
   {
     delete fit;
     delete rig;
+    delete model;
+    delete ims;
   }
   static std::vector<pm::Phi> randomPoses(std::size_t n)
   {
@@ -266,8 +309,12 @@ protected:
   }
   static pm::StereoRig *rig;
   static pm::StereoFitness *fit;
+  static pm::PhotoModel *model;
+  static pm::sim::StereoImages *ims;
   static pm::Phi truth;
 };
+pm::PhotoModel *FitnessOnC12::model = nullptr;
+pm::sim::StereoImages *FitnessOnC12::ims = nullptr;
 pm::StereoRig *FitnessOnC12::rig = nullptr;
 pm::StereoFitness *FitnessOnC12::fit = nullptr;
 pm::Phi FitnessOnC12::truth;
@@ -275,6 +322,39 @@ pm::Phi FitnessOnC12::truth;
 TEST_F(FitnessOnC12, Avx2AndScalarKernelsAgreeExactly)
 {
   expectKernelsAgree(*fit, randomPoses(2000));
+}
+
+TEST_F(FitnessOnC12, HueWindowsAroundAPoseGiveItsFitnessAndAddHueUnderGivesAnyOther)
+{
+  pm::StereoFitness windowed(*rig, *model);
+  std::array<pm::PixelRect, 2> w;
+  for (int cam = 0; cam < 2; ++cam)
+    w[static_cast<std::size_t>(cam)] = windowed.footprint(truth, cam).grown(4, 640, 480);
+  windowed.setImages(ims->left, ims->right, w);
+  pm::StereoFitness whole(*rig, *model);
+  whole.setImages(ims->left, ims->right);
+  // At the pose and near it (within the 4-pixel margin): F as on the whole images.
+  EXPECT_DOUBLE_EQ(windowed.evaluate(truth), whole.evaluate(truth));
+  const pm::Phi near{truth.x + 1, truth.y - 1, truth.z, truth.e1, truth.e2, truth.e3};
+  EXPECT_DOUBLE_EQ(windowed.evaluate(near), whole.evaluate(near));
+  // Far from it, the window's outside matches nothing: F differs, until its hue is added.
+  const pm::Phi far{truth.x + 120, truth.y + 60, truth.z, truth.e1, truth.e2, truth.e3};
+  EXPECT_NE(windowed.evaluate(far), whole.evaluate(far));
+  windowed.addHueUnder(ims->left, ims->right, far);
+  EXPECT_DOUBLE_EQ(windowed.evaluate(far), whole.evaluate(far));
+  EXPECT_DOUBLE_EQ(windowed.evaluate(truth), whole.evaluate(truth));
+  // A footprint holds every point that falls on the image.
+  for (int cam = 0; cam < 2; ++cam) {
+    const pm::PixelRect fp = whole.footprint(truth, cam);
+    for (const pm::PointScore &s : whole.pointScores(truth, cam))
+      if (s.u >= -0.5 && s.v >= -0.5 && s.u < 639.5 && s.v < 479.5) {
+        EXPECT_GE(std::lround(s.u), fp.u0);
+        EXPECT_LT(std::lround(s.u), fp.u1);
+        EXPECT_GE(std::lround(s.v), fp.v0);
+        EXPECT_LT(std::lround(s.v), fp.v1);
+      }
+  }
+  EXPECT_THROW(windowed.addHueUnder(vpImage<vpRGBa>(4, 4), vpImage<vpRGBa>(4, 4), truth), pm::Error);
 }
 
 TEST_F(FitnessOnC12, ThreadSafeAndBatchEqualsSingle)

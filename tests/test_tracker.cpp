@@ -140,6 +140,41 @@ TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
   EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::Error);
 }
 
+TEST(Tracker, SteadyFramesSeeTheHueOnlyAroundTheTargetAndScoreTheSame)
+{
+  // Two trackers on the same frames, one with hue windows on steady frames, one on the whole
+  // images: the windows are smaller than the images and hold the model, and every frame's
+  // fitness and cues are those of the whole images (the confidence's competitors included).
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(600);
+  p.steadyAfterFrames = 3;
+  pm::TrackerParams whole = p;
+  whole.steadyHueMarginPx = 0;
+  pm::PhotoModelTracker a(S.rig, S.sm.build.model, p), b(S.rig, S.sm.build.model, whole);
+  a.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  b.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  int steady = 0;
+  for (int k = 0; k < 8; ++k) {
+    const pm::TrackResult ra = a.track(S.im.left, S.im.right), rb = b.track(S.im.left, S.im.right);
+    ASSERT_EQ(ra.steady, rb.steady) << "frame " << k;
+    steady += ra.steady;
+    // The same search on the same fitness values: the same pose, fitness and confidence.
+    EXPECT_EQ(ra.phi.toString(), rb.phi.toString()) << "frame " << k;
+    EXPECT_DOUBLE_EQ(ra.fitness, rb.fitness) << "frame " << k;
+    EXPECT_DOUBLE_EQ(ra.cues.competitorMargin, rb.cues.competitorMargin) << "frame " << k;
+    EXPECT_DOUBLE_EQ(ra.confidence, rb.confidence) << "frame " << k;
+    if (ra.steady)
+      for (int cam = 0; cam < 2; ++cam) {
+        const pm::PixelRect w = a.fitness().huePlane(cam).window(), fp = a.fitness().footprint(ra.phi, cam);
+        EXPECT_LT((w.u1 - w.u0) * (w.v1 - w.v0), 640 * 480 / 2) << "frame " << k << " camera " << cam;
+        EXPECT_TRUE(fp.u0 >= w.u0 && fp.v0 >= w.v0 && fp.u1 <= w.u1 && fp.v1 <= w.v1) << "frame " << k;
+      }
+  }
+  EXPECT_GE(steady, 4);
+  p.steadyHueMarginPx = -1;
+  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::Error);
+}
+
 TEST(Tracker, SameSeedSameEstimates)
 {
   const C12Scene &S = c12();
@@ -279,6 +314,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.ga.predictMotion = true;
   p.fitness.inTolDeg = 25;
   p.steadyBudgetFraction = 0.4;
+  p.steadyHueMarginPx = 17;
   p.smoothRefineEvaluations = 77;
   p.verifyEvaluations = 4321;
   p.verifySameObjectMm = 45;
@@ -291,6 +327,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_TRUE(q.ga.predictMotion);
   EXPECT_DOUBLE_EQ(q.fitness.inTolDeg, 25);
   EXPECT_DOUBLE_EQ(q.steadyBudgetFraction, 0.4);
+  EXPECT_EQ(q.steadyHueMarginPx, 17);
   EXPECT_EQ(q.smoothRefineEvaluations, 77);
   EXPECT_EQ(q.verifyEvaluations, 4321);
   EXPECT_DOUBLE_EQ(q.verifySameObjectMm, 45);

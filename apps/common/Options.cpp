@@ -115,6 +115,10 @@ TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m
                                                                 "for a while, q near its recent best; 1: all frames alike)")
           ->check(CLI::Range(0.01, 1.0)),
       [](TrackerParams &t, const TrackerParams &c) { t.steadyBudgetFraction = c.steadyBudgetFraction; });
+  add(app.add_option("--steady-hue-margin", p.steadyHueMarginPx, "steady frames: hue only within this many pixels of "
+                                                                 "where the model can land (0: the whole images)")
+          ->check(CLI::Range(0, 10000)),
+      [](TrackerParams &t, const TrackerParams &c) { t.steadyHueMarginPx = c.steadyHueMarginPx; });
   add(app.add_option("--population", p.ga.population, "RM-GA individuals")->check(CLI::Range(2, 100000)),
       [](TrackerParams &t, const TrackerParams &c) { t.ga.population = c.ga.population; });
   add(app.add_option("--elite", p.ga.elite, "RM-GA individuals always kept"),

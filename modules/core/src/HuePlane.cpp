@@ -72,9 +72,40 @@ __attribute__((target("avx2"))) void hueAvx2(const vpRGBa *src, std::uint16_t *d
 bool cpuHasAvx2() { return __builtin_cpu_supports("avx2"); }
 #endif
 
+//! The hue of \e n consecutive pixels.
+void hueRun(const vpRGBa *src, std::uint16_t *dst, std::size_t n, float minSat)
+{
+#ifdef PM_HAVE_X86
+  static const bool avx2 = cpuHasAvx2();
+  if (avx2) {
+    hueAvx2(src, dst, n, minSat);
+    return;
+  }
+#endif
+#pragma omp simd
+  for (std::size_t i = 0; i < n; ++i)
+    dst[i] = hueOf(src[i].R, src[i].G, src[i].B, minSat);
+}
+
 } // namespace
 
 std::uint16_t hueDeci(const vpRGBa &c, float minSaturation) { return hueOf(c.R, c.G, c.B, minSaturation); }
+
+PixelRect PixelRect::united(const PixelRect &o) const
+{
+  if (o.empty())
+    return *this;
+  if (empty())
+    return o;
+  return {std::min(u0, o.u0), std::min(v0, o.v0), std::max(u1, o.u1), std::max(v1, o.v1)};
+}
+
+PixelRect PixelRect::grown(int m, int w, int h) const
+{
+  if (empty())
+    return {};
+  return {std::max(0, u0 - m), std::max(0, v0 - m), std::min(w, u1 + m), std::min(h, v1 + m)};
+}
 
 void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation)
 {
@@ -83,18 +114,57 @@ void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation)
   const std::size_t n = static_cast<std::size_t>(m_w) * m_h;
   if (m_hue.size() != n + 2)
     m_hue.assign(n + 2, kNoHue); // +2: padding for 32-bit gathers at the last pixel
-  const vpRGBa *src = I.bitmap;
-  std::uint16_t *dst = m_hue.data();
-#ifdef PM_HAVE_X86
-  static const bool avx2 = cpuHasAvx2();
-  if (avx2) {
-    hueAvx2(src, dst, n, minSaturation);
-    return;
+  hueRun(I.bitmap, m_hue.data(), n, minSaturation);
+  m_valid = {0, 0, static_cast<int>(m_w), static_cast<int>(m_h)};
+  m_extra.clear();
+}
+
+void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation, const PixelRect &roi)
+{
+  const int w = static_cast<int>(I.getWidth()), h = static_cast<int>(I.getHeight());
+  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  if (m_hue.size() != n + 2 || m_w != I.getWidth()) {
+    m_hue.assign(n + 2, kNoHue);
+    m_valid = {};
   }
-#endif
-#pragma omp simd
-  for (std::size_t i = 0; i < n; ++i)
-    dst[i] = hueOf(src[i].R, src[i].G, src[i].B, minSaturation);
+  m_w = I.getWidth();
+  m_h = I.getHeight();
+  for (std::int64_t k : m_extra)
+    m_hue[static_cast<std::size_t>(k)] = kNoHue;
+  m_extra.clear();
+  const PixelRect r = roi.grown(0, w, h);
+  // Reset what held a hue and falls outside the new window, row by row.
+  for (int v = m_valid.v0; v < m_valid.v1; ++v) {
+    std::uint16_t *row = m_hue.data() + static_cast<std::size_t>(v) * m_w;
+    if (r.empty() || v < r.v0 || v >= r.v1) {
+      std::fill(row + m_valid.u0, row + m_valid.u1, kNoHue);
+      continue;
+    }
+    if (m_valid.u0 < r.u0)
+      std::fill(row + m_valid.u0, row + std::min(r.u0, m_valid.u1), kNoHue);
+    if (m_valid.u1 > r.u1)
+      std::fill(row + std::max(r.u1, m_valid.u0), row + m_valid.u1, kNoHue);
+  }
+  for (int v = r.v0; v < r.v1; ++v) {
+    const std::size_t at = static_cast<std::size_t>(v) * m_w + static_cast<std::size_t>(r.u0);
+    hueRun(I.bitmap + at, m_hue.data() + at, static_cast<std::size_t>(r.u1 - r.u0), minSaturation);
+  }
+  m_valid = r;
+}
+
+void HuePlane::addPixels(const vpImage<vpRGBa> &I, float minSaturation, const std::int64_t *pixels, std::size_t n)
+{
+  if (I.getWidth() != m_w || I.getHeight() != m_h)
+    throw Error("hue plane: pixels added from an image of another size than the plane's");
+  const std::int64_t size = static_cast<std::int64_t>(m_w) * m_h;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int64_t k = pixels[i];
+    if (k < 0 || k >= size)
+      throw Error("hue plane: pixel index " + std::to_string(k) + " outside the image");
+    const vpRGBa &c = I.bitmap[k];
+    m_hue[static_cast<std::size_t>(k)] = hueOf(c.R, c.G, c.B, minSaturation);
+    m_extra.push_back(k);
+  }
 }
 
 void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation, const UndistortMap &map)

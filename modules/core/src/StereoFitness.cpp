@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <exception>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -73,7 +74,7 @@ inline std::int32_t wrapDist(std::int32_t a, std::int32_t b)
   multiply-adds, one division, round to nearest), so both give the same pixel.
 */
 template <bool kDepth>
-inline std::int32_t sampleScalar(const Projection &p, float X, float Y, float Z)
+inline bool pixelOf(const Projection &p, float X, float Y, float Z, long &ui, long &vi)
 {
   const float t0 = kDepth ? std::fmaf(p.r[2], Z, p.t[0]) : p.t[0];
   const float t1 = kDepth ? std::fmaf(p.r[5], Z, p.t[1]) : p.t[1];
@@ -82,16 +83,52 @@ inline std::int32_t sampleScalar(const Projection &p, float X, float Y, float Z)
   const float yc = std::fmaf(p.r[3], X, std::fmaf(p.r[4], Y, t1));
   const float zc = std::fmaf(p.r[6], X, std::fmaf(p.r[7], Y, t2));
   if (!(zc > 1e-3f))
-    return -1;
+    return false;
   const float iz = 1.f / zc;
   const float u = std::fmaf(p.px, xc * iz, p.u0), v = std::fmaf(p.py, yc * iz, p.v0);
   if (!(std::fabs(u) < 1e9f && std::fabs(v) < 1e9f))
-    return -1;
-  const long ui = std::lrintf(u), vi = std::lrintf(v);
-  if (ui < 0 || vi < 0 || ui >= p.w || vi >= p.h)
-    return -1;
-  return p.hue[static_cast<std::size_t>(vi) * static_cast<std::size_t>(p.w) + static_cast<std::size_t>(ui)];
+    return false;
+  ui = std::lrintf(u);
+  vi = std::lrintf(v);
+  return ui >= 0 && vi >= 0 && ui < p.w && vi < p.h;
 }
+
+template <bool kDepth>
+inline std::int64_t pixelIndex(const Projection &p, float X, float Y, float Z)
+{
+  long ui = 0, vi = 0;
+  return pixelOf<kDepth>(p, X, Y, Z, ui, vi) ? static_cast<std::int64_t>(vi) * p.w + ui : -1;
+}
+
+//! The hue under point (X, Y, Z) (pixelIndex's pixel), or -1 off the image.
+template <bool kDepth>
+inline std::int32_t sampleScalar(const Projection &p, float X, float Y, float Z)
+{
+  const std::int64_t i = pixelIndex<kDepth>(p, X, Y, Z);
+  return i < 0 ? -1 : p.hue[i];
+}
+
+//! The pixels (pixelIndex) of points [b, e) that fall on the image outside \e skip, appended to \e out.
+template <bool kDepth>
+inline void collectPixels(const Projection &p, const float *x, const float *y, const float *z, std::size_t b, std::size_t e,
+                          const PixelRect &skip, std::vector<std::int64_t> &out)
+{
+  for (std::size_t i = b; i < e; ++i) {
+    long u = 0, v = 0;
+    if (pixelOf<kDepth>(p, x[i], y[i], kDepth ? z[i] : 0.f, u, v) && !(u >= skip.u0 && u < skip.u1 && v >= skip.v0 && v < skip.v1))
+      out.push_back(static_cast<std::int64_t>(v) * p.w + u);
+  }
+}
+#ifdef PM_HAVE_X86
+//! collectPixels compiled with FMA (inlined here, std::fmaf becomes one instruction).
+template <bool kDepth>
+__attribute__((target("avx2,fma"))) void collectPixelsFma(const Projection &p, const float *x, const float *y, const float *z,
+                                                         std::size_t b, std::size_t e, const PixelRect &skip,
+                                                         std::vector<std::int64_t> &out)
+{
+  collectPixels<kDepth>(p, x, y, z, b, e, skip, out);
+}
+#endif
 
 inline void classifyIn(std::int32_t h, std::int32_t hm, const Tolerances &t, FitnessCounts &c)
 {
@@ -284,18 +321,88 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
 
 void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
 {
+  const std::array<PixelRect, 2> whole = {PixelRect{0, 0, m_cams[0].width, m_cams[0].height},
+                                          PixelRect{0, 0, m_cams[1].width, m_cams[1].height}};
+  setImages(left, right, whole);
+}
+
+void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::array<PixelRect, 2> &windows)
+{
   const vpImage<vpRGBa> *im[2] = {&left, &right};
   for (int k = 0; k < 2; ++k)
     if (static_cast<int>(im[k]->getWidth()) != m_cams[k].width || static_cast<int>(im[k]->getHeight()) != m_cams[k].height)
       throw Error(std::string(k == 0 ? "left" : "right") + " image is " + std::to_string(im[k]->getWidth()) + "x" +
                   std::to_string(im[k]->getHeight()) + " but the rig's camera is " + std::to_string(m_cams[k].width) +
                   "x" + std::to_string(m_cams[k].height));
-  for (int k = 0; k < 2; ++k)
-    if (const auto &map = m_undistort[static_cast<std::size_t>(k)])
-      m_planes[static_cast<std::size_t>(k)].compute(*im[k], m_params.minSaturation, *map);
-    else
-      m_planes[static_cast<std::size_t>(k)].compute(*im[k], m_params.minSaturation);
+  // The two planes on two cores (BatchPool: on the caller alone when the other core is busy).
+  std::exception_ptr error[2];
+  BatchPool::shared().run(2, [&](std::size_t k) {
+    try {
+      if (const auto &map = m_undistort[k])
+        m_planes[k].compute(*im[k], m_params.minSaturation, *map);
+      else
+        m_planes[k].compute(*im[k], m_params.minSaturation, windows[k]);
+    } catch (...) {
+      error[k] = std::current_exception();
+    }
+  });
+  for (const auto &e : error)
+    if (e)
+      std::rethrow_exception(e);
   m_hasImages = true;
+}
+
+void StereoFitness::addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi &phi)
+{
+  check(phi);
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  for (int cam = 0; cam < 2; ++cam)
+    if (im[cam]->getWidth() != m_planes[static_cast<std::size_t>(cam)].width() ||
+        im[cam]->getHeight() != m_planes[static_cast<std::size_t>(cam)].height())
+      throw Error("fitness: the hue is added from images of another size than the last pair's");
+  // The two cameras on two cores; addPixels cannot throw here (the sizes match, the pixels are in the image).
+  BatchPool::shared().run(2, [&](std::size_t cam) {
+    if (m_undistort[cam]) // its plane is the whole ideal image
+      return;
+    const Projection p = projectionOf(static_cast<int>(cam), phi);
+    const View &view = viewFor(p);
+    std::vector<std::int64_t> &pixels = m_pixelScratch[cam];
+    pixels.clear();
+#ifdef PM_HAVE_X86
+    static const bool fma = cpuHasAvx2();
+    if (fma) // the fused multiply-adds in hardware (the same values as std::fmaf's, much faster)
+      (m_hasDepth ? collectPixelsFma<true> : collectPixelsFma<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
+                                                                     view.outEnd, m_planes[cam].window(), pixels);
+    else
+#endif
+      (m_hasDepth ? collectPixels<true> : collectPixels<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
+                                                               view.outEnd, m_planes[cam].window(), pixels);
+    m_planes[cam].addPixels(*im[cam], m_params.minSaturation, pixels.data(), pixels.size());
+  });
+}
+
+PixelRect StereoFitness::footprint(const Phi &phi, int camera) const
+{
+  if (!phi.isValid())
+    throw Error("footprint of an invalid pose " + phi.toString());
+  const Projection p = projectionOf(camera, phi);
+  const View &view = viewFor(p);
+  double umin = 1e9, vmin = 1e9, umax = -1e9, vmax = -1e9;
+  for (std::size_t i = view.inBegin; i < view.outEnd; ++i) {
+    const double X = m_x[i], Y = m_y[i], Z = m_z[i];
+    const double zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
+    if (zc <= 1e-3)
+      continue;
+    const double u = p.px * (p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0]) / zc + p.u0;
+    const double v = p.py * (p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1]) / zc + p.v0;
+    umin = std::min(umin, u), umax = std::max(umax, u), vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+  }
+  if (umax < umin)
+    return {};
+  // A point at u lands on pixel round(u): the box of the pixels they land on, clipped.
+  const PixelRect box{static_cast<int>(std::max(-1.0, std::floor(umin))), static_cast<int>(std::max(-1.0, std::floor(vmin))),
+                      static_cast<int>(std::min(1e6, std::ceil(umax) + 1)), static_cast<int>(std::min(1e6, std::ceil(vmax) + 1))};
+  return box.grown(0, p.w, p.h);
 }
 
 void StereoFitness::check(const Phi &phi) const

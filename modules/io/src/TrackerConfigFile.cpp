@@ -39,7 +39,7 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat);
     checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
-                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "smooth_refine_evaluations", "smooth_refine_max_drop", "verify_evaluations",
+                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "steady_hue_margin_px", "smooth_refine_evaluations", "smooth_refine_max_drop", "verify_evaluations",
                   "verify_budget_fraction", "verify_margin", "verify_switch_margin", "verify_far_mm", "verify_far_deg",
                   "verify_same_object_mm", "reverify_after_frames", "reverify_below_confidence", "confidence", "search_space", "rmga",
                   "fitness"}, "");
@@ -52,6 +52,7 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     get(j, "steady_budget_fraction", p.steadyBudgetFraction);
     get(j, "steady_after_frames", p.steadyAfterFrames);
     get(j, "steady_quality_drop", p.steadyQualityDrop);
+    get(j, "steady_hue_margin_px", p.steadyHueMarginPx);
     get(j, "smooth_refine_evaluations", p.smoothRefineEvaluations);
     get(j, "smooth_refine_max_drop", p.smoothRefineMaxDrop);
     get(j, "verify_evaluations", p.verifyEvaluations);
@@ -127,6 +128,7 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"steady_budget_fraction", p.steadyBudgetFraction},
                {"steady_after_frames", p.steadyAfterFrames},
                {"steady_quality_drop", p.steadyQualityDrop},
+               {"steady_hue_margin_px", p.steadyHueMarginPx},
                {"smooth_refine_evaluations", p.smoothRefineEvaluations},
                {"smooth_refine_max_drop", p.smoothRefineMaxDrop},
                {"verify_evaluations", p.verifyEvaluations},

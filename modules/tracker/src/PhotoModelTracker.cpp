@@ -48,9 +48,10 @@ void TrackerParams::validate() const
     throw Error("tracker: the re-verification frames must be non-negative and its confidence lie in [0, 1], the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
                 "same-object distance be non-negative and its far distances positive");
   confidence.validate();
-  if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1))
-    throw Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1 and the steady "
-                "quality drop lie in [0, 1)");
+  if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1) ||
+      steadyHueMarginPx < 0 || steadyHueMarginPx > 10000)
+    throw Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1, the steady "
+                "quality drop lie in [0, 1) and the steady hue margin in [0, 10000] px");
 }
 
 namespace {
@@ -104,6 +105,39 @@ PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &mod
   initialize();
 }
 
+std::array<Phi, 8> PhotoModelTracker::competitors(const Phi &b)
+{
+  const vpHomogeneousMatrix hMb = toHomogeneousMatrix(b);
+  std::array<Phi, 8> alt;
+  for (std::size_t k = 0; k < 7; ++k) {
+    const double a = (static_cast<double>(k) - 3.0) * M_PI / 4.0 + (k >= 3 ? M_PI / 4.0 : 0.0); // -135..-45, 45..180 deg
+    alt[k] = fromHomogeneousMatrix(hMb * vpHomogeneousMatrix(0, 0, 0, 0, 0, a));
+  }
+  alt[7] = Phi{b.x, b.y, b.z, -b.e1, -b.e2, b.e3};
+  return alt;
+}
+
+std::array<PixelRect, 2> PhotoModelTracker::steadyWindows() const
+{
+  std::array<PixelRect, 2> w;
+  const Phi &last = m_last.phi;
+  std::vector<Phi> poses{last};
+  if (m_haveBeforeLast) { // constant velocity from the two last frames
+    Phi next;
+    for (std::size_t i = 0; i < 6; ++i)
+      next[i] = 2 * last[i] - m_beforeLast[i];
+    if (next.isValid())
+      poses.push_back(next);
+  }
+  for (int cam = 0; cam < 2; ++cam) {
+    for (const Phi &p : poses)
+      w[static_cast<std::size_t>(cam)] = w[static_cast<std::size_t>(cam)].united(m_fitness.footprint(p, cam));
+    const StereoFitness::Camera &c = m_fitness.camera(cam);
+    w[static_cast<std::size_t>(cam)] = w[static_cast<std::size_t>(cam)].grown(m_params.steadyHueMarginPx, c.width, c.height);
+  }
+  return w;
+}
+
 void PhotoModelTracker::resetCounters()
 {
   m_lowFrames = 0;
@@ -113,6 +147,7 @@ void PhotoModelTracker::resetCounters()
   m_verified = false;
   m_framesTracked = 0;
   m_untrustedFrames = 0;
+  m_haveBeforeLast = false;
 }
 
 void PhotoModelTracker::startVerification(const Phi &lock)
@@ -190,14 +225,20 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
     m_challenger.transform(moved);
   m_last.hMo = hNowMhPrev * m_last.hMo;
   m_last.phi = fromHomogeneousMatrix(m_last.hMo);
+  if (m_haveBeforeLast)
+    m_beforeLast = moved(m_beforeLast);
 }
 
 TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  m_fitness.setImages(left, right);
-  StereoObjective objective(m_fitness);
   const bool steady = m_steadyFrames >= m_params.steadyAfterFrames && m_verifyLeft == 0; // a verifying frame gets the whole budget, split
+  const bool windowed = steady && m_params.steadyHueMarginPx > 0;
+  if (windowed)
+    m_fitness.setImages(left, right, steadyWindows());
+  else
+    m_fitness.setImages(left, right);
+  StereoObjective objective(m_fitness);
   FrameBudget budget = steady ? m_params.steadyBudget() : m_params.budget();
   if (budget.milliseconds > 0) // the hue planes are part of the frame's time
     budget.milliseconds = std::max(0.05, budget.milliseconds - std::chrono::duration<double, std::milli>(
@@ -251,7 +292,15 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   // not taken for steady and keeps the whole budget to find the true one.
   m_recentBestQ = std::max(r.state == TrackState::Tracking ? r.quality : 0.0, m_recentBestQ - 0.001);
   m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
-  // The confidence, from the frame's cues.
+  // The confidence, from the frame's cues (scored on the whole images: the hue under the poses
+  // they look at is added where a steady frame's windows left it out).
+  const std::array<Phi, 8> alt = competitors(r.phi);
+  if (windowed) {
+    m_fitness.addHueUnder(left, right, r.phi);
+    for (const Phi &p : alt)
+      if (p.isValid())
+        m_fitness.addHueUnder(left, right, p);
+  }
   const FitnessDetail d = m_fitness.evaluateDetail(r.phi);
   ConfidenceCues &c = r.cues;
   c.quality = r.quality;
@@ -270,13 +319,6 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;
   // Competing poses of the same object: turned about the model's z axis, or the tilt mirrored.
   const Phi b = r.phi;
-  const vpHomogeneousMatrix hMb = toHomogeneousMatrix(b);
-  std::array<Phi, 8> alt;
-  for (std::size_t k = 0; k < 7; ++k) {
-    const double a = (static_cast<double>(k) - 3.0) * M_PI / 4.0 + (k >= 3 ? M_PI / 4.0 : 0.0); // -135..-45, 45..180 deg
-    alt[k] = fromHomogeneousMatrix(hMb * vpHomogeneousMatrix(0, 0, 0, 0, 0, a));
-  }
-  alt[7] = Phi{b.x, b.y, b.z, -b.e1, -b.e2, b.e3};
   double qAlt = -1e9;
   for (const Phi &p : alt)
     if (p.isValid() && rotationDistanceDeg(p, b) > m_params.verifyFarDeg) // a mirrored small tilt is the same pose
@@ -300,6 +342,8 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     startVerification(r.phi);
   }
   r.computeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  m_beforeLast = m_last.phi;
+  m_haveBeforeLast = prev == TrackState::Tracking && r.state == TrackState::Tracking;
   m_last = r;
   return r;
 }

@@ -22,6 +22,17 @@ namespace pm {
 
 class UndistortMap;
 
+//! A rectangle of pixels: columns [u0, u1), rows [v0, v1).
+struct PixelRect
+{
+  int u0 = 0, v0 = 0, u1 = 0, v1 = 0;
+  bool empty() const { return u1 <= u0 || v1 <= v0; }
+  //! The smallest rectangle holding both (an empty one adds nothing).
+  PixelRect united(const PixelRect &o) const;
+  //! Grown by \e m pixels on every side, then clipped to a w x h image.
+  PixelRect grown(int m, int w, int h) const;
+};
+
 class HuePlane
 {
 public:
@@ -31,16 +42,33 @@ public:
   void compute(const vpImage<vpRGBa> &I, float minSaturation = 0.f);
   //! The same in the ideal image of \e map's camera (\e I is the raw image, of the map's size).
   void compute(const vpImage<vpRGBa> &I, float minSaturation, const UndistortMap &map);
+  /*!
+    The hue inside \e roi only (clipped to the image), kNoHue everywhere else: a point outside
+    matches nothing. For a tracker that knows where the model can land this frame (about 1/3 of the
+    cost for a third of the image). Only the pixels that held a hue before and now fall outside are
+    reset, so a small window costs little whatever came before.
+  */
+  void compute(const vpImage<vpRGBa> &I, float minSaturation, const PixelRect &roi);
+  /*!
+    After a compute with a window: the hue of these pixels too (indices v * width + u of \e I, which
+    must be the image of that compute), where the window left them out (see window()); the next
+    compute resets them. Throws pm::Error for a pixel off the image or an image of another size.
+  */
+  void addPixels(const vpImage<vpRGBa> &I, float minSaturation, const std::int64_t *pixels, std::size_t n);
 
   unsigned width() const { return m_w; }
   unsigned height() const { return m_h; }
   //! Hue of pixel (u, v) in tenths of a degree, or kNoHue.
   std::uint16_t at(unsigned u, unsigned v) const { return m_hue[static_cast<std::size_t>(v) * m_w + u]; }
   const std::uint16_t *data() const { return m_hue.data(); }
+  //! Where the last compute gave every pixel its hue (the whole image, or its window).
+  const PixelRect &window() const { return m_valid; }
 
 private:
   unsigned m_w = 0, m_h = 0;
   std::vector<std::uint16_t> m_hue;
+  PixelRect m_valid; //!< where the plane may hold a hue (outside: kNoHue, but for m_extra)
+  std::vector<std::int64_t> m_extra; //!< pixels outside m_valid given a hue by addPixels
   std::vector<std::uint16_t> m_raw; //!< the raw image's hue when undistorting
 };
 

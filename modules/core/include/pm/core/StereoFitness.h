@@ -93,6 +93,23 @@ public:
     Throws pm::Error if an image's size differs from its rig camera's.
   */
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  /*!
+    The same with the hue computed only inside \e windows (left, right; see footprint()): a point
+    outside its window matches nothing. A camera with lens distortion gets its whole image (its
+    window is in the ideal image, which the raw one maps into pixel by pixel).
+  */
+  void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::array<PixelRect, 2> &windows);
+  /*!
+    Where the model lands in camera \e camera at \e phi: the bounding box of its points in front of
+    the camera (of the view scored there), clipped to the image; empty if none falls in it.
+  */
+  PixelRect footprint(const Phi &phi, int camera) const;
+  /*!
+    After setImages with windows: the hue under every model point at \e phi too (the pixels a pose
+    outside the windows reads), so that F there is what the whole images give. \e left and \e right
+    must be the images of the last setImages. Throws pm::Error for an invalid pose or no images.
+  */
+  void addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi &phi);
 
   //! F(phi). Throws pm::Error if phi is invalid or no images were set.
   double evaluate(const Phi &phi) const;
@@ -137,6 +154,8 @@ public:
     float px, py, u0, v0;
     int width, height;
   };
+  //! Camera \e camera (0 left, 1 right) as the kernels see it: cMh, intrinsics, image size.
+  const Camera &camera(int camera) const { return m_cams[camera]; }
 
 private:
   void check(const Phi &phi) const;
@@ -168,6 +187,7 @@ private:
   std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort; //!< null for a camera without distortion
   std::array<LensDistortion, 2> m_distortion;
   std::array<vpCameraParameters, 2> m_intrinsics;
+  std::array<std::vector<std::int64_t>, 2> m_pixelScratch; //!< addHueUnder's pixels per camera (kept: no allocation once grown)
   bool m_hasImages = false;
   bool m_hasDepth = false; //!< some point has z != 0 (the 3-D model); else the flat model's exact kernel
 };

@@ -75,6 +75,15 @@ struct TrackerParams
   double steadyBudgetFraction = 1.0;
   int steadyAfterFrames = 15;
   double steadyQualityDrop = 0.03;
+  /*!
+    On a steady frame the hue planes are computed only where the model can land: around its
+    footprint at the last pose and at the pose its last two frames predict (StereoFitness::
+    footprint), grown by this many pixels; elsewhere a point matches nothing. The confidence's
+    cues are scored on the whole images all the same (the hue under the poses they look at is
+    added, StereoFitness::addHueUnder). 0: always the whole images. A target that moves out of the
+    window scores lower, which ends the steadiness: the next frame has the whole images again.
+  */
+  int steadyHueMarginPx = 48;
 
   /*!
     Option: after RM-GA, a local continuous search (refineLocalSimplex) of this many evaluations
@@ -188,6 +197,10 @@ public:
 
 private:
   void resetCounters(); //!< the state machine's and the steadiness's, for a new start
+  //! Other poses of the same object the confidence compares \e b with (turned about its z axis, its tilt mirrored).
+  static std::array<Phi, 8> competitors(const Phi &b);
+  //! A steady frame's hue windows (see TrackerParams::steadyHueMarginPx).
+  std::array<PixelRect, 2> steadyWindows() const;
   void startVerification(const Phi &lock);
   //! Runs the challenger on this frame (objective set on its images); may move \e r to a better pose.
   void verify(StereoObjective &objective, const FrameBudget &budget, TrackResult &r);
@@ -196,6 +209,8 @@ private:
   StereoFitness m_fitness;
   RmGa m_ga;
   TrackResult m_last;
+  Phi m_beforeLast;        //!< the pose of the frame before the last (for the steady windows' prediction)
+  bool m_haveBeforeLast = false;
   double m_fBackground = 0, m_fMax = 1;
   int m_lowFrames = 0;
   int m_steadyFrames = 0;  //!< frames tracked in a row near the recent best q
