@@ -242,11 +242,19 @@ TEST(PmCompare, OursRecoversFromTheForcedLossViSPsDoNot)
   for (const auto &t : s.at("trackers"))
     for (const char *key : {"name", "mean_frame_ms", "p99_frame_ms", "time_ratio_to_ours", "mean_translation_error_mm",
                             "max_translation_error_mm", "mean_rotation_error_deg", "success_5cm5deg", "success_1cm2deg",
-                            "recovery_frames", "needs_initial_pose"})
+                            "recovery_frames", "needs_initial_pose", "time_ratio_to_fastest_visp"})
       EXPECT_TRUE(t.contains(key)) << t.at("name") << " " << key;
   const auto &ours = s.at("trackers")[0];
   EXPECT_FALSE(ours.at("needs_initial_pose").get<bool>());
   EXPECT_DOUBLE_EQ(ours.at("time_ratio_to_ours").get<double>(), 1.0);
+  // Held against ViSP's fastest of the run: its ratio is 1, the other's at least 1, ours' the ratio of the means.
+  const auto &klt = s.at("trackers")[1], &ssd = s.at("trackers")[2];
+  const bool kltFastest = klt.at("mean_frame_ms").get<double>() <= ssd.at("mean_frame_ms").get<double>();
+  EXPECT_EQ(s.at("fastest_visp_tracker"), (kltFastest ? klt : ssd).at("name"));
+  EXPECT_DOUBLE_EQ((kltFastest ? klt : ssd).at("time_ratio_to_fastest_visp").get<double>(), 1.0);
+  EXPECT_GE((kltFastest ? ssd : klt).at("time_ratio_to_fastest_visp").get<double>(), 1.0);
+  EXPECT_NEAR(ours.at("time_ratio_to_fastest_visp").get<double>(),
+              ours.at("mean_frame_ms").get<double>() / (kltFastest ? klt : ssd).at("mean_frame_ms").get<double>(), 1e-9);
   // Back within 5 cm and 5 deg within 10 frames, after the blank frames and after the jump.
   const auto &perLoss = ours.at("scenarios").at("loss").at("recovery_frames_per_loss");
   ASSERT_EQ(perLoss.size(), 2u);
