@@ -388,8 +388,9 @@ int main(int argc, char **argv)
                    "Prints JSON (Google Benchmark's format) on stdout: stereo fitness evaluations per second on one core "
                    "for the default C12 model and a 1,000-point model (AVX2 and scalar kernels, and the same fitness "
                    "written with ViSP's types as the peer), hue planes against vpImageConvert::RGBaToHSV, the four "
-                   "fitness maps on all cores, the stages of a tracked frame (whole, steady, verifying a lock; 1,900 "
-                   "evaluations) and the lab's renderer (a stereo pair).\n";
+                   "fitness maps on all cores, the stages of a tracked frame (whole, steady, steady on the whole images as "
+                   "the peer of the steady frame's hue windows, verifying a lock; 1,900 evaluations) and the lab's "
+                   "renderer (a stereo pair).\n";
       return 0;
     }
   args.push_back(filter.data());
