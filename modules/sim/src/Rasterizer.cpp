@@ -470,6 +470,25 @@ void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigm
     for (unsigned u = 0; u < m_w; ++u) {
       // The box filter of the pixel's samples (the clear colour where nothing was drawn), the
       // exposure, the noise, clamped and rounded half up, in single precision.
+      float g[3] = {0, 0, 0};
+      if (noiseSigma > 0)
+        fastGaussian3(noiseSeed, static_cast<std::uint64_t>(v) * m_w + u, g);
+      unsigned char c[3];
+#if defined(__SSE2__)
+      // The same float operations as the scalar lines below, four channels at once.
+      __m128 acc = _mm_setzero_ps();
+      for (unsigned j = 0; j < m_ss; ++j) {
+        const std::size_t first = row0 + j * m_W + static_cast<std::size_t>(u) * m_ss;
+        for (unsigned i = 0; i < m_ss; ++i)
+          acc = _mm_add_ps(acc, _mm_loadu_ps(m_id[first + i] ? &m_color[kStride * (first + i)] : m_clearColor));
+      }
+      __m128 x = _mm_add_ps(_mm_mul_ps(acc, _mm_set1_ps(norm)), _mm_mul_ps(_mm_set1_ps(sigma), _mm_setr_ps(g[0], g[1], g[2], 0.f)));
+      x = _mm_add_ps(_mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), _mm_set1_ps(255.f)), _mm_set1_ps(0.5f));
+      alignas(16) std::int32_t q[4];
+      _mm_store_si128(reinterpret_cast<__m128i *>(q), _mm_cvttps_epi32(x));
+      for (int k = 0; k < 3; ++k)
+        c[k] = static_cast<unsigned char>(q[k]);
+#else
       float acc[4] = {0, 0, 0, 0};
       for (unsigned j = 0; j < m_ss; ++j) {
         const std::size_t first = row0 + j * m_W + static_cast<std::size_t>(u) * m_ss;
@@ -479,12 +498,9 @@ void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigm
             acc[c] += q[c];
         }
       }
-      float g[3] = {0, 0, 0};
-      if (noiseSigma > 0)
-        fastGaussian3(noiseSeed, static_cast<std::uint64_t>(v) * m_w + u, g);
-      unsigned char c[3];
       for (int k = 0; k < 3; ++k)
         c[k] = static_cast<unsigned char>(std::min(255.f, std::max(0.f, acc[k] * norm + sigma * g[k])) + 0.5f);
+#endif
       dst[u] = vpRGBa(c[0], c[1], c[2], 255);
     }
   }
