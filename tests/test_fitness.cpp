@@ -340,7 +340,7 @@ TEST_F(FitnessOnC12, HueWindowsAroundAPoseGiveItsFitnessAndAddHueUnderGivesAnyOt
   // Far from it, the window's outside matches nothing: F differs, until its hue is added.
   const pm::Phi far{truth.x + 120, truth.y + 60, truth.z, truth.e1, truth.e2, truth.e3};
   EXPECT_NE(windowed.evaluate(far), whole.evaluate(far));
-  windowed.addHueUnder(ims->left, ims->right, far);
+  windowed.addHueUnder(ims->left, ims->right, &far, 1);
   EXPECT_DOUBLE_EQ(windowed.evaluate(far), whole.evaluate(far));
   EXPECT_DOUBLE_EQ(windowed.evaluate(truth), whole.evaluate(truth));
   // A footprint holds every point that falls on the image.
@@ -354,7 +354,7 @@ TEST_F(FitnessOnC12, HueWindowsAroundAPoseGiveItsFitnessAndAddHueUnderGivesAnyOt
         EXPECT_LT(std::lround(s.v), fp.v1);
       }
   }
-  EXPECT_THROW(windowed.addHueUnder(vpImage<vpRGBa>(4, 4), vpImage<vpRGBa>(4, 4), truth), pm::Error);
+  EXPECT_THROW(windowed.addHueUnder(vpImage<vpRGBa>(4, 4), vpImage<vpRGBa>(4, 4), &truth, 1), pm::Error);
 }
 
 TEST_F(FitnessOnC12, ThreadSafeAndBatchEqualsSingle)

@@ -352,9 +352,10 @@ void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa>
   m_hasImages = true;
 }
 
-void StereoFitness::addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi &phi)
+void StereoFitness::addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses, std::size_t n)
 {
-  check(phi);
+  for (std::size_t k = 0; k < n; ++k)
+    check(poses[k]);
   const vpImage<vpRGBa> *im[2] = {&left, &right};
   for (int cam = 0; cam < 2; ++cam)
     if (im[cam]->getWidth() != m_planes[static_cast<std::size_t>(cam)].width() ||
@@ -364,19 +365,21 @@ void StereoFitness::addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGB
   BatchPool::shared().run(2, [&](std::size_t cam) {
     if (m_undistort[cam]) // its plane is the whole ideal image
       return;
-    const Projection p = projectionOf(static_cast<int>(cam), phi);
-    const View &view = viewFor(p);
     std::vector<std::int64_t> &pixels = m_pixelScratch[cam];
     pixels.clear();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Projection p = projectionOf(static_cast<int>(cam), poses[k]);
+      const View &view = viewFor(p);
 #ifdef PM_HAVE_X86
-    static const bool fma = cpuHasAvx2();
-    if (fma) // the fused multiply-adds in hardware (the same values as std::fmaf's, much faster)
-      (m_hasDepth ? collectPixelsFma<true> : collectPixelsFma<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
-                                                                     view.outEnd, m_planes[cam].window(), pixels);
-    else
+      static const bool fma = cpuHasAvx2();
+      if (fma) // the fused multiply-adds in hardware (the same values as std::fmaf's, much faster)
+        (m_hasDepth ? collectPixelsFma<true> : collectPixelsFma<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
+                                                                       view.outEnd, m_planes[cam].window(), pixels);
+      else
 #endif
-      (m_hasDepth ? collectPixels<true> : collectPixels<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
-                                                               view.outEnd, m_planes[cam].window(), pixels);
+        (m_hasDepth ? collectPixels<true> : collectPixels<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
+                                                                 view.outEnd, m_planes[cam].window(), pixels);
+    }
     m_planes[cam].addPixels(*im[cam], m_params.minSaturation, pixels.data(), pixels.size());
   });
 }

@@ -121,17 +121,14 @@ std::array<PixelRect, 2> PhotoModelTracker::steadyWindows() const
 {
   std::array<PixelRect, 2> w;
   const Phi &last = m_last.phi;
-  std::vector<Phi> poses{last};
-  if (m_haveBeforeLast) { // constant velocity from the two last frames
-    Phi next;
+  Phi next = last; // constant velocity from the two last frames (else the last pose again)
+  if (m_haveBeforeLast)
     for (std::size_t i = 0; i < 6; ++i)
       next[i] = 2 * last[i] - m_beforeLast[i];
-    if (next.isValid())
-      poses.push_back(next);
-  }
+  if (!next.isValid())
+    next = last;
   for (int cam = 0; cam < 2; ++cam) {
-    for (const Phi &p : poses)
-      w[static_cast<std::size_t>(cam)] = w[static_cast<std::size_t>(cam)].united(m_fitness.footprint(p, cam));
+    w[static_cast<std::size_t>(cam)] = m_fitness.footprint(last, cam).united(m_fitness.footprint(next, cam));
     const StereoFitness::Camera &c = m_fitness.camera(cam);
     w[static_cast<std::size_t>(cam)] = w[static_cast<std::size_t>(cam)].grown(m_params.steadyHueMarginPx, c.width, c.height);
   }
@@ -296,10 +293,13 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   // they look at is added where a steady frame's windows left it out).
   const std::array<Phi, 8> alt = competitors(r.phi);
   if (windowed) {
-    m_fitness.addHueUnder(left, right, r.phi);
+    std::array<Phi, 9> seen;
+    std::size_t n = 0;
+    seen[n++] = r.phi;
     for (const Phi &p : alt)
       if (p.isValid())
-        m_fitness.addHueUnder(left, right, p);
+        seen[n++] = p;
+    m_fitness.addHueUnder(left, right, seen.data(), n);
   }
   const FitnessDetail d = m_fitness.evaluateDetail(r.phi);
   ConfidenceCues &c = r.cues;

@@ -105,11 +105,12 @@ public:
   */
   PixelRect footprint(const Phi &phi, int camera) const;
   /*!
-    After setImages with windows: the hue under every model point at \e phi too (the pixels a pose
-    outside the windows reads), so that F there is what the whole images give. \e left and \e right
-    must be the images of the last setImages. Throws pm::Error for an invalid pose or no images.
+    After setImages with windows: the hue under every model point at each of the \e n \e poses too
+    (the pixels a pose outside the windows reads), so that F there is what the whole images give.
+    \e left and \e right must be the images of the last setImages. Throws pm::Error for an invalid
+    pose, no images or images of another size.
   */
-  void addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi &phi);
+  void addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses, std::size_t n);
 
   //! F(phi). Throws pm::Error if phi is invalid or no images were set.
   double evaluate(const Phi &phi) const;
