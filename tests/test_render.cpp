@@ -16,6 +16,9 @@
 #include "pm/sim/Scene.h"
 #include "pm/sim/SeaBottom.h"
 #include "pm/sim/TargetCatalog.h"
+#include "pm/sim/TargetShape.h"
+#include "pm/sim/ShadowMap.h"
+#include "pm/sim/Noise.h"
 
 namespace {
 
@@ -149,7 +152,7 @@ TEST(Rasterizer, SharedEdgesLeaveNoCracks)
 namespace {
 
 //! The three scenes of data/render_reference (see its README), noise-free, rendered by \e raster.
-std::vector<std::pair<std::string, pm::sim::StereoImages>> referenceScenes(pm::sim::Rasterizer &raster)
+std::vector<std::pair<std::string, pm::sim::StereoImages>> referenceScenes(pm::sim::Rasterizer &raster, double noiseSigma = 0)
 {
   struct Case
   {
@@ -166,7 +169,7 @@ std::vector<std::pair<std::string, pm::sim::StereoImages>> referenceScenes(pm::s
   std::vector<std::pair<std::string, pm::sim::StereoImages>> out;
   for (const Case &c : cases) {
     pm::sim::SceneParams sp;
-    sp.noiseSigma = 0;
+    sp.noiseSigma = noiseSigma;
     sp.occluder = c.occluder;
     sp.supersampling = c.supersampling;
     pm::sim::Scene scene(pm::sim::makeTarget(c.code), sp);
@@ -215,7 +218,8 @@ TEST(Rasterizer, EightWidePathGivesTheSameImagesAsOneAtATime)
     GTEST_SKIP() << "no AVX2 on this processor";
   pm::sim::Rasterizer wide, narrow;
   narrow.setSimd(false);
-  const auto a = referenceScenes(wide), b = referenceScenes(narrow);
+  // With sensor noise: the filter's 8-wide path adds it too.
+  const auto a = referenceScenes(wide, 2.0), b = referenceScenes(narrow, 2.0);
   for (std::size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(std::memcmp(a[k].second.left.bitmap, b[k].second.left.bitmap, a[k].second.left.getSize() * 4), 0) << a[k].first;
     EXPECT_EQ(std::memcmp(a[k].second.right.bitmap, b[k].second.right.bitmap, a[k].second.right.getSize() * 4), 0) << a[k].first;
@@ -231,6 +235,78 @@ TEST(Rasterizer, EightWidePathGivesTheSameImagesAsOneAtATime)
   narrow.resolve(J, 1.0, 0.0, 0);
   EXPECT_EQ(std::memcmp(I.bitmap, J.bitmap, I.getSize() * 4), 0);
   EXPECT_GT(I[240][300].R, 100);
+}
+
+TEST(Rasterizer, BandedRenderGivesTheSameImageAsDrawThenResolve)
+{
+  // The sea bottom, a relief target lit with cast shadows and gloss, a look-alike without shadows:
+  // render() band by band against clear(), draw() each, resolve() on the whole frame, with noise,
+  // for supersampling 1 to 3 (bands of whole pixel rows) and image heights that are not a multiple
+  // of a band.
+  const pm::sim::TargetShape toyShape = pm::sim::makeTarget("R1");
+  const pm::sim::Mesh toy = pm::sim::buildTargetMesh(toyShape), other = pm::sim::buildTargetMesh(pm::sim::makeTarget("C05"));
+  const pm::sim::SeaBottomParams sea;
+  const pm::sim::Mesh backdrop = pm::sim::makeBackdropMesh(pm::sim::makeSeaBottomTexture(sea), sea, 0.5);
+  const double towardLight[3] = {0.3, -0.4, -0.866};
+  const pm::sim::ShadowMap shadow(toy, towardLight, 0.5e-3);
+  const vpHomogeneousMatrix cMo = pm::toHomogeneousMatrix({15, -10, 480, 0.1, -0.15, 0.05});
+  pm::sim::Lighting lit;
+  for (unsigned i = 0; i < 3; ++i) {
+    lit.dirCamera[i] = 0;
+    for (unsigned k = 0; k < 3; ++k)
+      lit.dirCamera[i] += cMo[i][k] * towardLight[k];
+  }
+  lit.shadow = &shadow;
+  pm::sim::Lighting gloss = lit, plain = lit;
+  gloss.specular = 0.4;
+  gloss.shininess = 30;
+  plain.shadow = nullptr;
+  pm::sim::Rasterizer::DrawCall calls[3];
+  calls[0] = {&backdrop, cMo, lit, 1};
+  calls[1] = {&toy, cMo, gloss, 2};
+  calls[2] = {&other, cMo * pm::toHomogeneousMatrix({-70, 40, -5, 0, 0, 0.7}), plain, 4};
+  const float tank[3] = {0.04f, 0.06f, 0.09f};
+  for (unsigned ss = 1; ss <= 3; ++ss)
+    for (unsigned h : {480u, 173u}) {
+      pm::sim::Rasterizer banded, whole;
+      banded.reset(640, h, ss);
+      whole.reset(640, h, ss);
+      whole.clear(tank[0], tank[1], tank[2]);
+      for (const auto &c : calls)
+        whole.draw(*c.mesh, c.cMo, kCam, c.light, c.id);
+      vpImage<vpRGBa> I, J;
+      whole.resolve(I, 1.3, 2.0, 77);
+      banded.render(tank, calls, 3, kCam, J, 1.3, 2.0, 77);
+      ASSERT_EQ(I.getHeight(), J.getHeight());
+      EXPECT_EQ(std::memcmp(I.bitmap, J.bitmap, I.getSize() * 4), 0) << "supersampling " << ss << ", height " << h;
+      // The id and depth buffers hold the whole frame after render() too.
+      std::size_t toyPixels = 0, same = 0, n = 0;
+      for (unsigned v = 0; v < h; v += 3)
+        for (unsigned u = 0; u < 640; u += 3, ++n) {
+          const double a = whole.depthAt(u, v, 2), b = banded.depthAt(u, v, 2);
+          same += (std::isnan(a) && std::isnan(b)) || a == b;
+          toyPixels += whole.coverage(u, v, 2) == 1.0;
+        }
+      EXPECT_EQ(same, n);
+      EXPECT_GT(toyPixels, 100u); // the toy is in view
+    }
+  // What render() leaves is not a frame for resolve() or for more draws until clear().
+  pm::sim::Rasterizer r;
+  r.reset(64, 48, 2);
+  vpImage<vpRGBa> I;
+  r.render(tank, calls, 1, kCam, I, 1.0, 0.0, 0);
+  EXPECT_THROW(r.resolve(I, 1.0, 0.0, 0), pm::Error);
+  EXPECT_THROW(r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 1), pm::Error);
+  r.clear(0, 0, 0);
+  r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 1);
+  EXPECT_NO_THROW(r.resolve(I, 1.0, 0.0, 0));
+  // A bad call draws nothing: the output image is left as it was.
+  pm::sim::Rasterizer::DrawCall bad[2] = {calls[0], calls[1]};
+  bad[1].id = 0;
+  vpImage<vpRGBa> K(5, 7, vpRGBa(1, 2, 3, 4));
+  EXPECT_THROW(r.render(tank, bad, 2, kCam, K, 1.0, 0.0, 0), pm::Error);
+  EXPECT_EQ(K.getWidth(), 7u);
+  EXPECT_EQ(K[0][0].B, 3);
 }
 
 TEST(Rasterizer, ObjectIdZeroIsRefused)
@@ -281,6 +357,24 @@ TEST(Scene, SameSeedSameImageAndNoiseOfTheRequestedSigma)
   // The noise is Gaussian with the requested sigma (mean |n| = sigma sqrt(2/pi)).
   const pm::sim::StereoImages c = b.renderStereo(rig, hMo, 3);
   EXPECT_NEAR(meanAbsDiff(i1.left, c.left), 4 * std::sqrt(2 / M_PI), 0.15);
+}
+
+TEST(Noise, ARunOfPixelsDrawsWhatEachPixelDraws)
+{
+  // The row-at-a-time draws resolve() uses are fastGaussian3's, pixel for pixel, at any stride.
+  for (std::size_t stride : {3u, 4u}) {
+    std::vector<float> run(stride * 50, -99.f);
+    pm::sim::fastGaussian3Run(0xabcdef, 1234567, 50, run.data(), stride);
+    for (std::size_t k = 0; k < 50; ++k) {
+      float g[3];
+      pm::sim::fastGaussian3(0xabcdef, 1234567 + k, g);
+      for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_EQ(run[stride * k + c], g[c]) << k << " " << c;
+      if (stride == 4) {
+        EXPECT_EQ(run[stride * k + 3], -99.f); // the pad is not written
+      }
+    }
+  }
 }
 
 TEST(Scene, ExposureScalesBrightness)

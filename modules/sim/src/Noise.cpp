@@ -48,11 +48,29 @@ struct GaussianTable
 };
 } // namespace
 
-void fastGaussian3(std::uint64_t seed, std::uint64_t index, float out[3])
+namespace {
+const GaussianTable &gaussianTable()
 {
   static const GaussianTable table;
+  return table;
+}
+} // namespace
+
+void fastGaussian3(std::uint64_t seed, std::uint64_t index, float out[3])
+{
+  const GaussianTable &table = gaussianTable();
   for (std::uint64_t k = 0; k < 3; ++k)
     out[k] = table.v[hash64(seed + (3 * index + k) * 0x9e3779b97f4a7c15ULL) & 0xffff];
+}
+
+void fastGaussian3Run(std::uint64_t seed, std::uint64_t first, std::size_t n, float *out, std::size_t stride)
+{
+  const GaussianTable &table = gaussianTable();
+  // The channels' indices step by one: 3 first + 3 k + c.
+  std::uint64_t x = seed + 3 * first * 0x9e3779b97f4a7c15ULL;
+  for (std::size_t k = 0; k < n; ++k, out += stride)
+    for (std::size_t c = 0; c < 3; ++c, x += 0x9e3779b97f4a7c15ULL)
+      out[c] = table.v[hash64(x) & 0xffff];
 }
 
 } // namespace pm::sim

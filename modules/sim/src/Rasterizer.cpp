@@ -70,13 +70,13 @@ inline void shadeTexel(const Texture &tex, float s, float t, float diff, float s
 /*!
   The span loop of drawTriangles<false> on 8 samples at a time (AVX2): the same operations in the
   same order as the scalar loop (no fused multiply-add), so the same values bit for bit; a chunk
-  whose texels reach the texture's last byte is left to the scalar loop. Returns the number of
-  samples done (a multiple of 8, the rest is the caller's).
+  whose texels reach the texture's last byte is left to the scalar loop. The last chunk of a span
+  runs with the lanes past its end masked off (no read, no write). Returns the number of samples
+  done: all of them, or the multiple of 8 before a chunk left to the scalar loop.
 */
-__attribute__((target("avx2"))) std::size_t shadeSpanAvx2(const float *v0, const float *d, std::size_t idx,
-                                                          std::size_t count, float *invDepth, std::uint8_t *ids,
-                                                          float *color, const Texture &tex, bool useMask,
-                                                          std::uint8_t id)
+__attribute__((target("avx2"))) std::size_t shadeSpanAvx2(const float *v0, const float *d, std::size_t count,
+                                                          float *invDepth, std::uint8_t *ids, float *color,
+                                                          const Texture &tex, bool useMask, std::uint8_t id)
 {
   const __m256 lane = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
   const __m256 maxS = _mm256_set1_ps(static_cast<float>(tex.width - 1)), maxT = _mm256_set1_ps(static_cast<float>(tex.height - 1));
@@ -90,11 +90,20 @@ __attribute__((target("avx2"))) std::size_t shadeSpanAvx2(const float *v0, const
   const __m256 zero = _mm256_setzero_ps(), scale = _mm256_set1_ps(1.f / 255.f);
   const auto *base = reinterpret_cast<const int *>(tex.rgb.data());
   std::size_t done = 0;
-  for (; done + 8 <= count; done += 8) {
+  if (count < 8)
+    return 0; // a short span (a small triangle's): one at a time is faster than a masked chunk
+  const __m256 countF = _mm256_set1_ps(static_cast<float>(count));
+  for (; done < count; done += 8) {
     const __m256 kf = _mm256_add_ps(_mm256_set1_ps(static_cast<float>(done)), lane);
-    const std::size_t at = idx + done;
+    const std::size_t at = done;
     const __m256 w = _mm256_add_ps(_mm256_set1_ps(v0[0]), _mm256_mul_ps(kf, _mm256_set1_ps(d[0])));
-    __m256 pass = _mm256_cmp_ps(w, _mm256_loadu_ps(invDepth + at), _CMP_NLE_UQ);
+    __m256 pass;
+    if (done + 8 <= count) {
+      pass = _mm256_cmp_ps(w, _mm256_loadu_ps(invDepth + at), _CMP_NLE_UQ);
+    } else { // the span's last samples: the lanes past its end neither read nor write
+      const __m256 inSpan = _mm256_cmp_ps(kf, countF, _CMP_LT_OQ);
+      pass = _mm256_and_ps(inSpan, _mm256_cmp_ps(w, _mm256_maskload_ps(invDepth + at, _mm256_castps_si256(inSpan)), _CMP_NLE_UQ));
+    }
     const __m256 iz = _mm256_div_ps(_mm256_set1_ps(1.f), w);
     if (useMask) {
       const __m256 m = _mm256_add_ps(_mm256_set1_ps(v0[3]), _mm256_mul_ps(kf, _mm256_set1_ps(d[3])));
@@ -131,29 +140,85 @@ __attribute__((target("avx2"))) std::size_t shadeSpanAvx2(const float *v0, const
       const __m256 col = _mm256_mul_ps(_mm256_add_ps(top, _mm256_mul_ps(b, _mm256_sub_ps(bot, top))), scale);
       out[c] = _mm256_add_ps(_mm256_mul_ps(col, diff), spec);
     }
-    _mm256_maskstore_ps(invDepth + at, active, w);
-    alignas(32) float r[8], g[8], bl[8];
-    _mm256_store_ps(r, out[0]);
-    _mm256_store_ps(g, out[1]);
-    _mm256_store_ps(bl, out[2]);
-    while (bits) {
-      const int q = __builtin_ctz(static_cast<unsigned>(bits));
-      bits &= bits - 1;
-      float *o = color + kStride * (at + static_cast<std::size_t>(q));
-      o[0] = r[q];
-      o[1] = g[q];
-      o[2] = bl[q];
-      ids[at + static_cast<std::size_t>(q)] = id;
+    // The 8 samples' (R, G, B, 0) in memory order: two samples per register.
+    const __m256 t0 = _mm256_unpacklo_ps(out[0], out[1]), t1 = _mm256_unpackhi_ps(out[0], out[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(out[2], zero), t3 = _mm256_unpackhi_ps(out[2], zero);
+    const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xee);
+    const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xee);
+    const __m256 rgb[4] = {_mm256_permute2f128_ps(u0, u1, 0x20), _mm256_permute2f128_ps(u2, u3, 0x20),
+                           _mm256_permute2f128_ps(u0, u1, 0x31), _mm256_permute2f128_ps(u2, u3, 0x31)};
+    float *o = color + kStride * at;
+    if (bits == 0xff) {
+      _mm256_storeu_ps(invDepth + at, w);
+      for (int q = 0; q < 4; ++q)
+        _mm256_storeu_ps(o + 8 * q, rgb[q]);
+      std::memset(ids + at, id, 8);
+    } else {
+      _mm256_maskstore_ps(invDepth + at, active, w);
+      for (int q = 0; q < 4; ++q) {
+        const __m256i pick = _mm256_setr_epi32(2 * q, 2 * q, 2 * q, 2 * q, 2 * q + 1, 2 * q + 1, 2 * q + 1, 2 * q + 1);
+        _mm256_maskstore_ps(o + 8 * q, _mm256_permutevar8x32_epi32(active, pick), rgb[q]);
+      }
+      while (bits) {
+        const int q = __builtin_ctz(static_cast<unsigned>(bits));
+        bits &= bits - 1;
+        ids[at + static_cast<std::size_t>(q)] = id;
+      }
     }
   }
-  return done;
+  return count;
+}
+
+/*!
+  resolve() of one pixel row with supersampling 2, two pixels at a time (AVX2): the same float
+  operations in the same order as the 4-channel loop (the samples of a pixel added row by row, left
+  to right), so the same bytes. \e c0, \e c1: the colour of the row's two sample rows; \e id0,
+  \e id1: their ids; \e noise: (R, G, B, 0) per pixel. Returns the number of pixels done (even).
+*/
+__attribute__((target("avx2"))) unsigned resolveRowSs2Avx2(const float *c0, const float *c1, const std::uint8_t *id0,
+                                                            const std::uint8_t *id1, const float *clear4,
+                                                            const float *noise, float norm, float sigma, unsigned w,
+                                                            vpRGBa *dst)
+{
+  const __m256 clear = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(clear4));
+  const __m256 vnorm = _mm256_set1_ps(norm), vsigma = _mm256_set1_ps(sigma), zero = _mm256_setzero_ps();
+  const __m256 top = _mm256_set1_ps(255.f), half = _mm256_set1_ps(0.5f);
+  const __m128i spread = _mm_setr_epi8(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3);
+  const __m128i opaque = _mm_set1_epi32(static_cast<int>(0xff000000u));
+  // The 4 samples of two pixels on one sample row, the clear colour where nothing was drawn;
+  // returns [first samples | ...] as P (left sample of each pixel) and Q (right sample).
+  auto row = [&](const float *c, const std::uint8_t *id, unsigned u, __m256 &P, __m256 &Q) __attribute__((target("avx2"))) {
+    std::int32_t ids;
+    std::memcpy(&ids, id + 2 * u, 4);
+    const __m128i lanes = _mm_shuffle_epi8(_mm_cvtsi32_si128(ids), spread); // each id 4 times
+    const __m256i empty0 = _mm256_cmpeq_epi32(_mm256_cvtepu8_epi32(lanes), _mm256_setzero_si256());
+    const __m256i empty1 = _mm256_cmpeq_epi32(_mm256_cvtepu8_epi32(_mm_srli_si128(lanes, 8)), _mm256_setzero_si256());
+    const __m256 X = _mm256_blendv_ps(_mm256_loadu_ps(c + 8 * u), clear, _mm256_castsi256_ps(empty0));
+    const __m256 Y = _mm256_blendv_ps(_mm256_loadu_ps(c + 8 * u + 8), clear, _mm256_castsi256_ps(empty1));
+    P = _mm256_permute2f128_ps(X, Y, 0x20);
+    Q = _mm256_permute2f128_ps(X, Y, 0x31);
+  };
+  unsigned u = 0;
+  for (; u + 2 <= w; u += 2) {
+    __m256 P0, Q0, P1, Q1;
+    row(c0, id0, u, P0, Q0);
+    row(c1, id1, u, P1, Q1);
+    const __m256 acc = _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(P0, Q0), P1), Q1);
+    __m256 x = _mm256_add_ps(_mm256_mul_ps(acc, vnorm), _mm256_mul_ps(vsigma, _mm256_loadu_ps(noise + 4 * u)));
+    x = _mm256_add_ps(_mm256_min_ps(_mm256_max_ps(x, zero), top), half);
+    const __m256i q = _mm256_cvttps_epi32(x);
+    const __m128i w16 = _mm_packus_epi32(_mm256_castsi256_si128(q), _mm256_extracti128_si256(q, 1));
+    const __m128i bytes = _mm_or_si128(_mm_packus_epi16(w16, w16), opaque);
+    _mm_storel_epi64(reinterpret_cast<__m128i *>(dst + u), bytes);
+  }
+  return u;
 }
 #endif
 
 //! floor(q / d) for d > 0, exact: a double quotient (no 64-bit integer division, ~5x slower) corrected by one step.
 inline std::int64_t floorDiv(std::int64_t q, std::int64_t d)
 {
-  auto k = static_cast<std::int64_t>(std::floor(static_cast<double>(q) / static_cast<double>(d)));
+  auto k = static_cast<std::int64_t>(static_cast<double>(q) / static_cast<double>(d)); // truncated: corrected below
   while (k * d > q)
     --k;
   while ((k + 1) * d <= q)
@@ -161,6 +226,20 @@ inline std::int64_t floorDiv(std::int64_t q, std::int64_t d)
   return k;
 }
 inline std::int64_t ceilDiv(std::int64_t q, std::int64_t d) { return -floorDiv(-q, d); }
+//! floor(q / 256) and ceil(q / 256) (an arithmetic shift).
+inline std::int64_t floorDiv256(std::int64_t q) { return q >> 8; }
+inline std::int64_t ceilDiv256(std::int64_t q) { return -((-q) >> 8); }
+//! std::floor and std::ceil of a float of magnitude below 2^31, as an int (no library call).
+inline int floorToInt(float x)
+{
+  const int i = static_cast<int>(x);
+  return i - (x < static_cast<float>(i));
+}
+inline int ceilToInt(float x)
+{
+  const int i = static_cast<int>(x);
+  return i + (x > static_cast<float>(i));
+}
 
 /*!
   Narrows [lo, hi] (steps from the row's first sample) to where e + k step + bias >= 0: an edge
@@ -169,12 +248,26 @@ inline std::int64_t ceilDiv(std::int64_t q, std::int64_t d) { return -floorDiv(-
 inline void clipSpan(std::int64_t e, std::int64_t step, std::int64_t bias, std::int64_t &lo, std::int64_t &hi)
 {
   const std::int64_t e0 = e + bias;
+  // A short range (a small triangle's row) is stepped through: the same samples, no division.
+  const bool shortRange = hi - lo < 8;
   if (step > 0) {
-    if (e0 + lo * step < 0)
-      lo = ceilDiv(-e0, step);
+    if (e0 + lo * step < 0) {
+      if (shortRange) {
+        while (lo <= hi && e0 + lo * step < 0)
+          ++lo;
+      } else {
+        lo = ceilDiv(-e0, step);
+      }
+    }
   } else if (step < 0) {
-    if (e0 + hi * step < 0)
-      hi = floorDiv(e0, -step);
+    if (e0 + hi * step < 0) {
+      if (shortRange) {
+        while (hi >= lo && e0 + hi * step < 0)
+          --hi;
+      } else {
+        hi = floorDiv(e0, -step);
+      }
+    }
   } else if (e0 < 0) {
     hi = lo - 1;
   }
@@ -208,9 +301,11 @@ void Rasterizer::reset(unsigned width, unsigned height, unsigned supersampling)
   m_W = width * supersampling;
   m_H = height * supersampling;
   const std::size_t n = static_cast<std::size_t>(m_W) * m_H;
-  m_color.assign(kStride * n, 0.f);
+  // The whole frame's colour buffer (16 bytes a sample) only for draw(); render() uses a band.
+  m_color.clear();
   m_invDepth.assign(n, 0.f);
   m_id.assign(n, 0);
+  m_colorValid = true;
 }
 
 void Rasterizer::clear(float r, float g, float b)
@@ -222,15 +317,117 @@ void Rasterizer::clear(float r, float g, float b)
   m_clearColor[2] = b;
   std::fill(m_invDepth.begin(), m_invDepth.end(), 0.f);
   std::fill(m_id.begin(), m_id.end(), std::uint8_t(0));
+  m_colorValid = true;
 }
 
-void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam,
-                      const Lighting &light, std::uint8_t id)
+namespace {
+void checkDrawable(const Mesh &mesh, std::uint8_t id)
 {
   if (!mesh.texture || mesh.texture->width <= 0 || mesh.texture->height <= 0)
     throw Error("renderer: mesh without texture");
   if (id == 0)
     throw Error("renderer: object id 0 means nothing drawn; use 1..255");
+}
+} // namespace
+
+void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam,
+                      const Lighting &light, std::uint8_t id)
+{
+  checkDrawable(mesh, id);
+  if (m_W == 0)
+    throw Error("renderer: reset() the image size before drawing");
+  if (!m_colorValid)
+    throw Error("renderer: clear() after render() before drawing on (render() keeps no whole-frame colours)");
+  if (m_color.size() != kStride * m_invDepth.size())
+    m_color.assign(kStride * m_invDepth.size(), 0.f);
+  if (m_scratch.empty())
+    m_scratch.resize(1);
+  std::vector<ProjVertex> &proj = m_scratch[0].proj;
+  project(mesh, cMo, cam, light, proj);
+  if (light.shadow)
+    drawTriangles<true>(mesh, proj, light, id, nullptr, mesh.triangles.size(), 0, static_cast<int>(m_H), m_color.data(), 0);
+  else
+    drawTriangles<false>(mesh, proj, light, id, nullptr, mesh.triangles.size(), 0, static_cast<int>(m_H), m_color.data(), 0);
+}
+
+void Rasterizer::render(const float clearColor[3], const DrawCall *calls, std::size_t n, const vpCameraParameters &cam,
+                        vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed)
+{
+  if (m_W == 0)
+    throw Error("renderer: reset() the image size before rendering");
+  for (std::size_t c = 0; c < n; ++c)
+    checkDrawable(*calls[c].mesh, calls[c].id);
+  for (int k = 0; k < 3; ++k)
+    m_clearColor[k] = clearColor[k];
+  m_colorValid = false; // the whole-frame colour buffer is not this frame's
+  // Bands of whole pixel rows whose colour (16 bytes a sample) fits in a quarter of a core's L2.
+  const unsigned rows = std::max(1u, static_cast<unsigned>((256u << 10) / (kStride * sizeof(float) * m_W) / m_ss)) * m_ss;
+  const unsigned nBands = (m_H + rows - 1) / rows;
+  if (m_scratch.size() < n)
+    m_scratch.resize(n);
+  for (std::size_t c = 0; c < n; ++c) {
+    Scratch &sc = m_scratch[c];
+    project(*calls[c].mesh, calls[c].cMo, cam, calls[c].light, sc.proj);
+    bin(*calls[c].mesh, sc, rows, nBands);
+  }
+  m_band.resize(kStride * static_cast<std::size_t>(m_W) * rows);
+  out.resize(m_h, m_w);
+  for (unsigned b = 0; b < nBands; ++b) {
+    const unsigned y0 = b * rows, y1 = std::min(m_H, y0 + rows);
+    const std::size_t first = static_cast<std::size_t>(y0) * m_W, last = static_cast<std::size_t>(y1) * m_W;
+    std::fill(m_invDepth.begin() + static_cast<std::ptrdiff_t>(first), m_invDepth.begin() + static_cast<std::ptrdiff_t>(last), 0.f);
+    std::fill(m_id.begin() + static_cast<std::ptrdiff_t>(first), m_id.begin() + static_cast<std::ptrdiff_t>(last), std::uint8_t(0));
+    for (std::size_t c = 0; c < n; ++c) {
+      const Scratch &sc = m_scratch[c];
+      const std::uint32_t *tris = sc.binTris.data() + sc.binStart[b];
+      const std::size_t count = sc.binStart[b + 1] - sc.binStart[b];
+      if (calls[c].light.shadow)
+        drawTriangles<true>(*calls[c].mesh, sc.proj, calls[c].light, calls[c].id, tris, count, static_cast<int>(y0),
+                            static_cast<int>(y1), m_band.data(), first);
+      else
+        drawTriangles<false>(*calls[c].mesh, sc.proj, calls[c].light, calls[c].id, tris, count, static_cast<int>(y0),
+                             static_cast<int>(y1), m_band.data(), first);
+    }
+    resolveRows(out, y0 / m_ss, y1 / m_ss, m_band.data(), first, exposure, noiseSigma, noiseSeed);
+  }
+}
+
+void Rasterizer::bin(const Mesh &mesh, Scratch &sc, unsigned rows, unsigned nBands) const
+{
+  // Each triangle into every band its rows may reach: a conservative row range from the projected
+  // vertices (drawTriangles finds the exact rows and clips them to the band).
+  constexpr float kMaxCoord = 1 << 20;
+  const float maxRow = static_cast<float>(m_H - 1);
+  sc.binStart.assign(nBands + 1, 0);
+  sc.triBands.resize(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto &tri = mesh.triangles[t];
+    const ProjVertex &a = sc.proj[tri[0]], &b = sc.proj[tri[1]], &c = sc.proj[tri[2]];
+    sc.triBands[t] = {1, 0};
+    if (!a.valid || !b.valid || !c.valid || std::fabs(a.Y) > kMaxCoord || std::fabs(b.Y) > kMaxCoord ||
+        std::fabs(c.Y) > kMaxCoord)
+      continue;
+    const float lo = std::min({a.Y, b.Y, c.Y}) - 1.f, hi = std::max({a.Y, b.Y, c.Y}) + 1.f;
+    if (hi < 0.f || lo > maxRow)
+      continue;
+    const auto b0 = static_cast<std::uint32_t>(static_cast<unsigned>(std::max(lo, 0.f)) / rows);
+    const auto b1 = static_cast<std::uint32_t>(static_cast<unsigned>(std::min(hi, maxRow)) / rows);
+    sc.triBands[t] = {b0, b1};
+    for (std::uint32_t k = b0; k <= b1; ++k)
+      ++sc.binStart[k + 1];
+  }
+  for (unsigned k = 0; k < nBands; ++k)
+    sc.binStart[k + 1] += sc.binStart[k];
+  sc.binTris.resize(sc.binStart[nBands]);
+  sc.binFill.assign(sc.binStart.begin(), sc.binStart.end() - 1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::uint32_t k = sc.triBands[t].first; k <= sc.triBands[t].second; ++k)
+      sc.binTris[sc.binFill[k]++] = static_cast<std::uint32_t>(t);
+}
+
+void Rasterizer::project(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam,
+                         const Lighting &light, std::vector<ProjVertex> &proj) const
+{
   const double ss = m_ss;
   const double px = cam.get_px() * ss, py = cam.get_py() * ss;
   const double u0 = cam.get_u0() * ss + (ss - 1) / 2, v0 = cam.get_v0() * ss + (ss - 1) / 2;
@@ -262,13 +459,13 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
     for (unsigned j = 0; j < 4; ++j)
       R[i][j] = cMo[i][j];
 
-  m_proj.resize(mesh.vertices.size());
+  proj.resize(mesh.vertices.size());
   for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
     const MeshVertex &v = mesh.vertices[k];
     const double X = R[0][0] * v.x + R[0][1] * v.y + R[0][2] * v.z + R[0][3];
     const double Y = R[1][0] * v.x + R[1][1] * v.y + R[1][2] * v.z + R[1][3];
     const double Z = R[2][0] * v.x + R[2][1] * v.y + R[2][2] * v.z + R[2][3];
-    ProjVertex &p = m_proj[k];
+    ProjVertex &p = proj[k];
     p.valid = Z > zNear;
     if (!p.valid)
       continue;
@@ -307,15 +504,12 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
       p.sd = static_cast<float>((sd - bias) * w);
     }
   }
-  if (shadow)
-    drawTriangles<true>(mesh, light, id);
-  else
-    drawTriangles<false>(mesh, light, id);
 }
 
-
 template <bool kShadow>
-void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uint8_t id)
+void Rasterizer::drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &proj, const Lighting &light,
+                               std::uint8_t id, const std::uint32_t *tris, std::size_t count, int yBegin, int yEnd,
+                               float *color, std::size_t colorOffset)
 {
 
   const Texture &tex = *mesh.texture;
@@ -335,8 +529,9 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
   // spec, su, sv, sd): each is a plane in screen space, stepped along a span.
   constexpr int kAttrs = kShadow ? 9 : 6;
   [[maybe_unused]] const bool useAvx2 = m_simd && simdAvailable();
-  for (const auto &tri : mesh.triangles) {
-    const ProjVertex *pa = &m_proj[tri[0]], *pb = &m_proj[tri[1]], *pc = &m_proj[tri[2]];
+  for (std::size_t n = 0; n < count; ++n) {
+    const auto &tri = mesh.triangles[tris ? tris[n] : n];
+    const ProjVertex *pa = &proj[tri[0]], *pb = &proj[tri[1]], *pc = &proj[tri[2]];
     if (!pa->valid || !pb->valid || !pc->valid)
       continue;
     if (std::fabs(pa->X) > kMaxCoord || std::fabs(pa->Y) > kMaxCoord || std::fabs(pb->X) > kMaxCoord ||
@@ -358,16 +553,18 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
     // Kept off by default (setExactBounds) so that existing images stay bit-identical.
     int x0, x1, y0, y1;
     if (m_exactBounds) {
-      x0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.x, B.x, C.x}), 256)));
-      x1 = static_cast<int>(std::min<std::int64_t>(W - 1, floorDiv(std::max({A.x, B.x, C.x}), 256)));
-      y0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(std::min({A.y, B.y, C.y}), 256)));
-      y1 = static_cast<int>(std::min<std::int64_t>(H - 1, floorDiv(std::max({A.y, B.y, C.y}), 256)));
+      x0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv256(std::min({A.x, B.x, C.x}))));
+      x1 = static_cast<int>(std::min<std::int64_t>(W - 1, floorDiv256(std::max({A.x, B.x, C.x}))));
+      y0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv256(std::min({A.y, B.y, C.y}))));
+      y1 = static_cast<int>(std::min<std::int64_t>(H - 1, floorDiv256(std::max({A.y, B.y, C.y}))));
     } else {
-      x0 = std::max(0, static_cast<int>(std::ceil(std::min({a.X, b.X, c.X}))));
-      x1 = std::min(W - 1, static_cast<int>(std::floor(std::max({a.X, b.X, c.X}))));
-      y0 = std::max(0, static_cast<int>(std::ceil(std::min({a.Y, b.Y, c.Y}))));
-      y1 = std::min(H - 1, static_cast<int>(std::floor(std::max({a.Y, b.Y, c.Y}))));
+      x0 = std::max(0, ceilToInt(std::min({a.X, b.X, c.X})));
+      x1 = std::min(W - 1, floorToInt(std::max({a.X, b.X, c.X})));
+      y0 = std::max(0, ceilToInt(std::min({a.Y, b.Y, c.Y})));
+      y1 = std::min(H - 1, floorToInt(std::max({a.Y, b.Y, c.Y})));
     }
+    y0 = std::max(y0, yBegin); // the rows of this band
+    y1 = std::min(y1, yEnd - 1);
     if (x0 > x1 || y0 > y1)
       continue;
     // E_pq(x, y) = (q.x - p.x)(y - p.y) - (q.y - p.y)(x - p.x), >= 0 inside; the edge opposite a is b->c.
@@ -415,8 +612,8 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
 #if PM_RASTER_AVX2
       if constexpr (!kShadow) {
         if (useAvx2) {
-          const std::size_t done = shadeSpanAvx2(v0, d, first, end - first + 1, m_invDepth.data(), m_id.data(),
-                                                 m_color.data(), tex, mesh.useMask, id);
+          const std::size_t done = shadeSpanAvx2(v0, d, end - first + 1, m_invDepth.data() + first, m_id.data() + first,
+                                                 color + kStride * (first - colorOffset), tex, mesh.useMask, id);
           first += done;
           kf = static_cast<float>(done);
         }
@@ -442,14 +639,18 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const Lighting &light, std::uin
         }
         m_invDepth[idx] = w;
         m_id[idx] = id;
-        shadeTexel(tex, s, t, diff, spec, &m_color[kStride * idx]);
+        shadeTexel(tex, s, t, diff, spec, color + kStride * (idx - colorOffset));
       }
     }
   }
 }
 
-template void Rasterizer::drawTriangles<true>(const Mesh &, const Lighting &, std::uint8_t);
-template void Rasterizer::drawTriangles<false>(const Mesh &, const Lighting &, std::uint8_t);
+template void Rasterizer::drawTriangles<true>(const Mesh &, const std::vector<ProjVertex> &, const Lighting &,
+                                             std::uint8_t, const std::uint32_t *, std::size_t, int, int, float *,
+                                             std::size_t);
+template void Rasterizer::drawTriangles<false>(const Mesh &, const std::vector<ProjVertex> &, const Lighting &,
+                                              std::uint8_t, const std::uint32_t *, std::size_t, int, int, float *,
+                                              std::size_t);
 
 namespace {
 //! A grey level in [0, 255]: \e val clamped and rounded half away from zero (std::lround's rule, inline).
@@ -461,18 +662,35 @@ inline unsigned char toByte(double val)
 
 void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const
 {
+  if (!m_colorValid)
+    throw Error("renderer: render() resolved its own frame; clear() and draw() before resolve()");
   out.resize(m_h, m_w);
+  resolveRows(out, 0, m_h, m_color.data(), 0, exposure, noiseSigma, noiseSeed);
+}
+
+void Rasterizer::resolveRows(vpImage<vpRGBa> &out, unsigned vBegin, unsigned vEnd, const float *color,
+                             std::size_t colorOffset, double exposure, double noiseSigma, std::uint64_t noiseSeed) const
+{
   const float norm = static_cast<float>(255.0 * exposure / (m_ss * m_ss));
   const float sigma = static_cast<float>(noiseSigma);
-  for (unsigned v = 0; v < m_h; ++v) {
+  m_noise.assign(4 * static_cast<std::size_t>(m_w), 0.f); // (R, G, B, 0) per pixel
+  [[maybe_unused]] const bool useAvx2 = m_ss == 2 && m_simd && simdAvailable();
+  for (unsigned v = vBegin; v < vEnd; ++v) {
     vpRGBa *dst = out[v];
     const std::size_t row0 = static_cast<std::size_t>(v) * m_ss * m_W;
-    for (unsigned u = 0; u < m_w; ++u) {
+    if (noiseSigma > 0)
+      fastGaussian3Run(noiseSeed, static_cast<std::uint64_t>(v) * m_w, m_w, m_noise.data(), 4);
+    unsigned u = 0;
+#if PM_RASTER_AVX2
+    if (useAvx2)
+      u = resolveRowSs2Avx2(color + kStride * (row0 - colorOffset), color + kStride * (row0 + m_W - colorOffset),
+                            m_id.data() + row0, m_id.data() + row0 + m_W, m_clearColor, m_noise.data(), norm, sigma,
+                            m_w, dst);
+#endif
+    for (; u < m_w; ++u) {
       // The box filter of the pixel's samples (the clear colour where nothing was drawn), the
       // exposure, the noise, clamped and rounded half up, in single precision.
-      float g[3] = {0, 0, 0};
-      if (noiseSigma > 0)
-        fastGaussian3(noiseSeed, static_cast<std::uint64_t>(v) * m_w + u, g);
+      const float *g = &m_noise[4 * static_cast<std::size_t>(u)];
       unsigned char c[3];
 #if defined(__SSE2__)
       // The same float operations as the scalar lines below, four channels at once.
@@ -480,9 +698,9 @@ void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigm
       for (unsigned j = 0; j < m_ss; ++j) {
         const std::size_t first = row0 + j * m_W + static_cast<std::size_t>(u) * m_ss;
         for (unsigned i = 0; i < m_ss; ++i)
-          acc = _mm_add_ps(acc, _mm_loadu_ps(m_id[first + i] ? &m_color[kStride * (first + i)] : m_clearColor));
+          acc = _mm_add_ps(acc, _mm_loadu_ps(m_id[first + i] ? color + kStride * (first + i - colorOffset) : m_clearColor));
       }
-      __m128 x = _mm_add_ps(_mm_mul_ps(acc, _mm_set1_ps(norm)), _mm_mul_ps(_mm_set1_ps(sigma), _mm_setr_ps(g[0], g[1], g[2], 0.f)));
+      __m128 x = _mm_add_ps(_mm_mul_ps(acc, _mm_set1_ps(norm)), _mm_mul_ps(_mm_set1_ps(sigma), _mm_loadu_ps(g)));
       x = _mm_add_ps(_mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), _mm_set1_ps(255.f)), _mm_set1_ps(0.5f));
       alignas(16) std::int32_t q[4];
       _mm_store_si128(reinterpret_cast<__m128i *>(q), _mm_cvttps_epi32(x));
@@ -493,7 +711,7 @@ void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigm
       for (unsigned j = 0; j < m_ss; ++j) {
         const std::size_t first = row0 + j * m_W + static_cast<std::size_t>(u) * m_ss;
         for (unsigned i = 0; i < m_ss; ++i) {
-          const float *q = m_id[first + i] ? &m_color[kStride * (first + i)] : m_clearColor;
+          const float *q = m_id[first + i] ? color + kStride * (first + i - colorOffset) : m_clearColor;
           for (std::size_t c = 0; c < 4; ++c)
             acc[c] += q[c];
         }

@@ -200,7 +200,6 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
 {
   if (raster.width() != camera.width || raster.height() != camera.height || raster.supersampling() != m_params.supersampling)
     raster.reset(camera.width, camera.height, m_params.supersampling);
-  raster.clear(0.04f, 0.06f, 0.09f); // the dark tank beyond the panel
   const bool lit = sceneLit();
   raster.setExactBounds(lit || isReliefTarget(m_target.info.code));
   const vpHomogeneousMatrix cMh = camera.cMh();
@@ -231,19 +230,29 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
     toyLight.specular = m_params.sceneSpecular;
     toyLight.shininess = m_params.sceneShininess;
   }
-  raster.draw(m_backdrop, cMo, camera.cam, light, 1);
+  Rasterizer::DrawCall calls[4];
+  std::size_t n = 0;
+  auto add = [&](const Mesh &mesh, const vpHomogeneousMatrix &M, const Lighting &l, std::uint8_t id) {
+    calls[n].mesh = &mesh;
+    calls[n].cMo = M;
+    calls[n].light = l;
+    calls[n].id = id;
+    ++n;
+  };
+  add(m_backdrop, cMo, light, 1);
   if (withTarget)
-    raster.draw(m_toy, cMo, camera.cam, toyLight, 2);
+    add(m_toy, cMo, toyLight, 2);
   if (m_params.distractor && hasDistractor()) {
     const double *d = m_params.distractorPose;
     Lighting look = toyLight;
     look.shadow = nullptr; // the toy's shadow map does not hold it
-    raster.draw(m_distractor, cMo * toHomogeneousMatrix(Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), camera.cam, look, 4);
+    add(m_distractor, cMo * toHomogeneousMatrix(Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), look, 4);
   }
   if (m_params.occluder)
-    raster.draw(m_occluder, cMo, camera.cam, light, 3);
+    add(m_occluder, cMo, light, 3);
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
-  raster.resolve(out, m_params.exposure, noiseSigma, noiseSeed);
+  const float tank[3] = {0.04f, 0.06f, 0.09f}; // the dark tank beyond the panel
+  raster.render(tank, calls, n, camera.cam, out, m_params.exposure, noiseSigma, noiseSeed);
 }
 
 StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const

@@ -5,6 +5,7 @@
   function of (seed, coordinates), so images are reproducible and can be made in parallel.
 */
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace pm::sim {
@@ -40,5 +41,10 @@ double gaussianFromHash(std::uint64_t seed, std::uint64_t index);
   normal samples. Fast, for per-pixel sensor noise.
 */
 void fastGaussian3(std::uint64_t seed, std::uint64_t index, float out[3]);
+/*!
+  fastGaussian3 of pixels \e first + k, k = 0 .. n - 1, into out[stride k + channel] (stride >= 3):
+  the same draws, in one tight loop.
+*/
+void fastGaussian3Run(std::uint64_t seed, std::uint64_t first, std::size_t n, float *out, std::size_t stride = 3);
 
 } // namespace pm::sim
