@@ -15,6 +15,7 @@
 #include "pm/core/Hue.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/core/UndistortMap.h"
+#include "pm/rmga/RmGa.h"
 #include "pm/io/RigFile.h"
 #include "pm/lab/SimulatedCalibration.h"
 #include "pm/sim/Scene.h"
@@ -119,6 +120,42 @@ void Fitness_DefaultModel_GenerationBatch(benchmark::State &state)
   state.counters["stereo_evals_per_s"] =
       benchmark::Counter(static_cast<double>(state.iterations() * static_cast<long>(ps.size())), benchmark::Counter::kIsRate);
   state.SetLabel(pm::BatchPool::shared().hasHelper() ? "two cores" : "one core");
+}
+/*!
+  The same batch scored on the first quarter of the model's points only (StereoFitness::evaluate
+  with an unreachable threshold: every pose rejected after its first share), as the coarse search
+  and early rejection score a pose; compare with Fitness_DefaultModel_GenerationBatch.
+*/
+void Fitness_DefaultModel_GenerationBatch_Coarse(benchmark::State &state)
+{
+  pm::StereoFitness fit(setup().rig, setup().model);
+  fit.setImages(setup().images.left, setup().images.right);
+  const auto ps = poses(18);
+  std::vector<double> out(ps.size()), cost(ps.size());
+  for (auto _ : state) {
+    fit.evaluate(ps.data(), ps.size(), out.data(), 1e300, cost.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(ps.size()));
+  state.counters["cost_per_pose"] = cost[0];
+}
+//! RM-GA's own work per scored pose (selection, crossover, mutation, decoding, survival), on a fitness that costs nothing.
+void RmGa_OwnWork(benchmark::State &state)
+{
+  struct Free : pm::FitnessFunction
+  {
+    void evaluate(const pm::Phi *p, std::size_t n, double *f) override
+    {
+      for (std::size_t i = 0; i < n; ++i)
+        f[i] = -std::fabs(p[i].x) - std::fabs(p[i].z - 500);
+    }
+  } f;
+  pm::RmGa ga{pm::SearchSpace(), pm::RmGaParams()};
+  long poses = 0;
+  for (auto _ : state)
+    poses += ga.evolve(f, pm::FrameBudget::evals(1000)).candidates;
+  state.SetItemsProcessed(poses);
+  state.counters["ns_per_pose"] = benchmark::Counter(static_cast<double>(poses), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 void Fitness_1000Points(benchmark::State &s) { runFitness(s, setup().model1000, false); }
 void Fitness_1000Points_Scalar(benchmark::State &s) { runFitness(s, setup().model1000, true); }
@@ -345,6 +382,8 @@ void Render_StereoPair(benchmark::State &state)
 
 BENCHMARK(Fitness_DefaultModel);
 BENCHMARK(Fitness_DefaultModel_GenerationBatch)->UseRealTime();
+BENCHMARK(Fitness_DefaultModel_GenerationBatch_Coarse)->UseRealTime();
+BENCHMARK(RmGa_OwnWork);
 BENCHMARK(Fitness_1000Points);
 BENCHMARK(Fitness_1000Points_Scalar);
 BENCHMARK(Fitness_1000Points_Depth);

@@ -5,6 +5,7 @@
 #include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpPoint.h>
 
+#include <array>
 #include <random>
 #include <thread>
 
@@ -16,6 +17,7 @@
 #include "pm/core/StereoFitness.h"
 #include "pm/io/RigFile.h"
 #include "pm/rmga/LocalSimplex.h"
+#include "pm/rmga/SmoothAscent.h"
 #include "pm/rmga/StereoObjective.h"
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/sim/Scene.h"
@@ -658,4 +660,127 @@ TEST(SmoothFitness, ItsLocalSearchFindsTheBoxFromTwoMillimetresAndADegreeAway)
   EXPECT_NEAR(rotationDeg(start, truth), 1.0, 0.05);
   EXPECT_LT(dPos, 0.5);
   EXPECT_LT(rotationDeg(r.best, truth), 0.3);
+  // The climb along the smooth score's gradient (the tracker's, climbSmooth) gets there in 24
+  // evaluations instead of 300.
+  pm::SmoothAscentParams a;
+  a.maxEvaluations = 24;
+  const pm::SmoothAscentResult c = pm::climbSmooth(smooth, &start, 1, a);
+  EXPECT_LE(c.evaluations, 24);
+  EXPECT_GE(c.score, r.fitness);
+  EXPECT_LT(std::hypot(c.best.x - truth.x, c.best.y - truth.y, c.best.z - truth.z), 0.5);
+  EXPECT_LT(rotationDeg(c.best, truth), 0.3);
+}
+
+TEST_F(FitnessOnC12, SmoothGradientIsTheSmoothScoresSlopeAndItsValueTheSmoothScore)
+{
+  // The climb's score (AVX2, float sums) against the reference (scalar, double), and its gradient
+  // against central differences along random small motions (applyTwist), on poses near the truth
+  // where most points are in the images and many straddle a pixel edge.
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n01;
+  int checked = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    pm::Phi q = truth;
+    q.x += 2 * n01(rng), q.y += 2 * n01(rng), q.z += 4 * n01(rng);
+    q.e1 += 0.01 * n01(rng), q.e2 += 0.01 * n01(rng), q.e3 += 0.01 * n01(rng);
+    double g[6], M[36];
+    const double s = fit->evaluateSmoothGradient(q, g, M);
+    EXPECT_NEAR(s, fit->evaluateSmooth(q), 1e-5);
+    double d[6];
+    for (int k = 0; k < 6; ++k)
+      d[k] = n01(rng) * (k < 3 ? 1.0 : 0.01); // mm, rad
+    double slope = 0;
+    for (int k = 0; k < 6; ++k)
+      slope += g[k] * d[k];
+    const double h = 1e-3;
+    double plus[6], minus[6], unused[6];
+    for (int k = 0; k < 6; ++k)
+      plus[k] = h * d[k], minus[k] = -h * d[k];
+    const double fd = (fit->evaluateSmoothGradient(pm::applyTwist(q, plus), unused) -
+                       fit->evaluateSmoothGradient(pm::applyTwist(q, minus), unused)) / (2 * h);
+    // Piecewise bilinear: a few points may cross a pixel edge within +-h.
+    EXPECT_NEAR(fd, slope, 0.05 * std::fabs(slope) + 2e-4) << "trial " << trial;
+    checked += std::fabs(slope) > 1e-3;
+  }
+  EXPECT_GE(checked, 8); // the slopes were not all flat
+  // Far off the images: nothing to climb.
+  double g[6];
+  EXPECT_DOUBLE_EQ(fit->evaluateSmoothGradient({5000, 0, 500, 0, 0, 0}, g), 0.0);
+  for (double x : g)
+    EXPECT_EQ(x, 0.0);
+  EXPECT_THROW(fit->evaluateSmoothGradient({0, 0, 500, 0.8, 0.8, 0}, g), pm::Error);
+}
+
+TEST_F(FitnessOnC12, SmoothGradientKernelsAgreeAndTheMetricIsTheMeanImageMotion)
+{
+  const pm::Phi q{truth.x + 1.5, truth.y - 1, truth.z + 3, truth.e1 + 0.004, truth.e2 - 0.006, truth.e3 + 0.003};
+  double gv[6], Mv[36], gs[6], Ms[36];
+  const double sv = fit->evaluateSmoothGradient(q, gv, Mv);
+  pm::StereoFitness::forceScalar(true);
+  const double ss = fit->evaluateSmoothGradient(q, gs, Ms);
+  pm::StereoFitness::forceScalar(false);
+  EXPECT_NEAR(sv, ss, 1e-5);
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(gv[k], gs[k], 1e-4 * (std::fabs(gs[k]) + 1e-3)) << k;
+  for (int k = 0; k < 36; ++k)
+    EXPECT_NEAR(Mv[k], Ms[k], 1e-4 * std::fabs(Ms[k]) + 1e-6) << k;
+  // d^T M d: the mean squared image motion of the points for a small motion d, as projecting them
+  // before and after says (pointScores: every point, both cameras).
+  const std::array<std::array<double, 6>, 2> motions{{{0.3, -0.2, 0.5, 0, 0, 0}, {0, 0, 0, 0.002, -0.001, 0.003}}};
+  for (const auto &motion : motions) {
+    const double *d = motion.data();
+    double predicted = 0;
+    for (int r = 0; r < 6; ++r)
+      for (int c = 0; c < 6; ++c)
+        predicted += d[r] * Mv[6 * r + c] * d[c];
+    const pm::Phi moved = pm::applyTwist(q, d);
+    double sum = 0;
+    int n = 0;
+    for (int cam = 0; cam < 2; ++cam) {
+      const auto a = fit->pointScores(q, cam), b = fit->pointScores(moved, cam);
+      for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].cls != pm::PointScore::Off) {
+          sum += (a[i].u - b[i].u) * (a[i].u - b[i].u) + (a[i].v - b[i].v) * (a[i].v - b[i].v);
+          ++n;
+        }
+    }
+    EXPECT_NEAR(predicted, sum / n, 0.03 * predicted) << "d = " << d[0] << ", " << d[3];
+  }
+}
+
+TEST_F(FitnessOnC12, EarlyRejectionScoresHopelessPosesOnAQuarterAndTheOthersExactly)
+{
+  const auto ps = randomPoses(200);
+  std::vector<double> exact(ps.size()), early(ps.size()), cost(ps.size()), coarse(ps.size()), coarseCost(ps.size());
+  fit->evaluate(ps.data(), ps.size(), exact.data());
+  const double threshold = 0.5;
+  fit->evaluate(ps.data(), ps.size(), early.data(), threshold, cost.data());
+  fit->evaluate(ps.data(), ps.size(), coarse.data(), 1e300, coarseCost.data()); // every pose on its first share
+  int rejected = 0;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (cost[i] < 1) { // rejected: its estimate is under the threshold, and is the coarse score
+      ++rejected;
+      EXPECT_LT(early[i], threshold);
+      EXPECT_EQ(early[i], coarse[i]);
+      EXPECT_NEAR(cost[i], 1.0 / pm::StereoFitness::kRejectStride, 0.01);
+    } else {
+      EXPECT_EQ(early[i], exact[i]) << i; // not rejected: F itself
+    }
+    EXPECT_NEAR(coarseCost[i], 1.0 / pm::StereoFitness::kRejectStride, 0.01);
+  }
+  EXPECT_GT(rejected, 150); // random poses: most are hopeless
+  // The coarse score is an estimate of F: close to it where the model lies on the target.
+  const pm::Phi near[3] = {truth, {truth.x + 3, truth.y, truth.z, truth.e1, truth.e2, truth.e3}, {truth.x, truth.y - 4, truth.z + 8, truth.e1, truth.e2, truth.e3}};
+  double f[3], c[3], k[3];
+  fit->evaluate(near, 3, f);
+  fit->evaluate(near, 3, c, 1e300, k);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(c[i], f[i], 0.06) << i;
+  // The same values whoever computes them (two cores or one at a time).
+  for (std::size_t i = 0; i < 20; ++i) {
+    double one = 0, oneCost = 0;
+    fit->evaluate(&ps[i], 1, &one, threshold, &oneCost);
+    EXPECT_EQ(one, early[i]);
+    EXPECT_EQ(oneCost, cost[i]);
+  }
 }

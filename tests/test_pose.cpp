@@ -127,3 +127,27 @@ TEST(Pose, NonRigidMatrixIsRefused)
   M[0][0] = 2.0; // a scale, not a rotation
   EXPECT_THROW(pm::fromHomogeneousMatrix(M), pm::Error);
 }
+
+TEST(Pose, ATwistMovesTheOriginAndTurnsAboutItInTheHandFrame)
+{
+  // applyTwist(phi, [v, w]) is hMo' = [exp(w) R, t + v]: as ViSP composes it.
+  const pm::Phi phi{12, -30, 480, 0.1, -0.2, 0.3};
+  const double twist[6] = {1.5, -2.0, 3.0, 0.02, -0.05, 0.03};
+  const pm::Phi moved = pm::applyTwist(phi, twist);
+  const vpHomogeneousMatrix M = pm::toHomogeneousMatrix(phi);
+  const vpRotationMatrix R = vpRotationMatrix(vpThetaUVector(twist[3], twist[4], twist[5])) * M.getRotationMatrix();
+  const vpHomogeneousMatrix N = pm::toHomogeneousMatrix(moved);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j)
+      EXPECT_NEAR(N[i][j], R[i][j], 1e-12) << i << j;
+    EXPECT_NEAR(N[i][3] * 1e3, phi[i] + twist[i], 1e-9);
+  }
+  EXPECT_GE(moved.eta(), 0.0);
+  // No rotation: the orientation is untouched; a half turn keeps eta >= 0.
+  const double shift[6] = {1, 2, 3, 0, 0, 0};
+  EXPECT_EQ(pm::applyTwist(phi, shift).e2, phi.e2);
+  const double halfTurn[6] = {0, 0, 0, M_PI, 0, 0};
+  const pm::Phi h = pm::applyTwist(phi, halfTurn);
+  EXPECT_TRUE(h.isValid());
+  EXPECT_NEAR(pm::rotationDistanceDeg(h, phi), 180.0, 1e-6);
+}

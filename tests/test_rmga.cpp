@@ -5,8 +5,12 @@
 #include <cstdint>
 
 #include "pm/core/Error.h"
+
+#include <algorithm>
+#include <visp3/core/vpThetaUVector.h>
 #include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
+#include "pm/rmga/SmoothAscent.h"
 
 namespace {
 
@@ -391,4 +395,132 @@ TEST(LocalSimplex, NeverReturnsAnInvalidPoseAndRefusesBadInput)
   bad.maxEvaluations = 6;
   EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::Error);
   EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0.9, 0.9, 0}, pm::LocalSimplexParams()), pm::Error);
+}
+
+namespace {
+
+//! A smooth bowl with its exact gradient for applyTwist's motion and a fixed metric: the score
+//! falls with the distance to the centre (mm) and the rotation angle to it (rad).
+class Bowl : public pm::SmoothFunction
+{
+public:
+  pm::Phi centre{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
+  long calls = 0;
+  double valueAndGradient(const pm::Phi &p, double g[6], double *metric) override
+  {
+    ++calls;
+    const vpThetaUVector r(pm::toHomogeneousMatrix(centre).getRotationMatrix() * pm::toHomogeneousMatrix(p).getRotationMatrix().t());
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double dt = p[static_cast<std::size_t>(k)] - centre[static_cast<std::size_t>(k)];
+      s -= dt * dt / 100.0 + r[static_cast<unsigned>(k)] * r[static_cast<unsigned>(k)] / 1e-3;
+      g[k] = -2 * dt / 100.0;
+      g[3 + k] = 2 * r[static_cast<unsigned>(k)] / 1e-3; // turning by w moves the residual by -w (small angles)
+    }
+    if (metric) {
+      std::fill(metric, metric + 36, 0.0);
+      for (int k = 0; k < 6; ++k)
+        metric[7 * k] = k < 3 ? 1.0 : 1e4; // 1 px per mm, 100 px per rad
+    }
+    return s;
+  }
+};
+
+double angleDeg(const pm::Phi &a, const pm::Phi &b) { return pm::rotationDistanceDeg(a, b); }
+
+} // namespace
+
+TEST(SmoothAscent, ClimbsToTheTopFromTheBestStartWithinItsBudget)
+{
+  Bowl f;
+  pm::Phi near = f.centre, far = f.centre;
+  near.x += 3, near.y -= 2, near.z += 4, near.e1 += 0.01, near.e3 -= 0.008; // about 5 mm and 1.5 deg off
+  far.x += 40, far.e2 += 0.1;
+  const pm::Phi starts[2] = {far, near};
+  pm::SmoothAscentParams p;
+  p.maxEvaluations = 60;
+  const pm::SmoothAscentResult r = pm::climbSmooth(f, starts, 2, p);
+  EXPECT_EQ(r.evaluations, f.calls); // every evaluation counted
+  EXPECT_LE(r.evaluations, p.maxEvaluations);
+  double unused[6];
+  EXPECT_DOUBLE_EQ(r.startScore, Bowl().valueAndGradient(near, unused, nullptr)); // the better start
+  EXPECT_GT(r.score, r.startScore);
+  EXPECT_LT(distance(r.best, f.centre), 0.1);
+  EXPECT_LT(angleDeg(r.best, f.centre), 0.05);
+  // A small budget stops early, never below the best start, never past the budget.
+  Bowl g;
+  p.maxEvaluations = 5;
+  const pm::SmoothAscentResult s = pm::climbSmooth(g, starts, 2, p);
+  EXPECT_EQ(s.evaluations, 5);
+  EXPECT_GE(s.score, s.startScore);
+  EXPECT_LT(distance(s.best, f.centre), distance(near, f.centre));
+}
+
+TEST(SmoothAscent, RefusesBadInput)
+{
+  Bowl f;
+  const pm::Phi ok = f.centre, bad{0, 0, 500, 0.9, 0.9, 0};
+  pm::SmoothAscentParams p;
+  EXPECT_THROW(pm::climbSmooth(f, &bad, 1, p), pm::Error);
+  EXPECT_THROW(pm::climbSmooth(f, &ok, 0, p), pm::Error);
+  p.maxEvaluations = 1;
+  const pm::Phi two[2] = {ok, ok};
+  EXPECT_THROW(pm::climbSmooth(f, two, 2, p), pm::Error); // more starts than evaluations
+  p = pm::SmoothAscentParams();
+  p.minStepPx = 0;
+  EXPECT_THROW(pm::climbSmooth(f, &ok, 1, p), pm::Error);
+  p = pm::SmoothAscentParams();
+  p.shrink = 1;
+  EXPECT_THROW(pm::climbSmooth(f, &ok, 1, p), pm::Error);
+  p = pm::SmoothAscentParams();
+  p.firstStepPx = 3; // over the largest step
+  EXPECT_THROW(pm::climbSmooth(f, &ok, 1, p), pm::Error);
+}
+
+namespace {
+
+//! The Peak, but a pose under the threshold is given a low estimate at a quarter of the work.
+class RejectingPeak : public Peak
+{
+public:
+  long rejected = 0;
+  void evaluateOrReject(const pm::Phi *p, std::size_t n, double rejectBelow, double *f, double *cost) override
+  {
+    evaluate(p, n, f);
+    for (std::size_t i = 0; i < n; ++i) {
+      cost[i] = 1.0;
+      if (f[i] < rejectBelow) {
+        f[i] = rejectBelow - 1.0; // an estimate under the threshold
+        cost[i] = 0.25;
+        ++rejected;
+      }
+    }
+  }
+};
+
+} // namespace
+
+TEST(RmGa, ChildrenUnderTheWorstParentMayBeRejectedEarlyAndCountTheirShareOfTheBudget)
+{
+  RejectingPeak f;
+  pm::RmGa ga{pm::SearchSpace(), pm::RmGaParams()};
+  const pm::FrameResult r = ga.evolve(f, pm::FrameBudget::evals(1000));
+  EXPECT_LE(r.evaluations, 1000);
+  EXPECT_GT(f.rejected, 0);
+  EXPECT_EQ(r.candidates, f.calls);
+  // The work: a whole evaluation per pose scored exactly, a quarter per pose rejected.
+  EXPECT_NEAR(static_cast<double>(r.evaluations), static_cast<double>(f.calls - f.rejected) + 0.25 * static_cast<double>(f.rejected), 1.0);
+  // A rejected child never survives: every individual kept holds its exact fitness.
+  Peak exact;
+  for (const pm::Individual &i : ga.population()) {
+    double v = 0;
+    exact.evaluate(&i.phi, 1, &v);
+    EXPECT_DOUBLE_EQ(i.fitness, v);
+  }
+  // More poses for the same work than a GA that scores every one.
+  Peak g;
+  pm::RmGa plain{pm::SearchSpace(), pm::RmGaParams()};
+  const pm::FrameResult q = plain.evolve(g, pm::FrameBudget::evals(1000));
+  EXPECT_EQ(q.candidates, q.evaluations);
+  EXPECT_GT(r.candidates, q.candidates);
 }

@@ -243,7 +243,7 @@ struct FaultRun
   speed and acceleration limits.
 */
 FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std::string &trackerTarget = "C12", long budget = 1900,
-                       const std::string &lookAlike = "")
+                       const std::string &lookAlike = "", bool issue17Search = false)
 {
   const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
@@ -260,6 +260,10 @@ FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std:
   tp.ga.predictMotion = true;
   tp.ga.refineEvaluations = 100;
   tp.ga.restartGenerations = 30;
+  if (issue17Search) { // the first search as it was in issue 17: every candidate on all the points, any pose over the lock quality locked
+    tp.coarseSearch = false;
+    tp.lockConfidence = 0;
+  }
   pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::ServoParams(), pm::lab::LoopParams(), [&](const vpHomogeneousMatrix &wMh0) {
     return std::make_unique<pm::sim::TcRobot>(wMh0, pm::Phi{0, 0, 500, 0, 0, 0}, 0, 30.0, 0.2, 200.0, 500.0);
   });
@@ -328,12 +332,12 @@ TEST(ClosedLoop, FailSafeUnderBlankFramesAFrozenCameraAndAJump)
 
 TEST(ClosedLoop, AWrongFirstLockIsNeverServoedOn)
 {
-  // 600 evaluations per frame, no anti-aliasing: the tracker's first lock is the crab tilted by
-  // about 45 deg (issue 17's case; servoed on at once before the lock was verified). The arm holds
-  // until a challenger search has moved the tracker to the crab (here the first one verifies the
-  // wrong lock, whose confidence stays low, and the second, 15 untrusted frames later, finds the
-  // crab), then servos (checked in runWithFaults: never on a wrong pose).
-  const FaultRun r = runWithFaults(pm::lab::LoopFaults(), 120, "C12", 600);
+  // 600 evaluations per frame, no anti-aliasing, every candidate of the first search scored on all
+  // the points (no coarse search: with it, 600 evaluations find the crab at once here) and every
+  // pose over the lock quality locked (no lock gate, TrackerParams::lockConfidence): the tracker's
+  // first lock is a wrong pose (issue 17's case; servoed on at once before the lock was verified). The arm holds until a challenger search has moved the tracker to the crab, then
+  // servos (checked in runWithFaults: never on a wrong pose).
+  const FaultRun r = runWithFaults(pm::lab::LoopFaults(), 120, "C12", 600, "", true);
   ASSERT_TRUE(r.frames[0].track.state == pm::TrackState::Tracking && r.frames[0].wrongEstimate()) << "the case is gone";
   EXPECT_FALSE(r.frames[0].servoing);
   EXPECT_GE(resumedAt(r, 0, 20), 0) << "never servoed";

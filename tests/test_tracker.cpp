@@ -10,6 +10,9 @@
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/tracker/TiltFilter.h"
+
+#include <visp3/core/vpThetaUVector.h>
 
 namespace {
 
@@ -127,14 +130,30 @@ TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
   }
   EXPECT_NEAR(r.back().phi.x, S.truth.x, 2.0);
   EXPECT_NEAR(r.back().phi.y, S.truth.y, 2.0);
-  // A blank frame: still a steady budget for it (it was not known), q falls, so the next has all.
+  // A blank frame: it starts with the steady budget (it was not known), q falls, so it gets the
+  // rest of the whole budget at once (escalated), and the next frame has all of it.
   const vpImage<vpRGBa> blank(480, 640, vpRGBa(90, 90, 90));
   const pm::TrackResult b = t.track(blank, blank);
-  EXPECT_TRUE(b.steady);
+  EXPECT_FALSE(b.steady);
+  EXPECT_TRUE(b.escalated);
+  EXPECT_GT(b.evaluations, 900);
+  EXPECT_LE(b.evaluations, 1000 + p.ga.population); // the steady part, the rest, and the population scored again
   EXPECT_LT(b.quality, 0.2);
   const pm::TrackResult next = t.track(S.im.left, S.im.right);
   EXPECT_FALSE(next.steady);
+  EXPECT_FALSE(next.escalated);
   EXPECT_GT(next.evaluations, 900);
+  // Without the escalation the blank frame keeps the steady budget.
+  pm::TrackerParams q = p;
+  q.steadyEscalation = false;
+  pm::PhotoModelTracker u(S.rig, S.sm.build.model, q);
+  u.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  for (int k = 0; k < 6; ++k)
+    u.track(S.im.left, S.im.right);
+  const pm::TrackResult ub = u.track(blank, blank);
+  EXPECT_TRUE(ub.steady);
+  EXPECT_FALSE(ub.escalated);
+  EXPECT_LE(ub.evaluations, 300);
   // Out of range: refused.
   p.steadyBudgetFraction = 0;
   EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::Error);
@@ -225,7 +244,7 @@ struct TrustRun
   int firstTrusted = -1;
 };
 
-TrustRun runStill(long verifyEvaluations, int frames, double threshold = 0.95)
+TrustRun runStill(long verifyEvaluations, int frames, double threshold = 0.95, double lockConfidence = 0)
 {
   const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
@@ -238,6 +257,7 @@ TrustRun runStill(long verifyEvaluations, int frames, double threshold = 0.95)
   p.ga.predictMotion = true;
   p.ga.refineEvaluations = 100;
   p.ga.restartGenerations = 30;
+  p.lockConfidence = lockConfidence; // 0: the wrong first lock of this case is taken, for the verification to undo
   p.verifyEvaluations = verifyEvaluations;
   p.confidence.threshold = threshold;
   pm::PhotoModelTracker t(rig, sm.build.model, p);
@@ -272,12 +292,28 @@ TEST(Tracker, AWrongFirstLockIsNotTrustedTheChallengerFindsTheTarget)
   // it scores as well) ...
   EXPECT_LT(v.confidence[0], 0.5);
   // ... and what protects is the gate: without the verification and with any confidence taken,
-  // the same run trusts the wrong lock.
-  const TrustRun n = runStill(0, 5, 0.001);
+  // the same run trusts the wrong lock (its confidence is about 0.0002: the threshold is under it).
+  const TrustRun n = runStill(0, 5, 1e-6);
   bool trustedWrong = false;
   for (std::size_t k = 0; k < n.trusted.size(); ++k)
     trustedWrong = trustedWrong || (n.trusted[k] && !n.right[k]);
   EXPECT_TRUE(trustedWrong);
+}
+
+TEST(Tracker, APlainlyWrongPoseIsNotLockedTheSearchGoesOn)
+{
+  // The same case with the lock gated by its confidence (the default): the pose that locked
+  // above (confidence about 0.0002) is not taken; the search goes on, and the first lock is right.
+  const TrustRun g = runStill(6000, 40, 0.95, 0.05);
+  ASSERT_FALSE(g.tracking[0]);
+  int firstLock = -1;
+  for (std::size_t k = 0; k < g.tracking.size() && firstLock < 0; ++k)
+    if (g.tracking[k])
+      firstLock = static_cast<int>(k);
+  ASSERT_GE(firstLock, 0) << "never locked";
+  for (std::size_t k = static_cast<std::size_t>(firstLock); k < g.tracking.size(); ++k)
+    EXPECT_TRUE(g.tracking[k] && g.right[k]) << "frame " << k;
+  EXPECT_GE(g.firstTrusted, 0);
 }
 
 TEST(Tracker, BadInputIsRefused)
@@ -320,6 +356,14 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.verifySameObjectMm = 45;
   p.confidence.weights[2] = -3.25;
   p.confidence.threshold = 0.7;
+  p.smoothAscent.maxEvaluations = 31;
+  p.smoothAscent.minStepPx = 0.03;
+  p.smoothAscentMaxDrop = 0.04;
+  p.tiltFilter.alpha = 0.35;
+  p.tiltFilter.gateDeg = 7;
+  p.rejectMarginQ = 0.25;
+  p.coarseSearch = false;
+  p.steadyEscalation = false;
   pm::test::writeText(d.file("t.json"), pm::io::trackerConfigToJson(p));
   const pm::TrackerParams q = pm::io::loadTrackerConfig(d.file("t.json"));
   EXPECT_EQ(q.budgetEvaluations, 1234);
@@ -333,6 +377,14 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_DOUBLE_EQ(q.verifySameObjectMm, 45);
   EXPECT_DOUBLE_EQ(q.confidence.weights[2], -3.25);
   EXPECT_DOUBLE_EQ(q.confidence.threshold, 0.7);
+  EXPECT_EQ(q.smoothAscent.maxEvaluations, 31);
+  EXPECT_DOUBLE_EQ(q.smoothAscent.minStepPx, 0.03);
+  EXPECT_DOUBLE_EQ(q.smoothAscentMaxDrop, 0.04);
+  EXPECT_DOUBLE_EQ(q.tiltFilter.alpha, 0.35);
+  EXPECT_DOUBLE_EQ(q.tiltFilter.gateDeg, 7);
+  EXPECT_DOUBLE_EQ(q.rejectMarginQ, 0.25);
+  EXPECT_FALSE(q.coarseSearch);
+  EXPECT_FALSE(q.steadyEscalation);
   // Partial files keep the defaults.
   pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
   EXPECT_EQ(pm::io::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
@@ -345,6 +397,9 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
       {R"({"format":"visp-photomodel-tracker","version":1,"steady_budget_fraction":1.5})", "steady"},
       {R"({"format":"visp-photomodel-tracker","version":1,"smooth_refine_evaluations":3})", "evaluations are needed"},
       {R"({"format":"visp-photomodel-tracker","version":1,"verify_budget_fraction":1})", "verification"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"smooth_ascent":{"shrink":1}})", "smooth ascent"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"smooth_ascent":{"steps":3}})", "steps"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"tilt_filter":{"alpha":0}})", "tilt filter"},
       {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"threshold":0}})", "threshold"},
       {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"wieghts":[1]}})", "wieghts"},
       {"{ not json", "not valid"},
@@ -354,4 +409,115 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
     const std::string e = pm::test::errorOf([&] { pm::io::loadTrackerConfig(d.file("bad.json")); });
     EXPECT_NE(e.find(expect), std::string::npos) << text << " -> " << e;
   }
+}
+
+TEST(TiltFilter, SmoothsTheTiltOnlyFollowsASteadyTurnAndRestartsOnAJump)
+{
+  pm::TiltFilter f; // alpha 0.2, beta 0.02, gate 5 deg
+  const pm::Phi truth{10, -20, 500, 0.03, -0.02, 0.1};
+  // Measurements whose tilt alternates +-1 deg about the truth, whose position and turn about z
+  // (e3) jitter too: the tilt comes out much steadier, the rest exactly as measured.
+  std::vector<double> tiltErr;
+  for (int k = 0; k < 60; ++k) {
+    const double s = k % 2 ? 1.0 : -1.0;
+    const double d[6] = {0.5 * s, -0.3 * s, 1.0 * s, s * 0.0175, -s * 0.0175, 0.01 * s};
+    const pm::Phi z = pm::applyTwist(truth, d);
+    const pm::Phi out = f.update(z);
+    EXPECT_EQ(out.x, z.x);
+    EXPECT_EQ(out.y, z.y);
+    EXPECT_EQ(out.z, z.z);
+    if (k >= 30)
+      tiltErr.push_back(pm::rotationDistanceDeg(pm::Phi{0, 0, 0, out.e1, out.e2, 0}, pm::Phi{0, 0, 0, truth.e1, truth.e2, 0}));
+    // The turn about the hand's z axis passes: the rotation from the output to the measurement has no z part.
+    const vpThetaUVector r(pm::toHomogeneousMatrix(z).getRotationMatrix() * pm::toHomogeneousMatrix(out).getRotationMatrix().t());
+    EXPECT_NEAR(r[2], 0.0, 1e-3) << k;
+  }
+  for (double e : tiltErr)
+    EXPECT_LT(e, 0.6); // the measurements are 1.4 deg off (1 deg about x and y)
+  // A steady tilting (0.5 deg per frame about x) is followed without a lasting lag.
+  pm::TiltFilter g;
+  pm::Phi p = truth, out;
+  for (int k = 0; k < 80; ++k) {
+    const double turn[6] = {0, 0, 0, 0.5 * M_PI / 180, 0, 0};
+    p = pm::applyTwist(p, turn);
+    out = g.update(p);
+  }
+  EXPECT_LT(pm::rotationDistanceDeg(out, p), 0.1);
+  // A jump past the gate: taken as measured, and the filter starts from it.
+  const double jump[6] = {0, 0, 0, 0.2, 0, 0}; // 11 deg
+  const pm::Phi j = pm::applyTwist(p, jump), gj = g.update(j);
+  EXPECT_EQ(gj.e1, j.e1);
+  EXPECT_EQ(gj.e2, j.e2);
+  EXPECT_EQ(gj.e3, j.e3);
+  // The hand moves: the filtered pose moves with it, so a still target stays still.
+  pm::TiltFilter h;
+  for (int k = 0; k < 5; ++k)
+    h.update(truth);
+  vpHomogeneousMatrix hNowMhPrev(0.01, 0, 0, 0, vpMath::rad(2), 0);
+  h.transform(hNowMhPrev);
+  const pm::Phi seen = pm::fromHomogeneousMatrix(hNowMhPrev * pm::toHomogeneousMatrix(truth));
+  EXPECT_LT(pm::rotationDistanceDeg(h.update(seen), seen), 1e-6);
+  // Off (alpha 1, beta 0): every pose passes unchanged; bad gains are refused.
+  pm::TiltFilterParams off;
+  off.alpha = 1;
+  off.beta = 0;
+  pm::TiltFilter o(off);
+  EXPECT_EQ(o.update(truth).e1, truth.e1);
+  EXPECT_THROW(o.update({0, 0, 500, 0.9, 0.9, 0}), pm::Error);
+  pm::TiltFilterParams bad;
+  bad.alpha = 0;
+  EXPECT_THROW(pm::TiltFilter{bad}, pm::Error);
+  bad = pm::TiltFilterParams();
+  bad.gateDeg = -1;
+  EXPECT_THROW(pm::TiltFilter{bad}, pm::Error);
+}
+
+TEST(Tracker, SearchingFramesScoreManyPosesCoarselyAndReportTheExactFitness)
+{
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(800);
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initialize();
+  const pm::TrackResult r = t.track(S.im.left, S.im.right); // searching: every candidate on a quarter of the points
+  EXPECT_LE(r.evaluations, 801); // the work within the budget (and the best scored exactly)
+  EXPECT_GT(r.candidates, 3 * r.evaluations);
+  EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // F itself, not the estimate
+  // Without the coarse search (only the early rejection of hopeless children) it scores under half as many.
+  p.coarseSearch = false;
+  pm::PhotoModelTracker u(S.rig, S.sm.build.model, p);
+  u.initialize();
+  const pm::TrackResult q = u.track(S.im.left, S.im.right);
+  EXPECT_LE(q.evaluations, 800);
+  EXPECT_LT(2 * q.candidates, r.candidates);
+}
+
+TEST(Tracker, TheSmoothAscentRunsOnLockedFramesWithinItsBudgetAndTheFrameTimeIsAccountedFor)
+{
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(400);
+  p.smoothAscent.maxEvaluations = 10;
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  int climbed = 0;
+  for (int k = 0; k < 20; ++k) {
+    const pm::TrackResult r = t.track(S.im.left, S.im.right);
+    EXPECT_LE(r.ascentEvaluations, 10);
+    if (r.state == pm::TrackState::Tracking && r.quality >= p.lockQuality) {
+      ++climbed;
+      EXPECT_GT(r.ascentEvaluations, 0);
+    }
+    EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // the fitness reported is the pose's
+    double sum = 0;
+    for (double ms : r.stageMs) {
+      EXPECT_GE(ms, 0.0);
+      sum += ms;
+    }
+    EXPECT_NEAR(sum, r.computeMs, 1e-6);
+  }
+  EXPECT_GT(climbed, 15);
+  // Off: no climb.
+  p.smoothAscent.maxEvaluations = 0;
+  pm::PhotoModelTracker u(S.rig, S.sm.build.model, p);
+  u.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  EXPECT_EQ(u.track(S.im.left, S.im.right).ascentEvaluations, 0);
 }

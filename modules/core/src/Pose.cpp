@@ -61,6 +61,31 @@ Phi fromHomogeneousMatrix(const vpHomogeneousMatrix &hMo)
   return p;
 }
 
+Phi applyTwist(const Phi &phi, const double twist[6])
+{
+  Phi q = phi;
+  q.x += twist[0];
+  q.y += twist[1];
+  q.z += twist[2];
+  const double th = std::sqrt(twist[3] * twist[3] + twist[4] * twist[4] + twist[5] * twist[5]);
+  if (th == 0)
+    return q;
+  // q' = q_w (x) q (Hamilton; Eq. (7) is its rotation matrix, so R(q_w (x) q) = exp(w) R(q)).
+  const double c = std::cos(0.5 * th), s = std::sin(0.5 * th) / th;
+  const double w[3] = {s * twist[3], s * twist[4], s * twist[5]};
+  const double n = phi.eta();
+  double eta = c * n - (w[0] * phi.e1 + w[1] * phi.e2 + w[2] * phi.e3);
+  double e1 = c * phi.e1 + n * w[0] + (w[1] * phi.e3 - w[2] * phi.e2);
+  double e2 = c * phi.e2 + n * w[1] + (w[2] * phi.e1 - w[0] * phi.e3);
+  double e3 = c * phi.e3 + n * w[2] + (w[0] * phi.e2 - w[1] * phi.e1);
+  const double norm = std::sqrt(eta * eta + e1 * e1 + e2 * e2 + e3 * e3);
+  const double sign = eta < 0 ? -1.0 : 1.0;
+  q.e1 = sign * e1 / norm;
+  q.e2 = sign * e2 / norm;
+  q.e3 = sign * e3 / norm;
+  return q;
+}
+
 double translationDistanceMm(const Phi &a, const Phi &b)
 {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));

@@ -38,14 +38,16 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
   try {
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat);
-    checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lost_quality", "lost_frames",
-                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "steady_hue_margin_px", "smooth_refine_evaluations", "smooth_refine_max_drop", "verify_evaluations",
+    checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lock_confidence", "lost_quality", "lost_frames",
+                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "steady_hue_margin_px", "steady_escalation", "smooth_refine_evaluations", "smooth_refine_max_drop", "smooth_ascent",
+                  "smooth_ascent_max_drop", "tilt_filter", "reject_margin_q", "coarse_search", "verify_evaluations",
                   "verify_budget_fraction", "verify_margin", "verify_switch_margin", "verify_far_mm", "verify_far_deg",
                   "verify_same_object_mm", "reverify_after_frames", "reverify_below_confidence", "confidence", "search_space", "rmga",
                   "fitness"}, "");
     get(j, "budget_ms", p.budgetMs);
     get(j, "budget_evaluations", p.budgetEvaluations);
     get(j, "lock_quality", p.lockQuality);
+    get(j, "lock_confidence", p.lockConfidence);
     get(j, "lost_quality", p.lostQuality);
     get(j, "lost_frames", p.lostFrames);
     get(j, "init_spread", p.initSpread);
@@ -53,8 +55,29 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     get(j, "steady_after_frames", p.steadyAfterFrames);
     get(j, "steady_quality_drop", p.steadyQualityDrop);
     get(j, "steady_hue_margin_px", p.steadyHueMarginPx);
+    get(j, "steady_escalation", p.steadyEscalation);
     get(j, "smooth_refine_evaluations", p.smoothRefineEvaluations);
     get(j, "smooth_refine_max_drop", p.smoothRefineMaxDrop);
+    if (j.contains("smooth_ascent")) {
+      const json &a = j.at("smooth_ascent");
+      checkKeys(a, {"max_evaluations", "first_step_px", "max_step_px", "min_step_px", "grow", "shrink"}, " in \"smooth_ascent\"");
+      get(a, "max_evaluations", p.smoothAscent.maxEvaluations);
+      get(a, "first_step_px", p.smoothAscent.firstStepPx);
+      get(a, "max_step_px", p.smoothAscent.maxStepPx);
+      get(a, "min_step_px", p.smoothAscent.minStepPx);
+      get(a, "grow", p.smoothAscent.grow);
+      get(a, "shrink", p.smoothAscent.shrink);
+    }
+    get(j, "smooth_ascent_max_drop", p.smoothAscentMaxDrop);
+    get(j, "reject_margin_q", p.rejectMarginQ);
+    get(j, "coarse_search", p.coarseSearch);
+    if (j.contains("tilt_filter")) {
+      const json &t = j.at("tilt_filter");
+      checkKeys(t, {"alpha", "beta", "gate_deg"}, " in \"tilt_filter\"");
+      get(t, "alpha", p.tiltFilter.alpha);
+      get(t, "beta", p.tiltFilter.beta);
+      get(t, "gate_deg", p.tiltFilter.gateDeg);
+    }
     get(j, "verify_evaluations", p.verifyEvaluations);
     get(j, "verify_budget_fraction", p.verifyBudgetFraction);
     get(j, "verify_margin", p.verifyMargin);
@@ -122,6 +145,7 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"budget_ms", p.budgetMs},
                {"budget_evaluations", p.budgetEvaluations},
                {"lock_quality", p.lockQuality},
+               {"lock_confidence", p.lockConfidence},
                {"lost_quality", p.lostQuality},
                {"lost_frames", p.lostFrames},
                {"init_spread", p.initSpread},
@@ -129,8 +153,20 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"steady_after_frames", p.steadyAfterFrames},
                {"steady_quality_drop", p.steadyQualityDrop},
                {"steady_hue_margin_px", p.steadyHueMarginPx},
+               {"steady_escalation", p.steadyEscalation},
                {"smooth_refine_evaluations", p.smoothRefineEvaluations},
                {"smooth_refine_max_drop", p.smoothRefineMaxDrop},
+               {"smooth_ascent",
+                {{"max_evaluations", p.smoothAscent.maxEvaluations},
+                 {"first_step_px", p.smoothAscent.firstStepPx},
+                 {"max_step_px", p.smoothAscent.maxStepPx},
+                 {"min_step_px", p.smoothAscent.minStepPx},
+                 {"grow", p.smoothAscent.grow},
+                 {"shrink", p.smoothAscent.shrink}}},
+               {"smooth_ascent_max_drop", p.smoothAscentMaxDrop},
+               {"reject_margin_q", p.rejectMarginQ},
+               {"coarse_search", p.coarseSearch},
+               {"tilt_filter", {{"alpha", p.tiltFilter.alpha}, {"beta", p.tiltFilter.beta}, {"gate_deg", p.tiltFilter.gateDeg}}},
                {"verify_evaluations", p.verifyEvaluations},
                {"verify_budget_fraction", p.verifyBudgetFraction},
                {"verify_margin", p.verifyMargin},

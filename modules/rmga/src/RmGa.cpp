@@ -11,6 +11,14 @@ namespace pm {
 namespace {
 bool lessFit(const Individual &a, const Individual &b) { return a.fitness < b.fitness; }
 bool moreFit(const Individual &a, const Individual &b) { return a.fitness > b.fitness; }
+
+//! Sorts by decreasing fitness, ties in their order (what std::stable_sort does, without its buffer).
+void sortByFitness(std::vector<Individual> &v)
+{
+  for (std::size_t i = 1; i < v.size(); ++i)
+    for (std::size_t j = i; j > 0 && v[j].fitness > v[j - 1].fitness; --j)
+      std::swap(v[j], v[j - 1]);
+}
 } // namespace
 
 void RmGaParams::validate() const
@@ -34,6 +42,7 @@ RmGa::RmGa(const SearchSpace &space, const RmGaParams &params) : m_space(space),
   params.validate();
   m_pop.reserve(static_cast<std::size_t>(params.population));
   m_children.reserve(static_cast<std::size_t>(params.population));
+  m_merged.reserve(static_cast<std::size_t>(params.population));
   randomize();
 }
 
@@ -118,6 +127,18 @@ void RmGa::restart(int keep, int isolate)
     m_isolated = m_pop[0].genome;
 }
 
+void RmGa::scatter(int keep, int isolate)
+{
+  std::sort(m_pop.begin(), m_pop.end(), moreFit);
+  const std::size_t first = static_cast<std::size_t>(std::clamp(keep, 0, m_params.population));
+  const std::vector<Individual> kept(m_pop.begin(), m_pop.begin() + static_cast<std::ptrdiff_t>(first));
+  restart(0); // all new: random, and from the anchor when there is one
+  std::copy(kept.begin(), kept.end(), m_pop.begin());
+  m_isolation = first > 0 ? std::max(0, isolate) : 0;
+  if (m_isolation > 0)
+    m_isolated = m_pop[0].genome;
+}
+
 void RmGa::transform(const std::function<Phi(const Phi &)> &f)
 {
   for (auto &ind : m_pop) {
@@ -133,17 +154,20 @@ void RmGa::transform(const std::function<Phi(const Phi &)> &f)
     m_prev2 = f(m_prev2);
 }
 
-void RmGa::evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, long &evals)
+void RmGa::evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, double &cost, long &candidates, double rejectBelow)
 {
   const std::size_t n = ind.size() - from;
   m_batch.resize(n);
   m_scores.resize(n);
+  m_costs.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     m_batch[i] = ind[from + i].phi;
-  f.evaluate(m_batch.data(), n, m_scores.data());
-  for (std::size_t i = 0; i < n; ++i)
+  f.evaluateOrReject(m_batch.data(), n, rejectBelow, m_scores.data(), m_costs.data());
+  for (std::size_t i = 0; i < n; ++i) {
     ind[from + i].fitness = std::isfinite(m_scores[i]) ? m_scores[i] : -1e300;
-  evals += static_cast<long>(n);
+    cost += std::clamp(m_costs[i], 0.0, 1.0);
+  }
+  candidates += static_cast<long>(n);
 }
 
 const Individual &RmGa::tournament()
@@ -174,12 +198,12 @@ void RmGa::mutate(Genome &g)
     g.flip(k);
 }
 
-void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
+void RmGa::refine(FitnessFunction &f, double maxEvals, double &cost, long &candidates)
 {
   // Pattern search on the genes of the best individual: +-step on each variable, halving the step.
   auto bestIt = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
   Individual best = *bestIt;
-  long used = 0;
+  double used = 0;
   m_trial.resize(1); // a member: the hot path allocates nothing after the first frame
   for (int step = 16; step >= 1 && used < maxEvals; step /= 2) {
     bool improved = true;
@@ -195,9 +219,7 @@ void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
             continue;
           g.gene[i] = static_cast<std::uint16_t>(v);
           m_trial[0] = make(g);
-          long e = 0;
-          evaluate(f, m_trial, 0, e);
-          used += e;
+          evaluate(f, m_trial, 0, used, candidates);
           if (m_trial[0].fitness > best.fitness) {
             best = m_trial[0];
             improved = true;
@@ -206,11 +228,11 @@ void RmGa::refine(FitnessFunction &f, long maxEvals, long &evals)
         }
     }
   }
-  evals += used;
+  cost += used;
   *bestIt = best;
 }
 
-FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
+FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sameFrame)
 {
   if (!(budget.evaluations > 0) && !(budget.milliseconds > 0))
     throw Error("RM-GA: the frame budget must be a positive number of evaluations or milliseconds");
@@ -219,7 +241,7 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
   FrameResult r;
 
   // 2. Prediction: constant velocity of the best pose over the last two frames.
-  if (m_params.predictMotion && m_havePrev && m_havePrev2) {
+  if (m_params.predictMotion && m_havePrev && m_havePrev2 && !sameFrame) {
     Phi v;
     for (std::size_t i = 0; i < 6; ++i)
       v[i] = m_prev[i] - m_prev2[i];
@@ -236,13 +258,14 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
     m_pop[static_cast<std::size_t>(worst)] = stay;
   }
   // 3. Evaluate everyone on the new frame.
-  long evals = 0;
-  evaluate(f, m_pop, 0, evals);
-  const long refineEvals = m_params.refineEvaluations;
+  double evals = 0; // the work, in whole evaluations
+  long candidates = 0;
+  evaluate(f, m_pop, 0, evals, candidates);
+  const double refineEvals = m_params.refineEvaluations;
   const bool byEvals = budget.evaluations > 0;
-  const long gaEvals = byEvals ? std::max<long>(0, budget.evaluations - refineEvals) : 0;
-  const double perEvalMs = elapsedMs() / static_cast<double>(std::max<long>(1, evals));
-  const double gaMs = byEvals ? 0.0 : budget.milliseconds - perEvalMs * static_cast<double>(refineEvals);
+  const double gaEvals = byEvals ? std::max(0.0, static_cast<double>(budget.evaluations) - refineEvals) : 0.0;
+  const double perEvalMs = elapsedMs() / std::max(1.0, evals);
+  const double gaMs = byEvals ? 0.0 : budget.milliseconds - perEvalMs * refineEvals;
   const int n = m_params.population, lambda = n - m_params.elite;
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   std::uniform_int_distribution<int> cut(1, 6 * Genome::kBits - 1);
@@ -251,7 +274,7 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
   for (const auto &i : m_pop)
     bestSoFar = std::max(bestSoFar, i.fitness);
   // 4-7. Generations.
-  while (byEvals ? evals + lambda <= gaEvals : elapsedMs() < gaMs) {
+  while (byEvals ? evals + lambda <= gaEvals : elapsedMs() < gaMs) { // (a generation's children cost at most lambda)
     m_children.clear();
     while (static_cast<int>(m_children.size()) < lambda) {
       const Individual &a = tournament(), &b = tournament();
@@ -267,11 +290,16 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
       if (static_cast<int>(m_children.size()) < lambda)
         m_children.push_back(make(c2));
     }
-    evaluate(f, m_children, 0, evals);
-    // The best n of parents and children survive.
-    m_pop.insert(m_pop.end(), m_children.begin(), m_children.end());
-    std::stable_sort(m_pop.begin(), m_pop.end(), moreFit);
-    m_pop.resize(static_cast<std::size_t>(n));
+    // A child under the worst parent cannot survive: it need not be scored exactly.
+    const double worst = std::min_element(m_pop.begin(), m_pop.end(), lessFit)->fitness;
+    evaluate(f, m_children, 0, evals, candidates, worst);
+    // The best n of parents and children survive (on a tie, a parent before a child, and each in its order).
+    sortByFitness(m_pop);
+    sortByFitness(m_children);
+    m_merged.clear();
+    for (std::size_t i = 0, j = 0; m_merged.size() < static_cast<std::size_t>(n);)
+      m_merged.push_back(j == m_children.size() || (i < m_pop.size() && m_pop[i].fitness >= m_children[j].fitness) ? m_pop[i++] : m_children[j++]);
+    m_pop.swap(m_merged);
     ++r.generations;
     if (m_isolation > 0)
       --m_isolation;
@@ -280,21 +308,24 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget)
       stagnant = 0;
     } else if (m_params.restartGenerations > 0 && ++stagnant >= m_params.restartGenerations) {
       restart(1, m_params.restartGenerations);
-      evaluate(f, m_pop, 1, evals);
+      evaluate(f, m_pop, 1, evals, candidates);
       stagnant = 0;
       r.restarted = true;
     }
   }
   // 8. Local refinement of the best.
   if (refineEvals > 0)
-    refine(f, byEvals ? budget.evaluations - evals : refineEvals, evals);
+    refine(f, byEvals ? std::floor(static_cast<double>(budget.evaluations) - evals + 1e-9) : refineEvals, evals, candidates);
   // 9. The best is the frame's pose.
   const auto best = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
   r.best = best->phi;
   r.fitness = best->fitness;
-  r.evaluations = evals;
-  m_prev2 = m_prev;
-  m_havePrev2 = m_havePrev;
+  r.evaluations = static_cast<long>(std::ceil(evals - 1e-9));
+  r.candidates = candidates;
+  if (!sameFrame || !m_havePrev) {
+    m_prev2 = m_prev;
+    m_havePrev2 = m_havePrev;
+  }
   m_prev = r.best;
   m_havePrev = true;
   return r;

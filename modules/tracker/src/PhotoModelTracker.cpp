@@ -41,6 +41,15 @@ void TrackerParams::validate() const
     sp.maxEvaluations = smoothRefineEvaluations;
     sp.validate();
   }
+  if (smoothAscent.maxEvaluations != 0) // 0: off
+    smoothAscent.validate();
+  if (!(smoothAscentMaxDrop >= 0))
+    throw Error("tracker: the smooth ascent's fitness drop must be non-negative");
+  tiltFilter.validate();
+  if (!(lockConfidence >= 0 && lockConfidence < 1))
+    throw Error("tracker: the lock confidence must lie in [0, 1)");
+  if (!(rejectMarginQ <= 1))
+    throw Error("tracker: the early rejection margin must be at most 1 (negative: off)");
   if (!(initSpread >= 0 && initSpread <= 1))
     throw Error("tracker: the initial spread must lie in [0, 1]");
   if (reverifyAfterFrames < 0 || !(reverifyBelowConfidence >= 0 && reverifyBelowConfidence <= 1) || verifyEvaluations < 0 || verifyEvaluations > 100000000 || !(verifyBudgetFraction > 0 && verifyBudgetFraction < 1) || !(verifyMargin >= 0) ||
@@ -82,7 +91,7 @@ FrameBudget TrackerParams::steadyBudget() const
 
 PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
     : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga),
-      m_challenger(params.space, challengerParams(params.ga))
+      m_challenger(params.space, challengerParams(params.ga)), m_tilt(params.tiltFilter)
 {
   const FitnessParams &f = params.fitness;
   const double n = static_cast<double>(model.size());
@@ -135,6 +144,42 @@ std::array<PixelRect, 2> PhotoModelTracker::steadyWindows() const
   return w;
 }
 
+ConfidenceCues PhotoModelTracker::cuesAt(const Phi &phi, double q, const Phi *last) const
+{
+  ConfidenceCues c;
+  const FitnessDetail d = m_fitness.evaluateDetail(phi);
+  c.quality = q;
+  c.qualityMin = std::min(quality(d.left), quality(d.right));
+  auto shares = [](const FitnessCounts &n, double &in, double &out) {
+    const int nIn = n.inMatch + n.inBackground + n.inOther + n.inOff, nOut = n.outBackground + n.outOther + n.outOff;
+    in = nIn > 0 ? static_cast<double>(n.inMatch) / nIn : 0.0;
+    out = nOut > 0 ? static_cast<double>(n.outBackground) / nOut : 0.0;
+  };
+  double inL, outL, inR, outR;
+  shares(d.countsLeft, inL, outL);
+  shares(d.countsRight, inR, outR);
+  c.inMatchMin = std::min(inL, inR);
+  c.outBackgroundMin = std::min(outL, outR);
+  const double r22 = 1.0 - 2.0 * (phi.e1 * phi.e1 + phi.e2 * phi.e2); // the model's z axis . the hand's
+  c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;
+  // Competing poses of the same object: turned about the model's z axis, or the tilt mirrored.
+  std::array<Phi, 8> rivals;
+  std::array<double, 8> rivalF{};
+  std::size_t nRivals = 0;
+  for (const Phi &p : competitors(phi))
+    if (p.isValid() && rotationDistanceDeg(p, phi) > m_params.verifyFarDeg) // a mirrored small tilt is the same pose
+      rivals[nRivals++] = p;
+  m_fitness.evaluate(rivals.data(), nRivals, rivalF.data()); // one batch, on two cores
+  double qAlt = -1e9;
+  for (std::size_t k = 0; k < nRivals; ++k)
+    qAlt = std::max(qAlt, quality(rivalF[k]));
+  c.competitorMargin = q - qAlt;
+  c.qualityDrop = std::max(0.0, m_recentBestQ - q);
+  c.jumpMm = last ? translationDistanceMm(phi, *last) : 0.0;
+  c.jumpDeg = last ? rotationDistanceDeg(phi, *last) : 0.0;
+  return c;
+}
+
 void PhotoModelTracker::resetCounters()
 {
   m_lowFrames = 0;
@@ -145,6 +190,7 @@ void PhotoModelTracker::resetCounters()
   m_framesTracked = 0;
   m_untrustedFrames = 0;
   m_haveBeforeLast = false;
+  m_tilt.reset();
 }
 
 void PhotoModelTracker::startVerification(const Phi &lock)
@@ -167,8 +213,14 @@ void PhotoModelTracker::startVerification(const Phi &lock)
 
 void PhotoModelTracker::verify(StereoObjective &objective, const FrameBudget &budget, TrackResult &r)
 {
-  const FrameResult c = m_challenger.evolve(objective, budget);
+  FrameResult c = m_challenger.evolve(objective, budget);
+  if (m_params.coarseSearch) { // its best on every point, to compare with the tracker's F
+    c.fitness = m_fitness.evaluate(c.best);
+    ++c.evaluations;
+    ++c.candidates;
+  }
   r.evaluations += c.evaluations;
+  r.candidates += c.candidates;
   r.generations += c.generations;
   const double apartMm = translationDistanceMm(c.best, r.phi);
   const bool far = apartMm > m_params.verifyFarMm || rotationDistanceDeg(c.best, r.phi) > m_params.verifyFarDeg;
@@ -178,6 +230,7 @@ void PhotoModelTracker::verify(StereoObjective &objective, const FrameBudget &bu
     r.phi = c.best;
     r.fitness = c.fitness;
     r.switched = true;
+    m_tilt.reset();
     startVerification(c.best);
   } else if (far && apartMm < m_params.verifySameObjectMm && quality(c.fitness) > quality(r.fitness) - m_params.verifyMargin) {
     startVerification(r.phi); // another pose of the same object scores as well: ambiguous, look again
@@ -222,6 +275,7 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
     m_challenger.transform(moved);
   m_last.hMo = hNowMhPrev * m_last.hMo;
   m_last.phi = fromHomogeneousMatrix(m_last.hMo);
+  m_tilt.transform(hNowMhPrev);
   if (m_haveBeforeLast)
     m_beforeLast = moved(m_beforeLast);
 }
@@ -229,19 +283,59 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
 TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  const bool steady = m_steadyFrames >= m_params.steadyAfterFrames && m_verifyLeft == 0; // a verifying frame gets the whole budget, split
-  const bool windowed = steady && m_params.steadyHueMarginPx > 0;
+  auto msSinceStart = [&] { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); };
+  double mark[3]; // the ends of the hue, the search (but the verification) and the ascent and tilt
+  double verifyMs = 0;
+  // Verifying a lock: the challenger gets its share of the whole budget, on the whole images; the
+  // main search keeps the steady budget when the tracking is steady, else the rest of the whole one.
+  const bool verifying = m_verifyLeft > 0 && m_last.state == TrackState::Tracking;
+  const bool steady = m_steadyFrames >= m_params.steadyAfterFrames;
+  bool windowed = steady && !verifying && m_params.steadyHueMarginPx > 0;
   if (windowed)
     m_fitness.setImages(left, right, steadyWindows());
   else
     m_fitness.setImages(left, right);
-  StereoObjective objective(m_fitness);
-  FrameBudget budget = steady ? m_params.steadyBudget() : m_params.budget();
-  if (budget.milliseconds > 0) // the hue planes are part of the frame's time
-    budget.milliseconds = std::max(0.05, budget.milliseconds - std::chrono::duration<double, std::milli>(
-                                                                    std::chrono::steady_clock::now() - t0).count());
-  const bool verifying = m_verifyLeft > 0 && m_last.state == TrackState::Tracking;
-  const FrameResult fr = m_ga.evolve(objective, verifying ? part(budget, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population) : budget);
+  mark[0] = msSinceStart();
+  StereoObjective objective(m_fitness, StereoObjective::Score::Fitness,
+                            m_params.rejectMarginQ < 0 ? -1.0 : m_params.rejectMarginQ * (m_fMax - m_fBackground));
+  FrameBudget whole = m_params.budget();
+  if (whole.milliseconds > 0) // the hue planes are part of the frame's time
+    whole.milliseconds = std::max(0.05, whole.milliseconds - mark[0]);
+  const FrameBudget challengerBudget = part(whole, m_params.verifyBudgetFraction, m_params.ga.population);
+  FrameBudget budget = whole;
+  if (steady)
+    budget = m_params.steadyBudget();
+  else if (verifying)
+    budget = part(whole, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population);
+  const bool coarse = m_params.coarseSearch && m_last.state != TrackState::Tracking;
+  StereoObjective coarseObjective(m_fitness, StereoObjective::Score::Coarse);
+  FrameResult fr = m_ga.evolve(coarse ? coarseObjective : objective, budget);
+  if (coarse) { // the estimate of the best, then F itself
+    fr.fitness = m_fitness.evaluate(fr.best);
+    ++fr.evaluations;
+    ++fr.candidates;
+  }
+  bool escalated = false;
+  if (steady && m_params.steadyEscalation && quality(fr.fitness) < m_recentBestQ - m_params.steadyQualityDrop) {
+    // The steady frame went wrong: the rest of the whole budget at once, on the whole images.
+    escalated = true;
+    if (windowed) {
+      m_fitness.setImages(left, right);
+      windowed = false;
+    }
+    FrameBudget rest = verifying ? part(whole, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population) : whole;
+    if (rest.evaluations > 0)
+      rest.evaluations = std::max<long>(m_params.ga.population, rest.evaluations - fr.evaluations);
+    else
+      rest.milliseconds = std::max(0.05, rest.milliseconds - std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    const FrameResult more = m_ga.evolve(objective, rest, true);
+    fr.best = more.best;
+    fr.fitness = more.fitness;
+    fr.evaluations += more.evaluations;
+    fr.candidates += more.candidates;
+    fr.generations += more.generations;
+    fr.restarted = fr.restarted || more.restarted;
+  }
   TrackResult r;
   r.phi = fr.best;
   r.fitness = fr.fitness;
@@ -258,15 +352,54 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
       r.fitness = f;
     }
   }
+  mark[1] = msSinceStart();
+  const bool locked = quality(r.fitness) >= m_params.lockQuality;
+  if (m_params.smoothAscent.maxEvaluations > 0 && locked) {
+    // The top of the smooth score near RM-GA's best, or near the last frame's pose if that scores higher
+    // (the GA's best wanders over F's plateau from frame to frame).
+    const Phi starts[2] = {r.phi, m_last.phi};
+    const std::size_t n = m_last.state == TrackState::Tracking && m_last.phi.isValid() && m_params.smoothAscent.maxEvaluations > 1 ? 2 : 1;
+    const SmoothAscentResult a = climbSmooth(objective, starts, n, m_params.smoothAscent);
+    r.ascentEvaluations = a.evaluations;
+    const double f = m_fitness.evaluate(a.best);
+    if (f >= r.fitness - m_params.smoothAscentMaxDrop) {
+      r.phi = a.best;
+      r.fitness = f;
+    }
+  }
+  if (!m_params.tiltFilter.passesThrough()) {
+    if (locked && m_last.state == TrackState::Tracking) {
+      r.phi = m_tilt.update(r.phi);
+      r.fitness = m_fitness.evaluate(r.phi);
+    } else {
+      m_tilt.reset();
+    }
+  }
+  mark[2] = msSinceStart();
   r.evaluations = fr.evaluations;
+  r.candidates = fr.candidates;
   r.generations = fr.generations;
-  if (verifying)
-    verify(objective, part(budget, m_params.verifyBudgetFraction, m_params.ga.population), r);
+  if (verifying) {
+    const double v0 = msSinceStart();
+    verify(m_params.coarseSearch ? coarseObjective : objective, challengerBudget, r);
+    verifyMs = msSinceStart() - v0;
+  }
   r.hMo = toHomogeneousMatrix(r.phi);
   r.quality = quality(r.fitness);
   // The state machine.
   const TrackState prev = m_last.state;
-  if (r.quality >= m_params.lockQuality) {
+  bool lockDoubted = false;
+  if (r.quality >= m_params.lockQuality && prev != TrackState::Tracking && m_params.lockConfidence > 0) {
+    // A new lock: only if it would not be plainly wrong (its confidence as a first, unverified lock).
+    ConfidenceCues lock = cuesAt(r.phi, r.quality, nullptr);
+    lock.framesTracked = 1;
+    lock.verified = m_params.verifyEvaluations == 0;
+    lock.tracking = true;
+    lockDoubted = m_params.confidence.confidence(lock) < m_params.lockConfidence;
+    if (lockDoubted) // the search converged on a plainly wrong pose: search everywhere again, that pose kept apart
+      m_ga.scatter(1, m_params.ga.restartGenerations);
+  }
+  if (r.quality >= m_params.lockQuality && !lockDoubted) {
     r.state = TrackState::Tracking;
     m_lowFrames = 0;
   } else if (prev == TrackState::Tracking) {
@@ -284,15 +417,16 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     m_verified = false, m_verifyLeft = 0;
   m_framesTracked = r.state == TrackState::Tracking ? m_framesTracked + 1 : 0;
   // Steadiness for the next frame's budget.
-  r.steady = steady;
+  r.steady = steady && !escalated;
+  r.escalated = escalated;
   // The recent best is remembered through a loss, so that a relock on a wrong pose (lower q) is
   // not taken for steady and keeps the whole budget to find the true one.
   m_recentBestQ = std::max(r.state == TrackState::Tracking ? r.quality : 0.0, m_recentBestQ - 0.001);
   m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
   // The confidence, from the frame's cues (scored on the whole images: the hue under the poses
   // they look at is added where a steady frame's windows left it out).
-  const std::array<Phi, 8> alt = competitors(r.phi);
   if (windowed) {
+    const std::array<Phi, 8> alt = competitors(r.phi);
     std::array<Phi, 9> seen;
     std::size_t n = 0;
     seen[n++] = r.phi;
@@ -301,32 +435,8 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
         seen[n++] = p;
     m_fitness.addHueUnder(left, right, seen.data(), n);
   }
-  const FitnessDetail d = m_fitness.evaluateDetail(r.phi);
   ConfidenceCues &c = r.cues;
-  c.quality = r.quality;
-  c.qualityMin = std::min(quality(d.left), quality(d.right));
-  auto shares = [](const FitnessCounts &n, double &in, double &out) {
-    const int nIn = n.inMatch + n.inBackground + n.inOther + n.inOff, nOut = n.outBackground + n.outOther + n.outOff;
-    in = nIn > 0 ? static_cast<double>(n.inMatch) / nIn : 0.0;
-    out = nOut > 0 ? static_cast<double>(n.outBackground) / nOut : 0.0;
-  };
-  double inL, outL, inR, outR;
-  shares(d.countsLeft, inL, outL);
-  shares(d.countsRight, inR, outR);
-  c.inMatchMin = std::min(inL, inR);
-  c.outBackgroundMin = std::min(outL, outR);
-  const double r22 = 1.0 - 2.0 * (r.phi.e1 * r.phi.e1 + r.phi.e2 * r.phi.e2); // the model's z axis . the hand's
-  c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;
-  // Competing poses of the same object: turned about the model's z axis, or the tilt mirrored.
-  const Phi b = r.phi;
-  double qAlt = -1e9;
-  for (const Phi &p : alt)
-    if (p.isValid() && rotationDistanceDeg(p, b) > m_params.verifyFarDeg) // a mirrored small tilt is the same pose
-      qAlt = std::max(qAlt, quality(m_fitness.evaluate(p)));
-  c.competitorMargin = r.quality - qAlt;
-  c.qualityDrop = std::max(0.0, m_recentBestQ - r.quality);
-  c.jumpMm = prev == TrackState::Tracking ? translationDistanceMm(r.phi, m_last.phi) : 0.0;
-  c.jumpDeg = prev == TrackState::Tracking ? rotationDistanceDeg(r.phi, m_last.phi) : 0.0;
+  c = cuesAt(r.phi, r.quality, prev == TrackState::Tracking ? &m_last.phi : nullptr);
   c.framesTracked = m_framesTracked;
   c.verified = m_verified;
   c.tracking = r.state == TrackState::Tracking;
@@ -341,7 +451,8 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     m_untrustedFrames = 0;
     startVerification(r.phi);
   }
-  r.computeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.computeMs = msSinceStart();
+  r.stageMs = {mark[0], mark[1] - mark[0] + verifyMs, mark[2] - mark[1], r.computeMs - mark[2] - verifyMs};
   m_beforeLast = m_last.phi;
   m_haveBeforeLast = prev == TrackState::Tracking && r.state == TrackState::Tracking;
   m_last = r;

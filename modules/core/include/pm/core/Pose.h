@@ -46,6 +46,12 @@ inline Rot3 rotationOf(const Phi &p)
 
 //! phi -> hMo (metres). Throws pm::Error if phi is not valid (|eps| > 1 or not finite).
 vpHomogeneousMatrix toHomogeneousMatrix(const Phi &phi);
+/*!
+  \e phi moved by a small motion \e twist of the model about its own origin, expressed in the hand
+  frame: the origin moves by (twist[0], twist[1], twist[2]) mm and the model turns by the rotation
+  vector (twist[3], twist[4], twist[5]) (rad): hMo' = [exp(w) R, t + v]. The result has eta >= 0.
+*/
+Phi applyTwist(const Phi &phi, const double twist[6]);
 //! Distance between the positions of \e a and \e b (mm).
 double translationDistanceMm(const Phi &a, const Phi &b);
 //! Angle of the rotation between the orientations of \e a and \e b (deg, in [0, 180]).

@@ -117,6 +117,19 @@ public:
   //! F for \e n poses into \e out, on two cores (BatchPool); the same values. Same contract.
   void evaluate(const Phi *phis, std::size_t n, double *out) const;
   /*!
+    Early rejection of hopeless poses: F for \e n poses as evaluate(), except that a pose whose
+    first share of points (an even sample of S_in and S_out: every kRejectStride-th point) already
+    puts its estimated F under \e rejectBelow stops there; its \e out is then that estimate (under
+    \e rejectBelow) and \e cost[i] the share of the work done (about 1 / kRejectStride), else F
+    exactly and 1. Deterministic: the same poses and threshold give the same values whoever
+    computes them. Same contract as evaluate().
+      \code
+      fitness.evaluate(children, n, F, worstSurvivor - margin, cost); // a GA's children
+      \endcode
+  */
+  void evaluate(const Phi *phis, std::size_t n, double *out, double rejectBelow, double *cost) const;
+  static constexpr std::size_t kRejectStride = 4;
+  /*!
     F with each point's score interpolated bilinearly between the four pixels around its exact
     projection (each pixel scored as evaluate() scores the pixel a point lands on): continuous in
     phi, so that a local continuous search can climb it where F is a staircase (steps of one
@@ -125,6 +138,20 @@ public:
     nothing. Same contract as evaluate().
   */
   double evaluateSmooth(const Phi &phi) const;
+  /*!
+    The smooth score (evaluateSmooth's, within float rounding: AVX2 where the CPU has it) and its
+    gradient \e grad with respect to a small motion of the model (applyTwist's six components: mm,
+    then rad). With \e metric: the 6x6 (row-major) mean over the points that fall in the images of
+    J^T J, J the 2x6 motion of a point's image per unit of that motion (px per mm, px per rad), so
+    that sqrt(d^T metric d) is the rms image motion of a small motion d. The score is piecewise
+    bilinear in each point's image position: the gradient is exact between pixel boundaries.
+    Allocates nothing; same contract as evaluate().
+      \code
+      double g[6], M[36];
+      const double s = fitness.evaluateSmoothGradient(phi, g, M); // climb along M^-1 g (SmoothAscent)
+      \endcode
+  */
+  double evaluateSmoothGradient(const Phi &phi, double grad[6], double *metric = nullptr) const;
   //! F, F_L, F_R and the class counts of each camera.
   FitnessDetail evaluateDetail(const Phi &phi) const;
   //! Every model point's image position and class in camera \e camera (0 left, 1 right), for drawing.
@@ -162,15 +189,29 @@ private:
   void check(const Phi &phi) const;
   struct Projection projectionOf(int cam, const Phi &phi) const;
   FitnessCounts countCamera(int cam, const Phi &phi) const;
+  //! F of a pose already checked, or, when its first share of points scores it under \e rejectBelow, that estimate (\e cost: the share of the work done).
+  double stereoScoreOrReject(const Phi &phi, double rejectBelow, double &cost) const;
   double score(const FitnessCounts &c) const;
   struct View
   {
     std::size_t inBegin, inEnd, outBegin, outEnd; //!< its S_in and S_out in m_x, m_y, m_z, m_hue
+    //! The first share of each (every kRejectStride-th point of the model's order): [inBegin, inSplit), [outBegin, outSplit).
+    std::size_t inSplit, outSplit;
     double dir[3];                                //!< unit direction of its camera from the model origin
   };
+  //! Counts one camera's points of a view: \e stage 0 all, 1 the first share, 2 the rest.
+  void countView(const struct Projection &p, const View &v, int stage, FitnessCounts &counts) const;
   //! The view scored for a camera at projection \e p: the one whose camera looked from the nearest direction.
   const View &viewFor(const struct Projection &p) const;
-  double smoothCamera(int cam, const Phi &phi) const; //!< the interpolated point scores of its view, normalised
+  /*!
+    Camera \e cam's normalised smooth score at \e phi; adds its gradient to \e grad and (\e metric) its
+    image-motion metric to \e metricOut when given. \e vectorised: the AVX2 kernel where the CPU has
+    it (float sums), else the scalar one (double, the reference).
+  */
+  double smoothCamera(int cam, const Phi &phi, bool vectorised, bool metric, double *grad, double *metricOut, std::size_t *inside) const;
+  //! The smooth score's sums of points [b, e) of a view whose S_in ends at \e inEnd (scalar, double).
+  void smoothSumsScalar(const struct Projection &p, std::size_t b, std::size_t e, std::size_t inEnd, bool metric,
+                        struct SmoothSums &out) const; //!< the interpolated point scores of its view, normalised
   //! A view's summed point scores over its nIn + nOut points, on the scale of the model's own view.
   double normalised(double sum, std::size_t nIn, std::size_t nOut) const;
   //! F of a pose already checked.
@@ -183,6 +224,7 @@ private:
   std::vector<float> m_x, m_y, m_z;
   std::vector<std::int32_t> m_hue;
   std::vector<View> m_views; //!< view 0: the model's own points (the only one of a flat or one-view model)
+  std::vector<std::uint32_t> m_order; //!< m_order[k]: where the k-th point of the model's order (S_in then S_out of each view) is kept
   std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
   std::array<HuePlane, 2> m_planes;
   std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort; //!< null for a camera without distortion

@@ -37,6 +37,21 @@ class FitnessFunction
 public:
   virtual ~FitnessFunction() = default;
   virtual void evaluate(const Phi *poses, std::size_t n, double *fitness) = 0;
+  /*!
+    The same, except that a pose that will score under \e rejectBelow may be given an estimate
+    under \e rejectBelow instead, at a part of the work: \e cost[i] is the share of a whole
+    evaluation spent on pose i (1: scored exactly). RM-GA scores every pose through this: its
+    children with the worst parent's fitness (a child under it cannot survive), the others with
+    -1e300 (nothing to reject). A function may also score every pose by an estimate at a part of
+    the work (a coarse search), saying so in \e cost. The default scores every pose exactly.
+  */
+  virtual void evaluateOrReject(const Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost)
+  {
+    (void)rejectBelow;
+    evaluate(poses, n, fitness);
+    for (std::size_t i = 0; i < n; ++i)
+      cost[i] = 1.0;
+  }
 };
 
 struct RmGaParams
@@ -75,7 +90,8 @@ struct FrameResult
 {
   Phi best;
   double fitness = 0;
-  long evaluations = 0;
+  long evaluations = 0; //!< the work, in whole evaluations (a child rejected early counts its share), rounded up
+  long candidates = 0;  //!< poses scored, exactly or rejected early
   int generations = 0;
   bool restarted = false;
 };
@@ -108,6 +124,12 @@ public:
   */
   void restart(int keep = 1, int isolate = 0);
   /*!
+    A global restart: all but the best \e keep individuals replaced by random ones (half of them
+    from the anchor's two blocks when there is one), the kept ones apart from breeding for
+    \e isolate generations: for a best known to be wrong, around which restart() would search.
+  */
+  void scatter(int keep, int isolate);
+  /*!
     The anchor of the restarts (see restart()); transform() moves it with the population.
     \code
     ga.setAnchor(lastTrusted); // a lost target is searched for near where it was last seen too
@@ -127,9 +149,11 @@ public:
 
   /*!
     Evolves the population on one frame (steps 2-9) within \e budget. Throws pm::Error if the
-    budget is not positive.
+    budget is not positive. \e sameFrame: more generations on the frame of the last call (its
+    fitness may have changed, e.g. scored on more of the image): no motion prediction, and the
+    frame's best replaces the last one in the motion history instead of being added to it.
   */
-  FrameResult evolve(FitnessFunction &f, const FrameBudget &budget);
+  FrameResult evolve(FitnessFunction &f, const FrameBudget &budget, bool sameFrame = false);
 
   const std::vector<Individual> &population() const { return m_pop; }
   const SearchSpace &space() const { return m_space; }
@@ -137,17 +161,19 @@ public:
 
 private:
   Individual make(const Genome &g) const;
-  void evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, long &evals);
+  //! Scores ind[from..]; with \e rejectBelow (children), a hopeless one may be rejected early (FitnessFunction::evaluateOrReject).
+  void evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, double &cost, long &candidates,
+                double rejectBelow = -1e300);
   const Individual &tournament();
   void mutate(Genome &g);
-  void refine(FitnessFunction &f, long maxEvals, long &evals);
+  void refine(FitnessFunction &f, double maxEvals, double &cost, long &candidates);
 
   SearchSpace m_space;
   RmGaParams m_params;
   std::mt19937_64 m_rng;
-  std::vector<Individual> m_pop, m_children, m_trial;
+  std::vector<Individual> m_pop, m_children, m_trial, m_merged;
   std::vector<Phi> m_batch;
-  std::vector<double> m_scores;
+  std::vector<double> m_scores, m_costs;
   bool m_havePrev = false, m_havePrev2 = false;
   Phi m_prev, m_prev2; //!< best of the last two frames, for the motion prediction
   Genome m_isolated;   //!< the best kept by the last restart, which does not breed ...

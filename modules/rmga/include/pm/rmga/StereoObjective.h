@@ -1,30 +1,48 @@
 #pragma once
 /*!
   \file StereoObjective.h
-  The stereo fitness as what RM-GA and the local simplex optimise: F (StereoFitness::evaluate, a
-  batch on two cores) or its smooth score (StereoFitness::evaluateSmooth, one pose at a time).
+  The stereo fitness as what RM-GA and the local searches optimise: F (StereoFitness::evaluate, a
+  batch on two cores) or its smooth score (StereoFitness::evaluateSmooth, one pose at a time), and
+  the smooth score with its gradient for climbSmooth (StereoFitness::evaluateSmoothGradient).
 
       pm::StereoObjective f(fitness);                                     // F, for RM-GA
       pm::StereoObjective s(fitness, pm::StereoObjective::Score::Smooth); // for refineLocalSimplex
       const pm::FrameResult r = ga.evolve(f, pm::FrameBudget::evals(1900));
       const pm::LocalSimplexResult l = pm::refineLocalSimplex(s, r.best, pm::LocalSimplexParams());
+      const pm::SmoothAscentResult a = pm::climbSmooth(f, &r.best, 1, pm::SmoothAscentParams());
 */
 #include "pm/core/StereoFitness.h"
 #include "pm/rmga/RmGa.h"
+#include "pm/rmga/SmoothAscent.h"
 
 namespace pm {
 
-class StereoObjective : public FitnessFunction
+class StereoObjective : public FitnessFunction, public SmoothFunction
 {
 public:
-  enum class Score { Fitness, Smooth };
-  //! \e fitness must outlive the objective.
-  explicit StereoObjective(const StereoFitness &fitness, Score score = Score::Fitness) : m_f(fitness), m_score(score) {}
+  /*!
+    Fitness: F. Coarse: F estimated from the first share of the model's points (an even sample,
+    StereoFitness::kRejectStride; cost about a quarter), for a search that must look at many poses.
+    Smooth: evaluateSmooth.
+  */
+  enum class Score { Fitness, Coarse, Smooth };
+  /*!
+    \e fitness must outlive the objective. \e rejectMargin >= 0 (F's units): a pose is rejected early
+    (evaluateOrReject) only when the estimate from its first share of points lies this far under the
+    threshold (the estimate's own error); a negative margin: never (every pose scored exactly).
+  */
+  explicit StereoObjective(const StereoFitness &fitness, Score score = Score::Fitness, double rejectMargin = -1)
+    : m_f(fitness), m_score(score), m_rejectMargin(rejectMargin)
+  {
+  }
   void evaluate(const Phi *poses, std::size_t n, double *fitness) override;
+  void evaluateOrReject(const Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost) override;
+  double valueAndGradient(const Phi &phi, double grad[6], double *metric) override { return m_f.evaluateSmoothGradient(phi, grad, metric); }
 
 private:
   const StereoFitness &m_f;
   Score m_score;
+  double m_rejectMargin;
 };
 
 } // namespace pm

@@ -38,7 +38,9 @@
 #include "pm/core/StereoFitness.h"
 #include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
+#include "pm/rmga/SmoothAscent.h"
 #include "pm/rmga/StereoObjective.h"
+#include "pm/tracker/TiltFilter.h"
 #include "pm/tracker/TrackConfidence.h"
 
 namespace pm {
@@ -60,21 +62,47 @@ struct TrackerParams
   SearchSpace space;            //!< where phi is searched
   RmGaParams ga;                //!< RM-GA (population, operators, options, seed)
   FitnessParams fitness = trackerFitnessDefaults(); //!< Eqs. (8)-(11)
-  long budgetEvaluations = 0;   //!< per-frame budget: evaluations (deterministic) ...
+  long budgetEvaluations = 0;   //!< per-frame budget: evaluations (deterministic; a pose rejected early counts its share) ...
   double budgetMs = 24.0;       //!< ... or wall time, used when budgetEvaluations is 0 (the paper: 24 ms)
-  double lockQuality = 0.35;    //!< q at or above which the target is tracked
+  /*!
+    Early rejection: RM-GA's children that cannot survive (under the worst parent) are scored on
+    the first quarter of the model's points only (StereoFitness::evaluate with a threshold), when
+    that share's estimate of q lies this much under the threshold's q; otherwise on every point.
+    Negative: never (every child scored exactly).
+  */
+  double rejectMarginQ = 0.15;
+  /*!
+    Coarse search: while searching or lost, and in the verification's challenger, candidates are
+    scored on the first quarter of the model's points (StereoObjective::Score::Coarse: about four
+    times as many poses for the same work); the frame's best is then scored on every point.
+  */
+  bool coarseSearch = true;
+  double lockQuality = 0.35;    //!< q at or above which the target is tracked ...
+  /*!
+    ... when its confidence as a first, unverified lock (TrackConfidence.h) reaches this: a plainly
+    wrong pose (a look-alike of similar hue, the toy turned over) keeps the search going instead
+    of locking and waiting for a challenger. 0: every pose over lockQuality locks.
+  */
+  double lockConfidence = 0.05;
   double lostQuality = 0.2;     //!< q below which, for lostFrames frames, it is lost
   int lostFrames = 3;
   double initSpread = 0.02;     //!< initFromPose: population spread, fraction of each range
   /*!
     Steady frames: once the target has been tracked for steadyAfterFrames frames in a row with q
-    no more than steadyQualityDrop under its recent best (forgotten at 0.001 per frame), a frame
-    gets only this fraction of the budget; any other frame (searching, lost, just locked, q
-    dropping: a jump, an occlusion, a wrong lock) gets the whole budget. 1: every frame the same.
+    no more than steadyQualityDrop under its recent best (forgotten at 0.001 per frame), a frame's
+    search gets only this fraction of the budget (and the smooth ascent does the fine work); any
+    other frame (searching, lost, just locked, q dropping: a jump, an occlusion, a wrong lock) gets
+    the whole budget. 1: every frame the same.
   */
   double steadyBudgetFraction = 1.0;
-  int steadyAfterFrames = 15;
+  int steadyAfterFrames = 3;
   double steadyQualityDrop = 0.03;
+  /*!
+    A steady frame whose q ends more than steadyQualityDrop under the recent best (the target
+    started to move fast, a jump, an occlusion) gets the rest of the whole budget at once, on the
+    whole images, instead of waiting for the next frame (TrackResult::escalated).
+  */
+  bool steadyEscalation = true;
   /*!
     On a steady frame the hue planes are computed only where the model can land: around its
     footprint at the last pose and at the pose its last two frames predict (StereoFitness::
@@ -98,12 +126,29 @@ struct TrackerParams
   LocalSimplexParams smoothRefine; //!< its first steps (its evaluations: smoothRefineEvaluations)
 
   /*!
+    The top of F's plateau, on every frame whose q reaches lockQuality: a climb of the smooth score
+    along its gradient (climbSmooth, StereoFitness::evaluateSmoothGradient; an evaluation costs
+    about what one of F does, pm-bench) from RM-GA's best or the last frame's pose, whichever scores
+    higher, on top of the frame budget. Its pose is the frame's when F there is not lower than at
+    RM-GA's best by more than smoothAscentMaxDrop. smoothAscent.maxEvaluations 0: off.
+  */
+  SmoothAscentParams smoothAscent;
+  double smoothAscentMaxDrop = 0.02;
+  /*!
+    The tilt of the frame's pose smoothed from frame to frame (TiltFilter: alpha-beta on the
+    rotation about the hand's x and y axes, which one viewpoint sees poorly), on tracked frames;
+    alpha 1 and beta 0: off.
+  */
+  TiltFilterParams tiltFilter;
+
+  /*!
     Verification of a new lock: after the tracker locks (from searching or lost), a challenger
     RM-GA, started from the lock with every other individual new (random, the lock's position
     with another orientation, its orientation elsewhere, its tilt mirrored, facing the cameras;
-    see RmGa::restart) and the lock itself kept out of breeding, searches the same frames with
-    verifyBudgetFraction of each frame's budget (taken from the main search, so a frame costs the
-    same). A pose it finds farther than verifyFarMm or verifyFarDeg from the tracker's:
+    see RmGa::restart) and the lock itself kept out of breeding, searches the same frames (on the
+    whole images, coarse when coarseSearch) with verifyBudgetFraction of the whole budget; the main
+    search has the rest of the whole budget, or its steady budget when the tracking is steady. A
+    pose it finds farther than verifyFarMm or verifyFarDeg from the tracker's:
     - scoring over verifySwitchMargin (in q) above it: the tracker moves there (a wrong first
       lock), and verification starts again;
     - within verifySameObjectMm of it and scoring within verifyMargin under it (another pose of
@@ -144,11 +189,19 @@ struct TrackResult
   double fitness = 0;       //!< F at phi
   double quality = 0;       //!< q, the normalised fitness
   TrackState state = TrackState::Searching;
-  long evaluations = 0;
+  long evaluations = 0;     //!< the work of RM-GA and the verification, in whole evaluations (see FrameResult)
+  long candidates = 0;      //!< poses they scored
   int generations = 0;
-  double computeMs = 0;     //!< time spent in track() (hue planes + RM-GA)
-  bool steady = false;      //!< the frame had the steady budget
+  double computeMs = 0;     //!< time spent in track()
+  /*!
+    Where it went (ms): the hue planes; the search (RM-GA, the verification, any escalation and
+    the smooth refinement); the smooth ascent and the tilt filter; the confidence's cues.
+  */
+  std::array<double, 4> stageMs{};
+  bool steady = false;      //!< the frame had the steady budget (and no more)
+  bool escalated = false;   //!< a steady frame whose q fell, given the rest of the whole budget (see TrackerParams::steadyEscalation)
   int smoothEvaluations = 0; //!< evaluations of the smooth score by the local refinement (0: none)
+  int ascentEvaluations = 0; //!< evaluations of the smooth score and its gradient by the climb (0: none)
 
   ConfidenceCues cues;       //!< what the confidence is computed from
   double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)
@@ -199,6 +252,8 @@ private:
   void resetCounters(); //!< the state machine's and the steadiness's, for a new start
   //! Other poses of the same object the confidence compares \e b with (turned about its z axis, its tilt mirrored).
   static std::array<Phi, 8> competitors(const Phi &b);
+  //! The cues of pose \e phi of quality \e q on this frame's images (\e last: the last frame's pose, when it was tracked); the state's own cues are left to the caller.
+  ConfidenceCues cuesAt(const Phi &phi, double q, const Phi *last) const;
   //! A steady frame's hue windows (see TrackerParams::steadyHueMarginPx).
   std::array<PixelRect, 2> steadyWindows() const;
   void startVerification(const Phi &lock);
@@ -220,6 +275,7 @@ private:
   bool m_verified = false;
   int m_framesTracked = 0;
   int m_untrustedFrames = 0; //!< tracked, verified frames in a row under reverifyBelowConfidence
+  TiltFilter m_tilt;
 };
 
 } // namespace pm
