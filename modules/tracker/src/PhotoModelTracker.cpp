@@ -280,54 +280,27 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
     m_beforeLast = moved(m_beforeLast);
 }
 
-TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+FrameResult PhotoModelTracker::search(const Frame &f, StereoObjective &objective, StereoObjective &coarseObjective)
 {
-  const auto t0 = std::chrono::steady_clock::now();
-  auto msSinceStart = [&] { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); };
-  double mark[3]; // the ends of the hue, the search (but the verification) and the ascent and tilt
-  double verifyMs = 0;
-  // Verifying a lock: the challenger gets its share of the whole budget, on the whole images; the
-  // main search keeps the steady budget when the tracking is steady, else the rest of the whole one.
-  const bool verifying = m_verifyLeft > 0 && m_last.state == TrackState::Tracking;
-  const bool steady = m_steadyFrames >= m_params.steadyAfterFrames;
-  bool windowed = steady && !verifying && m_params.steadyHueMarginPx > 0;
-  if (windowed)
-    m_fitness.setImages(left, right, steadyWindows());
-  else
-    m_fitness.setImages(left, right);
-  mark[0] = msSinceStart();
-  StereoObjective objective(m_fitness, StereoObjective::Score::Fitness,
-                            m_params.rejectMarginQ < 0 ? -1.0 : m_params.rejectMarginQ * (m_fMax - m_fBackground));
-  FrameBudget whole = m_params.budget();
-  if (whole.milliseconds > 0) // the hue planes are part of the frame's time
-    whole.milliseconds = std::max(0.05, whole.milliseconds - mark[0]);
-  const FrameBudget challengerBudget = part(whole, m_params.verifyBudgetFraction, m_params.ga.population);
-  FrameBudget budget = whole;
-  if (steady)
-    budget = m_params.steadyBudget();
-  else if (verifying)
-    budget = part(whole, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population);
   const bool coarse = m_params.coarseSearch && m_last.state != TrackState::Tracking;
-  StereoObjective coarseObjective(m_fitness, StereoObjective::Score::Coarse);
-  FrameResult fr = m_ga.evolve(coarse ? coarseObjective : objective, budget);
+  FrameResult fr = m_ga.evolve(coarse ? coarseObjective : objective, f.budget);
   if (coarse) { // the estimate of the best, then F itself
     fr.fitness = m_fitness.evaluate(fr.best);
     ++fr.evaluations;
     ++fr.candidates;
   }
-  bool escalated = false;
-  if (steady && m_params.steadyEscalation && quality(fr.fitness) < m_recentBestQ - m_params.steadyQualityDrop) {
+  if (f.steady && m_params.steadyEscalation && quality(fr.fitness) < m_recentBestQ - m_params.steadyQualityDrop) {
     // The steady frame went wrong: the rest of the whole budget at once, on the whole images.
-    escalated = true;
-    if (windowed) {
-      m_fitness.setImages(left, right);
-      windowed = false;
+    f.escalated = true;
+    if (f.windowed) {
+      m_fitness.setImages(*f.left, *f.right);
+      f.windowed = false;
     }
-    FrameBudget rest = verifying ? part(whole, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population) : whole;
+    FrameBudget rest = f.mainWhole;
     if (rest.evaluations > 0)
       rest.evaluations = std::max<long>(m_params.ga.population, rest.evaluations - fr.evaluations);
     else
-      rest.milliseconds = std::max(0.05, rest.milliseconds - std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      rest.milliseconds = std::max(0.05, rest.milliseconds - (f.msSinceStart() - f.hueMs));
     const FrameResult more = m_ga.evolve(objective, rest, true);
     fr.best = more.best;
     fr.fitness = more.fitness;
@@ -336,23 +309,24 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     fr.generations += more.generations;
     fr.restarted = fr.restarted || more.restarted;
   }
-  TrackResult r;
-  r.phi = fr.best;
-  r.fitness = fr.fitness;
-  if (m_params.smoothRefineEvaluations > 0 && quality(fr.fitness) >= m_params.lockQuality) {
+  return fr;
+}
+
+void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective)
+{
+  if (m_params.smoothRefineEvaluations > 0 && quality(r.fitness) >= m_params.lockQuality) {
     // The top of F's plateau: a continuous search of the smooth score from RM-GA's best.
     StereoObjective smooth(m_fitness, StereoObjective::Score::Smooth);
     LocalSimplexParams sp = m_params.smoothRefine;
     sp.maxEvaluations = m_params.smoothRefineEvaluations;
-    const LocalSimplexResult lr = refineLocalSimplex(smooth, fr.best, sp);
+    const LocalSimplexResult lr = refineLocalSimplex(smooth, r.phi, sp);
     r.smoothEvaluations = lr.evaluations;
     const double f = m_fitness.evaluate(lr.best);
-    if (f >= fr.fitness - m_params.smoothRefineMaxDrop) {
+    if (f >= r.fitness - m_params.smoothRefineMaxDrop) {
       r.phi = lr.best;
       r.fitness = f;
     }
   }
-  mark[1] = msSinceStart();
   const bool locked = quality(r.fitness) >= m_params.lockQuality;
   if (m_params.smoothAscent.maxEvaluations > 0 && locked) {
     // The top of the smooth score near RM-GA's best, or near the last frame's pose if that scores higher
@@ -375,18 +349,10 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
       m_tilt.reset();
     }
   }
-  mark[2] = msSinceStart();
-  r.evaluations = fr.evaluations;
-  r.candidates = fr.candidates;
-  r.generations = fr.generations;
-  if (verifying) {
-    const double v0 = msSinceStart();
-    verify(m_params.coarseSearch ? coarseObjective : objective, challengerBudget, r);
-    verifyMs = msSinceStart() - v0;
-  }
-  r.hMo = toHomogeneousMatrix(r.phi);
-  r.quality = quality(r.fitness);
-  // The state machine.
+}
+
+void PhotoModelTracker::updateState(TrackResult &r)
+{
   const TrackState prev = m_last.state;
   bool lockDoubted = false;
   if (r.quality >= m_params.lockQuality && prev != TrackState::Tracking && m_params.lockConfidence > 0) {
@@ -416,27 +382,28 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   else if (r.state != TrackState::Tracking)
     m_verified = false, m_verifyLeft = 0;
   m_framesTracked = r.state == TrackState::Tracking ? m_framesTracked + 1 : 0;
-  // Steadiness for the next frame's budget.
-  r.steady = steady && !escalated;
-  r.escalated = escalated;
-  // The recent best is remembered through a loss, so that a relock on a wrong pose (lower q) is
-  // not taken for steady and keeps the whole budget to find the true one.
+  // Steadiness for the next frame's budget. The recent best is remembered through a loss, so that
+  // a relock on a wrong pose (lower q) is not taken for steady and keeps the whole budget to find
+  // the true one.
   m_recentBestQ = std::max(r.state == TrackState::Tracking ? r.quality : 0.0, m_recentBestQ - 0.001);
   m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
-  // The confidence, from the frame's cues (scored on the whole images: the hue under the poses
-  // they look at is added where a steady frame's windows left it out).
-  if (windowed) {
-    const std::array<Phi, 8> alt = competitors(r.phi);
+}
+
+void PhotoModelTracker::scoreConfidence(TrackResult &r, const Frame &f)
+{
+  // The cues are scored on the whole images: the hue under the poses they look at is added where
+  // a steady frame's windows left it out.
+  if (f.windowed) {
     std::array<Phi, 9> seen;
     std::size_t n = 0;
     seen[n++] = r.phi;
-    for (const Phi &p : alt)
+    for (const Phi &p : competitors(r.phi))
       if (p.isValid())
         seen[n++] = p;
-    m_fitness.addHueUnder(left, right, seen.data(), n);
+    m_fitness.addHueUnder(*f.left, *f.right, seen.data(), n);
   }
   ConfidenceCues &c = r.cues;
-  c = cuesAt(r.phi, r.quality, prev == TrackState::Tracking ? &m_last.phi : nullptr);
+  c = cuesAt(r.phi, r.quality, m_last.state == TrackState::Tracking ? &m_last.phi : nullptr);
   c.framesTracked = m_framesTracked;
   c.verified = m_verified;
   c.tracking = r.state == TrackState::Tracking;
@@ -451,8 +418,54 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
     m_untrustedFrames = 0;
     startVerification(r.phi);
   }
-  r.computeMs = msSinceStart();
-  r.stageMs = {mark[0], mark[1] - mark[0] + verifyMs, mark[2] - mark[1], r.computeMs - mark[2] - verifyMs};
+}
+
+TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+{
+  Frame f;
+  f.left = &left;
+  f.right = &right;
+  // Verifying a lock: the challenger gets its share of the whole budget, on the whole images; the
+  // main search keeps the steady budget when the tracking is steady, else the rest of the whole one.
+  const bool verifying = m_verifyLeft > 0 && m_last.state == TrackState::Tracking;
+  f.steady = m_steadyFrames >= m_params.steadyAfterFrames;
+  f.windowed = f.steady && !verifying && m_params.steadyHueMarginPx > 0;
+  if (f.windowed)
+    m_fitness.setImages(left, right, steadyWindows());
+  else
+    m_fitness.setImages(left, right);
+  f.hueMs = f.msSinceStart();
+  StereoObjective objective(m_fitness, StereoObjective::Score::Fitness,
+                            m_params.rejectMarginQ < 0 ? -1.0 : m_params.rejectMarginQ * (m_fMax - m_fBackground));
+  StereoObjective coarseObjective(m_fitness, StereoObjective::Score::Coarse);
+  FrameBudget whole = m_params.budget();
+  if (whole.milliseconds > 0) // the hue planes are part of the frame's time
+    whole.milliseconds = std::max(0.05, whole.milliseconds - f.hueMs);
+  f.mainWhole = verifying ? part(whole, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population) : whole;
+  f.budget = f.steady ? m_params.steadyBudget() : f.mainWhole;
+
+  const FrameResult fr = search(f, objective, coarseObjective);
+  TrackResult r;
+  r.phi = fr.best;
+  r.fitness = fr.fitness;
+  r.evaluations = fr.evaluations;
+  r.candidates = fr.candidates;
+  r.generations = fr.generations;
+  const double searchMs = f.msSinceStart() - f.hueMs;
+  refine(r, objective);
+  const double refinedMs = f.msSinceStart();
+  if (verifying)
+    verify(m_params.coarseSearch ? coarseObjective : objective, part(whole, m_params.verifyBudgetFraction, m_params.ga.population), r);
+  const double verifyMs = f.msSinceStart() - refinedMs;
+  r.hMo = toHomogeneousMatrix(r.phi);
+  r.quality = quality(r.fitness);
+  const TrackState prev = m_last.state;
+  updateState(r);
+  r.steady = f.steady && !f.escalated;
+  r.escalated = f.escalated;
+  scoreConfidence(r, f);
+  r.computeMs = f.msSinceStart();
+  r.stageMs = {f.hueMs, searchMs + verifyMs, refinedMs - f.hueMs - searchMs, r.computeMs - refinedMs - verifyMs};
   m_beforeLast = m_last.phi;
   m_haveBeforeLast = prev == TrackState::Tracking && r.state == TrackState::Tracking;
   m_last = r;

@@ -29,6 +29,7 @@
         if (r.trusted) use(r.hMo);
       }
 */
+#include <chrono>
 #include <string>
 
 #include <visp3/core/vpHomogeneousMatrix.h>
@@ -194,8 +195,8 @@ struct TrackResult
   int generations = 0;
   double computeMs = 0;     //!< time spent in track()
   /*!
-    Where it went (ms): the hue planes; the search (RM-GA, the verification, any escalation and
-    the smooth refinement); the smooth ascent and the tilt filter; the confidence's cues.
+    Where it went (ms): the hue planes; the search (RM-GA, any escalation, the verification); the
+    local refinements (the smooth ascent, the tilt filter, the simplex if on); the confidence's cues.
   */
   std::array<double, 4> stageMs{};
   bool steady = false;      //!< the frame had the steady budget (and no more)
@@ -249,6 +250,27 @@ public:
   const TrackerParams &params() const { return m_params; }
 
 private:
+  //! What track() decided about the frame it works on.
+  struct Frame
+  {
+    const vpImage<vpRGBa> *left = nullptr, *right = nullptr;
+    std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+    bool steady = false;             //!< the steady budget for the main search
+    mutable bool windowed = false;   //!< the hue planes hold only the steady windows
+    mutable bool escalated = false;  //!< see TrackResult::escalated
+    double hueMs = 0;                //!< the time the hue planes took
+    FrameBudget budget;              //!< the main search's
+    FrameBudget mainWhole;           //!< the main search's when not steady (the whole budget but the challenger's share)
+    double msSinceStart() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
+  };
+  //! RM-GA on the frame (coarse while searching), and the escalation of a steady frame that went wrong.
+  FrameResult search(const Frame &f, StereoObjective &objective, StereoObjective &coarseObjective);
+  //! The local refinements of the frame's pose: the simplex (option), the smooth ascent, the tilt filter.
+  void refine(TrackResult &r, StereoObjective &objective);
+  //! The state machine (with the lock gate), the verification's start, the steadiness.
+  void updateState(TrackResult &r);
+  //! The cues, the confidence, the trust, the anchor and the re-verification of a doubtful lock.
+  void scoreConfidence(TrackResult &r, const Frame &f);
   void resetCounters(); //!< the state machine's and the steadiness's, for a new start
   //! Other poses of the same object the confidence compares \e b with (turned about its z axis, its tilt mirrored).
   static std::array<Phi, 8> competitors(const Phi &b);
