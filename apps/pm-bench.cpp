@@ -1,4 +1,5 @@
 //! pm-bench: speed of the hot path, with Google Benchmark, against ViSP doing the same work in the same process.
+#include <array>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -157,6 +158,22 @@ void RmGa_OwnWork(benchmark::State &state)
   state.SetItemsProcessed(poses);
   state.counters["ns_per_pose"] = benchmark::Counter(static_cast<double>(poses), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
+//! The smooth ascent's evaluation of the default model: the smooth score and its gradient (two cores), with and without the metric.
+void smoothGradient(benchmark::State &state, bool metric)
+{
+  pm::StereoFitness fit(setup().rig, setup().model);
+  fit.setImages(setup().images.left, setup().images.right);
+  const auto ps = poses(256);
+  std::size_t i = 0;
+  double g[6], M[36], sink = 0;
+  for (auto _ : state) {
+    sink += fit.evaluateSmoothGradient(ps[i++ & 255], g, metric ? M : nullptr);
+    benchmark::DoNotOptimize(sink);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+void Fitness_DefaultModel_SmoothGradient(benchmark::State &s) { smoothGradient(s, false); }
+void Fitness_DefaultModel_SmoothGradient_Metric(benchmark::State &s) { smoothGradient(s, true); }
 void Fitness_1000Points(benchmark::State &s) { runFitness(s, setup().model1000, false); }
 void Fitness_1000Points_Scalar(benchmark::State &s) { runFitness(s, setup().model1000, true); }
 //! The same 1,000 points with depth (the stereo model's kernel): compare with Fitness_1000Points.
@@ -245,6 +262,39 @@ void Hue_StereoPair_ViSP(benchmark::State &state)
   }
   state.SetItemsProcessed(state.iterations() * 2 * 640 * 480);
 }
+
+/*!
+  The hue planes as the tracker computes them (StereoFitness::setImages, both cameras on two
+  cores): of the whole images, and of a steady frame's windows (the model's footprint at the pose
+  grown by the default margin, TrackerParams::steadyHueMarginPx).
+*/
+void hueAsTracked(benchmark::State &state, bool windows, bool fromMemory = false)
+{
+  // fromMemory: a new frame each time, as a camera delivers them (40 copies, more than the caches hold).
+  std::vector<pm::sim::StereoImages> frames(fromMemory ? 40 : 1, setup().images);
+  pm::StereoFitness fit(setup().rig, setup().model);
+  const int margin = pm::TrackerParams().steadyHueMarginPx;
+  std::array<pm::PixelRect, 2> w;
+  long pixels = 0;
+  for (int cam = 0; cam < 2; ++cam) {
+    const pm::StereoFitness::Camera &c = fit.camera(cam);
+    w[static_cast<std::size_t>(cam)] = windows ? fit.footprint(setup().truth, cam).grown(margin, c.width, c.height) : pm::PixelRect{0, 0, c.width, c.height};
+    const pm::PixelRect &r = w[static_cast<std::size_t>(cam)];
+    pixels += static_cast<long>(r.u1 - r.u0) * (r.v1 - r.v0);
+  }
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const pm::sim::StereoImages &im = frames[k++ % frames.size()];
+    fit.setImages(im.left, im.right, w);
+    benchmark::DoNotOptimize(fit.huePlane(0).data());
+  }
+  state.SetItemsProcessed(state.iterations() * pixels);
+  state.counters["pixels"] = static_cast<double>(pixels);
+}
+void Hue_StereoPair_AsTracked_WholeImages(benchmark::State &s) { hueAsTracked(s, false); }
+void Hue_StereoPair_AsTracked_SteadyWindows(benchmark::State &s) { hueAsTracked(s, true); }
+void Hue_StereoPair_AsTracked_SteadyWindows_NewFrames(benchmark::State &s) { hueAsTracked(s, true, true); }
+void Hue_StereoPair_AsTracked_WholeImages_NewFrames(benchmark::State &s) { hueAsTracked(s, false, true); }
 
 //! Hue computed at each sampled point instead of a plane: the cost per sample, to compare.
 void Hue_PerSample(benchmark::State &state)
@@ -384,6 +434,8 @@ BENCHMARK(Fitness_DefaultModel);
 BENCHMARK(Fitness_DefaultModel_GenerationBatch)->UseRealTime();
 BENCHMARK(Fitness_DefaultModel_GenerationBatch_Coarse)->UseRealTime();
 BENCHMARK(RmGa_OwnWork);
+BENCHMARK(Fitness_DefaultModel_SmoothGradient)->UseRealTime();
+BENCHMARK(Fitness_DefaultModel_SmoothGradient_Metric)->UseRealTime();
 BENCHMARK(Fitness_1000Points);
 BENCHMARK(Fitness_1000Points_Scalar);
 BENCHMARK(Fitness_1000Points_Depth);
@@ -392,6 +444,10 @@ BENCHMARK(Fitness_1000Points_Depth_Smooth);
 BENCHMARK(Fitness_1000Points_ViSPTypes);
 BENCHMARK(Hue_StereoPair_Ours)->Unit(benchmark::kMillisecond);
 BENCHMARK(Hue_StereoPair_ViSP)->Unit(benchmark::kMillisecond);
+BENCHMARK(Hue_StereoPair_AsTracked_WholeImages)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Hue_StereoPair_AsTracked_SteadyWindows)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Hue_StereoPair_AsTracked_WholeImages_NewFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Hue_StereoPair_AsTracked_SteadyWindows_NewFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Hue_PerSample);
 BENCHMARK(Hue_StereoPair_Lens)->Unit(benchmark::kMillisecond);
 BENCHMARK(Distortion_Project1000Points_Pinhole);

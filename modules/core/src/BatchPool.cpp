@@ -2,6 +2,10 @@
 
 #include <chrono>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace pm {
 
 namespace {
@@ -9,6 +13,26 @@ namespace {
 //! two generations (selection, crossover, sorting), far shorter than the gap between frames.
 constexpr std::chrono::microseconds kSpin(200);
 constexpr std::uint64_t kIndexMask = 0xffffffffu;
+
+//! A short wait: the CPU's spin hint (a yield is a system call, about a microsecond in a VM).
+inline void relax()
+{
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#else
+  std::this_thread::yield();
+#endif
+}
+
+//! Waits until \e done(): spinning first (most waits here are a few microseconds), then yielding.
+template <class Done> void waitUntil(Done done)
+{
+  for (int k = 0; !done(); ++k)
+    if (k < 256)
+      relax();
+    else
+      std::this_thread::yield();
+}
 } // namespace
 
 BatchPool::BatchPool(bool helper)
@@ -74,8 +98,7 @@ void BatchPool::runErased(std::size_t n, Fn fn, void *ctx)
   }
   m_done.fetch_add(mine, std::memory_order_acq_rel);
   // Every item is taken; wait only for those the helper is still running.
-  while (m_done.load(std::memory_order_acquire) < n)
-    std::this_thread::yield();
+  waitUntil([&] { return m_done.load(std::memory_order_acquire) >= n; });
 }
 
 void BatchPool::helperLoop()
@@ -83,8 +106,11 @@ void BatchPool::helperLoop()
   std::uint32_t seen = 0;
   for (;;) {
     const auto t0 = std::chrono::steady_clock::now();
-    while (m_posted.load(std::memory_order_acquire) == seen && std::chrono::steady_clock::now() - t0 < kSpin)
-      std::this_thread::yield();
+    for (int k = 0; m_posted.load(std::memory_order_acquire) == seen; ++k) {
+      relax();
+      if ((k & 63) == 63 && std::chrono::steady_clock::now() - t0 >= kSpin)
+        break;
+    }
     Fn fn;
     void *ctx;
     std::size_t n;

@@ -352,8 +352,8 @@ __attribute__((target("avx2,fma"))) inline double hsumPs(__m256 v)
   The smooth score's sums over points [b, e) (S_in when \e kInner), 8 at a time: each point's
   four neighbouring pixels (two 32-bit gathers of the 16-bit plane read a pixel and the one to its
   right), their class scores interpolated bilinearly, the derivatives of that with respect to the
-  point's camera-frame position, and (\e metric) the image-motion metric. The rest (fewer than 8)
-  is left to the caller; returns where it stopped.
+  point's camera-frame position, and (\e metric) the image-motion metric. The last group is
+  masked (the arrays are padded); returns \e e.
 */
 template <bool kInner>
 __attribute__((target("avx2,fma"))) std::size_t smoothSumsAvx2(const Projection &p, const Tolerances &t, const ClassScores &cs,
@@ -369,7 +369,8 @@ __attribute__((target("avx2,fma"))) std::size_t smoothSumsAvx2(const Projection 
   const __m256 wLim = _mm256_set1_ps(static_cast<float>(p.w - 1)), hLim = _mm256_set1_ps(static_cast<float>(p.h - 1));
   const __m256 off = _mm256_set1_ps(cs.offImage);
   std::size_t i = b;
-  for (; i + 8 <= e; i += 8) {
+  for (; i < e; i += 8) { // the last group masked (the arrays are padded)
+    const __m256 active = _mm256_castsi256_ps(laneMask(std::min<std::size_t>(8, e - i)));
     const __m256 X = _mm256_loadu_ps(m.x + i), Y = _mm256_loadu_ps(m.y + i), Z = _mm256_loadu_ps(m.z + i);
     // a: the point from the model origin, camera frame; X_c = a + t.
     const __m256 ax = _mm256_fmadd_ps(_mm256_set1_ps(p.r[0]), X, _mm256_fmadd_ps(_mm256_set1_ps(p.r[1]), Y, _mm256_mul_ps(_mm256_set1_ps(p.r[2]), Z)));
@@ -381,8 +382,8 @@ __attribute__((target("avx2,fma"))) std::size_t smoothSumsAvx2(const Projection 
     const __m256 iz = _mm256_div_ps(one, _mm256_blendv_ps(one, zc, front));
     const __m256 xn = _mm256_mul_ps(xc, iz), yn = _mm256_mul_ps(yc, iz);
     const __m256 u = _mm256_fmadd_ps(px, xn, _mm256_set1_ps(p.u0)), v = _mm256_fmadd_ps(py, yn, _mm256_set1_ps(p.v0));
-    const __m256 inside = _mm256_and_ps(_mm256_and_ps(front, _mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ))),
-                                        _mm256_and_ps(_mm256_cmp_ps(u, wLim, _CMP_LT_OQ), _mm256_cmp_ps(v, hLim, _CMP_LT_OQ)));
+    const __m256 inside = _mm256_and_ps(active, _mm256_and_ps(_mm256_and_ps(front, _mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ))),
+                                                              _mm256_and_ps(_mm256_cmp_ps(u, wLim, _CMP_LT_OQ), _mm256_cmp_ps(v, hLim, _CMP_LT_OQ))));
     const __m256 uu = _mm256_and_ps(u, inside), vv = _mm256_and_ps(v, inside); // 0 where outside: a safe pixel
     const __m256i ui = _mm256_cvttps_epi32(uu), vi = _mm256_cvttps_epi32(vv);
     const __m256 fu = _mm256_sub_ps(uu, _mm256_cvtepi32_ps(ui)), fv = _mm256_sub_ps(vv, _mm256_cvtepi32_ps(vi));
@@ -399,7 +400,7 @@ __attribute__((target("avx2,fma"))) std::size_t smoothSumsAvx2(const Projection 
     const __m256 du = _mm256_sub_ps(s01, s00), dv = _mm256_sub_ps(s10, s00);
     const __m256 cross = _mm256_sub_ps(_mm256_sub_ps(s11, s10), du); // s11 - s10 - s01 + s00
     const __m256 w = _mm256_fmadd_ps(fu, _mm256_fmadd_ps(fv, cross, du), _mm256_fmadd_ps(fv, dv, s00));
-    val = _mm256_add_ps(val, _mm256_blendv_ps(off, w, inside));
+    val = _mm256_add_ps(val, _mm256_and_ps(active, _mm256_blendv_ps(off, w, inside))); // nothing for an inactive lane
     out.inside += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(_mm256_movemask_ps(inside))));
     // d(score)/du, d(score)/dv, then through the projection: g = d(score)/dX_c.
     const __m256 dwu = _mm256_and_ps(_mm256_fmadd_ps(fv, cross, du), inside), dwv = _mm256_and_ps(_mm256_fmadd_ps(fu, cross, dv), inside);
@@ -950,17 +951,21 @@ double StereoFitness::smoothCamera(int cam, const Phi &phi, bool vectorised, boo
 double StereoFitness::evaluateSmoothGradient(const Phi &phi, double grad[6], double *metric) const
 {
   check(phi);
-  double g[6] = {0, 0, 0, 0, 0, 0};
-  if (metric)
-    std::fill(metric, metric + 36, 0.0);
-  std::size_t inside = 0;
-  const double s = 0.5 * (smoothCamera(0, phi, true, metric != nullptr, g, metric, &inside) +
-                          smoothCamera(1, phi, true, metric != nullptr, g, metric, &inside));
+  // The two cameras on two cores, each into its own sums (BatchPool: on the caller alone when the other core is busy).
+  double camG[2][6] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}}, camM[2][36], camS[2];
+  std::size_t camInside[2] = {0, 0};
+  BatchPool::shared().run(2, [&](std::size_t cam) {
+    if (metric)
+      std::fill(camM[cam], camM[cam] + 36, 0.0);
+    camS[cam] = smoothCamera(static_cast<int>(cam), phi, true, metric != nullptr, camG[cam], metric ? camM[cam] : nullptr, &camInside[cam]);
+  });
+  const double s = 0.5 * (camS[0] + camS[1]);
+  const std::size_t inside = camInside[0] + camInside[1];
   for (int k = 0; k < 6; ++k)
-    grad[k] = 0.5 * g[k];
+    grad[k] = 0.5 * (camG[0][k] + camG[1][k]);
   if (metric) // the mean over the points in the images
     for (int k = 0; k < 36; ++k)
-      metric[k] = inside ? metric[k] / static_cast<double>(inside) : 0.0;
+      metric[k] = inside ? (camM[0][k] + camM[1][k]) / static_cast<double>(inside) : 0.0;
   return s;
 }
 
