@@ -66,6 +66,9 @@ inline void shadeTexel(const Texture &tex, float s, float t, float diff, float s
     out[c] = col[c] * diff + spec;
 }
 
+//! A span shorter than this (a small triangle's) is shaded one sample at a time: faster than a masked chunk.
+constexpr std::size_t kMinAvx2Span = 8;
+
 #if PM_RASTER_AVX2
 /*!
   The span loop of drawTriangles<false> on 8 samples at a time (AVX2): the same operations in the
@@ -90,8 +93,8 @@ __attribute__((target("avx2"))) std::size_t shadeSpanAvx2(const float *v0, const
   const __m256 zero = _mm256_setzero_ps(), scale = _mm256_set1_ps(1.f / 255.f);
   const auto *base = reinterpret_cast<const int *>(tex.rgb.data());
   std::size_t done = 0;
-  if (count < 8)
-    return 0; // a short span (a small triangle's): one at a time is faster than a masked chunk
+  if (count < kMinAvx2Span)
+    return 0;
   const __m256 countF = _mm256_set1_ps(static_cast<float>(count));
   for (; done < count; done += 8) {
     const __m256 kf = _mm256_add_ps(_mm256_set1_ps(static_cast<float>(done)), lane);
@@ -273,6 +276,19 @@ inline void clipSpan(std::int64_t e, std::int64_t step, std::int64_t bias, std::
   }
 }
 
+/*!
+  True if the mask discards every fragment of the triangle: the mask is positive (outside the
+  outline) at its three vertices, by a margin that the float rounding of its interpolation cannot
+  undo, so it is positive everywhere between them. Such triangles (the outer part of the strip of
+  cells a toy's mesh keeps around its outline) are skipped whole: the same images.
+*/
+template <class V>
+inline bool masksAll(const V &a, const V &b, const V &c)
+{
+  constexpr float kMargin = 1e-3f; // mask times 1/z (mm per m): about 1e3 times the interpolation's rounding
+  return a.mask > kMargin && b.mask > kMargin && c.mask > kMargin;
+}
+
 //! std::llround for |x| < 2^52, inline (half away from zero).
 inline std::int64_t roundHalfAway(double x)
 {
@@ -405,7 +421,7 @@ void Rasterizer::bin(const Mesh &mesh, Scratch &sc, unsigned rows, unsigned nBan
     const ProjVertex &a = sc.proj[tri[0]], &b = sc.proj[tri[1]], &c = sc.proj[tri[2]];
     sc.triBands[t] = {1, 0};
     if (!a.valid || !b.valid || !c.valid || std::fabs(a.Y) > kMaxCoord || std::fabs(b.Y) > kMaxCoord ||
-        std::fabs(c.Y) > kMaxCoord)
+        std::fabs(c.Y) > kMaxCoord || (mesh.useMask && masksAll(a, b, c)))
       continue;
     const float lo = std::min({a.Y, b.Y, c.Y}) - 1.f, hi = std::max({a.Y, b.Y, c.Y}) + 1.f;
     if (hi < 0.f || lo > maxRow)
@@ -534,6 +550,8 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &
     const ProjVertex *pa = &proj[tri[0]], *pb = &proj[tri[1]], *pc = &proj[tri[2]];
     if (!pa->valid || !pb->valid || !pc->valid)
       continue;
+    if (mesh.useMask && masksAll(*pa, *pb, *pc))
+      continue;
     if (std::fabs(pa->X) > kMaxCoord || std::fabs(pa->Y) > kMaxCoord || std::fabs(pb->X) > kMaxCoord ||
         std::fabs(pb->Y) > kMaxCoord || std::fabs(pc->X) > kMaxCoord || std::fabs(pc->Y) > kMaxCoord)
       continue; // a vertex projected too far (grazing the camera plane)
@@ -611,7 +629,7 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &
       float kf = 0.f;
 #if PM_RASTER_AVX2
       if constexpr (!kShadow) {
-        if (useAvx2) {
+        if (useAvx2 && end - first + 1 >= kMinAvx2Span) {
           const std::size_t done = shadeSpanAvx2(v0, d, end - first + 1, m_invDepth.data() + first, m_id.data() + first,
                                                  color + kStride * (first - colorOffset), tex, mesh.useMask, id);
           first += done;

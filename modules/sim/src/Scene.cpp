@@ -239,7 +239,11 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
     calls[n].id = id;
     ++n;
   };
-  add(m_backdrop, cMo, light, 1);
+  // Front to back: the occluder, the toys, then the backdrop behind them all, whose samples under
+  // a toy then fail the depth test before they are shaded (the same image: no two surfaces are at
+  // the same depth, the backdrop lies backdropGapMm behind the toys' base).
+  if (m_params.occluder)
+    add(m_occluder, cMo, light, 3);
   if (withTarget)
     add(m_toy, cMo, toyLight, 2);
   if (m_params.distractor && hasDistractor()) {
@@ -248,8 +252,7 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
     look.shadow = nullptr; // the toy's shadow map does not hold it
     add(m_distractor, cMo * toHomogeneousMatrix(Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), look, 4);
   }
-  if (m_params.occluder)
-    add(m_occluder, cMo, light, 3);
+  add(m_backdrop, cMo, light, 1);
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
   const float tank[3] = {0.04f, 0.06f, 0.09f}; // the dark tank beyond the panel
   raster.render(tank, calls, n, camera.cam, out, m_params.exposure, noiseSigma, noiseSeed);
