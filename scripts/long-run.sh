@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The long run of issue 8: pm-servo over N frames (100,000 by default: 55 min of a sinusoidal
-# target at 30 fps, on an evaluation budget, so deterministic) while this script samples
+# target at 30 fps, on the default evaluation budget, so deterministic) while this script samples
 # the process's resident memory every 10 s. Writes DIR/ (pm-servo's outputs) and DIR/rss.csv, then
 # prints the memory after the warm-up (the first tenth of the run), its largest value after that,
 # the growth in %; pm-servo prints the error per tenth of the run (a drift would show there).
@@ -27,7 +27,7 @@ duration=$(awk -v n="$frames" 'BEGIN { printf "%.4f", (n - 1) / 30 }')
 mkdir -p "$(dirname "$out")"
 rss="$(mktemp)"
 trap 'rm -f "$rss"' EXIT
-"$PM_BUILD_DIR/apps/pm-servo" --trajectory sine --duration-s "$duration" --budget-evals 1900 --no-video \
+"$PM_BUILD_DIR/apps/pm-servo" --trajectory sine --duration-s "$duration" --no-video \
   --overlay-every 0 --out "$out" "$@" &
 pid=$!
 start=$(date +%s)
