@@ -15,18 +15,50 @@ namespace pm::io {
 namespace {
 constexpr const char *kFormat = "visp-photomodel-tracker";
 
-template <typename T> void get(const json &j, const char *key, T &v)
+/*!
+  One JSON object of the file: each get() reads a key if present and records it as known;
+  done() refuses any other key, so that a misspelt one is an error, not a default silently kept.
+*/
+class Section
 {
-  if (j.contains(key))
-    v = j.at(key).get<T>();
-}
+public:
+  Section(const json &j, std::string where) : m_j(j), m_where(std::move(where)) {}
+  template <typename T> Section &get(const char *key, T &v)
+  {
+    m_known.emplace_back(key);
+    if (m_j.contains(key))
+      v = m_j.at(key).get<T>();
+    return *this;
+  }
+  //! A key read elsewhere.
+  Section &known(const char *key)
+  {
+    m_known.emplace_back(key);
+    return *this;
+  }
+  //! The object under \e key, if present, read by \e read(Section &) and checked.
+  template <typename F> Section &section(const char *key, F read)
+  {
+    m_known.emplace_back(key);
+    if (m_j.contains(key)) {
+      Section s(m_j.at(key), std::string(" in \"") + key + "\"");
+      read(s);
+      s.done();
+    }
+    return *this;
+  }
+  void done() const
+  {
+    for (auto it = m_j.begin(); it != m_j.end(); ++it)
+      if (std::find(m_known.begin(), m_known.end(), it.key()) == m_known.end())
+        throw Error("unknown key \"" + it.key() + "\"" + m_where);
+  }
 
-void checkKeys(const json &j, const std::vector<std::string> &known, const std::string &where)
-{
-  for (auto it = j.begin(); it != j.end(); ++it)
-    if (std::find(known.begin(), known.end(), it.key()) == known.end())
-      throw Error("unknown key \"" + it.key() + "\"" + where);
-}
+private:
+  const json &m_j;
+  std::string m_where;
+  std::vector<std::string> m_known;
+};
 } // namespace
 
 TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults)
@@ -38,97 +70,73 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
   try {
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat);
-    checkKeys(j, {"format", "version", "budget_ms", "budget_evaluations", "lock_quality", "lock_confidence", "lost_quality", "lost_frames",
-                  "init_spread", "steady_budget_fraction", "steady_after_frames", "steady_quality_drop", "steady_hue_margin_px", "steady_escalation", "smooth_refine_evaluations", "smooth_refine_max_drop", "smooth_ascent",
-                  "smooth_ascent_max_drop", "tilt_filter", "reject_margin_q", "coarse_search", "verify_evaluations",
-                  "verify_budget_fraction", "verify_margin", "verify_switch_margin", "verify_far_mm", "verify_far_deg",
-                  "verify_same_object_mm", "reverify_after_frames", "reverify_below_confidence", "confidence", "search_space", "rmga",
-                  "fitness"}, "");
-    get(j, "budget_ms", p.budgetMs);
-    get(j, "budget_evaluations", p.budgetEvaluations);
-    get(j, "lock_quality", p.lockQuality);
-    get(j, "lock_confidence", p.lockConfidence);
-    get(j, "lost_quality", p.lostQuality);
-    get(j, "lost_frames", p.lostFrames);
-    get(j, "init_spread", p.initSpread);
-    get(j, "steady_budget_fraction", p.steadyBudgetFraction);
-    get(j, "steady_after_frames", p.steadyAfterFrames);
-    get(j, "steady_quality_drop", p.steadyQualityDrop);
-    get(j, "steady_hue_margin_px", p.steadyHueMarginPx);
-    get(j, "steady_escalation", p.steadyEscalation);
-    get(j, "smooth_refine_evaluations", p.smoothRefineEvaluations);
-    get(j, "smooth_refine_max_drop", p.smoothRefineMaxDrop);
-    if (j.contains("smooth_ascent")) {
-      const json &a = j.at("smooth_ascent");
-      checkKeys(a, {"max_evaluations", "first_step_px", "max_step_px", "min_step_px", "grow", "shrink"}, " in \"smooth_ascent\"");
-      get(a, "max_evaluations", p.smoothAscent.maxEvaluations);
-      get(a, "first_step_px", p.smoothAscent.firstStepPx);
-      get(a, "max_step_px", p.smoothAscent.maxStepPx);
-      get(a, "min_step_px", p.smoothAscent.minStepPx);
-      get(a, "grow", p.smoothAscent.grow);
-      get(a, "shrink", p.smoothAscent.shrink);
-    }
-    get(j, "smooth_ascent_max_drop", p.smoothAscentMaxDrop);
-    get(j, "reject_margin_q", p.rejectMarginQ);
-    get(j, "coarse_search", p.coarseSearch);
-    if (j.contains("tilt_filter")) {
-      const json &t = j.at("tilt_filter");
-      checkKeys(t, {"alpha", "beta", "gate_deg"}, " in \"tilt_filter\"");
-      get(t, "alpha", p.tiltFilter.alpha);
-      get(t, "beta", p.tiltFilter.beta);
-      get(t, "gate_deg", p.tiltFilter.gateDeg);
-    }
-    get(j, "verify_evaluations", p.verifyEvaluations);
-    get(j, "verify_budget_fraction", p.verifyBudgetFraction);
-    get(j, "verify_margin", p.verifyMargin);
-    get(j, "verify_switch_margin", p.verifySwitchMargin);
-    get(j, "verify_far_mm", p.verifyFarMm);
-    get(j, "verify_far_deg", p.verifyFarDeg);
-    get(j, "verify_same_object_mm", p.verifySameObjectMm);
-    get(j, "reverify_after_frames", p.reverifyAfterFrames);
-    get(j, "reverify_below_confidence", p.reverifyBelowConfidence);
-    if (j.contains("confidence")) {
-      const json &c = j.at("confidence");
-      checkKeys(c, {"weights", "bias", "threshold"}, " in \"confidence\"");
-      get(c, "weights", p.confidence.weights);
-      get(c, "bias", p.confidence.bias);
-      get(c, "threshold", p.confidence.threshold);
-    }
-    if (j.contains("search_space")) {
-      const json &s = j.at("search_space");
-      checkKeys(s, {"lo", "hi"}, " in \"search_space\"");
-      get(s, "lo", p.space.lo);
-      get(s, "hi", p.space.hi);
-    }
-    if (j.contains("rmga")) {
-      const json &g = j.at("rmga");
-      checkKeys(g, {"population", "elite", "tournament", "crossover_rate", "mutation_per_bit", "predict_motion",
-                    "refine_evaluations", "restart_generations", "seed"}, " in \"rmga\"");
-      get(g, "population", p.ga.population);
-      get(g, "elite", p.ga.elite);
-      get(g, "tournament", p.ga.tournament);
-      get(g, "crossover_rate", p.ga.crossoverRate);
-      get(g, "mutation_per_bit", p.ga.mutationPerBit);
-      get(g, "predict_motion", p.ga.predictMotion);
-      get(g, "refine_evaluations", p.ga.refineEvaluations);
-      get(g, "restart_generations", p.ga.restartGenerations);
-      get(g, "seed", p.ga.seed);
-    }
-    if (j.contains("fitness")) {
-      const json &q = j.at("fitness");
-      checkKeys(q, {"in_tol_deg", "in_bg_tol_deg", "out_bg_tol_deg", "in_match", "in_background", "in_other",
-                    "out_background", "out_other", "off_image", "min_saturation"}, " in \"fitness\"");
-      get(q, "in_tol_deg", p.fitness.inTolDeg);
-      get(q, "in_bg_tol_deg", p.fitness.inBgTolDeg);
-      get(q, "out_bg_tol_deg", p.fitness.outBgTolDeg);
-      get(q, "in_match", p.fitness.inMatch);
-      get(q, "in_background", p.fitness.inBackground);
-      get(q, "in_other", p.fitness.inOther);
-      get(q, "out_background", p.fitness.outBackground);
-      get(q, "out_other", p.fitness.outOther);
-      get(q, "off_image", p.fitness.offImage);
-      get(q, "min_saturation", p.fitness.minSaturation);
-    }
+    Section top(j, "");
+    top.known("format").known("version"); // checked above
+    top.get("budget_ms", p.budgetMs)
+        .get("budget_evaluations", p.budgetEvaluations)
+        .get("lock_quality", p.lockQuality)
+        .get("lock_confidence", p.lockConfidence)
+        .get("lost_quality", p.lostQuality)
+        .get("lost_frames", p.lostFrames)
+        .get("init_spread", p.initSpread)
+        .get("steady_budget_fraction", p.steadyBudgetFraction)
+        .get("steady_after_frames", p.steadyAfterFrames)
+        .get("steady_quality_drop", p.steadyQualityDrop)
+        .get("steady_hue_margin_px", p.steadyHueMarginPx)
+        .get("steady_escalation", p.steadyEscalation)
+        .get("smooth_refine_evaluations", p.smoothRefineEvaluations)
+        .get("smooth_refine_max_drop", p.smoothRefineMaxDrop);
+    top.section("smooth_ascent", [&](Section &a) {
+      a.get("max_evaluations", p.smoothAscent.maxEvaluations)
+          .get("first_step_px", p.smoothAscent.firstStepPx)
+          .get("max_step_px", p.smoothAscent.maxStepPx)
+          .get("min_step_px", p.smoothAscent.minStepPx)
+          .get("grow", p.smoothAscent.grow)
+          .get("shrink", p.smoothAscent.shrink);
+    });
+    top.get("smooth_ascent_max_drop", p.smoothAscentMaxDrop)
+        .get("reject_margin_q", p.rejectMarginQ)
+        .get("coarse_search", p.coarseSearch);
+    top.section("tilt_filter", [&](Section &t) {
+      t.get("alpha", p.tiltFilter.alpha).get("beta", p.tiltFilter.beta).get("gate_deg", p.tiltFilter.gateDeg);
+    });
+    top.get("verify_evaluations", p.verifyEvaluations)
+        .get("verify_budget_fraction", p.verifyBudgetFraction)
+        .get("verify_margin", p.verifyMargin)
+        .get("verify_switch_margin", p.verifySwitchMargin)
+        .get("verify_far_mm", p.verifyFarMm)
+        .get("verify_far_deg", p.verifyFarDeg)
+        .get("verify_same_object_mm", p.verifySameObjectMm)
+        .get("reverify_after_frames", p.reverifyAfterFrames)
+        .get("reverify_below_confidence", p.reverifyBelowConfidence);
+    top.section("confidence", [&](Section &c) {
+      c.get("weights", p.confidence.weights).get("bias", p.confidence.bias).get("threshold", p.confidence.threshold);
+    });
+    top.section("search_space", [&](Section &s) { s.get("lo", p.space.lo).get("hi", p.space.hi); });
+    top.section("rmga", [&](Section &g) {
+      g.get("population", p.ga.population)
+          .get("elite", p.ga.elite)
+          .get("tournament", p.ga.tournament)
+          .get("crossover_rate", p.ga.crossoverRate)
+          .get("mutation_per_bit", p.ga.mutationPerBit)
+          .get("predict_motion", p.ga.predictMotion)
+          .get("refine_evaluations", p.ga.refineEvaluations)
+          .get("restart_generations", p.ga.restartGenerations)
+          .get("seed", p.ga.seed);
+    });
+    top.section("fitness", [&](Section &q) {
+      q.get("in_tol_deg", p.fitness.inTolDeg)
+          .get("in_bg_tol_deg", p.fitness.inBgTolDeg)
+          .get("out_bg_tol_deg", p.fitness.outBgTolDeg)
+          .get("in_match", p.fitness.inMatch)
+          .get("in_background", p.fitness.inBackground)
+          .get("in_other", p.fitness.inOther)
+          .get("out_background", p.fitness.outBackground)
+          .get("out_other", p.fitness.outOther)
+          .get("off_image", p.fitness.offImage)
+          .get("min_saturation", p.fitness.minSaturation);
+    });
+    top.done();
     p.validate();
   } catch (const Error &e) {
     throw Error("tracker configuration '" + path + "': " + e.what());

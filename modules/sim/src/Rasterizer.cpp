@@ -421,7 +421,7 @@ void Rasterizer::bin(const Mesh &mesh, Scratch &sc, unsigned rows, unsigned nBan
     const ProjVertex &a = sc.proj[tri[0]], &b = sc.proj[tri[1]], &c = sc.proj[tri[2]];
     sc.triBands[t] = {1, 0};
     if (!a.valid || !b.valid || !c.valid || std::fabs(a.Y) > kMaxCoord || std::fabs(b.Y) > kMaxCoord ||
-        std::fabs(c.Y) > kMaxCoord || (mesh.useMask && masksAll(a, b, c)))
+        std::fabs(c.Y) > kMaxCoord)
       continue;
     const float lo = std::min({a.Y, b.Y, c.Y}) - 1.f, hi = std::max({a.Y, b.Y, c.Y}) + 1.f;
     if (hi < 0.f || lo > maxRow)
