@@ -384,8 +384,8 @@ void FitnessMaps_FourGrids(benchmark::State &state)
   of them on a steady frame, the default C12 model): a frame with the whole budget (hue planes of
   both images, RM-GA's generations, the smooth ascent, the confidence's cues), a steady frame, the
   same steady frame with the hue of the whole images (its peer), a frame on which a new lock is
-  verified; and the tracker as issue 18 found it (1,900 evaluations on every frame, RM-GA's own
-  refinement of 100), the peer of the whole frame.
+  verified; and the budget of before issue 18 (1,900 evaluations on every frame, RM-GA's own
+  refinement of 100; the tracker's other parts as now), the peer of the whole frame.
 */
 void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying, int hueMarginPx = -1, bool before = false)
 {
@@ -422,7 +422,7 @@ void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::app::measur
 //! Its peer: the same steady frame with the hue of the whole images (TrackerParams::steadyHueMarginPx 0).
 void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::app::measuredTrackerDefaults(5.0).steadyBudgetFraction, false, 0); }
 void Tracker_Frame_Verifying(benchmark::State &s) { trackerFrame(s, 1.0, true); }
-//! The whole frame's peer: the tracker's budget before issue 18 (1,900 evaluations, refinement 100).
+//! The whole frame's peer: the budget of before issue 18 (1,900 evaluations, refinement 100), the rest as now.
 void Tracker_Frame_Before_1900Evals(benchmark::State &s) { trackerFrame(s, 1.0, false, -1, true); }
 
 //! The lab's renderer: a stereo pair of the C12 crab (supersampling 2, the default).

@@ -11,11 +11,11 @@ TrackerParams measuredTrackerDefaults(double budgetMs)
   t.ga.predictMotion = true;
   t.ga.refineEvaluations = 0; // the smooth ascent refines the best pose; RM-GA's own refinement added nothing measurable
   t.ga.restartGenerations = 30;
-  // Measured for issue 18 (pm-compare's six scenarios, 12 seeds): 800 evaluations per frame,
+  // Measured for issue 18 (pm-compare's six scenarios, several GA seeds): 800 evaluations per frame,
   // 15 % of them on steady frames, the hue of a steady frame within 24 px of the model's last
   // footprint, a lock verified by 3,000 evaluations of the challenger. A budget in evaluations
-  // gives the same poses whatever the machine's load; budgetMs is the fallback when
-  // --budget-evaluations 0 is asked for.
+  // gives the same poses whatever the machine's load; budgetMs is used when --budget-ms is
+  // given (or --budget-evals 0).
   t.budgetEvaluations = 800;
   t.steadyBudgetFraction = 0.15;
   t.steadyHueMarginPx = 24;
