@@ -11,8 +11,8 @@
 #include "pm/app/Overlay.h"
 #include "pm/capture/VideoCaptureSource.h"
 #include "pm/core/Error.h"
-#include "pm/core/PhotoModelBuilder.h"
-#include "pm/core/StereoPhotoModelBuilder.h"
+#include "pm/model/PhotoModelBuilder.h"
+#include "pm/model/StereoPhotoModelBuilder.h"
 #include "pm/core/UndistortMap.h"
 #include "pm/io/CameraFile.h"
 #include "pm/io/CameraXml.h"
@@ -20,6 +20,11 @@
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
+#include "pm/io/AllAroundFiles.h"
+#include "pm/io/ViewsFolder.h"
+#include "pm/lab/ClosedLoop.h"
+#include "pm/lab/LabPass.h"
+#include "pm/model/AllAroundModelBuilder.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
@@ -100,6 +105,20 @@ int main(int argc, char **argv)
   pm::app::addModelOptions(app, mp);
   pm::app::addSceneOptions(app, sp);
   app.add_flag("--quiet", quiet, "print nothing on success");
+  std::string viewsDir;
+  bool allAround = false;
+  pm::PassPlan plan;
+  pm::AllAroundParams ap;
+  auto *optViews = app.add_option("--views", viewsDir, "all-around: a pass of the hand around the target, as a views folder "
+                                  "(left_%02d.png, right_%02d.png, background_left_%02d.png, background_right_%02d.png, "
+                                  "pose_fPh_%02d.yaml for k = 0, 1, ...), taken by --rig");
+  auto *optAA = app.add_flag("--all-around", allAround, "simulator: the PA-10 walks the rig around --target (a pass of "
+                             "--pass-views hand poses), the all-around model is built from it and the pass kept in OUT/views");
+  app.add_option("--pass-views", plan.views, "all-around, simulator: hand poses of the pass")->check(CLI::Range(6, 200));
+  app.add_option("--viewpoints", ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
+  for (auto *o : {optViews, optAA})
+    o->excludes(optBg)->excludes(optTex)->excludes(optLB)->excludes(optLS)->excludes(optStereo);
+  optViews->excludes(optAA)->excludes(optTarget);
 
   return pm::app::run(app, argc, argv, [&] {
     const auto t0 = std::chrono::steady_clock::now();
@@ -110,6 +129,32 @@ int main(int argc, char **argv)
     std::vector<pm::ModelPoint> dropped;
     double backdropMm = 0;
     smp.photo = mp;
+    if (allAround || !viewsDir.empty()) {
+      const pm::StereoRig rig = pm::io::loadRig(rigPath);
+      std::vector<pm::PassView> pass;
+      if (!viewsDir.empty()) {
+        pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews);
+        source = "views " + viewsDir;
+      } else {
+        const pm::sim::TargetShape shape = pm::sim::makeTarget(target);
+        pass = pm::lab::runLabPass(pm::sim::Scene(shape, sp), rig, plan, pm::lab::LoopParams::startJoints()).views;
+        source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), PA-10 pass";
+      }
+      const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, ap);
+      pm::io::writeAllAroundModel(b, pass, rig, out, source, allAround);
+      if (!quiet) {
+        std::cout << std::fixed << std::setprecision(1) << "all-around photo-model of " << source << "\n"
+                  << "  " << b.nViewsUsed << " of " << b.nViews << " views used, hull " << b.hullVolumeCm3 << " cm3 ("
+                  << b.surface.size() << " surface points, " << b.cellMm << " mm cells)\n"
+                  << "  " << b.model.views.size() + 1 << " viewpoints, " << b.model.inner.size() << " S_in and "
+                  << b.model.outer.size() << " S_out points from the first\n";
+        for (const std::string &s : b.leftOut)
+          std::cout << "  left out: " << s << "\n";
+        std::cout << "  written to " << out << "/ (model.json, model.ply, contact.png, silhouettes.png, summary.json"
+                  << (allAround ? ", views/" : "") << ") in " << std::setprecision(2) << b.buildS << " s" << std::endl;
+      }
+      return 0;
+    }
     if (!leftBg.empty() || !leftSource.empty()) {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
       vpImage<vpRGBa> bgR, tgR;

@@ -1,6 +1,8 @@
 #include "pm/app/Options.h"
 
 #include "pm/io/TrackerConfigFile.h"
+#include "pm/lab/ClosedLoop.h"
+#include "pm/lab/LabPass.h"
 #include "pm/sim/TargetCatalog.h"
 
 namespace pm::app {
@@ -50,10 +52,20 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
   app.add_option("--view-turn-deg", c.viewTurnDeg, "simulator, --stereo: four further photo pairs with the hand "
                  "turned by this about its x and y axes around the toy (a multi-view model; 0: one pair)")
       ->check(CLI::Range(0.0, 45.0));
+  auto *aa = app.add_flag("--all-around", c.allAround, "simulator: the PA-10 first walks the rig around the toy (a pass "
+                          "of --pass-views hand poses) and the all-around model is built from its silhouettes and photos");
+  app.add_option("--pass-views", c.passViews, "simulator, --all-around: hand poses of the pass")->check(CLI::Range(6, 200));
+  if (auto *st = app.get_option_no_throw("--stereo"))
+    aa->excludes(st);
 }
 
 sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c)
 {
+  if (c.allAround) {
+    PassPlan plan;
+    plan.views = c.passViews;
+    return lab::makeSimulatedAllAroundModel(scene, rig, plan, lab::LoopParams::startJoints(), c.distanceMm);
+  }
   if (c.stereo) {
     StereoModelParams sp;
     sp.photo = c.photo;

@@ -502,6 +502,33 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
   addView(model.inner, model.outer, model.cameraMm);
   for (const ModelView &mv : model.views)
     addView(mv.inner, mv.outer, mv.cameraMm);
+  if (m_views.size() > kScanViews) {
+    if (m_views.size() > 65535)
+      throw Error("a photo-model may hold at most 65,535 views");
+    // Each cell's centre direction takes the nearest view.
+    m_viewCube.resize(6 * kCubeCells * kCubeCells);
+    for (int face = 0; face < 6; ++face)
+      for (int j = 0; j < kCubeCells; ++j)
+        for (int i = 0; i < kCubeCells; ++i) {
+          const double s = 2.0 * (i + 0.5) / kCubeCells - 1.0, t = 2.0 * (j + 0.5) / kCubeCells - 1.0;
+          const int axis = face / 2;
+          const double sign = face % 2 ? -1.0 : 1.0;
+          double d[3];
+          d[axis] = sign;
+          d[(axis + 1) % 3] = s;
+          d[(axis + 2) % 3] = t;
+          std::size_t best = 0;
+          double bestDot = -1e9;
+          for (std::size_t v = 0; v < m_views.size(); ++v) {
+            const double dd = (m_views[v].dir[0] * d[0] + m_views[v].dir[1] * d[1] + m_views[v].dir[2] * d[2]);
+            if (dd > bestDot) {
+              bestDot = dd;
+              best = v;
+            }
+          }
+          m_viewCube[cubeCell(d)] = static_cast<std::uint16_t>(best);
+        }
+  }
   // The vector kernels read groups of 8 past a set's end (masked): padding.
   m_x.resize(m_x.size() + 8, 0.f);
   m_y.resize(m_y.size() + 8, 0.f);
@@ -632,6 +659,20 @@ Projection StereoFitness::projectionOf(int cam, const Phi &phi) const
   return p;
 }
 
+std::size_t StereoFitness::cubeCell(const double c[3])
+{
+  const double a[3] = {std::fabs(c[0]), std::fabs(c[1]), std::fabs(c[2])};
+  const int axis = a[0] >= a[1] && a[0] >= a[2] ? 0 : (a[1] >= a[2] ? 1 : 2);
+  const double m = a[axis] > 0 ? a[axis] : 1.0;
+  const int face = 2 * axis + (c[axis] < 0 ? 1 : 0);
+  auto cell = [](double x) { // x in [-1, 1]
+    const int k = static_cast<int>((x + 1.0) * 0.5 * kCubeCells);
+    return std::min(kCubeCells - 1, std::max(0, k));
+  };
+  const int i = cell(c[(axis + 1) % 3] / m), j = cell(c[(axis + 2) % 3] / m);
+  return (static_cast<std::size_t>(face) * kCubeCells + static_cast<std::size_t>(j)) * kCubeCells + static_cast<std::size_t>(i);
+}
+
 const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
 {
   if (m_views.size() == 1)
@@ -641,6 +682,8 @@ const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
   double c[3];
   for (int k = 0; k < 3; ++k)
     c[k] = -(static_cast<double>(p.r[k]) * p.t[0] + static_cast<double>(p.r[3 + k]) * p.t[1] + static_cast<double>(p.r[6 + k]) * p.t[2]);
+  if (!m_viewCube.empty())
+    return m_views[m_viewCube[cubeCell(c)]];
   std::size_t best = 0;
   double bestDot = -2;
   for (std::size_t i = 0; i < m_views.size(); ++i) {

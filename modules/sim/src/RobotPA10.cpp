@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <visp3/core/vpThetaUVector.h>
 #include <visp3/core/vpVelocityTwistMatrix.h>
 
 #include "pm/core/Error.h"
@@ -59,6 +60,53 @@ vpHomogeneousMatrix RobotPA10::forward(const vpColVector &q)
   for (unsigned i = 0; i < kDof; ++i)
     T = T * dh(q[i], kD[i], kAlphaDeg[i] * M_PI / 180);
   return T;
+}
+
+bool RobotPA10::inverse(const vpHomogeneousMatrix &fMe, const vpColVector &seed, vpColVector &q, double marginDeg)
+{
+  if (seed.size() != kDof)
+    throw Error("PA-10: 7 joint values expected for the seed");
+  q = seed;
+  double lo[kDof], hi[kDof];
+  for (int i = 0; i < kDof; ++i) {
+    hi[i] = (kLimitDeg[i] - marginDeg) * M_PI / 180;
+    lo[i] = -hi[i];
+    q[i] = std::min(hi[i], std::max(lo[i], q[i]));
+  }
+  const vpTranslationVector td = fMe.getTranslationVector();
+  const vpRotationMatrix Rd = fMe.getRotationMatrix();
+  for (int it = 0; it < 400; ++it) {
+    const vpHomogeneousMatrix T = forward(q);
+    // The error as a base-frame twist: translation, and the rotation Rd R^T as theta-u.
+    const vpTranslationVector dt = td - T.getTranslationVector();
+    const vpThetaUVector dr(Rd * T.getRotationMatrix().t());
+    const double ep = std::sqrt(dt.sumSquare()), er = std::sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]);
+    if (ep < 1e-4 && er < 1e-2 * M_PI / 180)
+      return true;
+    vpColVector e(6);
+    const double maxStep = 0.05; // m and rad per iteration
+    const double s = std::min(1.0, maxStep / std::max(ep, er));
+    for (int k = 0; k < 3; ++k) {
+      e[k] = s * dt[k];
+      e[3 + k] = s * dr[k];
+    }
+    const vpMatrix J = jacobianBase(q);
+    // dq = J^T (J J^T + lambda^2 I)^-1 e
+    vpMatrix A = J * J.t();
+    const double lambda2 = 1e-4;
+    for (unsigned k = 0; k < 6; ++k)
+      A[k][k] += lambda2;
+    const vpMatrix Jp = J.t() * A.inverseByLU();
+    vpColVector dq = Jp * e;
+    // The redundancy: toward the seed in the null space of J, so that the arm stays near where it started.
+    vpColVector toSeed(kDof);
+    for (int i = 0; i < kDof; ++i)
+      toSeed[i] = ep > 1e-3 ? 0.1 * (seed[i] - q[i]) : 0.0; // near the goal: the goal alone
+    dq += toSeed - Jp * (J * toSeed);
+    for (int i = 0; i < kDof; ++i)
+      q[i] = std::min(hi[i], std::max(lo[i], q[i] + dq[i]));
+  }
+  return false;
 }
 
 vpMatrix RobotPA10::jacobianBase(const vpColVector &q)

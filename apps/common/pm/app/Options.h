@@ -6,7 +6,7 @@
 */
 #include <CLI/CLI.hpp>
 
-#include "pm/core/PhotoModelBuilder.h"
+#include "pm/model/PhotoModelBuilder.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
@@ -36,6 +36,8 @@ struct LabModelChoice
   PhotoModelParams photo;   //!< region and sampling (addModelOptions)
   bool rightView = false;   //!< --right-view: the stereo model adds the right camera's own views
   double viewTurnDeg = 0;   //!< --view-turn-deg: four further photo pairs, the hand turned by this about x and y (0: one pair)
+  bool allAround = false;   //!< --all-around: the PA-10 walks the rig around the toy first, the all-around model
+  int passViews = 16;       //!< --pass-views: hand poses of that pass
 };
 //! --stereo, --distance-mm (the photo distance of the flat model, the toy's distance for the stereo one)
 void addLabModelOptions(CLI::App &app, LabModelChoice &c);

@@ -224,6 +224,16 @@ private:
   std::vector<float> m_x, m_y, m_z;
   std::vector<std::int32_t> m_hue;
   std::vector<View> m_views; //!< view 0: the model's own points (the only one of a flat or one-view model)
+  /*!
+    Many views (an all-around model): the view nearest each cell of a cube map of directions
+    (6 faces of kCubeCells^2 cells), so that viewFor costs a lookup, not a scan of every view.
+    Empty for a few views (viewFor scans them: the exact nearest).
+  */
+  std::vector<std::uint16_t> m_viewCube;
+  static constexpr int kCubeCells = 64;
+  static constexpr std::size_t kScanViews = 16; //!< up to this many views, viewFor scans them
+  //! The cube-map cell of direction \e c (any length, not zero).
+  static std::size_t cubeCell(const double c[3]);
   std::vector<std::uint32_t> m_order; //!< m_order[k]: where the k-th point of the model's order (S_in then S_out of each view) is kept
   std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
   std::array<HuePlane, 2> m_planes;

@@ -51,6 +51,13 @@ public:
   static vpHomogeneousMatrix forward(const vpColVector &q);
   //! The geometric Jacobian in the base frame (rows vx vy vz wx wy wz) for joints \e q.
   static vpMatrix jacobianBase(const vpColVector &q);
+  /*!
+    Inverse kinematics: joints that put the flange at \e fMe, by damped least squares on the
+    base-frame Jacobian from \e seed (the nearest solution to it), each step held inside the joint
+    limits with a margin of \e marginDeg. Returns false when no solution within 0.1 mm and
+    0.01 deg was found (out of reach, or only past a joint limit); \e q holds the last iterate.
+  */
+  static bool inverse(const vpHomogeneousMatrix &fMe, const vpColVector &seed, vpColVector &q, double marginDeg = 2.0);
   vpHomogeneousMatrix fMe() const { return forward(m_q); }
   const vpColVector &q() const { return m_q; }
   const vpColVector &qdot() const { return m_qdot; }

@@ -12,8 +12,8 @@
       const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
       const pm::Phi truth = sm.truth(hMo);   // the model's true pose for a toy at hMo
 */
-#include "pm/core/PhotoModelBuilder.h"
-#include "pm/core/StereoPhotoModelBuilder.h"
+#include "pm/model/PhotoModelBuilder.h"
+#include "pm/model/StereoPhotoModelBuilder.h"
 #include "pm/core/Pose.h"
 #include "pm/sim/Scene.h"
 

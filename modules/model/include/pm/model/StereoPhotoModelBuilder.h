@@ -34,7 +34,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
-#include "pm/core/PhotoModelBuilder.h"
+#include "pm/model/PhotoModelBuilder.h"
 #include "pm/core/StereoRig.h"
 
 namespace pm {

@@ -1,4 +1,4 @@
-#include "pm/core/PhotoModelBuilder.h"
+#include "pm/model/PhotoModelBuilder.h"
 
 #include <cmath>
 

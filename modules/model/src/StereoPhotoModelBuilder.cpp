@@ -1,4 +1,4 @@
-#include "pm/core/StereoPhotoModelBuilder.h"
+#include "pm/model/StereoPhotoModelBuilder.h"
 
 #include <algorithm>
 #include <cmath>

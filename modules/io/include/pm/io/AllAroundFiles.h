@@ -1,0 +1,43 @@
+#pragma once
+/*!
+  \file AllAroundFiles.h
+  What a person looks at after an all-around build, written into an output folder:
+
+  - model.ply: the hull's surface as a coloured point cloud with normals (ASCII PLY, model frame,
+    millimetres; opens in MeshLab or CloudCompare);
+  - contact.png: for 8 views of the pass, the photo (left camera) beside the hull drawn from that
+    camera, in its colours and shaded by its normals;
+  - summary.json, model.json;
+  - silhouettes.png: every view's left photo with its silhouette (green) and the hull's outline
+    from that camera (red) over it.
+
+      pm::io::StagedFiles out("model_dir");
+      pm::io::writeAllAroundPictures(build, pass, rig, out);
+      out.commit();
+*/
+#include <string>
+#include <vector>
+
+#include "pm/core/StereoRig.h"
+#include "pm/io/StagedFiles.h"
+#include "pm/model/AllAroundModelBuilder.h"
+
+namespace pm::io {
+
+//! The ASCII PLY of \e surface (x y z nx ny nz red green blue).
+std::string plyText(const std::vector<SurfacePoint> &surface);
+//! Stages model.ply, contact.png and silhouettes.png into \e out.
+void writeAllAroundPictures(const AllAroundBuild &build, const std::vector<PassView> &pass, const StereoRig &rig,
+                            StagedFiles &out);
+
+/*!
+  Writes everything of an all-around build into the folder \e dir, all at once or nothing:
+  model.json, model.ply, contact.png, silhouettes.png, summary.json (n_views, n_views_used,
+  n_surface_points, n_viewpoints, hull_volume_cm3, fMm as fMo, build_s, ...) and, with
+  \e keepViews, the pass itself in views/ (the layout loadViewsFolder reads). \e source says where
+  the pass came from (summary.json). Returns the summary's text.
+*/
+std::string writeAllAroundModel(const AllAroundBuild &build, const std::vector<PassView> &pass, const StereoRig &rig,
+                                const std::string &dir, const std::string &source, bool keepViews);
+
+} // namespace pm::io

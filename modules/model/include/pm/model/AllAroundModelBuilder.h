@@ -1,0 +1,119 @@
+#pragma once
+/*!
+  \file AllAroundModelBuilder.h
+  The all-around photo-model: from a pass of the hand around the target (PassView: a stereo pair
+  with the target, the same pair without it, and the hand's pose in a world frame, for a dozen or
+  more hand poses), the target's shape carved from its silhouettes, coloured from the photos, and
+  a sparse viewpoint model for the fitness: for each of K viewing directions, the S_in points the
+  camera sees there (3-D, with their hue) and the S_out points just outside the outline it sees,
+  at the outline's depth. StereoFitness scores each camera with the viewpoint nearest its own
+  direction, so the model has the right outline at every orientation the pass covers.
+
+  1. Silhouettes (pm::silhouette) of both cameras of every view; a silhouette cut by the image
+     border is an error naming the view.
+  2. The visual hull: cells of a cube around the target (found from the silhouettes' centroids)
+     carved coarse to fine (coarsestMm down to finestMm) against each silhouette's signed distance
+     transform; a cell whose projection lies wholly outside one silhouette is carved, wholly inside
+     all of them kept, otherwise split. A view whose silhouettes alone carve away more than
+     outlierCarveFraction of what the others keep disagrees with them: it is named and left out.
+  3. Surface points: the hull's cells with an empty neighbour, their outward normals from the
+     hull's occupancy around them. Each takes the colour of the views that see it (a depth buffer
+     of the hull, the normal facing the camera): the median hue; samples brighter and paler than
+     the point's others are highlights and left out; a point whose views still disagree over
+     maxHueSpreadDeg is marked and not used as S_in (both counted).
+  4. K viewpoints over the directions within capDeg of the pass's first view (a Fibonacci
+     lattice), at the pass's distance: the surface points the virtual camera sees (depth buffer),
+     nIn of them spread over the image, and nOut points of the hull's outline there, offset outward
+     by the strip as the flat model's S_out.
+
+  The model frame: origin at the hull's centroid, axes those of the hand at the first view, so a
+  tracker starting near the first view's pose sees the model turned by little.
+
+      const std::vector<pm::PassView> pass = pm::io::loadViewsFolder("views", rig, 6);
+      const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass);
+      pm::io::savePhotoModel(b.model, "model.json");
+      std::cout << b.surface.size() << " surface points, hull " << b.hullVolumeCm3 << " cm3\n";
+*/
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+
+#include "pm/core/PhotoModel.h"
+#include "pm/core/StereoRig.h"
+#include "pm/model/PassView.h"
+#include "pm/model/Silhouette.h"
+
+namespace pm {
+
+struct AllAroundParams
+{
+  SilhouetteParams silhouette;
+  std::size_t minViews = 6;         //!< fewer usable views: refused
+  double coarsestMm = 16;           //!< first cell size of the carving
+  double finestMm = 1;              //!< last cell size (raised for large targets: at most 256 cells across)
+  double outlierCarveFraction = 0.4;//!< a view carving more than this of what the others keep is left out
+  double visibilityTolMm = 3;       //!< a surface point is seen when within this of the depth buffer
+  double minSaturation = 0.15;      //!< colour samples paler than this have no hue
+  double minValue = 0.08;           //!< ... or darker than this
+  double minHueFromBackgroundDeg = 30; //!< S_in points need a hue this far from H_B
+  double maxHueSpreadDeg = 20;      //!< views disagreeing more (median distance to the median hue): marked
+  int viewpoints = 240;             //!< K, the viewpoints within the cap
+  double capDeg = 75;               //!< viewpoints within this of the first view's direction
+  int nIn = 400;                    //!< S_in points per viewpoint (fewer where fewer are seen)
+  int nOut = 160;                   //!< S_out points per viewpoint
+  double stripGapPx = 3;            //!< S_out: the first row this far outside the outline (px)
+  double stripWidthPx = 8;          //!< ... the last this much farther
+  int stripRows = 2;
+
+  //! Throws pm::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! A point of the hull's surface, in the model frame.
+struct SurfacePoint
+{
+  float x, y, z;          //!< mm
+  float nx, ny, nz;       //!< outward unit normal
+  float hue;              //!< median hue of the views that see it (deg; meaningful when hasHue)
+  unsigned char r, g, b;  //!< median colour (for model.ply)
+  std::uint8_t nSeen;     //!< cameras that see it
+  bool hasHue;            //!< saturated enough, seen, views agree
+  bool highlight;         //!< views disagreed (marked, not used as S_in)
+};
+
+struct AllAroundBuild
+{
+  PhotoModel model;                 //!< views: the K viewpoints (view 0 in inner/outer)
+  vpHomogeneousMatrix fMm;          //!< the model frame in the world frame of the poses (metres)
+  std::vector<SurfacePoint> surface;
+  std::vector<vpImage<unsigned char>> silhouettes; //!< left and right of each view: 2k, 2k + 1
+  std::vector<std::string> leftOut; //!< views left out (their silhouettes disagree), with why
+  std::size_t nViews = 0, nViewsUsed = 0;
+  double hullVolumeCm3 = 0;
+  double cellMm = 0;                //!< the finest cell size used
+  int nHighlight = 0;               //!< surface points marked (views disagree)
+  int nHighlightSamples = 0;        //!< colour samples left out as highlights
+  long shadowPx = 0;                //!< changed pixels taken for shadow over all silhouettes
+  double buildS = 0;                //!< wall time of the build
+};
+
+/*!
+  Builds the all-around model of the target seen in \e pass by \e rig. Throws pm::Error (one line,
+  naming the view) for: fewer than minViews views, images of another size than the rig's, a view
+  whose silhouette is cut by the image border, a background that does not match its photo, poses
+  that carve the hull to nothing, too few usable views after leaving out the disagreeing ones.
+*/
+AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass,
+                                   const AllAroundParams &params = AllAroundParams());
+
+/*!
+  The hull's surface drawn by a camera at \e mMc (its pose in the model frame, metres) with
+  intrinsics \e cam, \e w x \e h: each surface point in its colour (nearest first), the rest black.
+  \e mask (when given) gets 255 where the hull covers the image. For pictures.
+*/
+vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
+                            const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask = nullptr);
+
+} // namespace pm
