@@ -43,7 +43,7 @@ vpHomogeneousMatrix parsePoseYaml(const std::string &text, const std::string &so
     if (!std::isfinite(v[i]))
       throw Error(what + "holds a value that is not finite");
   for (int i = 0; i < 3; ++i)
-    if (std::fabs(v[i]) > 1000)
+    if (std::fabs(v[i]) > 100)
       throw Error(what + "puts the hand " + std::to_string(v[i]) + " m away: the translation is in metres");
   if (std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]) > 2 * M_PI + 1e-6)
     throw Error(what + "holds a theta-u rotation over 2 pi: the rotation is in radians");

@@ -1,0 +1,326 @@
+// The all-around photo-model: the pass (plan, inverse kinematics, views folder, pose files), the
+// silhouettes against ground truth, the hull and its model against the lab's truth, and bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include <visp3/core/vpPoseVector.h>
+#include <visp3/core/vpThetaUVector.h>
+
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/PhotoModelFile.h"
+#include "pm/io/PoseFile.h"
+#include "pm/io/RigFile.h"
+#include "pm/io/ViewsFolder.h"
+#include "pm/lab/ClosedLoop.h"
+#include "pm/lab/LabPass.h"
+#include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/PassPlanner.h"
+#include "pm/model/Silhouette.h"
+#include "pm/sim/Rasterizer.h"
+#include "pm/sim/RobotPA10.h"
+#include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/PhotoModelTracker.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const pm::StereoRig &rig()
+{
+  static const pm::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  return r;
+}
+
+double angleDeg(const vpRotationMatrix &R)
+{
+  const vpThetaUVector tu(R);
+  return std::sqrt(tu.sumSquare()) * 180 / M_PI;
+}
+
+//! The lab's pass of the crab and its all-around build, made once.
+struct CrabPass
+{
+  pm::sim::Scene scene{pm::sim::makeTarget("C12")};
+  pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::PassPlan(), pm::lab::LoopParams::startJoints());
+  pm::AllAroundBuild build = pm::buildAllAroundModel(rig(), pass.views);
+  vpHomogeneousMatrix oMm = pass.fMo.inverse() * build.fMm;
+};
+const CrabPass &crab()
+{
+  static const CrabPass c;
+  return c;
+}
+
+} // namespace
+
+TEST(PoseFile, ReadsWhatViSPWritesAndViSPReadsWhatWeWrite)
+{
+  pm::test::TempDir dir("pose_yaml");
+  const vpPoseVector p(0.12, -0.34, 0.56, 0.3, -0.2, 1.1);
+  ASSERT_TRUE(vpPoseVector::saveYAML(dir.file("visp.yaml"), p, "# written by ViSP\n"));
+  const vpPoseVector back(pm::io::readPoseYaml(dir.file("visp.yaml")));
+  for (unsigned i = 0; i < 6; ++i)
+    EXPECT_NEAR(back[i], p[i], 1e-9);
+  pm::io::writePoseYaml(vpHomogeneousMatrix(p), dir.file("ours.yaml"));
+  vpPoseVector q;
+  ASSERT_TRUE(vpPoseVector::loadYAML(dir.file("ours.yaml"), q));
+  for (unsigned i = 0; i < 6; ++i)
+    EXPECT_NEAR(q[i], p[i], 1e-12);
+}
+
+TEST(PoseFile, RefusesWhatIsNotAVpPoseVectorNamingTheFile)
+{
+  pm::test::TempDir dir("pose_bad");
+  const std::pair<const char *, const char *> cases[] = {
+      {"rows: 3\ncols: 1\ndata:\n  - [0]\n  - [0]\n  - [0]\n", "3x1"},
+      {"rows: 6\ncols: 1\ndata:\n  - [0]\n  - [0]\n", "6 values"},
+      {"rows: 6\ncols: 1\ndata:\n  - [a]\n  - [0]\n  - [0]\n  - [0]\n  - [0]\n  - [0]\n", "YAML"},
+      {"rows: 6\ncols: 1\ndata:\n  - [.nan]\n  - [0]\n  - [0]\n  - [0]\n  - [0]\n  - [0]\n", "finite"},
+      {"rows: 6\ncols: 1\ndata:\n  - [0]\n  - [0]\n  - [500]\n  - [0]\n  - [0]\n  - [0]\n", "metres"},
+      {"rows: 6\ncols: 1\ndata:\n  - [0]\n  - [0]\n  - [0.5]\n  - [0]\n  - [0]\n  - [90]\n", "radians"},
+      {"just text", "vpPoseVector"},
+  };
+  for (const auto &c : cases) {
+    pm::test::writeText(dir.file("p.yaml"), c.first);
+    const std::string e = pm::test::errorOf([&] { (void)pm::io::readPoseYaml(dir.file("p.yaml")); });
+    EXPECT_NE(e.find("p.yaml"), std::string::npos) << e;
+    EXPECT_NE(e.find(c.second), std::string::npos) << e;
+  }
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::io::readPoseYaml(dir.file("none.yaml")); }).find("does not exist"), std::string::npos);
+}
+
+TEST(PassPlan, EveryPoseLooksAtThePivotFromItsRingAngle)
+{
+  pm::PassPlan plan;
+  const std::vector<pm::PassDirection> dirs = pm::passDirections(plan);
+  const std::vector<vpHomogeneousMatrix> poses = pm::planPass(plan);
+  ASSERT_EQ(poses.size(), 16u);
+  int ring[3] = {0, 0, 0};
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    // The pivot, 500 mm ahead of the hand at rest, is 500 mm ahead of every hand pose.
+    const vpColVector pivot = poses[k].inverse() * vpColVector(std::vector<double>{0, 0, 0.5, 1});
+    EXPECT_NEAR(pivot[0], 0, 1e-9);
+    EXPECT_NEAR(pivot[1], 0, 1e-9);
+    EXPECT_NEAR(pivot[2], 0.5, 1e-9);
+    const double a = angleDeg(poses[k].getRotationMatrix());
+    EXPECT_NEAR(a, dirs[k].tiltDeg, 1e-6);
+    ring[a < 1 ? 0 : a < 30 ? 1 : 2]++;
+  }
+  EXPECT_EQ(ring[0], 1);
+  EXPECT_EQ(ring[1], 5);  // 15 views in proportion 20 : 40
+  EXPECT_EQ(ring[2], 10);
+  pm::PassPlan bad;
+  bad.ringsDeg = {95};
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::planPass(bad); }).find("ring"), std::string::npos);
+}
+
+TEST(RobotPA10, InverseKinematicsReachesPosesAndRefusesTheUnreachable)
+{
+  const vpColVector q0 = pm::lab::LoopParams::startJoints();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> d(-0.4, 0.4);
+  for (int k = 0; k < 10; ++k) {
+    vpColVector q = q0;
+    for (unsigned i = 0; i < 7; ++i)
+      q[i] += d(rng);
+    const vpHomogeneousMatrix goal = pm::sim::RobotPA10::forward(q);
+    vpColVector sol;
+    ASSERT_TRUE(pm::sim::RobotPA10::inverse(goal, q0, sol)) << k;
+    const vpHomogeneousMatrix got = pm::sim::RobotPA10::forward(sol);
+    EXPECT_LT(std::sqrt((got.getTranslationVector() - goal.getTranslationVector()).sumSquare()), 1e-4);
+    EXPECT_LT(angleDeg(got.getRotationMatrix() * goal.getRotationMatrix().t()), 0.01);
+    const vpColVector lo = pm::sim::RobotPA10().jointMin(), hi = pm::sim::RobotPA10().jointMax();
+    for (unsigned i = 0; i < 7; ++i) {
+      EXPECT_GE(sol[i], lo[i]);
+      EXPECT_LE(sol[i], hi[i]);
+    }
+  }
+  vpColVector sol;
+  EXPECT_FALSE(pm::sim::RobotPA10::inverse(vpHomogeneousMatrix(2.5, 0, 1, 0, 0, 0), q0, sol)); // 2.5 m: out of reach
+}
+
+TEST(Silhouette, KeepsTheReliefToysAndDropsTheirCastShadows)
+{
+  // R2 and R3 under the scene light cast shadows on the backdrop. The truth: the renderer's own
+  // coverage of the toy; the shadow: backdrop pixels (no toy) darker than in the background image.
+  for (const char *code : {"R2", "R3"}) {
+    const pm::sim::Scene scene(pm::sim::makeTarget(code));
+    ASSERT_TRUE(scene.sceneLit());
+    const vpHomogeneousMatrix hMo(0.01, -0.02, 0.5, 0.2, -0.25, 0.1);
+    pm::sim::Rasterizer r;
+    vpImage<vpRGBa> bg, photo;
+    scene.render(r, rig().left, hMo, 3, 4, bg, false);
+    scene.render(r, rig().left, hMo, 3, 6, photo, true);
+    pm::SilhouetteStats st;
+    const vpImage<unsigned char> mask = pm::silhouette(photo, bg, pm::SilhouetteParams(), &st);
+    long tp = 0, fp = 0, fn = 0, shadow = 0, shadowKept = 0;
+    for (unsigned v = 0; v < mask.getHeight(); ++v)
+      for (unsigned u = 0; u < mask.getWidth(); ++u) {
+        const double c = r.coverage(u, v, 2);
+        if (c > 0 && c < 1)
+          continue; // the toy's edge pixels count for neither
+        const bool truth = c >= 1, got = mask[v][u] != 0;
+        tp += truth && got;
+        fp += !truth && got;
+        fn += truth && !got;
+        const double a = photo[v][u].R + photo[v][u].G + photo[v][u].B, b = bg[v][u].R + bg[v][u].G + bg[v][u].B;
+        if (!truth && a < 0.8 * b) {
+          ++shadow;
+          shadowKept += got;
+        }
+      }
+    const double iou = static_cast<double>(tp) / static_cast<double>(tp + fp + fn);
+    std::cout << code << " silhouette: IoU " << iou << ", " << fp << " px too many, " << fn << " px missed; shadow " << shadow
+              << " px, " << shadowKept << " of them kept\n";
+    EXPECT_GT(iou, 0.99) << code;
+    EXPECT_GT(shadow, 500) << code;                    // there is a cast shadow ...
+    EXPECT_LT(shadowKept, shadow / 50) << code;        // ... and it is not in the silhouette
+    EXPECT_FALSE(st.touchesBorder);
+  }
+}
+
+TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)
+{
+  const CrabPass &c = crab();
+  const pm::AllAroundBuild &b = c.build;
+  EXPECT_EQ(b.nViews, 16u);
+  EXPECT_EQ(b.nViewsUsed, 16u);
+  EXPECT_GT(b.model.views.size(), 150u);
+  EXPECT_LE(b.model.inner.size(), 400u);
+  EXPECT_GT(b.model.inner.size(), 200u);
+  // The hull contains the toy: every pass view's silhouette is covered by the hull's outline.
+  for (std::size_t k = 0; k < c.pass.views.size(); k += 5) {
+    vpImage<unsigned char> hull;
+    pm::drawSurface(b.surface, b.fMm.inverse() * c.pass.views[k].fMh * rig().left.hMc, rig().left.cam, rig().left.width,
+                    rig().left.height, &hull);
+    long in = 0, covered = 0;
+    for (unsigned i = 0; i < hull.getSize(); ++i)
+      if (b.silhouettes[2 * k].bitmap[i]) {
+        ++in;
+        covered += hull.bitmap[i] != 0;
+      }
+    EXPECT_GT(static_cast<double>(covered) / static_cast<double>(in), 0.97) << k;
+  }
+  // Detection from scratch at poses tilted by 25 deg: within 2 mm and 1 deg of the truth.
+  const pm::sim::Scene &scene = c.scene;
+  for (const vpHomogeneousMatrix &hMo :
+       {vpHomogeneousMatrix(0.02, -0.01, 0.52, 0.436, 0, 0), vpHomogeneousMatrix(-0.01, 0.01, 0.5, 0, -0.436, 0.2)}) {
+    const pm::sim::StereoImages im = scene.renderStereo(rig(), hMo, 0);
+    pm::TrackerParams p;
+    p.budgetEvaluations = 3000;
+    p.ga.population = 100;
+    p.ga.restartGenerations = 30;
+    p.ga.refineEvaluations = 200;
+    pm::PhotoModelTracker t(rig(), b.model, p);
+    t.initialize();
+    pm::TrackResult r;
+    for (int k = 0; k < 40; ++k)
+      r = t.track(im.left, im.right);
+    const vpHomogeneousMatrix truth = hMo * c.oMm, got = pm::toHomogeneousMatrix(r.phi);
+    const double dp = 1e3 * std::sqrt((got.getTranslationVector() - truth.getTranslationVector()).sumSquare());
+    const double da = angleDeg(got.getRotationMatrix() * truth.getRotationMatrix().t());
+    std::cout << "crab tilted: " << dp << " mm, " << da << " deg\n";
+    EXPECT_EQ(r.state, pm::TrackState::Tracking);
+    EXPECT_LT(dp, 2.0);
+    EXPECT_LT(da, 1.0);
+  }
+}
+
+TEST(AllAround, BothKernelsAgreeAndTheModelFileKeepsEveryView)
+{
+  const CrabPass &c = crab();
+  pm::test::TempDir dir("aa_file");
+  pm::io::savePhotoModel(c.build.model, dir.file("m.json"));
+  const pm::PhotoModel m = pm::io::loadPhotoModel(dir.file("m.json"));
+  ASSERT_EQ(m.views.size(), c.build.model.views.size());
+  pm::StereoFitness f(rig(), m);
+  const pm::sim::StereoImages im = c.scene.renderStereo(rig(), vpHomogeneousMatrix(0, 0, 0.5, 0.3, 0.2, 0), 0);
+  f.setImages(im.left, im.right);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> t(-40, 40), e(-0.35, 0.35);
+  std::vector<double> fast;
+  std::vector<pm::Phi> poses;
+  for (int k = 0; k < 200; ++k) {
+    poses.push_back({t(rng), t(rng), 500 + t(rng), e(rng), e(rng), e(rng)});
+    fast.push_back(f.evaluate(poses.back()));
+  }
+  pm::StereoFitness::forceScalar(true);
+  for (int k = 0; k < 200; ++k)
+    EXPECT_EQ(f.evaluate(poses[static_cast<std::size_t>(k)]), fast[static_cast<std::size_t>(k)]);
+  pm::StereoFitness::forceScalar(false);
+}
+
+TEST(AllAround, AViewWithAWrongPoseIsNamedAndLeftOut)
+{
+  std::vector<pm::PassView> views = crab().pass.views;
+  views[5].fMh = views[5].fMh * vpHomogeneousMatrix(0.04, -0.03, 0, 0, 0, 0.2); // 50 mm and 11 deg off
+  const pm::AllAroundBuild b = pm::buildAllAroundModel(rig(), views);
+  ASSERT_EQ(b.leftOut.size(), 1u);
+  EXPECT_EQ(b.leftOut[0].rfind("view 05", 0), 0u) << b.leftOut[0];
+  EXPECT_EQ(b.nViewsUsed, 15u);
+}
+
+TEST(AllAround, BadInputIsRefusedNamingTheView)
+{
+  const std::vector<pm::PassView> &good = crab().pass.views;
+  auto err = [](const std::vector<pm::PassView> &v) { return pm::test::errorOf([&] { (void)pm::buildAllAroundModel(rig(), v); }); };
+  // Too few views: says how many.
+  std::vector<pm::PassView> few(good.begin(), good.begin() + 4);
+  EXPECT_NE(err(few).find("holds 4 views; at least 6"), std::string::npos) << err(few);
+  // The target cut by the border in one view.
+  std::vector<pm::PassView> cut = good;
+  for (unsigned v = 200; v < 260; ++v)
+    for (unsigned u = 0; u < 330; ++u)
+      cut[3].left[v][u] = vpRGBa(230, 60, 30);
+  EXPECT_NE(err(cut).find("view 03: the target is cut by the left image's border"), std::string::npos) << err(cut);
+  // A background that does not match its photo (another view's).
+  std::vector<pm::PassView> wrongBg = good;
+  wrongBg[7].backgroundRight = good[12].backgroundRight;
+  EXPECT_NE(err(wrongBg).find("view 07 (right)"), std::string::npos) << err(wrongBg);
+  EXPECT_NE(err(wrongBg).find("background does not match"), std::string::npos) << err(wrongBg);
+  // Images of another size than the rig's.
+  std::vector<pm::PassView> small = good;
+  small[2].right.resize(240, 320);
+  EXPECT_NE(err(small).find("view 02"), std::string::npos) << err(small);
+  // Poses that carve the hull to nothing: every view shifted its own way.
+  std::vector<pm::PassView> scattered = good;
+  for (std::size_t k = 0; k < scattered.size(); ++k)
+    scattered[k].fMh = scattered[k].fMh * vpHomogeneousMatrix(0.15 * std::cos(k), 0.15 * std::sin(k), 0, 0, 0, 0);
+  EXPECT_NE(err(scattered).find("views"), std::string::npos) << err(scattered);
+}
+
+TEST(AllAround, AViewsFolderGoesThroughTheSameBuildAndBadFilesNameTheView)
+{
+  const CrabPass &c = crab();
+  pm::test::TempDir dir("aa_views");
+  const std::string views = dir.file("views");
+  pm::io::saveViewsFolder(c.pass.views, views);
+  const std::vector<pm::PassView> back = pm::io::loadViewsFolder(views, rig(), 6);
+  ASSERT_EQ(back.size(), c.pass.views.size());
+  const pm::AllAroundBuild b = pm::buildAllAroundModel(rig(), back);
+  // The same build up to the rounding of the poses through vpPoseVector (theta-u) and back.
+  EXPECT_EQ(b.nViewsUsed, c.build.nViewsUsed);
+  EXPECT_NEAR(b.hullVolumeCm3, c.build.hullVolumeCm3, 0.002 * c.build.hullVolumeCm3);
+  EXPECT_EQ(b.model.views.size(), c.build.model.views.size());
+  EXPECT_NEAR(static_cast<double>(b.model.inner.size()), static_cast<double>(c.build.model.inner.size()), 4.0);
+  auto err = [&] { return pm::test::errorOf([&] { (void)pm::io::loadViewsFolder(views, rig(), 6); }); };
+  fs::remove(fs::path(views) / "background_right_04.png");
+  EXPECT_NE(err().find("view 04"), std::string::npos) << err();
+  EXPECT_NE(err().find("background_right_04.png"), std::string::npos) << err();
+  pm::io::writeImage(c.pass.views[4].backgroundRight, (fs::path(views) / "background_right_04.png").string());
+  pm::test::writeText((fs::path(views) / "pose_fPh_09.yaml").string(), "rows: 4\ncols: 4\ndata: []\n");
+  EXPECT_NE(err().find("view 09"), std::string::npos) << err();
+  EXPECT_NE(err().find("vpPoseVector"), std::string::npos) << err();
+  pm::io::writePoseYaml(c.pass.views[9].fMh, (fs::path(views) / "pose_fPh_09.yaml").string());
+  vpImage<vpRGBa> small(240, 320);
+  pm::io::writeImage(small, (fs::path(views) / "left_11.png").string());
+  EXPECT_NE(err().find("view 11: left_11.png is 320x240 but the rig's camera is 640x480"), std::string::npos) << err();
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::io::loadViewsFolder(dir.file("nothing"), rig()); }).find("does not exist"),
+            std::string::npos);
+}
