@@ -24,6 +24,8 @@
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
+#include "pm/lab/ClosedLoop.h"
+#include "pm/lab/LabPass.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
@@ -33,7 +35,7 @@ namespace {
 using pm::compare::FrameScore;
 using pm::compare::Summary;
 
-const char *kTrackerKeys[] = {"ours", "ours-3d", "ours-steady", "mbt-edge", "mbt-klt", "mbt-edge-klt", "template-ssd", "template-zncc"};
+const char *kTrackerKeys[] = {"ours", "ours-3d", "ours-aa", "ours-steady", "mbt-edge", "mbt-klt", "mbt-edge-klt", "template-ssd", "template-zncc"};
 
 const vpRGBa kColors[] = {vpRGBa(220, 50, 40), vpRGBa(240, 120, 150), vpRGBa(40, 90, 200), vpRGBa(40, 160, 80), vpRGBa(140, 60, 170),
                           vpRGBa(230, 150, 20), vpRGBa(90, 90, 90)};
@@ -163,6 +165,15 @@ int main(int argc, char **argv)
     const bool want3d = std::find(trackers.begin(), trackers.end(), "ours-3d") != trackers.end();
     const pm::sim::SimulatedPhotoModel sm3d = want3d ? pm::sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm, pm::StereoModelParams(), viewTurnDeg)
                                                      : pm::sim::SimulatedPhotoModel();
+    // ours-aa: the all-around model from the PA-10's pass around the toy (its own model frame too).
+    const bool wantAA = std::find(trackers.begin(), trackers.end(), "ours-aa") != trackers.end();
+    const pm::sim::SimulatedPhotoModel smAA =
+        wantAA ? pm::lab::makeSimulatedAllAroundModel(scene, rig, pm::PassPlan(), pm::lab::LoopParams::startJoints(), distanceMm)
+               : pm::sim::SimulatedPhotoModel();
+    // The truth of a tracker's own model frame, and its model frame in the flat model's (for drawing).
+    auto ownFrame = [&](const std::string &key) -> const vpHomogeneousMatrix & {
+      return key == "ours-3d" ? sm3d.oMm : key == "ours-aa" ? smAA.oMm : sm.oMm;
+    };
 
     pm::io::StagedFiles files(out);
     const std::string caoPath = files.stage("model.cao");
@@ -173,6 +184,8 @@ int main(int argc, char **argv)
         return pm::compare::makeOurTracker(rig, sm.build.model, tp);
       if (key == "ours-3d")
         return pm::compare::makeOurTracker(rig, sm3d.build.model, tp, "photo-model with depth (ours, stereo model)");
+      if (key == "ours-aa")
+        return pm::compare::makeOurTracker(rig, smAA.build.model, tp, "all-around photo-model (ours, PA-10 pass)");
       if (key == "ours-steady") {
         pm::TrackerParams fast = tp;
         fast.steadyBudgetFraction = steadyVariant;
@@ -223,7 +236,7 @@ int main(int argc, char **argv)
           drawOutline(shot, outline, hMm, rig.left, vpRGBa(255, 255, 255));
         }
         for (std::size_t ti = 0; ti < nT; ++ti) {
-          const vpHomogeneousMatrix truth = trackers[ti] == "ours-3d" ? f.hMo * sm3d.oMm : hMm;
+          const vpHomogeneousMatrix truth = f.hMo * ownFrame(trackers[ti]); // each tracker in its own model frame
           if (k == 0)
             ts[ti]->start(im.left, im.right, truth);
           const auto t0 = std::chrono::steady_clock::now();
@@ -235,7 +248,7 @@ int main(int argc, char **argv)
           scores[si][ti].push_back(sc);
           if (snap)
             // The outline is in the flat model's frame: an estimate of the 3-D model's frame is moved to it.
-            drawOutline(shot, outline, trackers[ti] == "ours-3d" ? e.hMm * sm3d.oMm.inverse() * sm.oMm : e.hMm, rig.left,
+            drawOutline(shot, outline, e.hMm * ownFrame(trackers[ti]).inverse() * sm.oMm, rig.left,
                         kColors[ti % std::size(kColors)]);
           csv << seq.name << "," << k << "," << static_cast<double>(k) / seq.fps << "," << trackers[ti] << "," << sc.translationMm << ","
               << sc.rotationDeg << "," << sc.ms << "," << (sc.valid ? 1 : 0) << "\n";

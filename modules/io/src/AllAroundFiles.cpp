@@ -120,6 +120,7 @@ std::string writeAllAroundModel(const AllAroundBuild &b, const std::vector<PassV
                                {"n_out", b.model.outer.size()},
                                {"hull_volume_cm3", b.hullVolumeCm3},
                                {"cell_mm", b.cellMm},
+                               {"n_refined_points", b.nRefined},
                                {"n_highlight_points", b.nHighlight},
                                {"n_highlight_samples", b.nHighlightSamples},
                                {"shadow_px", b.shadowPx},

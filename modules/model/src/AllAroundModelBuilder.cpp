@@ -29,6 +29,9 @@ void AllAroundParams::validate() const
   check(coarsestMm >= finestMm && coarsestMm <= 200, "coarsest cell must lie in [finest, 200] mm");
   check(outlierCarveFraction > 0 && outlierCarveFraction <= 1, "outlier carve fraction must lie in (0, 1]");
   check(visibilityTolMm > 0 && visibilityTolMm <= 50, "visibility tolerance must lie in (0, 50] mm");
+  check(refineDepthMm >= 0 && refineDepthMm <= 100, "refine depth must lie in [0, 100] mm");
+  check(refineMinScore >= -1 && refineMinScore <= 1, "refine minimum score must lie in [-1, 1]");
+  check(refineMinGain >= 0 && refineMinGain <= 2, "refine minimum gain must lie in [0, 2]");
   check(minSaturation >= 0 && minSaturation < 1, "minimum saturation must lie in [0, 1)");
   check(minValue >= 0 && minValue < 1, "minimum value must lie in [0, 1)");
   check(minHueFromBackgroundDeg >= 0 && minHueFromBackgroundDeg < 180, "minimum hue from background must lie in [0, 180)");
@@ -270,6 +273,98 @@ void depthBuffer(const Pinhole &cam, const std::vector<Vec3> &pts, int radius, s
   }
 }
 
+//! The 5x5 patch around where \e X projects in \e vc's photo (R, G, B of each pixel), zero-mean and unit-norm; false off the image or flat.
+bool patchAt(const ViewCamera &vc, const Vec3 &X, std::array<float, 75> &out)
+{
+  double u, v, z;
+  if (!vc.cam.project(X, u, v, z))
+    return false;
+  const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+  if (ui < 2 || vi < 2 || ui >= vc.cam.w - 2 || vi >= vc.cam.h - 2)
+    return false;
+  double mean = 0;
+  std::size_t k = 0;
+  for (int dv = -2; dv <= 2; ++dv)
+    for (int du = -2; du <= 2; ++du) {
+      const vpRGBa px = vc.photo[static_cast<unsigned>(vi + dv)][static_cast<unsigned>(ui + du)];
+      out[k++] = px.R, out[k++] = px.G, out[k++] = px.B;
+      mean += px.R + px.G + px.B;
+    }
+  mean /= 75.0;
+  double n2 = 0;
+  for (float &x : out) {
+    x = static_cast<float>(x - mean);
+    n2 += static_cast<double>(x) * x;
+  }
+  if (n2 < 75.0 * 36.0) // under 6 grey levels of contrast: no texture to match
+    return false;
+  const float inv = static_cast<float>(1.0 / std::sqrt(n2));
+  for (float &x : out)
+    x *= inv;
+  return true;
+}
+
+/*!
+  Moves each surface point seen by 3 or more cameras inward along its normal, by whole cells up to
+  refineDepthMm, to where the mean correlation of each camera's patch with the others' mean is
+  highest, when that is clearly better than at the hull (by refineMinGain) and good in itself
+  (refineMinScore). Returns the number of points moved.
+*/
+int refineByPhotoConsistency(const std::vector<const ViewCamera *> &cams, const std::vector<std::vector<std::uint16_t>> &seenBy,
+                             const std::vector<Vec3> &normals, const AllAroundParams &p, double cell, std::vector<Vec3> &pts)
+{
+  const int steps = static_cast<int>(std::floor(p.refineDepthMm / cell));
+  std::vector<Vec3> moved = pts;
+  int n = 0;
+  std::vector<std::array<float, 75>> patches;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (seenBy[i].size() < 3)
+      continue;
+    double best = -2, atHull = -2;
+    int bestStep = 0;
+    for (int s = 0; s <= steps; ++s) {
+      const Vec3 q{pts[i][0] - s * cell * normals[i][0], pts[i][1] - s * cell * normals[i][1], pts[i][2] - s * cell * normals[i][2]};
+      patches.clear();
+      std::array<float, 75> pa;
+      for (std::uint16_t ci : seenBy[i])
+        if (patchAt(*cams[ci], q, pa))
+          patches.push_back(pa);
+      if (patches.size() < 3)
+        break;
+      // The mean patch, and each camera's correlation with it.
+      std::array<double, 75> m{};
+      for (const auto &q2 : patches)
+        for (std::size_t k = 0; k < 75; ++k)
+          m[k] += q2[k];
+      double mn = 0;
+      for (double x : m)
+        mn += x * x;
+      mn = std::sqrt(mn);
+      double score = 0;
+      for (const auto &q2 : patches) {
+        double d = 0;
+        for (std::size_t k = 0; k < 75; ++k)
+          d += q2[k] * m[k];
+        score += mn > 0 ? d / mn : 0.0;
+      }
+      score /= static_cast<double>(patches.size());
+      if (s == 0)
+        atHull = score;
+      if (score > best) {
+        best = score;
+        bestStep = s;
+      }
+    }
+    if (bestStep > 0 && best >= p.refineMinScore && best - atHull >= p.refineMinGain) {
+      for (int k = 0; k < 3; ++k)
+        moved[i][k] = pts[i][k] - bestStep * cell * normals[i][k];
+      ++n;
+    }
+  }
+  pts.swap(moved);
+  return n;
+}
+
 } // namespace
 
 AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
@@ -460,11 +555,12 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   for (int k = 0; k < 3; ++k)
     mean[k] /= static_cast<double>(nOcc);
 
-  // 5. Colour from the views that see each point.
-  std::vector<std::vector<ColourSample>> samples(pts.size());
+  // 5. Which cameras see each point (the hull's depth buffer, the normal facing the camera, off the outline).
+  std::vector<std::vector<std::uint16_t>> seenBy(pts.size());
   const int splat = std::max(1, static_cast<int>(std::ceil(0.5 * cell * rig.left.cam.get_px() / 400.0)));
   std::vector<float> zbuf;
-  for (const ViewCamera *vc : usedCams) {
+  for (std::size_t ci = 0; ci < usedCams.size(); ++ci) {
+    const ViewCamera *vc = usedCams[ci];
     depthBuffer(vc->cam, pts, splat, zbuf);
     for (std::size_t i = 0; i < pts.size(); ++i) {
       double u, v, z;
@@ -480,11 +576,28 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
         continue;
       if (vc->sd(u, v) < 2) // on the outline the pixel mixes target and background
         continue;
+      seenBy[i].push_back(static_cast<std::uint16_t>(ci));
+    }
+  }
+  // 6. Photo-consistency: the hull bulges in front of flat and concave faces (no silhouette carves
+  // them); where the target has texture, each point moves inward along its normal to the depth where
+  // the patches of the cameras that see it agree best.
+  if (p.refineDepthMm > 0)
+    out.nRefined = refineByPhotoConsistency(usedCams, seenBy, normals, p, cell, pts);
+  std::vector<std::vector<ColourSample>> samples(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (std::uint16_t ci : seenBy[i]) {
+      const ViewCamera *vc = usedCams[ci];
+      double u, v, z;
+      if (!vc->cam.project(pts[i], u, v, z))
+        continue;
+      const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+      if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
+        continue;
       const vpRGBa px = vc->photo[static_cast<unsigned>(vi)][static_cast<unsigned>(ui)];
       const Hsv hsv = rgbToHsv(px);
       samples[i].push_back({hsv.h, hsv.s, hsv.v, px.R, px.G, px.B});
     }
-  }
   // H_B: the backgrounds around the silhouettes.
   std::vector<float> bgHues;
   for (std::size_t i = 0; i < cams.size(); ++i) {

@@ -55,6 +55,9 @@ struct AllAroundParams
   double finestMm = 1;              //!< last cell size (raised for large targets: at most 256 cells across)
   double outlierCarveFraction = 0.4;//!< a view carving more than this of what the others keep is left out
   double visibilityTolMm = 3;       //!< a surface point is seen when within this of the depth buffer
+  double refineDepthMm = 12;        //!< photo-consistency: a point may move this far inward (0: the hull as carved)
+  double refineMinScore = 0.7;      //!< ... to a depth where the cameras' 5x5 patches correlate this well with their mean
+  double refineMinGain = 0.1;       //!< ... and this much better than at the hull
   double minSaturation = 0.15;      //!< colour samples paler than this have no hue
   double minValue = 0.08;           //!< ... or darker than this
   double minHueFromBackgroundDeg = 30; //!< S_in points need a hue this far from H_B
@@ -93,6 +96,7 @@ struct AllAroundBuild
   std::size_t nViews = 0, nViewsUsed = 0;
   double hullVolumeCm3 = 0;
   double cellMm = 0;                //!< the finest cell size used
+  int nRefined = 0;                 //!< surface points moved inward by photo-consistency
   int nHighlight = 0;               //!< surface points marked (views disagree)
   int nHighlightSamples = 0;        //!< colour samples left out as highlights
   long shadowPx = 0;                //!< changed pixels taken for shadow over all silhouettes
