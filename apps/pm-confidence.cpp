@@ -86,7 +86,7 @@ int main(int argc, char **argv)
   std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
   std::vector<std::string> scenarios = pm::compare::scenarioNames();
   int steps = 0;
-  bool quick = false, fit = false, quiet = false;
+  bool quick = false, fit = false, quiet = false, allAround = false;
   double maxFalseAccept = 0.001;
   app.add_option("--out", out, "output folder (created if missing)")->required();
   app.add_option("--scenarios", scenarios, "which scenarios")->delimiter(',')->check(CLI::IsMember(pm::compare::scenarioNames()));
@@ -97,6 +97,8 @@ int main(int argc, char **argv)
       ->check(CLI::Range(0.0, 1.0));
   app.add_flag("--quick", quick, "two runs on C12 only (for tests)");
   app.add_flag("--fit", fit, "fit the logistic model on the set (two-fold by run for the cross-validated AUROC)");
+  app.add_flag("--all-around", allAround, "every run's model is the all-around one (the PA-10's pass around its toy) "
+               "instead of the flat or stereo one; the tracker then weighs the cues with the all-around coefficients");
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
@@ -128,7 +130,8 @@ int main(int argc, char **argv)
       for (const auto &r : pass.runs) {
         const pm::sim::Scene own(pm::sim::makeTarget(r.model));
         pm::app::LabModelChoice choice;
-        choice.stereo = r.stereo;
+        choice.stereo = r.stereo && !allAround;
+        choice.allAround = allAround;
         models.push_back(pm::app::makeLabModel(own, rig, choice));
       }
       std::vector<pm::compare::ConfidenceRun> runs;
@@ -143,7 +146,7 @@ int main(int argc, char **argv)
         c.params.budgetEvaluations = r.budget;
         c.params.ga.seed = r.seed;
         c.params.steadyBudgetFraction = r.steady;
-        c.name = pass.label + ": " + (r.stereo ? "stereo model of " : "model of ") + r.model + ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) +
+        c.name = pass.label + ": " + (allAround ? "all-around model of " : r.stereo ? "stereo model of " : "model of ") + r.model + ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) +
                  (r.steady < 1 ? ", steady frames 25 %" : "");
         runs.push_back(c);
         runNames.push_back(c.name);

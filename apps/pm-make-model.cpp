@@ -116,6 +116,7 @@ int main(int argc, char **argv)
                              "--pass-views hand poses), the all-around model is built from it and the pass kept in OUT/views");
   app.add_option("--pass-views", plan.views, "all-around, simulator: hand poses of the pass")->check(CLI::Range(6, 200));
   app.add_option("--viewpoints", ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
+  app.add_option("--refine-depth-mm", ap.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   for (auto *o : {optViews, optAA})
     o->excludes(optBg)->excludes(optTex)->excludes(optLB)->excludes(optLS)->excludes(optStereo);
   optViews->excludes(optAA)->excludes(optTarget);

@@ -11,6 +11,7 @@
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
+#include "pm/core/Hue.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
@@ -237,8 +238,23 @@ TEST(AllAround, BothKernelsAgreeAndTheModelFileKeepsEveryView)
   const CrabPass &c = crab();
   pm::test::TempDir dir("aa_file");
   pm::io::savePhotoModel(c.build.model, dir.file("m.json"));
+  const std::string text = pm::test::readText(dir.file("m.json"));
+  EXPECT_NE(text.find("\"version\":4"), std::string::npos); // the viewpoint model's own version
   const pm::PhotoModel m = pm::io::loadPhotoModel(dir.file("m.json"));
   ASSERT_EQ(m.views.size(), c.build.model.views.size());
+  EXPECT_EQ(pm::io::photoModelToJson(m), text); // read back, it writes the same file
+  for (std::size_t k = 0; k < m.views.size(); k += 37) {
+    const pm::ModelView &a = m.views[k], &b = c.build.model.views[k];
+    ASSERT_EQ(a.inner.size(), b.inner.size());
+    ASSERT_EQ(a.outer.size(), b.outer.size());
+    for (std::size_t i = 0; i < a.inner.size(); ++i) {
+      EXPECT_NEAR(a.inner[i].x, b.inner[i].x, 0.0051);
+      EXPECT_NEAR(a.inner[i].z, b.inner[i].z, 0.0051);
+      EXPECT_LT(pm::hueDistance(a.inner[i].hue, b.inner[i].hue), 0.0051f);
+    }
+    for (std::size_t i = 0; i < a.outer.size(); ++i)
+      EXPECT_NEAR(a.outer[i].y, b.outer[i].y, 0.0051);
+  }
   pm::StereoFitness f(rig(), m);
   const pm::sim::StereoImages im = c.scene.renderStereo(rig(), vpHomogeneousMatrix(0, 0, 0.5, 0.3, 0.2, 0), 0);
   f.setImages(im.left, im.right);

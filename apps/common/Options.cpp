@@ -55,6 +55,10 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
   auto *aa = app.add_flag("--all-around", c.allAround, "simulator: the PA-10 first walks the rig around the toy (a pass "
                           "of --pass-views hand poses) and the all-around model is built from its silhouettes and photos");
   app.add_option("--pass-views", c.passViews, "simulator, --all-around: hand poses of the pass")->check(CLI::Range(6, 200));
+  app.add_option("--refine-depth-mm", c.allAroundParams.refineDepthMm, "simulator, --all-around: how far photo-consistency may "
+                 "move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
+  app.add_option("--viewpoints", c.allAroundParams.viewpoints, "simulator, --all-around: the model's viewing directions (K)")
+      ->check(CLI::Range(1, 5000));
   if (auto *st = app.get_option_no_throw("--stereo"))
     aa->excludes(st);
 }
@@ -64,7 +68,7 @@ sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &
   if (c.allAround) {
     PassPlan plan;
     plan.views = c.passViews;
-    return lab::makeSimulatedAllAroundModel(scene, rig, plan, lab::LoopParams::startJoints(), c.distanceMm);
+    return lab::makeSimulatedAllAroundModel(scene, rig, plan, lab::LoopParams::startJoints(), c.distanceMm, c.allAroundParams);
   }
   if (c.stereo) {
     StereoModelParams sp;

@@ -1,6 +1,9 @@
 #include "pm/io/PhotoModelFile.h"
 
+#include <array>
+#include <cmath>
 #include <fstream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +18,7 @@ namespace pm::io {
 namespace {
 
 constexpr const char *kFormat = "visp-photomodel-model";
+constexpr std::size_t kViewpointViews = 16; //!< from this many views a model is written as version 4
 
 json pointsToJson(const std::vector<ModelPoint> &pts, bool withZ)
 {
@@ -47,13 +51,83 @@ std::vector<ModelPoint> pointsFromJson(const json &a, const char *name, bool wit
   return pts;
 }
 
+//! Rounded to 0.01 (a double, so that it is written short): what is read back is what was deduplicated.
+double rounded(float x) { return std::round(static_cast<double>(x) * 100.0) / 100.0; }
+
+//! Version 4: the S_in points of every view in one cloud, each view by index; S_out as positions.
+void writeViewpointModel(const PhotoModel &m, json &j)
+{
+  std::map<std::array<double, 4>, std::size_t> index;
+  json surface = json::array();
+  auto indices = [&](const std::vector<ModelPoint> &pts) {
+    json a = json::array();
+    for (const ModelPoint &p : pts) {
+      const double hue = rounded(p.hue) >= 360.0 ? 0.0 : rounded(p.hue); // 359.996 rounds to 360: the same as 0
+      const std::array<double, 4> key{rounded(p.x), rounded(p.y), rounded(p.z), hue};
+      auto it = index.find(key);
+      if (it == index.end()) {
+        it = index.emplace(key, surface.size()).first;
+        surface.push_back({key[0], key[1], key[2], key[3]});
+      }
+      a.push_back(it->second);
+    }
+    return a;
+  };
+  auto positions = [](const std::vector<ModelPoint> &pts) {
+    json a = json::array();
+    for (const ModelPoint &p : pts)
+      a.push_back({rounded(p.x), rounded(p.y), rounded(p.z)});
+    return a;
+  };
+  j["s_in"] = indices(m.inner);
+  j["s_out"] = positions(m.outer);
+  json views = json::array();
+  for (const ModelView &v : m.views)
+    views.push_back({{"camera_mm", {v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]}}, {"s_in", indices(v.inner)}, {"s_out", positions(v.outer)}});
+  j["views"] = views;
+  j["surface"] = surface;
+}
+
+std::vector<ModelPoint> indexedPoints(const json &a, const std::vector<ModelPoint> &surface, const char *name)
+{
+  if (!a.is_array())
+    throw Error(std::string("\"") + name + "\" must be an array of indices into \"surface\"");
+  std::vector<ModelPoint> pts;
+  pts.reserve(a.size());
+  for (const json &e : a) {
+    if (!e.is_number_unsigned() || e.get<std::size_t>() >= surface.size())
+      throw Error(std::string("\"") + name + "\" holds an index outside \"surface\" (" + std::to_string(surface.size()) + " points)");
+    pts.push_back(surface[e.get<std::size_t>()]);
+  }
+  return pts;
+}
+
+std::vector<ModelPoint> positionPoints(const json &a, float hue, const char *name)
+{
+  if (!a.is_array())
+    throw Error(std::string("\"") + name + "\" must be an array of [x_mm, y_mm, z_mm]");
+  std::vector<ModelPoint> pts;
+  pts.reserve(a.size());
+  for (const json &e : a) {
+    if (!e.is_array() || e.size() != 3)
+      throw Error(std::string("every point of \"") + name + "\" must be [x_mm, y_mm, z_mm]");
+    ModelPoint p;
+    p.x = e[0].get<float>();
+    p.y = e[1].get<float>();
+    p.z = e[2].get<float>();
+    p.hue = hue;
+    pts.push_back(p);
+  }
+  return pts;
+}
+
 } // namespace
 
 std::string photoModelToJson(const PhotoModel &m)
 {
   const bool depth = m.hasDepth();
   json j{{"format", kFormat},
-         {"version", !m.views.empty() ? 3 : depth ? 2 : 1},
+         {"version", m.views.size() >= kViewpointViews ? 4 : !m.views.empty() ? 3 : depth ? 2 : 1},
          {"distance_mm", m.distanceMm},
          {"camera", {{"px", m.px}, {"py", m.py}, {"u0", m.u0}, {"v0", m.v0}, {"width", m.photoWidth}, {"height", m.photoHeight}}},
          {"centroid_px", {m.centroidU, m.centroidV}},
@@ -66,7 +140,10 @@ std::string photoModelToJson(const PhotoModel &m)
     j["depth_range_mm"] = {m.depthRangeMm[0], m.depthRangeMm[1]};
     j["n_in_dropped"] = m.nInDropped;
   }
-  if (!m.views.empty()) {
+  if (m.views.size() >= kViewpointViews) {
+    j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
+    writeViewpointModel(m, j);
+  } else if (!m.views.empty()) {
     j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
     json views = json::array();
     for (const ModelView &v : m.views)
@@ -88,7 +165,7 @@ PhotoModel loadPhotoModel(const std::string &path)
   PhotoModel m;
   try {
     const json j = json::parse(f);
-    const int version = detail::checkFormat(j, kFormat, 3);
+    const int version = detail::checkFormat(j, kFormat, 4);
     m.distanceMm = j.at("distance_mm").get<double>();
     const json &c = j.at("camera");
     m.px = c.at("px").get<double>();
@@ -104,8 +181,24 @@ PhotoModel loadPhotoModel(const std::string &path)
     m.centroidV = cen[1];
     m.backgroundHue = j.at("background_hue_deg").get<float>();
     m.targetHue = j.value("target_hue_deg", 0.f);
-    m.inner = pointsFromJson(j.at("s_in"), "s_in", version >= 2);
-    m.outer = pointsFromJson(j.at("s_out"), "s_out", version >= 2);
+    std::vector<ModelPoint> surface;
+    if (version == 4) {
+      const json &s = j.at("surface");
+      if (!s.is_array() || s.empty())
+        throw Error("\"surface\" must be a non-empty array of [x_mm, y_mm, z_mm, hue_deg]");
+      for (const json &e : s) {
+        if (!e.is_array() || e.size() != 4)
+          throw Error("every point of \"surface\" must be [x_mm, y_mm, z_mm, hue_deg]");
+        ModelPoint p;
+        p.x = e[0].get<float>(), p.y = e[1].get<float>(), p.z = e[2].get<float>(), p.hue = e[3].get<float>();
+        surface.push_back(p);
+      }
+      m.inner = indexedPoints(j.at("s_in"), surface, "s_in");
+      m.outer = positionPoints(j.at("s_out"), m.backgroundHue, "s_out");
+    } else {
+      m.inner = pointsFromJson(j.at("s_in"), "s_in", version >= 2);
+      m.outer = pointsFromJson(j.at("s_out"), "s_out", version >= 2);
+    }
     if (version >= 2) {
       const auto o = j.at("origin_in_hand_mm").get<std::vector<double>>();
       const auto r = j.at("depth_range_mm").get<std::vector<double>>();
@@ -117,7 +210,7 @@ PhotoModel loadPhotoModel(const std::string &path)
       m.depthRangeMm[1] = r[1];
       m.nInDropped = j.value("n_in_dropped", 0);
     }
-    if (version == 3) {
+    if (version >= 3) {
       auto camera = [](const json &entry, double out[3]) {
         const auto v = entry.get<std::vector<double>>();
         if (v.size() != 3)
@@ -132,8 +225,13 @@ PhotoModel loadPhotoModel(const std::string &path)
       for (const json &v : views) {
         ModelView mv;
         camera(v.at("camera_mm"), mv.cameraMm);
-        mv.inner = pointsFromJson(v.at("s_in"), "s_in", true);
-        mv.outer = pointsFromJson(v.at("s_out"), "s_out", true);
+        if (version == 4) {
+          mv.inner = indexedPoints(v.at("s_in"), surface, "s_in");
+          mv.outer = positionPoints(v.at("s_out"), m.backgroundHue, "s_out");
+        } else {
+          mv.inner = pointsFromJson(v.at("s_in"), "s_in", true);
+          mv.outer = pointsFromJson(v.at("s_out"), "s_out", true);
+        }
         m.views.push_back(std::move(mv));
       }
     }

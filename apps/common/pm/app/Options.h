@@ -6,6 +6,7 @@
 */
 #include <CLI/CLI.hpp>
 
+#include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PhotoModelBuilder.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/sim/Scene.h"
@@ -38,6 +39,7 @@ struct LabModelChoice
   double viewTurnDeg = 0;   //!< --view-turn-deg: four further photo pairs, the hand turned by this about x and y (0: one pair)
   bool allAround = false;   //!< --all-around: the PA-10 walks the rig around the toy first, the all-around model
   int passViews = 16;       //!< --pass-views: hand poses of that pass
+  AllAroundParams allAroundParams; //!< --refine-depth-mm, --viewpoints: the all-around build
 };
 //! --stereo, --distance-mm (the photo distance of the flat model, the toy's distance for the stereo one)
 void addLabModelOptions(CLI::App &app, LabModelChoice &c);

@@ -37,6 +37,19 @@
         "views": [ { "camera_mm": [x, y, z], "s_in": [[x, y, z, hue, u, v], ...], "s_out": [...] }, ... ]
       }
 
+  An all-around model (16 views or more: its viewpoints) is written as version 4: the S_in points
+  of all its views once, in a shared cloud (their positions to 0.01 mm, hues to 0.01 deg), each
+  view naming its own by index, and S_out as bare positions (their hue is H_B). An eighth of
+  version 3's size for 240 viewpoints (1.75 against 14.7 MB for the crab); u and v are not kept:
+
+      {
+        "format": "visp-photomodel-model", "version": 4,
+        ... as version 2, "camera_mm" as version 3,
+        "surface": [[x, y, z, hue], ...],      // every S_in point of every view, once
+        "s_in": [i, ...], "s_out": [[x, y, z], ...],   // the model's own view, by index
+        "views": [ { "camera_mm": [x, y, z], "s_in": [i, ...], "s_out": [[x, y, z], ...] }, ... ]
+      }
+
   A model with every z = 0 is written as version 1, byte for byte as before; version 1 files
   load as flat models and behave exactly as they always did.
 */
