@@ -127,7 +127,7 @@ int main(int argc, char **argv)
   app.add_option("--target", target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
   app.add_option("--scenarios", scenarios, "which scenarios, in order")
       ->delimiter(',')
-      ->check(CLI::IsMember(pm::compare::scenarioNames()));
+      ->check(CLI::IsMember(pm::compare::allScenarioNames()));
   app.add_option("--trackers", trackers, "which trackers")
       ->delimiter(',')
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(kTrackerKeys), std::end(kTrackerKeys))));

@@ -89,7 +89,7 @@ int main(int argc, char **argv)
   bool quick = false, fit = false, quiet = false, allAround = false;
   double maxFalseAccept = 0.001;
   app.add_option("--out", out, "output folder (created if missing)")->required();
-  app.add_option("--scenarios", scenarios, "which scenarios")->delimiter(',')->check(CLI::IsMember(pm::compare::scenarioNames()));
+  app.add_option("--scenarios", scenarios, "which scenarios")->delimiter(',')->check(CLI::IsMember(pm::compare::allScenarioNames()));
   app.add_option("--steps", steps, "table2: only the first N steps (0: all 20)")->check(CLI::Range(0, 1000));
   app.add_option("--rig", rigPath, "stereo rig file");
   app.add_option("--trajectory", trajectoryPath, "table2: the waypoints (step,x,y,z,e1,e2,e3)");

@@ -384,3 +384,26 @@ TEST(AllAround, PhotoConsistencyBringsTheBulgingHullBackToTheBoxsFace)
   EXPECT_GT(n1, 1000);
   EXPECT_LT(refined, 0.7 * hull);
 }
+
+TEST(AllAround, PmMakeModelFromTheLabsPassAndFromItsViewsFolder)
+{
+  pm::test::TempDir dir("aa_app");
+  const pm::test::RunResult lab = pm::test::runProgram("pm-make-model", "--target C12 --all-around --out " + dir.file("lab"));
+  ASSERT_EQ(lab.status, 0) << lab.err;
+  for (const char *f : {"model.json", "model.ply", "contact.png", "silhouettes.png", "summary.json", "views/pose_fPh_15.yaml"})
+    EXPECT_TRUE(fs::exists(dir.file(std::string("lab/") + f))) << f;
+  const std::string summary = pm::test::readText(dir.file("lab/summary.json"));
+  for (const char *key : {"\"fMo\"", "\"n_views\": 16", "\"n_views_used\": 16", "\"n_surface_points\"", "\"n_viewpoints\"",
+                          "\"hull_volume_cm3\"", "\"build_s\""})
+    EXPECT_NE(summary.find(key), std::string::npos) << key;
+  const pm::test::RunResult user = pm::test::runProgram("pm-make-model", "--views " + dir.file("lab/views") + " --out " + dir.file("user"));
+  ASSERT_EQ(user.status, 0) << user.err;
+  EXPECT_EQ(pm::io::loadPhotoModel(dir.file("user/model.json")).views.size(),
+            pm::io::loadPhotoModel(dir.file("lab/model.json")).views.size());
+  // A broken folder: one line naming the view, exit 1, nothing written.
+  fs::remove(dir.file("lab/views/right_03.png"));
+  const pm::test::RunResult bad = pm::test::runProgram("pm-make-model", "--views " + dir.file("lab/views") + " --out " + dir.file("bad"));
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("error: view 03"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir.file("bad")));
+}

@@ -1,6 +1,9 @@
 #include "pm/compare/Scenario.h"
 
 #include <cmath>
+#include <random>
+
+#include <visp3/core/vpThetaUVector.h>
 
 #include "pm/core/Error.h"
 #include "pm/io/PoseTableFile.h"
@@ -11,6 +14,12 @@ namespace pm::compare {
 const std::vector<std::string> &scenarioNames()
 {
   static const std::vector<std::string> names{"table2", "sinusoid", "fast", "occlusion", "lighting", "loss"};
+  return names;
+}
+
+const std::vector<std::string> &allScenarioNames()
+{
+  static const std::vector<std::string> names{"table2", "sinusoid", "fast", "occlusion", "lighting", "loss", "random6dof"};
   return names;
 }
 
@@ -101,6 +110,28 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
       return f;
     });
     s.description = "slow sway; exposure 1 to 0.4 (1-2.5 s), then 1.5 (4-5.5 s); the light swings left to right";
+  } else if (name == "random6dof") {
+    // Each of the six coordinates a sum of two sines of fixed random frequencies (0.04 to 0.25 Hz)
+    // and phases (drawn once from seed 31): smooth, never repeating within the 20 s; the rotation
+    // a theta-u vector whose every component reaches at most 45 deg.
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> freq(0.04, 0.25), phase(0, 2 * M_PI);
+    double f[6][2], ph[6][2];
+    for (int i = 0; i < 6; ++i)
+      for (int k = 0; k < 2; ++k) {
+        f[i][k] = freq(rng);
+        ph[i][k] = phase(rng);
+      }
+    const double amp[6] = {40, 40, 30, 45 * M_PI / 180, 45 * M_PI / 180, 45 * M_PI / 180};
+    s = timed(20, fps, [&](double t) {
+      double v[6];
+      for (int i = 0; i < 6; ++i)
+        v[i] = amp[i] * (0.6 * std::sin(2 * M_PI * f[i][0] * t + ph[i][0]) + 0.4 * std::sin(2 * M_PI * f[i][1] * t + ph[i][1]));
+      ScenarioFrame fr;
+      fr.hMo = vpHomogeneousMatrix(vpTranslationVector(v[0] * 1e-3, v[1] * 1e-3, 0.5 + v[2] * 1e-3), vpThetaUVector(v[3], v[4], v[5]));
+      return fr;
+    });
+    s.description = "a random smooth 6-DoF motion: x, y +-40 mm, z +-30 mm, up to 45 deg about every axis, 20 s";
   } else if (name == "loss") {
     const int blank0 = static_cast<int>(2 * fps), blank1 = blank0 + static_cast<int>(0.5 * fps), jump = static_cast<int>(5 * fps);
     for (int k = 0; k < static_cast<int>(8 * fps); ++k) {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <unordered_map>
 
 #include <opencv2/imgproc.hpp>
 
@@ -39,6 +40,7 @@ void AllAroundParams::validate() const
   check(viewpoints >= 1 && viewpoints <= 5000, "viewpoints must lie in [1, 5000]");
   check(capDeg > 0 && capDeg <= 180, "cap must lie in (0, 180] deg");
   check(nIn >= 8 && nIn <= 20000, "S_in points per viewpoint must lie in [8, 20000]");
+  check(edgeShare >= 0 && edgeShare <= 1, "edge share must lie in [0, 1]");
   check(nOut >= 8 && nOut <= 20000, "S_out points per viewpoint must lie in [8, 20000]");
   check(stripGapPx >= 1 && stripGapPx <= 100, "strip gap must lie in [1, 100] px");
   check(stripWidthPx >= 0 && stripWidthPx <= 100, "strip width must lie in [0, 100] px");
@@ -365,6 +367,39 @@ int refineByPhotoConsistency(const std::vector<const ViewCamera *> &cams, const 
   return n;
 }
 
+//! For each surface point with a hue: whether a point with a hue within \e radiusMm differs from it by over \e hueDeg.
+std::vector<bool> hueEdges(const std::vector<SurfacePoint> &s, double radiusMm, double hueDeg)
+{
+  std::unordered_map<long long, std::vector<std::size_t>> cells;
+  auto cellOf = [radiusMm](float x) { return static_cast<long long>(std::floor(x / radiusMm)); };
+  auto key = [](long long x, long long y, long long z) { return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL); };
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s[i].hasHue)
+      cells[key(cellOf(s[i].x), cellOf(s[i].y), cellOf(s[i].z))].push_back(i);
+  std::vector<bool> edge(s.size(), false);
+  const double r2 = radiusMm * radiusMm;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!s[i].hasHue)
+      continue;
+    const long long cx = cellOf(s[i].x), cy = cellOf(s[i].y), cz = cellOf(s[i].z);
+    for (long long dz = -1; dz <= 1 && !edge[i]; ++dz)
+      for (long long dy = -1; dy <= 1 && !edge[i]; ++dy)
+        for (long long dx = -1; dx <= 1 && !edge[i]; ++dx) {
+          const auto it = cells.find(key(cx + dx, cy + dy, cz + dz));
+          if (it == cells.end())
+            continue;
+          for (std::size_t j : it->second) {
+            const double ex = s[j].x - s[i].x, ey = s[j].y - s[i].y, ez = s[j].z - s[i].z;
+            if (ex * ex + ey * ey + ez * ez <= r2 && hueDistance(s[i].hue, s[j].hue) > hueDeg) {
+              edge[i] = true;
+              break;
+            }
+          }
+        }
+  }
+  return edge;
+}
+
 } // namespace
 
 AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
@@ -677,7 +712,11 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
     s.hasHue = hueDistance(s.hue, bgHue) > p.minHueFromBackgroundDeg;
   }
 
-  // 6. The viewpoints: a Fibonacci lattice over the sphere, those within the cap.
+  // Hue edges: a point with a hue whose neighbours within 3 mm include one of a hue over 30 deg away.
+  const std::vector<bool> edge = p.edgeShare > 0 ? hueEdges(out.surface, 3.0, 30.0) : std::vector<bool>(out.surface.size(), false);
+  constexpr long kEdgeKey = 1L << 40; // picks on an edge sort after the others, one per cell of their own
+
+  // 7. The viewpoints: a Fibonacci lattice over the sphere, those within the cap.
   const vpHomogeneousMatrix mMf = out.fMm.inverse();
   const vpHomogeneousMatrix mMh0 = mMf * pass[first].fMh;
   const Vec3 rest{1e3 * mMh0[0][3], 1e3 * mMh0[1][3], 1e3 * mMh0[2][3]};
@@ -734,7 +773,6 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
           mask.at<unsigned char>(y, x) = 255;
     cv::morphologyEx(mask, mask, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
     // S_in: visible points with a hue, one per cell of a grid over the image.
-    std::vector<std::pair<double, std::size_t>> cand; // (cell key, point)
     double area = cv::countNonZero(mask);
     const double step = std::max(1.0, std::sqrt(area / p.nIn));
     struct Pick
@@ -760,25 +798,35 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
         continue;
       const long cx = static_cast<long>(std::floor(u / step)), cy = static_cast<long>(std::floor(v / step));
       const double ddx = u - (static_cast<double>(cx) + 0.5) * step, ddy = v - (static_cast<double>(cy) + 0.5) * step;
-      picks.push_back({cy * 100000 + cx, ddx * ddx + ddy * ddy, i, static_cast<float>(u), static_cast<float>(v)});
+      picks.push_back({cy * 100000 + cx + (p.edgeShare > 0 && edge[i] ? kEdgeKey : 0), ddx * ddx + ddy * ddy, i, static_cast<float>(u), static_cast<float>(v)});
     }
     std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
     ModelView view;
     for (int k = 0; k < 3; ++k)
       view.cameraMm[k] = C[k];
+    // One point per cell of each kind (on a hue edge, elsewhere); edgeShare of nIn from the edges,
+    // the rest elsewhere, each thinned evenly.
+    std::vector<ModelPoint> onEdge, plain;
     for (std::size_t j = 0; j < picks.size(); ++j) {
       if (j > 0 && picks[j].key == picks[j - 1].key)
         continue;
       const SurfacePoint &s = out.surface[picks[j].i];
-      view.inner.push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v});
+      (picks[j].key >= kEdgeKey ? onEdge : plain).push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v});
     }
-    if (static_cast<int>(view.inner.size()) > p.nIn) { // an even thinning to nIn
-      std::vector<ModelPoint> thin;
-      const double r = static_cast<double>(view.inner.size()) / p.nIn;
-      for (int j = 0; j < p.nIn; ++j)
-        thin.push_back(view.inner[static_cast<std::size_t>(j * r)]);
-      view.inner.swap(thin);
-    }
+    auto thin = [](std::vector<ModelPoint> &v, std::size_t n) {
+      if (v.size() <= n)
+        return;
+      std::vector<ModelPoint> t;
+      const double r = static_cast<double>(v.size()) / static_cast<double>(n);
+      for (std::size_t j = 0; j < n; ++j)
+        t.push_back(v[static_cast<std::size_t>(static_cast<double>(j) * r)]);
+      v.swap(t);
+    };
+    const std::size_t nEdge = std::min(onEdge.size(), static_cast<std::size_t>(std::lround(p.edgeShare * p.nIn)));
+    thin(onEdge, nEdge);
+    thin(plain, static_cast<std::size_t>(p.nIn) - onEdge.size());
+    view.inner = std::move(onEdge);
+    view.inner.insert(view.inner.end(), plain.begin(), plain.end());
     // S_out: along the outline, offset outward, at the outline's depth.
     std::vector<std::vector<cv::Point>> contours;
     cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);

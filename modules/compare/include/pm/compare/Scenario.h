@@ -41,8 +41,10 @@ struct Scenario
   std::vector<int> lossEnds; //!< first frame after each forced loss (blank frames end, the jump)
 };
 
-//! The scenarios' names, in the order pm-compare runs them.
+//! The scenarios' names, in the order pm-compare runs them by default.
 const std::vector<std::string> &scenarioNames();
+//! Those and the ones run on request only: random6dof (a random smooth 6-DoF motion, rotations up to 45 deg).
+const std::vector<std::string> &allScenarioNames();
 
 /*!
   The scenario \e name (one of scenarioNames()); \e table2 are the waypoints of Table 2;

@@ -65,6 +65,7 @@ struct AllAroundParams
   int viewpoints = 240;             //!< K, the viewpoints within the cap
   double capDeg = 75;               //!< viewpoints within this of the first view's direction
   int nIn = 400;                    //!< S_in points per viewpoint (fewer where fewer are seen)
+  double edgeShare = 0;             //!< of them at most this share on hue edges (a hue over 30 deg away within 3 mm; measured: README)
   int nOut = 160;                   //!< S_out points per viewpoint
   double stripGapPx = 3;            //!< S_out: the first row this far outside the outline (px)
   double stripWidthPx = 8;          //!< ... the last this much farther
