@@ -115,6 +115,8 @@ int main(int argc, char **argv)
   auto *optAA = app.add_flag("--all-around", allAround, "simulator: the PA-10 walks the rig around --target (a pass of "
                              "--pass-views hand poses), the all-around model is built from it and the pass kept in OUT/views");
   app.add_option("--pass-views", plan.views, "all-around, simulator: hand poses of the pass")->check(CLI::Range(6, 200));
+  app.add_option("--backdrop-hue", ap.backdropHueDeg, "all-around: a plain backdrop of this hue (deg) replaces the "
+                 "background images (none needed in --views; the lab makes no second pass)")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
   app.add_option("--refine-depth-mm", ap.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   for (auto *o : {optViews, optAA})
@@ -134,11 +136,12 @@ int main(int argc, char **argv)
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
       std::vector<pm::PassView> pass;
       if (!viewsDir.empty()) {
-        pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews);
+        pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
         source = "views " + viewsDir;
       } else {
         const pm::sim::TargetShape shape = pm::sim::makeTarget(target);
-        pass = pm::lab::runLabPass(pm::sim::Scene(shape, sp), rig, plan, pm::lab::LoopParams::startJoints()).views;
+        pass = pm::lab::runLabPass(pm::sim::Scene(shape, sp), rig, plan, pm::lab::LoopParams::startJoints(),
+                                   vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), ap.backdropHueDeg < 0).views;
         source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), PA-10 pass";
       }
       const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, ap);

@@ -158,8 +158,10 @@ TEST(Silhouette, KeepsTheReliefToysAndDropsTheirCastShadows)
     vpImage<vpRGBa> bg, photo;
     scene.render(r, rig().left, hMo, 3, 4, bg, false);
     scene.render(r, rig().left, hMo, 3, 6, photo, true);
+    for (int plain = 0; plain < 2; ++plain) { // against the background image, then the backdrop's hue alone
     pm::SilhouetteStats st;
-    const vpImage<unsigned char> mask = pm::silhouette(photo, bg, pm::SilhouetteParams(), &st);
+    const vpImage<unsigned char> mask = plain ? pm::silhouetteOnBackdrop(photo, 205, pm::SilhouetteParams(), &st)
+                                              : pm::silhouette(photo, bg, pm::SilhouetteParams(), &st);
     long tp = 0, fp = 0, fn = 0, shadow = 0, shadowKept = 0;
     for (unsigned v = 0; v < mask.getHeight(); ++v)
       for (unsigned u = 0; u < mask.getWidth(); ++u) {
@@ -177,12 +179,13 @@ TEST(Silhouette, KeepsTheReliefToysAndDropsTheirCastShadows)
         }
       }
     const double iou = static_cast<double>(tp) / static_cast<double>(tp + fp + fn);
-    std::cout << code << " silhouette: IoU " << iou << ", " << fp << " px too many, " << fn << " px missed; shadow " << shadow
+    std::cout << code << (plain ? " on the backdrop's hue" : " against the background") << " silhouette: IoU " << iou << ", " << fp << " px too many, " << fn << " px missed; shadow " << shadow
               << " px, " << shadowKept << " of them kept\n";
     EXPECT_GT(iou, 0.99) << code;
     EXPECT_GT(shadow, 500) << code;                    // there is a cast shadow ...
     EXPECT_LT(shadowKept, shadow / 50) << code;        // ... and it is not in the silhouette
     EXPECT_FALSE(st.touchesBorder);
+    }
   }
 }
 
@@ -339,6 +342,15 @@ TEST(AllAround, AViewsFolderGoesThroughTheSameBuildAndBadFilesNameTheView)
   EXPECT_NE(err().find("view 11: left_11.png is 320x240 but the rig's camera is 640x480"), std::string::npos) << err();
   EXPECT_NE(pm::test::errorOf([&] { (void)pm::io::loadViewsFolder(dir.file("nothing"), rig()); }).find("does not exist"),
             std::string::npos);
+  // A pass against a plain backdrop: no background files, none asked for.
+  std::vector<pm::PassView> plain = c.pass.views;
+  for (pm::PassView &v : plain)
+    v.backgroundLeft = v.backgroundRight = vpImage<vpRGBa>();
+  pm::io::saveViewsFolder(plain, dir.file("plain"));
+  EXPECT_FALSE(fs::exists(dir.file("plain/background_left_00.png")));
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::io::loadViewsFolder(dir.file("plain"), rig()); }).find("background_left_00.png"),
+            std::string::npos);
+  EXPECT_EQ(pm::io::loadViewsFolder(dir.file("plain"), rig(), 6, false).size(), plain.size());
 }
 
 TEST(AllAround, PhotoConsistencyBringsTheBulgingHullBackToTheBoxsFace)

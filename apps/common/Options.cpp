@@ -57,6 +57,8 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
   app.add_option("--pass-views", c.passViews, "simulator, --all-around: hand poses of the pass")->check(CLI::Range(6, 200));
   app.add_option("--refine-depth-mm", c.allAroundParams.refineDepthMm, "simulator, --all-around: how far photo-consistency may "
                  "move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
+  app.add_option("--backdrop-hue", c.allAroundParams.backdropHueDeg, "simulator, --all-around: segment the pass against "
+                 "a plain backdrop of this hue (deg) instead of a second pass without the toy")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", c.allAroundParams.viewpoints, "simulator, --all-around: the model's viewing directions (K)")
       ->check(CLI::Range(1, 5000));
   if (auto *st = app.get_option_no_throw("--stereo"))

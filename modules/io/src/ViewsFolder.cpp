@@ -30,7 +30,7 @@ std::string viewFileName(const std::string &stem, std::size_t k)
   return stem + b + (stem == "pose_fPh" ? ".yaml" : ".png");
 }
 
-std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &rig, std::size_t minViews)
+std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &rig, std::size_t minViews, bool backgrounds)
 {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
@@ -40,6 +40,8 @@ std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &r
     bool any = false, all = true;
     std::string missing;
     for (const char *stem : kStems) {
+      if (!backgrounds && std::string(stem).rfind("background", 0) == 0)
+        continue;
       const bool here = fs::exists(fs::path(dir) / viewFileName(stem, k), ec);
       any = any || here;
       if (!here && all) {
@@ -52,8 +54,9 @@ std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &r
     const std::string name = viewName(k);
     if (!all)
       throw Error(name + " of '" + dir + "' lacks " + missing + " (each view needs " + viewFileName("left", k) + ", " +
-                  viewFileName("right", k) + ", " + viewFileName("background_left", k) + ", " +
-                  viewFileName("background_right", k) + " and " + viewFileName("pose_fPh", k) + ")");
+                  viewFileName("right", k) + ", " +
+                  (backgrounds ? viewFileName("background_left", k) + ", " + viewFileName("background_right", k) + " " : std::string()) +
+                  "and " + viewFileName("pose_fPh", k) + ")");
     PassView v;
     v.name = name;
     auto image = [&](const char *stem, const RigCamera &cam, vpImage<vpRGBa> &out) {
@@ -70,8 +73,10 @@ std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &r
     };
     image("left", rig.left, v.left);
     image("right", rig.right, v.right);
-    image("background_left", rig.left, v.backgroundLeft);
-    image("background_right", rig.right, v.backgroundRight);
+    if (backgrounds) {
+      image("background_left", rig.left, v.backgroundLeft);
+      image("background_right", rig.right, v.backgroundRight);
+    }
     try {
       v.fMh = readPoseYaml((fs::path(dir) / viewFileName("pose_fPh", k)).string());
     } catch (const Error &e) {
@@ -95,8 +100,10 @@ void saveViewsFolder(const std::vector<PassView> &views, const std::string &dir)
     const PassView &v = views[k];
     writeImage(v.left, out.stage(viewFileName("left", k)));
     writeImage(v.right, out.stage(viewFileName("right", k)));
-    writeImage(v.backgroundLeft, out.stage(viewFileName("background_left", k)));
-    writeImage(v.backgroundRight, out.stage(viewFileName("background_right", k)));
+    if (v.backgroundLeft.getSize() > 0) // a pass against a plain backdrop has none
+      writeImage(v.backgroundLeft, out.stage(viewFileName("background_left", k)));
+    if (v.backgroundRight.getSize() > 0)
+      writeImage(v.backgroundRight, out.stage(viewFileName("background_right", k)));
     writePoseYaml(v.fMh, out.stage(viewFileName("pose_fPh", k)));
   }
   out.commit();

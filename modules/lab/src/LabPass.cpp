@@ -9,7 +9,7 @@
 namespace pm::lab {
 
 LabPass runLabPass(const sim::Scene &inScene, const StereoRig &rig, const PassPlan &inPlan, const vpColVector &q0,
-                   const vpHomogeneousMatrix &h0Mo)
+                   const vpHomogeneousMatrix &h0Mo, bool backgrounds)
 {
   sim::Scene scene = inScene;
   scene.params().distractor = false; // the target alone, as a user would make the pass
@@ -46,8 +46,10 @@ LabPass runLabPass(const sim::Scene &inScene, const StereoRig &rig, const PassPl
     v.fMh = sim::RobotPA10::forward(q);
     const vpHomogeneousMatrix hMo = v.fMh.inverse() * out.fMo;
     const std::uint64_t frame = 1000 + k;
-    scene.render(r, rig.left, hMo, frame, 4, v.backgroundLeft, false);
-    scene.render(r, rig.right, hMo, frame, 5, v.backgroundRight, false);
+    if (backgrounds) {
+      scene.render(r, rig.left, hMo, frame, 4, v.backgroundLeft, false);
+      scene.render(r, rig.right, hMo, frame, 5, v.backgroundRight, false);
+    }
     scene.render(r, rig.left, hMo, frame, 6, v.left, true);
     scene.render(r, rig.right, hMo, frame, 7, v.right, true);
     out.views.push_back(std::move(v));
@@ -60,13 +62,13 @@ sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, co
                                                      const vpColVector &q0, double distanceMm, const AllAroundParams &params,
                                                      AllAroundBuild *build)
 {
-  const LabPass pass = runLabPass(scene, rig, plan, q0, vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0));
+  const LabPass pass = runLabPass(scene, rig, plan, q0, vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0), params.backdropHueDeg < 0);
   AllAroundBuild b = buildAllAroundModel(rig, pass.views, params);
   sim::SimulatedPhotoModel s;
   s.stereo = true;
   s.oMm = pass.fMo.inverse() * b.fMm;
   s.photoHMo = pass.fMh0.inverse() * pass.fMo;
-  s.background = pass.views[0].backgroundLeft;
+  s.background = params.backdropHueDeg < 0 ? pass.views[0].backgroundLeft : pass.views[0].left;
   s.photo = pass.views[0].left;
   s.build.region = b.silhouettes[0];
   s.build.model = b.model;

@@ -41,6 +41,7 @@ void AllAroundParams::validate() const
   check(capDeg > 0 && capDeg <= 180, "cap must lie in (0, 180] deg");
   check(nIn >= 8 && nIn <= 20000, "S_in points per viewpoint must lie in [8, 20000]");
   check(edgeShare >= 0 && edgeShare <= 1, "edge share must lie in [0, 1]");
+  check(backdropHueDeg < 360, "the backdrop's hue must lie in [0, 360) degrees (negative: background images)");
   check(nOut >= 8 && nOut <= 20000, "S_out points per viewpoint must lie in [8, 20000]");
   check(stripGapPx >= 1 && stripGapPx <= 100, "strip gap must lie in [1, 100] px");
   check(stripWidthPx >= 0 && stripWidthPx <= 100, "strip width must lie in [0, 100] px");
@@ -427,15 +428,18 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
     const vpImage<vpRGBa> *ph[2] = {&v.left, &v.right}, *bg[2] = {&v.backgroundLeft, &v.backgroundRight};
     for (int c = 0; c < 2; ++c) {
       const char *side = c ? "right" : "left";
+      const bool plain = p.backdropHueDeg >= 0; // a plain backdrop: the photo alone
       for (const vpImage<vpRGBa> *im : {ph[c], bg[c]})
-        if (im->getWidth() != rc[c]->width || im->getHeight() != rc[c]->height)
+        if ((im == ph[c] || !plain) && (im->getWidth() != rc[c]->width || im->getHeight() != rc[c]->height))
           throw Error(name + ": a " + side + " image is " + std::to_string(im->getWidth()) + "x" +
                       std::to_string(im->getHeight()) + " but the rig's " + side + " camera is " +
                       std::to_string(rc[c]->width) + "x" + std::to_string(rc[c]->height));
       vpImage<vpRGBa> photo = und[c] ? und[c]->undistorted(*ph[c]) : *ph[c];
-      vpImage<vpRGBa> back = und[c] ? und[c]->undistorted(*bg[c]) : *bg[c];
+      // Against a plain backdrop the photo serves as its own background (H_B around the silhouette).
+      vpImage<vpRGBa> back = plain ? photo : und[c] ? und[c]->undistorted(*bg[c]) : *bg[c];
       SilhouetteStats st;
-      vpImage<unsigned char> mask = silhouette(photo, back, p.silhouette, &st, name + " (" + side + ")");
+      vpImage<unsigned char> mask = plain ? silhouetteOnBackdrop(photo, p.backdropHueDeg, p.silhouette, &st, name + " (" + side + ")")
+                                          : silhouette(photo, back, p.silhouette, &st, name + " (" + side + ")");
       if (st.touchesBorder)
         throw Error(name + ": the target is cut by the " + std::string(side) +
                     " image's border: every view must see the whole target");

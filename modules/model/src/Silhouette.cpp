@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pm/core/Error.h"
+#include "pm/core/Hue.h"
 
 namespace pm {
 
@@ -23,44 +24,20 @@ void SilhouetteParams::validate() const
   check(cleanRadiusPx >= 0 && cleanRadiusPx <= 20, "clean radius must lie in [0, 20] px");
   check(minRegionFraction >= 0 && minRegionFraction <= 1, "minimum region fraction must lie in [0, 1]");
   check(maxImageFraction > 0 && maxImageFraction <= 1, "maximum image fraction must lie in (0, 1]");
+  check(backdropHueTolDeg > 0 && backdropHueTolDeg < 180, "backdrop hue tolerance must lie in (0, 180) degrees");
+  check(backdropMinSaturation >= 0 && backdropMinSaturation < 1, "backdrop minimum saturation must lie in [0, 1)");
+  check(backdropMinValue >= 0 && backdropMinValue < 1, "backdrop minimum value must lie in [0, 1)");
 }
 
-vpImage<unsigned char> silhouette(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &background,
-                                  const SilhouetteParams &p, SilhouetteStats *stats, const std::string &name)
+namespace {
+
+/*!
+  The raw mask of target pixels cleaned as the header says (the image's frame checked first, then
+  opening and closing, the regions kept, their holes filled), as a vpImage; errors name \e name.
+*/
+vpImage<unsigned char> cleaned(cv::Mat &mask, const SilhouetteParams &p, SilhouetteStats *stats, const std::string &name)
 {
-  p.validate();
-  if (photo.getWidth() != background.getWidth() || photo.getHeight() != background.getHeight() || photo.getSize() == 0)
-    throw Error(name + " and its background differ in size");
-  const int h = static_cast<int>(photo.getHeight()), w = static_cast<int>(photo.getWidth());
-  // Both images as float RGBA, not smoothed: a blur widens the silhouette by a pixel all around (on R2 a
-  // 393 px halo for 4 px without it); the opening removes the specks of sensor noise.
-  cv::Mat a(h, w, CV_8UC4, const_cast<vpRGBa *>(photo.bitmap)), b(h, w, CV_8UC4, const_cast<vpRGBa *>(background.bitmap));
-  cv::Mat af, bf;
-  a.convertTo(af, CV_32FC4);
-  b.convertTo(bf, CV_32FC4);
-  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
-  int shadow = 0;
-  for (int v = 0; v < h; ++v) {
-    const cv::Vec4f *pa = af.ptr<cv::Vec4f>(v), *pb = bf.ptr<cv::Vec4f>(v);
-    unsigned char *m = mask.ptr<unsigned char>(v);
-    for (int u = 0; u < w; ++u) {
-      // vpRGBa is R, G, B, A in memory.
-      const float sa = pa[u][0] + pa[u][1] + pa[u][2], sb = pb[u][0] + pb[u][1] + pb[u][2];
-      const double ratio = (sa + 3.0) / (sb + 3.0);
-      bool target = ratio < p.darkRatio || ratio > p.brightRatio;
-      bool changed = target;
-      if (!target && sa > 3 * p.minBrightness && sb > 3 * p.minBrightness) {
-        const double dr = pa[u][0] / sa - pb[u][0] / sb, dg = pa[u][1] / sa - pb[u][1] / sb;
-        target = std::max(std::fabs(dr), std::fabs(dg)) > p.chromaTol;
-      }
-      if (!target && ratio < 1.0 / p.brightRatio)
-        changed = true; // darker with the same chromaticity: a shadow
-      if (target)
-        m[u] = 255;
-      else if (changed)
-        ++shadow;
-    }
-  }
+  const int h = mask.rows, w = mask.cols;
   // The image's frame (8 px along the borders) shows the backdrop whatever the view, but where the
   // target crosses it: when most of it changed, the background is not this photo's.
   {
@@ -104,12 +81,98 @@ vpImage<unsigned char> silhouette(const vpImage<vpRGBa> &photo, const vpImage<vp
     border = out.at<unsigned char>(v, 0) || out.at<unsigned char>(v, w - 1);
   if (stats) {
     stats->targetPx = n;
-    stats->shadowPx = shadow;
     stats->touchesBorder = border;
   }
   vpImage<unsigned char> r(static_cast<unsigned>(h), static_cast<unsigned>(w));
   std::copy(out.data, out.data + static_cast<std::size_t>(w) * static_cast<std::size_t>(h), r.bitmap);
   return r;
+}
+
+} // namespace
+
+vpImage<unsigned char> silhouette(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &background,
+                                  const SilhouetteParams &p, SilhouetteStats *stats, const std::string &name)
+{
+  p.validate();
+  if (photo.getWidth() != background.getWidth() || photo.getHeight() != background.getHeight() || photo.getSize() == 0)
+    throw Error(name + " and its background differ in size");
+  const int h = static_cast<int>(photo.getHeight()), w = static_cast<int>(photo.getWidth());
+  // Both images as float RGBA, not smoothed: a blur widens the silhouette by a pixel all around (on R2 a
+  // 393 px halo for 4 px without it); the opening removes the specks of sensor noise.
+  cv::Mat a(h, w, CV_8UC4, const_cast<vpRGBa *>(photo.bitmap)), b(h, w, CV_8UC4, const_cast<vpRGBa *>(background.bitmap));
+  cv::Mat af, bf;
+  a.convertTo(af, CV_32FC4);
+  b.convertTo(bf, CV_32FC4);
+  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  int shadow = 0;
+  for (int v = 0; v < h; ++v) {
+    const cv::Vec4f *pa = af.ptr<cv::Vec4f>(v), *pb = bf.ptr<cv::Vec4f>(v);
+    unsigned char *m = mask.ptr<unsigned char>(v);
+    for (int u = 0; u < w; ++u) {
+      // vpRGBa is R, G, B, A in memory.
+      const float sa = pa[u][0] + pa[u][1] + pa[u][2], sb = pb[u][0] + pb[u][1] + pb[u][2];
+      const double ratio = (sa + 3.0) / (sb + 3.0);
+      bool target = ratio < p.darkRatio || ratio > p.brightRatio;
+      bool changed = target;
+      if (!target && sa > 3 * p.minBrightness && sb > 3 * p.minBrightness) {
+        const double dr = pa[u][0] / sa - pb[u][0] / sb, dg = pa[u][1] / sa - pb[u][1] / sb;
+        target = std::max(std::fabs(dr), std::fabs(dg)) > p.chromaTol;
+      }
+      if (!target && ratio < 1.0 / p.brightRatio)
+        changed = true; // darker with the same chromaticity: a shadow
+      if (target)
+        m[u] = 255;
+      else if (changed)
+        ++shadow;
+    }
+  }
+  if (stats)
+    stats->shadowPx = shadow;
+  return cleaned(mask, p, stats, name);
+}
+
+vpImage<unsigned char> silhouetteOnBackdrop(const vpImage<vpRGBa> &photo, double backdropHueDeg, const SilhouetteParams &p,
+                                            SilhouetteStats *stats, const std::string &name)
+{
+  p.validate();
+  if (!(backdropHueDeg >= 0 && backdropHueDeg < 360))
+    throw Error("the backdrop's hue must lie in [0, 360) degrees");
+  if (photo.getSize() == 0)
+    throw Error(name + " is empty");
+  const int h = static_cast<int>(photo.getHeight()), w = static_cast<int>(photo.getWidth());
+  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  for (int v = 0; v < h; ++v) {
+    unsigned char *m = mask.ptr<unsigned char>(v);
+    for (int u = 0; u < w; ++u) {
+      const Hsv c = rgbToHsv(photo[static_cast<unsigned>(v)][static_cast<unsigned>(u)]);
+      // Too pale or too dark for a hue: not the backdrop's colour, so the target (a missed target
+      // pixel would carve the hull, a wrong one only widens it). A shadow keeps the backdrop's hue.
+      const bool hasHue = c.s >= p.backdropMinSaturation && c.v >= p.backdropMinValue;
+      if (!hasHue || hueDistance(c.h, static_cast<float>(backdropHueDeg)) > p.backdropHueTolDeg)
+        m[u] = 255;
+    }
+  }
+  // What lies beyond a finite backdrop (a wall, the room) has another hue too: regions touching the
+  // image's border are dropped when a region inside the image remains (the target, which must not
+  // touch the border); else they stay, and the cleaning says the target is cut.
+  cv::Mat labels, st, centroids;
+  const int n = cv::connectedComponentsWithStats(mask, labels, st, centroids, 8);
+  std::vector<bool> touches(static_cast<std::size_t>(n), false);
+  bool inside = false;
+  for (int l = 1; l < n; ++l) {
+    const int x = st.at<int>(l, cv::CC_STAT_LEFT), y = st.at<int>(l, cv::CC_STAT_TOP);
+    const int bw = st.at<int>(l, cv::CC_STAT_WIDTH), bh = st.at<int>(l, cv::CC_STAT_HEIGHT);
+    touches[static_cast<std::size_t>(l)] = x == 0 || y == 0 || x + bw == w || y + bh == h;
+    inside = inside || (!touches[static_cast<std::size_t>(l)] && st.at<int>(l, cv::CC_STAT_AREA) > 100);
+  }
+  if (inside)
+    for (int v = 0; v < h; ++v)
+      for (int u = 0; u < w; ++u)
+        if (touches[static_cast<std::size_t>(labels.at<int>(v, u))])
+          mask.at<unsigned char>(v, u) = 0;
+  if (stats)
+    stats->shadowPx = 0;
+  return cleaned(mask, p, stats, name);
 }
 
 } // namespace pm

@@ -26,9 +26,11 @@ namespace pm::io {
   Reads every view of the folder \e dir. Throws pm::Error with a one-line message naming the view
   and the file for: a folder that does not exist or holds no view, a view with one of its five
   files missing, an image of another size than its camera's in \e rig, a pose file that is not a
-  vpPoseVector, and fewer than \e minViews views (saying how many there are).
+  vpPoseVector, and fewer than \e minViews views (saying how many there are). Without \e backgrounds
+  (a plain backdrop) the background images are neither needed nor read.
 */
-std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &rig, std::size_t minViews = 1);
+std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &rig, std::size_t minViews = 1,
+                                      bool backgrounds = true);
 //! Writes \e views into \e dir (created if missing) in the layout above; nothing appears unless all of it is written.
 void saveViewsFolder(const std::vector<PassView> &views, const std::string &dir);
 //! The file name of view \e k: \e stem is "left", "right", "background_left", "background_right" (.png) or "pose_fPh" (.yaml).

@@ -37,11 +37,12 @@ struct LabPass
 
 /*!
   Runs the pass of \e plan with the PA-10 starting at \e q0 and the toy at \e h0Mo in the hand frame
-  at rest (the plan's pivot is put on the toy's origin). Throws pm::Error naming the first view the
+  at rest (the plan's pivot is put on the toy's origin). Without \e backgrounds the second pass (the
+  toy removed) is not made (a plain backdrop). Throws pm::Error naming the first view the
   PA-10 cannot reach within its joint limits.
 */
 LabPass runLabPass(const sim::Scene &scene, const StereoRig &rig, const PassPlan &plan, const vpColVector &q0,
-                   const vpHomogeneousMatrix &h0Mo = vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0));
+                   const vpHomogeneousMatrix &h0Mo = vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), bool backgrounds = true);
 
 /*!
   The lab's all-around model of \e scene's toy: the pass of \e plan from \e q0 with the toy at

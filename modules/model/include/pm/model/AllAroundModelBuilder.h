@@ -50,6 +50,7 @@ namespace pm {
 struct AllAroundParams
 {
   SilhouetteParams silhouette;
+  double backdropHueDeg = -1;       //!< >= 0: a plain backdrop of this hue, no background images needed (silhouetteOnBackdrop)
   std::size_t minViews = 6;         //!< fewer usable views: refused
   double coarsestMm = 16;           //!< first cell size of the carving
   double finestMm = 1;              //!< last cell size (raised for large targets: at most 256 cells across)

@@ -32,6 +32,10 @@ struct SilhouetteParams
   int cleanRadiusPx = 2;          //!< opening and closing radius
   double minRegionFraction = 0.2; //!< regions smaller than this fraction of the largest are dropped
   double maxImageFraction = 0.6;  //!< a silhouette over this fraction of the image: the background does not match
+  // A plain backdrop of known hue instead of background images (silhouetteOnBackdrop):
+  double backdropHueTolDeg = 25;   //!< a pixel this close to the backdrop's hue is backdrop
+  double backdropMinSaturation = 0.2; //!< paler pixels have no hue: the target
+  double backdropMinValue = 0.1;   //!< darker pixels have no hue: the target
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
@@ -52,5 +56,16 @@ struct SilhouetteStats
 vpImage<unsigned char> silhouette(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &background,
                                   const SilhouetteParams &params = SilhouetteParams(), SilhouetteStats *stats = nullptr,
                                   const std::string &name = "the photo");
+
+/*!
+  The silhouette against a plain backdrop of hue \e backdropHueDeg, from the photo alone (no
+  background image): a pixel is the target when its hue is over backdropHueTolDeg from the
+  backdrop's, or when it has no hue (paler than backdropMinSaturation or darker than
+  backdropMinValue). A cast shadow keeps the backdrop's hue and stays backdrop. Then the same
+  cleaning and errors as silhouette().
+*/
+vpImage<unsigned char> silhouetteOnBackdrop(const vpImage<vpRGBa> &photo, double backdropHueDeg,
+                                            const SilhouetteParams &params = SilhouetteParams(),
+                                            SilhouetteStats *stats = nullptr, const std::string &name = "the photo");
 
 } // namespace pm
