@@ -28,7 +28,7 @@ struct SilhouetteParams
   double chromaTol = 0.035;       //!< chromaticity change (each of r, g over r + g + b) that marks the target
   double darkRatio = 0.35;        //!< darker than this ratio of the background: the target (a shadow keeps more light)
   double brightRatio = 1.12;      //!< brighter than this ratio: the target (no shadow brightens)
-  double minBrightness = 30;      //!< below this sum of r, g, b / 3 in both, chromaticity is noise: brightness alone decides
+  double minBrightness = 30;      //!< a background darker than this (mean of r, g, b) has no chromaticity to compare: brightness alone decides
   int cleanRadiusPx = 2;          //!< opening and closing radius
   double minRegionFraction = 0.2; //!< regions smaller than this fraction of the largest are dropped
   double maxImageFraction = 0.6;  //!< a silhouette over this fraction of the image: the background does not match
