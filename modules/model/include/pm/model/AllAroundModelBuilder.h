@@ -9,18 +9,21 @@
   at the outline's depth. StereoFitness scores each camera with the viewpoint nearest its own
   direction, so the model has the right outline at every orientation the pass covers.
 
-  1. Silhouettes (pm::silhouette) of both cameras of every view; a silhouette cut by the image
-     border is an error naming the view.
+  1. Silhouettes (pm::silhouette, or pm::silhouetteOnBackdrop with backdropHueDeg) of both cameras
+     of every view; a silhouette cut by the image border is an error naming the view.
   2. The visual hull: cells of a cube around the target (found from the silhouettes' centroids)
      carved coarse to fine (coarsestMm down to finestMm) against each silhouette's signed distance
      transform; a cell whose projection lies wholly outside one silhouette is carved, wholly inside
      all of them kept, otherwise split. A view whose silhouettes alone carve away more than
      outlierCarveFraction of what the others keep disagrees with them: it is named and left out.
   3. Surface points: the hull's cells with an empty neighbour, their outward normals from the
-     hull's occupancy around them. Each takes the colour of the views that see it (a depth buffer
-     of the hull, the normal facing the camera): the median hue; samples brighter and paler than
-     the point's others are highlights and left out; a point whose views still disagree over
-     maxHueSpreadDeg is marked and not used as S_in (both counted).
+     hull's occupancy around them. A hull carved from a cap of directions bulges in front of flat
+     and concave faces: a point seen by 3 or more cameras moves inward along its normal (up to
+     refineDepthMm) to where their 5x5 patches agree best (photo-consistency), when clearly better.
+     Each then takes the colour of the views that see it (a depth buffer of the hull, the normal
+     facing the camera): the median hue; samples brighter and paler than the point's others are
+     highlights and left out; a point whose views still disagree over maxHueSpreadDeg is marked
+     and not used as S_in (both counted).
   4. K viewpoints over the directions within capDeg of the pass's first view (a Fibonacci
      lattice), at the pass's distance: the surface points the virtual camera sees (depth buffer),
      nIn of them spread over the image, and nOut points of the hull's outline there, offset outward
