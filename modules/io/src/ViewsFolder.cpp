@@ -36,6 +36,13 @@ std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &r
   if (!fs::is_directory(dir, ec))
     throw Error("the views folder '" + dir + "' does not exist");
   std::vector<PassView> views;
+  // Room for every view first: a view without backgrounds must not be copied by a reallocation
+  // (ViSP 3.5 copies an empty vpImage with memcpy(nullptr)).
+  std::size_t count = 0;
+  while (count < 1000 && (fs::exists(fs::path(dir) / viewFileName("left", count), ec) ||
+                          fs::exists(fs::path(dir) / viewFileName("pose_fPh", count), ec)))
+    ++count;
+  views.reserve(count + 1);
   for (std::size_t k = 0; k < 1000; ++k) {
     bool any = false, all = true;
     std::string missing;

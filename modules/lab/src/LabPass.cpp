@@ -21,6 +21,9 @@ LabPass runLabPass(const sim::Scene &inScene, const StereoRig &rig, const PassPl
   out.fMo = out.fMh0 * h0Mo;
   vpColVector q = q0;
   sim::Rasterizer r;
+  // No reallocation: a view without backgrounds would be copied, and ViSP 3.5 copies an empty
+  // vpImage with memcpy(nullptr) (its move constructor is not noexcept).
+  out.views.reserve(dirs.size());
   for (std::size_t k = 0; k < dirs.size(); ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "view %02zu", k);
