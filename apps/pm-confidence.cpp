@@ -131,7 +131,7 @@ int main(int argc, char **argv)
         const pm::sim::Scene own(pm::sim::makeTarget(r.model));
         pm::app::LabModelChoice choice;
         choice.stereo = r.stereo && !allAround;
-        choice.allAround = allAround;
+        choice.flat = !r.stereo && !allAround;
         models.push_back(pm::app::makeLabModel(own, rig, choice));
       }
       std::vector<pm::compare::ConfidenceRun> runs;

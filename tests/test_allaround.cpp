@@ -222,6 +222,8 @@ TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)
     p.ga.restartGenerations = 30;
     p.ga.refineEvaluations = 200;
     pm::PhotoModelTracker t(rig(), b.model, p);
+    ASSERT_TRUE(b.model.isAllAround());
+    EXPECT_EQ(&t.tiltFilter(), &t.params().tiltFilterAllAround); // the lighter smoothing of a model that sees its tilt
     t.initialize();
     pm::TrackResult r;
     for (int k = 0; k < 40; ++k)

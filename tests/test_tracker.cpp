@@ -332,6 +332,7 @@ TEST(Tracker, BadInputIsRefused)
     }
   EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, huge); }).find("does not fit the rig"), std::string::npos);
   pm::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(100));
+  EXPECT_EQ(&t.tiltFilter(), &t.params().tiltFilter); // a one-view model: the one-view tilt filter
   EXPECT_THROW(t.track(vpImage<vpRGBa>(240, 320), S.im.right), pm::Error);
   pm::TrackerParams v = evalBudget(100);
   v.verifyBudgetFraction = 1.0;
@@ -361,6 +362,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.smoothAscentMaxDrop = 0.04;
   p.tiltFilter.alpha = 0.35;
   p.tiltFilter.gateDeg = 7;
+  p.tiltFilterAllAround.beta = 0.03;
   p.rejectMarginQ = 0.25;
   p.coarseSearch = false;
   p.steadyEscalation = false;
@@ -382,6 +384,8 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_DOUBLE_EQ(q.smoothAscentMaxDrop, 0.04);
   EXPECT_DOUBLE_EQ(q.tiltFilter.alpha, 0.35);
   EXPECT_DOUBLE_EQ(q.tiltFilter.gateDeg, 7);
+  EXPECT_DOUBLE_EQ(q.tiltFilterAllAround.beta, 0.03);
+  EXPECT_DOUBLE_EQ(q.tiltFilterAllAround.alpha, pm::TrackerParams().tiltFilterAllAround.alpha);
   EXPECT_DOUBLE_EQ(q.rejectMarginQ, 0.25);
   EXPECT_FALSE(q.coarseSearch);
   EXPECT_FALSE(q.steadyEscalation);
@@ -400,6 +404,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
       {R"({"format":"visp-photomodel-tracker","version":1,"smooth_ascent":{"shrink":1}})", "smooth ascent"},
       {R"({"format":"visp-photomodel-tracker","version":1,"smooth_ascent":{"steps":3}})", "steps"},
       {R"({"format":"visp-photomodel-tracker","version":1,"tilt_filter":{"alpha":0}})", "tilt filter"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"tilt_filter_all_around":{"beta":1}})", "tilt filter"},
       {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"threshold":0}})", "threshold"},
       {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"wieghts":[1]}})", "wieghts"},
       {"{ not json", "not valid"},

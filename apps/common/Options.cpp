@@ -42,8 +42,10 @@ void addModelOptions(CLI::App &app, PhotoModelParams &p)
 
 void addLabModelOptions(CLI::App &app, LabModelChoice &c)
 {
-  app.add_flag("--stereo", c.stereo, "simulator: the stereo photo-model (the rig's two cameras take the photos, every "
-               "point gets its relief); without it the paper's flat model");
+  auto *fl = app.add_flag("--flat", c.flat, "simulator: the paper's flat photo-model (two photos face-on) instead of the "
+                          "all-around one");
+  auto *st = app.add_flag("--stereo", c.stereo, "simulator: the stereo snapshot photo-model (the rig's two cameras take the "
+                          "photos, every point gets its relief) instead of the all-around one");
   app.add_option("--distance-mm", c.distanceMm, "simulator: the toy's distance when its photos are taken (the flat "
                  "model's photo distance)")->check(CLI::PositiveNumber);
   app.add_flag("--right-view", c.rightView, "simulator, --stereo: add the right camera's own views (S_in and S_out "
@@ -52,22 +54,24 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
   app.add_option("--view-turn-deg", c.viewTurnDeg, "simulator, --stereo: four further photo pairs with the hand "
                  "turned by this about its x and y axes around the toy (a multi-view model; 0: one pair)")
       ->check(CLI::Range(0.0, 45.0));
-  auto *aa = app.add_flag("--all-around", c.allAround, "simulator: the PA-10 first walks the rig around the toy (a pass "
-                          "of --pass-views hand poses) and the all-around model is built from its silhouettes and photos");
-  app.add_option("--pass-views", c.passViews, "simulator, --all-around: hand poses of the pass")->check(CLI::Range(6, 200));
-  app.add_option("--refine-depth-mm", c.allAroundParams.refineDepthMm, "simulator, --all-around: how far photo-consistency may "
+  auto *aa = app.add_flag("--all-around", c.allAroundAsked, "simulator: the all-around photo-model, the default: the PA-10 "
+                          "first walks the rig around the toy (a pass of --pass-views hand poses) and the model is built "
+                          "from its silhouettes and photos");
+  fl->excludes(st);
+  aa->excludes(fl);
+  aa->excludes(st);
+  app.add_option("--pass-views", c.passViews, "simulator, all-around model: hand poses of the pass")->check(CLI::Range(6, 200));
+  app.add_option("--refine-depth-mm", c.allAroundParams.refineDepthMm, "simulator, all-around model: how far photo-consistency may "
                  "move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
-  app.add_option("--backdrop-hue", c.allAroundParams.backdropHueDeg, "simulator, --all-around: segment the pass against "
+  app.add_option("--backdrop-hue", c.allAroundParams.backdropHueDeg, "simulator, all-around model: segment the pass against "
                  "a plain backdrop of this hue (deg) instead of a second pass without the toy")->check(CLI::Range(0.0, 359.999));
-  app.add_option("--viewpoints", c.allAroundParams.viewpoints, "simulator, --all-around: the model's viewing directions (K)")
+  app.add_option("--viewpoints", c.allAroundParams.viewpoints, "simulator, all-around model: the model's viewing directions (K)")
       ->check(CLI::Range(1, 5000));
-  if (auto *st = app.get_option_no_throw("--stereo"))
-    aa->excludes(st);
 }
 
 sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c)
 {
-  if (c.allAround) {
+  if (!c.flat && !c.stereo) {
     PassPlan plan;
     plan.views = c.passViews;
     return lab::makeSimulatedAllAroundModel(scene, rig, plan, lab::LoopParams::startJoints(), c.distanceMm, c.allAroundParams);

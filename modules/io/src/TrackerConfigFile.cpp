@@ -100,6 +100,9 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     top.section("tilt_filter", [&](Section &t) {
       t.get("alpha", p.tiltFilter.alpha).get("beta", p.tiltFilter.beta).get("gate_deg", p.tiltFilter.gateDeg);
     });
+    top.section("tilt_filter_all_around", [&](Section &t) {
+      t.get("alpha", p.tiltFilterAllAround.alpha).get("beta", p.tiltFilterAllAround.beta).get("gate_deg", p.tiltFilterAllAround.gateDeg);
+    });
     top.get("verify_evaluations", p.verifyEvaluations)
         .get("verify_budget_fraction", p.verifyBudgetFraction)
         .get("verify_margin", p.verifyMargin)
@@ -175,6 +178,7 @@ std::string trackerConfigToJson(const TrackerParams &p)
                {"reject_margin_q", p.rejectMarginQ},
                {"coarse_search", p.coarseSearch},
                {"tilt_filter", {{"alpha", p.tiltFilter.alpha}, {"beta", p.tiltFilter.beta}, {"gate_deg", p.tiltFilter.gateDeg}}},
+               {"tilt_filter_all_around", {{"alpha", p.tiltFilterAllAround.alpha}, {"beta", p.tiltFilterAllAround.beta}, {"gate_deg", p.tiltFilterAllAround.gateDeg}}},
                {"verify_evaluations", p.verifyEvaluations},
                {"verify_budget_fraction", p.verifyBudgetFraction},
                {"verify_margin", p.verifyMargin},

@@ -46,6 +46,7 @@ void TrackerParams::validate() const
   if (!(smoothAscentMaxDrop >= 0))
     throw Error("tracker: the smooth ascent's fitness drop must be non-negative");
   tiltFilter.validate();
+  tiltFilterAllAround.validate();
   if (!(lockConfidence >= 0 && lockConfidence < 1))
     throw Error("tracker: the lock confidence must lie in [0, 1)");
   if (!(rejectMarginQ <= 1))
@@ -91,7 +92,8 @@ FrameBudget TrackerParams::steadyBudget() const
 
 PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
     : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga),
-      m_challenger(params.space, challengerParams(params.ga)), m_tilt(params.tiltFilter)
+      m_challenger(params.space, challengerParams(params.ga)), m_tilt(model.isAllAround() ? params.tiltFilterAllAround : params.tiltFilter),
+      m_allAround(model.isAllAround())
 {
   const FitnessParams &f = params.fitness;
   const double n = static_cast<double>(model.size());
@@ -341,7 +343,7 @@ void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective)
       r.fitness = f;
     }
   }
-  if (!m_params.tiltFilter.passesThrough()) {
+  if (!tiltFilter().passesThrough()) {
     if (locked && m_last.state == TrackState::Tracking) {
       r.phi = m_tilt.update(r.phi);
       r.fitness = m_fitness.evaluate(r.phi);

@@ -32,16 +32,18 @@ void addDistractorOptions(CLI::App &app, DistractorChoice &c);
 
 struct LabModelChoice
 {
+  bool flat = false;        //!< --flat: the paper's flat model (two photos face-on)
   bool stereo = false;      //!< --stereo: the rig's two cameras take the photos, every point gets its relief
   double distanceMm = 500;  //!< --distance-mm: where the toy is when its photos are taken (and, flat, the photo distance)
   PhotoModelParams photo;   //!< region and sampling (addModelOptions)
   bool rightView = false;   //!< --right-view: the stereo model adds the right camera's own views
   double viewTurnDeg = 0;   //!< --view-turn-deg: four further photo pairs, the hand turned by this about x and y (0: one pair)
-  bool allAround = false;   //!< --all-around: the PA-10 walks the rig around the toy first, the all-around model
+  bool allAroundAsked = false; //!< --all-around given: the default anyway (neither --flat nor --stereo), kept for older command lines
   int passViews = 16;       //!< --pass-views: hand poses of that pass
   AllAroundParams allAroundParams; //!< --refine-depth-mm, --viewpoints: the all-around build
 };
-//! --stereo, --distance-mm (the photo distance of the flat model, the toy's distance for the stereo one)
+//! The lab's model: all-around by default (the PA-10 walks the rig around the toy first), --flat or --stereo for the older ones; --distance-mm, the pass's options
+
 void addLabModelOptions(CLI::App &app, LabModelChoice &c);
 //! The lab's model of \e scene's toy, as chosen, with its true frame. Throws pm::Error.
 sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c);

@@ -66,6 +66,8 @@ struct PhotoModel
   std::vector<ModelView> views;         //!< further views; each camera is scored with the view nearest its direction
 
   std::size_t size() const { return inner.size() + outer.size(); }
+  //! True for a model of many viewing directions (more than 16 views: an all-around model, AllAroundModelBuilder.h).
+  bool isAllAround() const { return views.size() > 16; }
   //! True when some point lies off the plane z = 0 (a stereo model).
   bool hasDepth() const;
   /*!

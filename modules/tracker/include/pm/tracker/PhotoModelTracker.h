@@ -137,10 +137,17 @@ struct TrackerParams
   double smoothAscentMaxDrop = 0.02;
   /*!
     The tilt of the frame's pose smoothed from frame to frame (TiltFilter: alpha-beta on the
-    rotation about the hand's x and y axes, which one viewpoint sees poorly), on tracked frames;
-    alpha 1 and beta 0: off.
+    rotation about the hand's x and y axes, which one viewpoint sees poorly), on tracked frames,
+    for a model of one or a few views (flat, a stereo snapshot); alpha 1 and beta 0: off.
   */
   TiltFilterParams tiltFilter;
+  /*!
+    The same for an all-around model (PhotoModel::isAllAround), whose outline changes with the
+    tilt as the toy's does: lighter smoothing. Measured on the main job (pm-servo --all-around,
+    C12, seeds 1-5): the one-view filter (alpha 0.2, beta 0.02) lags the tilted steps by 5-6 deg
+    and servoed 97 frames on a wrong pose in all; alpha 0.5, beta 0: 17 (docs/all-around-model.md).
+  */
+  TiltFilterParams tiltFilterAllAround{0.5, 0.0, 5.0};
 
   /*!
     Verification of a new lock: after the tracker locks (from searching or lost), a challenger
@@ -248,6 +255,8 @@ public:
   std::vector<PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_last.phi, camera); }
   const StereoFitness &fitness() const { return m_fitness; }
   const TrackerParams &params() const { return m_params; }
+  //! The tilt filter this model gets: TrackerParams::tiltFilterAllAround for an all-around model, tiltFilter otherwise.
+  const TiltFilterParams &tiltFilter() const { return m_allAround ? m_params.tiltFilterAllAround : m_params.tiltFilter; }
 
 private:
   //! What track() decided about the frame it works on.
@@ -298,6 +307,7 @@ private:
   int m_framesTracked = 0;
   int m_untrustedFrames = 0; //!< tracked, verified frames in a row under reverifyBelowConfidence
   TiltFilter m_tilt;
+  bool m_allAround = false;    //!< the model is an all-around one (PhotoModel::isAllAround)
 };
 
 } // namespace pm
