@@ -380,7 +380,7 @@ void FitnessMaps_FourGrids(benchmark::State &state)
 }
 
 /*!
-  Stages of a tracked frame, as pm-track runs it (measuredTrackerDefaults: 800 evaluations, 15 %
+  Stages of a tracked frame, as pm-track runs it (the tracker's defaults: 800 evaluations, 15 %
   of them on a steady frame, the default C12 model): a frame with the whole budget (hue planes of
   both images, RM-GA's generations, the smooth ascent, the confidence's cues), a steady frame, the
   same steady frame with the hue of the whole images (its peer), a frame on which a new lock is
@@ -389,7 +389,7 @@ void FitnessMaps_FourGrids(benchmark::State &state)
 */
 void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying, int hueMarginPx = -1, bool before = false)
 {
-  pm::TrackerParams p = pm::app::measuredTrackerDefaults(5.0);
+  pm::TrackerParams p = pm::TrackerParams();
   p.steadyBudgetFraction = steadyFraction;
   if (hueMarginPx >= 0)
     p.steadyHueMarginPx = hueMarginPx;
@@ -418,9 +418,9 @@ void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying
   state.counters["evaluations"] = static_cast<double>(evaluations) / static_cast<double>(std::max<long>(1, frames));
 }
 void Tracker_Frame_Whole(benchmark::State &s) { trackerFrame(s, 1.0, false); }
-void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::app::measuredTrackerDefaults(5.0).steadyBudgetFraction, false); }
+void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::TrackerParams().steadyBudgetFraction, false); }
 //! Its peer: the same steady frame with the hue of the whole images (TrackerParams::steadyHueMarginPx 0).
-void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::app::measuredTrackerDefaults(5.0).steadyBudgetFraction, false, 0); }
+void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::TrackerParams().steadyBudgetFraction, false, 0); }
 void Tracker_Frame_Verifying(benchmark::State &s) { trackerFrame(s, 1.0, true); }
 //! The whole frame's peer: the budget of before issue 18 (1,900 evaluations, refinement 100), the rest as now.
 void Tracker_Frame_Before_1900Evals(benchmark::State &s) { trackerFrame(s, 1.0, false, -1, true); }

@@ -144,7 +144,7 @@ int main(int argc, char **argv)
       ->check(CLI::Range(0.0, 45.0));
   app.add_option("--steady-variant", steadyVariant, "ours-steady: ours with this fraction of the budget on steady frames "
                                                    "(see --steady-budget)")->check(CLI::Range(0.01, 1.0));
-  pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(5.0));
+  pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
   return pm::app::run(app, argc, argv, [&] {

@@ -142,7 +142,7 @@ int main(int argc, char **argv)
         c.model = &models[i].build.model;
         c.oMm = models[i].oMm;
         c.otherToy = r.model != pass.target;
-        c.params = pm::app::measuredTrackerDefaults(5.0);
+        c.params = pm::TrackerParams();
         c.params.budgetEvaluations = r.budget;
         c.params.ga.seed = r.seed;
         c.params.steadyBudgetFraction = r.steady;
@@ -171,7 +171,7 @@ int main(int argc, char **argv)
       trustedWrong += !f.right && f.trusted ? 1 : 0;
       trustedRight += f.right && f.trusted ? 1 : 0;
     }
-    const pm::TrackerParams defaults = pm::app::measuredTrackerDefaults(5.0);
+    const pm::TrackerParams defaults = pm::TrackerParams();
     const double threshold = defaults.confidence.threshold;
     const auto curve = pm::compare::rocCurve(conf, right);
     const double area = pm::compare::auroc(conf, right);

@@ -92,6 +92,11 @@ int main(int argc, char **argv)
   defaults.ga.population = 100;       // detection from scratch: a larger population ...
   defaults.ga.restartGenerations = 30; // ... restarted when stagnant ...
   defaults.ga.refineEvaluations = 200; // ... and the best refined (measured: README)
+  defaults.ga.predictMotion = false;  // one still pair: nothing moves, and no frame is a steady one
+  defaults.budgetEvaluations = 0;     // the paper's wall-time budget (24 ms) unless --budget-evals
+  defaults.steadyBudgetFraction = 1.0;
+  defaults.steadyHueMarginPx = 48;
+  defaults.verifyEvaluations = 6000;
   pm::app::TrackerOptions trackerOptions(app, defaults);
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 

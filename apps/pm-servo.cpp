@@ -164,7 +164,7 @@ int main(int argc, char **argv)
   pm::app::addSceneOptions(app, sp);
   pm::app::DistractorChoice distractor;
   pm::app::addDistractorOptions(app, distractor);
-  pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(5.0));
+  pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {

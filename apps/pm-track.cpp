@@ -29,7 +29,7 @@
 #include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
-#include "pm/io/TrackerConfigFile.h"
+#include "pm/tracker/TrackerConfigFile.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
@@ -99,7 +99,7 @@ int main(int argc, char **argv)
   pm::app::addLabModelOptions(app, lab);
   pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
-  pm::app::TrackerOptions trackerOptions(app, pm::app::measuredTrackerDefaults(pm::TrackerParams().budgetMs));
+  pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
@@ -357,7 +357,7 @@ int main(int argc, char **argv)
                            {"p99_frame_ms", p99Ms},
                            {"mean_evaluations_per_frame", static_cast<double>(evals) / static_cast<double>(rec.size())},
                            {"states", states},
-                           {"tracker", nlohmann::json::parse(pm::io::trackerConfigToJson(tp))}};
+                           {"tracker", nlohmann::json::parse(pm::trackerConfigToJson(tp))}};
     if (view.isOpen())
       view.capture(files.stage("display.png"));
     if (live) {

@@ -18,6 +18,7 @@
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/TrackerConfigFile.h"
 
 using pm::test::runProgram;
 using pm::test::TempDir;
@@ -219,14 +220,22 @@ TEST(Apps, DetectAndTrackOnTheSimulator)
     EXPECT_TRUE(s.contains(k)) << k;
   EXPECT_LT(s.at("position_error_mm").get<double>(), 15.0);
 
-  const auto t = runProgram("pm-track", "--target C04 --quiet --steps 2 --hold-s 0.5 --move-s 0.5 --budget-evals 800 --out " +
-                                            d.file("track"));
-  ASSERT_EQ(t.status, 0) << t.err;
-  const auto u = nlohmann::json::parse(pm::test::readText(d.file("track/summary.json")));
-  for (const char *k : {"converged_after_s", "errors", "mean_frame_ms", "p99_frame_ms"})
-    EXPECT_TRUE(u.contains(k)) << k;
-  EXPECT_TRUE(u.at("errors").at("z").contains("rms_error"));
-  EXPECT_TRUE(u.at("errors").at("eps3").contains("max_abs_error"));
+  // One set of tracker defaults: the program's tracker, run on its defaults and on a configuration
+  // file with no keys, is the library's TrackerParams().
+  pm::test::writeText(d.file("empty.json"), R"({"format":"visp-photomodel-tracker","version":1})");
+  const auto library = nlohmann::json::parse(pm::trackerConfigToJson(pm::TrackerParams()));
+  for (const std::string &config : std::vector<std::string>{"", " --config " + d.file("empty.json")}) {
+    const auto t = runProgram("pm-track", "--target C04 --quiet --steps 2 --hold-s 0.5 --move-s 0.5" + config + " --out " +
+                                              d.file("track"));
+    ASSERT_EQ(t.status, 0) << t.err;
+    const auto u = nlohmann::json::parse(pm::test::readText(d.file("track/summary.json")));
+    for (const char *k : {"converged_after_s", "errors", "mean_frame_ms", "p99_frame_ms"})
+      EXPECT_TRUE(u.contains(k)) << k;
+    EXPECT_TRUE(u.at("errors").at("z").contains("rms_error"));
+    EXPECT_TRUE(u.at("errors").at("eps3").contains("max_abs_error"));
+    EXPECT_EQ(u.at("tracker"), library) << config;
+    std::filesystem::remove_all(d.file("track"));
+  }
 }
 
 TEST(Apps, AModelThatDoesNotFitTheRigIsRefused)

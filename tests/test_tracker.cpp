@@ -5,7 +5,7 @@
 #include "TestSupport.h"
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
-#include "pm/io/TrackerConfigFile.h"
+#include "pm/tracker/TrackerConfigFile.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
@@ -366,8 +366,8 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.rejectMarginQ = 0.25;
   p.coarseSearch = false;
   p.steadyEscalation = false;
-  pm::test::writeText(d.file("t.json"), pm::io::trackerConfigToJson(p));
-  const pm::TrackerParams q = pm::io::loadTrackerConfig(d.file("t.json"));
+  pm::test::writeText(d.file("t.json"), pm::trackerConfigToJson(p));
+  const pm::TrackerParams q = pm::loadTrackerConfig(d.file("t.json"));
   EXPECT_EQ(q.budgetEvaluations, 1234);
   EXPECT_EQ(q.ga.population, 33);
   EXPECT_TRUE(q.ga.predictMotion);
@@ -389,10 +389,14 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_DOUBLE_EQ(q.rejectMarginQ, 0.25);
   EXPECT_FALSE(q.coarseSearch);
   EXPECT_FALSE(q.steadyEscalation);
+  // A file with no keys gives the library's defaults, or the caller's.
+  pm::test::writeText(d.file("empty.json"), R"({"format":"visp-photomodel-tracker","version":1})");
+  EXPECT_EQ(pm::trackerConfigToJson(pm::loadTrackerConfig(d.file("empty.json"))), pm::trackerConfigToJson(pm::TrackerParams()));
+  EXPECT_EQ(pm::loadTrackerConfig(d.file("empty.json"), evalBudget(1234)).budgetEvaluations, 1234);
   // Partial files keep the defaults.
   pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
-  EXPECT_EQ(pm::io::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
-  EXPECT_EQ(pm::io::loadTrackerConfig(d.file("partial.json")).ga.population, 20);
+  EXPECT_EQ(pm::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
+  EXPECT_EQ(pm::loadTrackerConfig(d.file("partial.json")).ga.population, 20);
   const std::vector<std::pair<std::string, std::string>> bad = {
       {R"({"format":"visp-photomodel-tracker","version":1,"budget_ms":0})", "budget"},
       {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"populaton":10}})", "populaton"},
@@ -411,7 +415,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
       {R"({"format":"x"})", "format"}};
   for (const auto &[text, expect] : bad) {
     pm::test::writeText(d.file("bad.json"), text);
-    const std::string e = pm::test::errorOf([&] { pm::io::loadTrackerConfig(d.file("bad.json")); });
+    const std::string e = pm::test::errorOf([&] { pm::loadTrackerConfig(d.file("bad.json")); });
     EXPECT_NE(e.find(expect), std::string::npos) << text << " -> " << e;
   }
 }

@@ -1,30 +1,11 @@
 #include "pm/app/Options.h"
 
-#include "pm/io/TrackerConfigFile.h"
+#include "pm/tracker/TrackerConfigFile.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/lab/LabPass.h"
 #include "pm/sim/TargetCatalog.h"
 
 namespace pm::app {
-
-TrackerParams measuredTrackerDefaults(double budgetMs)
-{
-  TrackerParams t;
-  t.ga.predictMotion = true;
-  t.ga.refineEvaluations = 0; // the smooth ascent refines the best pose; RM-GA's own refinement added nothing measurable
-  t.ga.restartGenerations = 30;
-  // Measured for issue 18 (pm-compare's six scenarios, several GA seeds): 800 evaluations per frame,
-  // 15 % of them on steady frames, the hue of a steady frame within 24 px of the model's last
-  // footprint, a lock verified by 3,000 evaluations of the challenger. A budget in evaluations
-  // gives the same poses whatever the machine's load; budgetMs is used when --budget-ms is
-  // given (or --budget-evals 0).
-  t.budgetEvaluations = 800;
-  t.steadyBudgetFraction = 0.15;
-  t.steadyHueMarginPx = 24;
-  t.verifyEvaluations = 3000;
-  t.budgetMs = budgetMs;
-  return t;
-}
 
 void addModelOptions(CLI::App &app, PhotoModelParams &p)
 {
@@ -194,7 +175,7 @@ TrackerParams TrackerOptions::resolve() const
 {
   // The options given, applied in order over the defaults or the file: --budget-ms switches to a
   // wall-time budget (the defaults' is in evaluations), --budget-evals after it wins.
-  TrackerParams p = m_config.empty() ? m_defaults : io::loadTrackerConfig(m_config);
+  TrackerParams p = m_config.empty() ? m_defaults : loadTrackerConfig(m_config, m_defaults);
   for (const auto &[opt, set] : m_set)
     if (opt->count() > 0)
       set(p, m_cli);

@@ -24,7 +24,7 @@ void TrackerParams::validate() const
   space.validate();
   ga.validate();
   fitness.validate();
-  if (budgetEvaluations < 0 || (budgetEvaluations == 0 && !(budgetMs > 0)))
+  if (budgetEvaluations < 0 || !(budgetMs > 0)) // the wall-time budget must make sense even while the evaluations rule
     throw Error("tracker: the frame budget must be a positive number of evaluations or milliseconds (got " +
                 std::to_string(budgetEvaluations) + " evaluations, " + std::to_string(budgetMs) + " ms)");
   if (budgetEvaluations > 0 && budgetEvaluations < ga.population)

@@ -51,13 +51,6 @@ sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &
 //! --in-tol-deg, --in-bg-tol-deg, --out-bg-tol-deg
 void addFitnessOptions(CLI::App &app, FitnessParams &p);
 
-/*!
-  Our tracker's options as chosen by measurement (README, "Which options" and "Performance"):
-  motion prediction, restarts after 30 stagnant generations, 800 evaluations per frame and
-  15 % of them on steady frames (hue within 24 px of the model), locks verified by 3,000
-  evaluations; \e budgetMs is the wall-time budget used only if the evaluation budget is set to 0.
-*/
-TrackerParams measuredTrackerDefaults(double budgetMs);
 
 /*!
   The tracker's options: --config FILE (JSON, see TrackerConfigFile.h), then --budget-ms,

@@ -58,12 +58,31 @@ inline FitnessParams trackerFitnessDefaults()
   return f;
 }
 
+/*!
+  RM-GA as the tracker runs it, by measurement (issues 4 and 18): motion prediction, restarts
+  after 30 generations without gain, no refinement of its own (the smooth ascent does it).
+*/
+inline RmGaParams trackerGaDefaults()
+{
+  RmGaParams g;
+  g.predictMotion = true;
+  g.refineEvaluations = 0;
+  g.restartGenerations = 30;
+  return g;
+}
+
+/*!
+  Everything the tracker can be told. The defaults are the measured ones that every program
+  uses (docs/rmga-tracker.md, "Which options"): 800 evaluations per frame, 15 % of them on steady
+  frames with the hue within 24 px of the model, locks verified by 3,000 evaluations of a
+  challenger; a configuration file (TrackerConfigFile.h) with no keys gives the same.
+*/
 struct TrackerParams
 {
   SearchSpace space;            //!< where phi is searched
-  RmGaParams ga;                //!< RM-GA (population, operators, options, seed)
+  RmGaParams ga = trackerGaDefaults(); //!< RM-GA (population, operators, options, seed)
   FitnessParams fitness = trackerFitnessDefaults(); //!< Eqs. (8)-(11)
-  long budgetEvaluations = 0;   //!< per-frame budget: evaluations (deterministic; a pose rejected early counts its share) ...
+  long budgetEvaluations = 800; //!< per-frame budget: evaluations (deterministic; a pose rejected early counts its share) ...
   double budgetMs = 24.0;       //!< ... or wall time, used when budgetEvaluations is 0 (the paper: 24 ms)
   /*!
     Early rejection: RM-GA's children that cannot survive (under the worst parent) are scored on
@@ -95,7 +114,7 @@ struct TrackerParams
     other frame (searching, lost, just locked, q dropping: a jump, an occlusion, a wrong lock) gets
     the whole budget. 1: every frame the same.
   */
-  double steadyBudgetFraction = 1.0;
+  double steadyBudgetFraction = 0.15;
   int steadyAfterFrames = 3;
   double steadyQualityDrop = 0.03;
   /*!
@@ -112,7 +131,7 @@ struct TrackerParams
     added, StereoFitness::addHueUnder). 0: always the whole images. A target that moves out of the
     window scores lower, which ends the steadiness: the next frame has the whole images again.
   */
-  int steadyHueMarginPx = 48;
+  int steadyHueMarginPx = 24;
 
   /*!
     Option: after RM-GA, a local continuous search (refineLocalSimplex) of this many evaluations
@@ -165,7 +184,7 @@ struct TrackerParams
     A lock that lasts verifyEvaluations evaluations of the challenger is verified; 0: off (every
     lock counts as verified).
   */
-  long verifyEvaluations = 6000;
+  long verifyEvaluations = 3000;
   double verifyBudgetFraction = 0.5;
   double verifyMargin = 0.02;
   double verifySwitchMargin = 0.03;

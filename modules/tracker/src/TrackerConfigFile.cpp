@@ -1,0 +1,192 @@
+#include "pm/tracker/TrackerConfigFile.h"
+
+#include <algorithm>
+#include <fstream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pm/core/Error.h"
+
+using nlohmann::json;
+
+namespace pm {
+
+namespace {
+constexpr const char *kFormat = "visp-photomodel-tracker";
+
+/*!
+  Every key of the file, once: \e v.value(key, field) for a value, \e v.section(key, f) for an
+  object whose keys f lists. The reader and the writer below both walk this list.
+*/
+template <typename V> void eachKey(V &v, TrackerParams &p)
+{
+  v.value("budget_ms", p.budgetMs)
+      .value("budget_evaluations", p.budgetEvaluations)
+      .value("lock_quality", p.lockQuality)
+      .value("lock_confidence", p.lockConfidence)
+      .value("lost_quality", p.lostQuality)
+      .value("lost_frames", p.lostFrames)
+      .value("init_spread", p.initSpread)
+      .value("steady_budget_fraction", p.steadyBudgetFraction)
+      .value("steady_after_frames", p.steadyAfterFrames)
+      .value("steady_quality_drop", p.steadyQualityDrop)
+      .value("steady_hue_margin_px", p.steadyHueMarginPx)
+      .value("steady_escalation", p.steadyEscalation)
+      .value("smooth_refine_evaluations", p.smoothRefineEvaluations)
+      .value("smooth_refine_max_drop", p.smoothRefineMaxDrop)
+      .section("smooth_ascent", [&](V &a) {
+        a.value("max_evaluations", p.smoothAscent.maxEvaluations)
+            .value("first_step_px", p.smoothAscent.firstStepPx)
+            .value("max_step_px", p.smoothAscent.maxStepPx)
+            .value("min_step_px", p.smoothAscent.minStepPx)
+            .value("grow", p.smoothAscent.grow)
+            .value("shrink", p.smoothAscent.shrink);
+      })
+      .value("smooth_ascent_max_drop", p.smoothAscentMaxDrop)
+      .value("reject_margin_q", p.rejectMarginQ)
+      .value("coarse_search", p.coarseSearch);
+  for (auto [key, filter] : {std::pair<const char *, TiltFilterParams *>{"tilt_filter", &p.tiltFilter},
+                             std::pair<const char *, TiltFilterParams *>{"tilt_filter_all_around", &p.tiltFilterAllAround}})
+    v.section(key, [&](V &t) { t.value("alpha", filter->alpha).value("beta", filter->beta).value("gate_deg", filter->gateDeg); });
+  v.value("verify_evaluations", p.verifyEvaluations)
+      .value("verify_budget_fraction", p.verifyBudgetFraction)
+      .value("verify_margin", p.verifyMargin)
+      .value("verify_switch_margin", p.verifySwitchMargin)
+      .value("verify_far_mm", p.verifyFarMm)
+      .value("verify_far_deg", p.verifyFarDeg)
+      .value("verify_same_object_mm", p.verifySameObjectMm)
+      .value("reverify_after_frames", p.reverifyAfterFrames)
+      .value("reverify_below_confidence", p.reverifyBelowConfidence)
+      .section("confidence", [&](V &c) {
+        c.value("weights", p.confidence.weights).value("bias", p.confidence.bias).value("threshold", p.confidence.threshold);
+      })
+      .section("search_space", [&](V &s) { s.value("lo", p.space.lo).value("hi", p.space.hi); })
+      .section("rmga", [&](V &g) {
+        g.value("population", p.ga.population)
+            .value("elite", p.ga.elite)
+            .value("tournament", p.ga.tournament)
+            .value("crossover_rate", p.ga.crossoverRate)
+            .value("mutation_per_bit", p.ga.mutationPerBit)
+            .value("predict_motion", p.ga.predictMotion)
+            .value("refine_evaluations", p.ga.refineEvaluations)
+            .value("restart_generations", p.ga.restartGenerations)
+            .value("seed", p.ga.seed);
+      })
+      .section("fitness", [&](V &q) {
+        q.value("in_tol_deg", p.fitness.inTolDeg)
+            .value("in_bg_tol_deg", p.fitness.inBgTolDeg)
+            .value("out_bg_tol_deg", p.fitness.outBgTolDeg)
+            .value("in_match", p.fitness.inMatch)
+            .value("in_background", p.fitness.inBackground)
+            .value("in_other", p.fitness.inOther)
+            .value("out_background", p.fitness.outBackground)
+            .value("out_other", p.fitness.outOther)
+            .value("off_image", p.fitness.offImage)
+            .value("min_saturation", p.fitness.minSaturation);
+      });
+}
+
+/*!
+  Reads one JSON object of the file: each value() reads its key if present and records it as
+  known; done() refuses any other key, so that a misspelt one is an error, not a default kept.
+*/
+class Reader
+{
+public:
+  Reader(const json &j, std::string where) : m_j(j), m_where(std::move(where))
+  {
+    if (!m_j.is_object())
+      throw Error("expected an object" + m_where);
+  }
+  template <typename T> Reader &value(const char *key, T &v)
+  {
+    m_known.emplace_back(key);
+    if (m_j.contains(key))
+      v = m_j.at(key).get<T>();
+    return *this;
+  }
+  Reader &known(const char *key)
+  {
+    m_known.emplace_back(key);
+    return *this;
+  }
+  template <typename F> Reader &section(const char *key, F read)
+  {
+    m_known.emplace_back(key);
+    if (m_j.contains(key)) {
+      Reader s(m_j.at(key), std::string(" in \"") + key + "\"");
+      read(s);
+      s.done();
+    }
+    return *this;
+  }
+  void done() const
+  {
+    for (auto it = m_j.begin(); it != m_j.end(); ++it)
+      if (std::find(m_known.begin(), m_known.end(), it.key()) == m_known.end())
+        throw Error("unknown key \"" + it.key() + "\"" + m_where);
+  }
+
+private:
+  const json &m_j;
+  std::string m_where;
+  std::vector<std::string> m_known;
+};
+
+//! Writes every key into a JSON object.
+class Writer
+{
+public:
+  template <typename T> Writer &value(const char *key, const T &v)
+  {
+    j[key] = v;
+    return *this;
+  }
+  template <typename F> Writer &section(const char *key, F write)
+  {
+    Writer s;
+    write(s);
+    j[key] = std::move(s.j);
+    return *this;
+  }
+  json j = json::object();
+};
+} // namespace
+
+TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults)
+{
+  std::ifstream f(path);
+  if (!f)
+    throw Error("tracker configuration '" + path + "' does not exist or cannot be read");
+  TrackerParams p = defaults;
+  try {
+    const json j = json::parse(f);
+    if (!j.is_object() || j.value("format", "") != kFormat)
+      throw Error(std::string("\"format\" must be \"") + kFormat + "\"");
+    const json version = j.value("version", json());
+    if (!version.is_number_integer() || version.get<long long>() != 1)
+      throw Error("unsupported \"version\" (this program reads version 1)");
+    Reader top(j, "");
+    top.known("format").known("version");
+    eachKey(top, p);
+    top.done();
+    p.validate();
+  } catch (const Error &e) {
+    throw Error("tracker configuration '" + path + "': " + e.what());
+  } catch (const json::exception &e) {
+    throw Error("tracker configuration '" + path + "' is not valid: " + e.what());
+  }
+  return p;
+}
+
+std::string trackerConfigToJson(const TrackerParams &params)
+{
+  TrackerParams p = params; // eachKey takes the fields by reference; the writer only reads them
+  Writer w;
+  w.value("format", kFormat).value("version", 1);
+  eachKey(w, p);
+  return w.j.dump(2) + "\n";
+}
+
+} // namespace pm
