@@ -1,0 +1,120 @@
+// TrackConfidence: the logistic model over the tracker's cues that says whether a frame's estimate
+// can be trusted (the servo acts on trusted estimates only). Its coefficients are fitted by
+// pm-confidence (test_compare.cpp runs it); here, the model itself and the shipped coefficients'
+// directions, which the trust analysis relies on (docs/trust.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "pm/core/Error.h"
+#include "pm/tracker/TrackConfidence.h"
+
+namespace {
+
+//! A frame the tracker is sure of: tracked a second, verified, fitting in both cameras, still.
+pm::ConfidenceCues goodFrame()
+{
+  pm::ConfidenceCues c;
+  c.quality = 0.8;
+  c.qualityMin = 0.75;
+  c.inMatchMin = 0.8;
+  c.outBackgroundMin = 0.9;
+  c.tiltDeg = 3;
+  c.competitorMargin = 0.3;
+  c.qualityDrop = 0;
+  c.jumpMm = 0.5;
+  c.jumpDeg = 0.2;
+  c.framesTracked = 30;
+  c.verified = true;
+  c.tracking = true;
+  return c;
+}
+
+} // namespace
+
+TEST(TrackConfidence, TheFeaturesAreTheCuesScaledAsDocumented)
+{
+  pm::ConfidenceCues c = goodFrame();
+  c.tiltDeg = 25;
+  c.jumpMm = std::exp(2.0) - 1;
+  c.jumpDeg = -3;          // a negative jump counts as none
+  c.qualityDrop = -0.1;    // as does a negative drop
+  c.framesTracked = 90;    // capped at 30
+  const auto x = c.features();
+  ASSERT_EQ(x.size(), pm::ConfidenceCues::kFeatures);
+  ASSERT_EQ(pm::ConfidenceCues::featureNames().size(), pm::ConfidenceCues::kFeatures);
+  EXPECT_DOUBLE_EQ(x[0], 0.8);
+  EXPECT_DOUBLE_EQ(x[4], 2.5);            // tilt / 10
+  EXPECT_DOUBLE_EQ(x[6], 0.0);            // max(0, drop)
+  EXPECT_NEAR(x[7], 2.0, 1e-12);          // log1p(jump mm)
+  EXPECT_DOUBLE_EQ(x[8], 0.0);
+  EXPECT_DOUBLE_EQ(x[9], 1.0);            // min(frames, 30) / 30
+  EXPECT_DOUBLE_EQ(x[10], 1.0);
+  EXPECT_DOUBLE_EQ(x[11], 1.0);
+  EXPECT_STREQ(pm::ConfidenceCues::featureNames()[4], "tilt_deg_10");
+}
+
+TEST(TrackConfidence, IsTheLogisticOfTheWeightedFeatures)
+{
+  pm::ConfidenceModel m;
+  m.weights.fill(0);
+  m.bias = 0;
+  const pm::ConfidenceCues c = goodFrame();
+  EXPECT_DOUBLE_EQ(m.confidence(c), 0.5); // no evidence either way
+  m.weights[0] = 2.0;
+  m.bias = -1.0;
+  EXPECT_NEAR(m.confidence(c), 1.0 / (1.0 + std::exp(-(2.0 * 0.8 - 1.0))), 1e-12);
+}
+
+TEST(TrackConfidence, TheShippedModelTrustsASureFrameAndDoubtsWhatShouldBeDoubted)
+{
+  const pm::ConfidenceModel m;
+  EXPECT_NO_THROW(m.validate());
+  const double sure = m.confidence(goodFrame());
+  EXPECT_GE(sure, m.threshold);
+  // Each of these, alone, must lower the confidence of the same frame.
+  struct Change
+  {
+    const char *what;
+    void (*apply)(pm::ConfidenceCues &);
+  };
+  const Change doubts[] = {
+      {"a lower fitness", [](pm::ConfidenceCues &c) { c.quality = c.qualityMin = 0.4; }},
+      {"a pose that fits one camera only", [](pm::ConfidenceCues &c) { c.qualityMin = 0.2; }},
+      {"S_in off the model's hue", [](pm::ConfidenceCues &c) { c.inMatchMin = 0.3; }},
+      {"a competitor as good (a near-symmetric outline)", [](pm::ConfidenceCues &c) { c.competitorMargin = 0; }},
+      {"a steep tilt (the flat model's relief bias)", [](pm::ConfidenceCues &c) { c.tiltDeg = 40; }},
+      {"a fall of the fitness", [](pm::ConfidenceCues &c) { c.qualityDrop = 0.3; }},
+      {"a jump of 50 mm", [](pm::ConfidenceCues &c) { c.jumpMm = 50; }},
+      {"a jump of 20 deg", [](pm::ConfidenceCues &c) { c.jumpDeg = 20; }},
+      {"a lock not yet verified", [](pm::ConfidenceCues &c) { c.verified = false; }},
+      {"a lock of one frame", [](pm::ConfidenceCues &c) { c.framesTracked = 1; }},
+      {"no lock at all", [](pm::ConfidenceCues &c) { c.tracking = false; }},
+  };
+  for (const Change &d : doubts) {
+    pm::ConfidenceCues c = goodFrame();
+    d.apply(c);
+    EXPECT_LT(m.confidence(c), sure) << d.what;
+  }
+  // A frame with every doubt at once is far from trusted.
+  pm::ConfidenceCues bad = goodFrame();
+  for (const Change &d : doubts)
+    d.apply(bad);
+  EXPECT_LT(m.confidence(bad), 0.05);
+}
+
+TEST(TrackConfidence, ACoefficientThatIsNotFiniteOrAThresholdOutsideTheOpenIntervalIsRefused)
+{
+  pm::ConfidenceModel m;
+  m.weights[3] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(m.validate(), pm::Error);
+  m = pm::ConfidenceModel();
+  m.bias = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(m.validate(), pm::Error);
+  for (double t : {0.0, 1.0, -0.5, 2.0}) {
+    m = pm::ConfidenceModel();
+    m.threshold = t;
+    EXPECT_THROW(m.validate(), pm::Error) << t;
+  }
+}
