@@ -1,12 +1,17 @@
 // Image decoding: formats read back as written, and the inputs the fuzzer found refused cleanly.
+// Staged outputs: files appear under their names only when a run commits them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <vector>
 #include <visp3/io/vpImageIo.h>
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
+#include "pm/io/StagedFiles.h"
 
 namespace {
 
@@ -77,4 +82,64 @@ TEST(ImageFile, FuzzFindingsAreRefusedWithAnError)
   const vpImage<vpRGBa> Q = pm::io::readColorImage(d.file("image"));
   EXPECT_EQ(Q[0][0].R, 64); // 2 of 8, rounded
   EXPECT_EQ(Q[0][1].R, 128);
+}
+
+namespace {
+//! The names in \e dir, sorted.
+std::vector<std::string> namesIn(const std::string &dir)
+{
+  std::vector<std::string> n;
+  for (const auto &e : std::filesystem::directory_iterator(dir))
+    n.push_back(e.path().filename().string());
+  std::sort(n.begin(), n.end());
+  return n;
+}
+} // namespace
+
+TEST(StagedFiles, OutputsAppearOnlyOnCommitAndNothingIsLeftOtherwise)
+{
+  pm::test::TempDir d("staged");
+  {
+    // A run that fails after writing: its folder is made, but nothing is left in it.
+    pm::io::StagedFiles out(d.file("failed/deeper"));
+    const std::string tmp = out.stage("model.json");
+    EXPECT_EQ(std::filesystem::path(tmp).extension(), ".json"); // writers that pick the format from it still work
+    EXPECT_NE(tmp, out.finalPath("model.json"));
+    std::ofstream(tmp) << "{ half";
+    EXPECT_FALSE(std::filesystem::exists(out.finalPath("model.json")));
+  }
+  EXPECT_TRUE(namesIn(d.file("failed/deeper")).empty());
+  {
+    // A run that succeeds: every staged file under its final name, no temporary left.
+    pm::io::StagedFiles out(d.file("ok"));
+    std::ofstream(out.stage("a.txt")) << "first";
+    std::ofstream(out.stage("b.png")) << "second";
+    out.commit();
+  }
+  EXPECT_EQ(namesIn(d.file("ok")), (std::vector<std::string>{"a.txt", "b.png"}));
+  EXPECT_EQ(pm::test::readText(d.file("ok/a.txt")), "first");
+  {
+    // A staged file that was never written: nothing is committed (not half a set of outputs),
+    // and the error names the file.
+    pm::io::StagedFiles out(d.file("missing"));
+    std::ofstream(out.stage("written.txt")) << "x";
+    (void)out.stage("never.txt");
+    const std::string e = pm::test::errorOf([&] { out.commit(); });
+    EXPECT_NE(e.find("never.txt"), std::string::npos) << e;
+  }
+  EXPECT_TRUE(namesIn(d.file("missing")).empty());
+  // A folder that cannot be made is an error naming it.
+  std::ofstream(d.file("file")) << "a file, not a folder";
+  const std::string e = pm::test::errorOf([&] { pm::io::StagedFiles bad(d.file("file/sub")); });
+  EXPECT_NE(e.find("file/sub"), std::string::npos) << e;
+}
+
+TEST(StagedFiles, WriteTextFileReplacesAWholeFileOrNothing)
+{
+  pm::test::TempDir d("staged");
+  pm::io::writeTextFile(d.file("t.txt"), "one");
+  pm::io::writeTextFile(d.file("t.txt"), "two");
+  EXPECT_EQ(pm::test::readText(d.file("t.txt")), "two");
+  EXPECT_EQ(namesIn(d.path()), (std::vector<std::string>{"t.txt"}));
+  EXPECT_THROW(pm::io::writeTextFile(d.file("no/such/folder/t.txt"), "x"), pm::Error);
 }

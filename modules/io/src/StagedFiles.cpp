@@ -40,6 +40,12 @@ std::string StagedFiles::finalPath(const std::string &name) const { return (fs::
 
 void StagedFiles::commit()
 {
+  // Every staged file first: a run whose outputs are incomplete commits none of them.
+  for (const auto &n : m_names) {
+    std::error_code ec;
+    if (!fs::is_regular_file(fs::path(m_dir) / tempName(n), ec))
+      throw Error("cannot write '" + finalPath(n) + "': it was never written");
+  }
   for (const auto &n : m_names) {
     std::error_code ec;
     fs::rename(fs::path(m_dir) / tempName(n), fs::path(m_dir) / n, ec);

@@ -24,7 +24,7 @@ public:
   std::string stage(const std::string &name);
   //! The final path of \e name in the folder.
   std::string finalPath(const std::string &name) const;
-  //! Renames every staged file to its final name. Throws pm::Error if a staged file is missing.
+  //! Renames every staged file to its final name; if one was never written, none (throws pm::Error naming it).
   void commit();
   const std::string &dir() const { return m_dir; }
 
