@@ -46,9 +46,11 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
       .value("smooth_ascent_max_drop", p.smoothAscentMaxDrop)
       .value("reject_margin_q", p.rejectMarginQ)
       .value("coarse_search", p.coarseSearch);
-  for (auto [key, filter] : {std::pair<const char *, TiltFilterParams *>{"tilt_filter", &p.tiltFilter},
-                             std::pair<const char *, TiltFilterParams *>{"tilt_filter_all_around", &p.tiltFilterAllAround}})
-    v.section(key, [&](V &t) { t.value("alpha", filter->alpha).value("beta", filter->beta).value("gate_deg", filter->gateDeg); });
+  for (const auto &named : {std::pair<const char *, TiltFilterParams *>{"tilt_filter", &p.tiltFilter},
+                             std::pair<const char *, TiltFilterParams *>{"tilt_filter_all_around", &p.tiltFilterAllAround}}) {
+    TiltFilterParams *filter = named.second; // not a structured binding: a lambda may not capture one in C++17
+    v.section(named.first, [filter](V &t) { t.value("alpha", filter->alpha).value("beta", filter->beta).value("gate_deg", filter->gateDeg); });
+  }
   v.value("verify_evaluations", p.verifyEvaluations)
       .value("verify_budget_fraction", p.verifyBudgetFraction)
       .value("verify_margin", p.verifyMargin)
