@@ -15,14 +15,43 @@
 
 namespace pm::calib {
 
+/*!
+  A chessboard pattern (see ChessBoard.h for its frame and why one inner-corner count must be
+  odd and the other even). Print render(), then find the board's pose in a camera's raw image:
+
+  \code
+#include <iostream>
+
+#include "pm/calib/ChessBoard.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/RigFile.h"
+
+int main()
+{
+  pm::calib::ChessBoard board; // 6 x 9 inner corners
+  board.squareMm = 25;
+  board.validate();
+  pm::io::writeImage(board.render(10.0), "chessboard.png"); // 10 px per mm: print it at 254 dpi
+
+  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const vpImage<vpRGBa> I = pm::io::readColorImage("left01.png");
+  const pm::calib::BoardView view = board.find(I, rig.left.cam, rig.left.distortion, "left01.png");
+  std::cout << "cMb:\n" << view.cMb << "\n" << view.reprojectionRmsPx << " px rms" << std::endl;
+}
+  \endcode
+*/
 struct ChessBoard : Pattern
 {
-  int innerRows = 6, innerCols = 9;
-  double squareMm = 20;
+  //! \var innerRows
+  //! Inner corners down a column (the number of rows of corners).
+  int innerRows = 6, innerCols = 9; //!< inner corners along a row (the number of columns of corners)
+  double squareMm = 20; //!< side of a square (mm)
   double marginMm = 20; //!< white around the squares (the corner finder needs a light border)
 
+  //! One line, e.g. "chessboard of 6x9 inner corners, 20 mm squares".
   std::string describe() const override;
-  //! Throws pm::Error for fewer than 3 inner corners a side, or both counts of the same parity.
+  //! Throws pm::Error unless each side has 3 to 50 inner corners, one count odd and the other even,
+  //! the squares a size and the margin no negative width.
   void validate() const override;
   double widthMm() const override { return (innerCols + 1) * squareMm + 2 * marginMm; }
   double heightMm() const override { return (innerRows + 1) * squareMm + 2 * marginMm; }

@@ -35,6 +35,11 @@ struct PatternDetection
   std::vector<vpPoint> points;      //!< where it is on the board (metres, oX, oY, 0)
 };
 
+/*!
+  A calibration pattern (see Pattern.h): its layout, its printed image, and finding it in an image.
+  Implemented by TagBoard and ChessBoard; calibrateRig() takes either. Lengths of the layout
+  are in mm, points on the board in metres.
+*/
 class Pattern
 {
 public:
@@ -43,7 +48,9 @@ public:
   virtual std::string describe() const = 0;
   //! Throws pm::Error for a layout that cannot be used.
   virtual void validate() const = 0;
+  //! Width of the printed pattern, white margin included (mm).
   virtual double widthMm() const = 0;
+  //! Height of the printed pattern, white margin included (mm).
   virtual double heightMm() const = 0;
   //! The printed pattern at \e pixelsPerMm, white margin included.
   virtual vpImage<vpRGBa> render(double pixelsPerMm) const = 0;
@@ -74,7 +81,8 @@ public:
 struct CornerMatches
 {
   std::vector<vpPoint> points;      //!< with their measured normalized coordinates (x, y)
-  std::vector<vpImagePoint> pixels;
+  std::vector<vpImagePoint> pixels; //!< the pixels they were found at, in the same order
+  //! Appends \e model with the normalized coordinates (x, y) of pixel \e ip through \e cam (no distortion), and \e ip.
   void add(vpPoint model, const vpImagePoint &ip, const vpCameraParameters &cam);
 };
 

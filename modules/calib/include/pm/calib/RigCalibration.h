@@ -34,36 +34,46 @@
 
 namespace pm::calib {
 
+//! One stereo pair of raw images (as the cameras give them) of the pattern, for calibrateRig().
 struct StereoImagePair
 {
   std::string name;                   //!< for reports, e.g. "left01.jpg + right01.jpg"
-  vpImage<vpRGBa> left, right;
+  //! \var left
+  //! The left camera's image.
+  vpImage<vpRGBa> left, right;        //!< the right camera's image, taken at the same time
 };
 
+//! The limits calibrateRig() applies to the pairs.
 struct RigCalibrationParams
 {
-  int minPairs = 5;             //!< usable pairs needed
-  double maxEdgeWidthPx = 5.0;  //!< blur limit: mean width of the board's edges (estimateChessboardSharpness)
+  int minPairs = 5;             //!< usable pairs needed, and usable views of each camera (at least 3)
+  double maxEdgeWidthPx = 5.0;  //!< chessboard blur limit (px): mean width of the board's edges (estimateChessboardSharpness)
   void validate() const;        //!< throws pm::Error for a value out of range
 };
 
-//! One pair's fate and, when used, its residuals.
+//! One pair's fate and, when used, its residuals. Arrays of two: [0] the left camera, [1] the right one.
 struct PairReport
 {
-  std::string name;
+  std::string name;             //!< the pair's StereoImagePair::name
   bool used = false;            //!< for the stereo pose (both views usable)
   bool usedBy[2] = {false, false}; //!< for each camera's intrinsics
   std::string reason;           //!< why it was not used for the stereo pose ("" when used)
-  double edgeWidthPx[2] = {0, 0};
+  double edgeWidthPx[2] = {0, 0}; //!< chessboard: mean width of the board's edges in each image (px; 0 when not measured)
   double rmsPx[2] = {0, 0};     //!< reprojection rms of each camera in the stereo calibration (used pairs)
   std::vector<vpImagePoint> corners[2];   //!< detected (raw image)
   std::vector<vpImagePoint> projected[2]; //!< the board's corners reprojected by the calibration
 };
 
+/*!
+  What calibrateRig() returns: the rig, its residuals (pixels), and what became of every pair.
+  Arrays of two: [0] the left camera, [1] the right one.
+*/
 struct RigCalibration
 {
-  StereoRig rig;                  //!< intrinsics with distortion, poses in the hand frame
-  double rmsLeftPx = 0, rmsRightPx = 0; //!< cv::calibrateCamera of each camera
+  StereoRig rig;                  //!< intrinsics with distortion, poses hMc in the hand frame (metres)
+  //! \var rmsLeftPx
+  //! RMS reprojection error of cv::calibrateCamera for the left camera (px).
+  double rmsLeftPx = 0, rmsRightPx = 0; //!< the same for the right camera (px)
   double rmsStereoPx = 0;         //!< cv::stereoCalibrate (both cameras' corners)
   double baselineMm = 0;          //!< |T| in the board's unit
   double rotationDeg = 0;         //!< angle between the two cameras
@@ -74,8 +84,38 @@ struct RigCalibration
 };
 
 /*!
-  Calibrates the rig. Throws pm::Error for an invalid board or parameters, an empty list, or
-  fewer than params.minPairs usable pairs (the message lists the rejected pairs and why).
+  Calibrates the rig from \e pairs of images of \e board (see RigCalibration.h). Throws pm::Error
+  for an invalid board or parameters, an empty list, or fewer than params.minPairs usable pairs
+  or views of a camera (the message lists the rejected pairs and why).
+
+  \code
+#include <iostream>
+
+#include "pm/calib/RigCalibration.h"
+#include "pm/io/ImageFile.h"
+#include "pm/io/RigFile.h"
+
+int main()
+{
+  std::vector<pm::calib::StereoImagePair> pairs;
+  for (int k = 1; k <= 15; ++k) {
+    const std::string n = std::to_string(k);
+    pm::calib::StereoImagePair p;
+    p.name = "left" + n + ".jpg + right" + n + ".jpg";
+    p.left = pm::io::readColorImage("left" + n + ".jpg");
+    p.right = pm::io::readColorImage("right" + n + ".jpg");
+    pairs.push_back(p);
+  }
+  pm::calib::ChessBoard board;
+  board.innerRows = 6;
+  board.innerCols = 9;
+  board.squareMm = 25;
+  const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+  std::cout << c.pairsUsed << " pairs, baseline " << c.baselineMm << " mm, stereo rms " << c.rmsStereoPx << " px"
+            << std::endl;
+  pm::io::saveRig(c.rig, "rig.json", "rig_cameras.xml", "calibrated from 15 pairs");
+}
+  \endcode
 */
 RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pattern &board,
                             const RigCalibrationParams &params = RigCalibrationParams());

@@ -12,16 +12,37 @@
 
 namespace pm::capture {
 
+/*!
+  Stereo pairs from recorded image files (see ImageSequenceSource.h). The length is fixed when it
+  is made (files added later are not seen); unreadable pairs are skipped by next() and counted.
+  \code
+  pm::capture::ImageSequenceSource src("rec/L_%04d.png", "rec/R_%04d.png", 0, 30.0, 640, 480);
+  std::cout << src.describe() << ": " << src.length() << " frames\n";
+  pm::capture::StereoFrame f;
+  while (src.next(f))
+    std::cout << "frame " << f.index << " at " << f.timeS << " s\n";
+  for (const std::string &p : src.stats().problems)
+    std::cerr << p << "\n";
+  \endcode
+*/
 class ImageSequenceSource : public StereoSource
 {
 public:
   /*!
-    \e width, \e height: the size both images must have (0: any). \e maxFrames: stop after that
-    many (0: all). Throws pm::Error if the sequence is empty.
+    Frames \e firstFrame, firstFrame + 1 ... of the patterns (see frameFileName()) while the left or
+    the right file exists, at \e fps frames per second (\> 0). \e width, \e height: the size both
+    images must have (pixels; checked when both are not 0). \e maxFrames: stop after that many (0:
+    all). Throws pm::Error if the sequence is empty, for fps \<= 0 or for a bad pattern.
   */
   ImageSequenceSource(const std::string &leftPattern, const std::string &rightPattern, int firstFrame, double fps,
                       unsigned width = 0, unsigned height = 0, long maxFrames = 0);
+  /*!
+    The next readable pair: StereoFrame::index is its file index, timeS (index - firstFrame) / fps,
+    skewMs 0. A pair that cannot be read or has the wrong size is skipped (SourceStats::skipped,
+    SourceStats::problems). False after the last frame.
+  */
   bool next(StereoFrame &f) override;
+  //! "recorded sequence " and the two patterns.
   std::string describe() const override;
   //! Frames in the sequence (readable or not).
   long length() const { return m_length; }
@@ -34,7 +55,11 @@ private:
   long m_length = 0, m_pos = 0;
 };
 
-//! \e pattern with \e index substituted (printf), e.g. ("L_%04d.png", 7) -> "L_0007.png".
+/*!
+  \e pattern with \e index substituted, e.g. ("L_%04d.png", 7) -> "L_0007.png". The pattern must hold
+  exactly one field, "%d" or "%Nd" / "%0Nd" (padded with spaces / zeros to N characters); "%%" is a
+  literal %. Parsed here, never passed to printf; throws pm::Error for any other pattern.
+*/
 std::string frameFileName(const std::string &pattern, long index);
 
 } // namespace pm::capture

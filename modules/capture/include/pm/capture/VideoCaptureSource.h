@@ -23,21 +23,49 @@
 
 namespace pm::capture {
 
+//! How a VideoCaptureSource pairs its streams and when it gives up.
 struct VideoCaptureParams
 {
-  double maxSkewMs = 10;      //!< largest left-right time difference of a pair
-  double stallTimeoutS = 5;   //!< a stream silent this long is an error
+  double maxSkewMs = 10;      //!< largest left-right time difference of a pair (ms)
+  double stallTimeoutS = 5;   //!< a live stream silent this long (s) is an error
   long maxPairs = 0;          //!< stop after this many pairs (0: until a stream ends)
+  //! Throws pm::Error unless maxSkewMs \>= 0 (finite) and stallTimeoutS \> 0.
   void validate() const;
 };
 
+/*!
+  Stereo pairs from two cameras, video files or GStreamer pipelines, paired by timestamp (see
+  VideoCaptureSource.h for the sources it takes and the pairing). It owns both captures; not
+  copyable. Pairs are converted to RGBA (grey and BGR(A) frames alike).
+  \code
+  pm::capture::VideoCaptureParams p;
+  p.maxSkewMs = 5;     // pair frames at most 5 ms apart
+  p.maxPairs = 300;    // 10 s at 30 Hz
+  pm::capture::VideoCaptureSource src("/dev/video0", "/dev/video2", p);
+  pm::capture::StereoFrame f;
+  while (src.next(f))
+    std::cout << f.index << ": " << f.timeS << " s, skew " << f.skewMs << " ms\n";
+  std::cout << src.stats().describe() << "\n";
+  \endcode
+*/
 class VideoCaptureSource : public StereoSource
 {
 public:
-  //! Opens both sources. Throws pm::Error naming the one that does not open.
+  /*!
+    Opens both sources (\e left, \e right: a device index, a /dev path, a video file or a GStreamer
+    pipeline). Throws pm::Error for invalid \e params or naming the source that does not open.
+  */
   VideoCaptureSource(const std::string &left, const std::string &right, const VideoCaptureParams &params = VideoCaptureParams());
+  //! Releases both captures (a read still stuck in a driver keeps its own until it returns).
   ~VideoCaptureSource() override;
+  /*!
+    The next pair: StereoFrame::index counts the pairs from 0, timeS is the left frame's time since
+    the first pair's (s), skewMs left minus right (ms). False when a stream ends or maxPairs is
+    reached. Throws pm::Error if a live stream stalls (stallTimeoutS; the source cannot be read
+    again) or the two streams' images differ in size.
+  */
   bool next(StereoFrame &f) override;
+  //! "video sources " and the two source names.
   std::string describe() const override;
 
 private:

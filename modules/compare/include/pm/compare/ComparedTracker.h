@@ -14,16 +14,28 @@
 
 namespace pm::compare {
 
+//! What a ComparedTracker gives for one frame.
 struct Estimate
 {
   vpHomogeneousMatrix hMm; //!< the tracker's pose of the model in the hand frame
   bool valid = false;      //!< false: the tracker has no pose for this frame (it says it lost the target, or threw)
 };
 
+/*!
+  The interface of a tracker in pm-compare's line-up (see ComparedTracker.h). Made by
+  makeOurTracker(), makeMbtTracker() or makeTemplateTracker(); the caller owns it.
+
+  \code
+    std::unique_ptr<pm::compare::ComparedTracker> t = pm::compare::makeOurTracker(rig, model, pm::TrackerParams());
+    t->start(left0, right0, hMmTrue0); // hMmTrue0 is ignored here: ours needs no initial pose
+    const pm::compare::Estimate e = t->track(left0, right0);
+  \endcode
+*/
 class ComparedTracker
 {
 public:
   virtual ~ComparedTracker() = default;
+  //! The tracker's name in pm-compare's tables and plots (e.g. "ViSP MBT edge").
   virtual std::string name() const = 0;
   //! It cannot start by itself: start() needs the true pose.
   virtual bool needsInitialPose() const = 0;

@@ -9,7 +9,7 @@
 
   \code
     std::vector<pm::compare::LabelledFrame> set;
-    pm::compare::collectLabelledFrames(rig, scene, scenario, runs, set, [] { progress.step(); });
+    pm::compare::collectLabelledFrames(rig, scene, scenario, runs, set, [&] { progress.step(); });
   \endcode
 */
 #include <functional>
@@ -26,30 +26,53 @@
 
 namespace pm::compare {
 
-//! One tracker run on a scenario: a model, where its frame lies on the toy, the tracker's parameters.
+/*!
+  One tracker run on a scenario: a model, where its frame lies on the toy, the tracker's parameters.
+
+  \code
+    const pm::sim::SimulatedPhotoModel sm =
+        pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, 500);
+    pm::compare::ConfidenceRun run;
+    run.name = "flat model, default parameters";
+    run.model = &sm.build.model; // not owned: sm must outlive the collection
+    run.oMm = sm.oMm;
+    std::vector<pm::compare::LabelledFrame> set;
+    pm::compare::collectLabelledFrames(rig, scene, pm::compare::makeScenario("sinusoid", {}), {run}, set);
+    std::vector<double> confidence;
+    std::vector<bool> right;
+    for (const pm::compare::LabelledFrame &f : set) {
+      confidence.push_back(f.confidence);
+      right.push_back(f.right);
+    }
+    const double a = pm::compare::auroc(confidence, right); // needs right and wrong frames
+  \endcode
+*/
 struct ConfidenceRun
 {
-  std::string name;
-  const PhotoModel *model = nullptr;
+  std::string name;              //!< the run's name (in reports, and in the error for a missing model)
+  const PhotoModel *model = nullptr; //!< the tracker's model (not owned; it must outlive collectLabelledFrames())
   vpHomogeneousMatrix oMm;       //!< the model's frame in the toy's frame (the truth is hMo * oMm)
-  TrackerParams params;
+  TrackerParams params;          //!< the tracker's parameters
   bool otherToy = false;         //!< the model is of another toy: every frame is wrong
 };
 
+//! One frame of one run, labelled right or wrong, with what the tracker said about it (see LabelledFrames.h).
 struct LabelledFrame
 {
   std::size_t run = 0;           //!< index in the runs
-  std::string scenario;
-  int frame = 0;
-  TrackState state = TrackState::Searching;
-  ConfidenceCues cues;
-  double confidence = 0;
-  bool trusted = false;
-  double errorMm = 0, errorDeg = 0;
+  std::string scenario;          //!< the Scenario's name
+  int frame = 0;                 //!< the frame's index in the scenario
+  TrackState state = TrackState::Searching; //!< the tracker's state after the frame
+  ConfidenceCues cues;           //!< the cues the confidence is computed from (TrackResult::cues)
+  double confidence = 0;         //!< the tracker's confidence (TrackResult::confidence)
+  bool trusted = false;          //!< the tracker trusted its estimate (TrackResult::trusted)
+  //! Translation error of the estimate against the truth hMo * oMm (mm).
+  double errorMm = 0, errorDeg = 0; //!< rotation error of the estimate against the truth (deg)
   bool right = false;            //!< within kRightMm and kRightDeg of the truth (and the model is of this toy)
 };
 
-constexpr double kRightMm = 20, kRightDeg = 5;
+//! A frame is right when its translation error is at most kRightMm (mm) ...
+constexpr double kRightMm = 20, kRightDeg = 5; //!< ... and its rotation error at most kRightDeg (deg)
 
 /*!
   Renders every frame of \e s once, gives it to a fresh tracker per run (started with no pose) and

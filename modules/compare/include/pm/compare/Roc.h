@@ -17,6 +17,7 @@
 
 namespace pm::compare {
 
+//! One point of a ROC curve: a threshold and the rates of frames it accepts.
 struct RocPoint
 {
   double threshold = 0;      //!< accept when score >= threshold
@@ -38,12 +39,13 @@ double auroc(const std::vector<double> &scores, const std::vector<bool> &right);
 */
 RocPoint thresholdFor(const std::vector<RocPoint> &curve, double maxFalseAcceptRate);
 
+//! A logistic model of P(right | x), as fitLogistic() fits it.
 struct LogisticFit
 {
   std::vector<double> weights; //!< one per feature
-  double bias = 0;
-  int iterations = 0;
-  //! P(right | x) for a row \e x of the fitted size.
+  double bias = 0;             //!< b, the intercept (not under the ridge)
+  int iterations = 0;          //!< Newton steps taken (at most the maxIterations given)
+  //! P(right | x) for a row \e x of the fitted size. Throws pm::Error for a row of another size.
   double probability(const std::vector<double> &x) const;
 };
 

@@ -23,21 +23,38 @@
 
 namespace pm::compare {
 
+//! One frame of a Scenario: where the target is and what happens to the images.
 struct ScenarioFrame
 {
-  vpHomogeneousMatrix hMo;   //!< the toy's frame in the hand frame
-  bool moving = false;
+  vpHomogeneousMatrix hMo;   //!< the toy's frame in the hand frame (metres)
+  bool moving = false;       //!< the target is moving (every frame of the timed scenarios; the blank frames of loss)
   bool blank = false;        //!< the camera delivers black frames
   bool occluded = false;     //!< the seaweed is in front of the toy
-  double exposure = 1.0;
+  double exposure = 1.0;     //!< the scene's exposure, a global brightness gain (sim::SceneParams::exposure)
   double lightX = -0.35;     //!< x of the direction toward the light (hand frame; y -0.6, z -1)
 };
 
+/*!
+  A sequence pm-compare runs every tracker on (see Scenario.h for the list), made by
+  makeScenario() or makeScenarios().
+
+  \code
+    const std::vector<pm::compare::Scenario> seqs =
+        pm::compare::makeScenarios(pm::compare::scenarioNames(), "data/trajectories/table2.csv");
+    for (const pm::compare::Scenario &s : seqs)
+      for (std::size_t k = 0; k < s.frames.size(); ++k) {
+        const pm::sim::StereoImages im = pm::compare::renderScenarioFrame(scene, rig, s, k);
+        const vpHomogeneousMatrix hMmTrue = s.frames[k].hMo * oMm; // oMm: the model frame in the toy's frame
+        // track im.left, im.right at t = k / s.fps and score against hMmTrue
+      }
+  \endcode
+*/
 struct Scenario
 {
-  std::string name, description;
-  double fps = 30;
-  std::vector<ScenarioFrame> frames;
+  //! The scenario's name (one of allScenarioNames()).
+  std::string name, description; //!< what happens in it, in one line
+  double fps = 30;           //!< frame rate (frames per second)
+  std::vector<ScenarioFrame> frames; //!< the frames, one every 1 / fps seconds
   std::vector<int> lossEnds; //!< first frame after each forced loss (blank frames end, the jump)
 };
 
@@ -47,7 +64,7 @@ const std::vector<std::string> &scenarioNames();
 const std::vector<std::string> &allScenarioNames();
 
 /*!
-  The scenario \e name (one of scenarioNames()); \e table2 are the waypoints of Table 2;
+  The scenario \e name (one of allScenarioNames()); \e table2 are the waypoints of Table 2;
   \e steps > 0 keeps only the first steps of table2. Throws pm::Error for an unknown name.
 */
 Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, int steps = 0);
@@ -56,7 +73,7 @@ std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const
 
 /*!
   The images of frame \e k of \e s: the scene set as the frame says (exposure, light, occluder),
-  rendered, or black for a blank frame.
+  rendered (frame \e k's noise), or black for a blank frame. The scene's parameters stay as set.
 */
 sim::StereoImages renderScenarioFrame(sim::Scene &scene, const StereoRig &rig, const Scenario &s, std::size_t k);
 

@@ -23,19 +23,36 @@
 
 namespace pm::compare {
 
+/*!
+  Our PhotoModelTracker on \e rig and \e model, named \e name: start() searches from scratch
+  (initialize(), no pose needed); an estimate is valid when the tracker's state is tracking.
+*/
 std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params,
                                                 const std::string &name = "photo-model (ours)");
 
+/*!
+  The features vpMbGenericTracker tracks: \e Edge, moving edges (EDGE_TRACKER); \e Klt, KLT
+  points (KLT_TRACKER); \e EdgeKlt, both.
+*/
 enum class MbtFeatures { Edge, Klt, EdgeKlt };
 /*!
   \e caoPath: the model file; \e xmlPath: vpMbGenericTracker's settings (moving edges, KLT,
-  visibility), the same for both cameras; the intrinsics come from the rig.
+  visibility), the same for both cameras; the intrinsics come from the rig. Throws pm::Error if
+  either file cannot be loaded.
 */
 std::unique_ptr<ComparedTracker> makeMbtTracker(const StereoRig &rig, MbtFeatures features, const std::string &caoPath,
                                                 const std::string &xmlPath);
 
+/*!
+  The template tracker's cost: \e Ssd, the sum of squared differences
+  (vpTemplateTrackerSSDInverseCompositional); \e Zncc, the zero-mean normalised cross-correlation
+  (vpTemplateTrackerZNCCInverseCompositional).
+*/
 enum class TemplateCost { Ssd, Zncc };
-//! \e polygon: the outline in the model frame (outlinePolygon()).
+/*!
+  \e polygon: the outline in the model frame (outlinePolygon()). Its start() throws pm::Error
+  if no template cell fits inside the outline in the left image.
+*/
 std::unique_ptr<ComparedTracker> makeTemplateTracker(const StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon);
 
 } // namespace pm::compare

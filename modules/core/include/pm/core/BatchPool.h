@@ -22,22 +22,38 @@
 
 namespace pm {
 
+/*!
+  Runs the items of a small batch on the calling thread and one helper thread (see BatchPool.h).
+  The fitness's batch evaluations and setImages() run on BatchPool::shared().
+
+  \code
+  std::vector<double> out(20);
+  pm::BatchPool::shared().run(out.size(), [&](std::size_t i) { out[i] = std::sqrt(static_cast<double>(i)); });
+  // every out[i] is set here, whichever thread computed it
+  \endcode
+*/
 class BatchPool
 {
 public:
   //! \e helper: start the helper thread (false, or a single core: every batch on the caller).
   explicit BatchPool(bool helper = std::thread::hardware_concurrency() > 1);
+  //! Stops and joins the helper thread.
   ~BatchPool();
   BatchPool(const BatchPool &) = delete;
   BatchPool &operator=(const BatchPool &) = delete;
 
-  //! Calls f(i) for every i in [0, n) once; \e f must not throw. Returns when all are done.
+  /*!
+    Calls f(i) for every i in [0, n) once; \e f must not throw. Returns when all are done.
+    \e f may run on two threads at once; the caller alone runs it when n < 2, without a helper, or
+    while another caller's batch is running.
+  */
   template <class F> void run(std::size_t n, F &&f)
   {
     auto call = [](void *ctx, std::size_t i) { (*static_cast<F *>(ctx))(i); };
     runErased(n, call, &f);
   }
 
+  //! True when the helper thread runs (else every batch runs on the caller).
   bool hasHelper() const { return m_thread.joinable(); }
   //! The process's pool (one helper thread, started on first use).
   static BatchPool &shared();

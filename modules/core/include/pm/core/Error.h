@@ -9,9 +9,13 @@
 
 namespace pm {
 
+/*!
+  The exception visp-photomodel throws (see Error.h); what() is the message for the user.
+*/
 class Error : public std::runtime_error
 {
 public:
+  //! \e what: the message, saying what went wrong, with which file or value, and what to do.
   explicit Error(const std::string &what) : std::runtime_error(what) {}
 };
 

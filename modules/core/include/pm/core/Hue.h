@@ -12,6 +12,13 @@
 
 namespace pm {
 
+/*!
+  A colour in the HSV model (see Hue.h): hue in degrees, saturation and value in [0, 1].
+  \code
+  const pm::Hsv c = pm::rgbToHsv(255, 128, 0);                  // orange: h = 30.1 deg, s = 1, v = 1
+  const float d = pm::hueDistance(c.h, pm::hueDeg(vpRGBa(255, 0, 0))); // 30.1 deg from red
+  \endcode
+*/
 struct Hsv
 {
   float h; //!< degrees in [0, 360); 0 for grey (s == 0)
@@ -19,6 +26,7 @@ struct Hsv
   float v; //!< [0, 1]
 };
 
+//! HSV of an 8-bit RGB colour: s = (max - min) / max, v = max / 255, h in degrees (0 for grey).
 inline Hsv rgbToHsv(unsigned char r, unsigned char g, unsigned char b)
 {
   const int mx = std::max(r, std::max(g, b));
@@ -44,7 +52,9 @@ inline Hsv rgbToHsv(unsigned char r, unsigned char g, unsigned char b)
   return o;
 }
 
+//! HSV of a ViSP pixel (its alpha ignored).
 inline Hsv rgbToHsv(const vpRGBa &c) { return rgbToHsv(c.R, c.G, c.B); }
+//! Hue of a ViSP pixel in degrees [0, 360); 0 for grey.
 inline float hueDeg(const vpRGBa &c) { return rgbToHsv(c).h; }
 
 //! Distance between two hues on the circle, in [0, 180].

@@ -22,10 +22,21 @@ namespace pm {
 
 class UndistortMap;
 
-//! A rectangle of pixels: columns [u0, u1), rows [v0, v1).
+/*!
+  A rectangle of pixels: columns [u0, u1), rows [v0, v1). The default one is empty.
+*/
 struct PixelRect
 {
+  /*! \var PixelRect::u0
+      \brief first column
+      \var PixelRect::v0
+      \brief first row
+      \var PixelRect::u1
+      \brief one past the last column
+      \var PixelRect::v1
+      \brief one past the last row */
   int u0 = 0, v0 = 0, u1 = 0, v1 = 0;
+  //! True when it holds no pixel.
   bool empty() const { return u1 <= u0 || v1 <= v0; }
   //! The smallest rectangle holding both (an empty one adds nothing).
   PixelRect united(const PixelRect &o) const;
@@ -33,14 +44,30 @@ struct PixelRect
   PixelRect grown(int m, int w, int h) const;
 };
 
+/*!
+  The hue of every pixel of an image, as the stereo fitness reads it (see HuePlane.h). StereoFitness
+  keeps one per camera; use one directly to inspect what the fitness sees. The plane copies what it
+  needs: neither the image nor the UndistortMap is referenced after compute().
+  \code
+  vpImage<vpRGBa> I;
+  vpImageIo::read(I, "left.png");
+  pm::HuePlane plane;
+  plane.compute(I, 0.1f);                        // pixels of saturation < 0.1 get kNoHue
+  const std::uint16_t h = plane.at(320, 240);    // tenths of a degree
+  if (h != pm::HuePlane::kNoHue)
+    std::cout << "hue " << h / 10.0 << " deg\n";
+  plane.compute(I, 0.1f, pm::PixelRect{100, 80, 300, 240}); // only columns [100, 300), rows [80, 240)
+  \endcode
+*/
 class HuePlane
 {
 public:
+  //! The value of a pixel without a hue (grey under the threshold, outside the window or the raw image): it matches no hue.
   static constexpr std::uint16_t kNoHue = 0xFFFF;
 
   //! Fills the plane from \e I; pixels with saturation < \e minSaturation get kNoHue.
   void compute(const vpImage<vpRGBa> &I, float minSaturation = 0.f);
-  //! The same in the ideal image of \e map's camera (\e I is the raw image, of the map's size).
+  //! The same in the ideal image of \e map's camera (\e I is the raw image). Throws pm::Error if \e I is not of the map's size.
   void compute(const vpImage<vpRGBa> &I, float minSaturation, const UndistortMap &map);
   /*!
     The hue inside \e roi only (clipped to the image), kNoHue everywhere else: a point outside
@@ -56,10 +83,13 @@ public:
   */
   void addPixels(const vpImage<vpRGBa> &I, float minSaturation, const std::int64_t *pixels, std::size_t n);
 
+  //! Width of the last image computed (pixels).
   unsigned width() const { return m_w; }
+  //! Height of the last image computed (pixels).
   unsigned height() const { return m_h; }
   //! Hue of pixel (u, v) in tenths of a degree, or kNoHue.
   std::uint16_t at(unsigned u, unsigned v) const { return m_hue[static_cast<std::size_t>(v) * m_w + u]; }
+  //! The plane, row-major (pixel (u, v) at v * width() + u), padded past its end; valid until the next compute.
   const std::uint16_t *data() const { return m_hue.data(); }
   //! Where the last compute gave every pixel its hue (the whole image, or its window).
   const PixelRect &window() const { return m_valid; }

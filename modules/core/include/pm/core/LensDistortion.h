@@ -24,6 +24,11 @@
 
 namespace pm {
 
+/*!
+  A camera's lens distortion in OpenCV's model, acting on the normalized coordinates of the camera's
+  pinhole intrinsics (see LensDistortion.h for the model and an example). Pixels are (u, v) in
+  vpImagePoint; the default, with no coefficient, is a pinhole camera.
+*/
 struct LensDistortion
 {
   //! OpenCV's order; empty, or 4, 5, 8, 12 or 14 values.
@@ -41,9 +46,9 @@ struct LensDistortion
   vpImagePoint distort(const vpCameraParameters &cam, const vpImagePoint &ideal) const;
   //! The ideal pixel of the raw pixel \e raw (OpenCV's iterative undistortPoints, to 1e-9).
   vpImagePoint undistort(const vpCameraParameters &cam, const vpImagePoint &raw) const;
-  //! Undistort(), many points at once (faster).
+  //! undistort() of many points at once (faster).
   std::vector<vpImagePoint> undistort(const vpCameraParameters &cam, const std::vector<vpImagePoint> &raw) const;
-  //! ViSP's model of this distortion when it is one (only k1): kud = k1. False otherwise.
+  //! True when ViSP's model (kud = k1) holds this distortion exactly: every coefficient but k1 is 0, or there is none.
   bool isVispModel() const;
   //! "none", or e.g. "k1 -0.27, k2 0.05, p1 0.001, p2 0, k3 0".
   std::string describe() const;

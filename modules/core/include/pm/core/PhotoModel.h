@@ -28,11 +28,20 @@
 
 namespace pm {
 
+/*!
+  One point of a photo-model: its position in the model frame M, its hue, and where it was sampled.
+*/
 struct ModelPoint
 {
-  float x = 0, y = 0, z = 0; //!< position in the model frame (mm)
+  /*! \var ModelPoint::x
+      \brief x of the position in the model frame (mm)
+      \var ModelPoint::y
+      \brief y of the position in the model frame (mm) */
+  float x = 0, y = 0, z = 0; //!< z of the position in the model frame (mm); 0 on a flat model
   float hue = 0;             //!< photo hue in degrees (S_in); background hue for S_out
-  float u = 0, v = 0;        //!< where it was sampled in the photo (px)
+  /*! \var ModelPoint::u
+      \brief column where it was sampled in the photo (px) */
+  float u = 0, v = 0;        //!< row where it was sampled in the photo (px)
 };
 
 /*!
@@ -46,13 +55,35 @@ struct ModelView
   std::vector<ModelPoint> outer;  //!< S_out of this view
 };
 
+/*!
+  A photo-model: the target as the fitness looks for it (see PhotoModel.h). StereoFitness copies
+  the points it needs, so a model may go once the fitness is built.
+  \code
+  pm::PhotoModel m;                         // by hand: one red point, one point of background
+  m.distanceMm = 500;
+  m.px = m.py = 800;
+  m.backgroundHue = 200;
+  m.inner.push_back({0.f, 0.f, 0.f, 0.f, 320.f, 240.f});   // x, y, z (mm), hue (deg), u, v (px)
+  m.outer.push_back({50.f, 0.f, 0.f, 200.f, 400.f, 240.f});
+  m.validate("hand-made model");            // throws pm::Error if it cannot be used
+  std::cout << m.size() << " points, " << (m.hasDepth() ? "3-D" : "flat") << "\n";
+  \endcode
+*/
 struct PhotoModel
 {
-  double distanceMm = 0;           //!< photo distance d
-  double px = 0, py = 0;           //!< photo camera focal lengths (px)
-  double u0 = 0, v0 = 0;           //!< photo camera principal point (px)
-  unsigned photoWidth = 0, photoHeight = 0;
-  double centroidU = 0, centroidV = 0; //!< target region centroid in the photo (px): the model origin
+  double distanceMm = 0;           //!< photo distance d (mm)
+  /*! \var PhotoModel::px
+      \brief photo camera focal length along u (px) */
+  double px = 0, py = 0;           //!< photo camera focal length along v (px)
+  /*! \var PhotoModel::u0
+      \brief photo camera principal point, column (px) */
+  double u0 = 0, v0 = 0;           //!< photo camera principal point, row (px)
+  /*! \var PhotoModel::photoWidth
+      \brief width of the photo (px) */
+  unsigned photoWidth = 0, photoHeight = 0; //!< height of the photo (px)
+  /*! \var PhotoModel::centroidU
+      \brief column of the target region's centroid in the photo (px): the model origin */
+  double centroidU = 0, centroidV = 0; //!< row of the target region's centroid in the photo (px): the model origin
   float backgroundHue = 0;         //!< H_B, circular mean hue of the background photo (deg)
   float targetHue = 0;             //!< circular mean hue of S_in (deg), for reports
   std::vector<ModelPoint> inner;   //!< S_in
@@ -65,6 +96,7 @@ struct PhotoModel
   double cameraMm[3] = {0, 0, 0};       //!< the centre of the camera that sampled S_in and S_out, in the model frame (mm)
   std::vector<ModelView> views;         //!< further views; each camera is scored with the view nearest its direction
 
+  //! Number of points of S_in and S_out (those of the further views not counted).
   std::size_t size() const { return inner.size() + outer.size(); }
   //! True for a model of many viewing directions (more than 16 views: an all-around model, AllAroundModelBuilder.h).
   bool isAllAround() const { return views.size() > 16; }

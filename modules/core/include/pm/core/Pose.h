@@ -16,13 +16,39 @@
 
 namespace pm {
 
+/*!
+  The pose phi = [x, y, z, eps1, eps2, eps3] of the model frame M in the hand frame H, hMo (see
+  Pose.h): position in mm, orientation as the vector part of a unit quaternion (eta >= 0). The
+  default is the identity at the hand's origin.
+  \code
+  pm::Phi phi;
+  phi.z = 500;                                       // 500 mm ahead of the hand
+  phi.e3 = std::sin(0.5 * vpMath::rad(30));          // turned 30 deg about the hand's z axis
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(phi); // translation in metres
+  const pm::StereoRig rig = pm::StereoRig::symmetric(vpCameraParameters(800, 800, 320, 240), 640, 480, 0.1, 0.0);
+  const vpHomogeneousMatrix cMo = rig.left.cMh() * hMo;         // the model in the left camera
+  const pm::Phi back = pm::fromHomogeneousMatrix(hMo);
+  std::cout << back.toString() << ", " << pm::rotationDistanceDeg(phi, back) << " deg apart\n";
+  \endcode
+*/
 struct Phi
 {
-  double x = 0, y = 0, z = 0;          //!< position in mm
-  double e1 = 0, e2 = 0, e3 = 0;       //!< quaternion vector part, |eps| <= 1
+  /*! \var Phi::x
+      \brief x of the position (mm)
+      \var Phi::y
+      \brief y of the position (mm) */
+  double x = 0, y = 0, z = 0;          //!< z of the position (mm)
+  /*! \var Phi::e1
+      \brief eps1, first of the quaternion vector part eps (|eps| <= 1)
+      \var Phi::e2
+      \brief eps2, second of the quaternion vector part eps */
+  double e1 = 0, e2 = 0, e3 = 0;       //!< eps3, third of the quaternion vector part eps
 
+  //! Number of variables.
   static constexpr std::size_t size = 6;
+  //! Variable \e i (0..5: x, y, z, e1, e2, e3), for code that loops over them.
   double &operator[](std::size_t i) { return (&x)[i]; }
+  //! Variable \e i (0..5: x, y, z, e1, e2, e3).
   double operator[](std::size_t i) const { return (&x)[i]; }
 
   //! eps . eps
@@ -31,11 +57,16 @@ struct Phi
   double eta() const { return std::sqrt(std::max(0.0, 1.0 - epsNorm2())); }
   //! All six finite and |eps| <= 1.
   bool isValid() const;
+  //! "[x, y, z, e1, e2, e3]", for messages.
   std::string toString() const;
 };
 
-//! Row-major 3x3 rotation of Eq. (7), filled without allocation (hot path).
+//! A row-major 3x3 rotation matrix.
 using Rot3 = std::array<double, 9>;
+/*!
+  The rotation hRo of \e p, Eq. (7), row-major, filled without allocation (hot path). \e p is not
+  checked: for |eps| > 1 (eta taken as 0) the result is not a rotation.
+*/
 inline Rot3 rotationOf(const Phi &p)
 {
   const double e1 = p.e1, e2 = p.e2, e3 = p.e3, n = p.eta();

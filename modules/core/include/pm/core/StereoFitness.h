@@ -42,49 +42,115 @@
 
 namespace pm {
 
+/*!
+  The tolerances and scores of the fitness (Eqs. 8, 9; see StereoFitness.h), with the paper's
+  defaults. Tolerances are hue distances in degrees, in [0, 180], used to a tenth of a degree.
+*/
 struct FitnessParams
 {
-  double inTolDeg = 30;      //!< |H_I - H_M(i)| tolerance of S_in
-  double inBgTolDeg = 30;    //!< |H_B - H_I| tolerance of S_in's background case
-  double outBgTolDeg = 20;   //!< |H_B - H_I| tolerance of S_out
+  double inTolDeg = 30;      //!< |H_I - H_M(i)| tolerance of S_in (deg)
+  double inBgTolDeg = 30;    //!< |H_B - H_I| tolerance of S_in's background case (deg)
+  double outBgTolDeg = 20;   //!< |H_B - H_I| tolerance of S_out (deg)
   double inMatch = 2.0;      //!< p_in when the model overlaps the target
-  double inBackground = -0.005;
-  double inOther = 0.0;
-  double outBackground = 0.1;
-  double outOther = -0.5;
-  double offImage = 0.0;     //!< score of a point projected off the image
+  double inBackground = -0.005; //!< p_in when the model lies on background
+  double inOther = 0.0;      //!< p_in otherwise (another hue, or a pixel without hue)
+  double outBackground = 0.1; //!< p_out when the strip lies on background
+  double outOther = -0.5;    //!< p_out otherwise (the strip lies on the target, or a pixel without hue)
+  double offImage = 0.0;     //!< score of a point projected off the image (or behind the camera)
   float minSaturation = 0.f; //!< image pixels less saturated have no hue (0: the paper, every pixel has one)
 
   void validate() const; //!< throws pm::Error naming the parameter out of range
 };
 
-//! How the points of one camera fell: the classes of Eqs. (8), (9).
+/*!
+  How the points of one camera fell: the classes of Eqs. (8), (9), each scored by the
+  FitnessParams member of the same name (off the image: offImage).
+*/
 struct FitnessCounts
 {
-  int inMatch = 0, inBackground = 0, inOther = 0, inOff = 0;
-  int outBackground = 0, outOther = 0, outOff = 0;
+  /*! \var FitnessCounts::inMatch
+      \brief S_in points on a hue within inTolDeg of their own
+      \var FitnessCounts::inBackground
+      \brief other S_in points on a hue within inBgTolDeg of the background's
+      \var FitnessCounts::inOther
+      \brief other S_in points in the image (another hue, or a pixel without hue) */
+  int inMatch = 0, inBackground = 0, inOther = 0, inOff = 0; //!< S_in points off the image or behind the camera
+  /*! \var FitnessCounts::outBackground
+      \brief S_out points on a hue within outBgTolDeg of the background's
+      \var FitnessCounts::outOther
+      \brief other S_out points in the image */
+  int outBackground = 0, outOther = 0, outOff = 0; //!< S_out points off the image or behind the camera
 };
 
-//! Where one model point fell and how it scored (for drawing; not the hot path).
+/*!
+  Where one model point fell and how it scored (for drawing; not the hot path): see
+  StereoFitness::pointScores().
+*/
 struct PointScore
 {
+  //! The class of the point, as counted in FitnessCounts.
   enum Class : std::uint8_t { InMatch, InBackground, InOther, OutBackground, OutOther, Off };
-  float u, v;  //!< position in the raw image (px), the lens's distortion applied
-  Class cls;
+  /*! \var PointScore::InMatch
+      \brief S_in point on its own hue (FitnessCounts::inMatch)
+      \var PointScore::InBackground
+      \brief S_in point on the background's hue (FitnessCounts::inBackground)
+      \var PointScore::InOther
+      \brief S_in point on another pixel (FitnessCounts::inOther)
+      \var PointScore::OutBackground
+      \brief S_out point on the background's hue (FitnessCounts::outBackground)
+      \var PointScore::OutOther
+      \brief S_out point on another pixel (FitnessCounts::outOther)
+      \var PointScore::Off
+      \brief point off the image or behind the camera */
+  /*! \var PointScore::u
+      \brief column in the raw image (px), the lens's distortion applied; -1 behind the camera */
+  float u, v;  //!< row in the raw image (px), the lens's distortion applied; -1 behind the camera
+  Class cls;   //!< how it scored
   bool inner;  //!< S_in (else S_out)
 };
 
+/*!
+  The fitness at one pose with its parts: see StereoFitness::evaluateDetail().
+*/
 struct FitnessDetail
 {
-  double fitness = 0, left = 0, right = 0; //!< F, F_L, F_R
-  FitnessCounts countsLeft, countsRight;
+  /*! \var FitnessDetail::fitness
+      \brief F = (F_L + F_R) / 2
+      \var FitnessDetail::left
+      \brief F_L, the left camera's score */
+  double fitness = 0, left = 0, right = 0; //!< F_R, the right camera's score
+  /*! \var FitnessDetail::countsLeft
+      \brief how the left camera's points fell */
+  FitnessCounts countsLeft, countsRight; //!< how the right camera's points fell
 };
 
+/*!
+  The stereo fitness F(phi) of a photo-model in a stereo pair (see StereoFitness.h). It copies what
+  it needs from the rig and the model, and computes each image's hue plane in setImages(): it keeps
+  no reference to the rig, the model or the images. The evaluate functions are const and may run
+  from several threads at once; setImages() and addHueUnder() change the planes and must not.
+  Cameras are numbered 0 (left) and 1 (right).
+  \code
+  const pm::StereoRig rig = pm::io::loadRig("rig.json");              // pm/io/RigFile.h
+  const pm::PhotoModel model = pm::io::loadPhotoModel("model.json");  // pm/io/PhotoModelFile.h
+  pm::StereoFitness fitness(rig, model);       // the paper's parameters
+  vpImage<vpRGBa> IL, IR;
+  vpImageIo::read(IL, "left.png");
+  vpImageIo::read(IR, "right.png");
+  fitness.setImages(IL, IR);                   // a new pair: the hue planes
+  pm::Phi phi;                                 // hMo: the model 500 mm ahead of the hand,
+  phi.z = 500;                                 // its axes those of the hand
+  const double F = fitness.evaluate(phi);      // the higher, the better phi fits the pair
+  const pm::FitnessDetail d = fitness.evaluateDetail(phi);
+  std::cout << "F = " << F << " (left " << d.left << ", right " << d.right << ")\n";
+  \endcode
+*/
 class StereoFitness
 {
 public:
   /*!
-    Prepares the model for \e rig. Throws pm::Error for an invalid rig, model or parameters.
+    Prepares the model for \e rig (copies both). Throws pm::Error for an invalid rig, model or
+    parameters, or a model of more than 65,535 views.
   */
   StereoFitness(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params = FitnessParams());
 
@@ -102,6 +168,7 @@ public:
   /*!
     Where the model lands in camera \e camera at \e phi: the bounding box of its points in front of
     the camera (of the view scored there), clipped to the image; empty if none falls in it.
+    Needs no images. Throws pm::Error for an invalid pose.
   */
   PixelRect footprint(const Phi &phi, int camera) const;
   /*!
@@ -114,7 +181,7 @@ public:
 
   //! F(phi). Throws pm::Error if phi is invalid or no images were set.
   double evaluate(const Phi &phi) const;
-  //! F for \e n poses into \e out, on two cores (BatchPool); the same values. Same contract.
+  //! F for the \e n poses \e phis into \e out, on two cores (BatchPool); the same values as evaluate(). Same contract.
   void evaluate(const Phi *phis, std::size_t n, double *out) const;
   /*!
     Early rejection of hopeless poses: F for \e n poses as evaluate(), except that a pose whose
@@ -128,6 +195,7 @@ public:
       \endcode
   */
   void evaluate(const Phi *phis, std::size_t n, double *out, double rejectBelow, double *cost) const;
+  //! Every kRejectStride-th point of S_in and of S_out makes the first share that early rejection scores.
   static constexpr std::size_t kRejectStride = 4;
   /*!
     F with each point's score interpolated bilinearly between the four pixels around its exact
@@ -154,7 +222,7 @@ public:
   double evaluateSmoothGradient(const Phi &phi, double grad[6], double *metric = nullptr) const;
   //! F, F_L, F_R and the class counts of each camera.
   FitnessDetail evaluateDetail(const Phi &phi) const;
-  //! Every model point's image position and class in camera \e camera (0 left, 1 right), for drawing.
+  //! Every model point's image position and class in camera \e camera (0 left, 1 right), for drawing. Same contract as evaluate().
   std::vector<PointScore> pointScores(const Phi &phi, int camera) const;
 
   /*!
@@ -163,24 +231,41 @@ public:
   */
   double reprojectionRms(const Phi &a, const Phi &b) const;
 
-  //! Fraction of the model's points that project inside camera \e camera's image at \e phi (no image needed).
+  /*!
+    Fraction of the model's points (of the view scored there) that project inside camera \e camera's
+    image at \e phi. Needs no images; throws pm::Error for an invalid pose.
+  */
   double visibleFraction(const Phi &phi, int camera) const;
 
+  //! Camera \e camera's hue plane (0 left, 1 right), as the last setImages() (and addHueUnder()) left it.
   const HuePlane &huePlane(int camera) const { return m_planes[static_cast<std::size_t>(camera)]; }
+  //! Number of points of the model's own S_in and S_out (those of further views not counted).
   std::size_t modelSize() const { return m_nIn + m_nOut; }
   //! True when the model carries depth (some point off the plane z = 0): the kernels then project (x, y, z).
   bool hasDepth() const { return m_hasDepth; }
+  //! The parameters given to the constructor.
   const FitnessParams &params() const { return m_params; }
   //! "avx2" or "scalar": the kernel this machine runs.
   static const char *kernelName();
   //! Forces the scalar kernel (for tests that compare both); process-wide.
   static void forceScalar(bool on);
 
+  /*!
+    A camera as the kernels see it: cMh in mm, and the intrinsics of its ideal (pinhole) image.
+  */
   struct Camera
   {
-    double cMh[12];        // 3x4, translation in mm
-    float px, py, u0, v0;
-    int width, height;
+    double cMh[12];        //!< cMh, the hand frame's pose in the camera frame: row-major 3x4 [R | t], translation in mm
+    /*! \var StereoFitness::Camera::px
+        \brief focal length along u (px)
+        \var StereoFitness::Camera::py
+        \brief focal length along v (px)
+        \var StereoFitness::Camera::u0
+        \brief principal point, column (px) */
+    float px, py, u0, v0;  //!< principal point, row (px)
+    /*! \var StereoFitness::Camera::width
+        \brief image width (px) */
+    int width, height;     //!< image height (px)
   };
   //! Camera \e camera (0 left, 1 right) as the kernels see it: cMh, intrinsics, image size.
   const Camera &camera(int camera) const { return m_cams[camera]; }

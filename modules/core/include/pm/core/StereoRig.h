@@ -17,6 +17,9 @@
 
 namespace pm {
 
+/*!
+  One camera of the rig: its intrinsics, image size, pose on the hand (hMc) and lens.
+*/
 struct RigCamera
 {
   std::string name;             //!< "left" / "right"
@@ -25,22 +28,38 @@ struct RigCamera
   unsigned height = 0;          //!< image height in pixels
   vpHomogeneousMatrix hMc;      //!< camera pose in the hand frame (metres)
   LensDistortion distortion;    //!< the lens (none: a pinhole camera, the raw image is the ideal one)
+  /*! The hand frame's pose in the camera frame, hMc's inverse (metres). */
   vpHomogeneousMatrix cMh() const { return hMc.inverse(); }
 };
 
+/*!
+  The two cameras on the robot's hand (see StereoRig.h for the frames). A plain value: StereoFitness
+  and UndistortMap copy what they need from it.
+  \code
+  const vpCameraParameters cam(800, 800, 320, 240);            // px, py, u0, v0 (pixels)
+  const double baseline = 0.1;                                 // metres
+  pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, baseline, pm::StereoRig::toeInFor(baseline, 0.5));
+  rig.left.distortion.coefficients = {-0.27, 0.05, 0.001, 0.0, 0.0}; // the left lens (OpenCV's order)
+  rig.validate();                                              // throws pm::Error naming what is wrong
+  const vpHomogeneousMatrix cLMcR = rig.cLMcR();               // the right camera in the left one
+  \endcode
+*/
 class StereoRig
 {
 public:
-  RigCamera left, right;
+  /*! \var StereoRig::left
+      \brief the left camera (camera 0 of StereoFitness) */
+  RigCamera left, right; //!< the right camera (camera 1 of StereoFitness)
 
   /*!
     The lab's symmetric rig: both cameras with intrinsics \e cam and size w x h, optical
     centres at x = -baseline/2 (left) and +baseline/2 (right) of the hand frame, each turned
-    about its y axis by \e toeInRad toward the hand's z axis (0: parallel cameras).
+    about its y axis by \e toeInRad toward the hand's z axis (0: parallel cameras). \e baselineM in
+    metres, \e toeInRad in radians; named "left" and "right", no lens distortion.
   */
   static StereoRig symmetric(const vpCameraParameters &cam, unsigned w, unsigned h, double baselineM,
                              double toeInRad);
-  //! Toe-in angle that puts a point \e distanceM straight ahead of the hand at both image centres.
+  //! Toe-in angle (rad) that puts a point \e distanceM (metres) straight ahead of the hand at both image centres.
   static double toeInFor(double baselineM, double distanceM);
 
   //! Distance between the optical centres (metres).
@@ -49,8 +68,9 @@ public:
   vpHomogeneousMatrix cLMcR() const { return left.hMc.inverse() * right.hMc; }
 
   /*!
-    Throws pm::Error naming the camera and the value if an intrinsic is non-positive or not
-    finite, an image size is zero, or a pose is not rigid.
+    Throws pm::Error naming the camera and the value if a focal length px, py is not positive, a
+    principal point u0, v0 is negative, an intrinsic is not finite, an image size is zero, a pose
+    is not rigid, or a lens distortion is invalid (LensDistortion::validate()).
   */
   void validate() const;
 };

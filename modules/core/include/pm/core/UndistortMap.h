@@ -13,7 +13,7 @@
       const pm::UndistortMap map(rig.left);           // once
       vpImage<vpRGBa> ideal;
       map.undistort(rawLeft, ideal);                  // a photo for the builder
-      plane.compute(rawLeft, 0.1f, &map);             // the hue plane in the ideal image
+      plane.compute(rawLeft, 0.1f, map);              // the hue plane in the ideal image
 */
 #include <cstdint>
 #include <vector>
@@ -23,12 +23,19 @@
 
 namespace pm {
 
+/*!
+  Where each pixel of a camera's ideal (pinhole) image is seen in its raw image (see UndistortMap.h
+  for an example). Built from a copy of what it needs: the RigCamera may go afterwards. A camera
+  without distortion gets the identity map.
+*/
 class UndistortMap
 {
 public:
   //! Throws pm::Error if the camera's distortion is invalid (LensDistortion::validate).
   explicit UndistortMap(const RigCamera &camera);
+  //! Width of both images, the camera's (pixels).
   unsigned width() const { return m_w; }
+  //! Height of both images, the camera's (pixels).
   unsigned height() const { return m_h; }
   //! For each ideal pixel (row-major), the index of the nearest raw pixel, or -1 outside the raw image.
   const std::vector<std::int32_t> &nearest() const { return m_nearest; }

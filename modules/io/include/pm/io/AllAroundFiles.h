@@ -34,8 +34,9 @@ void writeAllAroundPictures(const AllAroundBuild &build, const std::vector<PassV
   Writes everything of an all-around build into the folder \e dir, all at once or nothing:
   model.json, model.ply, contact.png, silhouettes.png, summary.json (n_views, n_views_used,
   n_surface_points, n_viewpoints, hull_volume_cm3, fMm as fMo, build_s, ...) and, with
-  \e keepViews, the pass itself in views/ (the layout loadViewsFolder reads). \e source says where
-  the pass came from (summary.json). Returns the summary's text.
+  \e keepViews, the pass itself in views/ (the layout loadViewsFolder reads; written after the rest
+  has appeared, so that its failure leaves the model in place). \e source says where the pass
+  came from (summary.json). Returns the summary's text.
 */
 std::string writeAllAroundModel(const AllAroundBuild &build, const std::vector<PassView> &pass, const StereoRig &rig,
                                 const std::string &dir, const std::string &source, bool keepViews);

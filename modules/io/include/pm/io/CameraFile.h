@@ -20,11 +20,14 @@
 
 namespace pm::io {
 
+//! One camera's intrinsics as readCameraFile() found them in a file.
 struct CameraIntrinsics
 {
   vpCameraParameters cam;     //!< px, py, u0, v0 (pinhole part)
   LensDistortion distortion;  //!< OpenCV's model; none for a pinhole
-  unsigned width = 0, height = 0; //!< as the file gives them (0 if it does not)
+  //! \var width
+  //! Image width (px): the \e w asked for, else the file's (0 if it gives none).
+  unsigned width = 0, height = 0; //!< image height (px): the \e h asked for, else the file's (0 if it gives none)
   std::string format;         //!< "visp-xml", "opencv", "ros"
 };
 
@@ -33,6 +36,19 @@ struct CameraIntrinsics
   image size the camera must have (0: any). Throws pm::Error naming the file and what is wrong:
   missing, unknown format, no such camera, a matrix of the wrong shape, a focal length not
   positive, an image size that differs, a distortion that folds the image.
+
+  \code
+#include <iostream>
+
+#include "pm/io/CameraFile.h"
+
+int main()
+{
+  const pm::io::CameraIntrinsics c = pm::io::readCameraFile("left.yml", "left", 640, 480);
+  std::cout << c.format << ": " << c.cam << "distortion: " << c.distortion.coefficients.size() << " coefficients"
+            << std::endl;
+}
+  \endcode
 */
 CameraIntrinsics readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h);
 

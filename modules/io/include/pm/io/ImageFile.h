@@ -2,7 +2,8 @@
 /*!
   \file ImageFile.h
   Image reading and writing with errors a user can act on (pm::Error naming the file).
-  Formats: whatever ViSP's vpImageIo reads here (PNG, JPEG, PPM/PGM, ...).
+  Reading decodes PNG (libpng), JPEG (libjpeg) and 8-bit binary PGM/PPM here; writing goes
+  through ViSP's vpImageIo (whatever formats it was built with, picked by the extension).
 */
 #include <string>
 
@@ -16,6 +17,7 @@ namespace pm::io {
 vpImage<vpRGBa> readColorImage(const std::string &path);
 //! Writes a colour image; the format follows the extension. Throws pm::Error.
 void writeImage(const vpImage<vpRGBa> &I, const std::string &path);
+//! Writes a grey-level image; the format follows the extension. Throws pm::Error.
 void writeImage(const vpImage<unsigned char> &I, const std::string &path);
 
 } // namespace pm::io

@@ -59,7 +59,23 @@
 
 namespace pm::io {
 
-//! Reads and validates a model; throws pm::Error naming the file and what is wrong.
+/*!
+  Reads and validates a model (any version above); throws pm::Error naming the file and what is wrong.
+
+  \code
+#include <iostream>
+
+#include "pm/io/PhotoModelFile.h"
+
+int main()
+{
+  const pm::PhotoModel m = pm::io::loadPhotoModel("model.json");
+  std::cout << m.inner.size() << " S_in and " << m.outer.size() << " S_out points, " << m.views.size()
+            << " further views, photo distance " << m.distanceMm << " mm" << std::endl;
+  pm::io::savePhotoModel(m, "copy.json");
+}
+  \endcode
+*/
 PhotoModel loadPhotoModel(const std::string &path);
 //! Serialises a model to the JSON text above.
 std::string photoModelToJson(const PhotoModel &m);

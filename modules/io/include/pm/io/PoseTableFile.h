@@ -14,7 +14,7 @@
 namespace pm::io {
 
 /*!
-  Reads the rows in file order. Throws pm::Error naming the file and the line for a missing or
+  Reads the rows in file order; \e key is the header's first column ("step", "frame"). Throws pm::Error naming the file and the line for a missing or
   wrong header, a cell that is not a number, a row without 7 values, an invalid pose (|eps| > 1),
   or a table with no row.
 */

@@ -15,9 +15,27 @@
 
 namespace pm::io {
 
+/*!
+  Silences the standard output while it lives (see QuietStdout.h); not copyable.
+
+  \code
+#include <visp3/core/vpXmlParserCamera.h>
+
+#include "pm/io/QuietStdout.h"
+
+int main()
+{
+  vpCameraParameters cam;
+  vpXmlParserCamera parser;
+  pm::io::QuietStdout quiet; // until the end of the scope
+  return parser.parse(cam, "cameras.xml", "left", vpCameraParameters::perspectiveProjWithoutDistortion, 640, 480);
+}
+  \endcode
+*/
 class QuietStdout
 {
 public:
+  //! Flushes stdout, then sends std::cout to a string and file descriptor 1 to /dev/null.
   QuietStdout() : m_old(std::cout.rdbuf(m_sink.rdbuf()))
   {
     std::fflush(stdout);
@@ -28,6 +46,7 @@ public:
       close(null);
     }
   }
+  //! Flushes stdout and gives std::cout and file descriptor 1 back.
   ~QuietStdout()
   {
     std::fflush(stdout);

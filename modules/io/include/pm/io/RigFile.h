@@ -2,7 +2,7 @@
 /*!
   \file RigFile.h
   Stereo rig files. A rig is two files:
-  - the intrinsics, in ViSP's camera XML (vpXmlParserCamera), one <camera> per camera,
+  - the intrinsics, in ViSP's camera XML (vpXmlParserCamera), one \<camera\> per camera,
     perspective projection without distortion;
   - the rig file (JSON), which names that XML and gives, for each camera, its name in the
     XML, its image size and its pose in the hand frame:
@@ -28,12 +28,29 @@
 
 namespace pm::io {
 
-//! Reads a rig; throws pm::Error naming the file and the field that is missing or wrong.
+/*!
+  Reads a rig (version 1 or 2; hMc comes out in metres); throws pm::Error naming the file and the
+  field that is missing or wrong.
+
+  \code
+#include <iostream>
+
+#include "pm/io/RigFile.h"
+
+int main()
+{
+  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  std::cout << "baseline " << rig.baseline() * 1e3 << " mm, cLMcR:\n" << rig.cLMcR() << std::endl;
+  const vpHomogeneousMatrix cLMh = rig.left.cMh(); // the hand frame in the left camera
+  std::cout << rig.left.name << " " << rig.left.width << "x" << rig.left.height << ", cMh:\n" << cLMh << std::endl;
+}
+  \endcode
+*/
 StereoRig loadRig(const std::string &rigJsonPath);
 /*!
   Writes the rig JSON and its intrinsics XML (name relative to the JSON's folder). A camera with
   a lens ViSP's model cannot hold exactly (more than k1) also gets an OpenCV YAML file
-  (<rig stem>_<camera>.yml), which the JSON names (version 2); the XML then holds ViSP's model
+  (\<rig stem\>_\<camera\>.yml), which the JSON names (version 2); the XML then holds ViSP's model
   fitted to the lens, for ViSP programs. Throws pm::Error; nothing is left half-written.
 */
 void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,

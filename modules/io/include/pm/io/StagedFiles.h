@@ -11,11 +11,28 @@
 
 namespace pm::io {
 
+/*!
+  Output files staged in a folder until commit() (see StagedFiles.h):
+
+  \code
+#include "pm/io/ImageFile.h"
+#include "pm/io/StagedFiles.h"
+
+int main()
+{
+  pm::io::StagedFiles out("results");
+  pm::io::writeTextFile(out.stage("summary.json"), "{}\n");
+  pm::io::writeImage(vpImage<unsigned char>(480, 640, 0), out.stage("mask.png"));
+  out.commit(); // both files appear; an exception before this line leaves neither
+}
+  \endcode
+*/
 class StagedFiles
 {
 public:
   //! Creates \e dir (and parents) if missing. Throws pm::Error if it cannot.
   explicit StagedFiles(const std::string &dir);
+  //! Deletes the staged files unless commit() succeeded.
   ~StagedFiles();
   StagedFiles(const StagedFiles &) = delete;
   StagedFiles &operator=(const StagedFiles &) = delete;
@@ -26,6 +43,7 @@ public:
   std::string finalPath(const std::string &name) const;
   //! Renames every staged file to its final name; if one was never written, none (throws pm::Error naming it).
   void commit();
+  //! The output folder, as given to the constructor.
   const std::string &dir() const { return m_dir; }
 
 private:

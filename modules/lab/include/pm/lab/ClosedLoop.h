@@ -31,13 +31,14 @@
 
 namespace pm::lab {
 
+//! Settings of ClosedLoop: rates, oracle and filter modes, the quality fail-safe, the PA-10's start.
 struct LoopParams
 {
-  double fps = 30;          //!< camera rate, also the servo rate
-  double robotDt = 0.002;   //!< integration step of the robot (its servo cycle)
+  double fps = 30;          //!< camera rate, also the servo rate (frames per second)
+  double robotDt = 0.002;   //!< integration step of the robot (its servo cycle, s; at most 1 / fps)
   bool oracle = false;      //!< servo on the true pose instead of the estimate
   bool filter = true;       //!< filter the estimate (alpha-beta, in the base frame) and feed its velocity forward
-  PoseFilterParams filterParams;
+  PoseFilterParams filterParams; //!< the gains of that filter
   /*!
     Fail-safe on the quality q: the servo also stops when q falls more than this under its recent
     best (the best q of the servoed frames, forgotten at qualityMemoryPerS per second): after a
@@ -45,16 +46,17 @@ struct LoopParams
     against 0.97), and servoing on it drives the hand away.
   */
   double qualityDrop = 0.08;
-  double qualityMemoryPerS = 0.03;
+  double qualityMemoryPerS = 0.03; //!< how fast the recent best q is forgotten (q units per second, >= 0)
   vpColVector q0 = startJoints(); //!< initial joints (never empty: ViSP 3.5 copies an empty vpColVector with memcpy(nullptr))
 
   //! The PA-10 looking horizontally along the base's x axis, elbow and wrist well bent (away from their singularities): (0, -35, 0, 80, 0, 45, -90) deg.
   static vpColVector startJoints();
 };
 
+//! What the camera does at a frame (LoopFaults::camera).
 enum class CameraFault
 {
-  None,
+  None,   //!< no fault: the scene rendered as it is
   Blank,  //!< the camera delivers black frames
   Frozen  //!< the camera delivers its last pair again
 };
@@ -63,23 +65,25 @@ enum class CameraFault
 struct LoopFaults
 {
   std::function<CameraFault(long frame)> camera; //!< what the camera does at each frame (empty: no fault)
-  long jumpFrame = -1;       //!< from this frame on, the target is moved at once by \e wJump (in the world)
-  vpHomogeneousMatrix wJump;
+  long jumpFrame = -1;       //!< from this frame on, the target is moved at once by \e wJump (in the world; -1: never)
+  vpHomogeneousMatrix wJump; //!< the jump, applied on the left of the target's world pose: wMo becomes wJump * wMo
 };
 
+//! What one ClosedLoop::step() did: the true and used poses, the tracker's result, the command, the errors.
 struct LoopFrame
 {
-  double t = 0;
-  bool moving = false;
+  double t = 0;                  //!< time of the frame (s, frame index / fps)
+  bool moving = false;           //!< the TC-robot moves the target at t
   vpHomogeneousMatrix hMmTrue;   //!< true pose of the model in the hand frame
   vpHomogeneousMatrix hMmUsed;   //!< the pose the servo used (the filtered estimate, or the truth in oracle mode)
   TrackResult track;             //!< the tracker's result (it runs in oracle mode too)
   CameraFault fault = CameraFault::None; //!< the fault injected at this frame
   bool frozen = false;           //!< the images were the very same as the last ones
   bool servoing = false;         //!< the servo ran on the estimate (else the arm was being stopped)
-  vpColVector q, qdot;           //!< joints after the frame, and the velocity commanded (after SafeCommand)
-  double translationErrorMm = 0; //!< true relative pose against the desired one
-  double rotationErrorDeg = 0;
+  //! The PA-10's joints after the frame (rad).
+  vpColVector q, qdot;           //!< the joint velocity commanded during the frame (rad/s, after SafeCommand and the robot's clamp)
+  double translationErrorMm = 0; //!< true relative pose against the desired one: translation (mm) ...
+  double rotationErrorDeg = 0;   //!< ... and rotation (deg)
   double estimateErrorMm = 0;    //!< the tracker's estimate against the true pose (mm) ...
   double estimateErrorDeg = 0;   //!< ... and (deg)
   double usedErrorMm = 0;        //!< the pose the servo used (hMmUsed, the filtered estimate) against the true pose (mm) ...
@@ -88,26 +92,55 @@ struct LoopFrame
   bool wrongEstimate() const { return estimateErrorMm > kWrongMm || estimateErrorDeg > kWrongDeg; }
   //! The pose the servo used is wrong (the same bounds).
   bool wrongUsed() const { return usedErrorMm > kWrongMm || usedErrorDeg > kWrongDeg; }
-  static constexpr double kWrongMm = 20, kWrongDeg = 5;
+  //! An estimate is wrong beyond this translation error (mm) ...
+  static constexpr double kWrongMm = 20, kWrongDeg = 5; //!< ... or this rotation error (deg)
 };
 
+/*!
+  The simulated lab in closed loop, one camera frame per step() (see ClosedLoop.h). It keeps \e rig
+  and \e scene by reference (they must outlive it) and owns the tracker, the servo, the PA-10 and
+  the TC-robot.
+
+  \code
+    pm::sim::Scene scene(pm::sim::makeTarget("C12"));
+    const pm::StereoRig rig = pm::io::loadRig("data/rig/pa10_stereo.json");
+    const pm::sim::SimulatedPhotoModel sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
+    const std::vector<pm::Phi> steps{{0, 0, 500, 0, 0, 0}, {50, 0, 500, 0, 0, 0}}; // mm, quaternion vector, in h0
+    auto makeTc = [&](const vpHomogeneousMatrix &wMh0) {
+      return std::make_unique<pm::sim::TcRobot>(wMh0, pm::sim::Trajectory(steps, 1.5, 2.0));
+    };
+    pm::lab::ClosedLoop loop(rig, scene, sm, pm::TrackerParams(), pm::ServoParams(), pm::lab::LoopParams(), makeTc);
+    for (int k = 0; k < 150; ++k) {
+      const pm::lab::LoopFrame f = loop.step();
+      std::cout << f.t << " s: " << f.translationErrorMm << " mm, " << (f.servoing ? "servoing" : "held") << std::endl;
+    }
+  \endcode
+*/
 class ClosedLoop
 {
 public:
   /*!
-    \e wMo0: where the target starts in the world is derived: the desired pose in front of the
-    hand at q0. Throws pm::Error for invalid parameters.
+    \e makeTc makes the TC-robot from wMh0, the hand's pose in the world (the PA-10's base frame)
+    at LoopParams::q0; the target's motion is given in that hand frame h0. \e model's
+    build.model is tracked and its oMm gives the truth. The tracker starts searching, with no
+    initial pose. Throws pm::Error for invalid parameters or if \e makeTc gives no TC-robot.
   */
   ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model, const TrackerParams &tp,
              const ServoParams &sp, const LoopParams &lp, const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &wMh0)> &makeTc);
 
   //! One frame: images, estimate, command, integration to the next frame.
   LoopFrame step();
+  //! The faults to inject from the next step() on (they replace the previous ones).
   void setFaults(const LoopFaults &faults) { m_faults = faults; }
+  //! The stereo pair of the last step().
   const sim::StereoImages &images() const { return m_images; }
+  //! The photo-model tracker.
   const PhotoModelTracker &tracker() const { return m_tracker; }
+  //! The simulated PA-10 that carries the rig.
   const sim::RobotPA10 &robot() const { return m_robot; }
+  //! The TC-robot that moves the target.
   const sim::TcRobot &tc() const { return *m_tc; }
+  //! The time of the next step()'s frame (s).
   double time() const { return static_cast<double>(m_frame) / m_lp.fps; }
 
 private:

@@ -8,7 +8,7 @@
   views are what a user's rig writes into a views folder (pm::io::saveViewsFolder), so the lab and
   a user's files go through one builder.
 
-      const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig, pm::PassPlan());
+      const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig, pm::PassPlan(), pm::lab::LoopParams::startJoints());
       const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass.views);
       const vpHomogeneousMatrix oMm = pass.fMo.inverse() * b.fMm;   // ground truth of the model frame
 */
@@ -26,13 +26,14 @@
 
 namespace pm::lab {
 
+//! What runLabPass() gives: the views and, for ground truth, the robot's side of the pass.
 struct LabPass
 {
-  std::vector<PassView> views;
+  std::vector<PassView> views;     //!< the views, named "view 00", "view 01", ... (hand pose fMh, the pairs with and without the toy)
   std::vector<vpColVector> joints; //!< the PA-10's joints at each view
   std::vector<PassDirection> directions; //!< each view's direction as reached (tilted less where the plan's was out of reach)
-  vpHomogeneousMatrix fMo;         //!< the toy in the base frame during the pass (ground truth)
-  vpHomogeneousMatrix fMh0;        //!< the hand at rest
+  vpHomogeneousMatrix fMo;         //!< the toy in the base frame during the pass (ground truth, metres)
+  vpHomogeneousMatrix fMh0;        //!< the hand at rest, in the base frame (forward kinematics at q0)
 };
 
 /*!

@@ -27,23 +27,45 @@ namespace pm::lab {
 //! Error statistics of a set of frames.
 struct ErrorStats
 {
-  std::size_t frames = 0;
-  double sumSquaredMm = 0, maxMm = 0, sumSquaredDeg = 0, maxDeg = 0;
-  void add(double mm, double deg);
-  void add(const ErrorStats &o);
-  double rmsMm() const;
-  double rmsDeg() const;
+  std::size_t frames = 0;        //!< frames added
+  //! \var sumSquaredMm
+  //! Sum of the squared translation errors (mm^2).
+  //! \var maxMm
+  //! Largest translation error (mm).
+  //! \var sumSquaredDeg
+  //! Sum of the squared rotation errors (deg^2).
+  double sumSquaredMm = 0, maxMm = 0, sumSquaredDeg = 0, maxDeg = 0; //!< largest rotation error (deg)
+  void add(double mm, double deg); //!< adds one frame's translation (mm) and rotation (deg) errors
+  void add(const ErrorStats &o);   //!< adds the frames of \e o
+  double rmsMm() const;            //!< root mean square of the translation errors (mm; 0 without frames)
+  double rmsDeg() const;           //!< root mean square of the rotation errors (deg; 0 without frames)
 };
 
 //! One plot sample: the first frame of a bucket of frames, with the bucket's largest errors.
 struct RunSample
 {
-  double t = 0;
-  double translationErrorMm = 0, rotationErrorDeg = 0; //!< maxima over the bucket
-  Phi truth{}, used{};                                 //!< the relative pose at the bucket's first frame
+  double t = 0;                                        //!< time of the bucket's first frame (s)
+  //! Largest translation error over the bucket (LoopFrame::translationErrorMm, mm).
+  double translationErrorMm = 0, rotationErrorDeg = 0; //!< largest rotation error over the bucket (LoopFrame::rotationErrorDeg, deg)
+  //! The true relative pose (LoopFrame::hMmTrue as a Phi: mm, quaternion vector) at the bucket's first frame.
+  Phi truth{}, used{};                                 //!< the pose the servo used (LoopFrame::hMmUsed) at the bucket's first frame
   std::array<double, 7> q{};                           //!< the joints at the bucket's first frame (rad)
 };
 
+/*!
+  The figures and the plot record of a closed-loop run, computed online (see RunLog.h).
+
+  \code
+    pm::lab::ClosedLoop loop(rig, scene, sm, tp, sp, lp, makeTc);
+    const long n = static_cast<long>(60 * lp.fps) + 1; // one minute
+    pm::lab::RunLog log(n, lp.fps, loop.robot());
+    for (long k = 0; k < n; ++k)
+      log.add(loop.step());
+    log.finish();
+    if (log.converged())
+      std::cout << "converged after " << log.convergedAfterS() << " s, then " << log.atRest().rmsMm() << " mm rms at rest" << std::endl;
+  \endcode
+*/
 class RunLog
 {
 public:
@@ -56,30 +78,40 @@ public:
   RunLog(long expectedFrames, double fps, const sim::RobotPA10 &robot, std::size_t maxSamples = 4000,
          double convergedMm = 10, double convergedDeg = 2);
 
+  //! Takes the run's next frame (in order: the convergence and the tenths count them).
   void add(const LoopFrame &f);
   //! Closes the last bucket and the convergence (a run within the bounds at its very end counts).
   void finish();
 
+  //! The frames added.
   long frames() const { return m_frames; }
   //! The time from which the run stayed within the bounds for 1 s; negative if never.
   double convergedAfterS() const { return m_convergedT; }
+  //! The run converged (convergedAfterS() >= 0).
   bool converged() const { return m_convergedT >= 0; }
-  //! From convergence on (the whole run if it never converged).
+  //! The frames with the target at rest, from convergence on (the whole run if it never converged).
   const ErrorStats &atRest() const { return converged() ? m_rest : m_allRest; }
+  //! The frames with the target moving, from convergence on (the whole run if it never converged).
   const ErrorStats &moving() const { return converged() ? m_moving : m_allMoving; }
   //! All frames of each tenth of the expected run (to see a drift).
   const std::array<ErrorStats, 10> &tenths() const { return m_tenths; }
+  //! Joints found outside their limits after a frame, counted once per joint and frame.
   int jointLimitViolations() const { return m_violations; }
+  //! The largest commanded joint speed over its limit, |qdot_i| / vmax_i, over the run.
   double maxJointSpeedFraction() const { return m_maxSpeedFraction; }
   //! Frames the servo acted on a wrong pose (the pose it used, LoopFrame::wrongUsed()).
   long framesServoedOnWrongPose() const { return m_servoedOnWrong; }
   //! Frames the servo acted while the tracker's raw estimate was wrong (LoopFrame::wrongEstimate()).
   long framesServoedOnWrongRawEstimate() const { return m_servoedOnWrongRaw; }
-  //! Frames the arm was held (stopped or stopping: the estimate not usable) and frames it servoed.
+  //! Frames the arm was held (stopped or stopping: the estimate not usable).
   long framesHeld() const { return m_held; }
+  //! Frames the servo acted on (LoopFrame::servoing).
   long framesServoed() const { return m_servoed; }
+  //! The tracker's mean time per frame (TrackResult::computeMs, ms; 0 without frames).
   double meanComputeMs() const { return m_frames ? m_sumMs / static_cast<double>(m_frames) : 0; }
+  //! The decimated record for the plots (the last, partial bucket only after finish()).
   const std::vector<RunSample> &samples() const { return m_samples; }
+  //! Frames per sample (it doubles each time the samples are merged by pairs).
   long framesPerSample() const { return m_bucket; }
 
 private:

@@ -15,6 +15,7 @@
 
 namespace pm::lab {
 
+//! The simulated calibration's settings: a lens for labRigWithLens(), and renderCalibrationPairs()'s sensor noise and random seed.
 struct SimulatedCalibrationParams
 {
   //! The lens of both cameras when no rig is given: strong barrel distortion, as OpenCV's sample cameras.
@@ -34,6 +35,7 @@ std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig,
                                                            const SimulatedCalibrationParams &params,
                                                            const std::function<void()> &step = {});
 
+//! How far an estimated rig lands from the true one (compareRigs()).
 struct CalibrationErrors
 {
   double baselineErrorMm = 0;      //!< |T| estimated minus true

@@ -50,16 +50,17 @@
 
 namespace pm {
 
+//! Parameters of buildAllAroundModel() (the steps of the file's description); validate() checks them.
 struct AllAroundParams
 {
-  SilhouetteParams silhouette;
+  SilhouetteParams silhouette;      //!< how each photo's silhouette is found (step 1)
   double backdropHueDeg = -1;       //!< >= 0: a plain backdrop of this hue, no background images needed (silhouetteOnBackdrop)
   std::size_t minViews = 6;         //!< fewer usable views: refused
-  double coarsestMm = 16;           //!< first cell size of the carving
-  double finestMm = 1;              //!< last cell size (raised for large targets: at most 256 cells across)
+  double coarsestMm = 16;           //!< first cell size of the carving (mm)
+  double finestMm = 1;              //!< last cell size (mm; raised for large targets: at most 256 cells across)
   double outlierCarveFraction = 0.4;//!< a view carving more than this of what the others keep is left out
-  double visibilityTolMm = 3;       //!< a surface point is seen when within this of the depth buffer
-  double refineDepthMm = 12;        //!< photo-consistency: a point may move this far inward (0: the hull as carved)
+  double visibilityTolMm = 3;       //!< a surface point is seen when within this of the depth buffer (mm)
+  double refineDepthMm = 12;        //!< photo-consistency: a point may move this far inward (mm; 0: the hull as carved)
   double refineMinScore = 0.7;      //!< ... to a depth where the cameras' 5x5 patches correlate this well with their mean
   double refineMinGain = 0.1;       //!< ... and this much better than at the hull
   double minSaturation = 0.15;      //!< colour samples paler than this have no hue
@@ -73,7 +74,7 @@ struct AllAroundParams
   int nOut = 160;                   //!< S_out points per viewpoint
   double stripGapPx = 3;            //!< S_out: the first row this far outside the outline (px)
   double stripWidthPx = 8;          //!< ... the last this much farther
-  int stripRows = 2;
+  int stripRows = 2;                //!< rows of S_out points across the strip
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
@@ -82,30 +83,44 @@ struct AllAroundParams
 //! A point of the hull's surface, in the model frame.
 struct SurfacePoint
 {
-  float x, y, z;          //!< mm
-  float nx, ny, nz;       //!< outward unit normal
+  //! \var x
+  //! Position in the model frame: x (mm).
+  //! \var y
+  //! Position in the model frame: y (mm).
+  float x, y, z;          //!< position in the model frame: z (mm)
+  //! \var nx
+  //! Outward unit normal: x.
+  //! \var ny
+  //! Outward unit normal: y.
+  float nx, ny, nz;       //!< outward unit normal: z
   float hue;              //!< median hue of the views that see it (deg; meaningful when hasHue)
-  unsigned char r, g, b;  //!< median colour (for model.ply)
+  //! \var r
+  //! Median colour: red (for model.ply).
+  //! \var g
+  //! Median colour: green.
+  unsigned char r, g, b;  //!< median colour: blue
   std::uint8_t nSeen;     //!< cameras that see it
-  bool hasHue;            //!< saturated enough, seen, views agree
+  bool hasHue;            //!< saturated enough, seen, views agree, hue far enough from H_B: may be S_in
   bool highlight;         //!< views disagreed (marked, not used as S_in)
 };
 
+//! What buildAllAroundModel() returns: the model, and what the build found on the way (for reports and pictures).
 struct AllAroundBuild
 {
   PhotoModel model;                 //!< views: the K viewpoints (view 0 in inner/outer)
   vpHomogeneousMatrix fMm;          //!< the model frame in the world frame of the poses (metres)
-  std::vector<SurfacePoint> surface;
+  std::vector<SurfacePoint> surface; //!< the hull's surface points, in the model frame
   std::vector<vpImage<unsigned char>> silhouettes; //!< left and right of each view: 2k, 2k + 1
   std::vector<std::string> leftOut; //!< views left out (their silhouettes disagree), with why
-  std::size_t nViews = 0, nViewsUsed = 0;
-  double hullVolumeCm3 = 0;
+  //! Views in the pass.
+  std::size_t nViews = 0, nViewsUsed = 0; //!< views used (not left out)
+  double hullVolumeCm3 = 0;         //!< volume of the carved hull (cm^3)
   double cellMm = 0;                //!< the finest cell size used
   int nRefined = 0;                 //!< surface points moved inward by photo-consistency
   int nHighlight = 0;               //!< surface points marked (views disagree)
   int nHighlightSamples = 0;        //!< colour samples left out as highlights
   long shadowPx = 0;                //!< changed pixels taken for shadow over all silhouettes
-  double buildS = 0;                //!< wall time of the build
+  double buildS = 0;                //!< wall time of the build (s)
 };
 
 /*!
@@ -113,6 +128,28 @@ struct AllAroundBuild
   naming the view) for: fewer than minViews views, images of another size than the rig's, a view
   whose silhouette is cut by the image border, a background that does not match its photo, poses
   that carve the hull to nothing, too few usable views after leaving out the disagreeing ones.
+  A rig whose cameras have lens distortion: the photos are undistorted first.
+
+  \code
+#include <iostream>
+#include <pm/io/PhotoModelFile.h>
+#include <pm/io/RigFile.h>
+#include <pm/io/ViewsFolder.h>
+#include <pm/model/AllAroundModelBuilder.h>
+
+int main()
+{
+  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const std::vector<pm::PassView> pass = pm::io::loadViewsFolder("views", rig, 6); // at least 6 views
+  pm::AllAroundParams params;
+  params.viewpoints = 120; // a lighter model: half the viewpoints
+  const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, params);
+  for (const std::string &why : b.leftOut)
+    std::cout << "left out: " << why << "\n";
+  pm::io::savePhotoModel(b.model, "model.json");
+  std::cout << b.nViewsUsed << " of " << b.nViews << " views, hull " << b.hullVolumeCm3 << " cm3\n";
+}
+  \endcode
 */
 AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass,
                                    const AllAroundParams &params = AllAroundParams());

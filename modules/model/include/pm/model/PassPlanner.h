@@ -16,11 +16,12 @@
 
 namespace pm {
 
+//! What planPass() plans: how many views, on which rings, around a pivot how far ahead (see the file).
 struct PassPlan
 {
   int views = 16;                 //!< in all, the rest view included
   std::vector<double> ringsDeg{20, 40}; //!< the rings' angles from the rest axis (views spread over them in proportion to the angle)
-  double distanceMm = 500;        //!< the pivot ahead of the hand at rest
+  double distanceMm = 500;        //!< the pivot ahead of the hand at rest (mm)
 
   //! Throws pm::Error naming the first value out of range.
   void validate() const;
@@ -29,7 +30,8 @@ struct PassPlan
 //! One direction of a pass: the hand's axis turned by \e tiltDeg from rest, toward azimuth \e azimuthDeg (0: the hand's +x, 90: its +y).
 struct PassDirection
 {
-  double tiltDeg = 0, azimuthDeg = 0;
+  //! The axis's tilt from rest (deg).
+  double tiltDeg = 0, azimuthDeg = 0; //!< the azimuth it tilts toward (deg)
 };
 
 //! The directions of the plan: the rest one, then each ring's, evenly around (rings staggered by half a step).

@@ -21,10 +21,13 @@
 
 namespace pm {
 
+//! One hand pose of a pass (see the file): the images of both cameras and the hand's pose.
 struct PassView
 {
-  vpImage<vpRGBa> left, right;                     //!< the target in view
-  vpImage<vpRGBa> backgroundLeft, backgroundRight; //!< the same hand pose, the target removed
+  //! The left camera's photo, the target in view.
+  vpImage<vpRGBa> left, right;                     //!< the right camera's photo, the target in view
+  //! The left camera's photo from the same hand pose, the target removed.
+  vpImage<vpRGBa> backgroundLeft, backgroundRight; //!< the right camera's, the target removed
   vpHomogeneousMatrix fMh;                         //!< the hand frame in the world frame (metres)
   std::string name;                                //!< how messages name it ("view 03")
 };

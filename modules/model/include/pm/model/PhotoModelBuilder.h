@@ -26,6 +26,7 @@
 
 namespace pm {
 
+//! Parameters of buildPhotoModel() (the steps of the file's description); validate() checks them.
 struct PhotoModelParams
 {
   double regionHueTolDeg = 30.0; //!< hue change that marks a target pixel (deg)
@@ -45,15 +46,38 @@ struct PhotoModelParams
   void validate() const;
 };
 
+//! What buildPhotoModel() returns: the model and the target region it was sampled in.
 struct PhotoModelBuild
 {
-  PhotoModel model;
+  PhotoModel model;              //!< the flat photo-model (z = 0; mm in the model frame)
   vpImage<unsigned char> region; //!< 255 inside the target region, 0 elsewhere
 };
 
 /*!
-  Builds the model. Throws pm::Error if the photos differ in size, a parameter is out of
-  range, or no target region can be told from the background (empty S_in).
+  Builds the flat model from \e background (photo (a)) and \e withTarget (photo (b)), both taken
+  by the camera of intrinsics \e cam with the target at \e distanceMm (mm) from it. Throws
+  pm::Error if the photos differ in size, a parameter is out of range, the distance or the focal
+  lengths are not positive, or no target region can be told from the background (empty S_in).
+
+  \code
+#include <iostream>
+#include <pm/io/ImageFile.h>
+#include <pm/io/PhotoModelFile.h>
+#include <pm/model/PhotoModelBuilder.h>
+#include <visp3/core/vpCameraParameters.h>
+
+int main()
+{
+  const vpImage<vpRGBa> background = pm::io::readColorImage("background.png");
+  const vpImage<vpRGBa> photo = pm::io::readColorImage("target.png"); // same camera, same place
+  const vpCameraParameters cam(800, 800, 320, 240);                   // px, py, u0, v0
+  pm::PhotoModelParams params;
+  params.stepPx = 6; // a denser S_in
+  const pm::PhotoModelBuild b = pm::buildPhotoModel(background, photo, cam, 500, params); // 500 mm
+  pm::io::savePhotoModel(b.model, "model.json");
+  std::cout << b.model.inner.size() << " S_in, " << b.model.outer.size() << " S_out points\n";
+}
+  \endcode
 */
 PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage<vpRGBa> &withTarget,
                                 const vpCameraParameters &cam, double distanceMm,

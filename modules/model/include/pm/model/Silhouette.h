@@ -23,6 +23,7 @@
 
 namespace pm {
 
+//! How silhouette() and silhouetteOnBackdrop() tell the target (see the file); validate() checks them.
 struct SilhouetteParams
 {
   double chromaTol = 0.035;       //!< chromaticity change (each of r, g over r + g + b) that marks the target
@@ -41,10 +42,11 @@ struct SilhouetteParams
   void validate() const;
 };
 
+//! What silhouette() and silhouetteOnBackdrop() found, besides the mask.
 struct SilhouetteStats
 {
   int targetPx = 0;      //!< pixels of the silhouette
-  int shadowPx = 0;      //!< pixels that changed but were taken for shadow
+  int shadowPx = 0;      //!< pixels that changed but were taken for shadow (0 on a plain backdrop)
   bool touchesBorder = false; //!< the silhouette reaches the image border (the target is cut)
 };
 

@@ -39,18 +39,19 @@
 
 namespace pm {
 
+//! Parameters of buildStereoPhotoModel() (the steps of the file's description); validate() checks them.
 struct StereoModelParams
 {
   PhotoModelParams photo;            //!< region and sampling, as the flat model
-  double backdropMm = 0;             //!< the backdrop's depth along the left camera's axis (0: measured)
+  double backdropMm = 0;             //!< the backdrop's depth along the left camera's axis (mm; 0: measured)
   double maxReliefMm = 200;          //!< search this far in front of the backdrop (mm)
   double behindBackdropMm = 20;      //!< ... and this far behind it (mm)
   int blockPx = 5;                   //!< SGBM block size (odd)
   int uniquenessPercent = 5;         //!< SGBM uniqueness ratio
-  double maxDisparitySpreadPx = 1.5; //!< a point's neighbouring disparities must agree within this
-  double localRadiusPx = 8;          //!< a point's depth is checked against the matched pixels this close ...
+  double maxDisparitySpreadPx = 1.5; //!< a point's neighbouring disparities must agree within this (px)
+  double localRadiusPx = 8;          //!< a point's depth is checked against the matched pixels this close (px) ...
   double maxLocalDeviationMm = 8;    //!< ... and dropped beyond this from their median (a wrong match)
-  double silhouetteRadiusPx = 12;    //!< S_out takes the depth of region pixels this close
+  double silhouetteRadiusPx = 12;    //!< S_out takes the depth of region pixels this close (px; plus the strip's gap and width)
   double minMatchedFraction = 0.5;   //!< fewer S_in points matched: refused (too little texture)
   double maxRegionFraction = 0.5;    //!< a larger region means the background pair does not match
   double maxBackgroundChange = 12;   //!< ... and so does a median change over this (grey levels) outside the target
@@ -60,10 +61,15 @@ struct StereoModelParams
   void validate() const;
 };
 
+/*!
+  What buildStereoPhotoModel() returns: the model and, for reports and pictures, what the build
+  found in the (first) photo pair.
+*/
 struct StereoPhotoModelBuild
 {
   PhotoModel model;                    //!< points in the model frame, z included
-  vpImage<unsigned char> regionLeft, regionRight;
+  //! The target region in the left photo (255 inside, 0 elsewhere).
+  vpImage<unsigned char> regionLeft, regionRight; //!< the same in the right photo
   vpImage<float> depthLeft;            //!< hand-frame z (mm) of each matched region pixel of the left photo, NaN elsewhere
   vpHomogeneousMatrix hMm;             //!< the model frame in the hand frame at the photo pose (metres)
   double backdropMm = 0;               //!< backdrop depth used (left camera's z, mm)
@@ -80,6 +86,29 @@ struct StereoPhotoModelBuild
   \e backdropMm), too little texture to match.
   A rig whose cameras have lens distortion: the four photos are undistorted first (UndistortMap),
   and regionLeft, regionRight and depthLeft are those of the left camera's ideal (undistorted) image.
+
+  \code
+#include <iostream>
+#include <pm/io/ImageFile.h>
+#include <pm/io/PhotoModelFile.h>
+#include <pm/io/RigFile.h>
+#include <pm/model/StereoPhotoModelBuilder.h>
+
+int main()
+{
+  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  // From one hand pose: the backdrop alone, then the target on it.
+  const vpImage<vpRGBa> bgL = pm::io::readColorImage("background_left.png");
+  const vpImage<vpRGBa> bgR = pm::io::readColorImage("background_right.png");
+  const vpImage<vpRGBa> L = pm::io::readColorImage("left.png");
+  const vpImage<vpRGBa> R = pm::io::readColorImage("right.png");
+  pm::StereoModelParams params;
+  params.backdropMm = 700; // a plain backdrop, too smooth to match: its depth given (mm)
+  const pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bgL, bgR, L, R, params);
+  pm::io::savePhotoModel(b.model, "model.json");
+  std::cout << b.model.inner.size() << " S_in points, " << b.model.nInDropped << " dropped\n";
+}
+  \endcode
 */
 StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL,
                                             const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
@@ -95,8 +124,14 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
 */
 struct StereoViewPair
 {
-  vpImage<vpRGBa> backgroundLeft, backgroundRight, left, right;
-  vpHomogeneousMatrix hMh0;
+  //! \var backgroundLeft
+  //! The left camera's photo of the backdrop alone.
+  //! \var backgroundRight
+  //! The right camera's photo of the backdrop alone.
+  //! \var left
+  //! The left camera's photo of the target on it.
+  vpImage<vpRGBa> backgroundLeft, backgroundRight, left, right; //!< the right camera's photo of the target on it
+  vpHomogeneousMatrix hMh0; //!< the first pair's hand frame into this pair's, for points fixed to the target (metres)
 };
 
 /*!
@@ -104,6 +139,7 @@ struct StereoViewPair
   further pair built the same way, its views (left and right) moved into the model frame by its
   known motion. Each camera is then scored with the view whose camera looked from the direction
   nearest its own (StereoFitness). Throws pm::Error as the one-pair build, naming the pair.
+  The build's regions, depth map, dropped points and counts are those of the first pair.
 
       std::vector<pm::StereoViewPair> more(1);
       more[0] = {bgL, bgR, turnedL, turnedR, hMo_turned * hMo.inverse()};

@@ -18,27 +18,33 @@
 
 namespace pm {
 
+/*!
+  Parameters of refineLocalSimplex(): the size of the first simplex, the evaluation budget and
+  when to stop early. validate() checks them.
+*/
 struct LocalSimplexParams
 {
   //! The first simplex: the start plus these steps, one variable at a time (mm, mm, mm, eps, eps, eps).
   double step[6] = {1.0, 1.0, 2.0, 0.004, 0.004, 0.004};
-  int maxEvaluations = 120; //!< including the first simplex's seven
-  //! Stops early when every vertex lies within this fraction of the first steps of the best.
+  int maxEvaluations = 120; //!< at most this many evaluations, including the first simplex's seven (>= 7)
+  //! Stops early when every vertex lies within this fraction of the first steps of the best ([0, 1)).
   double tolerance = 0.02;
 
   void validate() const; //!< throws pm::Error naming the parameter out of range
 };
 
+//! What refineLocalSimplex() found.
 struct LocalSimplexResult
 {
-  Phi best;
+  Phi best;            //!< the best pose found (valid; the start if nothing scored higher)
   double fitness = 0;  //!< the score at best (never below the start's)
-  double startFitness = 0;
-  int evaluations = 0;
+  double startFitness = 0; //!< the score at the start
+  int evaluations = 0; //!< poses tried, the start included (an invalid one counts, unscored); at most maxEvaluations
 };
 
 /*!
-  Maximises \e f from \e start. Throws pm::Error for invalid parameters or an invalid start.
+  Maximises \e f from \e start, one pose per call of FitnessFunction::evaluate (no early
+  rejection). Throws pm::Error for invalid parameters or an invalid start.
 */
 LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, const LocalSimplexParams &params);
 

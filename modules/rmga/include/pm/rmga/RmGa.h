@@ -36,6 +36,7 @@ class FitnessFunction
 {
 public:
   virtual ~FitnessFunction() = default;
+  //! Writes the fitness of poses[0, n) into fitness[0, n) (higher is better). RM-GA passes valid poses only.
   virtual void evaluate(const Phi *poses, std::size_t n, double *fitness) = 0;
   /*!
     The same, except that a pose that will score under \e rejectBelow may be given an estimate
@@ -54,6 +55,10 @@ public:
   }
 };
 
+/*!
+  RM-GA's parameters: population, genetic operators, options and seed (the paper's values where
+  it gives them). validate() checks them; RmGa's constructor calls it.
+*/
 struct RmGaParams
 {
   int population = 20;          //!< individuals (the paper: 20)
@@ -64,7 +69,7 @@ struct RmGaParams
   bool predictMotion = false;   //!< option: move the population by the predicted motion on a new frame
   int refineEvaluations = 0;    //!< option: evaluations of the local refinement of the best, per frame
   int restartGenerations = 0;   //!< option: restart all but the best after this many generations without gain (0: never)
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 1;        //!< seed of the random generator: the same seed, the same run (with an evaluation budget)
 
   //! Throws pm::Error naming the parameter out of range.
   void validate() const;
@@ -75,30 +80,70 @@ struct FrameBudget
 {
   long evaluations = 0;    //!< > 0: exactly this many evaluations at most
   double milliseconds = 0; //!< > 0 (and no evaluations): stop the generations when this time is spent
+  //! A budget of \e n evaluations.
   static FrameBudget evals(long n) { return {n, 0}; }
+  //! A budget of \e t milliseconds of wall time.
   static FrameBudget ms(double t) { return {0, t}; }
 };
 
+//! One member of the population: its genes, the pose they decode to and its fitness.
 struct Individual
 {
-  Genome genome;
-  Phi phi;
-  double fitness = 0;
+  Genome genome;      //!< the 72-bit chromosome
+  Phi phi;            //!< decode(genome): the pose it stands for (mm, quaternion vector part)
+  double fitness = 0; //!< fitness at its last evaluation (-1e300 before the first, or when not finite)
 };
 
+//! What RmGa::evolve() found on a frame.
 struct FrameResult
 {
-  Phi best;
-  double fitness = 0;
+  Phi best;             //!< the best individual's pose: the pose of the frame
+  double fitness = 0;   //!< its fitness (the FitnessFunction's value)
   long evaluations = 0; //!< the work, in whole evaluations (a child rejected early counts its share), rounded up
   long candidates = 0;  //!< poses scored, exactly or rejected early
-  int generations = 0;
-  bool restarted = false;
+  int generations = 0;  //!< generations run on the frame
+  bool restarted = false; //!< a stagnant search restarted during the frame (RmGaParams::restartGenerations)
 };
 
+/*!
+  The RM-GA optimiser (see the file's description for the steps of a frame). It keeps copies of
+  its search space and parameters, and the population from one evolve() to the next; the
+  FitnessFunction is only borrowed for the call. Not thread-safe.
+
+  \code
+#include <cmath>
+#include <iostream>
+#include <pm/rmga/RmGa.h>
+
+// A stand-in for the stereo fitness (pm::StereoObjective): the nearer (10, -20, 500) mm, the better.
+class Toy : public pm::FitnessFunction
+{
+public:
+  void evaluate(const pm::Phi *poses, std::size_t n, double *fitness) override
+  {
+    for (std::size_t i = 0; i < n; ++i)
+      fitness[i] = -(std::abs(poses[i].x - 10) + std::abs(poses[i].y + 20) + std::abs(poses[i].z - 500));
+  }
+};
+
+int main()
+{
+  pm::RmGaParams params;
+  params.predictMotion = true;      // options off by default
+  params.restartGenerations = 30;
+  pm::RmGa ga(pm::SearchSpace(), params); // the paper's search space; a random population
+  Toy toy;
+  for (int frame = 0; frame < 10; ++frame) {
+    const pm::FrameResult r = ga.evolve(toy, pm::FrameBudget::evals(800));
+    std::cout << r.best.toString() << " F " << r.fitness << " in " << r.generations << " generations\n";
+  }
+}
+  \endcode
+*/
 class RmGa
 {
 public:
+  //! Copies and checks \e space and \e params (throws pm::Error if invalid); the population starts random (randomize()).
   RmGa(const SearchSpace &space, const RmGaParams &params);
 
   //! A new random population over the search space (step 1); forgets the motion.
@@ -137,8 +182,11 @@ public:
     \endcode
   */
   void setAnchor(const Phi &p);
+  //! Forgets the anchor: the restarts no longer search near it.
   void clearAnchor() { m_hasAnchor = false; }
+  //! True when an anchor is set (setAnchor()).
   bool hasAnchor() const { return m_hasAnchor; }
+  //! The anchor, clamped into the search space; meaningful when hasAnchor().
   const Phi &anchor() const { return m_anchor; }
   /*!
     Moves every individual (and the remembered best poses of the last frames, for the motion
@@ -155,8 +203,11 @@ public:
   */
   FrameResult evolve(FitnessFunction &f, const FrameBudget &budget, bool sameFrame = false);
 
+  //! The current population (RmGaParams::population individuals), each with its last fitness.
   const std::vector<Individual> &population() const { return m_pop; }
+  //! The search space (the copy given to the constructor).
   const SearchSpace &space() const { return m_space; }
+  //! The parameters (the copy given to the constructor).
   const RmGaParams &params() const { return m_params; }
 
 private:

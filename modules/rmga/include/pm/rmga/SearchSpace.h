@@ -12,28 +12,35 @@
 
 namespace pm {
 
+/*!
+  The box RM-GA searches phi in: a range [lo, hi] per variable, in the order of Phi (x, y, z in
+  mm, then eps1, eps2, eps3). The defaults are the paper's ranges.
+*/
 struct SearchSpace
 {
-  std::array<double, 6> lo{-180, -180, 320, -0.37, -0.37, -0.37};
-  std::array<double, 6> hi{180, 180, 680, 0.37, 0.37, 0.37};
+  std::array<double, 6> lo{-180, -180, 320, -0.37, -0.37, -0.37}; //!< lower bounds: x, y, z (mm), eps1, eps2, eps3
+  std::array<double, 6> hi{180, 180, 680, 0.37, 0.37, 0.37};       //!< upper bounds, in the same order
 
-  //! Throws pm::Error unless every range is finite and increasing.
+  //! Throws pm::Error unless every range is finite and increasing, and those of eps lie in [-1, 1].
   void validate() const;
   //! Clamps phi into the ranges.
   Phi clamp(const Phi &p) const;
+  //! True when every variable of \e p lies in its range (bounds included).
   bool contains(const Phi &p) const;
 };
 
 //! 6 genes of 12 bits: 72 bits in all.
 struct Genome
 {
-  static constexpr int kBits = 12;
-  static constexpr std::uint16_t kMax = (1u << kBits) - 1;
-  std::array<std::uint16_t, 6> gene{};
+  static constexpr int kBits = 12;                          //!< bits per gene
+  static constexpr std::uint16_t kMax = (1u << kBits) - 1;  //!< the largest gene, 4095 (the range's upper bound)
+  std::array<std::uint16_t, 6> gene{};                      //!< x, y, z, eps1, eps2, eps3, each in [0, kMax]
 
   //! Bit \e k of the 72-bit string (gene k / 12, most significant bit first).
   bool bit(int k) const { return (gene[static_cast<std::size_t>(k / kBits)] >> (kBits - 1 - k % kBits)) & 1u; }
+  //! Flips bit \e k of the 72-bit string (numbered as in bit()).
   void flip(int k) { gene[static_cast<std::size_t>(k / kBits)] ^= static_cast<std::uint16_t>(1u << (kBits - 1 - k % kBits)); }
+  //! Same genes.
   bool operator==(const Genome &o) const { return gene == o.gene; }
 };
 

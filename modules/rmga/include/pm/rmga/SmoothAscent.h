@@ -37,24 +37,29 @@ public:
   virtual double valueAndGradient(const Phi &phi, double grad[6], double *metric) = 0;
 };
 
+/*!
+  Parameters of climbSmooth(): the evaluation budget and the step lengths, as rms image motion
+  (px). validate() checks them.
+*/
 struct SmoothAscentParams
 {
   int maxEvaluations = 24;   //!< evaluations of the score and its gradient, the starts' included
   double firstStepPx = 0.5;  //!< rms image motion of the first step (px)
   double maxStepPx = 2.0;    //!< longest step (px)
-  double minStepPx = 0.01;   //!< the climb stops when its step is shorter
+  double minStepPx = 0.01;   //!< the climb stops when its step is shorter (px)
   double grow = 1.5;         //!< step length factor after a step that raised the score
   double shrink = 0.4;       //!< ... and after one that did not
 
   void validate() const; //!< throws pm::Error naming the parameter out of range
 };
 
+//! What climbSmooth() found.
 struct SmoothAscentResult
 {
-  Phi best;
+  Phi best;              //!< the highest-scoring pose found (valid; the best start if no step raised the score)
   double score = 0;      //!< at best, never below the best start's
   double startScore = 0; //!< the best start's
-  int evaluations = 0;
+  int evaluations = 0;   //!< evaluations of the score and its gradient, the starts' included
 };
 
 /*!

@@ -17,6 +17,11 @@
 
 namespace pm {
 
+/*!
+  A StereoFitness seen as a FitnessFunction (for RmGa and refineLocalSimplex) and as a
+  SmoothFunction (for climbSmooth); see the file's description. It keeps a reference to the
+  StereoFitness, whose current images it scores: the fitness must outlive it.
+*/
 class StereoObjective : public FitnessFunction, public SmoothFunction
 {
 public:
@@ -35,8 +40,15 @@ public:
     : m_f(fitness), m_score(score), m_rejectMargin(rejectMargin)
   {
   }
+  //! The score chosen at construction for each pose (Coarse: the estimate from the first share of points).
   void evaluate(const Phi *poses, std::size_t n, double *fitness) override;
+  /*!
+    Fitness with a margin: F, a pose rejected early when its estimate lies under \e rejectBelow
+    minus the margin. Coarse: every pose estimated (cost about a quarter). Smooth, a negative
+    margin or nothing to reject (\e rejectBelow -1e300): every pose scored exactly (cost 1).
+  */
   void evaluateOrReject(const Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost) override;
+  //! StereoFitness::evaluateSmoothGradient, whatever the Score.
   double valueAndGradient(const Phi &phi, double grad[6], double *metric) override { return m_f.evaluateSmoothGradient(phi, grad, metric); }
 
 private:

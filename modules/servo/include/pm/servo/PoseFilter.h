@@ -10,23 +10,47 @@
 
 namespace pm {
 
+//! The gains of PoseFilter, for the translation and for the rotation.
 struct PoseFilterParams
 {
-  double alphaT = 0.7, betaT = 0.2; //!< translation gains (alpha: position, beta: velocity)
-  double alphaR = 0.3, betaR = 0.05; //!< rotation gains (the tilts of the estimate are noisy)
+  //! Translation gain alpha: the share of the position residual taken into the position, in (0, 1].
+  double alphaT = 0.7, betaT = 0.2; //!< translation gain beta: the position residual / dt taken into the velocity, in [0, 2)
+  //! Rotation gain alpha: the share of the theta-u residual taken into the rotation, in (0, 1] (low: the tilts of the estimate are noisy).
+  double alphaR = 0.3, betaR = 0.05; //!< rotation gain beta: the theta-u residual / dt taken into the angular velocity, in [0, 2)
   void validate() const;             //!< throws pm::Error unless 0 < alpha <= 1 and 0 <= beta < 2
 };
 
+/*!
+  Alpha-beta filter of a pose in a fixed frame, with the twist it estimates (see PoseFilter.h).
+  In the closed loop it filters fMo, the target in the robot's base frame, and its twist feeds
+  PbvsServo forward.
+
+  \code
+    pm::PoseFilter filter; // default gains
+    const double dt = 1.0 / 30;
+    // fMh: the hand in the base frame; hMo: the estimated target in the hand frame.
+    filter.update(fMh * hMo, dt);
+    const vpColVector twist = filter.twist(); // v (m/s), w (rad/s), base frame
+    const vpColVector qdot = servo.computeJointVelocity(fMh.inverse() * filter.pose(), fMh, eJe, q, qmin, qmax, dt, &twist);
+  \endcode
+*/
 class PoseFilter
 {
 public:
+  //! Throws pm::Error if PoseFilterParams::validate() does.
   explicit PoseFilter(const PoseFilterParams &p = PoseFilterParams());
-  //! Takes a measurement \e z, \e dt seconds after the previous one; returns the filtered pose.
+  /*!
+    Takes a measurement \e z, \e dt seconds after the previous one; returns the filtered pose.
+    The first measurement (and any after reset(), or with dt <= 0) is taken as is, with a zero twist.
+  */
   const vpHomogeneousMatrix &update(const vpHomogeneousMatrix &z, double dt);
+  //! The next update() starts the filter again from its measurement.
   void reset() { m_init = false; }
+  //! update() has taken a measurement since the construction or the last reset().
   bool initialised() const { return m_init; }
+  //! The filtered pose (as update() returned it last).
   const vpHomogeneousMatrix &pose() const { return m_pose; }
-  //! (vx, vy, vz, wx, wy, wz) in the fixed frame.
+  //! (vx, vy, vz, wx, wy, wz) in the fixed frame: velocity of the pose's origin (m/s when the pose is in metres) and angular velocity (rad/s).
   vpColVector twist() const;
 
 private:

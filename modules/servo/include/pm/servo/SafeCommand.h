@@ -11,12 +11,24 @@
 
 namespace pm {
 
+/*!
+  Speed and acceleration limiter of a joint velocity command (see SafeCommand.h). It holds the
+  last command, zero at first; call next() or stop() once per control cycle.
+
+  \code
+    pm::sim::RobotPA10 robot;
+    robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
+    pm::SafeCommand safe(robot.speedLimits(), robot.accelerationLimits());
+    // every cycle of dt seconds: toward the servo's command when the estimate is usable, else toward zero
+    robot.setVelocity(vpRobot::JOINT_STATE, usable ? safe.next(qdotWanted, dt) : safe.stop(dt));
+  \endcode
+*/
 class SafeCommand
 {
 public:
   /*!
-    \e speedLimits (rad/s) and \e accelerationLimits (rad/s^2), one per joint, positive. Throws
-    pm::Error otherwise.
+    \e speedLimits (rad/s) and \e accelerationLimits (rad/s^2), one per joint (at least one),
+    positive and finite. Throws pm::Error otherwise. The first command is zero.
   */
   SafeCommand(const vpColVector &speedLimits, const vpColVector &accelerationLimits);
 
@@ -25,8 +37,9 @@ public:
   //! next() toward zero.
   const vpColVector &stop(double dt);
 
+  //! The last command (rad/s, one per joint).
   const vpColVector &last() const { return m_cmd; }
-  bool stopped() const; //!< the last command is zero
+  bool stopped() const; //!< the last command is exactly zero
 
 private:
   vpColVector m_vmax, m_amax, m_cmd;

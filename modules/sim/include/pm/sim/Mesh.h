@@ -13,10 +13,14 @@
 
 namespace pm::sim {
 
-//! An RGB texture, 8 bits per channel, row-major, sampled bilinearly.
+/*!
+  An RGB texture, 8 bits per channel, row-major, sampled bilinearly. Meshes hold theirs through a
+  std::shared_ptr to const (Mesh::texture), so that one texture serves several meshes.
+*/
 struct Texture
 {
-  int width = 0, height = 0;
+  //! Width in texels.
+  int width = 0, height = 0; //!< height in texels
   std::vector<std::uint8_t> rgb; //!< 3 * width * height
 
   //! Bilinear sample at texel coordinates (texel centres at integers), clamped; out in [0, 1].
@@ -37,22 +41,41 @@ struct Texture
   }
 };
 
+/*!
+  One vertex of a Mesh: position and normal in the object frame, texture coordinates and the
+  outline mask (see Mesh.h).
+*/
 struct MeshVertex
 {
-  float x, y, z;    //!< position in the object frame (m)
-  float nx, ny, nz; //!< unit normal in the object frame, pointing toward the viewer side (-z)
-  float s, t;       //!< texture coordinates (texels)
-  float mask;       //!< fragment kept where the interpolated mask is <= 0
+  //! Position in the object frame (m): x (y and z likewise).
+  float x, y, z;    //!< position in the object frame (m): z
+  //! Unit normal in the object frame: x component (the top of a toy and the backdrop face -z, a toy's underside +z).
+  float nx, ny, nz; //!< unit normal in the object frame: z component (shading is two-sided)
+  //! Texture coordinate along the texture's width (texels, texel centres at integers).
+  float s, t;       //!< texture coordinate along the texture's height (texels)
+  float mask;       //!< fragment kept where the interpolated mask is <= 0 (when Mesh::useMask)
+  /*!
+    \var MeshVertex::y
+      Position in the object frame (m): y.
+    \var MeshVertex::ny
+      Unit normal in the object frame: y component.
+  */
 };
 
+/*!
+  A textured triangle mesh, drawn by Rasterizer::draw() and Rasterizer::render() and, for cast
+  shadows, rasterised by ShadowMap. Vertices are in the object frame, in metres; a mesh owns its
+  vertices and triangles and shares its (immutable) texture. Made by buildTargetMesh() (a toy)
+  and makeBackdropMesh() (the sea-bottom panel).
+*/
 struct Mesh
 {
-  std::vector<MeshVertex> vertices;
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::shared_ptr<const Texture> texture;
+  std::vector<MeshVertex> vertices;                     //!< the vertices (object frame, metres)
+  std::vector<std::array<std::uint32_t, 3>> triangles; //!< vertex indices of each triangle
+  std::shared_ptr<const Texture> texture;               //!< the texture (required to draw; shared, immutable)
   bool useMask = false;  //!< discard fragments by mask
   float specular = 0.f;  //!< specular strength (glossy plastic of a toy); 0 = matte
-  float shininess = 20.f;
+  float shininess = 20.f; //!< Blinn-Phong exponent of the highlight
 };
 
 } // namespace pm::sim

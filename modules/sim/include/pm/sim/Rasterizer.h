@@ -28,12 +28,16 @@ namespace pm::sim {
 /*!
   One directional light and the ambient term. With a shadow map (built in the frame of the meshes
   drawn, with the same light direction) fragments hidden from the light get the ambient term only.
+  A fragment's colour is texture * (ambient + lit * diffuse * max(0, n.l)) + lit * specular *
+  max(0, n.h)^shininess, with lit the shadow map's visibility (1 without one); the normal is turned
+  toward the camera first (two-sided). Rasterizer::draw() and render() throw pm::Error if \e shadow
+  was made for another direction than \e dirCamera seen in the mesh's frame.
 */
 struct Lighting
 {
   double dirCamera[3] = {-0.3, -0.5, -0.8}; //!< direction toward the light, camera frame (normalised on use)
-  double ambient = 0.45;
-  double diffuse = 0.65;
+  double ambient = 0.45;             //!< ambient term (fraction of the texture's colour, everywhere)
+  double diffuse = 0.65;             //!< Lambert term's strength (times max(0, n.l))
   double specular = -1;              //!< specular strength for this draw; negative: the mesh's own
   double shininess = -1;             //!< Blinn-Phong exponent for this draw; negative: the mesh's own
   const ShadowMap *shadow = nullptr; //!< cast shadows (object frame of the mesh drawn); null: none
@@ -41,13 +45,39 @@ struct Lighting
   double shadowSlopeBias = 1.5;      //!< plus this many shadow-map texels times tan(angle of incidence)
 };
 
+/*!
+  The software renderer of the simulated cameras: see Rasterizer.h. Draw meshes with draw() then
+  resolve() into an image, or do both in one cache-friendly pass with render() (what Scene does).
+  The object ids written while drawing let coverage() and depthAt() tell, afterwards, which
+  object each pixel shows and at what depth (the ground truth of the simulations).
+  \code
+  pm::sim::Rasterizer r;
+  r.reset(640, 480, 2);                            // 640 x 480 pixels, 2 x 2 samples each
+  r.clear(0.04f, 0.06f, 0.09f);
+  r.draw(backdrop, cMo, cam, pm::sim::Lighting(), 1); // backdrop, toy: pm::sim::Mesh; cMo (m)
+  r.draw(toy, cMo, cam, pm::sim::Lighting(), 2);
+  vpImage<vpRGBa> I;
+  r.resolve(I, 1.0, 2.0, 42);                      // exposure 1, noise sigma 2 grey levels, seed 42
+  const double onToy = r.coverage(320, 240, 2);    // fraction of the centre pixel on the toy
+  \endcode
+*/
 class Rasterizer
 {
 public:
-  //! Sets the image size and supersampling factor (1..4) and clears to black.
+  /*!
+    Sets the image size (pixels) and the supersampling factor (1..4: SSxSS samples per pixel) and
+    empties the depth and id buffers (the clear colour stays the last clear()'s; black on a new
+    instance). Throws pm::Error for a zero size or a factor out of range.
+  */
   void reset(unsigned width, unsigned height, unsigned supersampling);
+  //! Empties the frame before draw(): no sample drawn, the background colour (r, g, b in [0, 1]) everywhere.
   void clear(float r, float g, float b);
-  //! Draws \e mesh seen from a camera at cMo; \e id (1..255; 0 is refused) is written to the id buffer where visible.
+  /*!
+    Draws \e mesh (object frame) seen by camera \e cam with the object at \e cMo (its pose in the
+    camera frame, metres); \e id (1..255; 0 is refused) is written to the id buffer where visible.
+    Throws pm::Error before reset(), after render() without a clear(), for a mesh without texture,
+    and for a shadow map made for another light direction.
+  */
   void draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam, const Lighting &light,
             std::uint8_t id);
   /*!
@@ -75,6 +105,7 @@ public:
     relief targets and under the scene light.
   */
   void setExactBounds(bool on) { m_exactBounds = on; }
+  //! True if the exact (fixed-point) bounding boxes are on: see setExactBounds().
   bool exactBounds() const { return m_exactBounds; }
 
   /*!
@@ -89,9 +120,9 @@ public:
   //! One mesh of a frame drawn by render(); the mesh is not copied (it must outlive the call).
   struct DrawCall
   {
-    const Mesh *mesh = nullptr;
-    vpHomogeneousMatrix cMo;
-    Lighting light;
+    const Mesh *mesh = nullptr; //!< the mesh to draw (not owned; required)
+    vpHomogeneousMatrix cMo;    //!< the mesh's object frame in the camera frame (metres)
+    Lighting light;             //!< its lighting (a shadow map in it is not owned either)
     std::uint8_t id = 1; //!< 1..255
   };
   /*!
@@ -114,9 +145,9 @@ public:
   void render(const float clearColor[3], const DrawCall *calls, std::size_t n, const vpCameraParameters &cam,
               vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed);
 
-  unsigned width() const { return m_w; }
-  unsigned height() const { return m_h; }
-  unsigned supersampling() const { return m_ss; }
+  unsigned width() const { return m_w; }               //!< image width (pixels), as set by reset()
+  unsigned height() const { return m_h; }              //!< image height (pixels), as set by reset()
+  unsigned supersampling() const { return m_ss; }      //!< samples per pixel along each axis
 
 private:
   struct ProjVertex

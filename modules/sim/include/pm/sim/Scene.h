@@ -41,11 +41,12 @@ struct SceneParams
   double noiseSigma = 2.0;                  //!< sensor noise, grey levels per channel
   double exposure = 1.0;                    //!< global gain: the brightness / lighting change
   double lightDirHand[3] = {-0.35, -0.6, -1.0}; //!< toward the light, hand frame (upper left, in front)
-  double ambient = 0.5, diffuse = 0.6;
+  //! Ambient term of the lighting (fraction of the surface colour, everywhere).
+  double ambient = 0.5, diffuse = 0.6; //!< strength of the diffuse (Lambert) term
   double specular = 0.12;                   //!< gloss of the toy's plastic
   double meshStepMm = 1.0;                  //!< vertex spacing of the toy's mesh
   double backdropGapMm = 0.5;               //!< backdrop behind the toy's base
-  SeaBottomParams seaBottom;
+  SeaBottomParams seaBottom;                //!< the backdrop panel (size, texel, seed)
   bool occluder = false;                    //!< a strand of seaweed in front of the toy
   double occluderCentreMm[3] = {25, 0, -70};//!< its centre in the target frame
   double occluderSizeMm[2] = {22, 260};     //!< its width and height
@@ -67,20 +68,45 @@ struct SceneParams
     backdrop by default), lit like the toy. A scenario moves it by changing the pose per frame.
   */
   bool distractor = false;
-  double distractorPose[6] = {-190, 0, 0, 0, 0, 0};
+  double distractorPose[6] = {-190, 0, 0, 0, 0, 0}; //!< the look-alike's pose in the target frame (x, y, z mm, eps1..3)
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
 };
 
+//! The two images of one frame of the stereo rig (Scene::renderStereo()).
 struct StereoImages
 {
-  vpImage<vpRGBa> left, right;
+  //! The left camera's image.
+  vpImage<vpRGBa> left, right; //!< the right camera's image
 };
 
+/*!
+  The simulated lab scene of one target (see Scene.h): renders what the rig's cameras see for a
+  pose hMo of the target frame in the hand frame. A scene owns copies of the target and of its
+  meshes; copies of a scene share its shadow-map and lens caches. render() may run in several
+  threads at once, each with its own Rasterizer (renderStereo() does so), while params() is not changed.
+  \code
+  pm::sim::SceneParams sp;
+  sp.exposure = 0.8;                                     // a darker lab
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp); // the crab
+  const vpCameraParameters cam(800, 800, 320, 240);
+  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, 0.12, pm::StereoRig::toeInFor(0.12, 0.5));
+  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(pm::Phi{0, 0, 500, 0, 0, 0}); // 500 mm ahead
+  for (std::uint64_t frame = 0; frame < 30; ++frame) {
+    const pm::sim::StereoImages im = scene.renderStereo(rig, hMo, frame);
+    // im.left, im.right: what the two cameras see
+  }
+  \endcode
+*/
 class Scene
 {
 public:
+  /*!
+    Builds the meshes of the toy (every params.meshStepMm), of the backdrop (params.backdropGapMm
+    behind the toy's base) and of the occluder. Throws pm::Error for a parameter out of range or a
+    target whose grids do not match.
+  */
   Scene(const TargetShape &target, const SceneParams &params = SceneParams());
 
   /*!
@@ -88,15 +114,19 @@ public:
     frame); \e stream distinguishes images of the same frame (0 left, 1 right, 2+ others).
     A camera with lens distortion sees through it: the scene is rendered in an ideal image large
     enough to hold the whole raw one, resampled into the raw image (bilinear, through a map
-    computed once per camera and kept), then the sensor noise is added.
+    computed once per camera and kept), then the sensor noise is added. \e withTarget false: the
+    backdrop alone (no toy, no shadow of it). Afterwards \e raster's coverage() and depthAt() tell the
+    objects apart by id (1 backdrop, 2 toy, 3 occluder, 4 look-alike); for a distorted camera they
+    hold the larger ideal canvas, not \e out. Throws pm::Error (see Rasterizer::render()).
   */
   void render(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
               unsigned stream, vpImage<vpRGBa> &out, bool withTarget = true) const;
-  //! Both views of the rig (rendered in parallel).
+  //! Both views of the rig for the target at \e hMo (rendered in parallel, streams 0 and 1 of \e frame).
   StereoImages renderStereo(const StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const;
   /*!
     The two photos of the paper's Fig. 4, taken by one camera (the \e cam intrinsics, w x h)
     looking straight at the target from \e distanceMm: (a) the backdrop alone, (b) with the toy.
+    Throws pm::Error unless \e distanceMm > 0.
   */
   void renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, double distanceMm, vpImage<vpRGBa> &background,
                     vpImage<vpRGBa> &withTarget) const;
@@ -106,7 +136,7 @@ public:
     it is drawn while params().distractor is on. Throws pm::Error if the shape is invalid.
   */
   void setDistractor(const TargetShape &shape);
-  bool hasDistractor() const { return !m_distractor.triangles.empty(); }
+  bool hasDistractor() const { return !m_distractor.triangles.empty(); } //!< true once setDistractor() gave a shape
 
   //! True if this scene is lit by the scene light with shadows (params().shadows, Auto resolved).
   bool sceneLit() const;
@@ -116,10 +146,16 @@ public:
   */
   std::shared_ptr<const ShadowMap> shadowMap() const;
 
-  const TargetShape &target() const { return m_target; }
-  const SceneParams &params() const { return m_params; }
+  const TargetShape &target() const { return m_target; } //!< the target (the scene's own copy)
+  const SceneParams &params() const { return m_params; }  //!< the parameters
+  /*!
+    The parameters, to change between renders (exposure, noise, lights, shadows, occluder on or
+    off, the look-alike's pose...). Not validated here. The meshes were built by the constructor:
+    changing meshStepMm, specular, backdropGapMm, seaBottom, occluderCentreMm or occluderSizeMm
+    afterwards has no effect on them (setDistractor() uses the meshStepMm and specular of its call).
+  */
   SceneParams &params() { return m_params; }
-  std::size_t targetTriangles() const { return m_toy.triangles.size(); }
+  std::size_t targetTriangles() const { return m_toy.triangles.size(); } //!< triangles in the toy's mesh
 
 private:
   TargetShape m_target;

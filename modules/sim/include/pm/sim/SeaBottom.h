@@ -11,15 +11,23 @@
 
 namespace pm::sim {
 
+//! The backdrop panel: its size, the resolution of its texture and the seed of its pattern.
 struct SeaBottomParams
 {
-  double widthMm = 1600, heightMm = 1200; //!< panel size (covers the views over the search range)
-  double texelMm = 0.6;
-  std::uint64_t seed = 7;
+  //! Panel width (mm).
+  double widthMm = 1600, heightMm = 1200; //!< panel height (mm); the size covers the views over the search range
+  double texelMm = 0.6;   //!< texel size of the texture (mm; > 0.05, at most 40 million texels in all)
+  std::uint64_t seed = 7; //!< seed of the pattern (the same seed, the same sea bottom)
 };
 
+/*!
+  The sea-bottom texture for \e p (widthMm / texelMm x heightMm / texelMm texels, rounded up).
+  Deterministic; one texture per parameter set is shared by the whole process while it is in use
+  (thread-safe). Throws pm::Error for a non-positive size, a texel of 0.05 mm or less, or more
+  than 40 million texels.
+*/
 std::shared_ptr<const Texture> makeSeaBottomTexture(const SeaBottomParams &p);
-//! The panel as a mesh centred on the target frame's z axis at depth \e zMm, facing -z.
+//! The panel as a mesh centred on the target frame's z axis at depth \e zMm (mm), facing -z; it shares \e texture.
 Mesh makeBackdropMesh(std::shared_ptr<const Texture> texture, const SeaBottomParams &p, double zMm);
 
 } // namespace pm::sim

@@ -21,6 +21,11 @@
 
 namespace pm::sim {
 
+/*!
+  The depth map of a mesh along a directional light, for cast shadows (see ShadowMap.h). Made once
+  (Scene::shadowMap() builds and keeps the toy's), then handed to the renderer through
+  Lighting::shadow, which does not own it.
+*/
 class ShadowMap
 {
 public:
@@ -59,10 +64,10 @@ public:
     return top + b * (bot - top);
   }
 
-  //! Nearest depth (metres along the light) stored at texel (i, j); +infinity where the mesh is absent.
+  //! Nearest depth (metres along the light) stored at texel (i, j), 0 \<= i \< cols(), 0 \<= j \< rows() (not checked); +infinity where the mesh is absent.
   float depthAt(int i, int j) const { return m_depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(m_cols) + static_cast<std::size_t>(i)]; }
-  int cols() const { return m_cols; }
-  int rows() const { return m_rows; }
+  int cols() const { return m_cols; } //!< map width (texels, along eu)
+  int rows() const { return m_rows; } //!< map height (texels, along ev)
   double texel() const { return m_texel; } //!< texel size (metres)
   //! Unit vector toward the light (object frame).
   const double *towardLight() const { return m_toward; }

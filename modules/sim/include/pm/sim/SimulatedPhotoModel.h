@@ -19,17 +19,23 @@
 
 namespace pm::sim {
 
+/*!
+  A photo-model made from simulated photos, with the ground truth to judge it by (see
+  SimulatedPhotoModel.h): made by makeSimulatedPhotoModel() or makeSimulatedStereoPhotoModel().
+*/
 struct SimulatedPhotoModel
 {
-  PhotoModelBuild build;
-  vpImage<vpRGBa> background, photo; //!< the two photos (the left ones for a stereo model)
+  PhotoModelBuild build;             //!< the model and its region in the (left) photo
+  //! The background photo, the backdrop alone (the left one for a stereo model).
+  vpImage<vpRGBa> background, photo; //!< the photo with the toy (the left one for a stereo model)
   vpHomogeneousMatrix oMm;           //!< the model frame in the toy's frame (metres)
   // Stereo models only:
-  bool stereo = false;
-  vpImage<vpRGBa> backgroundRight, photoRight;
+  bool stereo = false;               //!< true for a stereo model (the members below are filled)
+  //! The right camera's background photo (stereo models).
+  vpImage<vpRGBa> backgroundRight, photoRight; //!< the right camera's photo with the toy (stereo models)
   vpImage<float> depth;              //!< hand-frame z (mm) of the matched left region pixels, NaN elsewhere
   double backdropMm = 0;             //!< the backdrop's depth the builder measured (left camera, mm)
-  int nOutFallback = 0;
+  int nOutFallback = 0;              //!< S_out points with no matched region pixel near them (the builder's count)
   std::vector<ModelPoint> dropped;   //!< S_in points without a reliable match
   vpHomogeneousMatrix photoHMo;      //!< the toy's pose in the hand frame when the photos were taken
   vpImage<float> trueDepth;          //!< ground truth: hand-frame z (mm) of the toy at each left photo pixel, NaN off it
@@ -49,7 +55,7 @@ struct SimulatedPhotoModel
   Phi truth(const vpHomogeneousMatrix &hMo) const { return fromHomogeneousMatrix(hMo * oMm); }
 };
 
-//! Photos by camera \e cam (w x h) at \e distanceMm, then the model. Throws pm::Error.
+//! Photos by camera \e cam (w x h pixels) at \e distanceMm, then the model (the scene's look-alike left out). Throws pm::Error.
 SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraParameters &cam, unsigned w, unsigned h,
                                             double distanceMm, const PhotoModelParams &params = PhotoModelParams());
 
@@ -57,8 +63,9 @@ SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraPa
   The stereo model of the toy at hMo = (0, 0, \e distanceMm) in the hand frame (facing the rig),
   from the rig's backdrop pair and photo pair. With \e viewTurnDeg > 0, four further pairs are taken
   with the hand moved around the scene by +-viewTurnDeg about its x and y axes (the toy's origin
-  staying in place) and the model holds their views too (a multi-view model). Throws pm::Error as
-  buildStereoPhotoModel().
+  staying in place) and the model holds their views too (a multi-view model). The scene's
+  look-alike is left out. Throws pm::Error unless \e distanceMm > 0 and \e viewTurnDeg is in
+  [0, 45], and as buildStereoPhotoModel().
 */
 SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const StereoRig &rig, double distanceMm = 500,
                                                   const StereoModelParams &params = StereoModelParams(),

@@ -23,7 +23,17 @@
 
 namespace pm::sim {
 
-//! The 12 targets: code, English name, nominal size (mm).
+/*!
+  The 12 targets: code, English name, nominal size (mm).
+  \code
+  for (const pm::sim::TargetInfo &t : pm::sim::labTargetCatalog())
+    std::cout << t.code << " " << t.name << ": " << t.widthMm << " x " << t.heightMm << " x " << t.depthMm << " mm\n";
+  pm::sim::TargetShape crab = pm::sim::makeTarget("c12");       // case-insensitive
+  crab.scaleRelief(0.5);                                        // half as thick
+  const pm::sim::Mesh mesh = pm::sim::buildTargetMesh(crab);    // what the renderer draws
+  const bool shadows = pm::sim::isReliefTarget(crab.info.code); // false: a sea creature
+  \endcode
+*/
 const std::vector<TargetInfo> &targetCatalog();
 /*!
   The relief targets: R1 poster box, R2 head on a stand, R3 pagoda tower (code, name, nominal size

@@ -23,21 +23,29 @@
 
 namespace pm::sim {
 
+//! What a target is called and its nominal size (an entry of the catalogues of TargetCatalog.h).
 struct TargetInfo
 {
   std::string code;     //!< "C12", or "user"
   std::string name;     //!< "crab"
-  double widthMm = 0;   //!< nominal extent along x
-  double heightMm = 0;  //!< nominal extent along y
-  double depthMm = 0;   //!< relief (thickness toward the viewer)
+  double widthMm = 0;   //!< nominal extent along x (mm)
+  double heightMm = 0;  //!< nominal extent along y (mm)
+  double depthMm = 0;   //!< relief (thickness toward the viewer, mm)
 };
 
+/*!
+  A 3-D target on a texel grid (see TargetShape.h): row-major grids of cols x rows texels, texel
+  (c, r) at x = (c - originCol) texelMm, y = (r - originRow) texelMm in the target frame. Made by
+  makeTarget(), targetFromImage() or flatPrint(); buildTargetMesh() makes its mesh.
+*/
 struct TargetShape
 {
-  TargetInfo info;
-  double texelMm = 0.25;
-  int cols = 0, rows = 0;
-  double originCol = 0, originRow = 0; //!< texel coordinates of the frame origin
+  TargetInfo info;        //!< code, name and nominal size
+  double texelMm = 0.25;  //!< texel size of the grids (mm)
+  //! Grid width (texels, along x).
+  int cols = 0, rows = 0; //!< grid height (texels, along y)
+  //! Column (texel coordinate, along x) of the frame origin.
+  double originCol = 0, originRow = 0; //!< row (texel coordinate, along y) of the frame origin
   std::vector<std::uint8_t> rgb;       //!< albedo, 3 per texel
   std::vector<float> sdf;              //!< signed distance to the outline (mm), negative inside
   std::vector<float> height;           //!< relief above the base (mm); continued linearly below 0 outside
@@ -66,6 +74,8 @@ struct TargetShape
   The height-field mesh of a target, vertices every \e stepMm (the outline itself is cut at
   the zero of the interpolated signed distance, much finer than the step). When the shape has an
   underside (TargetShape::base), a second sheet for it, cut by the same outline: a closed body.
+  Positions in metres in the target frame, the shape's colours as texture, Mesh::specular =
+  \e specular. Throws pm::Error for a grid smaller than 2 x 2 or grids that do not match its size.
 */
 Mesh buildTargetMesh(const TargetShape &shape, double stepMm = 1.0, float specular = 0.12f);
 
@@ -73,7 +83,8 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm = 1.0, float specul
   A target from a user's photo (PNG/JPEG): the image is the texture, \e widthMm its physical
   width (height by aspect ratio); the outline is the alpha channel where the image has one
   (alpha < 128 is outside), the whole rectangle otherwise; the default relief is a rounded
-  dome of \e depthMm (0: flat).
+  dome of \e depthMm (0: flat). Its code is "user", its origin the outline's centroid. Throws
+  pm::Error for an empty image, \e widthMm \<= 0, \e depthMm \< 0, or an alpha channel with nothing opaque.
 */
 TargetShape targetFromImage(const vpImage<vpRGBa> &image, double widthMm, double depthMm, const std::string &name);
 

@@ -15,22 +15,28 @@
 
 namespace pm::sim {
 
+/*!
+  The TC-robot that moves the target (see TcRobot.h): the target's pose at time t (seconds from
+  the start), in the world (wMo) or in the hand frame h0 at the start (phi). It owns a copy of
+  its trajectory.
+*/
 class TcRobot
 {
 public:
-  //! Waypoints (the target's pose in h0 at each step).
+  //! Waypoints \e steps (the target's pose in h0 at each step); \e wMh0: h0 in the world (metres).
   TcRobot(const vpHomogeneousMatrix &wMh0, const Trajectory &steps);
   /*!
-    A sinusoid of \e amplitude on variable \e axis (0..5: x, y, z in mm, eps1..3) around \e phi0.
-    Throws pm::Error if its peak velocity or acceleration exceeds the limits (mm/s and mm/s^2 for
-    positions, 1/s and 1/s^2 for eps).
+    A sinusoid of \e amplitude on variable \e axis (0..5: x, y, z in mm, eps1..3) around \e phi0,
+    at \e frequencyHz (\> 0). Throws pm::Error if its peak velocity or acceleration exceeds the
+    limits (mm/s and mm/s^2 for positions, 1/s and 1/s^2 for eps), for an axis out of range, or
+    if phi0 + |amplitude| on that axis is not a valid pose.
   */
   TcRobot(const vpHomogeneousMatrix &wMh0, const Phi &phi0, int axis, double amplitude, double frequencyHz,
           double maxVelocity, double maxAcceleration);
 
   Phi phi(double t) const;                  //!< the target's pose in h0
   vpHomogeneousMatrix wMo(double t) const;  //!< the target's pose in the world
-  bool moving(double t) const;
+  bool moving(double t) const;              //!< between two waypoints at \e t; always true for a sinusoid
   double duration() const;                  //!< of the steps; 0 for a sinusoid (endless)
 
 private:

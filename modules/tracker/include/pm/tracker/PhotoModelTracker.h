@@ -46,7 +46,12 @@
 
 namespace pm {
 
+/*!
+  The tracker's state (see the file's description): Searching after initialize(), until a first
+  lock; Tracking while q holds; Lost after lostFrames frames under lostQuality, until a new lock.
+*/
 enum class TrackState { Searching, Tracking, Lost };
+//! The state's name: "searching", "tracking" or "lost".
 const char *toString(TrackState s);
 
 //! The fitness the tracker uses: the paper's, except that image pixels less saturated than 0.1
@@ -76,6 +81,24 @@ inline RmGaParams trackerGaDefaults()
   uses (docs/rmga-tracker.md, "Which options"): 800 evaluations per frame, 15 % of them on steady
   frames with the hue within 24 px of the model, locks verified by 3,000 evaluations of a
   challenger; a configuration file (TrackerConfigFile.h) with no keys gives the same.
+  PhotoModelTracker copies them; validate() checks them.
+
+  \code
+#include <pm/io/PhotoModelFile.h>
+#include <pm/io/RigFile.h>
+#include <pm/tracker/PhotoModelTracker.h>
+
+int main()
+{
+  pm::TrackerParams params;         // the measured defaults
+  params.budgetEvaluations = 0;     // a wall-time budget instead of evaluations:
+  params.budgetMs = 30;             // 30 ms of search a frame
+  params.ga.seed = 7;               // another random sequence
+  params.confidence.threshold = 0.99; // trust fewer frames
+  params.validate();                // throws pm::Error naming the first value out of range
+  pm::PhotoModelTracker tracker(pm::io::loadRig("rig.json"), pm::io::loadPhotoModel("model.json"), params);
+}
+  \endcode
 */
 struct TrackerParams
 {
@@ -105,7 +128,7 @@ struct TrackerParams
   */
   double lockConfidence = 0.05;
   double lostQuality = 0.2;     //!< q below which, for lostFrames frames, it is lost
-  int lostFrames = 3;
+  int lostFrames = 3;           //!< frames in a row under lostQuality that make a tracked target lost (>= 1)
   double initSpread = 0.02;     //!< initFromPose: population spread, fraction of each range
   /*!
     Steady frames: once the target has been tracked for steadyAfterFrames frames in a row with q
@@ -115,8 +138,8 @@ struct TrackerParams
     the whole budget. 1: every frame the same.
   */
   double steadyBudgetFraction = 0.15;
-  int steadyAfterFrames = 3;
-  double steadyQualityDrop = 0.03;
+  int steadyAfterFrames = 3;    //!< tracked frames in a row near the recent best q before a frame is steady (>= 1)
+  double steadyQualityDrop = 0.03; //!< how far under its recent best q may lie and still count as steady (in q)
   /*!
     A steady frame whose q ends more than steadyQualityDrop under the recent best (the target
     started to move fast, a jump, an occlusion) gets the rest of the whole budget at once, on the
@@ -142,7 +165,7 @@ struct TrackerParams
     Table 2 errors by a few tenths either way, README).
   */
   int smoothRefineEvaluations = 0;
-  double smoothRefineMaxDrop = 0.01;
+  double smoothRefineMaxDrop = 0.01; //!< the simplex's pose is kept unless F there is this much under RM-GA's best (F's units)
   LocalSimplexParams smoothRefine; //!< its first steps (its evaluations: smoothRefineEvaluations)
 
   /*!
@@ -153,7 +176,7 @@ struct TrackerParams
     RM-GA's best by more than smoothAscentMaxDrop. smoothAscent.maxEvaluations 0: off.
   */
   SmoothAscentParams smoothAscent;
-  double smoothAscentMaxDrop = 0.02;
+  double smoothAscentMaxDrop = 0.02; //!< the climb's pose is kept unless F there is this much under RM-GA's best (F's units)
   /*!
     The tilt of the frame's pose smoothed from frame to frame (TiltFilter: alpha-beta on the
     rotation about the hand's x and y axes, which one viewpoint sees poorly), on tracked frames,
@@ -185,12 +208,12 @@ struct TrackerParams
     lock counts as verified).
   */
   long verifyEvaluations = 3000;
-  double verifyBudgetFraction = 0.5;
-  double verifyMargin = 0.02;
-  double verifySwitchMargin = 0.03;
-  double verifyFarMm = 20;
-  double verifyFarDeg = 5;
-  double verifySameObjectMm = 60;
+  double verifyBudgetFraction = 0.5; //!< the challenger's share of the whole frame budget while verifying, in (0, 1)
+  double verifyMargin = 0.02;        //!< in q: a same-object pose elsewhere scoring over the tracker's q minus this is as good (ambiguous)
+  double verifySwitchMargin = 0.03;  //!< in q: a challenger's pose this much above the tracker's takes over
+  double verifyFarMm = 20;           //!< a challenger's pose farther than this (mm) ...
+  double verifyFarDeg = 5;           //!< ... or turned more than this (deg) is elsewhere; confidence competitors turned less are ignored
+  double verifySameObjectMm = 60;    //!< a pose elsewhere but within this (mm) is another pose of the same object
   /*!
     A verified lock whose confidence stays under reverifyBelowConfidence this many tracked frames
     in a row is verified again (0: never): a wrong lock that the challenger missed, its confidence
@@ -198,27 +221,29 @@ struct TrackerParams
     occlusion) would be verified over and over, each time with half the frame's budget.
   */
   int reverifyAfterFrames = 15;
-  double reverifyBelowConfidence = 0.5;
+  double reverifyBelowConfidence = 0.5; //!< the confidence under which a tracked, verified frame counts toward reverifyAfterFrames
   //! How the frame's confidence is computed from its cues, and its threshold (TrackResult::trusted).
   ConfidenceModel confidence;
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
+  //! The whole frame budget: budgetEvaluations evaluations when positive, else budgetMs milliseconds.
   FrameBudget budget() const { return budgetEvaluations > 0 ? FrameBudget::evals(budgetEvaluations) : FrameBudget::ms(budgetMs); }
   //! The budget of a steady frame (see steadyBudgetFraction); never under one population's evaluations.
   FrameBudget steadyBudget() const;
 };
 
+//! What PhotoModelTracker::track() says about a frame (also kept: PhotoModelTracker::lastResult()).
 struct TrackResult
 {
   vpHomogeneousMatrix hMo;  //!< pose of the model in the hand frame (metres)
   Phi phi;                  //!< the same as phi (mm, quaternion vector)
   double fitness = 0;       //!< F at phi
   double quality = 0;       //!< q, the normalised fitness
-  TrackState state = TrackState::Searching;
+  TrackState state = TrackState::Searching; //!< the state after this frame
   long evaluations = 0;     //!< the work of RM-GA and the verification, in whole evaluations (see FrameResult)
   long candidates = 0;      //!< poses they scored
-  int generations = 0;
+  int generations = 0;      //!< RM-GA generations they ran
   double computeMs = 0;     //!< time spent in track()
   /*!
     Where it went (ms): the hue planes; the search (RM-GA, any escalation, the verification); the
@@ -238,6 +263,37 @@ struct TrackResult
   bool trusted = false;
 };
 
+/*!
+  The photo-model tracker (see the file's description): a stereo pair in, the pose hMo of the
+  model in the hand frame out, with its fitness, state and confidence. It copies the parameters
+  and what it needs of the rig and the model (none of them need outlive it); the images given to
+  track() are only read during the call. Not thread-safe: call it from one thread.
+
+  \code
+#include <iostream>
+#include <pm/io/ImageFile.h>
+#include <pm/io/PhotoModelFile.h>
+#include <pm/io/RigFile.h>
+#include <pm/tracker/PhotoModelTracker.h>
+
+int main()
+{
+  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::PhotoModel model = pm::io::loadPhotoModel("model.json");
+  pm::PhotoModelTracker tracker(rig, model); // the default TrackerParams
+  tracker.initialize();                      // search from scratch
+  for (int k = 0; k < 100; ++k) {
+    const vpImage<vpRGBa> IL = pm::io::readColorImage("left_" + std::to_string(k) + ".png");
+    const vpImage<vpRGBa> IR = pm::io::readColorImage("right_" + std::to_string(k) + ".png");
+    // eye-in-hand: tracker.applyHandMotion(hNowMhPrev) here, when the hand moved since the last frame
+    const pm::TrackResult r = tracker.track(IL, IR);
+    std::cout << pm::toString(r.state) << " q " << r.quality << " confidence " << r.confidence << "\n";
+    if (r.trusted) // tracking, verified, confident: a pose to act on
+      std::cout << "hMo (m):\n" << r.hMo << "\n";
+  }
+}
+  \endcode
+*/
 class PhotoModelTracker
 {
 public:
@@ -264,15 +320,21 @@ public:
   */
   void applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev);
 
+  //! hMo of the last frame, or the one given to initFromPose() (metres); moved by applyHandMotion().
   vpHomogeneousMatrix getPose() const { return m_last.hMo; }
+  //! The last frame's F (0 before the first frame).
   double getFitness() const { return m_last.fitness; }
+  //! The state after the last frame (Searching after initialize(), Tracking after initFromPose()).
   TrackState getState() const { return m_last.state; }
+  //! Everything the last track() returned (reset by initialize() and initFromPose()).
   const TrackResult &lastResult() const { return m_last; }
   //! q of a fitness value for this model.
   double quality(double fitness) const { return (fitness - m_fBackground) / (m_fMax - m_fBackground); }
-  //! The model at the current pose on both images, each point coloured by its score (see drawPointScores).
+  //! The model's points at the last pose in camera \e camera's image (0 left, 1 right), each with its score class (for drawing).
   std::vector<PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_last.phi, camera); }
+  //! The stereo fitness the tracker scores with (its hue planes: those of the last frame).
   const StereoFitness &fitness() const { return m_fitness; }
+  //! The parameters (the tracker's copy, validated).
   const TrackerParams &params() const { return m_params; }
   //! The tilt filter this model gets: TrackerParams::tiltFilterAllAround for an all-around model, tiltFilter otherwise.
   const TiltFilterParams &tiltFilter() const { return m_allAround ? m_params.tiltFilterAllAround : m_params.tiltFilter; }

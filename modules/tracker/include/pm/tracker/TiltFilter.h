@@ -24,20 +24,26 @@
 
 namespace pm {
 
+//! TiltFilter's gains and gate (alpha 1 and beta 0: off); validate() checks them.
 struct TiltFilterParams
 {
   double alpha = 0.2;  //!< share of the tilt residual taken each frame (1: no smoothing)
   double beta = 0.02;  //!< share taken into the angular velocity (per frame)
-  double gateDeg = 5;  //!< a measurement farther from the prediction restarts the filter
+  double gateDeg = 5;  //!< a measurement whose tilt lies farther from the prediction (deg) restarts the filter
 
   //! alpha 1 and beta 0: the filter passes every pose unchanged.
   bool passesThrough() const { return alpha >= 1 && beta <= 0; }
   void validate() const; //!< throws pm::Error unless 0 < alpha <= 1, 0 <= beta < 1 and gateDeg > 0
 };
 
+/*!
+  The alpha-beta filter of the tilt (see the file's description): a state of one pose and a tilt
+  velocity (rad per frame) about the hand's x and y axes.
+*/
 class TiltFilter
 {
 public:
+  //! Copies and checks \e params (throws pm::Error if invalid); no state until the first update().
   explicit TiltFilter(const TiltFilterParams &params = TiltFilterParams());
   //! This frame's pose \e measured (valid); returns it with its tilt filtered.
   Phi update(const Phi &measured);
@@ -45,6 +51,7 @@ public:
   void reset() { m_has = false; }
   //! The hand moved by \e hNowMhPrev (the previous hand frame seen from the current one).
   void transform(const vpHomogeneousMatrix &hNowMhPrev);
+  //! True once update() has a pose to predict from (never when the filter passes through).
   bool hasState() const { return m_has; }
 
 private:

@@ -32,6 +32,7 @@
 
 namespace pm {
 
+//! The cues of one frame (see the file's description); the tracker fills them in TrackResult::cues.
 struct ConfidenceCues
 {
   double quality = 0;        //!< q of the best pose
@@ -47,21 +48,49 @@ struct ConfidenceCues
   bool verified = false;     //!< the lock survived its challenger search
   bool tracking = false;     //!< the state is tracking
 
-  static constexpr std::size_t kFeatures = 12;
+  static constexpr std::size_t kFeatures = 12; //!< the number of features
   //! The features the logistic model weighs (the jumps as log1p, the frames capped at 30, then / 30, the tilt / 10).
   std::array<double, kFeatures> features() const;
+  //! The features' names, in the order of features() ("quality", "quality_min", ..., "tracking").
   static const std::array<const char *, kFeatures> &featureNames();
 };
 
+/*!
+  The logistic model that turns a frame's cues into its confidence, with the threshold of trust.
+  The default-constructed model is the shipped one (threshold 0.95); the tracker's is
+  TrackerParams::confidence.
+
+  \code
+#include <iostream>
+#include <pm/tracker/TrackConfidence.h>
+
+int main()
+{
+  pm::ConfidenceCues cues; // in a program: TrackResult::cues of the frame
+  cues.quality = 0.6;
+  cues.qualityMin = 0.55;
+  cues.inMatchMin = 0.8;
+  cues.outBackgroundMin = 0.9;
+  cues.competitorMargin = 0.2;
+  cues.framesTracked = 30;
+  cues.verified = true;
+  cues.tracking = true;
+  const pm::ConfidenceModel m; // the shipped coefficients
+  const double c = m.confidence(cues);
+  std::cout << "confidence " << c << (c >= m.threshold ? ": trusted" : ": not trusted") << "\n";
+}
+  \endcode
+*/
 struct ConfidenceModel
 {
   //! Weights of the features, then the bias: confidence = 1 / (1 + exp(-(w . x + b))).
   std::array<double, ConfidenceCues::kFeatures> weights{};
-  double bias = 0;
-  double threshold = 0.5; //!< the confidence from which an estimate is trusted
+  double bias = 0;        //!< the bias b
+  double threshold = 0.5; //!< the confidence from which an estimate is trusted (the constructor sets 0.95)
 
   //! The shipped model (fitted by pm-confidence, see README "Trust").
   ConfidenceModel();
+  //! 1 / (1 + exp(-(w . x + b))) with x = c.features(): in (0, 1).
   double confidence(const ConfidenceCues &c) const;
   //! Throws pm::Error if a coefficient is not finite or the threshold is outside (0, 1).
   void validate() const;
