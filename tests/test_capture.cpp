@@ -176,6 +176,34 @@ TEST(ImageSequence, UnreadablePairsAreSkippedAndCounted)
   EXPECT_NE(errorOf([&] { pm::capture::frameFileName("L_%s.png", 1); }).find("frame-number field"), std::string::npos);
 }
 
+TEST(ImageSequence, ListsOfFilesArePairedInOrder)
+{
+  TempDir d("sequence-list");
+  std::vector<std::string> left, right;
+  for (int k = 0; k < 3; ++k) { // names that no pattern would give, and a colour per pair
+    left.push_back(d.file("left-" + std::string(1, static_cast<char>('c' - k)) + ".png"));
+    right.push_back(d.file("right-" + std::to_string(10 * k) + ".png"));
+    pm::io::writeImage(vpImage<vpRGBa>(48, 64, vpRGBa(static_cast<unsigned char>(10 * k), 0, 0)), left.back());
+    pm::io::writeImage(vpImage<vpRGBa>(48, 64, vpRGBa(0, static_cast<unsigned char>(10 * k), 0)), right.back());
+  }
+  pm::capture::ImageSequenceSource src(left, right, 10.0, 64, 48);
+  EXPECT_EQ(src.length(), 3);
+  pm::capture::StereoFrame f;
+  for (long k = 0; k < 3; ++k) {
+    ASSERT_TRUE(src.next(f));
+    EXPECT_EQ(f.index, k);
+    EXPECT_DOUBLE_EQ(f.timeS, 0.1 * static_cast<double>(k));
+    EXPECT_EQ(f.left[0][0].R, 10 * k); // the k-th files, in the order given
+    EXPECT_EQ(f.right[0][0].G, 10 * k);
+  }
+  EXPECT_FALSE(src.next(f));
+  EXPECT_EQ(pm::capture::ImageSequenceSource(left, right, 10.0, 0, 0, 2).length(), 2); // maxFrames
+  EXPECT_NE(errorOf([&] { pm::capture::ImageSequenceSource(left, {right[0]}, 10.0); }).find("3 left images but 1 right"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::capture::ImageSequenceSource(std::vector<std::string>{}, {}, 10.0); }).find("0 left images"),
+            std::string::npos);
+}
+
 TEST(PmTrack, TracksTwoVideoStreamsAndShowsThemInAViSPWindow)
 {
   TempDir d("track-video");

@@ -52,10 +52,33 @@ ImageSequenceSource::ImageSequenceSource(const std::string &leftPattern, const s
     throw Error("image sequence: the frame rate must be positive");
   auto exists = [](const std::string &f) { return std::filesystem::exists(f); };
   while ((maxFrames <= 0 || m_length < maxFrames) &&
-         (exists(frameFileName(m_left, m_first + m_length)) || exists(frameFileName(m_right, m_first + m_length))))
+         (exists(frameFileName(m_left, m_first + m_length)) || exists(frameFileName(m_right, m_first + m_length)))) {
+    m_files[0].push_back(frameFileName(m_left, m_first + m_length));
+    m_files[1].push_back(frameFileName(m_right, m_first + m_length));
     ++m_length;
+  }
   if (m_length == 0)
     throw Error("the sequence is empty: no frame " + frameFileName(m_left, m_first) + " nor " + frameFileName(m_right, m_first));
+}
+
+ImageSequenceSource::ImageSequenceSource(std::vector<std::string> leftFiles, std::vector<std::string> rightFiles, double fps,
+                                         unsigned width, unsigned height, long maxFrames)
+    : m_fps(fps), m_w(width), m_h(height)
+{
+  if (!(fps > 0))
+    throw Error("image sequence: the frame rate must be positive");
+  if (leftFiles.empty() || leftFiles.size() != rightFiles.size())
+    throw Error("image sequence: " + std::to_string(leftFiles.size()) + " left images but " +
+                std::to_string(rightFiles.size()) + " right ones (pairs are taken in order; both lists must be as long, and not empty)");
+  if (maxFrames > 0 && static_cast<long>(leftFiles.size()) > maxFrames) {
+    leftFiles.resize(static_cast<std::size_t>(maxFrames));
+    rightFiles.resize(static_cast<std::size_t>(maxFrames));
+  }
+  m_length = static_cast<long>(leftFiles.size());
+  m_left = leftFiles.front() + (m_length > 1 ? " (and " + std::to_string(m_length - 1) + " more)" : "");
+  m_right = rightFiles.front() + (m_length > 1 ? " (and " + std::to_string(m_length - 1) + " more)" : "");
+  m_files[0] = std::move(leftFiles);
+  m_files[1] = std::move(rightFiles);
 }
 
 bool ImageSequenceSource::next(StereoFrame &f)
@@ -67,8 +90,8 @@ bool ImageSequenceSource::next(StereoFrame &f)
     f.skewMs = 0;
     ++m_pos;
     try {
-      f.left = io::readColorImage(frameFileName(m_left, idx));
-      f.right = io::readColorImage(frameFileName(m_right, idx));
+      f.left = io::readColorImage(m_files[0][static_cast<std::size_t>(m_pos - 1)]);
+      f.right = io::readColorImage(m_files[1][static_cast<std::size_t>(m_pos - 1)]);
       if (m_w && m_h &&
           (f.left.getWidth() != m_w || f.left.getHeight() != m_h || f.right.getWidth() != m_w || f.right.getHeight() != m_h))
         throw Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");

@@ -8,6 +8,9 @@
 
       pm::capture::ImageSequenceSource src("rec/L_%04d.png", "rec/R_%04d.png", 0, 30.0, 640, 480);
 */
+#include <string>
+#include <vector>
+
 #include "pm/capture/StereoSource.h"
 
 namespace pm::capture {
@@ -37,19 +40,27 @@ public:
   ImageSequenceSource(const std::string &leftPattern, const std::string &rightPattern, int firstFrame, double fps,
                       unsigned width = 0, unsigned height = 0, long maxFrames = 0);
   /*!
+    The pairs (\e leftFiles[k], \e rightFiles[k]) in order, numbered from 0, at \e fps frames per
+    second; \e width, \e height and \e maxFrames as above. Throws pm::Error if the lists are empty or
+    of different lengths, or for fps \<= 0.
+  */
+  ImageSequenceSource(std::vector<std::string> leftFiles, std::vector<std::string> rightFiles, double fps,
+                      unsigned width = 0, unsigned height = 0, long maxFrames = 0);
+  /*!
     The next readable pair: StereoFrame::index is its file index, timeS (index - firstFrame) / fps,
     skewMs 0. A pair that cannot be read or has the wrong size is skipped (SourceStats::skipped,
     SourceStats::problems). False after the last frame.
   */
   bool next(StereoFrame &f) override;
-  //! "recorded sequence " and the two patterns.
+  //! "recorded sequence " and the two patterns (or the first files and their count).
   std::string describe() const override;
   //! Frames in the sequence (readable or not).
   long length() const { return m_length; }
 
 private:
-  std::string m_left, m_right;
-  int m_first;
+  std::string m_left, m_right;          // the patterns, or the first files
+  std::vector<std::string> m_files[2];  // the files of each camera, frame by frame
+  int m_first = 0;
   double m_fps;
   unsigned m_w, m_h;
   long m_length = 0, m_pos = 0;
