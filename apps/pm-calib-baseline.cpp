@@ -57,7 +57,8 @@ int main(int argc, char **argv)
                "it does not (baseline or rotation beyond the tolerances), 1 for errors.",
                "pm-calib-baseline"};
   app.option_defaults()->always_capture_default();
-  std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trueRigPath, leftPattern, rightPattern, boardText, patternKind = "tags";
+  std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trueRigPath, boardText, patternKind = "tags";
+  std::vector<std::string> leftImages, rightImages;
   int simulate = 0, firstFrame = 0, handEye = 0;
   double tolMm = 1.0, tolDeg = 0.3, handEyeTolMm = 3.0, handEyeTolDeg = 0.5, blurPx = 0.7;
   bool quiet = false;
@@ -67,15 +68,15 @@ int main(int argc, char **argv)
   app.add_option("--rig", rigPath, "the rig file to check");
   auto *optSim = app.add_option("--simulate", simulate, "render N stereo pairs of the board")->check(CLI::Range(1, 1000));
   app.add_option("--true-rig", trueRigPath, "simulation: the rig that takes the pictures (default: the lab's)")->needs(optSim);
-  auto *optL = app.add_option("--left-images", leftPattern, "left images, printf pattern (e.g. L_%02d.png)");
-  auto *optR = app.add_option("--right-images", rightPattern, "right images, printf pattern");
+  auto *optL = app.add_option("--left", leftImages, "left images: a printf pattern (e.g. L_%02d.png, from --first-frame), or files in pair order");
+  auto *optR = app.add_option("--right", rightImages, "right images, the same way");
   optL->needs(optR)->excludes(optSim);
   optR->needs(optL);
   app.add_option("--hand-eye", handEye, "simulation: also move the PA-10 through M poses in front of a fixed board and "
                                        "estimate each camera's hMc with vpHandEyeCalibration")
       ->needs(optSim)
       ->check(CLI::Range(3, 1000));
-  app.add_option("--first-frame", firstFrame, "index of the first image pair")->check(CLI::Range(0, 100000000));
+  app.add_option("--first-frame", firstFrame, "with a pattern: index of the first image pair")->check(CLI::Range(0, 100000000));
   app.add_option("--pattern", patternKind, "tags: an AprilTag 36h11 board; chessboard: OpenCV's corner finder")
       ->check(CLI::IsMember({"tags", "chessboard"}));
   app.add_option("--board", boardText, "the pattern's layout. tags: rows,cols,tag_size_mm,pitch_mm (ids from 0, row by row; "
@@ -90,8 +91,8 @@ int main(int argc, char **argv)
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    if (!simulate && leftPattern.empty())
-      throw CLI::ValidationError("--simulate or --left-images/--right-images", "one of them is needed");
+    if (!simulate && leftImages.empty())
+      throw CLI::ValidationError("--simulate or --left/--right", "one of them is needed");
     const std::unique_ptr<pm::calib::Pattern> pattern = pm::app::makePattern(patternKind, boardText);
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     std::vector<vpHomogeneousMatrix> perPair;
@@ -138,13 +139,13 @@ int main(int argc, char **argv)
       progress.finish();
       source = "simulation, " + std::to_string(simulate) + " pairs";
     } else {
-      int k = firstFrame;
-      for (; std::filesystem::exists(pm::app::frameFileName(leftPattern, k)) || std::filesystem::exists(pm::app::frameFileName(rightPattern, k)); ++k)
-        usePair(pm::io::readColorImage(pm::app::frameFileName(leftPattern, k)), pm::io::readColorImage(pm::app::frameFileName(rightPattern, k)),
-                "pair " + std::to_string(k));
-      if (k == firstFrame)
-        throw pm::Error("no image pair " + pm::app::frameFileName(leftPattern, firstFrame) + " / " + pm::app::frameFileName(rightPattern, firstFrame));
-      source = "images " + leftPattern + " + " + rightPattern;
+      const std::vector<std::string> lf = pm::app::imageFiles(leftImages, firstFrame), rf = pm::app::imageFiles(rightImages, firstFrame);
+      if (lf.size() != rf.size())
+        throw pm::Error(std::to_string(lf.size()) + " left images but " + std::to_string(rf.size()) + " right ones (pairs are taken in order)");
+      for (std::size_t i = 0; i < lf.size(); ++i)
+        usePair(pm::io::readColorImage(lf[i]), pm::io::readColorImage(rf[i]),
+                "pair " + std::to_string(pm::app::isImagePattern(leftImages) ? static_cast<long>(i) + firstFrame : static_cast<long>(i)));
+      source = "images " + lf.front() + " + " + rf.front() + (lf.size() > 1 ? " and " + std::to_string(lf.size() - 1) + " more pairs" : "");
     }
     const pm::calib::BaselineResult r = pm::calib::aggregateBaseline(perPair, rms, rig);
     // Hand-eye: the PA-10 moves the rig around a board fixed in the world; each camera's board
@@ -251,5 +252,5 @@ int main(int argc, char **argv)
                   << handEyeJson[c]["rotation_error_deg"].get<double>() << " deg (" << handEyeJson[c]["poses"].get<std::size_t>()
                   << " poses)" << std::endl;
     return agrees && handEyeAgrees ? 0 : 3;
-  });
+  }, {{"--left-images", "--left", {}}, {"--right-images", "--right", {}}});
 }

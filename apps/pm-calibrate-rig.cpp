@@ -50,8 +50,8 @@ int main(int argc, char **argv)
   pm::calib::RigCalibrationParams params;
   pm::lab::SimulatedCalibrationParams simParams;
   app.add_option("--out", out, "output folder (created if missing)")->required();
-  auto *optL = app.add_option("--left", leftFiles, "left images, in pair order (e.g. data/left*.jpg)");
-  auto *optR = app.add_option("--right", rightFiles, "right images, in the same order");
+  auto *optL = app.add_option("--left", leftFiles, "left images: files in pair order (e.g. data/left*.jpg), or a printf pattern (e.g. L_%02d.png, from 0)");
+  auto *optR = app.add_option("--right", rightFiles, "right images, the same way");
   auto *optSim = app.add_option("--simulate", simulate, "lab: render N chessboard pairs through a known rig with distortion")
                      ->check(CLI::Range(3, 1000));
   optL->needs(optR)->excludes(optSim);
@@ -78,6 +78,8 @@ int main(int argc, char **argv)
   return pm::app::run(app, argc, argv, [&] {
     if (!simulate && leftFiles.empty())
       throw CLI::ValidationError("--left/--right or --simulate", "one of them is needed");
+    leftFiles = pm::app::imageFiles(leftFiles);
+    rightFiles = pm::app::imageFiles(rightFiles);
     if (leftFiles.size() != rightFiles.size())
       throw CLI::ValidationError("--left/--right", std::to_string(leftFiles.size()) + " left images but " +
                                                        std::to_string(rightFiles.size()) + " right ones");

@@ -120,7 +120,7 @@ int main(int argc, char **argv)
                "summary.json; --freq-sweep writes a Bode plot of the tracking.",
                "pm-servo"};
   app.option_defaults()->always_capture_default();
-  std::string out = "results/servo", target = "C12", trajectory = "steps", axis = "x";
+  std::string out = "results/servo", target = "C12", motion = "steps", axis = "x";
   std::string stepsPath = pm::app::dataPath("trajectories/table2.csv"), rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   double holdS = 1.5, moveS = 2.0, amplitude = 50, frequency = 0.5, durationS = 0, fps = 30;
   double maxVelocity = 300, maxAcceleration = 1500;
@@ -132,8 +132,8 @@ int main(int argc, char **argv)
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)");
   app.add_option("--target", target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
-  app.add_option("--trajectory", trajectory, "the TC-robot's motion: steps (Table 2) or sine")->check(CLI::IsMember({"steps", "sine"}));
-  app.add_option("--steps-file", stepsPath, "waypoints of the steps (step,x,y,z,e1,e2,e3, in the hand frame at the start)");
+  app.add_option("--motion", motion, "the TC-robot's motion: steps (the waypoints of --trajectory) or sine")->check(CLI::IsMember({"steps", "sine"}));
+  app.add_option("--trajectory", stepsPath, "waypoints of the steps (step,x,y,z,e1,e2,e3, in the hand frame at the start)");
   app.add_option("--steps", steps, "use only the first N waypoints (0: all)")->check(CLI::Range(0, 100000));
   app.add_option("--hold-s", holdS, "steps: time each is held (s)")->check(CLI::Range(0.0, 3600.0));
   app.add_option("--move-s", moveS, "steps: duration of each move (s; 2 s, since the PA-10's joint speeds cannot orbit "
@@ -177,7 +177,7 @@ int main(int argc, char **argv)
     const int ax = axisIndex(axis);
     const pm::Phi phi0{0, 0, 500, 0, 0, 0};
     std::vector<pm::Phi> waypoints;
-    if (trajectory == "steps") {
+    if (motion == "steps") {
       for (const auto &row : pm::io::readPoseTable(stepsPath, "step"))
         waypoints.push_back(row.second);
       if (steps > 0 && steps < static_cast<int>(waypoints.size()))
@@ -253,12 +253,12 @@ int main(int argc, char **argv)
     }
 
     const double seconds = durationS > 0 ? durationS
-                                         : (trajectory == "steps" ? pm::sim::Trajectory(waypoints, holdS, moveS).duration() : 20.0);
+                                         : (motion == "steps" ? pm::sim::Trajectory(waypoints, holdS, moveS).duration() : 20.0);
     const long nFrames = static_cast<long>(std::floor(seconds * fps)) + 1;
     pm::app::Progress progress("servoing", static_cast<std::size_t>(nFrames), quiet);
     // The run, with its recordings (video and overlays need the images of each frame).
     auto makeTc = [&](const vpHomogeneousMatrix &wMh0) -> std::unique_ptr<pm::sim::TcRobot> {
-      if (trajectory == "steps")
+      if (motion == "steps")
         return std::make_unique<pm::sim::TcRobot>(wMh0, pm::sim::Trajectory(waypoints, holdS, moveS));
       return std::make_unique<pm::sim::TcRobot>(wMh0, phi0, ax, amplitude, frequency, maxVelocity, maxAcceleration);
     };
@@ -370,7 +370,7 @@ int main(int argc, char **argv)
       memory.push_back(std::isfinite(m) ? nlohmann::json(m) : nlohmann::json());
     const nlohmann::json summary{
         {"target", scene.target().info.code},
-        {"trajectory", trajectory == "steps" ? "steps (" + std::to_string(waypoints.size()) + ")" : "sine " + axis + " " + std::to_string(amplitude) + " at " + std::to_string(frequency) + " Hz"},
+        {"trajectory", motion == "steps" ? "steps (" + std::to_string(waypoints.size()) + ")" : "sine " + axis + " " + std::to_string(amplitude) + " at " + std::to_string(frequency) + " Hz"},
         {"oracle", lp.oracle},
         {"frames", log.frames()},
         {"converged_after_s", log.converged() ? nlohmann::json(log.convergedAfterS()) : nlohmann::json()},
@@ -421,5 +421,5 @@ int main(int argc, char **argv)
                 << (noVideo ? "" : "servo.avi, ") << "summary.json)" << std::endl;
     }
     return 0;
-  });
+  }, {{"--trajectory", "--motion", {"steps", "sine"}}, {"--steps-file", "--trajectory", {}}});
 }

@@ -55,15 +55,16 @@ int main(int argc, char **argv)
   CLI::App app{"Real-time tracking (the paper's Sec. 6): the PT-robot is fixed, the target moves through the 20 steps "
                "of Table 2 (smooth moves of bounded velocity and acceleration), the cameras run at 30 fps, and the "
                "tracker, started from a random population with no initial pose, gets --budget-ms (or --budget-evals) of "
-               "compute per stereo frame. Also runs on a recorded stereo sequence (--left-images, --right-images). Writes "
-               "frames.csv, trajectory.png (estimate against truth), errors.png and summary.json.",
+               "compute per stereo frame. Also runs on a recorded stereo sequence (--left, --right) or live cameras (--left-source, "
+               "--right-source). Writes frames.csv, trajectory.png (estimate against truth), errors.png and summary.json.",
                "pm-track"};
   app.option_defaults()->always_capture_default();
   std::string out, target = "C12", trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
-  std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json"), leftPattern, rightPattern, modelPath, truthPath;
+  std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json"), modelPath, truthPath;
+  std::vector<std::string> leftImages, rightImages;
   double holdS = 1.5, moveS = 1.0, fps = 30, durationS = 0;
   int firstFrame = 0, steps = 0;
-  bool quiet = false, display = false;
+  bool quiet = false, display = false, savePairs = false;
   std::string leftSource, rightSource;
   pm::capture::VideoCaptureParams vcp;
   pm::app::LabModelChoice lab;
@@ -76,8 +77,8 @@ int main(int argc, char **argv)
   app.add_option("--steps", steps, "use only the first N waypoints (0: all)")->check(CLI::Range(0, 100000));
   app.add_option("--duration-s", durationS, "stop after this long (0: the whole trajectory)")->check(CLI::Range(0.0, 1e6));
   app.add_option("--fps", fps, "camera frame rate")->check(CLI::Range(1.0, 1000.0));
-  auto *optL = app.add_option("--left-images", leftPattern, "recorded sequence: left images, printf pattern (e.g. L_%04d.png)");
-  auto *optR = app.add_option("--right-images", rightPattern, "recorded sequence: right images, printf pattern");
+  auto *optL = app.add_option("--left", leftImages, "recorded sequence: left images, a printf pattern (e.g. L_%04d.png, from --first-frame) or files in pair order");
+  auto *optR = app.add_option("--right", rightImages, "recorded sequence: right images, the same way");
   auto *optM = app.add_option("--model", modelPath, "recorded sequence: photo-model file");
   auto *optT = app.add_option("--truth", truthPath, "recorded sequence: ground truth, rows frame,x,y,z,e1,e2,e3");
   auto *optLS = app.add_option("--left-source", leftSource, "live: the left camera through OpenCV's VideoCapture: a device "
@@ -100,17 +101,20 @@ int main(int argc, char **argv)
   pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
   pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
+  app.add_flag("--save-pairs", savePairs, "also write every stereo pair tracked, left_%04d.png and right_%04d.png (and, "
+                                          "on the simulator, its truth in truth.csv): a recording that --left, --right and "
+                                          "--truth replay");
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
     const pm::TrackerParams tp = trackerOptions.resolve();
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     const bool live = !leftSource.empty();
-    const bool recorded = !leftPattern.empty() || live;
-    if (!leftPattern.empty()) { // check both patterns before anything else
-      pm::app::frameFileName(leftPattern, 0);
-      pm::app::frameFileName(rightPattern, 0);
-    }
+    const bool recorded = !leftImages.empty() || live;
+    if (pm::app::isImagePattern(leftImages)) // check both patterns before anything else
+      pm::app::frameFileName(leftImages.front(), 0);
+    if (pm::app::isImagePattern(rightImages))
+      pm::app::frameFileName(rightImages.front(), 0);
 
     pm::PhotoModel model;
     std::unique_ptr<pm::sim::Scene> scene;
@@ -130,9 +134,13 @@ int main(int argc, char **argv)
         input = std::make_unique<pm::capture::VideoCaptureSource>(leftSource, rightSource, vcp);
         nFrames = static_cast<int>(vcp.maxPairs);
       } else {
-        auto seq = std::make_unique<pm::capture::ImageSequenceSource>(
-            leftPattern, rightPattern, firstFrame, fps, rig.left.width, rig.left.height,
-            durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0);
+        const long maxFrames = durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0;
+        auto seq = pm::app::isImagePattern(leftImages) && pm::app::isImagePattern(rightImages)
+                       ? std::make_unique<pm::capture::ImageSequenceSource>(leftImages.front(), rightImages.front(), firstFrame,
+                                                                            fps, rig.left.width, rig.left.height, maxFrames)
+                       : std::make_unique<pm::capture::ImageSequenceSource>(pm::app::imageFiles(leftImages, firstFrame),
+                                                                            pm::app::imageFiles(rightImages, firstFrame), fps,
+                                                                            rig.left.width, rig.left.height, maxFrames);
         nFrames = static_cast<int>(seq->length());
         input = std::move(seq);
       }
@@ -156,6 +164,11 @@ int main(int argc, char **argv)
 
     pm::PhotoModelTracker tracker(rig, model, tp);
     tracker.initialize(); // no initial pose: a random population
+    pm::io::StagedFiles files(out);
+    std::ofstream truthCsv;
+    if (savePairs && !recorded)
+      truthCsv.open(files.stage("truth.csv"));
+    truthCsv << "frame,x,y,z,e1,e2,e3\n" << std::setprecision(10);
     std::vector<FrameRecord> rec;
     rec.reserve(static_cast<std::size_t>(nFrames));
     vpImage<vpRGBa> firstL, firstR, lastL, lastR;
@@ -197,6 +210,16 @@ int main(int argc, char **argv)
         f.haveTruth = true;
         f.truth = pm::fromHomogeneousMatrix(hMo * oMm);
         f.moving = trajectory->moving(f.t);
+      }
+      if (savePairs) {
+        char name[32];
+        std::snprintf(name, sizeof name, "left_%04d.png", k);
+        pm::io::writeImage(IL, files.stage(name));
+        std::snprintf(name, sizeof name, "right_%04d.png", k);
+        pm::io::writeImage(IR, files.stage(name));
+        if (f.haveTruth && !recorded)
+          truthCsv << k << "," << f.truth[0] << "," << f.truth[1] << "," << f.truth[2] << "," << f.truth[3] << ","
+                   << f.truth[4] << "," << f.truth[5] << "\n";
       }
       f.r = tracker.track(IL, IR);
       f.estimate = f.r.phi;
@@ -283,7 +306,9 @@ int main(int argc, char **argv)
       ++states[pm::toString(f.r.state)];
     }
 
-    pm::io::StagedFiles files(out);
+    if (truthCsv.is_open() && !truthCsv.flush())
+      throw pm::Error("cannot write " + files.finalPath("truth.csv"));
+    truthCsv.close();
     {
       std::ofstream csv(files.stage("frames.csv"));
       csv << "t,true_x,true_y,true_z,true_e1,true_e2,true_e3,est_x,est_y,est_z,est_e1,est_e2,est_e3,err_x,err_y,err_z,"
@@ -382,9 +407,11 @@ int main(int argc, char **argv)
                     << errors[kNames[i]]["rms_error"].get<double>() << ", max " << errors[kNames[i]]["max_abs_error"].get<double>()
                     << " (goal " << goal[i] << ")\n";
       std::cout << std::setprecision(2) << "  compute per frame: mean " << meanMs << " ms, p99 " << p99Ms << " ms ("
-                << tp.budget().milliseconds << " ms / " << tp.budget().evaluations << " evaluations budget)\n"
+                << (tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations"
+                                             : std::to_string(tp.budgetMs) + " ms")
+                << " budget)\n"
                 << "  written to " << files.dir() << "/" << std::endl;
     }
     return 0;
-  });
+  }, {{"--left-images", "--left", {}}, {"--right-images", "--right", {}}});
 }

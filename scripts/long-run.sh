@@ -27,7 +27,7 @@ duration=$(awk -v n="$frames" 'BEGIN { printf "%.4f", (n - 1) / 30 }')
 mkdir -p "$(dirname "$out")"
 rss="$(mktemp)"
 trap 'rm -f "$rss"' EXIT
-"$PM_BUILD_DIR/apps/pm-servo" --trajectory sine --duration-s "$duration" --no-video \
+"$PM_BUILD_DIR/apps/pm-servo" --motion sine --duration-s "$duration" --no-video \
   --overlay-every 0 --out "$out" "$@" &
 pid=$!
 start=$(date +%s)

@@ -1,10 +1,14 @@
 // The programs' contract: --help, usage errors (2), runtime errors (1, one line "error: ..."),
 // no half-written output, and the outputs of a successful run.
+#include <set>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <cctype>
+#include <set>
 #include <tuple>
 #include <filesystem>
 
@@ -44,6 +48,59 @@ TEST(Apps, HelpExitsZeroAndShowsDefaults)
     EXPECT_NE(r.out.find(std::string(p) == "pm-bench" ? "benchmark" : "--out"), std::string::npos) << p;
   }
   EXPECT_NE(runProgram("pm-make-model", "--help").out.find("500"), std::string::npos); // default distance shown
+}
+
+// One vocabulary (docs/programs.md): the same name for the same thing in every program.
+TEST(Apps, EveryProgramSpeaksTheSameVocabulary)
+{
+  auto options = [](const std::string &help) { // every --name the help lists
+    std::set<std::string> names;
+    for (std::size_t i = help.find("--"); i != std::string::npos; i = help.find("--", i + 2)) {
+      std::size_t j = i + 2;
+      while (j < help.size() && (std::isalnum(static_cast<unsigned char>(help[j])) || help[j] == '-'))
+        ++j;
+      names.insert(help.substr(i, j - i));
+    }
+    return names;
+  };
+  // Old spellings, and names that mean something else elsewhere: never listed.
+  const std::set<std::string> retired{"--left-images", "--right-images", "--steps-file", "--left-files", "--images",
+                                      "--output", "--out-dir", "--model-file", "--rig-file", "--random-seed", "--silent"};
+  int withImages = 0, withRig = 0;
+  for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
+                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence"}) {
+    const auto r = runProgram(p, "--help");
+    ASSERT_EQ(r.status, 0) << p;
+    const std::set<std::string> o = options(r.out);
+    EXPECT_TRUE(o.count("--out") && o.count("--quiet")) << p << ": every program writes to --out and is silenced by --quiet";
+    for (const auto &old : retired)
+      EXPECT_FALSE(o.count(old)) << p << " lists " << old;
+    // Stereo images from files are --left / --right, always together.
+    EXPECT_EQ(o.count("--left"), o.count("--right")) << p;
+    withImages += static_cast<int>(o.count("--left"));
+    // The live cameras are --left-source / --right-source; a recording's first frame is --first-frame.
+    EXPECT_EQ(o.count("--left-source"), o.count("--right-source")) << p;
+    withRig += static_cast<int>(o.count("--rig"));
+    // A simulated target is --target; a model file is --model; a GA budget is --budget-evals.
+    if (o.count("--budget-ms")) {
+      EXPECT_TRUE(o.count("--budget-evals")) << p;
+    }
+  }
+  EXPECT_EQ(withImages, 5); // pm-fitness-map, pm-detect, pm-track, pm-calib-baseline, pm-calibrate-rig
+  EXPECT_GE(withRig, 9);
+
+  // An old spelling still works, with one line on stderr naming the new one.
+  TempDir d("vocabulary");
+  const auto r = runProgram("pm-track", "--left-images " + d.file("none_%d.png") + " --right-images " + d.file("none_%d.png") +
+                                            " --model " + d.file("m.json") + " --quiet --out " + d.file("o"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("pm-track: --left-images is deprecated, use --left\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--right-images is deprecated, use --right"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("error: "), std::string::npos) << r.err;
+  const auto s = runProgram("pm-servo", "--trajectory sine --steps-file x.csv --help");
+  EXPECT_EQ(s.status, 0);
+  EXPECT_NE(s.err.find("--trajectory sine is deprecated, use --motion sine"), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("--steps-file is deprecated, use --trajectory"), std::string::npos) << s.err;
 }
 
 TEST(Apps, UsageErrorsExitTwo)
@@ -188,7 +245,7 @@ TEST(Apps, TrackRunsOnARecordedSequenceAndSkipsAnUnreadableFrame)
   TempDir d("seq");
   writeSequence(d);
   pm::test::writeText(d.file("L_0002.png"), "not a png"); // a broken frame in the middle
-  const std::string seq = " --left-images " + d.file("L_%04d.png") + " --right-images " + d.file("R_%04d.png") +
+  const std::string seq = " --left " + d.file("L_%04d.png") + " --right " + d.file("R_%04d.png") +
                           " --model " + d.file("model.json");
   const auto r = runProgram("pm-track", "--quiet --budget-evals 600 --truth " + d.file("truth.csv") + seq + " --out " + d.file("out"));
   ASSERT_EQ(r.status, 0) << r.err;
@@ -200,10 +257,10 @@ TEST(Apps, TrackRunsOnARecordedSequenceAndSkipsAnUnreadableFrame)
     EXPECT_TRUE(std::filesystem::exists(d.file(std::string("out/") + f))) << f;
 
   // An empty sequence, a pattern without a frame field, a budget of 0: one-line errors.
-  expectOneLineError(runProgram("pm-track", "--left-images " + d.file("none_%d.png") + " --right-images " + d.file("none_%d.png") +
+  expectOneLineError(runProgram("pm-track", "--left " + d.file("none_%d.png") + " --right " + d.file("none_%d.png") +
                                                 " --model " + d.file("model.json") + " --out " + d.file("o2")),
                      "empty");
-  expectOneLineError(runProgram("pm-track", "--left-images " + d.file("L_%s.png") + " --right-images " + d.file("R_%04d.png") +
+  expectOneLineError(runProgram("pm-track", "--left " + d.file("L_%s.png") + " --right " + d.file("R_%04d.png") +
                                                 " --model " + d.file("model.json") + " --out " + d.file("o2")),
                      "frame-number field");
   expectOneLineError(runProgram("pm-track", "--budget-ms 0" + seq + " --out " + d.file("o2")), "budget");
@@ -283,7 +340,7 @@ TEST(Reproducibility, SameSeedSameInputsSameCsvTimingsAside)
   // On an evaluation budget the runs are deterministic: every column but the timings is the same
   // to the byte, for the closed loop (pm-servo) and the tracker (pm-track).
   pm::test::TempDir d("repro");
-  const std::string servo = "--trajectory sine --duration-s 1.5 --budget-evals 800 --ga-seed 7 --seed 3 --supersampling 1 "
+  const std::string servo = "--motion sine --duration-s 1.5 --budget-evals 800 --ga-seed 7 --seed 3 --supersampling 1 "
                             "--no-video --overlay-every 0 --quiet --out ";
   const std::string track = "--steps 2 --hold-s 0.5 --move-s 0.5 --budget-evals 800 --ga-seed 7 --quiet --out ";
   for (const auto &[program, args, drop] :

@@ -221,7 +221,7 @@ TEST(StereoBaseline, BadInputIsAClearError)
   EXPECT_NE(pm::test::errorOf([&] { board.find(blank, rig.left.cam, "test"); }).find("0 of its tags"),
             std::string::npos);
   auto run = [&](const std::string &l, const std::string &r, const std::string &extra = "") {
-    return runProgram("pm-calib-baseline", "--left-images " + d.file(l) + " --right-images " + d.file(r) + extra + " --out " + d.file("o"));
+    return runProgram("pm-calib-baseline", "--left " + d.file(l) + " --right " + d.file(r) + extra + " --out " + d.file("o"));
   };
   auto expectError = [](const pm::test::RunResult &r, const std::string &fragment) {
     EXPECT_EQ(r.status, 1) << r.err;

@@ -440,8 +440,8 @@ TEST(RigCalibration, OpenCvsRealStereoPairsAsOpenCvCalibratesThem)
     pm::io::writeImage(pairs[i].left, d.file("L_" + std::to_string(i) + ".png"));
     pm::io::writeImage(pairs[i].right, d.file("R_" + std::to_string(i) + ".png"));
   }
-  const std::string args = " --pattern chessboard --board 6,9,1 --tolerance-mm 0.05 --left-images " + d.file("L_%d.png") +
-                           " --right-images " + d.file("R_%d.png") + " --quiet --out " + d.file("check");
+  const std::string args = " --pattern chessboard --board 6,9,1 --tolerance-mm 0.05 --left " + d.file("L_%d.png") +
+                           " --right " + d.file("R_%d.png") + " --quiet --out " + d.file("check");
   const auto ok = runProgram("pm-calib-baseline", "--rig " + d.file("rig.json") + args);
   EXPECT_EQ(ok.status, 0) << ok.err;
   pm::StereoRig longer = c.rig;

@@ -1,5 +1,6 @@
 #include "pm/app/App.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
@@ -21,10 +22,46 @@
 
 namespace pm::app {
 
-int run(CLI::App &app, int argc, char **argv, const std::function<int()> &body)
+namespace {
+
+// argv with the old spellings replaced ("--old v" and "--old=v"), one notice per old name.
+std::vector<std::string> renameArguments(const std::string &program, int argc, char **argv, const std::vector<Renamed> &renamed)
+{
+  std::vector<std::string> args(argv, argv + argc);
+  std::vector<bool> noticed(renamed.size(), false);
+  for (std::size_t i = 1; i < args.size(); ++i)
+    for (std::size_t r = 0; r < renamed.size(); ++r) {
+      const Renamed &n = renamed[r];
+      const bool joined = args[i].rfind(n.old + "=", 0) == 0;
+      if (args[i] != n.old && !joined)
+        continue;
+      const std::string value = joined ? args[i].substr(n.old.size() + 1) : (i + 1 < args.size() ? args[i + 1] : "");
+      if (!n.values.empty() && std::find(n.values.begin(), n.values.end(), value) == n.values.end())
+        continue;
+      args[i] = joined ? n.now + "=" + value : n.now;
+      if (!noticed[r])
+        std::cerr << program << ": " << n.old << (n.values.empty() ? "" : " " + value) << " is deprecated, use " << n.now
+                  << (n.values.empty() ? "" : " " + value) << std::endl;
+      noticed[r] = true;
+      break;
+    }
+  return args;
+}
+
+} // namespace
+
+int run(CLI::App &app, int argc, char **argv, const std::function<int()> &body, const std::vector<Renamed> &renamed)
 {
   try {
-    app.parse(argc, argv);
+    if (renamed.empty()) {
+      app.parse(argc, argv);
+    } else {
+      std::vector<std::string> args = renameArguments(app.get_name(), argc, argv, renamed);
+      std::vector<char *> ptrs;
+      for (std::string &a : args)
+        ptrs.push_back(a.data());
+      app.parse(static_cast<int>(ptrs.size()), ptrs.data());
+    }
   } catch (const CLI::CallForHelp &e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp &e) {
@@ -62,6 +99,24 @@ std::string dataDir()
 }
 
 std::string dataPath(const std::string &relative) { return dataDir() + "/" + relative; }
+
+bool isImagePattern(const std::vector<std::string> &values)
+{
+  return values.size() == 1 && values.front().find('%') != std::string::npos;
+}
+
+std::vector<std::string> imageFiles(const std::vector<std::string> &values, int firstFrame)
+{
+  if (!isImagePattern(values))
+    return values;
+  std::vector<std::string> files;
+  for (long k = firstFrame; std::filesystem::exists(frameFileName(values.front(), k)); ++k)
+    files.push_back(frameFileName(values.front(), k));
+  if (files.empty())
+    throw pm::Error("no image " + frameFileName(values.front(), firstFrame) + " (the pattern " + values.front() + " from frame " +
+                    std::to_string(firstFrame) + ")");
+  return files;
+}
 
 std::vector<double> parseNumbers(const std::string &text, std::size_t n, const std::string &what)
 {
