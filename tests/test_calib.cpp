@@ -237,7 +237,7 @@ TEST(StereoBaseline, BadInputIsAClearError)
   EXPECT_NE(usage.err.find("--board: expects 3 comma-separated numbers"), std::string::npos) << usage.err;
   pm::io::writeImage(small, d.file("R_0.png"));
   expectError(run("L_%d.png", "R_%d.png"), "differ in size");
-  expectError(run("X_%d.png", "Y_%d.png"), "no image pair");
+  expectError(run("X_%d.png", "Y_%d.png"), "no image " + d.file("X_0.png"));
   pm::test::writeText(d.file("norig.json"), R"({"format":"visp-photomodel-rig","version":1,"intrinsics_xml":"missing.xml","cameras":[]})");
   expectError(run("L_%d.png", "R_%d.png", " --rig " + d.file("norig.json")), "missing.xml");
   EXPECT_FALSE(std::filesystem::exists(d.file("o/summary.json")));
