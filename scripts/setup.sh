@@ -5,8 +5,9 @@ PM_DEBIAN_PACKAGES=(build-essential cmake ninja-build pkg-config libvisp-dev lib
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libapriltag-dev libyaml-cpp-dev)
 
 # Only for the tests: ViSP's images (the AprilTag benchmark test is skipped without them) and OpenCV's
-# sample data (real stereo chessboard pairs and a calibration file; their tests are skipped without them).
-PM_TEST_PACKAGES=(visp-images-data opencv-doc xvfb)
+# sample data (real stereo chessboard pairs and a calibration file; their tests are skipped without them);
+# Doxygen and Graphviz for the API pages (the test docs_api builds them).
+PM_TEST_PACKAGES=(visp-images-data opencv-doc xvfb doxygen graphviz)
 
 # Only for the fuzz targets (scripts/fuzz.sh): clang, its libFuzzer runtime, its OpenMP.
 PM_FUZZ_PACKAGES=(clang libclang-rt-14-dev libomp-dev)
