@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+#include <visp3/core/vpImageConvert.h>
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
@@ -23,6 +24,8 @@
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/lab/ClosedLoop.h"
+#include "pm/lab/FrequencyResponse.h"
+#include "pm/lab/LoopTable.h"
 #include "pm/lab/RunLog.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -38,75 +41,13 @@ int axisIndex(const std::string &a)
   throw CLI::ValidationError("--axis", "must be one of x, y, z, e1, e2, e3");
 }
 
-cv::Mat toMat(const vpImage<vpRGBa> &I)
+// BGR for OpenCV's video writer (ViSP converts to BGRA).
+cv::Mat toBgr(const vpImage<vpRGBa> &I)
 {
-  cv::Mat m(static_cast<int>(I.getHeight()), static_cast<int>(I.getWidth()), CV_8UC3);
-  for (unsigned v = 0; v < I.getHeight(); ++v)
-    for (unsigned u = 0; u < I.getWidth(); ++u) {
-      const vpRGBa &p = I[v][u];
-      m.at<cv::Vec3b>(static_cast<int>(v), static_cast<int>(u)) = cv::Vec3b(p.B, p.G, p.R);
-    }
-  return m;
-}
-
-void writeCsvHeader(std::ostream &csv)
-{
-  csv << std::setprecision(8) << "t,moving,true_x,true_y,true_z,true_e1,true_e2,true_e3,used_x,used_y,used_z,used_e1,used_e2,used_e3,"
-         "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms,estimate_error_mm,estimate_error_deg,"
-         "used_error_mm,used_error_deg,"
-         "confidence,verified,trusted";
-  for (int i = 1; i <= 7; ++i)
-    csv << ",q" << i;
-  for (int i = 1; i <= 7; ++i)
-    csv << ",qdot" << i;
-  csv << "\n";
-}
-
-void writeCsvRow(std::ostream &csv, const pm::lab::LoopFrame &f, bool oracle)
-{
-  const pm::Phi a = pm::fromHomogeneousMatrix(f.hMmTrue), b = pm::fromHomogeneousMatrix(f.hMmUsed);
-  csv << f.t << "," << (f.moving ? 1 : 0);
-  for (std::size_t i = 0; i < 6; ++i)
-    csv << "," << a[i];
-  for (std::size_t i = 0; i < 6; ++i)
-    csv << "," << b[i];
-  csv << "," << f.translationErrorMm << "," << f.rotationErrorDeg << "," << f.track.fitness << ","
-      << (oracle ? "oracle" : pm::toString(f.track.state)) << "," << (f.servoing ? 1 : 0) << "," << f.track.computeMs << ","
-      << f.estimateErrorMm << "," << f.estimateErrorDeg << "," << f.usedErrorMm << "," << f.usedErrorDeg << "," << f.track.confidence << "," << (f.track.verified ? 1 : 0) << ","
-      << (f.track.trusted ? 1 : 0);
-  for (unsigned i = 0; i < 7; ++i)
-    csv << "," << f.q[i];
-  for (unsigned i = 0; i < 7; ++i)
-    csv << "," << f.qdot[i];
-  csv << "\n";
-}
-
-struct RunSummary
-{
-  std::vector<pm::lab::LoopFrame> frames;
-};
-
-//! Amplitude and phase of the component at \e f of a sampled signal (least squares on sin, cos, 1).
-std::pair<double, double> sinusoidFit(const std::vector<double> &t, const std::vector<double> &y, double f)
-{
-  double s[3][3] = {{0}}, b[3] = {0};
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    const double r[3] = {std::sin(2 * M_PI * f * t[k]), std::cos(2 * M_PI * f * t[k]), 1.0};
-    for (int i = 0; i < 3; ++i) {
-      b[i] += r[i] * y[k];
-      for (int j = 0; j < 3; ++j)
-        s[i][j] += r[i] * r[j];
-    }
-  }
-  vpMatrix A(3, 3);
-  vpColVector B(3);
-  for (unsigned i = 0; i < 3; ++i) {
-    B[i] = b[i];
-    for (unsigned j = 0; j < 3; ++j)
-      A[i][j] = s[i][j];
-  }
-  const vpColVector x = A.pseudoInverse() * B;
-  return {std::hypot(x[0], x[1]), std::atan2(x[1], x[0])};
+  cv::Mat bgra, bgr;
+  vpImageConvert::convert(I, bgra);
+  cv::cvtColor(bgra, bgr, cv::COLOR_BGRA2BGR);
+  return bgr;
 }
 
 } // namespace
@@ -178,66 +119,31 @@ int main(int argc, char **argv)
     const pm::Phi phi0{0, 0, 500, 0, 0, 0};
     std::vector<pm::Phi> waypoints;
     if (motion == "steps") {
-      for (const auto &row : pm::io::readPoseTable(stepsPath, "step"))
-        waypoints.push_back(row.second);
-      if (steps > 0 && steps < static_cast<int>(waypoints.size()))
-        waypoints.resize(static_cast<std::size_t>(steps));
+      waypoints = pm::io::readWaypoints(stepsPath, steps);
     }
-    auto runOnce = [&](double f, double amp, double seconds) {
-      auto makeTc = [&](const vpHomogeneousMatrix &wMh0) -> std::unique_ptr<pm::sim::TcRobot> {
-        return std::make_unique<pm::sim::TcRobot>(wMh0, phi0, ax, amp, f, maxVelocity, maxAcceleration);
-      };
-      pm::lab::ClosedLoop loop(rig, scene, sm, tp, servo, lp, makeTc);
-      RunSummary r;
-      const long n = static_cast<long>(std::floor(seconds * fps)) + 1;
-      r.frames.reserve(static_cast<std::size_t>(n));
-      for (long k = 0; k < n; ++k)
-        r.frames.push_back(loop.step());
-      return r;
-    };
-
     pm::io::StagedFiles files(out);
     if (freqSweep) {
-      const std::vector<double> freqs = {0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
-      pm::app::Progress progress("frequency sweep", freqs.size(), quiet);
+      pm::lab::SweepParams sweep;
+      sweep.axis = ax;
+      sweep.amplitude = amplitude;
+      sweep.maxVelocity = maxVelocity;
+      sweep.maxAcceleration = maxAcceleration;
+      pm::app::Progress progress("frequency sweep", sweep.frequenciesHz.size(), quiet);
+      const std::vector<pm::lab::BodePoint> bode =
+          pm::lab::frequencyResponse(rig, scene, sm, tp, servo, lp, sweep, [&] { progress.step(); });
+      progress.finish();
       std::ostringstream csv;
       csv << "frequency_hz,amplitude,gain,phase_lag_deg\n";
       pm::app::Series gainS{"gain", vpRGBa(40, 90, 200), {}, {}, false}, phaseS{"phase lag", vpRGBa(220, 60, 40), {}, {}, false};
       nlohmann::json rows = nlohmann::json::array();
-      for (double f : freqs) {
-        const double seconds = 1.0 / f + 3.0 / f; // the fade-in period, then three periods
-        // The amplitude, reduced where the TC-robot's velocity or acceleration limit requires it.
-        const double w = 2 * M_PI * f;
-        const double amp = std::min({amplitude, 0.999 * maxVelocity / w, 0.999 * maxAcceleration / (w * w)});
-        const RunSummary r = runOnce(f, amp, seconds);
-        // The hand's motion along the axis in h0 against the target's, over the last three periods.
-        std::vector<double> t, yt, yh;
-        for (const auto &fr : r.frames)
-          if (fr.t >= 1.0 / f) {
-            t.push_back(fr.t);
-            // The hand follows if the relative pose stays constant: hand motion = target motion - relative error.
-            const pm::Phi rel = pm::fromHomogeneousMatrix(fr.hMmTrue);
-            const double targetMotion = amp * std::sin(2 * M_PI * f * fr.t);
-            yt.push_back(targetMotion);
-            yh.push_back(targetMotion - (rel[static_cast<std::size_t>(ax)] - phi0[static_cast<std::size_t>(ax)]));
-          }
-        const auto [at, pt] = sinusoidFit(t, yt, f);
-        const auto [ah, ph] = sinusoidFit(t, yh, f);
-        double lag = (pt - ph) * 180 / M_PI;
-        while (lag > 180)
-          lag -= 360;
-        while (lag < -180)
-          lag += 360;
-        const double gain = ah / at;
-        csv << f << "," << amp << "," << gain << "," << lag << "\n";
-        rows.push_back({{"frequency_hz", f}, {"amplitude", amp}, {"gain", gain}, {"phase_lag_deg", lag}});
-        gainS.t.push_back(f);
-        gainS.y.push_back(gain);
-        phaseS.t.push_back(f);
-        phaseS.y.push_back(lag);
-        progress.step();
+      for (const pm::lab::BodePoint &p : bode) {
+        csv << p.frequencyHz << "," << p.amplitude << "," << p.gain << "," << p.phaseLagDeg << "\n";
+        rows.push_back({{"frequency_hz", p.frequencyHz}, {"amplitude", p.amplitude}, {"gain", p.gain}, {"phase_lag_deg", p.phaseLagDeg}});
+        gainS.t.push_back(p.frequencyHz);
+        gainS.y.push_back(p.gain);
+        phaseS.t.push_back(p.frequencyHz);
+        phaseS.y.push_back(p.phaseLagDeg);
       }
-      progress.finish();
       pm::io::writeTextFile(files.stage("bode.csv"), csv.str());
       pm::io::writeImage(pm::app::drawTimePlots({{"tracking gain (hand / target amplitude)", "", {gainS}, 0, {}},
                                                  {"phase lag of the hand (deg)", "deg", {phaseS}, 0, {}}},
@@ -267,7 +173,7 @@ int main(int argc, char **argv)
     // computed online and the plots drawn from a decimated record (pm::lab::RunLog).
     pm::lab::RunLog log(nFrames, fps, loop.robot());
     std::ofstream csv(files.stage("frames.csv"));
-    writeCsvHeader(csv);
+    pm::lab::writeLoopCsvHeader(csv);
     std::vector<double> memoryMb; // resident memory at the start of each tenth of the run, and at its end
     cv::VideoWriter video;
     const std::string videoPath = noVideo ? "" : files.stage("servo.avi");
@@ -281,7 +187,7 @@ int main(int argc, char **argv)
         memoryMb.push_back(pm::app::residentMemoryMb());
       const pm::lab::LoopFrame f = loop.step();
       log.add(f);
-      writeCsvRow(csv, f, lp.oracle);
+      pm::lab::writeLoopCsvRow(csv, f, lp.oracle);
       const bool wantOverlay = overlayEvery > 0 && k % overlayEvery == 0;
       const bool wantVideo = !noVideo && k % 2 == 0;
       if (wantVideo || wantOverlay) {
@@ -294,7 +200,7 @@ int main(int argc, char **argv)
                                 pm::app::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right"));
         if (wantVideo) {
           cv::Mat half;
-          cv::resize(toMat(pair), half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
+          cv::resize(toBgr(pair), half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
           video.write(half);
         }
         if (wantOverlay) {

@@ -1,16 +1,12 @@
 //! pm-track: real-time pose tracking of a moving target (the paper's Sec. 6, Table 2, Figs. 12-14).
 #include <algorithm>
-#include <cctype>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -29,26 +25,14 @@
 #include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
+#include "pm/lab/LabSequence.h"
+#include "pm/lab/TrackingReport.h"
+#include "pm/lab/Convergence.h"
 #include "pm/tracker/TrackerConfigFile.h"
 #include "pm/sim/Scene.h"
-#include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 #include "pm/sim/Trajectory.h"
 #include "pm/tracker/PhotoModelTracker.h"
-
-namespace {
-
-const char *kNames[6] = {"x", "y", "z", "eps1", "eps2", "eps3"};
-
-struct FrameRecord
-{
-  double t = 0;
-  bool haveTruth = false, moving = false;
-  pm::Phi truth, estimate;
-  pm::TrackResult r;
-};
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -67,7 +51,7 @@ int main(int argc, char **argv)
   bool quiet = false, display = false, savePairs = false;
   std::string leftSource, rightSource;
   pm::capture::VideoCaptureParams vcp;
-  pm::app::LabModelChoice lab;
+  pm::app::LabModelChoice labModel;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
   auto *optTarget = app.add_option("--target", target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
@@ -97,8 +81,8 @@ int main(int argc, char **argv)
   optT->needs(optL);
   app.add_option("--first-frame", firstFrame, "recorded sequence: index of the first frame")->check(CLI::Range(0, 100000000));
   app.add_option("--rig", rigPath, "stereo rig file");
-  pm::app::addLabModelOptions(app, lab);
-  pm::app::addModelOptions(app, lab.photo);
+  pm::app::addLabModelOptions(app, labModel);
+  pm::app::addModelOptions(app, labModel.photo);
   pm::app::addSceneOptions(app, sp);
   pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
   app.add_flag("--save-pairs", savePairs, "also write every stereo pair tracked, left_%04d.png and right_%04d.png (and, "
@@ -115,298 +99,196 @@ int main(int argc, char **argv)
       pm::app::frameFileName(leftImages.front(), 0);
     if (pm::app::isImagePattern(rightImages))
       pm::app::frameFileName(rightImages.front(), 0);
+    const long maxFrames = durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0;
 
+    // The pairs: recorded, live or simulated, and the truth of each frame where it is known.
     pm::PhotoModel model;
     std::unique_ptr<pm::sim::Scene> scene;
     std::unique_ptr<pm::sim::Trajectory> trajectory;
-    vpHomogeneousMatrix oMm;
-    std::map<int, pm::Phi> truthByFrame;
-    std::unique_ptr<pm::capture::StereoSource> input; // recorded or live pairs (the simulator renders its own)
+    std::unique_ptr<pm::capture::StereoSource> input;
+    const pm::lab::LabSequence *lab = nullptr;
+    std::map<long, pm::Phi> truthByFrame;
+    long nFrames = 0;
     std::string source;
-    int nFrames = 0;
     if (recorded) {
       model = pm::io::loadPhotoModel(modelPath);
       if (!truthPath.empty())
         for (const auto &[frame, pose] : pm::io::readPoseTable(truthPath, "frame"))
           truthByFrame[frame] = pose;
       if (live) {
-        vcp.maxPairs = durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0;
+        vcp.maxPairs = maxFrames;
         input = std::make_unique<pm::capture::VideoCaptureSource>(leftSource, rightSource, vcp);
-        nFrames = static_cast<int>(vcp.maxPairs);
+      } else if (pm::app::isImagePattern(leftImages) && pm::app::isImagePattern(rightImages)) {
+        input = std::make_unique<pm::capture::ImageSequenceSource>(leftImages.front(), rightImages.front(), firstFrame, fps,
+                                                                   rig.left.width, rig.left.height, maxFrames);
       } else {
-        const long maxFrames = durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0;
-        auto seq = pm::app::isImagePattern(leftImages) && pm::app::isImagePattern(rightImages)
-                       ? std::make_unique<pm::capture::ImageSequenceSource>(leftImages.front(), rightImages.front(), firstFrame,
-                                                                            fps, rig.left.width, rig.left.height, maxFrames)
-                       : std::make_unique<pm::capture::ImageSequenceSource>(pm::app::imageFiles(leftImages, firstFrame),
-                                                                            pm::app::imageFiles(rightImages, firstFrame), fps,
-                                                                            rig.left.width, rig.left.height, maxFrames);
-        nFrames = static_cast<int>(seq->length());
-        input = std::move(seq);
+        input = std::make_unique<pm::capture::ImageSequenceSource>(pm::app::imageFiles(leftImages, firstFrame),
+                                                                   pm::app::imageFiles(rightImages, firstFrame), fps,
+                                                                   rig.left.width, rig.left.height, maxFrames);
       }
+      if (const auto *seq = dynamic_cast<const pm::capture::ImageSequenceSource *>(input.get()))
+        nFrames = seq->length();
+      else
+        nFrames = maxFrames;
       source = input->describe();
     } else {
-      std::vector<pm::Phi> w;
-      for (const auto &row : pm::io::readPoseTable(trajectoryPath, "step"))
-        w.push_back(row.second);
-      if (steps > 0 && steps < static_cast<int>(w.size()))
-        w.resize(static_cast<std::size_t>(steps));
-      trajectory = std::make_unique<pm::sim::Trajectory>(w, holdS, moveS);
+      trajectory = std::make_unique<pm::sim::Trajectory>(pm::io::readWaypoints(trajectoryPath, steps), holdS, moveS);
       scene = std::make_unique<pm::sim::Scene>(pm::sim::makeTarget(target), sp);
-      const auto sm = pm::app::makeLabModel(*scene, rig, lab);
+      const auto sm = pm::app::makeLabModel(*scene, rig, labModel);
       model = sm.build.model;
-      oMm = sm.oMm;
       const double d = durationS > 0 ? std::min(durationS, trajectory->duration()) : trajectory->duration();
-      nFrames = static_cast<int>(std::floor(d * fps)) + 1;
-      source = "simulator, target " + scene->target().info.code + " (" + scene->target().info.name + "), trajectory " +
-               std::filesystem::path(trajectoryPath).filename().string();
+      nFrames = static_cast<long>(std::floor(d * fps)) + 1;
+      auto seq = std::make_unique<pm::lab::LabSequence>(*scene, rig, *trajectory, sm.oMm, fps, nFrames);
+      lab = seq.get();
+      input = std::move(seq);
+      source = input->describe() + ", trajectory " + std::filesystem::path(trajectoryPath).filename().string();
     }
 
     pm::PhotoModelTracker tracker(rig, model, tp);
     tracker.initialize(); // no initial pose: a random population
     pm::io::StagedFiles files(out);
     std::ofstream truthCsv;
-    if (savePairs && !recorded)
+    if (savePairs && lab)
       truthCsv.open(files.stage("truth.csv"));
     truthCsv << "frame,x,y,z,e1,e2,e3\n" << std::setprecision(10);
-    std::vector<FrameRecord> rec;
-    rec.reserve(static_cast<std::size_t>(nFrames));
-    vpImage<vpRGBa> firstL, firstR, lastL, lastR;
-    pm::app::Progress progress("tracking", static_cast<std::size_t>(nFrames), quiet || nFrames <= 0);
+    std::vector<pm::lab::TrackedFrame> rec;
+    rec.reserve(static_cast<std::size_t>(std::max(0L, nFrames)));
+    vpImage<vpRGBa> lastL, lastR;
+    pm::app::Progress progress("tracking", static_cast<std::size_t>(std::max(0L, nFrames)), quiet || nFrames <= 0);
     pm::app::LiveView view;
     if (display)
       view.open("pm-track: " + source);
     pm::capture::StereoFrame sf;
-    for (int k = 0; input || k < nFrames; ++k) {
-      FrameRecord f;
-      f.t = k / fps;
-      vpImage<vpRGBa> IL, IR;
-      if (input) {
-        const long skippedBefore = input->stats().skipped;
-        if (!input->next(sf))
-          break;
-        for (long s2 = skippedBefore; s2 < input->stats().skipped; ++s2) {
-          if (!quiet)
-            std::cerr << "warning: " << input->stats().problems[static_cast<std::size_t>(s2)] << " (skipped)" << std::endl;
-          progress.step();
-        }
-        if (sf.left.getWidth() != rig.left.width || sf.left.getHeight() != rig.left.height)
-          throw pm::Error("the cameras deliver " + std::to_string(sf.left.getWidth()) + "x" + std::to_string(sf.left.getHeight()) +
-                          " images but the rig's are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
-        IL = std::move(sf.left);
-        IR = std::move(sf.right);
-        f.t = sf.timeS;
-        const auto it = truthByFrame.find(static_cast<int>(sf.index));
-        if (it != truthByFrame.end()) {
-          f.haveTruth = true;
-          f.truth = it->second;
-        }
-      } else {
-        const pm::Phi p = trajectory->at(f.t);
-        const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(p);
-        const pm::sim::StereoImages im = scene->renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
-        IL = im.left;
-        IR = im.right;
+    for (int k = 0;; ++k) {
+      const long skippedBefore = input->stats().skipped;
+      if (!input->next(sf))
+        break;
+      for (long s2 = skippedBefore; s2 < input->stats().skipped; ++s2) {
+        if (!quiet)
+          std::cerr << "warning: " << input->stats().problems[static_cast<std::size_t>(s2)] << " (skipped)" << std::endl;
+        progress.step();
+      }
+      if (sf.left.getWidth() != rig.left.width || sf.left.getHeight() != rig.left.height)
+        throw pm::Error("the cameras deliver " + std::to_string(sf.left.getWidth()) + "x" + std::to_string(sf.left.getHeight()) +
+                        " images but the rig's are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
+      pm::lab::TrackedFrame f;
+      f.t = sf.timeS;
+      if (lab) {
         f.haveTruth = true;
-        f.truth = pm::fromHomogeneousMatrix(hMo * oMm);
-        f.moving = trajectory->moving(f.t);
+        f.truth = lab->truth(sf.index);
+        f.moving = lab->moving(sf.index);
+      } else if (const auto it = truthByFrame.find(sf.index); it != truthByFrame.end()) {
+        f.haveTruth = true;
+        f.truth = it->second;
       }
       if (savePairs) {
-        char name[32];
-        std::snprintf(name, sizeof name, "left_%04d.png", k);
-        pm::io::writeImage(IL, files.stage(name));
-        std::snprintf(name, sizeof name, "right_%04d.png", k);
-        pm::io::writeImage(IR, files.stage(name));
-        if (f.haveTruth && !recorded)
+        pm::io::writeImage(sf.left, files.stage(pm::app::frameFileName("left_%04d.png", k)));
+        pm::io::writeImage(sf.right, files.stage(pm::app::frameFileName("right_%04d.png", k)));
+        if (lab)
           truthCsv << k << "," << f.truth[0] << "," << f.truth[1] << "," << f.truth[2] << "," << f.truth[3] << ","
                    << f.truth[4] << "," << f.truth[5] << "\n";
       }
-      f.r = tracker.track(IL, IR);
-      f.estimate = f.r.phi;
-      if (rec.empty()) {
-        firstL = IL;
-        firstR = IR;
-      }
-      lastL = IL;
-      lastR = IR;
+      f.result = tracker.track(sf.left, sf.right);
       rec.push_back(f);
       if (display) {
         std::ostringstream status;
-        status << std::fixed << std::setprecision(2) << pm::toString(f.r.state) << ", q " << f.r.quality << ", "
-               << std::setprecision(1) << f.r.computeMs << " ms, frame " << k;
-        view.show(IL, IR, tracker.pointScores(0), tracker.pointScores(1), status.str());
+        status << std::fixed << std::setprecision(2) << pm::toString(f.result.state) << ", q " << f.result.quality << ", "
+               << std::setprecision(1) << f.result.computeMs << " ms, frame " << k;
+        view.show(sf.left, sf.right, tracker.pointScores(0), tracker.pointScores(1), status.str());
       }
+      lastL = std::move(sf.left);
+      lastR = std::move(sf.right);
       progress.step();
     }
     progress.finish();
-    const int unreadable = input ? static_cast<int>(input->stats().skipped) : 0;
-    std::vector<std::string> unreadableList;
-    if (input)
-      for (long i = 0; i < unreadable; ++i)
-        unreadableList.push_back(input->stats().problems[static_cast<std::size_t>(i)]);
+    const pm::capture::SourceStats &st = input->stats();
     if (rec.empty())
-      throw pm::Error("no frame of the sequence could be read (" + std::to_string(unreadable) + " unreadable)");
-
-    // Convergence: the first frame from which, for 1 s, the tracker is tracking with errors under
-    // 10 mm in x, y, z and 0.05 in eps.
-    const std::size_t window = static_cast<std::size_t>(std::lround(fps));
-    auto withinLoose = [&](const FrameRecord &f) {
-      if (f.r.state != pm::TrackState::Tracking)
-        return false;
-      if (!f.haveTruth)
-        return true;
-      for (std::size_t i = 0; i < 6; ++i)
-        if (std::fabs(f.estimate[i] - f.truth[i]) > (i < 3 ? 10.0 : 0.05))
-          return false;
-      return true;
-    };
-    long converged = -1;
-    for (std::size_t k = 0; k < rec.size() && converged < 0; ++k) {
-      bool ok = true;
-      for (std::size_t j = k; j < std::min(rec.size(), k + window) && ok; ++j)
-        ok = withinLoose(rec[j]);
-      if (ok)
-        converged = static_cast<long>(k);
-    }
-    // Errors after convergence.
-    nlohmann::json errors;
-    const double goal[6] = {5, 5, 8, 0.02, 0.02, 0.02};
-    bool goalsMet = converged >= 0;
-    for (std::size_t i = 0; i < 6; ++i) {
-      double s2 = 0, mx = 0, mxMoving = 0, mxRest = 0;
-      std::size_t n = 0;
-      for (std::size_t k = converged < 0 ? 0 : static_cast<std::size_t>(converged); k < rec.size(); ++k)
-        if (rec[k].haveTruth) {
-          const double e = rec[k].estimate[i] - rec[k].truth[i];
-          s2 += e * e;
-          mx = std::max(mx, std::fabs(e));
-          (rec[k].moving ? mxMoving : mxRest) = std::max(rec[k].moving ? mxMoving : mxRest, std::fabs(e));
-          ++n;
-        }
-      if (n > 0) {
-        errors[kNames[i]] = {{"rms_error", std::sqrt(s2 / static_cast<double>(n))},
-                             {"max_abs_error", mx},
-                             {"max_abs_error_moving", mxMoving},
-                             {"max_abs_error_at_rest", mxRest},
-                             {"goal", goal[i]}};
-        goalsMet = goalsMet && mx <= goal[i];
-      }
-    }
-    std::vector<double> ms;
-    for (const auto &f : rec)
-      ms.push_back(f.r.computeMs);
-    std::vector<double> sorted = ms;
-    std::sort(sorted.begin(), sorted.end());
-    const double meanMs = std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
-    const double p99Ms = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(sorted.size()))) - 1)];
-    long evals = 0;
-    std::map<std::string, int> states;
-    for (const auto &f : rec) {
-      evals += f.r.evaluations;
-      ++states[pm::toString(f.r.state)];
-    }
+      throw pm::Error("no frame of the sequence could be read (" + std::to_string(st.skipped) + " unreadable)");
+    const pm::lab::TrackingReport report = pm::lab::reportTracking(rec, fps, pm::lab::table2Goals());
+    const auto &names = pm::lab::TrackingReport::names();
 
     if (truthCsv.is_open() && !truthCsv.flush())
       throw pm::Error("cannot write " + files.finalPath("truth.csv"));
     truthCsv.close();
     {
       std::ofstream csv(files.stage("frames.csv"));
-      csv << "t,true_x,true_y,true_z,true_e1,true_e2,true_e3,est_x,est_y,est_z,est_e1,est_e2,est_e3,err_x,err_y,err_z,"
-             "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving\n";
-      csv << std::setprecision(8);
-      for (const auto &f : rec) {
-        csv << f.t;
-        for (std::size_t i = 0; i < 6; ++i)
-          csv << "," << (f.haveTruth ? f.truth[i] : NAN);
-        for (std::size_t i = 0; i < 6; ++i)
-          csv << "," << f.estimate[i];
-        for (std::size_t i = 0; i < 6; ++i)
-          csv << "," << (f.haveTruth ? f.estimate[i] - f.truth[i] : NAN);
-        csv << "," << f.r.fitness << "," << f.r.quality << "," << pm::toString(f.r.state) << "," << f.r.evaluations << ","
-            << f.r.generations << "," << f.r.computeMs << "," << (f.moving ? 1 : 0) << "\n";
-      }
-      if (!csv)
-        throw pm::Error("cannot write " + files.finalPath("frames.csv"));
+      pm::lab::writeFramesCsv(csv, rec);
     }
-    // Figures like the paper's 13 (estimate against truth) and 14 (errors).
+    // Figures like the paper's 13 (estimate against truth) and 14 (errors after convergence).
+    const double tConverged = report.convergedFrame >= 0 ? rec[static_cast<std::size_t>(report.convergedFrame)].t : 0;
     std::vector<pm::app::Panel> traj, errs;
-    const std::vector<double> marks = converged >= 0 ? std::vector<double>{rec[static_cast<std::size_t>(converged)].t}
-                                                     : std::vector<double>{};
     for (std::size_t i = 0; i < 6; ++i) {
       pm::app::Series truthS{"truth", vpRGBa(40, 40, 40), {}, {}, true}, estS{"estimate", vpRGBa(220, 60, 40), {}, {}, false};
       pm::app::Series errS{"error", vpRGBa(40, 90, 200), {}, {}, false};
       for (const auto &f : rec) {
         estS.t.push_back(f.t);
-        estS.y.push_back(f.estimate[i]);
+        estS.y.push_back(f.result.phi[i]);
         if (f.haveTruth) {
           truthS.t.push_back(f.t);
           truthS.y.push_back(f.truth[i]);
-          errS.t.push_back(f.t);
-          errS.y.push_back(f.estimate[i] - f.truth[i]);
+          if (report.convergedFrame < 0 || f.t >= tConverged) {
+            errS.t.push_back(f.t);
+            errS.y.push_back(f.result.phi[i] - f.truth[i]);
+          }
         }
       }
       const std::string unit = i < 3 ? "mm" : "";
-      pm::app::Panel a{std::string(kNames[i]), unit, {}, 0, marks};
+      pm::app::Panel a{std::string(names[i]), unit, {}, 0, report.convergedFrame >= 0 ? std::vector<double>{tConverged} : std::vector<double>{}};
       if (!truthS.t.empty())
         a.series.push_back(truthS);
       a.series.push_back(estS);
       traj.push_back(a);
-      if (!errS.t.empty()) {
-        // Errors after convergence, the goal as a band (before, the random start dwarfs the scale).
-        pm::app::Series after{"error", errS.color, {}, {}, false};
-        for (std::size_t k = 0; k < errS.t.size(); ++k)
-          if (converged < 0 || errS.t[k] >= rec[static_cast<std::size_t>(converged)].t) {
-            after.t.push_back(errS.t[k]);
-            after.y.push_back(errS.y[k]);
-          }
-        errs.push_back({std::string("error of ") + kNames[i] + " after convergence", unit, {after}, goal[i], {}});
-      }
+      if (report.haveTruth)
+        errs.push_back({std::string("error of ") + names[i] + " after convergence", unit, {errS}, report.errors[i].goal, {}});
     }
     pm::io::writeImage(pm::app::drawTimePlots(traj, 2, "estimate (red) against truth (dashed), " + source), files.stage("trajectory.png"));
     if (!errs.empty())
       pm::io::writeImage(pm::app::drawTimePlots(errs, 2, "errors after convergence; green band: the goal"), files.stage("errors.png"));
-    tracker.initFromPose(rec.back().r.hMo); // to draw the last estimate
-    pm::io::writeImage(pm::app::sideBySide(pm::app::drawPointScores(lastL, tracker.fitness().pointScores(rec.back().estimate, 0), "last frame, left"),
-                                           pm::app::drawPointScores(lastR, tracker.fitness().pointScores(rec.back().estimate, 1), "right")),
+    tracker.initFromPose(rec.back().result.hMo); // to draw the last estimate
+    pm::io::writeImage(pm::app::sideBySide(pm::app::drawPointScores(lastL, tracker.fitness().pointScores(rec.back().result.phi, 0), "last frame, left"),
+                                           pm::app::drawPointScores(lastR, tracker.fitness().pointScores(rec.back().result.phi, 1), "right")),
                        files.stage("last_frame.png"));
+    nlohmann::json errors;
+    for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)
+      errors[names[i]] = {{"rms_error", report.errors[i].rms},
+                          {"max_abs_error", report.errors[i].max},
+                          {"max_abs_error_moving", report.errors[i].maxMoving},
+                          {"max_abs_error_at_rest", report.errors[i].maxAtRest},
+                          {"goal", report.errors[i].goal}};
     nlohmann::json summary{{"source", source},
                            {"frames", rec.size()},
-                           {"unreadable_frames", unreadable},
-                           {"unreadable", unreadableList},
+                           {"unreadable_frames", st.skipped},
+                           {"unreadable", std::vector<std::string>(st.problems.begin(), st.problems.begin() + st.skipped)},
                            {"fps", fps},
-                           {"converged_after_s", converged >= 0 ? nlohmann::json(rec[static_cast<std::size_t>(converged)].t) : nlohmann::json()},
+                           {"converged_after_s", report.convergedFrame >= 0 ? nlohmann::json(tConverged) : nlohmann::json()},
                            {"errors", errors},
-                           {"errors_over", converged >= 0 ? "frames after convergence" : "all frames (never converged)"},
-                           {"goals_met", goalsMet},
-                           {"mean_frame_ms", meanMs},
-                           {"p99_frame_ms", p99Ms},
-                           {"mean_evaluations_per_frame", static_cast<double>(evals) / static_cast<double>(rec.size())},
-                           {"states", states},
+                           {"errors_over", report.convergedFrame >= 0 ? "frames after convergence" : "all frames (never converged)"},
+                           {"goals_met", report.goalsMet},
+                           {"mean_frame_ms", report.meanMs},
+                           {"p99_frame_ms", report.p99Ms},
+                           {"mean_evaluations_per_frame", report.meanEvaluations},
+                           {"states", report.states},
                            {"tracker", nlohmann::json::parse(pm::trackerConfigToJson(tp))}};
     if (view.isOpen())
       view.capture(files.stage("display.png"));
-    if (live) {
-      const pm::capture::SourceStats &st = input->stats();
+    if (live)
       summary["capture"] = {{"pairs", st.pairs},
                             {"frames_read", {st.framesRead[0], st.framesRead[1]}},
                             {"unpaired", {st.unpaired[0], st.unpaired[1]}},
                             {"largest_skew_ms", st.maxSkewMs},
                             {"notes", st.problems}};
-    }
     pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
     files.commit();
     if (!quiet) {
       std::cout << std::fixed << "tracked " << rec.size() << " frames of " << source << "\n";
-      if (converged >= 0)
-        std::cout << std::setprecision(2) << "  converged after " << rec[static_cast<std::size_t>(converged)].t << " s\n";
+      if (report.convergedFrame >= 0)
+        std::cout << std::setprecision(2) << "  converged after " << tConverged << " s\n";
       else
-        std::cout << "  never converged (errors under 10 mm / 0.05 for 1 s)\n";
-      for (std::size_t i = 0; i < 6 && !errors.empty(); ++i)
-        if (errors.contains(kNames[i]))
-          std::cout << std::setprecision(i < 3 ? 2 : 4) << "  " << std::setw(4) << kNames[i] << ": rms "
-                    << errors[kNames[i]]["rms_error"].get<double>() << ", max " << errors[kNames[i]]["max_abs_error"].get<double>()
-                    << " (goal " << goal[i] << ")\n";
-      std::cout << std::setprecision(2) << "  compute per frame: mean " << meanMs << " ms, p99 " << p99Ms << " ms ("
+        std::cout << "  never converged (within " << pm::lab::kConvergedMm << " mm and " << pm::lab::kConvergedDeg << " deg for 1 s)\n";
+      for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)
+        std::cout << std::setprecision(i < 3 ? 2 : 4) << "  " << std::setw(4) << names[i] << ": rms " << report.errors[i].rms
+                  << ", max " << report.errors[i].max << " (goal " << report.errors[i].goal << ")\n";
+      std::cout << std::setprecision(2) << "  compute per frame: mean " << report.meanMs << " ms, p99 " << report.p99Ms << " ms ("
                 << (tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations"
                                              : std::to_string(tp.budgetMs) + " ms")
                 << " budget)\n"

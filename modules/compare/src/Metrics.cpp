@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pm/core/Statistics.h"
+
 namespace pm::compare {
 
 FrameScore scoreFrame(const vpHomogeneousMatrix &estimate, const vpHomogeneousMatrix &truth)
@@ -18,14 +20,6 @@ FrameScore scoreFrame(const vpHomogeneousMatrix &estimate, const vpHomogeneousMa
 namespace {
 bool within(const FrameScore &f, double mm, double deg) { return f.translationMm < mm && f.rotationDeg < deg; }
 
-double percentile99(std::vector<double> v)
-{
-  if (v.empty())
-    return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t k = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(v.size())));
-  return v[std::min(v.size(), std::max<std::size_t>(k, 1)) - 1];
-}
 } // namespace
 
 std::optional<int> Summary::worstRecovery() const
@@ -70,7 +64,7 @@ Summary summarize(const std::vector<FrameScore> &frames, const std::vector<int> 
   s.success5cm5deg = n5 / n;
   s.success1cm2deg = n1 / n;
   s.validFraction = nv / n;
-  s.p99Ms = percentile99(ms);
+  s.p99Ms = percentile(ms, 0.99);
   for (std::size_t e = 0; e < lossEnds.size(); ++e) {
     const std::size_t from = static_cast<std::size_t>(std::max(0, lossEnds[e]));
     const std::size_t to = e + 1 < lossEnds.size() ? static_cast<std::size_t>(lossEnds[e + 1]) : frames.size();

@@ -58,4 +58,14 @@ std::vector<std::pair<int, Phi>> readPoseTable(const std::string &path, const st
   return rows;
 }
 
+std::vector<Phi> readWaypoints(const std::string &path, int maxSteps)
+{
+  std::vector<Phi> w;
+  for (const auto &row : readPoseTable(path, "step"))
+    w.push_back(row.second);
+  if (maxSteps > 0 && maxSteps < static_cast<int>(w.size()))
+    w.resize(static_cast<std::size_t>(maxSteps));
+  return w;
+}
+
 } // namespace pm::io

@@ -31,13 +31,13 @@ double ErrorStats::rmsDeg() const { return frames ? std::sqrt(sumSquaredDeg / st
 RunLog::RunLog(long expectedFrames, double fps, const sim::RobotPA10 &robot, std::size_t maxSamples, double convergedMm,
                double convergedDeg)
   : m_expected(expectedFrames), m_mm(convergedMm), m_deg(convergedDeg), m_qmin(robot.jointMin()), m_qmax(robot.jointMax()),
-    m_vmax(robot.speedLimits()), m_maxSamples(maxSamples)
+    m_vmax(robot.speedLimits()), m_maxSamples(maxSamples),
+    m_conv(std::max(1L, std::lround(fps > 0 ? fps : 1.0)))
 {
   if (expectedFrames < 1 || maxSamples < 1 || !(fps > 0))
     throw Error("RunLog: the run needs at least one frame, one plot sample and a positive frame rate");
   const long ms = static_cast<long>(maxSamples);
   m_bucket = (expectedFrames + ms - 1) / ms;
-  m_window = std::max(1L, std::lround(fps));
   m_samples.reserve(2 * maxSamples);
 }
 
@@ -46,20 +46,15 @@ void RunLog::add(const LoopFrame &f)
   const double mm = f.translationErrorMm, deg = f.rotationErrorDeg;
   // Convergence: the first frame that starts m_window frames in a row within the bounds.
   if (!converged()) {
-    if (mm <= m_mm && deg <= m_deg) {
-      if (m_runLength == 0) {
-        m_runStartT = f.t;
-        m_runRest = m_runMoving = ErrorStats{};
-      }
-      ++m_runLength;
+    const bool within = mm <= m_mm && deg <= m_deg;
+    if (m_conv.add(m_frames, f.t, within))
+      m_runRest = m_runMoving = ErrorStats{};
+    if (within)
       (f.moving ? m_runMoving : m_runRest).add(mm, deg);
-      if (m_runLength >= m_window) {
-        m_convergedT = m_runStartT;
-        m_rest = m_runRest;
-        m_moving = m_runMoving;
-      }
-    } else
-      m_runLength = 0;
+    if (converged()) {
+      m_rest = m_runRest;
+      m_moving = m_runMoving;
+    }
   } else
     (f.moving ? m_moving : m_rest).add(mm, deg);
   (f.moving ? m_allMoving : m_allRest).add(mm, deg);
@@ -118,10 +113,12 @@ void RunLog::finish()
     m_inBucket = 0;
   }
   // A run within the bounds that reaches the end of the record counts, as it did in the batch rule.
-  if (!converged() && m_runLength > 0) {
-    m_convergedT = m_runStartT;
-    m_rest = m_runRest;
-    m_moving = m_runMoving;
+  if (!converged()) {
+    m_conv.finish();
+    if (converged()) {
+      m_rest = m_runRest;
+      m_moving = m_runMoving;
+    }
   }
 }
 

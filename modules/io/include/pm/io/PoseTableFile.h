@@ -20,4 +20,10 @@ namespace pm::io {
 */
 std::vector<std::pair<int, Phi>> readPoseTable(const std::string &path, const std::string &key);
 
+/*!
+  The waypoints of a trajectory file (key "step", e.g. data/trajectories/table2.csv), in file
+  order; only the first \e maxSteps when it is positive. Throws pm::Error as readPoseTable().
+*/
+std::vector<Phi> readWaypoints(const std::string &path, int maxSteps = 0);
+
 } // namespace pm::io

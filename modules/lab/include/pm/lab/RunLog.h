@@ -21,6 +21,7 @@
 
 #include "pm/core/Pose.h"
 #include "pm/lab/ClosedLoop.h"
+#include "pm/lab/Convergence.h"
 
 namespace pm::lab {
 
@@ -76,7 +77,7 @@ public:
     Convergence: the true relative pose within \e convergedMm and \e convergedDeg for 1 s.
   */
   RunLog(long expectedFrames, double fps, const sim::RobotPA10 &robot, std::size_t maxSamples = 4000,
-         double convergedMm = 10, double convergedDeg = 2);
+         double convergedMm = kConvergedMm, double convergedDeg = kConvergedDeg);
 
   //! Takes the run's next frame (in order: the convergence and the tenths count them).
   void add(const LoopFrame &f);
@@ -86,9 +87,9 @@ public:
   //! The frames added.
   long frames() const { return m_frames; }
   //! The time from which the run stayed within the bounds for 1 s; negative if never.
-  double convergedAfterS() const { return m_convergedT; }
+  double convergedAfterS() const { return m_conv.time(); }
   //! The run converged (convergedAfterS() >= 0).
-  bool converged() const { return m_convergedT >= 0; }
+  bool converged() const { return m_conv.converged(); }
   //! The frames with the target at rest, from convergence on (the whole run if it never converged).
   const ErrorStats &atRest() const { return converged() ? m_rest : m_allRest; }
   //! The frames with the target moving, from convergence on (the whole run if it never converged).
@@ -117,16 +118,14 @@ public:
 private:
   void halveSamples();
 
-  long m_expected, m_bucket, m_window;
+  long m_expected, m_bucket;
   double m_mm, m_deg;
   vpColVector m_qmin, m_qmax, m_vmax;
   std::size_t m_maxSamples;
   long m_frames = 0;
-  // Convergence, online: the current run of frames within the bounds, and its statistics.
-  long m_runLength = 0;
-  double m_runStartT = 0;
+  // Convergence, online (Convergence.h): the current run of frames within the bounds, and its statistics.
+  Convergence m_conv;
   ErrorStats m_runRest, m_runMoving;
-  double m_convergedT = -1;
   ErrorStats m_rest, m_moving, m_allRest, m_allMoving;
   std::array<ErrorStats, 10> m_tenths{};
   int m_violations = 0;

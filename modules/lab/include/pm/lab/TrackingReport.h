@@ -1,0 +1,80 @@
+#pragma once
+/*!
+  \file TrackingReport.h
+  The figures of a tracking run against its truth, as pm-track reports them (the paper's Table 2):
+  when it converged (Convergence.h), each pose variable's errors after convergence (rms, largest,
+  largest while moving and at rest) against a goal, the frame time's mean and p99
+  (pm::percentile), the mean work per frame and the frames in each tracker state.
+*/
+#include <array>
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pm/core/Pose.h"
+#include "pm/tracker/PhotoModelTracker.h"
+
+namespace pm::lab {
+
+//! One tracked frame: its time, its truth when known, and what the tracker made of it.
+struct TrackedFrame
+{
+  double t = 0;            //!< time of the frame from the first (s)
+  bool haveTruth = false;  //!< whether \e truth holds the frame's true pose
+  bool moving = false;     //!< the target was moving (simulator; false when unknown)
+  Phi truth{};             //!< the model frame's true pose in the hand frame (mm, quaternion vector)
+  TrackResult result;      //!< the tracker's output for the frame (its estimate: result.phi)
+};
+
+//! The errors of one pose variable (x, y, z in mm; eps1..3 unitless) over the frames after convergence.
+struct AxisErrors
+{
+  std::size_t frames = 0;  //!< frames with a truth counted
+  double rms = 0;          //!< root mean square of estimate - truth
+  double max = 0;          //!< largest |estimate - truth|
+  double maxMoving = 0;    //!< ... while the target moved
+  double maxAtRest = 0;    //!< ... while it was at rest
+  double goal = 0;         //!< the largest error allowed (Table 2's goals by default)
+};
+
+//! The figures of a tracking run (see TrackingReport.h).
+struct TrackingReport
+{
+  long convergedFrame = -1;   //!< the frame from which the run converged (-1: never; the errors then cover every frame)
+  double convergedS = -1;     //!< its time (s)
+  std::array<AxisErrors, 6> errors{}; //!< x, y, z, eps1, eps2, eps3 (only when some frame has a truth)
+  bool haveTruth = false;     //!< some frame had a truth
+  bool goalsMet = false;      //!< converged, some frame had a truth, and every variable's max within its goal
+  double meanMs = 0;          //!< mean TrackResult::computeMs (ms)
+  double p99Ms = 0;           //!< its 99th percentile (ms, pm::percentile)
+  double meanEvaluations = 0; //!< mean TrackResult::evaluations per frame
+  std::map<std::string, int> states; //!< frames per tracker state ("searching", "tracking", "lost")
+  //! The names of the pose variables, in the order of \e errors.
+  static const std::array<const char *, 6> &names();
+};
+
+//! Table 2's goals: 5, 5, 8 mm on x, y, z; 0.02 on each eps.
+std::array<double, 6> table2Goals();
+
+/*!
+  The report of \e frames filmed at \e fps (the convergence window is 1 s of frames). A frame is
+  within the bounds of convergence when its estimate is within kConvergedMm and kConvergedDeg of
+  its truth, or, without a truth, when the tracker is tracking. Throws pm::Error for no frames.
+
+  \code
+    std::vector<pm::lab::TrackedFrame> frames; // filled while tracking
+    const pm::lab::TrackingReport r = pm::lab::reportTracking(frames, 30.0, pm::lab::table2Goals());
+    std::cout << "converged after " << r.convergedS << " s, z rms " << r.errors[2].rms << " mm\n";
+  \endcode
+*/
+TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fps, const std::array<double, 6> &goals);
+
+/*!
+  Writes \e frames as pm-track's frames.csv: a header, then per frame t, the truth (NaN when
+  unknown), the estimate, their difference, fitness, quality, state, evaluations, generations,
+  compute_ms and moving (0/1), at 8 significant digits. Throws pm::Error when the stream fails.
+*/
+void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames);
+
+} // namespace pm::lab

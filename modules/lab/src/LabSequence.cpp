@@ -1,0 +1,47 @@
+#include "pm/lab/LabSequence.h"
+
+#include <cstdint>
+
+#include "pm/core/Error.h"
+#include "pm/sim/TargetCatalog.h"
+
+namespace pm::lab {
+
+LabSequence::LabSequence(const sim::Scene &scene, const StereoRig &rig, const sim::Trajectory &trajectory,
+                         const vpHomogeneousMatrix &oMm, double fps, long frames)
+  : m_scene(scene), m_rig(rig), m_trajectory(trajectory), m_oMm(oMm), m_fps(fps), m_frames(frames)
+{
+  if (!(fps > 0) || frames < 1)
+    throw Error("LabSequence: the frame rate must be positive and the sequence hold a frame");
+}
+
+bool LabSequence::next(capture::StereoFrame &f)
+{
+  if (m_next >= m_frames)
+    return false;
+  const long k = m_next++;
+  f.index = k;
+  f.timeS = static_cast<double>(k) / m_fps;
+  f.skewMs = 0;
+  sim::StereoImages im = m_scene.renderStereo(m_rig, toHomogeneousMatrix(m_trajectory.at(f.timeS)), static_cast<std::uint64_t>(k));
+  f.left = std::move(im.left);
+  f.right = std::move(im.right);
+  ++m_stats.pairs;
+  ++m_stats.framesRead[0];
+  ++m_stats.framesRead[1];
+  return true;
+}
+
+std::string LabSequence::describe() const
+{
+  return "simulator, target " + m_scene.target().info.code + " (" + m_scene.target().info.name + ")";
+}
+
+Phi LabSequence::truth(long k) const
+{
+  return fromHomogeneousMatrix(toHomogeneousMatrix(m_trajectory.at(static_cast<double>(k) / m_fps)) * m_oMm);
+}
+
+bool LabSequence::moving(long k) const { return m_trajectory.moving(static_cast<double>(k) / m_fps); }
+
+} // namespace pm::lab

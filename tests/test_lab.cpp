@@ -1,0 +1,216 @@
+// The lab's runners: one convergence rule, the tracking report against hand-computed figures,
+// the simulator as a source of stereo pairs, the sine fit of the frequency response and the
+// closed loop's table; and the one percentile every program reports.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "pm/core/Statistics.h"
+#include "pm/io/RigFile.h"
+#include "pm/lab/Convergence.h"
+#include "pm/lab/FrequencyResponse.h"
+#include "pm/lab/LabSequence.h"
+#include "pm/lab/LoopTable.h"
+#include "pm/lab/TrackingReport.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/TargetCatalog.h"
+
+using pm::test::errorOf;
+
+TEST(Statistics, PercentileIsTheNearestRank)
+{
+  const std::vector<double> v{5, 1, 4, 2, 3};
+  EXPECT_EQ(pm::percentile(v, 0.99), 5);
+  EXPECT_EQ(pm::percentile(v, 1.0), 5);
+  EXPECT_EQ(pm::percentile(v, 0.5), 3); // ceil(2.5) = 3rd smallest
+  EXPECT_EQ(pm::percentile(v, 0.2), 1);
+  EXPECT_EQ(pm::percentile(v, 0.21), 2);
+  std::vector<double> hundred;
+  for (int i = 100; i >= 1; --i)
+    hundred.push_back(i);
+  EXPECT_EQ(pm::percentile(hundred, 0.99), 99); // the p99 of 1..100
+  EXPECT_EQ(pm::percentile({}, 0.99), 0);
+  EXPECT_NE(errorOf([] { pm::percentile({1.0}, 0.0); }).find("(0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf([] { pm::percentile({1.0}, 1.5); }).find("(0, 1]"), std::string::npos);
+}
+
+TEST(Convergence, TheFirstFrameOfAFullRunWithinTheBounds)
+{
+  // window 3: a run of two is not enough; the run from frame 4 is.
+  const bool within[] = {false, true, true, false, true, true, true, false, true};
+  pm::lab::Convergence c(3);
+  std::vector<long> starts;
+  for (long k = 0; k < 9; ++k)
+    if (c.add(k, 0.5 * static_cast<double>(k), within[k]))
+      starts.push_back(k);
+  c.finish();
+  EXPECT_TRUE(c.converged());
+  EXPECT_EQ(c.frame(), 4);
+  EXPECT_DOUBLE_EQ(c.time(), 2.0);
+  EXPECT_EQ(starts, (std::vector<long>{1, 4})); // runs start there; after convergence nothing does
+
+  pm::lab::Convergence end(5); // a run that reaches the end of the record counts
+  for (long k = 0; k < 4; ++k)
+    end.add(k, static_cast<double>(k), k >= 2);
+  EXPECT_FALSE(end.converged());
+  end.finish();
+  EXPECT_EQ(end.frame(), 2);
+
+  pm::lab::Convergence never(2);
+  for (long k = 0; k < 10; ++k)
+    never.add(k, static_cast<double>(k), k % 2 == 0);
+  never.finish();
+  EXPECT_FALSE(never.converged());
+  EXPECT_EQ(never.frame(), -1);
+  EXPECT_LT(never.time(), 0);
+  EXPECT_NE(errorOf([] { pm::lab::Convergence(0); }).find("at least one frame"), std::string::npos);
+}
+
+namespace {
+
+pm::lab::TrackedFrame frameAt(double t, const pm::Phi &truth, const pm::Phi &estimate, bool moving)
+{
+  pm::lab::TrackedFrame f;
+  f.t = t;
+  f.haveTruth = true;
+  f.truth = truth;
+  f.moving = moving;
+  f.result.phi = estimate;
+  f.result.state = pm::TrackState::Tracking;
+  f.result.computeMs = 1.0;
+  f.result.evaluations = 800;
+  return f;
+}
+
+} // namespace
+
+TEST(TrackingReport, FiguresAfterConvergenceAsComputedByHand)
+{
+  // 60 frames at 30 fps: 10 frames 100 mm off (searching), then x off by 1 mm at rest and 3 mm
+  // while moving (frames 30..44), and one frame turned 3 deg (beyond 2 deg) before convergence.
+  std::vector<pm::lab::TrackedFrame> frames;
+  const pm::Phi truth{0, 0, 500, 0, 0, 0};
+  for (int k = 0; k < 60; ++k) {
+    const double t = k / 30.0;
+    const bool moving = k >= 30 && k < 45;
+    pm::Phi est = truth;
+    if (k < 10)
+      est.x = 100;
+    else
+      est.x = moving ? 3 : 1;
+    if (k == 12)
+      est.e1 = std::sin(1.5 * M_PI / 180); // a 3 deg turn about x
+    frames.push_back(frameAt(t, truth, est, moving));
+    if (k < 10)
+      frames.back().result.state = pm::TrackState::Searching;
+    frames.back().result.computeMs = k == 59 ? 9.0 : 1.0;
+  }
+  const pm::lab::TrackingReport r = pm::lab::reportTracking(frames, 30.0, pm::lab::table2Goals());
+  EXPECT_EQ(r.convergedFrame, 13); // frames 10, 11 start a run that frame 12 breaks
+  EXPECT_DOUBLE_EQ(r.convergedS, 13 / 30.0);
+  ASSERT_TRUE(r.haveTruth);
+  const pm::lab::AxisErrors &x = r.errors[0];
+  EXPECT_EQ(x.frames, 47u);
+  EXPECT_NEAR(x.rms, std::sqrt((32 * 1.0 + 15 * 9.0) / 47), 1e-12);
+  EXPECT_DOUBLE_EQ(x.max, 3);
+  EXPECT_DOUBLE_EQ(x.maxMoving, 3);
+  EXPECT_DOUBLE_EQ(x.maxAtRest, 1);
+  EXPECT_DOUBLE_EQ(x.goal, 5);
+  EXPECT_DOUBLE_EQ(r.errors[1].max, 0);
+  EXPECT_TRUE(r.goalsMet);
+  EXPECT_DOUBLE_EQ(r.meanMs, (59 * 1.0 + 9.0) / 60);
+  EXPECT_DOUBLE_EQ(r.p99Ms, 9.0);
+  EXPECT_DOUBLE_EQ(r.meanEvaluations, 800);
+  EXPECT_EQ(r.states.at("searching"), 10);
+  EXPECT_EQ(r.states.at("tracking"), 50);
+
+  // A goal missed; and a run without truth converges on the tracker's state alone.
+  std::array<double, 6> tight = pm::lab::table2Goals();
+  tight[0] = 2;
+  EXPECT_FALSE(pm::lab::reportTracking(frames, 30.0, tight).goalsMet);
+  for (auto &f : frames)
+    f.haveTruth = false;
+  const pm::lab::TrackingReport blind = pm::lab::reportTracking(frames, 30.0, pm::lab::table2Goals());
+  EXPECT_EQ(blind.convergedFrame, 10);
+  EXPECT_FALSE(blind.haveTruth);
+  EXPECT_FALSE(blind.goalsMet); // nothing to meet them with
+  EXPECT_NE(errorOf([] { pm::lab::reportTracking({}, 30.0, pm::lab::table2Goals()); }).find("no frame"), std::string::npos);
+
+  std::ostringstream csv;
+  pm::lab::writeFramesCsv(csv, {frames.front()});
+  const std::string text = csv.str();
+  EXPECT_EQ(text.rfind("t,true_x,", 0), 0u);
+  EXPECT_NE(text.find("\n0,nan,nan,nan,nan,nan,nan,100,0,500,0,0,0,nan,"), std::string::npos) << text;
+  EXPECT_NE(text.find(",searching,800,"), std::string::npos) << text;
+}
+
+TEST(LabSequence, FramesAreTheSimulatorsAlongTheTrajectoryWithTheirTruth)
+{
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::SceneParams sp;
+  sp.supersampling = 1;
+  const pm::sim::Scene scene(pm::sim::makeTarget("C05"), sp);
+  const pm::sim::Trajectory trajectory({{0, 0, 500, 0, 0, 0}, {30, -20, 520, 0.05, 0, 0}}, 0.1, 0.2);
+  const vpHomogeneousMatrix oMm(0.004, -0.002, 0.01, 0, 0, 0.1);
+  pm::lab::LabSequence seq(scene, rig, trajectory, oMm, 10.0, 4);
+  EXPECT_EQ(seq.length(), 4);
+  EXPECT_NE(seq.describe().find("C05"), std::string::npos);
+  pm::capture::StereoFrame f;
+  for (long k = 0; k < 4; ++k) {
+    ASSERT_TRUE(seq.next(f));
+    EXPECT_EQ(f.index, k);
+    EXPECT_DOUBLE_EQ(f.timeS, 0.1 * static_cast<double>(k));
+    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(trajectory.at(f.timeS));
+    const pm::Phi expected = pm::fromHomogeneousMatrix(hMo * oMm);
+    for (std::size_t i = 0; i < 6; ++i)
+      EXPECT_NEAR(seq.truth(k)[i], expected[i], 1e-12) << k << " " << i;
+    EXPECT_EQ(seq.moving(k), trajectory.moving(f.timeS));
+    if (k == 2) { // the images are the scene's at that pose, with noise seed k
+      const pm::sim::StereoImages im = scene.renderStereo(rig, hMo, 2);
+      EXPECT_TRUE(f.left == im.left);
+      EXPECT_TRUE(f.right == im.right);
+    }
+  }
+  EXPECT_TRUE(seq.moving(2));
+  EXPECT_FALSE(seq.moving(0));
+  EXPECT_FALSE(seq.next(f));
+  EXPECT_EQ(seq.stats().pairs, 4);
+  EXPECT_NE(errorOf([&] { pm::lab::LabSequence(scene, rig, trajectory, oMm, 0.0, 4); }).find("frame rate"), std::string::npos);
+}
+
+TEST(FrequencyResponse, TheSineFitRecoversAmplitudeAndPhase)
+{
+  std::vector<double> t, y;
+  for (int k = 0; k < 300; ++k) {
+    t.push_back(k / 30.0);
+    y.push_back(3.0 * std::sin(2 * M_PI * 0.5 * t.back() + 0.7) + 1.5 + 0.2 * std::sin(2 * M_PI * 2.0 * t.back()));
+  }
+  const auto [amplitude, phase] = pm::lab::sinusoidFit(t, y, 0.5);
+  EXPECT_NEAR(amplitude, 3.0, 1e-3); // the 2 Hz component and the offset are not the 0.5 Hz one
+  EXPECT_NEAR(phase, 0.7, 1e-3);
+}
+
+TEST(LoopTable, EveryRowHasTheHeadersColumns)
+{
+  std::ostringstream csv;
+  pm::lab::writeLoopCsvHeader(csv);
+  pm::lab::LoopFrame f;
+  f.t = 0.5;
+  f.q = pm::lab::LoopParams::startJoints();
+  f.qdot.resize(7);
+  f.translationErrorMm = 1.25;
+  pm::lab::writeLoopCsvRow(csv, f, true);
+  std::istringstream lines(csv.str());
+  std::string header, row;
+  std::getline(lines, header);
+  std::getline(lines, row);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 40); // 41 columns: 27 and 14 joints
+  EXPECT_NE(row.find(",1.25,"), std::string::npos) << row;
+  EXPECT_NE(row.find(",oracle,"), std::string::npos) << row;
+}
