@@ -16,7 +16,7 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/app/Patterns.h"
 #include "pm/app/Progress.h"
 #include "pm/calib/StereoBaseline.h"
@@ -213,9 +213,9 @@ int main(int argc, char **argv)
       vpImageDraw::drawCross(L, c, 9, vpColor::green, 2);
     for (const auto &c : cornersR)
       vpImageDraw::drawCross(R, c, 9, vpColor::green, 2);
-    pm::app::drawLabel(L, "corners found, left", 8, 8, vpRGBa(255, 255, 255));
-    pm::app::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
-    pm::io::writeImage(pm::app::sideBySide(L, R), files.stage("detections.png"));
+    pm::report::drawLabel(L, "corners found, left", 8, 8, vpRGBa(255, 255, 255));
+    pm::report::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
+    pm::io::writeImage(pm::report::sideBySide(L, R), files.stage("detections.png"));
     nlohmann::json summary{{"source", source},
                                  {"pattern", pattern->describe()},
                                  {"rig", rigPath},

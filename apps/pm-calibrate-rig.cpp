@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/app/Patterns.h"
 #include "pm/app/Progress.h"
 #include "pm/calib/RigCalibration.h"
@@ -155,8 +155,8 @@ int main(int argc, char **argv)
       vpImage<vpRGBa> coverage = pm::calib::coverageImage(c, arrowGain);
       std::ostringstream legend;
       legend << "left: corners found (a colour per view), residuals x" << arrowGain << " (red)";
-      pm::app::drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
-      pm::app::drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
+      pm::report::drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
+      pm::report::drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
       pm::io::writeImage(coverage, files.stage("coverage.png"));
       pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
       files.commit();

@@ -6,9 +6,9 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/app/Progress.h"
-#include "pm/app/TimePlot.h"
+#include "pm/report/TimePlot.h"
 #include "pm/compare/Comparison.h"
 #include "pm/compare/Metrics.h"
 #include "pm/core/Error.h"
@@ -145,13 +145,13 @@ int main(int argc, char **argv)
     // Errors over time, one figure per scenario (clipped at 100 mm and 20 deg to stay readable).
     for (std::size_t si = 0; si < r.scenarios.size(); ++si) {
       const pm::compare::Scenario &seq = r.scenarios[si];
-      pm::app::Panel pt{"translation error (clipped at 100 mm)", "mm", {}, 0, {}}, pr{"rotation error (clipped at 20 deg)", "deg", {}, 0, {}};
+      pm::report::Panel pt{"translation error (clipped at 100 mm)", "mm", {}, 0, {}}, pr{"rotation error (clipped at 20 deg)", "deg", {}, 0, {}};
       for (int e : seq.lossEnds) {
         pt.marks.push_back(e / seq.fps);
         pr.marks.push_back(e / seq.fps);
       }
       for (std::size_t ti = 0; ti < nT; ++ti) {
-        pm::app::Series a{r.names[ti], pm::compare::trackerColor(ti), {}, {}, false}, b = a;
+        pm::report::Series a{r.names[ti], pm::compare::trackerColor(ti), {}, {}, false}, b = a;
         for (std::size_t k = 0; k < r.scores[si][ti].size(); ++k) {
           a.t.push_back(static_cast<double>(k) / seq.fps);
           a.y.push_back(std::min(100.0, r.scores[si][ti][k].translationMm));
@@ -161,19 +161,19 @@ int main(int argc, char **argv)
         pt.series.push_back(a);
         pr.series.push_back(b);
       }
-      pm::io::writeImage(pm::app::drawTimePlots({pt, pr}, 1, seq.name + ": " + seq.description, "time [s]", 1100),
+      pm::io::writeImage(pm::report::drawTimePlots({pt, pr}, 1, seq.name + ": " + seq.description, "time [s]", 1100),
                          files.stage("errors_" + seq.name + ".png"));
     }
     // Snapshots: the left image with every tracker's outline, two per scenario, labelled.
     std::vector<vpImage<vpRGBa>> shots = r.snapshots;
     for (std::size_t i = 0; i < shots.size(); ++i) {
-      pm::app::drawLabel(shots[i], r.scenarios[i / 2].name + ", frame " + std::to_string(r.snapshotFrames[i]) + " (white: truth)", 8, 8,
+      pm::report::drawLabel(shots[i], r.scenarios[i / 2].name + ", frame " + std::to_string(r.snapshotFrames[i]) + " (white: truth)", 8, 8,
                          vpRGBa(255, 255, 255));
       for (std::size_t ti = 0; ti < nT; ++ti)
-        pm::app::drawLabel(shots[i], r.names[ti], 28 + 18 * static_cast<int>(ti), 8, pm::compare::trackerColor(ti));
+        pm::report::drawLabel(shots[i], r.names[ti], 28 + 18 * static_cast<int>(ti), 8, pm::compare::trackerColor(ti));
     }
     for (std::size_t i = 0; i + 1 < shots.size(); i += 2)
-      pm::io::writeImage(pm::app::sideBySide(shots[i], shots[i + 1]), files.stage("snapshots_" + r.scenarios[i / 2].name + ".png"));
+      pm::io::writeImage(pm::report::sideBySide(shots[i], shots[i + 1]), files.stage("snapshots_" + r.scenarios[i / 2].name + ".png"));
     files.commit();
     if (!quiet)
       std::cout << "pm-compare, target " << cp.target << ", " << comparison.totalFrames() << " frames per tracker\n\n"

@@ -14,7 +14,7 @@
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
 #include "pm/app/Progress.h"
-#include "pm/app/TimePlot.h"
+#include "pm/report/TimePlot.h"
 #include "pm/compare/LabelledFrames.h"
 #include "pm/compare/Roc.h"
 #include "pm/compare/Scenario.h"
@@ -225,7 +225,7 @@ int main(int argc, char **argv)
     csv.close();
 
     // The ROC, whole and near its left edge, in percent; the dotted line: the trusted frames' false accept rate.
-    pm::app::Series whole{"confidence", vpRGBa(200, 40, 40), {}, {}, false}, edge = whole;
+    pm::report::Series whole{"confidence", vpRGBa(200, 40, 40), {}, {}, false}, edge = whole;
     for (const auto &p : curve) {
       whole.t.push_back(100 * p.falseAcceptRate);
       whole.y.push_back(100 * p.trueAcceptRate);
@@ -237,7 +237,7 @@ int main(int argc, char **argv)
     const double trustedFar = 100.0 * static_cast<double>(trustedWrong) / nWrong;
     std::ostringstream title;
     title << "ROC of the confidence on " << set.size() << " frames (" << wrong << " wrong), AUROC " << std::fixed << std::setprecision(4) << area;
-    pm::io::writeImage(pm::app::drawTimePlots({{"ROC", "TAR %", {whole}, 0, {trustedFar}},
+    pm::io::writeImage(pm::report::drawTimePlots({{"ROC", "TAR %", {whole}, 0, {trustedFar}},
                                                {"ROC up to 2 % false accepts", "TAR %", {edge}, 0, {trustedFar}}},
                                               2, title.str(), "false accept rate (%)", 560),
                        files.stage("roc.png"));

@@ -9,7 +9,7 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/app/Progress.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
@@ -157,8 +157,8 @@ int main(int argc, char **argv)
       }
       const double totalS = seconds();
       pm::io::StagedFiles files(dir);
-      pm::io::writeImage(pm::app::sideBySide(pm::app::drawPointScores(IL, tracker.fitness().pointScores(best.phi, 0), "detection, left"),
-                                             pm::app::drawPointScores(IR, tracker.fitness().pointScores(best.phi, 1), "right")),
+      pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(IL, tracker.fitness().pointScores(best.phi, 0), "detection, left"),
+                                             pm::report::drawPointScores(IR, tracker.fitness().pointScores(best.phi, 1), "right")),
                          files.stage("detection.png"));
       nlohmann::json s{{"source", source},
                        {"pose", phiJson(best.phi)},

@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
-#include "pm/app/HeatMap.h"
+#include "pm/report/HeatMap.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/app/Progress.h"
 #include "pm/core/Error.h"
 #include "pm/core/FitnessMap.h"
@@ -29,9 +29,9 @@ namespace {
 const char *kVarNames[6] = {"x [mm]", "y [mm]", "z [mm]", "eps1", "eps2", "eps3"};
 const char *kVarShort[6] = {"x", "y", "z", "e1", "e2", "e3"};
 
-pm::app::Grid2D toGrid(const pm::FitnessMap &m)
+pm::report::Grid2D toGrid(const pm::FitnessMap &m)
 {
-  pm::app::Grid2D g;
+  pm::report::Grid2D g;
   g.xName = kVarNames[m.spec.a];
   g.yName = kVarNames[m.spec.b];
   g.x0 = m.spec.loA;
@@ -158,7 +158,7 @@ int main(int argc, char **argv)
           throw pm::Error("cannot write " + files.finalPath("map_" + name + ".csv"));
         std::ostringstream title;
         title << std::setprecision(3) << "F over " << kVarShort[s.a] << "-" << kVarShort[s.b] << ", max " << m.maxFitness;
-        pm::io::writeImage(pm::app::drawHeatMap(toGrid(m), title.str(),
+        pm::io::writeImage(pm::report::drawHeatMap(toGrid(m), title.str(),
                                                 {{ta, tb, "truth", vpRGBa(255, 255, 255), true},
                                                  {m.peakA, m.peakB, "peak", vpRGBa(230, 30, 30), false}}),
                            files.stage("map_" + name + ".png"));
@@ -171,8 +171,8 @@ int main(int argc, char **argv)
       }
       progress.finish();
       const pm::FitnessDetail atTruth = fit.evaluateDetail(truth);
-      pm::io::writeImage(pm::app::sideBySide(pm::app::drawPointScores(IL, fit.pointScores(truth, 0), "model at the truth, left"),
-                                             pm::app::drawPointScores(IR, fit.pointScores(truth, 1), "right")),
+      pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(IL, fit.pointScores(truth, 0), "model at the truth, left"),
+                                             pm::report::drawPointScores(IR, fit.pointScores(truth, 1), "right")),
                          files.stage("truth_overlay.png"));
       auto countsJson = [](const pm::FitnessCounts &c) {
         return nlohmann::json{{"in_match", c.inMatch},         {"in_background", c.inBackground}, {"in_other", c.inOther},

@@ -8,7 +8,7 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/capture/VideoCaptureSource.h"
 #include "pm/core/Error.h"
 #include "pm/model/PhotoModelBuilder.h"
@@ -238,10 +238,10 @@ int main(int argc, char **argv)
 
     pm::io::StagedFiles files(out);
     pm::io::savePhotoModel(m, files.stage("model.json"));
-    pm::io::writeImage(pm::app::drawModelOnPhoto(tg, build.region, m), files.stage("overlay.png"));
-    pm::io::writeImage(pm::app::drawModel(m), files.stage("model.png"));
+    pm::io::writeImage(pm::report::drawModelOnPhoto(tg, build.region, m), files.stage("overlay.png"));
+    pm::io::writeImage(pm::report::drawModel(m), files.stage("model.png"));
     if (hasDepth)
-      pm::io::writeImage(pm::app::drawDepth(tg, depth, m, dropped, m.depthRangeMm[0], m.depthRangeMm[1]),
+      pm::io::writeImage(pm::report::drawDepth(tg, depth, m, dropped, m.depthRangeMm[0], m.depthRangeMm[1]),
                          files.stage("depth.png"));
     if (background.empty()) {
       pm::io::writeImage(bg, files.stage("photo_background.png"));

@@ -10,7 +10,7 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/app/Progress.h"
 #include "pm/core/Error.h"
 #include "pm/core/Pose.h"
@@ -120,13 +120,13 @@ int main(int argc, char **argv)
       progress.step(2);
       const std::string c = shape.info.code == "user" ? "user" : shape.info.code;
       vpImage<vpRGBa> L = im.left, R = im.right;
-      pm::app::drawLabel(L, c + " " + shape.info.name + " - left", 8, 8, vpRGBa(255, 255, 255));
-      pm::app::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
+      pm::report::drawLabel(L, c + " " + shape.info.name + " - left", 8, 8, vpRGBa(255, 255, 255));
+      pm::report::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
       pm::io::writeImage(im.left, files.stage(c + "_left.png"));
       pm::io::writeImage(im.right, files.stage(c + "_right.png"));
-      pm::io::writeImage(pm::app::sideBySide(L, R), files.stage(c + "_stereo.png"));
-      vpImage<vpRGBa> rel = pm::app::sideBySide(pm::app::sideBySide(halfSize(turned[0]), halfSize(turned[1])), halfSize(turned[2]));
-      pm::app::drawLabel(rel, c + " turned eps2 = -0.3, 0, +0.3 (left camera)", 6, 6, vpRGBa(255, 255, 255));
+      pm::io::writeImage(pm::report::sideBySide(L, R), files.stage(c + "_stereo.png"));
+      vpImage<vpRGBa> rel = pm::report::sideBySide(pm::report::sideBySide(halfSize(turned[0]), halfSize(turned[1])), halfSize(turned[2]));
+      pm::report::drawLabel(rel, c + " turned eps2 = -0.3, 0, +0.3 (left camera)", 6, 6, vpRGBa(255, 255, 255));
       pm::io::writeImage(rel, files.stage(c + "_relief.png"));
       double w = 0, h = 0;
       shape.measuredExtent(w, h);
@@ -137,7 +137,7 @@ int main(int argc, char **argv)
                          {"triangles", scene.targetTriangles()},
                          {"render_stereo_ms", ms}});
       vpImage<vpRGBa> th = halfSize(im.left);
-      pm::app::drawLabel(th, c + " " + shape.info.name, 4, 4, vpRGBa(255, 255, 255));
+      pm::report::drawLabel(th, c + " " + shape.info.name, 4, 4, vpRGBa(255, 255, 255));
       thumbs.push_back(th);
     }
     progress.finish();

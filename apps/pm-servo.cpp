@@ -14,10 +14,10 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
-#include "pm/app/PlotUtil.h"
+#include "pm/report/Overlay.h"
+#include "pm/report/PlotUtil.h"
 #include "pm/app/Progress.h"
-#include "pm/app/TimePlot.h"
+#include "pm/report/TimePlot.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PoseTableFile.h"
@@ -26,6 +26,7 @@
 #include "pm/lab/ClosedLoop.h"
 #include "pm/lab/FrequencyResponse.h"
 #include "pm/lab/LoopTable.h"
+#include "pm/lab/RunFigures.h"
 #include "pm/lab/RunLog.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -134,7 +135,7 @@ int main(int argc, char **argv)
       progress.finish();
       std::ostringstream csv;
       csv << "frequency_hz,amplitude,gain,phase_lag_deg\n";
-      pm::app::Series gainS{"gain", vpRGBa(40, 90, 200), {}, {}, false}, phaseS{"phase lag", vpRGBa(220, 60, 40), {}, {}, false};
+      pm::report::Series gainS{"gain", vpRGBa(40, 90, 200), {}, {}, false}, phaseS{"phase lag", vpRGBa(220, 60, 40), {}, {}, false};
       nlohmann::json rows = nlohmann::json::array();
       for (const pm::lab::BodePoint &p : bode) {
         csv << p.frequencyHz << "," << p.amplitude << "," << p.gain << "," << p.phaseLagDeg << "\n";
@@ -145,10 +146,10 @@ int main(int argc, char **argv)
         phaseS.y.push_back(p.phaseLagDeg);
       }
       pm::io::writeTextFile(files.stage("bode.csv"), csv.str());
-      pm::io::writeImage(pm::app::drawTimePlots({{"tracking gain (hand / target amplitude)", "", {gainS}, 0, {}},
+      pm::io::writeImage(pm::report::drawTimePlots({{"tracking gain (hand / target amplitude)", "", {gainS}, 0, {}},
                                                  {"phase lag of the hand (deg)", "deg", {phaseS}, 0, {}}},
                                                 2, "frequency response of the visual servo, sine on " + axis + ", amplitude " +
-                                                       pm::app::tickLabel(amplitude),
+                                                       pm::report::tickLabel(amplitude),
                                                 "frequency [Hz]"),
                          files.stage("bode.png"));
       pm::io::writeTextFile(files.stage("summary.json"), nlohmann::json{{"axis", axis}, {"amplitude", amplitude}, {"sweep", rows}}.dump(2) + "\n");
@@ -196,8 +197,8 @@ int main(int argc, char **argv)
         label << std::fixed << std::setprecision(1) << "t " << f.t << " s  " << (lp.oracle ? "oracle" : pm::toString(f.track.state))
               << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg";
         const vpImage<vpRGBa> pair =
-            pm::app::sideBySide(pm::app::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str()),
-                                pm::app::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right"));
+            pm::report::sideBySide(pm::report::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str()),
+                                pm::report::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right"));
         if (wantVideo) {
           cv::Mat half;
           cv::resize(toBgr(pair), half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
@@ -225,48 +226,11 @@ int main(int argc, char **argv)
     const double meanMs = log.meanComputeMs();
     const pm::lab::ErrorStats &rest = log.atRest(), &moving = log.moving();
     // Figures (the plotted errors are the maxima over the frames each sample stands for).
-    const std::vector<pm::lab::RunSample> &rec = log.samples();
-    const std::string every = log.framesPerSample() > 1 ? " (max of every " + std::to_string(log.framesPerSample()) + " frames)" : "";
-    const std::vector<double> marks = log.converged() ? std::vector<double>{log.convergedAfterS()} : std::vector<double>{};
-    pm::app::Series te{"translation", vpRGBa(40, 90, 200), {}, {}, false}, re{"rotation", vpRGBa(220, 60, 40), {}, {}, false};
-    for (const auto &f : rec) {
-      te.t.push_back(f.t);
-      te.y.push_back(f.translationErrorMm);
-      re.t.push_back(f.t);
-      re.y.push_back(f.rotationErrorDeg);
-    }
-    pm::io::writeImage(pm::app::drawTimePlots({{"relative pose error, translation (goal 10 mm moving, 2 mm at rest)" + every, "mm", {te}, 10, marks},
-                                               {"relative pose error, rotation (goal 2 deg moving, 0.5 deg at rest)" + every, "deg", {re}, 2, marks}},
-                                              1, std::string("PA-10 following ") + scene.target().info.name +
-                                                     (lp.oracle ? " (oracle: true pose)" : " (photo-model tracker)"),
-                                              "time [s]", 860),
+    pm::io::writeImage(pm::lab::drawRunErrors(log, std::string("PA-10 following ") + scene.target().info.name +
+                                                       (lp.oracle ? " (oracle: true pose)" : " (photo-model tracker)")),
                        files.stage("errors.png"));
-    std::vector<pm::app::Panel> rel;
-    for (std::size_t i = 0; i < 6; ++i) {
-      pm::app::Series a{"truth", vpRGBa(40, 40, 40), {}, {}, true}, b{"used by the servo", vpRGBa(220, 60, 40), {}, {}, false};
-      for (const auto &f : rec) {
-        a.t.push_back(f.t);
-        a.y.push_back(f.truth[i]);
-        b.t.push_back(f.t);
-        b.y.push_back(f.used[i]);
-      }
-      rel.push_back({std::string("target in the hand frame: ") + (i < 3 ? std::string(1, "xyz"[i]) : std::string("eps") + std::to_string(i - 2)),
-                     i < 3 ? "mm" : "", {a, b}, 0, marks});
-    }
-    pm::io::writeImage(pm::app::drawTimePlots(rel, 2, "relative pose: estimate used by the servo against truth"), files.stage("relative_pose.png"));
-    std::vector<pm::app::Series> js;
-    const vpRGBa colors[7] = {vpRGBa(220, 60, 40), vpRGBa(40, 90, 200), vpRGBa(40, 160, 60), vpRGBa(160, 60, 200),
-                              vpRGBa(230, 150, 20), vpRGBa(20, 170, 170), vpRGBa(90, 90, 90)};
-    for (unsigned i = 0; i < 7; ++i) {
-      pm::app::Series s{"q" + std::to_string(i + 1), colors[i], {}, {}, false};
-      for (const auto &f : rec) {
-        s.t.push_back(f.t);
-        s.y.push_back(f.q[i] * 180 / M_PI);
-      }
-      js.push_back(s);
-    }
-    pm::io::writeImage(pm::app::drawTimePlots({{"PA-10 joints", "deg", js, 0, marks}}, 1, "joint trajectories"), files.stage("joints.png"));
-
+    pm::io::writeImage(pm::lab::drawRunRelativePose(log), files.stage("relative_pose.png"));
+    pm::io::writeImage(pm::lab::drawRunJoints(log), files.stage("joints.png"));
     nlohmann::json tenths = nlohmann::json::array();
     for (const auto &s : log.tenths())
       tenths.push_back({{"frames", s.frames}, {"rms_error_mm", s.rmsMm()}, {"max_error_mm", s.maxMm}, {"rms_rotation_error_deg", s.rmsDeg()},

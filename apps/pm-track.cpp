@@ -13,12 +13,11 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/app/Overlay.h"
-#include "pm/app/LiveView.h"
+#include "pm/report/Overlay.h"
+#include "pm/report/LiveView.h"
 #include "pm/app/Progress.h"
 #include "pm/capture/ImageSequenceSource.h"
 #include "pm/capture/VideoCaptureSource.h"
-#include "pm/app/TimePlot.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
@@ -26,6 +25,7 @@
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/lab/LabSequence.h"
+#include "pm/lab/RunFigures.h"
 #include "pm/lab/TrackingReport.h"
 #include "pm/lab/Convergence.h"
 #include "pm/tracker/TrackerConfigFile.h"
@@ -155,7 +155,7 @@ int main(int argc, char **argv)
     rec.reserve(static_cast<std::size_t>(std::max(0L, nFrames)));
     vpImage<vpRGBa> lastL, lastR;
     pm::app::Progress progress("tracking", static_cast<std::size_t>(std::max(0L, nFrames)), quiet || nFrames <= 0);
-    pm::app::LiveView view;
+    pm::report::LiveView view;
     if (display)
       view.open("pm-track: " + source);
     pm::capture::StereoFrame sf;
@@ -215,38 +215,13 @@ int main(int argc, char **argv)
       pm::lab::writeFramesCsv(csv, rec);
     }
     // Figures like the paper's 13 (estimate against truth) and 14 (errors after convergence).
+    pm::io::writeImage(pm::lab::drawTrackingTrajectory(rec, report, source), files.stage("trajectory.png"));
+    if (report.haveTruth)
+      pm::io::writeImage(pm::lab::drawTrackingErrors(rec, report), files.stage("errors.png"));
     const double tConverged = report.convergedFrame >= 0 ? rec[static_cast<std::size_t>(report.convergedFrame)].t : 0;
-    std::vector<pm::app::Panel> traj, errs;
-    for (std::size_t i = 0; i < 6; ++i) {
-      pm::app::Series truthS{"truth", vpRGBa(40, 40, 40), {}, {}, true}, estS{"estimate", vpRGBa(220, 60, 40), {}, {}, false};
-      pm::app::Series errS{"error", vpRGBa(40, 90, 200), {}, {}, false};
-      for (const auto &f : rec) {
-        estS.t.push_back(f.t);
-        estS.y.push_back(f.result.phi[i]);
-        if (f.haveTruth) {
-          truthS.t.push_back(f.t);
-          truthS.y.push_back(f.truth[i]);
-          if (report.convergedFrame < 0 || f.t >= tConverged) {
-            errS.t.push_back(f.t);
-            errS.y.push_back(f.result.phi[i] - f.truth[i]);
-          }
-        }
-      }
-      const std::string unit = i < 3 ? "mm" : "";
-      pm::app::Panel a{std::string(names[i]), unit, {}, 0, report.convergedFrame >= 0 ? std::vector<double>{tConverged} : std::vector<double>{}};
-      if (!truthS.t.empty())
-        a.series.push_back(truthS);
-      a.series.push_back(estS);
-      traj.push_back(a);
-      if (report.haveTruth)
-        errs.push_back({std::string("error of ") + names[i] + " after convergence", unit, {errS}, report.errors[i].goal, {}});
-    }
-    pm::io::writeImage(pm::app::drawTimePlots(traj, 2, "estimate (red) against truth (dashed), " + source), files.stage("trajectory.png"));
-    if (!errs.empty())
-      pm::io::writeImage(pm::app::drawTimePlots(errs, 2, "errors after convergence; green band: the goal"), files.stage("errors.png"));
     tracker.initFromPose(rec.back().result.hMo); // to draw the last estimate
-    pm::io::writeImage(pm::app::sideBySide(pm::app::drawPointScores(lastL, tracker.fitness().pointScores(rec.back().result.phi, 0), "last frame, left"),
-                                           pm::app::drawPointScores(lastR, tracker.fitness().pointScores(rec.back().result.phi, 1), "right")),
+    pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(lastL, tracker.fitness().pointScores(rec.back().result.phi, 0), "last frame, left"),
+                                           pm::report::drawPointScores(lastR, tracker.fitness().pointScores(rec.back().result.phi, 1), "right")),
                        files.stage("last_frame.png"));
     nlohmann::json errors;
     for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)

@@ -1,9 +1,6 @@
 #include "pm/app/Options.h"
 
 #include "pm/tracker/TrackerConfigFile.h"
-#include "pm/lab/ClosedLoop.h"
-#include "pm/lab/LabPass.h"
-#include "pm/sim/TargetCatalog.h"
 
 namespace pm::app {
 
@@ -50,22 +47,6 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
       ->check(CLI::Range(1, 5000));
 }
 
-sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c)
-{
-  if (!c.flat && !c.stereo) {
-    PassPlan plan;
-    plan.views = c.passViews;
-    return lab::makeSimulatedAllAroundModel(scene, rig, plan, lab::LoopParams::startJoints(), c.distanceMm, c.allAroundParams);
-  }
-  if (c.stereo) {
-    StereoModelParams sp;
-    sp.photo = c.photo;
-    sp.rightView = c.rightView;
-    return sim::makeSimulatedStereoPhotoModel(scene, rig, c.distanceMm, sp, c.viewTurnDeg);
-  }
-  return sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, c.distanceMm, c.photo);
-}
-
 void addSceneOptions(CLI::App &app, sim::SceneParams &p)
 {
   const char *g = "Simulator";
@@ -86,17 +67,6 @@ void addDistractorOptions(CLI::App &app, DistractorChoice &c)
       ->delimiter(',')
       ->expected(2)
       ->group(g);
-}
-
-void DistractorChoice::apply(sim::Scene &scene) const
-{
-  if (target.empty())
-    return;
-  scene.setDistractor(sim::makeTarget(target));
-  scene.params().distractor = true;
-  scene.params().distractorPose[0] = atMm.at(0);
-  scene.params().distractorPose[1] = atMm.at(1);
-  scene.params().validate();
 }
 
 void addFitnessOptions(CLI::App &app, FitnessParams &p)

@@ -1,4 +1,4 @@
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <visp3/core/vpFont.h>
 #include <visp3/core/vpImageDraw.h>
 
-namespace pm::app {
+namespace pm::report {
 
 namespace {
 vpColor hueColor(float hueDeg)
@@ -132,4 +132,4 @@ vpImage<vpRGBa> sideBySide(const vpImage<vpRGBa> &a, const vpImage<vpRGBa> &b)
   return I;
 }
 
-} // namespace pm::app
+} // namespace pm::report

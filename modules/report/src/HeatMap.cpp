@@ -1,5 +1,5 @@
-#include "pm/app/HeatMap.h"
-#include "pm/app/PlotUtil.h"
+#include "pm/report/HeatMap.h"
+#include "pm/report/PlotUtil.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace pm::app {
+namespace pm::report {
 
 
 vpImage<vpRGBa> drawHeatMap(const Grid2D &g, const std::string &title, const std::vector<Marker> &markers)
@@ -84,4 +84,4 @@ vpImage<vpRGBa> drawHeatMap(const Grid2D &g, const std::string &title, const std
   return toVisp(img);
 }
 
-} // namespace pm::app
+} // namespace pm::report

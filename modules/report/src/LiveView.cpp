@@ -1,4 +1,4 @@
-#include "pm/app/LiveView.h"
+#include "pm/report/LiveView.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -7,11 +7,11 @@
 #include <visp3/core/vpException.h>
 #include <visp3/gui/vpDisplayX.h>
 
-#include "pm/app/Overlay.h"
+#include "pm/report/Overlay.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
 
-namespace pm::app {
+namespace pm::report {
 
 LiveView::LiveView() = default;
 LiveView::~LiveView() = default;
@@ -69,4 +69,4 @@ void LiveView::capture(const std::string &pngPath)
   io::writeImage(shot, pngPath);
 }
 
-} // namespace pm::app
+} // namespace pm::report

@@ -1,13 +1,13 @@
-#include "pm/app/TimePlot.h"
+#include "pm/report/TimePlot.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <opencv2/imgproc.hpp>
 
-#include "pm/app/PlotUtil.h"
+#include "pm/report/PlotUtil.h"
 
-namespace pm::app {
+namespace pm::report {
 
 namespace {
 
@@ -115,4 +115,4 @@ vpImage<vpRGBa> drawTimePlots(const std::vector<Panel> &panels, int cols, const 
   return toVisp(img);
 }
 
-} // namespace pm::app
+} // namespace pm::report

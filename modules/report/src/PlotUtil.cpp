@@ -1,11 +1,11 @@
-#include "pm/app/PlotUtil.h"
+#include "pm/report/PlotUtil.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include <opencv2/imgproc.hpp>
 
-namespace pm::app {
+namespace pm::report {
 
 std::string tickLabel(double v)
 {
@@ -57,4 +57,4 @@ vpImage<vpRGBa> toVisp(const cv::Mat &img)
   return out;
 }
 
-} // namespace pm::app
+} // namespace pm::report
