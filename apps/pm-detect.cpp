@@ -1,5 +1,4 @@
 //! pm-detect: static detection on one still stereo pair (the paper's Sec. 5, Table 1).
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -20,6 +19,7 @@
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/tracker/StaticDetection.h"
 
 namespace {
 
@@ -39,19 +39,6 @@ Errors errorsBetween(const pm::Phi &a, const pm::Phi &b)
 }
 
 nlohmann::json phiJson(const pm::Phi &p) { return {p.x, p.y, p.z, p.e1, p.e2, p.e3}; }
-
-//! The fitness peak nearest \e start: a pattern search of the genes (the paper measures Table 1 against it).
-pm::Phi localPeak(const pm::StereoFitness &fit, const pm::Phi &start, const pm::SearchSpace &space)
-{
-  pm::StereoObjective obj(fit);
-  pm::RmGaParams gp;
-  gp.population = 2;
-  gp.elite = 1;
-  gp.refineEvaluations = 5000;
-  pm::RmGa ga(space, gp);
-  ga.seedAround(start, 0.0);
-  return ga.evolve(obj, pm::FrameBudget::evals(2 + gp.refineEvaluations)).best;
-}
 
 } // namespace
 
@@ -135,27 +122,11 @@ int main(int argc, char **argv)
       }
       pm::PhotoModelTracker tracker(rig, model, tp);
       tracker.initialize();
-      const auto t0 = std::chrono::steady_clock::now();
-      auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-      double bestF = -1e300, convergedS = 0;
-      long evals = 0, evalsAtBest = 0;
-      int frames = 0, sinceBest = 0;
-      pm::TrackResult best;
-      while (seconds() < maxTimeS) {
-        const pm::TrackResult r = tracker.track(IL, IR);
-        ++frames;
-        evals += r.evaluations;
-        if (r.fitness > bestF) {
-          bestF = r.fitness;
-          best = r;
-          convergedS = seconds();
-          evalsAtBest = evals;
-          sinceBest = 0;
-        } else if (++sinceBest >= patience && best.state == pm::TrackState::Tracking) {
-          break;
-        }
-      }
-      const double totalS = seconds();
+      pm::DetectionParams dp;
+      dp.maxTimeS = maxTimeS;
+      dp.patience = patience;
+      const pm::Detection d = pm::detectStatic(tracker, IL, IR, dp);
+      const pm::TrackResult &best = d.best;
       pm::io::StagedFiles files(dir);
       pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(IL, tracker.fitness().pointScores(best.phi, 0), "detection, left"),
                                              pm::report::drawPointScores(IR, tracker.fitness().pointScores(best.phi, 1), "right")),
@@ -165,16 +136,16 @@ int main(int argc, char **argv)
                        {"fitness", best.fitness},
                        {"quality", best.quality},
                        {"state", pm::toString(best.state)},
-                       {"time_s", convergedS},
-                       {"total_time_s", totalS},
-                       {"evaluations", evalsAtBest},
-                       {"total_evaluations", evals},
-                       {"frames", frames},
+                       {"time_s", d.convergedS},
+                       {"total_time_s", d.totalS},
+                       {"evaluations", d.evaluations},
+                       {"total_evaluations", d.totalEvaluations},
+                       {"frames", d.frames},
                        {"budget", tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations per frame"
                                                            : std::to_string(tp.budgetMs) + " ms per frame"}};
       if (haveTruth) {
         const Errors e = errorsBetween(best.phi, truth);
-        const pm::Phi peak = localPeak(tracker.fitness(), truth, tp.space);
+        const pm::Phi peak = pm::nearestFitnessPeak(tracker.fitness(), truth, tp.space);
         const Errors ep = errorsBetween(best.phi, peak);
         s["truth"] = phiJson(truth);
         s["position_error_mm"] = e.position;

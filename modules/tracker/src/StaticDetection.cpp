@@ -1,0 +1,48 @@
+#include "pm/tracker/StaticDetection.h"
+
+#include <chrono>
+
+#include "pm/rmga/RmGa.h"
+#include "pm/rmga/StereoObjective.h"
+
+namespace pm {
+
+Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right,
+                       const DetectionParams &params)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  Detection d;
+  double bestF = -1e300;
+  int sinceBest = 0;
+  while (seconds() < params.maxTimeS) {
+    const TrackResult r = tracker.track(left, right);
+    ++d.frames;
+    d.totalEvaluations += r.evaluations;
+    if (r.fitness > bestF) {
+      bestF = r.fitness;
+      d.best = r;
+      d.convergedS = seconds();
+      d.evaluations = d.totalEvaluations;
+      sinceBest = 0;
+    } else if (++sinceBest >= params.patience && d.best.state == TrackState::Tracking) {
+      break;
+    }
+  }
+  d.totalS = seconds();
+  return d;
+}
+
+Phi nearestFitnessPeak(const StereoFitness &fitness, const Phi &start, const SearchSpace &space)
+{
+  StereoObjective obj(fitness);
+  RmGaParams gp;
+  gp.population = 2;
+  gp.elite = 1;
+  gp.refineEvaluations = 5000;
+  RmGa ga(space, gp);
+  ga.seedAround(start, 0.0);
+  return ga.evolve(obj, FrameBudget::evals(2 + gp.refineEvaluations)).best;
+}
+
+} // namespace pm
