@@ -4,11 +4,10 @@
 #include <iomanip>
 #include <iostream>
 
-#include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/report/Overlay.h"
+#include "pm/report/ModelOutputs.h"
 #include "pm/capture/VideoCaptureSource.h"
 #include "pm/core/Error.h"
 #include "pm/model/PhotoModelBuilder.h"
@@ -19,7 +18,6 @@
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
-#include "pm/io/StagedFiles.h"
 #include "pm/io/AllAroundFiles.h"
 #include "pm/io/ViewsFolder.h"
 #include "pm/lab/ClosedLoop.h"
@@ -233,50 +231,24 @@ int main(int argc, char **argv)
       if (stereo)
         source += ", stereo";
     }
-    const pm::PhotoModel &m = build.model;
-    const bool hasDepth = m.hasDepth();
-
-    pm::io::StagedFiles files(out);
-    pm::io::savePhotoModel(m, files.stage("model.json"));
-    pm::io::writeImage(pm::report::drawModelOnPhoto(tg, build.region, m), files.stage("overlay.png"));
-    pm::io::writeImage(pm::report::drawModel(m), files.stage("model.png"));
-    if (hasDepth)
-      pm::io::writeImage(pm::report::drawDepth(tg, depth, m, dropped, m.depthRangeMm[0], m.depthRangeMm[1]),
-                         files.stage("depth.png"));
-    if (background.empty()) {
-      pm::io::writeImage(bg, files.stage("photo_background.png"));
-      pm::io::writeImage(tg, files.stage("photo_target.png"));
-    }
-    const double offX = (m.centroidU - m.u0) * m.distanceMm / m.px, offY = (m.centroidV - m.v0) * m.distanceMm / m.py;
-    unsigned area = 0;
-    for (unsigned i = 0; i < build.region.getSize(); ++i)
-      area += build.region.bitmap[i] ? 1u : 0u;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    nlohmann::json summary{{"source", source},
-                                 {"kind", hasDepth ? "stereo" : "flat"},
-                                 {"n_in", m.inner.size()},
-                                 {"n_out", m.outer.size()},
-                                 {"background_hue_deg", m.backgroundHue},
-                                 {"target_hue_deg", m.targetHue},
-                                 {"distance_mm", m.distanceMm},
-                                 {"centroid_px", {m.centroidU, m.centroidV}},
-                                 {"region_area_px", area},
-                                 {"model_origin_offset_mm", {offX, offY}},
-                                 {"step_px", mp.stepPx},
-                                 {"time_s", seconds}};
-    if (hasDepth) {
-      summary.erase("model_origin_offset_mm");
-      summary["model_origin_in_hand_mm"] = {m.originInHandMm[0], m.originInHandMm[1], m.originInHandMm[2]};
-      summary["depth_range_mm"] = {m.depthRangeMm[0], m.depthRangeMm[1]};
-      summary["n_in_dropped"] = m.nInDropped;
-      summary["backdrop_mm"] = backdropMm;
-    }
-    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
-    files.commit();
+    pm::report::ModelOutputs o;
+    o.source = source;
+    o.build = std::move(build);
+    o.photo = std::move(tg);
+    o.background = std::move(bg);
+    o.writePhotos = background.empty();
+    o.depth = std::move(depth);
+    o.dropped = std::move(dropped);
+    o.backdropMm = backdropMm;
+    o.stepPx = mp.stepPx;
+    const pm::report::ModelFigures fig = pm::report::writeModelOutputs(out, o, seconds);
+    const pm::PhotoModel &m = o.build.model;
+    const bool hasDepth = m.hasDepth();
     if (!quiet)
       std::cout << std::fixed << std::setprecision(1) << "photo-model of " << source << "\n"
                 << "  S_in " << m.inner.size() << " points, S_out " << m.outer.size() << " points, region "
-                << area << " px\n"
+                << fig.regionAreaPx << " px\n"
                 << "  background hue " << m.backgroundHue << " deg, target hue " << m.targetHue << " deg\n"
                 << (hasDepth ? "  relief " + std::to_string(static_cast<int>(std::lround(m.depthRangeMm[0]))) + " to " +
                                    std::to_string(static_cast<int>(std::lround(m.depthRangeMm[1]))) +
@@ -284,7 +256,7 @@ int main(int argc, char **argv)
                                    std::to_string(static_cast<int>(std::lround(m.originInHandMm[2]))) + " mm, " +
                                    std::to_string(m.nInDropped) + " S_in points without a reliable match dropped\n"
                              : std::string())
-                << "  written to " << files.dir() << "/ (model.json, overlay.png, model.png, " << (hasDepth ? "depth.png, " : "") << "summary.json) in "
+                << "  written to " << out << "/ (model.json, overlay.png, model.png, " << (hasDepth ? "depth.png, " : "") << "summary.json) in "
                 << std::setprecision(2) << seconds << " s" << std::endl;
     return 0;
   });

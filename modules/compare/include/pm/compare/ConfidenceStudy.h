@@ -82,7 +82,8 @@ ConfidenceStudy runConfidenceStudy(const StereoRig &rig, const ConfidenceStudyPa
 //! The study's figures (see ConfidenceStudy.h).
 struct ConfidenceReport
 {
-  std::size_t frames = 0, wrong = 0;  //!< frames, and the wrong ones among them
+  std::size_t frames = 0;             //!< labelled frames
+  std::size_t wrong = 0;              //!< the wrong ones among them
   std::size_t trackingWrong = 0;      //!< wrong frames the tracker claimed to track
   std::size_t trustedWrong = 0;       //!< wrong frames it trusted
   std::size_t trustedRight = 0;       //!< right frames it trusted

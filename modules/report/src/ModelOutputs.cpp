@@ -1,0 +1,54 @@
+#include "pm/report/ModelOutputs.h"
+
+#include <nlohmann/json.hpp>
+
+#include "pm/io/ImageFile.h"
+#include "pm/io/PhotoModelFile.h"
+#include "pm/io/StagedFiles.h"
+#include "pm/report/Overlay.h"
+
+namespace pm::report {
+
+ModelFigures writeModelOutputs(const std::string &dir, const ModelOutputs &o, double seconds)
+{
+  const PhotoModel &m = o.build.model;
+  const bool hasDepth = m.hasDepth();
+  io::StagedFiles files(dir);
+  io::savePhotoModel(m, files.stage("model.json"));
+  io::writeImage(drawModelOnPhoto(o.photo, o.build.region, m), files.stage("overlay.png"));
+  io::writeImage(drawModel(m), files.stage("model.png"));
+  if (hasDepth)
+    io::writeImage(drawDepth(o.photo, o.depth, m, o.dropped, m.depthRangeMm[0], m.depthRangeMm[1]), files.stage("depth.png"));
+  if (o.writePhotos) {
+    io::writeImage(o.background, files.stage("photo_background.png"));
+    io::writeImage(o.photo, files.stage("photo_target.png"));
+  }
+  const double offX = (m.centroidU - m.u0) * m.distanceMm / m.px, offY = (m.centroidV - m.v0) * m.distanceMm / m.py;
+  ModelFigures f;
+  for (unsigned i = 0; i < o.build.region.getSize(); ++i)
+    f.regionAreaPx += o.build.region.bitmap[i] ? 1u : 0u;
+  nlohmann::json summary{{"source", o.source},
+                         {"kind", hasDepth ? "stereo" : "flat"},
+                         {"n_in", m.inner.size()},
+                         {"n_out", m.outer.size()},
+                         {"background_hue_deg", m.backgroundHue},
+                         {"target_hue_deg", m.targetHue},
+                         {"distance_mm", m.distanceMm},
+                         {"centroid_px", {m.centroidU, m.centroidV}},
+                         {"region_area_px", f.regionAreaPx},
+                         {"model_origin_offset_mm", {offX, offY}},
+                         {"step_px", o.stepPx},
+                         {"time_s", seconds}};
+  if (hasDepth) {
+    summary.erase("model_origin_offset_mm");
+    summary["model_origin_in_hand_mm"] = {m.originInHandMm[0], m.originInHandMm[1], m.originInHandMm[2]};
+    summary["depth_range_mm"] = {m.depthRangeMm[0], m.depthRangeMm[1]};
+    summary["n_in_dropped"] = m.nInDropped;
+    summary["backdrop_mm"] = o.backdropMm;
+  }
+  io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+  files.commit();
+  return f;
+}
+
+} // namespace pm::report
