@@ -8,13 +8,9 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
-#include <visp3/core/vpImageConvert.h>
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/report/Overlay.h"
 #include "pm/report/PlotUtil.h"
 #include "pm/app/Progress.h"
 #include "pm/report/TimePlot.h"
@@ -27,6 +23,7 @@
 #include "pm/lab/FrequencyResponse.h"
 #include "pm/lab/LoopTable.h"
 #include "pm/lab/RunFigures.h"
+#include "pm/lab/RunRecorder.h"
 #include "pm/lab/RunLog.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -40,15 +37,6 @@ int axisIndex(const std::string &a)
     if (a == kAxes[i])
       return i;
   throw CLI::ValidationError("--axis", "must be one of x, y, z, e1, e2, e3");
-}
-
-// BGR for OpenCV's video writer (ViSP converts to BGRA).
-cv::Mat toBgr(const vpImage<vpRGBa> &I)
-{
-  cv::Mat bgra, bgr;
-  vpImageConvert::convert(I, bgra);
-  cv::cvtColor(bgra, bgr, cv::COLOR_BGRA2BGR);
-  return bgr;
 }
 
 } // namespace
@@ -176,48 +164,26 @@ int main(int argc, char **argv)
     std::ofstream csv(files.stage("frames.csv"));
     pm::lab::writeLoopCsvHeader(csv);
     std::vector<double> memoryMb; // resident memory at the start of each tenth of the run, and at its end
-    cv::VideoWriter video;
-    const std::string videoPath = noVideo ? "" : files.stage("servo.avi");
-    // The video at half size and half rate (15 fps for 30 fps cameras): a minute of servoing in ~30 MB.
-    if (!noVideo && !video.open(videoPath, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), fps / 2,
-                                cv::Size(static_cast<int>(rig.left.width), static_cast<int>(rig.left.height / 2))))
+    std::unique_ptr<pm::lab::RunRecorder> recorder;
+    try {
+      recorder = std::make_unique<pm::lab::RunRecorder>(noVideo ? "" : files.stage("servo.avi"), fps, rig.left.width, rig.left.height,
+                                                        overlayEvery, lp.oracle);
+    } catch (const pm::Error &) {
       throw pm::Error("cannot write the video '" + files.finalPath("servo.avi") + "' (OpenCV's MJPG writer failed)");
-    int overlays = 0;
+    }
     for (long k = 0; k < nFrames; ++k) {
       if (k * 10 / nFrames >= static_cast<long>(memoryMb.size()))
         memoryMb.push_back(pm::app::residentMemoryMb());
       const pm::lab::LoopFrame f = loop.step();
       log.add(f);
       pm::lab::writeLoopCsvRow(csv, f, lp.oracle);
-      const bool wantOverlay = overlayEvery > 0 && k % overlayEvery == 0;
-      const bool wantVideo = !noVideo && k % 2 == 0;
-      if (wantVideo || wantOverlay) {
-        const pm::Phi used = pm::fromHomogeneousMatrix(f.hMmUsed);
-        std::ostringstream label;
-        label << std::fixed << std::setprecision(1) << "t " << f.t << " s  " << (lp.oracle ? "oracle" : pm::toString(f.track.state))
-              << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg";
-        const vpImage<vpRGBa> pair =
-            pm::report::sideBySide(pm::report::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str()),
-                                pm::report::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right"));
-        if (wantVideo) {
-          cv::Mat half;
-          cv::resize(toBgr(pair), half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
-          video.write(half);
-        }
-        if (wantOverlay) {
-          char name[64];
-          std::snprintf(name, sizeof name, "overlay_%05ld.png", k);
-          pm::io::writeImage(pair, files.stage(name));
-          ++overlays;
-        }
-      }
+      recorder->record(k, f, loop, [&](const std::string &name) { return files.stage(name); });
       progress.step();
     }
     progress.finish();
     memoryMb.push_back(pm::app::residentMemoryMb());
     log.finish();
-    if (!noVideo)
-      video.release();
+    recorder->finish();
     csv.close();
     if (!csv)
       throw pm::Error("cannot write " + files.finalPath("frames.csv"));
@@ -259,7 +225,7 @@ int main(int argc, char **argv)
                        "raw estimate: the tracker's own, before the filter"},
         {"max_joint_speed_fraction", log.maxJointSpeedFraction()},
         {"mean_frame_ms", meanMs},
-        {"overlays", overlays},
+        {"overlays", recorder->overlays()},
         {"video", noVideo ? "" : "servo.avi"}};
     pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
     files.commit();
