@@ -24,6 +24,7 @@
 #include "pm/lab/LoopTable.h"
 #include "pm/lab/RunFigures.h"
 #include "pm/lab/RunRecorder.h"
+#include "pm/lab/RunSummary.h"
 #include "pm/lab/RunLog.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -188,74 +189,28 @@ int main(int argc, char **argv)
     if (!csv)
       throw pm::Error("cannot write " + files.finalPath("frames.csv"));
 
-    const int violations = loop.robot().limitHits() + log.jointLimitViolations();
-    const double meanMs = log.meanComputeMs();
-    const pm::lab::ErrorStats &rest = log.atRest(), &moving = log.moving();
     // Figures (the plotted errors are the maxima over the frames each sample stands for).
     pm::io::writeImage(pm::lab::drawRunErrors(log, std::string("PA-10 following ") + scene.target().info.name +
                                                        (lp.oracle ? " (oracle: true pose)" : " (photo-model tracker)")),
                        files.stage("errors.png"));
     pm::io::writeImage(pm::lab::drawRunRelativePose(log), files.stage("relative_pose.png"));
     pm::io::writeImage(pm::lab::drawRunJoints(log), files.stage("joints.png"));
-    nlohmann::json tenths = nlohmann::json::array();
-    for (const auto &s : log.tenths())
-      tenths.push_back({{"frames", s.frames}, {"rms_error_mm", s.rmsMm()}, {"max_error_mm", s.maxMm}, {"rms_rotation_error_deg", s.rmsDeg()},
-                        {"max_rotation_error_deg", s.maxDeg}});
-    nlohmann::json memory = nlohmann::json::array();
-    for (double m : memoryMb)
-      memory.push_back(std::isfinite(m) ? nlohmann::json(m) : nlohmann::json());
-    const nlohmann::json summary{
-        {"target", scene.target().info.code},
-        {"trajectory", motion == "steps" ? "steps (" + std::to_string(waypoints.size()) + ")" : "sine " + axis + " " + std::to_string(amplitude) + " at " + std::to_string(frequency) + " Hz"},
-        {"oracle", lp.oracle},
-        {"frames", log.frames()},
-        {"converged_after_s", log.converged() ? nlohmann::json(log.convergedAfterS()) : nlohmann::json()},
-        {"rms_error_mm", {{"at_rest", rest.rmsMm()}, {"moving", moving.rmsMm()}}},
-        {"max_error_mm", {{"at_rest", rest.maxMm}, {"moving", moving.maxMm}}},
-        {"rms_rotation_error_deg", {{"at_rest", rest.rmsDeg()}, {"moving", moving.rmsDeg()}}},
-        {"max_rotation_error_deg", {{"at_rest", rest.maxDeg}, {"moving", moving.maxDeg}}},
-        {"by_tenth_of_the_run", tenths},
-        {"resident_memory_mb", memory},
-        {"joint_limit_violations", violations},
-        {"frames_servoed", log.framesServoed()},
-        {"frames_held", log.framesHeld()},
-        {"frames_servoed_on_wrong_pose", log.framesServoedOnWrongPose()},
-        {"frames_servoed_on_wrong_raw_estimate", log.framesServoedOnWrongRawEstimate()},
-        {"wrong_pose", "the pose the servo used (the filtered estimate) more than 20 mm or 5 deg from the truth; "
-                       "raw estimate: the tracker's own, before the filter"},
-        {"max_joint_speed_fraction", log.maxJointSpeedFraction()},
-        {"mean_frame_ms", meanMs},
-        {"overlays", recorder->overlays()},
-        {"video", noVideo ? "" : "servo.avi"}};
-    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+    pm::lab::RunInfo info;
+    info.targetCode = scene.target().info.code;
+    info.targetName = scene.target().info.name;
+    info.trajectory = motion == "steps" ? "steps (" + std::to_string(waypoints.size()) + ")"
+                                        : "sine " + axis + " " + std::to_string(amplitude) + " at " + std::to_string(frequency) + " Hz";
+    info.oracle = lp.oracle;
+    info.jointLimitViolations = loop.robot().limitHits() + log.jointLimitViolations();
+    info.memoryMb = memoryMb;
+    info.overlays = recorder->overlays();
+    info.video = noVideo ? "" : "servo.avi";
+    pm::io::writeTextFile(files.stage("summary.json"), pm::lab::runSummaryJson(log, info));
     files.commit();
-    if (!quiet) {
-      std::cout << std::fixed << std::setprecision(2) << "PA-10 following " << scene.target().info.code << " ("
-                << scene.target().info.name << "), " << summary["trajectory"].get<std::string>() << ", "
-                << (lp.oracle ? "oracle pose" : "photo-model tracker") << ", " << log.frames() << " frames\n";
-      if (log.converged())
-        std::cout << "  converged after " << log.convergedAfterS() << " s\n";
-      else
-        std::cout << "  never within 10 mm and 2 deg for 1 s\n";
-      std::cout << "  relative pose error at rest: rms " << rest.rmsMm() << " mm, max " << rest.maxMm << " mm; rotation rms "
-                << rest.rmsDeg() << " deg, max " << rest.maxDeg << " deg\n"
-                << "  while moving: rms " << moving.rmsMm() << " mm, max " << moving.maxMm << " mm; rotation rms "
-                << moving.rmsDeg() << " deg, max " << moving.maxDeg << " deg\n"
-                << "  joint limit violations " << violations << ", tracker " << meanMs << " ms per frame\n"
-                << "  servoed on " << log.framesServoed() << " frames (" << 100.0 * static_cast<double>(log.framesServoed()) /
-                                                                             static_cast<double>(std::max(1L, log.frames()))
-                << " %), held on " << log.framesHeld() << " (estimate not trusted), servoed on a wrong pose on "
-                << log.framesServoedOnWrongPose() << " (the raw estimate wrong on " << log.framesServoedOnWrongRawEstimate() << ")\n"
-                << "  by tenth of the run, rms error (mm):";
-      for (const auto &t : log.tenths())
-        std::cout << " " << t.rmsMm();
-      std::cout << "\n  by tenth of the run, resident memory (MB):";
-      for (double m : memoryMb)
-        std::cout << " " << std::setprecision(1) << m;
-      std::cout << std::setprecision(2) << "\n"
-                << "  written to " << files.dir() << "/ (frames.csv, errors.png, relative_pose.png, joints.png, "
-                << (noVideo ? "" : "servo.avi, ") << "summary.json)" << std::endl;
-    }
+    if (!quiet)
+      std::cout << pm::lab::runSummaryText(log, info) << "  written to " << files.dir()
+                << "/ (frames.csv, errors.png, relative_pose.png, joints.png, " << (noVideo ? "" : "servo.avi, ") << "summary.json)"
+                << std::endl;
     return 0;
   }, {{"--trajectory", "--motion", {"steps", "sine"}}, {"--steps-file", "--trajectory", {}}});
 }

@@ -1,0 +1,77 @@
+#include "pm/lab/RunSummary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace pm::lab {
+
+std::string runSummaryJson(const RunLog &log, const RunInfo &info)
+{
+  const ErrorStats &rest = log.atRest(), &moving = log.moving();
+  nlohmann::json tenths = nlohmann::json::array();
+  for (const auto &s : log.tenths())
+    tenths.push_back({{"frames", s.frames}, {"rms_error_mm", s.rmsMm()}, {"max_error_mm", s.maxMm}, {"rms_rotation_error_deg", s.rmsDeg()},
+                      {"max_rotation_error_deg", s.maxDeg}});
+  nlohmann::json memory = nlohmann::json::array();
+  for (double m : info.memoryMb)
+    memory.push_back(std::isfinite(m) ? nlohmann::json(m) : nlohmann::json());
+  const nlohmann::json summary{
+      {"target", info.targetCode},
+      {"trajectory", info.trajectory},
+      {"oracle", info.oracle},
+      {"frames", log.frames()},
+      {"converged_after_s", log.converged() ? nlohmann::json(log.convergedAfterS()) : nlohmann::json()},
+      {"rms_error_mm", {{"at_rest", rest.rmsMm()}, {"moving", moving.rmsMm()}}},
+      {"max_error_mm", {{"at_rest", rest.maxMm}, {"moving", moving.maxMm}}},
+      {"rms_rotation_error_deg", {{"at_rest", rest.rmsDeg()}, {"moving", moving.rmsDeg()}}},
+      {"max_rotation_error_deg", {{"at_rest", rest.maxDeg}, {"moving", moving.maxDeg}}},
+      {"by_tenth_of_the_run", tenths},
+      {"resident_memory_mb", memory},
+      {"joint_limit_violations", info.jointLimitViolations},
+      {"frames_servoed", log.framesServoed()},
+      {"frames_held", log.framesHeld()},
+      {"frames_servoed_on_wrong_pose", log.framesServoedOnWrongPose()},
+      {"frames_servoed_on_wrong_raw_estimate", log.framesServoedOnWrongRawEstimate()},
+      {"wrong_pose", "the pose the servo used (the filtered estimate) more than 20 mm or 5 deg from the truth; "
+                     "raw estimate: the tracker's own, before the filter"},
+      {"max_joint_speed_fraction", log.maxJointSpeedFraction()},
+      {"mean_frame_ms", log.meanComputeMs()},
+      {"overlays", info.overlays},
+      {"video", info.video}};
+  return summary.dump(2) + "\n";
+}
+
+std::string runSummaryText(const RunLog &log, const RunInfo &info)
+{
+  const ErrorStats &rest = log.atRest(), &moving = log.moving();
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << "PA-10 following " << info.targetCode << " (" << info.targetName << "), "
+      << info.trajectory << ", " << (info.oracle ? "oracle pose" : "photo-model tracker") << ", " << log.frames() << " frames\n";
+  if (log.converged())
+    out << "  converged after " << log.convergedAfterS() << " s\n";
+  else
+    out << "  never within 10 mm and 2 deg for 1 s\n";
+  out << "  relative pose error at rest: rms " << rest.rmsMm() << " mm, max " << rest.maxMm << " mm; rotation rms " << rest.rmsDeg()
+      << " deg, max " << rest.maxDeg << " deg\n"
+      << "  while moving: rms " << moving.rmsMm() << " mm, max " << moving.maxMm << " mm; rotation rms " << moving.rmsDeg()
+      << " deg, max " << moving.maxDeg << " deg\n"
+      << "  joint limit violations " << info.jointLimitViolations << ", tracker " << log.meanComputeMs() << " ms per frame\n"
+      << "  servoed on " << log.framesServoed() << " frames ("
+      << 100.0 * static_cast<double>(log.framesServoed()) / static_cast<double>(std::max(1L, log.frames())) << " %), held on "
+      << log.framesHeld() << " (estimate not trusted), servoed on a wrong pose on " << log.framesServoedOnWrongPose()
+      << " (the raw estimate wrong on " << log.framesServoedOnWrongRawEstimate() << ")\n"
+      << "  by tenth of the run, rms error (mm):";
+  for (const auto &t : log.tenths())
+    out << " " << t.rmsMm();
+  out << "\n  by tenth of the run, resident memory (MB):";
+  for (double m : info.memoryMb)
+    out << " " << std::setprecision(1) << m;
+  out << std::setprecision(2) << "\n";
+  return out.str();
+}
+
+} // namespace pm::lab
