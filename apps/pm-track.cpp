@@ -9,7 +9,6 @@
 #include <memory>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
@@ -27,7 +26,6 @@
 #include "pm/lab/LabSequence.h"
 #include "pm/lab/RunFigures.h"
 #include "pm/lab/TrackingReport.h"
-#include "pm/lab/Convergence.h"
 #include "pm/tracker/TrackerConfigFile.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
@@ -205,7 +203,6 @@ int main(int argc, char **argv)
     if (rec.empty())
       throw pm::Error("no frame of the sequence could be read (" + std::to_string(st.skipped) + " unreadable)");
     const pm::lab::TrackingReport report = pm::lab::reportTracking(rec, fps, pm::lab::table2Goals());
-    const auto &names = pm::lab::TrackingReport::names();
 
     if (truthCsv.is_open() && !truthCsv.flush())
       throw pm::Error("cannot write " + files.finalPath("truth.csv"));
@@ -218,57 +215,24 @@ int main(int argc, char **argv)
     pm::io::writeImage(pm::lab::drawTrackingTrajectory(rec, report, source), files.stage("trajectory.png"));
     if (report.haveTruth)
       pm::io::writeImage(pm::lab::drawTrackingErrors(rec, report), files.stage("errors.png"));
-    const double tConverged = report.convergedFrame >= 0 ? rec[static_cast<std::size_t>(report.convergedFrame)].t : 0;
     tracker.initFromPose(rec.back().result.hMo); // to draw the last estimate
     pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(lastL, tracker.fitness().pointScores(rec.back().result.phi, 0), "last frame, left"),
                                            pm::report::drawPointScores(lastR, tracker.fitness().pointScores(rec.back().result.phi, 1), "right")),
                        files.stage("last_frame.png"));
-    nlohmann::json errors;
-    for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)
-      errors[names[i]] = {{"rms_error", report.errors[i].rms},
-                          {"max_abs_error", report.errors[i].max},
-                          {"max_abs_error_moving", report.errors[i].maxMoving},
-                          {"max_abs_error_at_rest", report.errors[i].maxAtRest},
-                          {"goal", report.errors[i].goal}};
-    nlohmann::json summary{{"source", source},
-                           {"frames", rec.size()},
-                           {"unreadable_frames", st.skipped},
-                           {"unreadable", std::vector<std::string>(st.problems.begin(), st.problems.begin() + st.skipped)},
-                           {"fps", fps},
-                           {"converged_after_s", report.convergedFrame >= 0 ? nlohmann::json(tConverged) : nlohmann::json()},
-                           {"errors", errors},
-                           {"errors_over", report.convergedFrame >= 0 ? "frames after convergence" : "all frames (never converged)"},
-                           {"goals_met", report.goalsMet},
-                           {"mean_frame_ms", report.meanMs},
-                           {"p99_frame_ms", report.p99Ms},
-                           {"mean_evaluations_per_frame", report.meanEvaluations},
-                           {"states", report.states},
-                           {"tracker", nlohmann::json::parse(pm::trackerConfigToJson(tp))}};
     if (view.isOpen())
       view.capture(files.stage("display.png"));
-    if (live)
-      summary["capture"] = {{"pairs", st.pairs},
-                            {"frames_read", {st.framesRead[0], st.framesRead[1]}},
-                            {"unpaired", {st.unpaired[0], st.unpaired[1]}},
-                            {"largest_skew_ms", st.maxSkewMs},
-                            {"notes", st.problems}};
-    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+    pm::lab::TrackingRunInfo info;
+    info.source = source;
+    info.frames = rec.size();
+    info.fps = fps;
+    info.stats = st;
+    info.live = live;
+    info.trackerJson = pm::trackerConfigToJson(tp);
+    info.budget = tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations" : std::to_string(tp.budgetMs) + " ms";
+    pm::io::writeTextFile(files.stage("summary.json"), pm::lab::trackingSummaryJson(report, info));
     files.commit();
-    if (!quiet) {
-      std::cout << std::fixed << "tracked " << rec.size() << " frames of " << source << "\n";
-      if (report.convergedFrame >= 0)
-        std::cout << std::setprecision(2) << "  converged after " << tConverged << " s\n";
-      else
-        std::cout << "  never converged (within " << pm::lab::kConvergedMm << " mm and " << pm::lab::kConvergedDeg << " deg for 1 s)\n";
-      for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)
-        std::cout << std::setprecision(i < 3 ? 2 : 4) << "  " << std::setw(4) << names[i] << ": rms " << report.errors[i].rms
-                  << ", max " << report.errors[i].max << " (goal " << report.errors[i].goal << ")\n";
-      std::cout << std::setprecision(2) << "  compute per frame: mean " << report.meanMs << " ms, p99 " << report.p99Ms << " ms ("
-                << (tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations"
-                                             : std::to_string(tp.budgetMs) + " ms")
-                << " budget)\n"
-                << "  written to " << files.dir() << "/" << std::endl;
-    }
+    if (!quiet)
+      std::cout << pm::lab::trackingSummaryText(report, info) << "  written to " << files.dir() << "/" << std::endl;
     return 0;
   }, {{"--left-images", "--left", {}}, {"--right-images", "--right", {}}});
 }

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "pm/core/Error.h"
 #include "pm/core/Statistics.h"
@@ -93,6 +96,57 @@ void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
   }
   if (!out)
     throw Error("cannot write the frames' table");
+}
+
+std::string trackingSummaryJson(const TrackingReport &report, const TrackingRunInfo &info)
+{
+  const auto &names = TrackingReport::names();
+  const capture::SourceStats &st = info.stats;
+  nlohmann::json errors;
+  for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)
+    errors[names[i]] = {{"rms_error", report.errors[i].rms},
+                        {"max_abs_error", report.errors[i].max},
+                        {"max_abs_error_moving", report.errors[i].maxMoving},
+                        {"max_abs_error_at_rest", report.errors[i].maxAtRest},
+                        {"goal", report.errors[i].goal}};
+  nlohmann::json summary{{"source", info.source},
+                         {"frames", info.frames},
+                         {"unreadable_frames", st.skipped},
+                         {"unreadable", std::vector<std::string>(st.problems.begin(), st.problems.begin() + st.skipped)},
+                         {"fps", info.fps},
+                         {"converged_after_s", report.convergedFrame >= 0 ? nlohmann::json(report.convergedS) : nlohmann::json()},
+                         {"errors", errors},
+                         {"errors_over", report.convergedFrame >= 0 ? "frames after convergence" : "all frames (never converged)"},
+                         {"goals_met", report.goalsMet},
+                         {"mean_frame_ms", report.meanMs},
+                         {"p99_frame_ms", report.p99Ms},
+                         {"mean_evaluations_per_frame", report.meanEvaluations},
+                         {"states", report.states},
+                         {"tracker", nlohmann::json::parse(info.trackerJson)}};
+  if (info.live)
+    summary["capture"] = {{"pairs", st.pairs},
+                          {"frames_read", {st.framesRead[0], st.framesRead[1]}},
+                          {"unpaired", {st.unpaired[0], st.unpaired[1]}},
+                          {"largest_skew_ms", st.maxSkewMs},
+                          {"notes", st.problems}};
+  return summary.dump(2) + "\n";
+}
+
+std::string trackingSummaryText(const TrackingReport &report, const TrackingRunInfo &info)
+{
+  const auto &names = TrackingReport::names();
+  std::ostringstream out;
+  out << std::fixed << "tracked " << info.frames << " frames of " << info.source << "\n";
+  if (report.convergedFrame >= 0)
+    out << std::setprecision(2) << "  converged after " << report.convergedS << " s\n";
+  else
+    out << std::setprecision(0) << "  never converged (within " << kConvergedMm << " mm and " << kConvergedDeg << " deg for 1 s)\n";
+  for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)
+    out << std::setprecision(i < 3 ? 2 : 4) << "  " << std::setw(4) << names[i] << ": rms " << report.errors[i].rms << ", max "
+        << report.errors[i].max << " (goal " << report.errors[i].goal << ")\n";
+  out << std::setprecision(2) << "  compute per frame: mean " << report.meanMs << " ms, p99 " << report.p99Ms << " ms (" << info.budget
+      << " budget)\n";
+  return out.str();
 }
 
 } // namespace pm::lab

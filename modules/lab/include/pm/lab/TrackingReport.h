@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "pm/capture/StereoSource.h"
 #include "pm/core/Pose.h"
 #include "pm/tracker/PhotoModelTracker.h"
 
@@ -76,5 +77,26 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
   compute_ms and moving (0/1), at 8 significant digits. Throws pm::Error when the stream fails.
 */
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames);
+
+//! What a TrackingReport does not know of the run (for its summary).
+struct TrackingRunInfo
+{
+  std::string source;               //!< where the pairs came from, in words
+  std::size_t frames = 0;           //!< frames tracked
+  double fps = 30;                  //!< the frame rate (frames per second)
+  capture::SourceStats stats;       //!< the source's counts (unreadable pairs, pairing of live cameras)
+  bool live = false;                //!< the pairs came from live cameras (summary.json gets their pairing)
+  std::string trackerJson;          //!< the tracker's settings (pm::trackerConfigToJson)
+  std::string budget;               //!< the budget per frame, in words (e.g. "800 evaluations")
+};
+
+/*!
+  pm-track's summary.json of \e report (indented JSON text): source, frames, unreadable pairs,
+  convergence, each variable's errors against its goal, frame time, work per frame, states, the
+  tracker's settings and, live, the cameras' pairing.
+*/
+std::string trackingSummaryJson(const TrackingReport &report, const TrackingRunInfo &info);
+//! The same figures as text, one line each (what pm-track prints).
+std::string trackingSummaryText(const TrackingReport &report, const TrackingRunInfo &info);
 
 } // namespace pm::lab
