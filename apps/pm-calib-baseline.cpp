@@ -1,9 +1,7 @@
 //! pm-calib-baseline: checks the stereo rig's baseline and relative rotation with an AprilTag board
 //! or a chessboard.
 #include <cmath>
-#include <cstring>
 
-#include <opencv2/imgproc.hpp>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -22,30 +20,11 @@
 #include "pm/calib/StereoBaseline.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
-#include "pm/io/QuietStdout.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
-#include "pm/lab/ClosedLoop.h"
-#include "pm/sim/RobotPA10.h"
+#include "pm/lab/SimulatedHandEye.h"
 #include "pm/sim/Scene.h"
 
-#include <visp3/vision/vpHandEyeCalibration.h>
-
-
-namespace {
-//! A camera's defocus: a Gaussian blur of sigma \e px (OpenCV).
-vpImage<vpRGBa> blurred(const vpImage<vpRGBa> &I, double px)
-{
-  if (px <= 0)
-    return I;
-  cv::Mat m(static_cast<int>(I.getHeight()), static_cast<int>(I.getWidth()), CV_8UC4, const_cast<vpRGBa *>(I.bitmap)), b;
-  cv::GaussianBlur(m, b, cv::Size(0, 0), px);
-  vpImage<vpRGBa> out(I.getHeight(), I.getWidth());
-  std::memcpy(static_cast<void *>(out.bitmap), b.data, I.getSize() * sizeof(vpRGBa));
-  return out;
-}
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -133,7 +112,7 @@ int main(int argc, char **argv)
       for (int k = 0; k < simulate; ++k) {
         const pm::Phi p{20 * u(rng), 20 * u(rng), 500 + 40 * u(rng), 0.12 * u(rng), 0.12 * u(rng), 0.2 * u(rng)};
         const auto im = scene->renderStereo(*truthRig, pm::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
-        usePair(blurred(im.left, blurPx), blurred(im.right, blurPx), "simulated pair " + std::to_string(k));
+        usePair(pm::lab::defocused(im.left, blurPx), pm::lab::defocused(im.right, blurPx), "simulated pair " + std::to_string(k));
         progress.step();
       }
       progress.finish();
@@ -153,56 +132,11 @@ int main(int argc, char **argv)
     nlohmann::json handEyeJson;
     bool handEyeAgrees = true;
     if (handEye > 0) { // --hand-eye needs --simulate: truthRig and scene are set
-      const vpColVector q0 = pm::lab::LoopParams::startJoints();
-      const vpHomogeneousMatrix wMb = pm::sim::RobotPA10::forward(q0) * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0);
-      std::mt19937 rng(static_cast<std::uint32_t>(sp.seed) + 17);
-      std::uniform_real_distribution<double> u(-1, 1);
-      std::vector<vpHomogeneousMatrix> fMe, cMb[2];
-      pm::sim::Rasterizer raster;
-      for (int m = 0; m < handEye; ++m) {
-        vpColVector q = q0;
-        for (unsigned i = 0; i < 7; ++i)
-          q[i] += 0.12 * u(rng); // up to 7 deg on each joint: the board stays in both views
-        const vpHomogeneousMatrix fMh = pm::sim::RobotPA10::forward(q);
-        const vpHomogeneousMatrix hMb = fMh.inverse() * wMb;
-        bool seen = true;
-        vpHomogeneousMatrix views[2];
-        for (int c = 0; c < 2 && seen; ++c) {
-          const pm::RigCamera &cam = c ? truthRig->right : truthRig->left;
-          vpImage<vpRGBa> I;
-          scene->render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
-          I = blurred(I, blurPx);
-          try {
-            const pm::calib::BoardView view = pattern->find(I, (c ? rig.right : rig.left).cam, (c ? rig.right : rig.left).distortion, "hand-eye pose " + std::to_string(m), true);
-            if (view.reprojectionRmsPx > 0.5) // a doubtful pose (partly hidden board) would spoil the calibration
-              throw pm::Error("reprojection " + std::to_string(view.reprojectionRmsPx) + " px");
-            views[c] = view.cMb;
-          } catch (const pm::Error &) {
-            seen = false; // the board left the view at this pose: skip it
-          }
-        }
-        if (!seen)
-          continue;
-        fMe.push_back(fMh);
-        cMb[0].push_back(views[0]);
-        cMb[1].push_back(views[1]);
-      }
-      if (fMe.size() < 3)
-        throw pm::Error("hand-eye: the board was seen from only " + std::to_string(fMe.size()) + " poses (3 needed)");
-      for (int c = 0; c < 2; ++c) {
-        vpHomogeneousMatrix eMc;
-        int status = 0;
-        {
-          pm::io::QuietStdout silence; // vpHandEyeCalibration reports on std::cout
-          status = vpHandEyeCalibration::calibrate(cMb[c], fMe, eMc);
-        }
-        if (status != 0)
-          throw pm::Error("hand-eye: vpHandEyeCalibration failed (poses too alike?)");
-        const vpHomogeneousMatrix ref = (c ? rig.right : rig.left).hMc;
-        const double dt = (eMc.getTranslationVector() - ref.getTranslationVector()).frobeniusNorm() * 1e3;
-        const double dr = (ref.inverse() * eMc).getThetaUVector().getTheta() * 180 / M_PI;
-        handEyeAgrees = handEyeAgrees && dt <= handEyeTolMm && dr <= handEyeTolDeg;
-        handEyeJson[c ? "right" : "left"] = {{"translation_error_mm", dt}, {"rotation_error_deg", dr}, {"poses", fMe.size()}};
+      const pm::lab::HandEyeResult he = pm::lab::simulatedHandEye(*scene, *truthRig, rig, *pattern, handEye, sp.seed, blurPx);
+      for (const pm::lab::HandEyeCamera *c : {&he.left, &he.right}) {
+        handEyeAgrees = handEyeAgrees && c->translationErrorMm <= handEyeTolMm && c->rotationErrorDeg <= handEyeTolDeg;
+        handEyeJson[c == &he.left ? "left" : "right"] = {
+            {"translation_error_mm", c->translationErrorMm}, {"rotation_error_deg", c->rotationErrorDeg}, {"poses", he.poses}};
       }
     }
     const bool agrees = std::fabs(r.baselineErrorMm) <= tolMm && r.translationErrorMm <= tolMm && r.rotationErrorDeg <= tolDeg;

@@ -144,17 +144,8 @@ int main(int argc, char **argv)
       }
       const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, ap);
       pm::io::writeAllAroundModel(b, pass, rig, out, source, allAround);
-      if (!quiet) {
-        std::cout << std::fixed << std::setprecision(1) << "all-around photo-model of " << source << "\n"
-                  << "  " << b.nViewsUsed << " of " << b.nViews << " views used, hull " << b.hullVolumeCm3 << " cm3 ("
-                  << b.surface.size() << " surface points, " << b.cellMm << " mm cells)\n"
-                  << "  " << b.model.views.size() + 1 << " viewpoints, " << b.model.inner.size() << " S_in and "
-                  << b.model.outer.size() << " S_out points from the first\n";
-        for (const std::string &s : b.leftOut)
-          std::cout << "  left out: " << s << "\n";
-        std::cout << "  written to " << out << "/ (model.json, model.ply, contact.png, silhouettes.png, summary.json"
-                  << (allAround ? ", views/" : "") << ") in " << std::setprecision(2) << b.buildS << " s" << std::endl;
-      }
+      if (!quiet)
+        std::cout << pm::report::describeAllAroundModel(b, source, out, allAround) << std::flush;
       return 0;
     }
     if (!leftBg.empty() || !leftSource.empty()) {
@@ -243,21 +234,8 @@ int main(int argc, char **argv)
     o.backdropMm = backdropMm;
     o.stepPx = mp.stepPx;
     const pm::report::ModelFigures fig = pm::report::writeModelOutputs(out, o, seconds);
-    const pm::PhotoModel &m = o.build.model;
-    const bool hasDepth = m.hasDepth();
     if (!quiet)
-      std::cout << std::fixed << std::setprecision(1) << "photo-model of " << source << "\n"
-                << "  S_in " << m.inner.size() << " points, S_out " << m.outer.size() << " points, region "
-                << fig.regionAreaPx << " px\n"
-                << "  background hue " << m.backgroundHue << " deg, target hue " << m.targetHue << " deg\n"
-                << (hasDepth ? "  relief " + std::to_string(static_cast<int>(std::lround(m.depthRangeMm[0]))) + " to " +
-                                   std::to_string(static_cast<int>(std::lround(m.depthRangeMm[1]))) +
-                                   " mm in the hand frame, origin at z " +
-                                   std::to_string(static_cast<int>(std::lround(m.originInHandMm[2]))) + " mm, " +
-                                   std::to_string(m.nInDropped) + " S_in points without a reliable match dropped\n"
-                             : std::string())
-                << "  written to " << out << "/ (model.json, overlay.png, model.png, " << (hasDepth ? "depth.png, " : "") << "summary.json) in "
-                << std::setprecision(2) << seconds << " s" << std::endl;
+      std::cout << pm::report::describeModel(o, fig, out, seconds) << std::flush;
     return 0;
   });
 }

@@ -1,5 +1,9 @@
 #include "pm/report/ModelOutputs.h"
 
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 #include "pm/io/ImageFile.h"
@@ -49,6 +53,39 @@ ModelFigures writeModelOutputs(const std::string &dir, const ModelOutputs &o, do
   io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
   files.commit();
   return f;
+}
+
+std::string describeModel(const ModelOutputs &o, const ModelFigures &figures, const std::string &dir, double seconds)
+{
+  const PhotoModel &m = o.build.model;
+  const bool hasDepth = m.hasDepth();
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << "photo-model of " << o.source << "\n"
+      << "  S_in " << m.inner.size() << " points, S_out " << m.outer.size() << " points, region " << figures.regionAreaPx << " px\n"
+      << "  background hue " << m.backgroundHue << " deg, target hue " << m.targetHue << " deg\n"
+      << (hasDepth ? "  relief " + std::to_string(static_cast<int>(std::lround(m.depthRangeMm[0]))) + " to " +
+                         std::to_string(static_cast<int>(std::lround(m.depthRangeMm[1]))) + " mm in the hand frame, origin at z " +
+                         std::to_string(static_cast<int>(std::lround(m.originInHandMm[2]))) + " mm, " +
+                         std::to_string(m.nInDropped) + " S_in points without a reliable match dropped\n"
+                   : std::string())
+      << "  written to " << dir << "/ (model.json, overlay.png, model.png, " << (hasDepth ? "depth.png, " : "") << "summary.json) in "
+      << std::setprecision(2) << seconds << " s\n";
+  return out.str();
+}
+
+std::string describeAllAroundModel(const AllAroundBuild &b, const std::string &source, const std::string &dir, bool withViews)
+{
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << "all-around photo-model of " << source << "\n"
+      << "  " << b.nViewsUsed << " of " << b.nViews << " views used, hull " << b.hullVolumeCm3 << " cm3 (" << b.surface.size()
+      << " surface points, " << b.cellMm << " mm cells)\n"
+      << "  " << b.model.views.size() + 1 << " viewpoints, " << b.model.inner.size() << " S_in and " << b.model.outer.size()
+      << " S_out points from the first\n";
+  for (const std::string &s : b.leftOut)
+    out << "  left out: " << s << "\n";
+  out << "  written to " << dir << "/ (model.json, model.ply, contact.png, silhouettes.png, summary.json"
+      << (withViews ? ", views/" : "") << ") in " << std::setprecision(2) << b.buildS << " s\n";
+  return out.str();
 }
 
 } // namespace pm::report

@@ -12,6 +12,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/PhotoModel.h"
+#include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PhotoModelBuilder.h"
 
 namespace pm::report {
@@ -50,5 +51,10 @@ struct ModelFigures
   \endcode
 */
 ModelFigures writeModelOutputs(const std::string &dir, const ModelOutputs &m, double seconds);
+
+//! What pm-make-model prints of a flat or stereo model written to \e dir in \e seconds (s).
+std::string describeModel(const ModelOutputs &m, const ModelFigures &figures, const std::string &dir, double seconds);
+//! What pm-make-model prints of an all-around model made from \e source, written to \e dir (with its views/ when \e withViews).
+std::string describeAllAroundModel(const AllAroundBuild &b, const std::string &source, const std::string &dir, bool withViews);
 
 } // namespace pm::report
