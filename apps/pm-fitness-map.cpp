@@ -1,20 +1,15 @@
 //! pm-fitness-map: the fitness-distribution experiment of the paper (Sec. 5, Figs. 10, 11).
-#include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
-#include "pm/report/HeatMap.h"
+#include "pm/report/FitnessMapOutputs.h"
 #include "pm/app/Options.h"
-#include "pm/report/Overlay.h"
 #include "pm/app/Progress.h"
 #include "pm/core/Error.h"
-#include "pm/core/FitnessMap.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
@@ -23,27 +18,6 @@
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
-
-namespace {
-
-const char *kVarNames[6] = {"x [mm]", "y [mm]", "z [mm]", "eps1", "eps2", "eps3"};
-const char *kVarShort[6] = {"x", "y", "z", "e1", "e2", "e3"};
-
-pm::report::Grid2D toGrid(const pm::FitnessMap &m)
-{
-  pm::report::Grid2D g;
-  g.xName = kVarNames[m.spec.a];
-  g.yName = kVarNames[m.spec.b];
-  g.x0 = m.spec.loA;
-  g.y0 = m.spec.loB;
-  g.dx = g.dy = m.spec.step;
-  g.nx = m.nA;
-  g.ny = m.nB;
-  g.values = m.values;
-  return g;
-}
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -122,79 +96,15 @@ int main(int argc, char **argv)
       }
       pm::StereoFitness fit(rig, model, fp);
       fit.setImages(IL, IR);
-
-      pm::io::StagedFiles files(dir);
-      nlohmann::json grids;
       const std::vector<pm::FitnessMapSpec> specs = pm::paperFitnessMaps(posStep, epsStep);
       pm::app::Progress progress("fitness maps", specs.size(), silent);
-      double total = 0;
-      std::ostringstream report;
-      for (const auto &s : specs) {
-        // The variables not on the grid are held at the truth (the model's true pose).
-        const pm::FitnessMap m = pm::computeFitnessMap(fit, truth, s);
-        total += m.seconds;
-        const std::string name = std::string(kVarShort[s.a]) + kVarShort[s.b];
-        const double ta = truth[s.a], tb = truth[s.b], ea = m.peakA - ta, eb = m.peakB - tb;
-        pm::Phi peak = truth;
-        peak[s.a] = m.peakA;
-        peak[s.b] = m.peakB;
-        const double reproj = fit.reprojectionRms(peak, truth);
-        grids[name] = {{"variables", {kVarShort[s.a], kVarShort[s.b]}},
-                       {"peak", {m.peakA, m.peakB}},
-                       {"peak_fitness", m.maxFitness},
-                       {"argmax", {m.argmaxA, m.argmaxB}},
-                       {"top_cells", m.topCells},
-                       {"truth", {ta, tb}},
-                       {"error_to_truth", {ea, eb}},
-                       {"peak_reprojection_px", reproj},
-                       {"evaluations", m.values.size()},
-                       {"time_s", m.seconds}};
-        std::ofstream csv(files.stage("map_" + name + ".csv"));
-        csv << kVarShort[s.a] << "," << kVarShort[s.b] << ",fitness\n" << std::setprecision(10);
-        for (int j = 0; j < m.nB; ++j)
-          for (int i = 0; i < m.nA; ++i)
-            csv << m.coordA(i) << "," << m.coordB(j) << "," << m.at(i, j) << "\n";
-        if (!csv)
-          throw pm::Error("cannot write " + files.finalPath("map_" + name + ".csv"));
-        std::ostringstream title;
-        title << std::setprecision(3) << "F over " << kVarShort[s.a] << "-" << kVarShort[s.b] << ", max " << m.maxFitness;
-        pm::io::writeImage(pm::report::drawHeatMap(toGrid(m), title.str(),
-                                                {{ta, tb, "truth", vpRGBa(255, 255, 255), true},
-                                                 {m.peakA, m.peakB, "peak", vpRGBa(230, 30, 30), false}}),
-                           files.stage("map_" + name + ".png"));
-        const int prec = s.a < 3 ? 1 : 3;
-        report << std::fixed << std::setprecision(prec) << "  " << std::setw(4) << name << ": peak (" << m.peakA << ", "
-               << m.peakB << "), error to truth (" << ea << ", " << eb << "), " << std::setprecision(2) << reproj
-               << " px, max F " << std::setprecision(3) << m.maxFitness << ", " << std::setprecision(2) << m.seconds
-               << " s\n";
-        progress.step();
-      }
+      const pm::report::FitnessMapsResult r =
+          pm::report::writeFitnessMaps(dir, fit, model.size(), truth, specs, source, IL, IR, [&] { progress.step(); });
       progress.finish();
-      const pm::FitnessDetail atTruth = fit.evaluateDetail(truth);
-      pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(IL, fit.pointScores(truth, 0), "model at the truth, left"),
-                                             pm::report::drawPointScores(IR, fit.pointScores(truth, 1), "right")),
-                         files.stage("truth_overlay.png"));
-      auto countsJson = [](const pm::FitnessCounts &c) {
-        return nlohmann::json{{"in_match", c.inMatch},         {"in_background", c.inBackground}, {"in_other", c.inOther},
-                              {"in_off", c.inOff},             {"out_background", c.outBackground},
-                              {"out_other", c.outOther},       {"out_off", c.outOff}};
-      };
-      const nlohmann::json summary{
-          {"source", source},
-          {"truth", {truth.x, truth.y, truth.z, truth.e1, truth.e2, truth.e3}},
-          {"model_points", model.size()},
-          {"fitness_at_truth", atTruth.fitness},
-          {"counts_at_truth", {{"left", countsJson(atTruth.countsLeft)}, {"right", countsJson(atTruth.countsRight)}}},
-          {"kernel", pm::StereoFitness::kernelName()},
-          {"grids", grids},
-          {"time_s", total}};
-      pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
-      files.commit();
       if (!silent)
         std::cout << "fitness maps of " << source << " (" << model.size() << " model points)\n"
-                  << report.str() << "  all four in " << std::setprecision(2) << total << " s, written to "
-                  << files.dir() << "/" << std::endl;
-      return summary;
+                  << r.text << "  all four in " << std::setprecision(2) << r.seconds << " s, written to " << dir << "/" << std::endl;
+      return r;
     };
 
     if (!allTargets) {
@@ -210,20 +120,18 @@ int main(int argc, char **argv)
     nlohmann::json all = nlohmann::json::array();
     pm::app::Progress progress("targets", pm::sim::targetCatalog().size(), quiet);
     for (const auto &info : pm::sim::targetCatalog()) {
-      const nlohmann::json s = runOne(info.code, files.dir() + "/" + info.code, true);
-      const auto &g = s.at("grids");
-      auto e = [&](const char *grid, int k) { return g.at(grid).at("error_to_truth")[static_cast<std::size_t>(k)].get<double>(); };
+      const pm::report::FitnessMapsResult s = runOne(info.code, files.dir() + "/" + info.code, true);
+      auto e = [&](const char *grid, int k) { return k == 0 ? s.grid(grid).errorA : s.grid(grid).errorB; };
       char row[512];
       std::snprintf(row, sizeof row, "| %s %s | %d | %.3f | %+.1f | %+.1f | %+.1f | %+.1f | %+.3f | %+.3f | %+.3f | %+.3f | %.2f |\n",
-                    info.code.c_str(), info.name.c_str(), s.at("model_points").get<int>(), s.at("fitness_at_truth").get<double>(),
-                    e("xy", 0), e("xy", 1), e("yz", 0), e("yz", 1), e("e1e2", 0), e("e1e2", 1), e("e2e3", 0),
-                    e("e2e3", 1), s.at("time_s").get<double>());
+                    info.code.c_str(), info.name.c_str(), static_cast<int>(s.modelPoints), s.fitnessAtTruth, e("xy", 0), e("xy", 1),
+                    e("yz", 0), e("yz", 1), e("e1e2", 0), e("e1e2", 1), e("e2e3", 0), e("e2e3", 1), s.seconds);
       md << row;
       std::snprintf(row, sizeof row, "%s,%d,%.4f,%.3f,%.3f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.3f\n", info.code.c_str(),
-                    s.at("model_points").get<int>(), s.at("fitness_at_truth").get<double>(), e("xy", 0), e("xy", 1),
-                    e("yz", 0), e("yz", 1), e("e1e2", 0), e("e1e2", 1), e("e2e3", 0), e("e2e3", 1), s.at("time_s").get<double>());
+                    static_cast<int>(s.modelPoints), s.fitnessAtTruth, e("xy", 0), e("xy", 1), e("yz", 0), e("yz", 1), e("e1e2", 0),
+                    e("e1e2", 1), e("e2e3", 0), e("e2e3", 1), s.seconds);
       csv << row;
-      all.push_back({{"target", info.code}, {"summary", s}});
+      all.push_back({{"target", info.code}, {"summary", nlohmann::json::parse(s.summaryJson)}});
       progress.step();
     }
     progress.finish();
