@@ -1,7 +1,6 @@
 //! pm-make-model: builds a photo-model (Fig. 4 of the paper) from two photos or from the simulator.
 #include <chrono>
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 
 
