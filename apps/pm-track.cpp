@@ -194,8 +194,10 @@ int main(int argc, char **argv)
                << std::setprecision(1) << f.result.computeMs << " ms, frame " << k;
         view.show(sf.left, sf.right, tracker.pointScores(0), tracker.pointScores(1), status.str());
       }
-      lastL = std::move(sf.left);
-      lastR = std::move(sf.right);
+      // Copies: ViSP 3.5's vpImage loses ownership of its pixels when a moved-from image is assigned
+      // again (its swap() leaves hasOwnership behind), and the source refills sf every frame.
+      lastL = sf.left;
+      lastR = sf.right;
       progress.step();
     }
     progress.finish();
