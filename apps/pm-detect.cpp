@@ -8,7 +8,7 @@
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/report/Overlay.h"
+#include "pm/report/DetectionOutputs.h"
 #include "pm/app/Progress.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
@@ -20,27 +20,6 @@
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/tracker/StaticDetection.h"
-
-namespace {
-
-struct Errors
-{
-  double position = 0, orientation = 0, rotationDeg = 0;
-};
-
-Errors errorsBetween(const pm::Phi &a, const pm::Phi &b)
-{
-  Errors e;
-  e.position = std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
-  e.orientation = std::max({std::fabs(a.e1 - b.e1), std::fabs(a.e2 - b.e2), std::fabs(a.e3 - b.e3)});
-  const vpHomogeneousMatrix d = pm::toHomogeneousMatrix(a).inverse() * pm::toHomogeneousMatrix(b);
-  e.rotationDeg = d.getThetaUVector().getTheta() * 180 / M_PI;
-  return e;
-}
-
-nlohmann::json phiJson(const pm::Phi &p) { return {p.x, p.y, p.z, p.e1, p.e2, p.e3}; }
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -126,60 +105,25 @@ int main(int argc, char **argv)
       dp.maxTimeS = maxTimeS;
       dp.patience = patience;
       const pm::Detection d = pm::detectStatic(tracker, IL, IR, dp);
-      const pm::TrackResult &best = d.best;
-      pm::io::StagedFiles files(dir);
-      pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(IL, tracker.fitness().pointScores(best.phi, 0), "detection, left"),
-                                             pm::report::drawPointScores(IR, tracker.fitness().pointScores(best.phi, 1), "right")),
-                         files.stage("detection.png"));
-      nlohmann::json s{{"source", source},
-                       {"pose", phiJson(best.phi)},
-                       {"fitness", best.fitness},
-                       {"quality", best.quality},
-                       {"state", pm::toString(best.state)},
-                       {"time_s", d.convergedS},
-                       {"total_time_s", d.totalS},
-                       {"evaluations", d.evaluations},
-                       {"total_evaluations", d.totalEvaluations},
-                       {"frames", d.frames},
-                       {"budget", tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations per frame"
-                                                           : std::to_string(tp.budgetMs) + " ms per frame"}};
+      pm::report::DetectionOutputs o;
+      o.source = source;
+      o.detection = d;
+      o.budget = tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations per frame"
+                                          : std::to_string(tp.budgetMs) + " ms per frame";
+      o.haveTruth = haveTruth;
       if (haveTruth) {
-        const Errors e = errorsBetween(best.phi, truth);
-        const pm::Phi peak = pm::nearestFitnessPeak(tracker.fitness(), truth, tp.space);
-        const Errors ep = errorsBetween(best.phi, peak);
-        s["truth"] = phiJson(truth);
-        s["position_error_mm"] = e.position;
-        s["orientation_error"] = e.orientation;
-        s["rotation_error_deg"] = e.rotationDeg;
-        s["error_vector"] = {best.phi.x - truth.x, best.phi.y - truth.y, best.phi.z - truth.z,
-                             best.phi.e1 - truth.e1, best.phi.e2 - truth.e2, best.phi.e3 - truth.e3};
-        s["fitness_peak"] = phiJson(peak);
-        s["fitness_at_peak"] = tracker.fitness().evaluate(peak);
-        s["position_error_to_peak_mm"] = ep.position;
-        s["orientation_error_to_peak"] = ep.orientation;
+        o.truth = truth;
+        o.peak = pm::nearestFitnessPeak(tracker.fitness(), truth, tp.space);
+        o.fitnessAtPeak = tracker.fitness().evaluate(o.peak);
       }
-      pm::io::writeTextFile(files.stage("summary.json"), s.dump(2) + "\n");
-      files.commit();
+      const nlohmann::json s = nlohmann::json::parse(pm::report::writeDetection(dir, o, tracker.fitness(), IL, IR));
+      if (!allTargets && !quiet)
+        std::cout << pm::report::describeDetection(o, dir) << std::flush;
       return s;
     };
 
     if (!allTargets) {
-      const nlohmann::json s = runOne(left.empty() ? target : std::string(), out);
-      if (!quiet) {
-        std::cout << std::fixed << std::setprecision(2) << "detected in " << s["source"].get<std::string>() << "\n  pose ["
-                  << s["pose"][0].get<double>() << ", " << s["pose"][1].get<double>() << ", " << s["pose"][2].get<double>()
-                  << ", " << std::setprecision(4) << s["pose"][3].get<double>() << ", " << s["pose"][4].get<double>() << ", "
-                  << s["pose"][5].get<double>() << "], F = " << s["fitness"].get<double>() << " (" << s["state"].get<std::string>()
-                  << ")\n";
-        if (s.contains("truth"))
-          std::cout << std::setprecision(2) << "  error to the truth " << s["position_error_mm"].get<double>() << " mm, "
-                    << std::setprecision(4) << s["orientation_error"].get<double>() << " in eps ("
-                    << std::setprecision(2) << s["rotation_error_deg"].get<double>() << " deg); to the fitness peak "
-                    << s["position_error_to_peak_mm"].get<double>() << " mm, " << std::setprecision(4)
-                    << s["orientation_error_to_peak"].get<double>() << "\n";
-        std::cout << std::setprecision(3) << "  converged after " << s["time_s"].get<double>() << " s ("
-                  << s["evaluations"].get<long>() << " evaluations), written to " << out << "/" << std::endl;
-      }
+      runOne(left.empty() ? target : std::string(), out);
       return 0;
     }
     pm::io::StagedFiles files(out);
