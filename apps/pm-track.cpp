@@ -194,10 +194,11 @@ int main(int argc, char **argv)
                << std::setprecision(1) << f.result.computeMs << " ms, frame " << k;
         view.show(sf.left, sf.right, tracker.pointScores(0), tracker.pointScores(1), status.str());
       }
-      // Copies: ViSP 3.5's vpImage loses ownership of its pixels when a moved-from image is assigned
-      // again (its swap() leaves hasOwnership behind), and the source refills sf every frame.
-      lastL = sf.left;
-      lastR = sf.right;
+      // Keep the pair without copying it: ViSP's own swap() trades the pixel buffers (both images own
+      // theirs). Not std::move: ViSP 3.5's vpImage loses ownership of its pixels when a moved-from
+      // image is assigned again, and the source refills sf every frame.
+      swap(lastL, sf.left);
+      swap(lastR, sf.right);
       progress.step();
     }
     progress.finish();
