@@ -20,10 +20,9 @@ nlohmann::json phiJson(const Phi &p) { return {p.x, p.y, p.z, p.e1, p.e2, p.e3};
 PoseErrors poseErrors(const Phi &a, const Phi &b)
 {
   PoseErrors e;
-  e.positionMm = std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+  e.positionMm = translationDistanceMm(a, b);
   e.orientation = std::max({std::fabs(a.e1 - b.e1), std::fabs(a.e2 - b.e2), std::fabs(a.e3 - b.e3)});
-  const vpHomogeneousMatrix d = toHomogeneousMatrix(a).inverse() * toHomogeneousMatrix(b);
-  e.rotationDeg = d.getThetaUVector().getTheta() * 180 / M_PI;
+  e.rotationDeg = rotationDistanceDeg(a, b);
   return e;
 }
 
