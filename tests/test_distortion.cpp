@@ -20,6 +20,7 @@
 #include "pm/core/StereoFitness.h"
 #include "pm/core/UndistortMap.h"
 #include "pm/io/CameraFile.h"
+#include "pm/io/CameraXml.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/lab/SimulatedCalibration.h"
@@ -288,6 +289,37 @@ TEST(CameraFile, BadFilesAreClearErrors)
     EXPECT_NE(e.find("c.yml"), std::string::npos) << e;
   }
   EXPECT_NE(errorOf([&] { pm::io::readCameraFile(d.file("none.yml"), "left", 640, 480); }).find("does not exist"), std::string::npos);
+}
+
+TEST(CameraFile, AKannalaBrandtModelIsRefusedBeforeViSPsParserReadsPastItsCoefficients)
+{
+  // ViSP 3.5 reads k1..k5 it does not have when one is missing (a null read, found by fuzzing),
+  // for any model of any camera in the file: such a file must never reach its parser.
+  TempDir d("camfile-kb");
+  const std::string model = "<model><type>%sDistortion</type><px>600</px><py>600</py><u0>320</u0><v0>240</v0>"
+                            "<kud>0.1</kud><kdu>-0.1</kdu></model>";
+  const auto file = [&](const std::string &type) {
+    std::string m = model;
+    m.replace(m.find("%s"), 2, type);
+    return "<?xml version=\"1.0\"?>\n<root><camera><name>left</name><image_width>640</image_width>"
+           "<image_height>480</image_height>" + m + "</camera></root>\n";
+  };
+  for (const std::string type : {"ProjWithKannalaBrandt", "ProjWithKannalaBran&#100;t"}) {
+    pm::test::writeText(d.file("c.xml"), file(type));
+    const std::string a = errorOf([&] { pm::io::readCameraFile(d.file("c.xml"), "left", 640, 480); });
+    const std::string b = errorOf([&] { pm::io::readCameraXml(d.file("c.xml"), "left", 640, 480); });
+    for (const std::string &e : {a, b}) {
+      EXPECT_NE(e.find(type == "ProjWithKannalaBrandt" ? "Kannala-Brandt" : "character reference"), std::string::npos) << e;
+      EXPECT_NE(e.find("c.xml"), std::string::npos) << e;
+    }
+  }
+  // The same file with ViSP's own model with distortion is read.
+  pm::test::writeText(d.file("c.xml"), file("perspectiveProjWith"));
+  const pm::io::CameraIntrinsics c = pm::io::readCameraFile(d.file("c.xml"), "left", 640, 480);
+  EXPECT_EQ(c.format, "visp-xml");
+  EXPECT_DOUBLE_EQ(c.cam.get_px(), 600.0);
+  ASSERT_FALSE(c.distortion.coefficients.empty());
+  EXPECT_DOUBLE_EQ(c.distortion.coefficients[0], 0.1);
 }
 
 TEST(RigFile, ALensSurvivesTheRoundTripInOpenCvAndViSPFiles)

@@ -179,6 +179,7 @@ CameraIntrinsics fromFields(const Fields &f, bool ros)
 
 CameraIntrinsics fromVispXml(const std::string &path, const std::string &name, unsigned w, unsigned h)
 {
+  refuseUnsafeCameraXml(path);
   CameraIntrinsics c;
   c.format = "visp-xml";
   int status = vpXmlParserCamera::SEQUENCE_ERROR;

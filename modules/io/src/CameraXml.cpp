@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include <visp3/core/vpException.h>
@@ -13,11 +15,24 @@
 
 namespace pm::io {
 
+void refuseUnsafeCameraXml(const std::string &xml)
+{
+  std::ifstream f(xml, std::ios::binary);
+  if (!f)
+    throw Error("the intrinsics file '" + xml + "' does not exist or cannot be read");
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (text.find("KannalaBrandt") != std::string::npos)
+    throw Error("the intrinsics file '" + xml + "' holds a Kannala-Brandt (fisheye) model, which this project does "
+                "not support: calibrate with ViSP's perspective model with distortion, or give OpenCV's camera file");
+  if (text.find("&#") != std::string::npos)
+    throw Error("the intrinsics file '" + xml + "' holds a character reference (&#...;), which a camera file has no use for");
+}
 
 vpCameraParameters readCameraXml(const std::string &xml, const std::string &name, unsigned w, unsigned h)
 {
   if (!std::filesystem::is_regular_file(xml))
     throw Error("the intrinsics file '" + xml + "' does not exist");
+  refuseUnsafeCameraXml(xml);
   vpCameraParameters cam;
   int status = vpXmlParserCamera::SEQUENCE_ERROR;
   try {

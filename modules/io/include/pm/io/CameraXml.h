@@ -12,9 +12,19 @@ namespace pm::io {
 
 /*!
   Reads camera \e name (perspective projection without distortion) of size w x h from \e xml.
-  Throws pm::Error if the file or the camera is missing, or a focal length is not positive.
+  Throws pm::Error if the file or the camera is missing, or a focal length is not positive, or
+  the file is one refuseUnsafeCameraXml() refuses.
 */
 vpCameraParameters readCameraXml(const std::string &xml, const std::string &name, unsigned w, unsigned h);
+/*!
+  Refuses, with pm::Error, a camera XML file that ViSP 3.5's parser cannot read safely. Its
+  Kannala-Brandt (fisheye) branch reads coefficients it does not have when one of k1..k5 is
+  missing (fuzzing found the crash), and it reads every model of every camera in the file, so
+  such a file is refused whole: the Kannala-Brandt model is not one this project supports. A
+  character reference (\c &#...;) could spell the model's name, so none is accepted either.
+  readCameraXml() and readCameraFile() call it before ViSP's parser.
+*/
+void refuseUnsafeCameraXml(const std::string &xml);
 //! Appends camera \e name to \e xml (created if missing). Throws pm::Error.
 void writeCameraXml(const vpCameraParameters &cam, const std::string &xml, const std::string &name, unsigned w, unsigned h);
 
