@@ -1,19 +1,13 @@
 //! pm-make-model: builds a photo-model (Fig. 4 of the paper) from two photos or from the simulator.
 #include <chrono>
-#include <cmath>
 #include <iostream>
-
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
 #include "pm/report/ModelOutputs.h"
 #include "pm/capture/VideoCaptureSource.h"
 #include "pm/core/Error.h"
-#include "pm/model/PhotoModelBuilder.h"
-#include "pm/model/StereoPhotoModelBuilder.h"
-#include "pm/core/UndistortMap.h"
 #include "pm/io/CameraFile.h"
-#include "pm/io/CameraXml.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
@@ -21,9 +15,9 @@
 #include "pm/io/ViewsFolder.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/lab/LabPass.h"
+#include "pm/lab/ModelMaking.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/sim/Scene.h"
-#include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 
 
@@ -122,16 +116,12 @@ int main(int argc, char **argv)
 
   return pm::app::run(app, argc, argv, [&] {
     const auto t0 = std::chrono::steady_clock::now();
-    vpImage<vpRGBa> bg, tg;
-    pm::PhotoModelBuild build;
-    std::string source;
-    vpImage<float> depth;
-    std::vector<pm::ModelPoint> dropped;
-    double backdropMm = 0;
+    pm::report::ModelOutputs o;
     smp.photo = mp;
     if (allAround || !viewsDir.empty()) {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
       std::vector<pm::PassView> pass;
+      std::string source;
       if (!viewsDir.empty()) {
         pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
         source = "views " + viewsDir;
@@ -149,89 +139,38 @@ int main(int argc, char **argv)
     }
     if (!leftBg.empty() || !leftSource.empty()) {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
-      vpImage<vpRGBa> bgR, tgR;
+      pm::capture::ModelPairs pairs;
       if (!leftSource.empty()) {
         pm::capture::VideoCaptureSource src(leftSource, rightSource);
-        const pm::capture::ModelPairs p = pm::capture::grabModelPairs(src, backgroundFrame, photoFrame);
-        bg = p.background.left;
-        bgR = p.background.right;
-        tg = p.photo.left;
-        tgR = p.photo.right;
+        pairs = pm::capture::grabModelPairs(src, backgroundFrame, photoFrame);
         leftPhoto = leftSource;
         rightPhoto = rightSource;
       } else {
-        bgR = pm::io::readColorImage(rightBg);
-        tgR = pm::io::readColorImage(rightPhoto);
-        bg = pm::io::readColorImage(leftBg);
-        tg = pm::io::readColorImage(leftPhoto);
+        pairs.background.right = pm::io::readColorImage(rightBg);
+        pairs.photo.right = pm::io::readColorImage(rightPhoto);
+        pairs.background.left = pm::io::readColorImage(leftBg);
+        pairs.photo.left = pm::io::readColorImage(leftPhoto);
       }
-      pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bg, bgR, tg, tgR, smp);
-      if (!rig.left.distortion.isNone()) // the region and depths are the ideal image's: draw on it
-        tg = pm::UndistortMap(rig.left).undistorted(tg);
-      build.model = std::move(b.model);
-      build.region = std::move(b.regionLeft);
-      depth = std::move(b.depthLeft);
-      dropped = std::move(b.dropped);
-      backdropMm = b.backdropMm;
-      source = "stereo photos " + leftPhoto + " + " + rightPhoto;
+      o = pm::lab::stereoModelFromPhotos(rig, pairs, smp, "stereo photos " + leftPhoto + " + " + rightPhoto);
     } else if (!background.empty()) {
-      bg = pm::io::readColorImage(background);
-      tg = pm::io::readColorImage(photo);
-      if (bg.getWidth() != tg.getWidth() || bg.getHeight() != tg.getHeight())
-        throw pm::Error("the background photo '" + background + "' is " + std::to_string(bg.getWidth()) + "x" +
-                        std::to_string(bg.getHeight()) + " but the target photo '" + photo + "' is " +
-                        std::to_string(tg.getWidth()) + "x" + std::to_string(tg.getHeight()) +
-                        "; take both with the same camera at the same size");
+      vpImage<vpRGBa> bg = pm::io::readColorImage(background), tg = pm::io::readColorImage(photo);
       pm::RigCamera cam;
       if (intrinsics.empty()) {
         cam = pm::io::loadRig(rigPath).left;
-      } else {
+      } else if (bg.getWidth() == tg.getWidth() && bg.getHeight() == tg.getHeight()) { // else flatModelFromPhotos says so
         const pm::io::CameraIntrinsics in = pm::io::readCameraFile(intrinsics, cameraName, bg.getWidth(), bg.getHeight());
         cam = {cameraName, in.cam, bg.getWidth(), bg.getHeight(), vpHomogeneousMatrix(), in.distortion};
       }
-      if (!cam.distortion.isNone()) { // the lens corrected first: the model is the ideal camera's
-        const pm::UndistortMap map(cam);
-        bg = map.undistorted(bg);
-        tg = map.undistorted(tg);
-      }
-      build = pm::buildPhotoModel(bg, tg, cam.cam, distanceMm, mp);
-      source = "photos " + background + " + " + photo;
+      o = pm::lab::flatModelFromPhotos(std::move(bg), std::move(tg), cam, distanceMm, mp, background, photo);
     } else {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
-      pm::sim::TargetShape shape;
-      if (!texture.empty()) {
-        shape = pm::sim::targetFromImage(pm::io::readColorImage(texture), widthMm, depthMm, texture);
-        source = "simulator, texture " + texture;
-      } else {
-        shape = pm::sim::makeTarget(target);
-        source = "simulator, target " + shape.info.code + " (" + shape.info.name + ")";
-      }
-      const pm::sim::Scene scene(shape, sp);
-      pm::sim::SimulatedPhotoModel sm =
-          stereo ? pm::sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm, smp, viewTurnDeg)
-                 : pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, distanceMm, mp);
-      bg = std::move(sm.background);
-      tg = std::move(sm.photo);
-      if (stereo && !rig.left.distortion.isNone())
-        tg = pm::UndistortMap(rig.left).undistorted(tg);
-      build = std::move(sm.build);
-      depth = std::move(sm.depth);
-      dropped = std::move(sm.dropped);
-      backdropMm = sm.backdropMm;
-      if (stereo)
-        source += ", stereo";
+      const pm::sim::TargetShape shape =
+          texture.empty() ? pm::sim::makeTarget(target) : pm::sim::targetFromImage(pm::io::readColorImage(texture), widthMm, depthMm, texture);
+      const std::string source = texture.empty() ? "simulator, target " + shape.info.code + " (" + shape.info.name + ")"
+                                                 : "simulator, texture " + texture;
+      o = pm::lab::simulatedModel(pm::sim::Scene(shape, sp), rig, distanceMm, stereo, smp, viewTurnDeg, source);
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    pm::report::ModelOutputs o;
-    o.source = source;
-    o.build = std::move(build);
-    o.photo = std::move(tg);
-    o.background = std::move(bg);
-    o.writePhotos = background.empty();
-    o.depth = std::move(depth);
-    o.dropped = std::move(dropped);
-    o.backdropMm = backdropMm;
-    o.stepPx = mp.stepPx;
     const pm::report::ModelFigures fig = pm::report::writeModelOutputs(out, o, seconds);
     if (!quiet)
       std::cout << pm::report::describeModel(o, fig, out, seconds) << std::flush;
