@@ -1,27 +1,18 @@
 //! pm-calib-baseline: checks the stereo rig's baseline and relative rotation with an AprilTag board
 //! or a chessboard.
-#include <cmath>
-
-#include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <random>
 
-#include <nlohmann/json.hpp>
-#include <visp3/core/vpImageDraw.h>
-
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/report/Overlay.h"
+#include "pm/report/CalibrationOutputs.h"
 #include "pm/app/Patterns.h"
 #include "pm/app/Progress.h"
-#include "pm/calib/StereoBaseline.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
-#include "pm/io/StagedFiles.h"
 #include "pm/lab/SimulatedHandEye.h"
 #include "pm/sim/Scene.h"
 
@@ -74,29 +65,7 @@ int main(int argc, char **argv)
       throw CLI::ValidationError("--simulate or --left/--right", "one of them is needed");
     const std::unique_ptr<pm::calib::Pattern> pattern = pm::app::makePattern(patternKind, boardText);
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
-    std::vector<vpHomogeneousMatrix> perPair;
-    std::vector<double> rms;
-    vpImage<vpRGBa> firstL, firstR;
-    std::vector<vpImagePoint> cornersL, cornersR;
-    auto usePair = [&](const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R, const std::string &name) {
-      if (L.getWidth() != R.getWidth() || L.getHeight() != R.getHeight())
-        throw pm::Error(name + ": the left and right images differ in size (" + std::to_string(L.getWidth()) + "x" +
-                        std::to_string(L.getHeight()) + " and " + std::to_string(R.getWidth()) + "x" +
-                        std::to_string(R.getHeight()) + ")");
-      if (L.getWidth() != rig.left.width || L.getHeight() != rig.left.height)
-        throw pm::Error(name + ": the images are " + std::to_string(L.getWidth()) + "x" + std::to_string(L.getHeight()) +
-                        " but the rig's cameras are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
-      const pm::calib::BoardView vl = pattern->find(L, rig.left.cam, rig.left.distortion, name + " left");
-      const pm::calib::BoardView vr = pattern->find(R, rig.right.cam, rig.right.distortion, name + " right");
-      perPair.push_back(vl.cMb * vr.cMb.inverse());
-      rms.push_back(std::sqrt(0.5 * (vl.reprojectionRmsPx * vl.reprojectionRmsPx + vr.reprojectionRmsPx * vr.reprojectionRmsPx)));
-      if (firstL.getSize() == 0) {
-        firstL = L;
-        firstR = R;
-        cornersL = vl.corners;
-        cornersR = vr.corners;
-      }
-    };
+    pm::calib::BaselineCheck check(rig, *pattern);
     // Simulation (also the hand-eye check's): the rig that takes the pictures, the pattern printed flat.
     std::optional<pm::StereoRig> truthRig;
     std::optional<pm::sim::Scene> scene;
@@ -112,7 +81,7 @@ int main(int argc, char **argv)
       for (int k = 0; k < simulate; ++k) {
         const pm::Phi p{20 * u(rng), 20 * u(rng), 500 + 40 * u(rng), 0.12 * u(rng), 0.12 * u(rng), 0.2 * u(rng)};
         const auto im = scene->renderStereo(*truthRig, pm::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
-        usePair(pm::lab::defocused(im.left, blurPx), pm::lab::defocused(im.right, blurPx), "simulated pair " + std::to_string(k));
+        check.add(pm::lab::defocused(im.left, blurPx), pm::lab::defocused(im.right, blurPx), "simulated pair " + std::to_string(k));
         progress.step();
       }
       progress.finish();
@@ -122,69 +91,34 @@ int main(int argc, char **argv)
       if (lf.size() != rf.size())
         throw pm::Error(std::to_string(lf.size()) + " left images but " + std::to_string(rf.size()) + " right ones (pairs are taken in order)");
       for (std::size_t i = 0; i < lf.size(); ++i)
-        usePair(pm::io::readColorImage(lf[i]), pm::io::readColorImage(rf[i]),
+        check.add(pm::io::readColorImage(lf[i]), pm::io::readColorImage(rf[i]),
                 "pair " + std::to_string(pm::app::isImagePattern(leftImages) ? static_cast<long>(i) + firstFrame : static_cast<long>(i)));
       source = "images " + lf.front() + " + " + rf.front() + (lf.size() > 1 ? " and " + std::to_string(lf.size() - 1) + " more pairs" : "");
     }
-    const pm::calib::BaselineResult r = pm::calib::aggregateBaseline(perPair, rms, rig);
+    pm::report::BaselineCheckOutputs o;
+    o.source = source;
+    o.pattern = pattern->describe();
+    o.rigPath = rigPath;
+    o.result = check.result();
+    o.toleranceMm = tolMm;
+    o.toleranceDeg = tolDeg;
+    o.left = check.firstLeft();
+    o.right = check.firstRight();
+    o.cornersLeft = check.firstLeftCorners();
+    o.cornersRight = check.firstRightCorners();
     // Hand-eye: the PA-10 moves the rig around a board fixed in the world; each camera's board
     // poses and the flange poses give its hMc (vpHandEyeCalibration), compared with the rig file.
-    nlohmann::json handEyeJson;
-    bool handEyeAgrees = true;
     if (handEye > 0) { // --hand-eye needs --simulate: truthRig and scene are set
       const pm::lab::HandEyeResult he = pm::lab::simulatedHandEye(*scene, *truthRig, rig, *pattern, handEye, sp.seed, blurPx);
-      for (const pm::lab::HandEyeCamera *c : {&he.left, &he.right}) {
-        handEyeAgrees = handEyeAgrees && c->translationErrorMm <= handEyeTolMm && c->rotationErrorDeg <= handEyeTolDeg;
-        handEyeJson[c == &he.left ? "left" : "right"] = {
-            {"translation_error_mm", c->translationErrorMm}, {"rotation_error_deg", c->rotationErrorDeg}, {"poses", he.poses}};
-      }
+      o.handEyePoses = he.poses;
+      o.handEye[0] = {he.left.translationErrorMm, he.left.rotationErrorDeg};
+      o.handEye[1] = {he.right.translationErrorMm, he.right.rotationErrorDeg};
+      o.handEyeToleranceMm = handEyeTolMm;
+      o.handEyeToleranceDeg = handEyeTolDeg;
     }
-    const bool agrees = std::fabs(r.baselineErrorMm) <= tolMm && r.translationErrorMm <= tolMm && r.rotationErrorDeg <= tolDeg;
-
-    pm::io::StagedFiles files(out);
-    vpImage<vpRGBa> L = firstL, R = firstR;
-    for (const auto &c : cornersL)
-      vpImageDraw::drawCross(L, c, 9, vpColor::green, 2);
-    for (const auto &c : cornersR)
-      vpImageDraw::drawCross(R, c, 9, vpColor::green, 2);
-    pm::report::drawLabel(L, "corners found, left", 8, 8, vpRGBa(255, 255, 255));
-    pm::report::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
-    pm::io::writeImage(pm::report::sideBySide(L, R), files.stage("detections.png"));
-    nlohmann::json summary{{"source", source},
-                                 {"pattern", pattern->describe()},
-                                 {"rig", rigPath},
-                                 {"baseline_mm", r.baselineMm},
-                                 {"baseline_error_mm", r.baselineErrorMm},
-                                 {"translation_error_mm", r.translationErrorMm},
-                                 {"rotation_error_deg", r.rotationErrorDeg},
-                                 {"n_pairs_used", r.pairsUsed},
-                                 {"n_pairs_rejected", r.pairsRejected},
-                                 {"spread_mm", r.spreadMm},
-                                 {"spread_deg", r.spreadDeg},
-                                 {"reprojection_rms_px", r.reprojectionRmsPx},
-                                 {"tolerance_mm", tolMm},
-                                 {"tolerance_deg", tolDeg},
-                                 {"agrees", agrees}};
-    if (handEye > 0) {
-      summary["hand_eye"] = handEyeJson;
-      summary["hand_eye_agrees"] = handEyeAgrees;
-    }
-    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
-    files.commit();
+    pm::report::writeBaselineCheck(out, o);
     if (!quiet)
-      std::cout << std::fixed << std::setprecision(3) << "stereo rig check (" << pattern->describe() << "; " << source << ", " << r.pairsUsed << " pairs used, "
-                << r.pairsRejected << " rejected)\n  baseline " << r.baselineMm << " mm (rig file: "
-                << r.baselineMm - r.baselineErrorMm << " mm, difference " << r.baselineErrorMm << " mm; translation "
-                << r.translationErrorMm << " mm), rotation difference " << r.rotationErrorDeg << " deg\n  spread "
-                << r.spreadMm << " mm, " << r.spreadDeg << " deg; reprojection " << r.reprojectionRmsPx << " px\n  "
-                << (agrees ? "the rig file agrees" : "THE RIG FILE DOES NOT AGREE") << " (tolerances " << tolMm << " mm, "
-                << tolDeg << " deg)" << std::endl;
-    if (!quiet && handEye > 0)
-      for (const char *c : {"left", "right"})
-        std::cout << "  hand-eye, " << c << " camera: hMc differs from the rig file by "
-                  << handEyeJson[c]["translation_error_mm"].get<double>() << " mm, "
-                  << handEyeJson[c]["rotation_error_deg"].get<double>() << " deg (" << handEyeJson[c]["poses"].get<std::size_t>()
-                  << " poses)" << std::endl;
-    return agrees && handEyeAgrees ? 0 : 3;
+      std::cout << pm::report::describeBaselineCheck(o) << std::flush;
+    return o.agrees() && o.handEyeAgrees() ? 0 : 3;
   }, {{"--left-images", "--left", {}}, {"--right-images", "--right", {}}});
 }

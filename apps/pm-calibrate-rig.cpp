@@ -1,17 +1,11 @@
 //! pm-calibrate-rig: a stereo rig's intrinsics, lens distortion and extrinsics from chessboard pairs
 //! (OpenCV's calibration), written as the project's rig file with a ViSP XML and OpenCV YAML.
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <optional>
-#include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "pm/app/App.h"
-#include "pm/report/Overlay.h"
+#include "pm/report/CalibrationOutputs.h"
 #include "pm/app/Patterns.h"
 #include "pm/app/Progress.h"
 #include "pm/calib/RigCalibration.h"
@@ -19,17 +13,6 @@
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
-#include "pm/io/StagedFiles.h"
-
-namespace {
-
-nlohmann::json cameraJson(const pm::RigCamera &c)
-{
-  return {{"px", c.cam.get_px()}, {"py", c.cam.get_py()}, {"u0", c.cam.get_u0()}, {"v0", c.cam.get_v0()},
-          {"distortion", c.distortion.coefficients}, {"image_width", c.width}, {"image_height", c.height}};
-}
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -109,88 +92,15 @@ int main(int argc, char **argv)
       progress.finish();
       source = std::to_string(pairs.size()) + " image pairs";
     }
-    const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board, params);
-
-    nlohmann::json views = nlohmann::json::array();
-    for (const auto &p : c.pairs) {
-      nlohmann::json v{{"name", p.name}, {"used", p.used}, {"views_used", {p.usedBy[0], p.usedBy[1]}},
-                       {"edge_width_px", {p.edgeWidthPx[0], p.edgeWidthPx[1]}}};
-      if (p.used)
-        v["rms_px"] = {p.rmsPx[0], p.rmsPx[1]};
-      else
-        v["reason"] = p.reason;
-      views.push_back(v);
-    }
-    nlohmann::json summary{{"source", source},
-                           {"board", board.describe()},
-                           {"rms_left_px", c.rmsLeftPx},
-                           {"rms_right_px", c.rmsRightPx},
-                           {"rms_stereo_px", c.rmsStereoPx},
-                           {"baseline", c.baselineMm},
-                           {"rotation_between_cameras_deg", c.rotationDeg},
-                           {"pairs_used", c.pairsUsed},
-                           {"views_used", {c.viewsUsed[0], c.viewsUsed[1]}},
-                           {"k3_fixed", {c.k3Fixed[0], c.k3Fixed[1]}},
-                           {"pairs_rejected", static_cast<int>(c.pairs.size()) - c.pairsUsed},
-                           {"left", cameraJson(c.rig.left)},
-                           {"right", cameraJson(c.rig.right)},
-                           {"pairs", views}};
-    pm::lab::CalibrationErrors err;
-    if (truth) {
-      err = pm::lab::compareRigs(c.rig, *truth);
-      summary["truth"] = {{"baseline_error_mm", err.baselineErrorMm},
-                          {"translation_error_mm", err.translationErrorMm},
-                          {"rotation_error_deg", err.rotationErrorDeg},
-                          {"reprojection_error_rms_px", {err.reprojectionRmsPx[0], err.reprojectionRmsPx[1]}}};
-    }
-    pm::io::StagedFiles files(out);
-    // The rig's files (saveRig names them after rig.json) go to a hidden folder first and join the
-    // report only when everything is written: no half-written output.
-    const std::filesystem::path hidden = std::filesystem::path(files.dir()) / ".partial-rig";
-    std::error_code ec;
-    std::filesystem::remove_all(hidden, ec);
-    std::filesystem::create_directories(hidden);
-    try {
-      pm::io::saveRig(c.rig, (hidden / "rig.json").string(), "cameras.xml", "calibrated by pm-calibrate-rig from " + source);
-      vpImage<vpRGBa> coverage = pm::calib::coverageImage(c, arrowGain);
-      std::ostringstream legend;
-      legend << "left: corners found (a colour per view), residuals x" << arrowGain << " (red)";
-      pm::report::drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
-      pm::report::drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
-      pm::io::writeImage(coverage, files.stage("coverage.png"));
-      pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
-      files.commit();
-      for (const auto &e : std::filesystem::directory_iterator(hidden))
-        std::filesystem::rename(e.path(), std::filesystem::path(files.dir()) / e.path().filename());
-    } catch (...) {
-      std::filesystem::remove_all(hidden, ec);
-      throw;
-    }
-    std::filesystem::remove_all(hidden, ec);
-    if (!quiet) {
-      std::cout << std::fixed << std::setprecision(4) << "stereo rig calibration (" << board.describe() << "; " << source
-                << ": " << c.pairsUsed << " pairs for the stereo pose, views " << c.viewsUsed[0] << " left and "
-                << c.viewsUsed[1] << " right for the lenses)\n  rms: left " << c.rmsLeftPx << " px, right " << c.rmsRightPx << " px, stereo "
-                << c.rmsStereoPx << " px\n  baseline " << c.baselineMm << ", " << c.rotationDeg
-                << " deg between the cameras\n  left lens: " << c.rig.left.distortion.describe()
-                << "\n  right lens: " << c.rig.right.distortion.describe() << "\n";
-      for (int k = 0; k < 2; ++k)
-        if (c.k3Fixed[k])
-          std::cout << "  " << (k ? "right" : "left") << " lens: k3 held at 0 (with it free the model folded the image: "
-                    << "add views with the board near the image's edges)\n";
-      for (const auto &p : c.pairs)
-        if (!p.used)
-          std::cout << "  " << p.name << " not in the stereo pose"
-                    << (p.usedBy[0] ? " (its left view calibrates the left lens)" : p.usedBy[1] ? " (its right view calibrates the right lens)" : "")
-                    << ": " << p.reason << "\n";
-      if (truth)
-        std::cout << "  against the true rig: baseline " << err.baselineErrorMm << " mm, translation "
-                  << err.translationErrorMm << " mm, rotation " << err.rotationErrorDeg
-                  << " deg; reprojection of the true rig's lens: " << err.reprojectionRmsPx[0] << " / "
-                  << err.reprojectionRmsPx[1] << " px rms\n";
-      std::cout << "  written to " << out << "/ (rig.json, cameras.xml, rig_left.yml, rig_right.yml, coverage.png, summary.json)"
-                << std::endl;
-    }
+    pm::report::RigCalibrationOutputs o;
+    o.source = source;
+    o.board = board.describe();
+    o.calibration = pm::calib::calibrateRig(pairs, board, params);
+    o.truth = truth;
+    o.arrowGain = arrowGain;
+    pm::report::writeRigCalibration(out, o);
+    if (!quiet)
+      std::cout << pm::report::describeRigCalibration(o, out) << std::flush;
     return 0;
   });
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "pm/calib/BaselineCheck.h"
 #include "pm/calib/StereoBaseline.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
@@ -254,4 +255,35 @@ TEST(StereoBaseline, HandEyeFromThePA10MovingInFrontOfTheBoard)
     EXPECT_LT(s.at("hand_eye").at(c).at("rotation_error_deg").get<double>(), 0.5) << c;
     EXPECT_GE(s.at("hand_eye").at(c).at("poses").get<int>(), 5) << c;
   }
+}
+
+TEST(BaselineCheck, RenderedPairsGiveTheRigsBaselineAndBadPairsAreNamed)
+{
+  // Four pairs of the tag board seen by the lab's rig: the check finds its 323 mm baseline and
+  // keeps the first pair's corners; a pair of another size is refused by its name.
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::calib::TagBoard board;
+  const pm::sim::Scene scene = patternScene(board);
+  pm::calib::BaselineCheck check(rig, board);
+  EXPECT_THROW(check.result(), pm::Error); // no pair yet
+  for (int k = 0; k < 4; ++k) {
+    const vpHomogeneousMatrix hMo(0.01 * k, -0.01, 0.48 + 0.01 * k, 0.05 * k, -0.1, 0.1 * k);
+    const pm::sim::StereoImages im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
+    check.add(im.left, im.right, "pair " + std::to_string(k));
+    if (k == 0) {
+      EXPECT_EQ(check.firstLeft().getWidth(), rig.left.width);
+      EXPECT_EQ(check.firstLeftCorners().size(), check.firstRightCorners().size());
+      EXPECT_EQ(check.firstLeftCorners().size(), 36u); // 9 tags, 4 corners each
+    }
+  }
+  const pm::calib::BaselineResult r = check.result();
+  EXPECT_EQ(r.pairsUsed + r.pairsRejected, 4);
+  EXPECT_NEAR(r.baselineMm, 323.0, 1.0);
+  EXPECT_LT(r.rotationErrorDeg, 0.3);
+
+  const vpImage<vpRGBa> small(240, 320, vpRGBa(128));
+  const std::string e = pm::test::errorOf([&] { check.add(small, small, "pair 7"); });
+  EXPECT_NE(e.find("pair 7"), std::string::npos) << e;
+  EXPECT_NE(e.find("320x240"), std::string::npos) << e;
+  EXPECT_EQ(check.result().pairsUsed + check.result().pairsRejected, 4); // the refused pair is not counted
 }

@@ -15,6 +15,7 @@
 
 #include "TestSupport.h"
 #include "pm/calib/RigCalibration.h"
+#include "pm/calib/RigComparison.h"
 #include "pm/core/Error.h"
 #include "pm/core/HuePlane.h"
 #include "pm/core/StereoFitness.h"
@@ -360,7 +361,7 @@ TEST(RigCalibration, ASimulatedRigWithALensIsRecovered)
   pm::lab::SimulatedCalibrationParams sp;
   const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 60, sp);
   const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
-  const pm::lab::CalibrationErrors e = pm::lab::compareRigs(c.rig, truth);
+  const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, truth);
   EXPECT_LT(e.translationErrorMm, 0.5);
   EXPECT_LT(std::fabs(e.baselineErrorMm), 0.5);
   EXPECT_LT(e.rotationErrorDeg, 0.1);
@@ -553,7 +554,7 @@ TEST(RigCalibration, ATagBoardCalibratesTheRigToo)
   const pm::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
   const auto pairs = pm::lab::renderCalibrationPairs(truth, b, 40, pm::lab::SimulatedCalibrationParams());
   const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, b);
-  const pm::lab::CalibrationErrors e = pm::lab::compareRigs(c.rig, truth);
+  const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, truth);
   EXPECT_GE(c.pairsUsed, 30); // a board seen in part still pairs up
   EXPECT_LT(e.translationErrorMm, 1.0);
   EXPECT_LT(e.rotationErrorDeg, 0.1);

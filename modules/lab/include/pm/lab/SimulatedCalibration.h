@@ -2,12 +2,13 @@
 /*!
   \file SimulatedCalibration.h
   The rig calibration in the lab: chessboard pairs rendered through a rig whose cameras have a
-  known lens distortion, and how far a calibration of them lands from that rig.
+  known lens distortion; how far a calibration of them lands from that rig is
+  pm::calib::compareRigs().
 
       const pm::StereoRig truth = pm::lab::labRigWithLens(pm::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
       const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 20, pm::lab::SimulatedCalibrationParams());
       const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
-      const pm::lab::CalibrationErrors e = pm::lab::compareRigs(c.rig, truth);
+      const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, truth);
 */
 #include <functional>
 #include <vector>
@@ -34,17 +35,5 @@ StereoRig labRigWithLens(const LensDistortion &lens);
 std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::Pattern &board, int n,
                                                            const SimulatedCalibrationParams &params,
                                                            const std::function<void()> &step = {});
-
-//! How far an estimated rig lands from the true one (compareRigs()).
-struct CalibrationErrors
-{
-  double baselineErrorMm = 0;      //!< |T| estimated minus true
-  double translationErrorMm = 0;   //!< |T_est - T_true|
-  double rotationErrorDeg = 0;     //!< between the estimated and true cLMcR rotations
-  double reprojectionRmsPx[2] = {0, 0}; //!< each camera: rms distance, over a grid of the raw image, between where the estimated and the true camera see the same ray
-};
-
-//! How far \e estimated is from \e truth (frame-free: cLMcR, and each camera's pixel-to-ray map).
-CalibrationErrors compareRigs(const StereoRig &estimated, const StereoRig &truth);
 
 } // namespace pm::lab
