@@ -1,45 +1,17 @@
 //! pm-render: renders what the stereo rig sees of a simulated target on the sea bottom.
-#include <algorithm>
-#include <numeric>
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <map>
 
-#include <nlohmann/json.hpp>
-
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
-#include "pm/report/Overlay.h"
 #include "pm/app/Progress.h"
-#include "pm/core/Error.h"
 #include "pm/core/Pose.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
-#include "pm/io/StagedFiles.h"
+#include "pm/lab/TargetRendering.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
-
-namespace {
-
-vpImage<vpRGBa> halfSize(const vpImage<vpRGBa> &I)
-{
-  vpImage<vpRGBa> o(I.getHeight() / 2, I.getWidth() / 2);
-  for (unsigned v = 0; v < o.getHeight(); ++v)
-    for (unsigned u = 0; u < o.getWidth(); ++u) {
-      unsigned s[3] = {0, 0, 0};
-      for (unsigned j = 0; j < 2; ++j)
-        for (unsigned i = 0; i < 2; ++i) {
-          const vpRGBa &p = I[2 * v + j][2 * u + i];
-          s[0] += p.R, s[1] += p.G, s[2] += p.B;
-        }
-      o[v][u] = vpRGBa(static_cast<unsigned char>(s[0] / 4), static_cast<unsigned char>(s[1] / 4),
-                       static_cast<unsigned char>(s[2] / 4));
-    }
-  return o;
-}
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -79,7 +51,6 @@ int main(int argc, char **argv)
   return pm::app::run(app, argc, argv, [&] {
     const auto v = pm::app::parseNumbers(pose, 6, "--pose");
     const pm::Phi phi{v[0], v[1], v[2], v[3], v[4], v[5]};
-    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(phi);
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
 
     std::vector<std::string> codes;
@@ -89,80 +60,22 @@ int main(int argc, char **argv)
     else
       codes.push_back(texture.empty() ? target : std::string("user"));
 
-    pm::io::StagedFiles files(out);
-    nlohmann::json targets = nlohmann::json::array();
-    std::vector<vpImage<vpRGBa>> thumbs;
-    std::vector<double> renderMs;
+    std::vector<pm::lab::RenderedTarget> rendered;
     pm::app::Progress progress("rendering", codes.size() * static_cast<std::size_t>(repeat + 2), quiet);
     for (const auto &code : codes) {
       const pm::sim::TargetShape shape = code == "user" ? pm::sim::targetFromImage(pm::io::readColorImage(texture), widthMm, depthMm, texture)
                                                         : pm::sim::makeTarget(code);
       pm::sim::Scene scene(shape, sp);
       distractor.apply(scene);
-      pm::sim::StereoImages im;
-      double ms = 0;
-      for (int r = 0; r < repeat; ++r) {
-        const auto t0 = std::chrono::steady_clock::now();
-        im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(r));
-        ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-        progress.step();
-      }
-      ms /= repeat;
-      renderMs.push_back(ms);
-      // The relief seen from three sides: turned about y by -0.3, 0, +0.3 (quaternion vector).
-      vpImage<vpRGBa> turned[3];
-      pm::sim::Rasterizer raster;
-      for (int k = 0; k < 3; ++k) {
-        pm::Phi p = phi;
-        p.e2 = (k - 1) * 0.3;
-        scene.render(raster, rig.left, pm::toHomogeneousMatrix(p), 0, 0, turned[k]);
-      }
-      progress.step(2);
-      const std::string c = shape.info.code == "user" ? "user" : shape.info.code;
-      vpImage<vpRGBa> L = im.left, R = im.right;
-      pm::report::drawLabel(L, c + " " + shape.info.name + " - left", 8, 8, vpRGBa(255, 255, 255));
-      pm::report::drawLabel(R, "right", 8, 8, vpRGBa(255, 255, 255));
-      pm::io::writeImage(im.left, files.stage(c + "_left.png"));
-      pm::io::writeImage(im.right, files.stage(c + "_right.png"));
-      pm::io::writeImage(pm::report::sideBySide(L, R), files.stage(c + "_stereo.png"));
-      vpImage<vpRGBa> rel = pm::report::sideBySide(pm::report::sideBySide(halfSize(turned[0]), halfSize(turned[1])), halfSize(turned[2]));
-      pm::report::drawLabel(rel, c + " turned eps2 = -0.3, 0, +0.3 (left camera)", 6, 6, vpRGBa(255, 255, 255));
-      pm::io::writeImage(rel, files.stage(c + "_relief.png"));
-      double w = 0, h = 0;
-      shape.measuredExtent(w, h);
-      targets.push_back({{"code", c},
-                         {"name", shape.info.name},
-                         {"nominal_size_mm", {shape.info.widthMm, shape.info.heightMm, shape.info.depthMm}},
-                         {"measured_outline_mm", {w, h}},
-                         {"triangles", scene.targetTriangles()},
-                         {"render_stereo_ms", ms}});
-      vpImage<vpRGBa> th = halfSize(im.left);
-      pm::report::drawLabel(th, c + " " + shape.info.name, 4, 4, vpRGBa(255, 255, 255));
-      thumbs.push_back(th);
+      rendered.push_back(pm::lab::renderTarget(scene, shape, rig, phi, repeat, [&](std::size_t n) { progress.step(n); }));
     }
     progress.finish();
-    if (all) {
-      const unsigned tw = thumbs[0].getWidth(), th = thumbs[0].getHeight();
-      vpImage<vpRGBa> g(3 * th, 4 * tw);
-      for (std::size_t i = 0; i < thumbs.size(); ++i)
-        g.insert(thumbs[i], vpImagePoint(static_cast<double>((i / 4) * th), static_cast<double>((i % 4) * tw)));
-      pm::io::writeImage(g, files.stage("gallery.png"));
-    }
-    const double meanMs = std::accumulate(renderMs.begin(), renderMs.end(), 0.0) / static_cast<double>(renderMs.size());
-    const nlohmann::json summary{{"pose", v},
-                                 {"supersampling", sp.supersampling},
-                                 {"noise_sigma", sp.noiseSigma},
-                                 {"exposure", sp.exposure},
-                                 {"occluder", sp.occluder},
-                                 {"render_stereo_ms_mean", meanMs},
-                                 {"targets", targets}};
-    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
-    files.commit();
+    const double meanMs = pm::lab::writeRenderedTargets(out, rendered, phi, sp, all);
     if (!quiet)
       std::cout << std::fixed << std::setprecision(1) << "rendered " << codes.size() << " target(s) at phi = "
                 << phi.toString() << ": " << meanMs << " ms per stereo frame (" << rig.left.width << "x"
                 << rig.left.height << ", " << sp.supersampling << "x" << sp.supersampling
-                << " samples per pixel), written to " << files.dir() << "/" << std::endl;
+                << " samples per pixel), written to " << out << "/" << std::endl;
     return 0;
   });
 }

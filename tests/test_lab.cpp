@@ -1,8 +1,9 @@
 // The lab's runners: one convergence rule, the tracking report against hand-computed figures,
 // the simulator as a source of stereo pairs, the sine fit of the frequency response and the
-// closed loop's table; and the one percentile every program reports.
+// closed loop's table; pm-render's pictures of targets; and the one percentile every program reports.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -10,17 +11,21 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
+#include "pm/core/Error.h"
 #include "pm/core/Statistics.h"
+#include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/lab/Convergence.h"
 #include "pm/lab/FrequencyResponse.h"
 #include "pm/lab/LabSequence.h"
 #include "pm/lab/LoopTable.h"
+#include "pm/lab/TargetRendering.h"
 #include "pm/lab/TrackingReport.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
 
 using pm::test::errorOf;
+using pm::test::TempDir;
 
 TEST(Statistics, PercentileIsTheNearestRank)
 {
@@ -213,4 +218,44 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), 40); // 41 columns: 27 and 14 joints
   EXPECT_NE(row.find(",1.25,"), std::string::npos) << row;
   EXPECT_NE(row.find(",oracle,"), std::string::npos) << row;
+}
+
+TEST(TargetRendering, TheReliefTurnsTheTimeIsTheMeanAndTheGalleryHoldsEveryTarget)
+{
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::Phi phi{0, 0, 500, 0, 0, 0};
+  std::vector<pm::lab::RenderedTarget> targets;
+  std::size_t steps = 0;
+  for (const char *code : {"R2", "C01", "C12", "R1", "C05"}) {
+    const pm::sim::TargetShape shape = pm::sim::makeTarget(code);
+    targets.push_back(pm::lab::renderTarget(pm::sim::Scene(shape, pm::sim::SceneParams()), shape, rig, phi, 2, [&](std::size_t n) { steps += n; }));
+  }
+  EXPECT_EQ(steps, 5u * (2 + 2));
+  const pm::lab::RenderedTarget &head = targets[0];
+  EXPECT_EQ(head.code, "R2");
+  EXPECT_GT(head.triangles, 0u);
+  EXPECT_GT(head.renderStereoMs, 0.0);
+  // The view at eps2 = 0 is the pose's own left view; turned either way, the toy looks different.
+  const auto differing = [](const vpImage<vpRGBa> &a, const vpImage<vpRGBa> &b) {
+    std::size_t n = 0;
+    for (unsigned i = 0; i < a.getSize(); ++i)
+      n += a.bitmap[i].R != b.bitmap[i].R || a.bitmap[i].G != b.bitmap[i].G || a.bitmap[i].B != b.bitmap[i].B ? 1 : 0;
+    return n;
+  };
+  EXPECT_GT(differing(head.turned[0], head.turned[2]), 2000u);
+  EXPECT_GT(differing(head.turned[0], head.turned[1]), 1000u);
+
+  TempDir d("render");
+  const double mean = pm::lab::writeRenderedTargets(d.file("r"), targets, phi, pm::sim::SceneParams(), true);
+  double sum = 0;
+  for (const auto &t : targets)
+    sum += t.renderStereoMs;
+  EXPECT_DOUBLE_EQ(mean, sum / 5);
+  const vpImage<vpRGBa> gallery = pm::io::readColorImage(d.file("r/gallery.png"));
+  EXPECT_EQ(gallery.getWidth(), 4 * (rig.left.width / 2));
+  EXPECT_EQ(gallery.getHeight(), 2 * (rig.left.height / 2)); // five targets: two rows of four
+  for (const char *f : {"R2_left.png", "C05_relief.png", "summary.json"})
+    EXPECT_TRUE(std::filesystem::exists(d.file("r/") + f)) << f;
+  EXPECT_THROW(pm::lab::writeRenderedTargets(d.file("none"), {}, phi, pm::sim::SceneParams(), false), pm::Error);
+  EXPECT_FALSE(std::filesystem::exists(d.file("none")));
 }
