@@ -1,4 +1,4 @@
-// The photo-model tracker: detection from scratch, initFromPose, the states (lost and found
+// The photo-model tracker: detection from scratch, static detection (Table 1), initFromPose, the states (lost and found
 // again), configuration files, bad input. Budgets in evaluations, so every run is deterministic.
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/tracker/StaticDetection.h"
 #include "pm/tracker/TiltFilter.h"
 
 #include <visp3/core/vpThetaUVector.h>
@@ -529,4 +530,45 @@ TEST(Tracker, TheSmoothAscentRunsOnLockedFramesWithinItsBudgetAndTheFrameTimeIsA
   pm::PhotoModelTracker u(S.rig, S.sm.build.model, p);
   u.initFromPose(pm::toHomogeneousMatrix(S.truth));
   EXPECT_EQ(u.track(S.im.left, S.im.right).ascentEvaluations, 0);
+}
+
+TEST(StaticDetection, FindsTheStillTargetStopsByItsRulesAndTheNearestPeakScoresAtLeastTheTruth)
+{
+  // The paper's Table 1 on one still pair: the search runs frame after frame on it until the best
+  // has not improved for `patience` frames; the fitness peak nearest the truth is where a perfect
+  // detector would land.
+  const C12Scene &S = c12();
+  pm::TrackerParams p = evalBudget(3000);
+  p.ga.population = 100;
+  p.ga.restartGenerations = 30;
+  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initialize();
+  pm::DetectionParams dp;
+  dp.patience = 15;
+  dp.maxTimeS = 600; // never reached: the patience stops it
+  const pm::Detection d = pm::detectStatic(t, S.im.left, S.im.right, dp);
+  EXPECT_EQ(d.best.state, pm::TrackState::Tracking);
+  EXPECT_NEAR(d.best.phi.x, S.truth.x, 2.0);
+  EXPECT_NEAR(d.best.phi.y, S.truth.y, 2.0);
+  EXPECT_NEAR(d.best.phi.e3, S.truth.e3, 0.02);
+  EXPECT_GT(d.frames, dp.patience);
+  EXPECT_LE(d.evaluations, d.totalEvaluations);
+  EXPECT_GT(d.evaluations, 0);
+  EXPECT_LE(d.convergedS, d.totalS);
+  const double fTruth = t.fitness().evaluate(S.truth);
+  EXPECT_GE(d.best.fitness, fTruth);
+
+  const pm::Phi peak = pm::nearestFitnessPeak(t.fitness(), S.truth, p.space);
+  EXPECT_GE(t.fitness().evaluate(peak), fTruth);
+  EXPECT_LT(pm::translationDistanceMm(peak, S.truth), 8.0); // the flat model's own bias on a 40 mm deep toy
+  EXPECT_LT(pm::translationDistanceMm(peak, d.best.phi), 4.0); // the detection lands on the peak rather than on the truth
+
+  // Without patience, the time limit stops it.
+  pm::PhotoModelTracker t2(S.rig, S.sm.build.model, p);
+  t2.initialize();
+  dp.patience = 1000000;
+  dp.maxTimeS = 0.3;
+  const pm::Detection d2 = pm::detectStatic(t2, S.im.left, S.im.right, dp);
+  EXPECT_GE(d2.totalS, 0.3);
+  EXPECT_LT(d2.frames, 1000000);
 }
