@@ -1,15 +1,19 @@
 // pm-compare: the outline model given to ViSP's trackers, the scores, the scenarios, and the
-// program run on the forced-loss scenario against ground truth.
+// program run on the forced-loss scenario against ground truth; its runner (Comparison) and the
+// confidence study's report on a set labelled by hand.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "pm/compare/Comparison.h"
+#include "pm/compare/ConfidenceStudy.h"
 #include "pm/compare/Metrics.h"
 #include "pm/compare/OutlineModel.h"
 #include "pm/compare/Roc.h"
@@ -114,6 +118,44 @@ TEST(Roc, AreaAndCurveOfKnownScores)
   EXPECT_THROW(auroc({1, 2}, {true}), pm::Error);
   EXPECT_THROW(auroc({1, 2}, {true, true}), pm::Error);
   EXPECT_THROW(auroc({1, NAN}, {true, false}), pm::Error);
+}
+
+TEST(ConfidenceStudy, TheReportCountsTheSetAsLabelledPerRunAndAmongTrackedFrames)
+{
+  // The scores of Roc.AreaAndCurveOfKnownScores as a labelled set of two runs: the report's counts
+  // are the set's, the areas are auroc's over all frames and over the Tracking ones.
+  pm::compare::ConfidenceStudy study;
+  study.runNames = {"a", "b"};
+  struct F { double conf; bool right, trusted; pm::TrackState state; std::size_t run; };
+  const F fs[] = {{0.9, true, true, pm::TrackState::Tracking, 0},  {0.7, false, true, pm::TrackState::Tracking, 0},
+                  {0.8, true, false, pm::TrackState::Tracking, 1}, {0.1, false, false, pm::TrackState::Searching, 1},
+                  {0.4, true, false, pm::TrackState::Tracking, 1}};
+  for (const F &f : fs) {
+    pm::compare::LabelledFrame l;
+    l.confidence = f.conf;
+    l.right = f.right;
+    l.trusted = f.trusted;
+    l.state = f.state;
+    l.run = f.run;
+    study.frames.push_back(l);
+    study.runOf.push_back(f.run);
+  }
+  const pm::compare::ConfidenceReport r = pm::compare::reportConfidence(study, 0.0, 0.85);
+  EXPECT_EQ(r.frames, 5u);
+  EXPECT_EQ(r.wrong, 2u);
+  EXPECT_EQ(r.trackingWrong, 1u);   // the 0.7 frame; the wrong 0.1 one was searching
+  EXPECT_EQ(r.trustedWrong, 1u);
+  EXPECT_EQ(r.trustedRight, 1u);
+  EXPECT_DOUBLE_EQ(r.threshold, 0.85);
+  EXPECT_NEAR(r.auroc, 5.0 / 6.0, 1e-12);
+  EXPECT_NEAR(r.aurocTracking, 2.0 / 3.0, 1e-12); // right 0.9, 0.8, 0.4 against wrong 0.7
+  EXPECT_DOUBLE_EQ(r.atMaxFalseAccept.threshold, 0.8);
+  EXPECT_NEAR(r.trueAcceptRate(), 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(r.falseAcceptRate(), 1.0 / 2.0, 1e-12);
+  ASSERT_EQ(r.perRun.size(), 2u);
+  EXPECT_EQ(r.perRun[0], (std::array<std::size_t, 4>{2, 1, 1, 1}));
+  EXPECT_EQ(r.perRun[1], (std::array<std::size_t, 4>{3, 1, 0, 0}));
+  EXPECT_THROW(pm::compare::reportConfidence(pm::compare::ConfidenceStudy(), 0.0, 0.5), pm::Error);
 }
 
 TEST(Roc, TheLogisticFitRecoversTheModelItsLabelsWereDrawnFrom)
@@ -346,4 +388,47 @@ TEST(PmConfidence, ItsFiguresOnASmallSetAndItsErrors)
   EXPECT_EQ(f.status, 1);
   EXPECT_NE(f.err.find("error: --fit"), std::string::npos) << f.err;
   EXPECT_FALSE(std::filesystem::exists(e.file("o") + "/summary.json"));
+}
+
+TEST(Comparison, OneRowPerFrameAndTrackerTheResultsShapeAndAClearErrorForAnUnknownTracker)
+{
+  // The runner behind pm-compare, on the first step of Table 2 with ours and ViSP's KLT tracker.
+  TempDir d("comparison");
+  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::compare::ComparisonParams p;
+  p.scenarios = {"table2"};
+  p.steps = 1;
+  p.trackers = {"mbt-klt", "ours"};
+  p.trajectoryPath = pm::test::dataPath("trajectories/table2.csv");
+  p.mbtXml = pm::test::dataPath("compare/mbt.xml");
+  p.tracker.budgetEvaluations = 800;
+  pm::compare::Comparison c(rig, p);
+  const std::string cao = d.file("model.cao");
+  pm::test::writeText(cao, c.caoText());
+  std::ostringstream csv;
+  std::size_t calls = 0;
+  const pm::compare::ComparisonResult r = c.run(cao, csv, [&] { ++calls; });
+  const std::size_t n = c.totalFrames();
+  ASSERT_GT(n, 10u);
+  EXPECT_EQ(calls, n);
+  ASSERT_EQ(r.scores.size(), 1u);
+  ASSERT_EQ(r.scores[0].size(), 2u);
+  EXPECT_EQ(r.scores[0][0].size(), n);
+  EXPECT_EQ(r.scores[0][1].size(), n);
+  EXPECT_EQ(r.keys, p.trackers);
+  EXPECT_EQ(r.ours, 1u);
+  EXPECT_EQ(r.fastest, 0u);
+  EXPECT_TRUE(r.needsPose[0]);
+  EXPECT_FALSE(r.needsPose[1]);
+  EXPECT_EQ(r.snapshots.size(), 2u);
+  EXPECT_FALSE(r.hadLoss);
+  const std::string text = csv.str();
+  EXPECT_EQ(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')), 1 + 2 * n); // header, then a row per frame and tracker
+  const std::string table = pm::compare::comparisonTable(r);
+  for (const std::string &name : r.names)
+    EXPECT_NE(table.find(name), std::string::npos) << name;
+
+  p.trackers = {"ours", "mbt-nothing"};
+  const std::string e = pm::test::errorOf([&] { pm::compare::Comparison bad(rig, p); });
+  EXPECT_NE(e.find("mbt-nothing"), std::string::npos) << e;
 }
