@@ -23,14 +23,18 @@
 
 int main(int argc, char **argv)
 {
-  CLI::App app{"Builds a photo-model (the paper's Fig. 4). Flat (the paper's): a photo of the background alone and a "
+  CLI::App app{"Builds a photo-model. All-around (the lab programs' default model): from a pass of the hand around the "
+               "target, a views folder taken by --rig (--views), or the simulator's pass (--all-around); writes model.json, "
+               "model.ply (the carved surface), contact.png (views beside the model seen from them), silhouettes.png and "
+               "summary.json (and views/ with --all-around). The paper's (Fig. 4), flat: a photo of the background alone and a "
                "photo of the target on it, taken by one camera at a known distance. Stereo (with depth): the rig's "
                "two cameras take the background pair, then the photo pair, from one hand pose (--left-background, "
                "--right-background, --left-photo, --right-photo, --rig); every point gets its relief by stereo "
                "matching and no distance is needed. Or from the simulator, which takes the photos of a lab target "
                "(--target; --stereo for the stereo model) or of a user's image (--texture). Writes model.json, "
                "overlay.png (S_in and S_out on the photo), model.png, summary.json and, for a stereo model, "
-               "depth.png (the relief).",
+               "depth.png (the relief); and, unless they are --background and --photo, the (left) photos it was made "
+               "from (photo_background.png, photo_target.png).",
                "pm-make-model"};
   app.option_defaults()->always_capture_default();
   std::string out, target = "C12", background, photo, texture, intrinsics, cameraName = "left";

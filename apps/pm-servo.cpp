@@ -209,7 +209,8 @@ int main(int argc, char **argv)
     files.commit();
     if (!quiet)
       std::cout << pm::lab::runSummaryText(log, info) << "  written to " << files.dir()
-                << "/ (frames.csv, errors.png, relative_pose.png, joints.png, " << (noVideo ? "" : "servo.avi, ") << "summary.json)"
+                << "/ (frames.csv, errors.png, relative_pose.png, joints.png, " << (noVideo ? "" : "servo.avi, ")
+                << (info.overlays ? std::to_string(info.overlays) + " overlay_*.png, " : "") << "summary.json)"
                 << std::endl;
     return 0;
   }, {{"--trajectory", "--motion", {"steps", "sine"}}, {"--steps-file", "--trajectory", {}}});

@@ -68,7 +68,8 @@ std::string describeModel(const ModelOutputs &o, const ModelFigures &figures, co
                          std::to_string(static_cast<int>(std::lround(m.originInHandMm[2]))) + " mm, " +
                          std::to_string(m.nInDropped) + " S_in points without a reliable match dropped\n"
                    : std::string())
-      << "  written to " << dir << "/ (model.json, overlay.png, model.png, " << (hasDepth ? "depth.png, " : "") << "summary.json) in "
+      << "  written to " << dir << "/ (model.json, overlay.png, model.png, " << (hasDepth ? "depth.png, " : "")
+      << (o.writePhotos ? "photo_background.png, photo_target.png, " : "") << "summary.json) in "
       << std::setprecision(2) << seconds << " s\n";
   return out.str();
 }

@@ -56,7 +56,7 @@ struct ComparisonResult
   std::vector<std::vector<std::vector<FrameScore>>> scores; //!< scores[scenario][tracker][frame]
   std::vector<std::vector<Summary>> perScenario;   //!< perScenario[scenario][tracker]
   std::vector<Summary> overall;                    //!< per tracker, pooled over the scenarios
-  std::size_t ours = 0;                            //!< index of "ours" (keys.size() when not run)
+  std::size_t ours = 0;                            //!< index of "ours", else of the first of ours run ("ours-aa", ...); keys.size() when none
   std::size_t fastest = 0;                         //!< index of ViSP's fastest tracker (keys.size() when none)
   bool hadLoss = false;                            //!< some scenario forced a loss
   //! Two snapshots per scenario (the middle and the last frame): the left image with the true
