@@ -24,6 +24,20 @@ void validatePoints(const std::vector<ModelPoint> &inner, const std::vector<Mode
   }
 }
 
+void validateContour(const std::vector<ContourPoint> &c, const std::string &where)
+{
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const ContourPoint &p = c[i];
+    if (!finite(p.x) || !finite(p.y) || !finite(p.z) || !finite(p.insideMm) || !finite(p.outsideMm))
+      throw Error(where + "contour point " + std::to_string(i) + " has a non-finite coordinate");
+    const float n2 = p.nx * p.nx + p.ny * p.ny + p.nz * p.nz;
+    if (!(std::fabs(n2 - 1.f) < 1e-2f))
+      throw Error(where + "contour point " + std::to_string(i) + " has a normal that is not of unit length");
+    if (!(p.insideMm >= 0.f && p.outsideMm >= 0.f))
+      throw Error(where + "contour point " + std::to_string(i) + " has a negative line length");
+  }
+}
+
 //! A camera centre usable as a view direction: finite and at least 1 mm from the model origin.
 bool validCamera(const double c[3])
 {
@@ -31,6 +45,16 @@ bool validCamera(const double c[3])
   return std::isfinite(n) && n > 1.0;
 }
 } // namespace
+
+bool PhotoModel::hasContours() const
+{
+  if (contour.empty())
+    return false;
+  for (const ModelView &v : views)
+    if (v.contour.empty())
+      return false;
+  return true;
+}
 
 bool PhotoModel::hasDepth() const
 {
@@ -53,6 +77,20 @@ void PhotoModel::validate(const std::string &source) const
   if (!(backgroundHue >= 0.f && backgroundHue < 360.f))
     throw Error(where + "background hue must lie in [0, 360) degrees");
   validatePoints(inner, outer, where);
+  validateContour(contour, where);
+  const std::size_t bins = static_cast<std::size_t>(kColourBins) * kColourBins * kColourBins;
+  for (const std::vector<float> *h : {&foregroundHistogram, &backgroundHistogram}) {
+    if (h->empty())
+      continue;
+    double sum = 0;
+    for (float b : *h) {
+      if (!(b >= 0.f && b <= 1.f))
+        throw Error(where + "a colour histogram holds a bin outside [0, 1]");
+      sum += b;
+    }
+    if (h->size() != bins || !(std::fabs(sum - 1.0) < 1e-3))
+      throw Error(where + "a colour histogram must hold " + std::to_string(bins) + " bins summing to 1");
+  }
   if (views.empty())
     return;
   if (!hasDepth())
@@ -66,6 +104,7 @@ void PhotoModel::validate(const std::string &source) const
     if (!validCamera(views[k].cameraMm))
       throw Error(w + "its camera centre (camera_mm) must be finite and at least 1 mm from the origin");
     validatePoints(views[k].inner, views[k].outer, w);
+    validateContour(views[k].contour, w);
   }
 }
 

@@ -54,20 +54,74 @@ std::vector<ModelPoint> pointsFromJson(const json &a, const char *name, bool wit
 //! Rounded to 0.01 (a double, so that it is written short): what is read back is what was deduplicated.
 double rounded(float x) { return std::round(static_cast<double>(x) * 100.0) / 100.0; }
 
-//! Version 4: the S_in points of every view in one cloud, each view by index; S_out as positions.
-void writeViewpointModel(const PhotoModel &m, json &j)
+//! A contour's points as [x, y, z, nx, ny, nz, inside_mm, outside_mm] (positions to 0.01 mm, normals to 0.0001).
+json contourToJson(const std::vector<ContourPoint> &c)
 {
-  std::map<std::array<double, 4>, std::size_t> index;
+  json a = json::array();
+  auto n4 = [](float x) { return std::round(static_cast<double>(x) * 1e4) / 1e4; };
+  for (const ContourPoint &p : c)
+    a.push_back({rounded(p.x), rounded(p.y), rounded(p.z), n4(p.nx), n4(p.ny), n4(p.nz), rounded(p.insideMm), rounded(p.outsideMm)});
+  return a;
+}
+
+std::vector<ContourPoint> contourFromJson(const json &a)
+{
+  if (!a.is_array())
+    throw Error("\"contour\" must be an array of [x_mm, y_mm, z_mm, nx, ny, nz, inside_mm, outside_mm]");
+  std::vector<ContourPoint> c;
+  c.reserve(a.size());
+  for (const json &e : a) {
+    if (!e.is_array() || e.size() != 8)
+      throw Error("every point of \"contour\" must be [x_mm, y_mm, z_mm, nx, ny, nz, inside_mm, outside_mm]");
+    ContourPoint p;
+    p.x = e[0].get<float>(), p.y = e[1].get<float>(), p.z = e[2].get<float>();
+    p.nx = e[3].get<float>(), p.ny = e[4].get<float>(), p.nz = e[5].get<float>();
+    p.insideMm = e[6].get<float>(), p.outsideMm = e[7].get<float>();
+    c.push_back(p);
+  }
+  return c;
+}
+
+//! A histogram as its non-zero bins, [[bin, value], ...].
+json histogramToJson(const std::vector<float> &h)
+{
+  json a = json::array();
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (h[i] > 0)
+      a.push_back({i, h[i]});
+  return a;
+}
+
+std::vector<float> histogramFromJson(const json &a, std::size_t bins, const char *name)
+{
+  if (!a.is_array())
+    throw Error(std::string("\"") + name + "\" must be an array of [bin, value]");
+  std::vector<float> h(bins, 0.f);
+  for (const json &e : a) {
+    if (!e.is_array() || e.size() != 2 || !e[0].is_number_unsigned() || e[0].get<std::size_t>() >= bins)
+      throw Error(std::string("every entry of \"") + name + "\" must be [bin, value] with a bin under " + std::to_string(bins));
+    h[e[0].get<std::size_t>()] = e[1].get<float>();
+  }
+  return h;
+}
+
+//! Version 4: the S_in points of every view in one cloud, each view by index; S_out as positions. Version 5 adds each surface point's colour, the outlines and the colour histograms.
+void writeViewpointModel(const PhotoModel &m, json &j, bool v5)
+{
+  std::map<std::array<double, 7>, std::size_t> index;
   json surface = json::array();
   auto indices = [&](const std::vector<ModelPoint> &pts) {
     json a = json::array();
     for (const ModelPoint &p : pts) {
       const double hue = rounded(p.hue) >= 360.0 ? 0.0 : rounded(p.hue); // 359.996 rounds to 360: the same as 0
-      const std::array<double, 4> key{rounded(p.x), rounded(p.y), rounded(p.z), hue};
+      const std::array<double, 7> key{rounded(p.x), rounded(p.y), rounded(p.z), hue, v5 ? p.r : 0.0, v5 ? p.g : 0.0, v5 ? p.b : 0.0};
       auto it = index.find(key);
       if (it == index.end()) {
         it = index.emplace(key, surface.size()).first;
-        surface.push_back({key[0], key[1], key[2], key[3]});
+        if (v5)
+          surface.push_back({key[0], key[1], key[2], key[3], p.r, p.g, p.b});
+        else
+          surface.push_back({key[0], key[1], key[2], key[3]});
       }
       a.push_back(it->second);
     }
@@ -81,11 +135,21 @@ void writeViewpointModel(const PhotoModel &m, json &j)
   };
   j["s_in"] = indices(m.inner);
   j["s_out"] = positions(m.outer);
+  if (v5)
+    j["contour"] = contourToJson(m.contour);
   json views = json::array();
-  for (const ModelView &v : m.views)
-    views.push_back({{"camera_mm", {v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]}}, {"s_in", indices(v.inner)}, {"s_out", positions(v.outer)}});
+  for (const ModelView &v : m.views) {
+    json e{{"camera_mm", {v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]}}, {"s_in", indices(v.inner)}, {"s_out", positions(v.outer)}};
+    if (v5)
+      e["contour"] = contourToJson(v.contour);
+    views.push_back(e);
+  }
   j["views"] = views;
   j["surface"] = surface;
+  if (v5 && !m.foregroundHistogram.empty())
+    j["colour_histograms"] = {{"bins_per_channel", PhotoModel::kColourBins},
+                              {"foreground", histogramToJson(m.foregroundHistogram)},
+                              {"background", histogramToJson(m.backgroundHistogram)}};
 }
 
 std::vector<ModelPoint> indexedPoints(const json &a, const std::vector<ModelPoint> &surface, const char *name)
@@ -126,8 +190,9 @@ std::vector<ModelPoint> positionPoints(const json &a, float hue, const char *nam
 std::string photoModelToJson(const PhotoModel &m)
 {
   const bool depth = m.hasDepth();
+  const bool v5 = m.views.size() >= kViewpointViews && m.hasContours() && m.hasColours;
   json j{{"format", kFormat},
-         {"version", m.views.size() >= kViewpointViews ? 4 : !m.views.empty() ? 3 : depth ? 2 : 1},
+         {"version", v5 ? 5 : m.views.size() >= kViewpointViews ? 4 : !m.views.empty() ? 3 : depth ? 2 : 1},
          {"distance_mm", m.distanceMm},
          {"camera", {{"px", m.px}, {"py", m.py}, {"u0", m.u0}, {"v0", m.v0}, {"width", m.photoWidth}, {"height", m.photoHeight}}},
          {"centroid_px", {m.centroidU, m.centroidV}},
@@ -142,7 +207,7 @@ std::string photoModelToJson(const PhotoModel &m)
   }
   if (m.views.size() >= kViewpointViews) {
     j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
-    writeViewpointModel(m, j);
+    writeViewpointModel(m, j, v5);
   } else if (!m.views.empty()) {
     j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
     json views = json::array();
@@ -165,7 +230,7 @@ PhotoModel loadPhotoModel(const std::string &path)
   PhotoModel m;
   try {
     const json j = json::parse(f);
-    const int version = detail::checkFormat(j, kFormat, 4);
+    const int version = detail::checkFormat(j, kFormat, 5);
     m.distanceMm = j.at("distance_mm").get<double>();
     const json &c = j.at("camera");
     m.px = c.at("px").get<double>();
@@ -182,15 +247,24 @@ PhotoModel loadPhotoModel(const std::string &path)
     m.backgroundHue = j.at("background_hue_deg").get<float>();
     m.targetHue = j.value("target_hue_deg", 0.f);
     std::vector<ModelPoint> surface;
-    if (version == 4) {
+    if (version >= 4) {
       const json &s = j.at("surface");
+      const char *shape = version == 4 ? "[x_mm, y_mm, z_mm, hue_deg]" : "[x_mm, y_mm, z_mm, hue_deg, r, g, b]";
       if (!s.is_array() || s.empty())
-        throw Error("\"surface\" must be a non-empty array of [x_mm, y_mm, z_mm, hue_deg]");
+        throw Error(std::string("\"surface\" must be a non-empty array of ") + shape);
       for (const json &e : s) {
-        if (!e.is_array() || e.size() != 4)
-          throw Error("every point of \"surface\" must be [x_mm, y_mm, z_mm, hue_deg]");
+        if (!e.is_array() || e.size() != (version == 4 ? 4u : 7u))
+          throw Error(std::string("every point of \"surface\" must be ") + shape);
         ModelPoint p;
         p.x = e[0].get<float>(), p.y = e[1].get<float>(), p.z = e[2].get<float>(), p.hue = e[3].get<float>();
+        if (version >= 5) {
+          for (std::size_t k = 4; k < 7; ++k)
+            if (!e[k].is_number_unsigned() || e[k].get<unsigned>() > 255)
+              throw Error("a surface point's colour must be three integers in [0, 255]");
+          p.r = static_cast<unsigned char>(e[4].get<unsigned>());
+          p.g = static_cast<unsigned char>(e[5].get<unsigned>());
+          p.b = static_cast<unsigned char>(e[6].get<unsigned>());
+        }
         surface.push_back(p);
       }
       m.inner = indexedPoints(j.at("s_in"), surface, "s_in");
@@ -225,14 +299,28 @@ PhotoModel loadPhotoModel(const std::string &path)
       for (const json &v : views) {
         ModelView mv;
         camera(v.at("camera_mm"), mv.cameraMm);
-        if (version == 4) {
+        if (version >= 4) {
           mv.inner = indexedPoints(v.at("s_in"), surface, "s_in");
           mv.outer = positionPoints(v.at("s_out"), m.backgroundHue, "s_out");
+          if (version >= 5)
+            mv.contour = contourFromJson(v.at("contour"));
         } else {
           mv.inner = pointsFromJson(v.at("s_in"), "s_in", true);
           mv.outer = pointsFromJson(v.at("s_out"), "s_out", true);
         }
         m.views.push_back(std::move(mv));
+      }
+    }
+    if (version >= 5) {
+      m.hasColours = true;
+      m.contour = contourFromJson(j.at("contour"));
+      if (j.contains("colour_histograms")) {
+        const json &h = j.at("colour_histograms");
+        if (h.at("bins_per_channel").get<int>() != PhotoModel::kColourBins)
+          throw Error("\"colour_histograms\" must have " + std::to_string(PhotoModel::kColourBins) + " bins per channel");
+        const std::size_t bins = static_cast<std::size_t>(PhotoModel::kColourBins) * PhotoModel::kColourBins * PhotoModel::kColourBins;
+        m.foregroundHistogram = histogramFromJson(h.at("foreground"), bins, "foreground");
+        m.backgroundHistogram = histogramFromJson(h.at("background"), bins, "background");
       }
     }
   } catch (const Error &e) {

@@ -15,12 +15,16 @@
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 #include "pm/core/UndistortMap.h"
+#include "pm/model/HullMesh.h"
+#include "pm/model/ViewpointModel.h"
+#include "pm/model/VisualHull.h"
 
 namespace pm {
 
 void AllAroundParams::validate() const
 {
   silhouette.validate();
+  fusion.validate();
   auto check = [](bool ok, const char *what) {
     if (!ok)
       throw Error(std::string("all-around model parameter ") + what);
@@ -46,186 +50,18 @@ void AllAroundParams::validate() const
   check(stripGapPx >= 1 && stripGapPx <= 100, "strip gap must lie in [1, 100] px");
   check(stripWidthPx >= 0 && stripWidthPx <= 100, "strip width must lie in [0, 100] px");
   check(stripRows >= 1 && stripRows <= 10, "strip rows must lie in [1, 10]");
+  check(inMinInsidePx >= 0 && inMinInsidePx <= 50, "S_in's distance inside the outline must lie in [0, 50] px");
+  check(nContour >= 8 && nContour <= 20000, "outline points per viewpoint must lie in [8, 20000]");
 }
 
 namespace {
 
-using Vec3 = std::array<double, 3>;
-
-Vec3 sub(const Vec3 &a, const Vec3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3 &a, const Vec3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3 &a, const Vec3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-Vec3 unit(const Vec3 &a)
-{
-  const double n = std::sqrt(dot(a, a));
-  return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 1};
-}
-
-//! A pinhole camera: cMw (mm), intrinsics, size.
-struct Pinhole
-{
-  double R[9], t[3];
-  double px, py, u0, v0;
-  int w, h;
-  Vec3 centre; //!< in the world (mm)
-
-  Pinhole(const vpHomogeneousMatrix &wMc, const vpCameraParameters &cam, unsigned width, unsigned height)
-      : px(cam.get_px()), py(cam.get_py()), u0(cam.get_u0()), v0(cam.get_v0()), w(static_cast<int>(width)),
-        h(static_cast<int>(height))
-  {
-    const vpHomogeneousMatrix cMw = wMc.inverse();
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c)
-        R[3 * r + c] = cMw[r][c];
-      t[r] = 1e3 * cMw[r][3];
-      centre[r] = 1e3 * wMc[r][3];
-    }
-  }
-  //! Camera-frame position of world point \e X (mm).
-  Vec3 toCam(const Vec3 &X) const
-  {
-    return {R[0] * X[0] + R[1] * X[1] + R[2] * X[2] + t[0], R[3] * X[0] + R[4] * X[1] + R[5] * X[2] + t[1],
-            R[6] * X[0] + R[7] * X[1] + R[8] * X[2] + t[2]};
-  }
-  bool project(const Vec3 &X, double &u, double &v, double &z) const
-  {
-    const Vec3 c = toCam(X);
-    z = c[2];
-    if (!(z > 1))
-      return false;
-    u = px * c[0] / z + u0;
-    v = py * c[1] / z + v0;
-    return true;
-  }
-  //! The world ray direction of pixel (u, v).
-  Vec3 ray(double u, double v) const
-  {
-    const Vec3 d{(u - u0) / px, (v - v0) / py, 1.0};
-    return unit({R[0] * d[0] + R[3] * d[1] + R[6] * d[2], R[1] * d[0] + R[4] * d[1] + R[7] * d[2],
-                 R[2] * d[0] + R[5] * d[1] + R[8] * d[2]});
-  }
-};
-
-//! One camera of one view: its pinhole, ideal photo, silhouette's signed distance (px, > 0 inside).
-struct ViewCamera
-{
-  Pinhole cam;
-  vpImage<vpRGBa> photo;
-  cv::Mat signedDist;
-  int view;
-  double sd(double u, double v) const
-  {
-    const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
-    if (ui < 0 || vi < 0 || ui >= cam.w || vi >= cam.h)
-      return -1e6;
-    return signedDist.at<float>(vi, ui);
-  }
-};
-
-cv::Mat signedDistance(const vpImage<unsigned char> &mask)
-{
-  const int h = static_cast<int>(mask.getHeight()), w = static_cast<int>(mask.getWidth());
-  cv::Mat m(h, w, CV_8U, const_cast<unsigned char *>(mask.bitmap));
-  cv::Mat inside, outside, inv;
-  cv::distanceTransform(m, inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  cv::bitwise_not(m, inv);
-  cv::distanceTransform(inv, outside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  return inside - outside;
-}
-
-//! The hull as a dense grid of occupied cells.
-struct Grid
-{
-  Vec3 origin; //!< world position of cell (0, 0, 0)'s corner (mm)
-  double cell = 1;
-  int n = 0;
-  std::vector<std::uint8_t> occ;
-  std::size_t idx(int x, int y, int z) const
-  {
-    return (static_cast<std::size_t>(z) * static_cast<std::size_t>(n) + static_cast<std::size_t>(y)) * static_cast<std::size_t>(n) +
-           static_cast<std::size_t>(x);
-  }
-  bool at(int x, int y, int z) const { return x >= 0 && y >= 0 && z >= 0 && x < n && y < n && z < n && occ[idx(x, y, z)]; }
-  Vec3 centre(int x, int y, int z) const
-  {
-    return {origin[0] + (x + 0.5) * cell, origin[1] + (y + 0.5) * cell, origin[2] + (z + 0.5) * cell};
-  }
-};
-
-enum class CellClass
-{
-  Outside,
-  Inside,
-  Boundary
-};
-
-//! How the cube of half-diagonal \e radius (mm) at \e c stands against the silhouettes of \e cams.
-CellClass classify(const std::vector<const ViewCamera *> &cams, const Vec3 &c, double radius)
-{
-  bool allInside = true;
-  for (const ViewCamera *vc : cams) {
-    double u, v, z;
-    if (!vc->cam.project(c, u, v, z))
-      return CellClass::Outside;
-    const double rpx = radius * std::max(vc->cam.px, vc->cam.py) / std::max(z - radius, 1.0);
-    const double d = vc->sd(u, v);
-    if (d < -rpx)
-      return CellClass::Outside;
-    if (d <= rpx)
-      allInside = false;
-  }
-  return allInside ? CellClass::Inside : CellClass::Boundary;
-}
-
-void carve(const std::vector<const ViewCamera *> &cams, Grid &g, int x0, int y0, int z0, int size)
-{
-  const double s = size * g.cell;
-  const Vec3 c{g.origin[0] + (x0 + 0.5 * size) * g.cell, g.origin[1] + (y0 + 0.5 * size) * g.cell,
-               g.origin[2] + (z0 + 0.5 * size) * g.cell};
-  const CellClass k = classify(cams, c, size == 1 ? 0.0 : 0.5 * std::sqrt(3.0) * s);
-  if (k == CellClass::Outside)
-    return;
-  if (k == CellClass::Inside || size == 1) {
-    for (int z = z0; z < std::min(z0 + size, g.n); ++z)
-      for (int y = y0; y < std::min(y0 + size, g.n); ++y)
-        for (int x = x0; x < std::min(x0 + size, g.n); ++x)
-          g.occ[g.idx(x, y, z)] = 1;
-    return;
-  }
-  const int hs = size / 2;
-  for (int dz = 0; dz < 2; ++dz)
-    for (int dy = 0; dy < 2; ++dy)
-      for (int dx = 0; dx < 2; ++dx) {
-        const int x = x0 + dx * hs, y = y0 + dy * hs, z = z0 + dz * hs;
-        if (x < g.n && y < g.n && z < g.n)
-          carve(cams, g, x, y, z, hs);
-      }
-}
-
-//! The point nearest (least squares) to the rays from each camera through its silhouette's centroid.
-Vec3 raysMeet(const std::vector<ViewCamera> &cams, const std::vector<vpImage<unsigned char>> &masks)
-{
-  double A[9] = {0}, b[3] = {0};
-  for (std::size_t i = 0; i < cams.size(); ++i) {
-    const cv::Mat m(static_cast<int>(masks[i].getHeight()), static_cast<int>(masks[i].getWidth()), CV_8U,
-                    const_cast<unsigned char *>(masks[i].bitmap));
-    const cv::Moments mo = cv::moments(m, true);
-    if (mo.m00 <= 0)
-      continue;
-    const Vec3 d = cams[i].cam.ray(mo.m10 / mo.m00, mo.m01 / mo.m00), o = cams[i].cam.centre;
-    // (I - d d^T) x = (I - d d^T) o, summed.
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        const double P = (r == c ? 1.0 : 0.0) - d[r] * d[c];
-        A[3 * r + c] += P;
-        b[r] += P * o[c];
-      }
-  }
-  cv::Mat Am(3, 3, CV_64F, A), bm(3, 1, CV_64F, b), x;
-  if (!cv::solve(Am, bm, x, cv::DECOMP_SVD))
-    throw Error("all-around model: the views' rays do not meet (are the poses right?)");
-  return {x.at<double>(0), x.at<double>(1), x.at<double>(2)};
-}
+using hull::Vec3;
+using hull::HullCamera;
+using hull::cross;
+using hull::dot;
+using hull::sub;
+using hull::unit;
 
 //! Circular median-like hue: the sample with the least summed distance to the others (deg).
 float medoidHue(const std::vector<float> &h, float &spread)
@@ -256,28 +92,8 @@ struct ColourSample
   unsigned char r, g, b;
 };
 
-//! A depth buffer of the surface points seen by \e cam, splatted over \e radius pixels.
-void depthBuffer(const Pinhole &cam, const std::vector<Vec3> &pts, int radius, std::vector<float> &zbuf)
-{
-  zbuf.assign(static_cast<std::size_t>(cam.w) * static_cast<std::size_t>(cam.h), std::numeric_limits<float>::infinity());
-  for (const Vec3 &p : pts) {
-    double u, v, z;
-    if (!cam.project(p, u, v, z))
-      continue;
-    const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
-    for (int dv = -radius; dv <= radius; ++dv)
-      for (int du = -radius; du <= radius; ++du) {
-        const int x = ui + du, y = vi + dv;
-        if (x < 0 || y < 0 || x >= cam.w || y >= cam.h)
-          continue;
-        float &d = zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
-        d = std::min(d, static_cast<float>(z));
-      }
-  }
-}
-
 //! The 5x5 patch around where \e X projects in \e vc's photo (R, G, B of each pixel), zero-mean and unit-norm; false off the image or flat.
-bool patchAt(const ViewCamera &vc, const Vec3 &X, std::array<float, 75> &out)
+bool patchAt(const HullCamera &vc, const Vec3 &X, std::array<float, 75> &out)
 {
   double u, v, z;
   if (!vc.cam.project(X, u, v, z))
@@ -313,7 +129,7 @@ bool patchAt(const ViewCamera &vc, const Vec3 &X, std::array<float, 75> &out)
   highest, when that is clearly better than at the hull (by refineMinGain) and good in itself
   (refineMinScore). Returns the number of points moved.
 */
-int refineByPhotoConsistency(const std::vector<const ViewCamera *> &cams, const std::vector<std::vector<std::uint16_t>> &seenBy,
+int refineByPhotoConsistency(const std::vector<const HullCamera *> &cams, const std::vector<std::vector<std::uint16_t>> &seenBy,
                              const std::vector<Vec3> &normals, const AllAroundParams &p, double cell, std::vector<Vec3> &pts)
 {
   const int steps = static_cast<int>(std::floor(p.refineDepthMm / cell));
@@ -401,6 +217,109 @@ std::vector<bool> hueEdges(const std::vector<SurfacePoint> &s, double radiusMm, 
   return edge;
 }
 
+/*!
+  The colour of surface point \e s from its samples: the median colour; highlights (much brighter
+  and paler than the point's median) left out; the medoid hue of the saturated samples, the point
+  marked (highlight) when they disagree over maxHueSpreadDeg; a hue far enough from \e bgHue may be S_in.
+*/
+void colourPoint(std::vector<ColourSample> &sm, float bgHue, const AllAroundParams &p, SurfacePoint &s, AllAroundBuild &out)
+{
+  s.hue = 0, s.r = s.g = s.b = 128, s.nSeen = static_cast<std::uint8_t>(std::min<std::size_t>(255, sm.size()));
+  s.hasHue = false, s.highlight = false;
+  if (sm.empty())
+    return;
+  std::vector<float> vs, ss;
+  for (const ColourSample &c : sm)
+    vs.push_back(c.v), ss.push_back(c.s);
+  std::nth_element(vs.begin(), vs.begin() + static_cast<long>(vs.size() / 2), vs.end());
+  std::nth_element(ss.begin(), ss.begin() + static_cast<long>(ss.size() / 2), ss.end());
+  const float mv = vs[vs.size() / 2], ms = ss[ss.size() / 2];
+  std::vector<float> hues;
+  std::vector<unsigned char> rs, gs, bs;
+  for (const ColourSample &c : sm) {
+    if (sm.size() >= 3 && c.v > mv + 0.15f && c.s < ms - 0.1f) {
+      ++out.nHighlightSamples;
+      continue;
+    }
+    rs.push_back(c.r), gs.push_back(c.g), bs.push_back(c.b);
+    if (c.s >= p.minSaturation && c.v >= p.minValue)
+      hues.push_back(c.h);
+  }
+  auto med = [](std::vector<unsigned char> &x) {
+    std::nth_element(x.begin(), x.begin() + static_cast<long>(x.size() / 2), x.end());
+    return x[x.size() / 2];
+  };
+  if (!rs.empty())
+    s.r = med(rs), s.g = med(gs), s.b = med(bs);
+  if (hues.size() * 2 < sm.size() || hues.empty())
+    return; // mostly pale: no hue to score
+  float spread = 0;
+  s.hue = medoidHue(hues, spread);
+  if (hues.size() >= 2 && spread > p.maxHueSpreadDeg) {
+    s.highlight = true;
+    ++out.nHighlight;
+    return;
+  }
+  s.hasHue = hueDistance(s.hue, bgHue) > p.minHueFromBackgroundDeg;
+}
+
+//! About \e n directions within \e capDeg of \e pole (a Fibonacci lattice about it), the pole first.
+std::vector<Vec3> capDirections(const Vec3 &pole, double capDeg, int n)
+{
+  const double capCos = std::cos(capDeg * M_PI / 180);
+  const int nSphere = static_cast<int>(std::ceil(n * 2.0 / (1.0 - capCos)));
+  std::vector<Vec3> dirs{pole};
+  const Vec3 a = unit(cross(pole, std::fabs(pole[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
+  const Vec3 b = cross(pole, a);
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < nSphere; ++i) {
+    const double zz = 1.0 - (i + 0.5) * 2.0 / nSphere;
+    if (zz < capCos)
+      break;
+    const double r = std::sqrt(std::max(0.0, 1 - zz * zz)), phi = golden * i;
+    const Vec3 d{zz * pole[0] + r * (std::cos(phi) * a[0] + std::sin(phi) * b[0]), zz * pole[1] + r * (std::cos(phi) * a[1] + std::sin(phi) * b[1]),
+                 zz * pole[2] + r * (std::cos(phi) * a[2] + std::sin(phi) * b[2])};
+    if (dot(d, pole) < 1 - 1e-6)
+      dirs.push_back(d);
+  }
+  return dirs;
+}
+
+/*!
+  The colour histograms of the target (the photos' pixels over 2 px inside the silhouettes) and of
+  its surroundings (2 to 30 px outside), PhotoModel::kColourBins^3 bins each, normalised.
+*/
+void colourHistograms(const std::vector<const HullCamera *> &cams, std::vector<float> &fg, std::vector<float> &bg)
+{
+  const int B = PhotoModel::kColourBins, shift = 8 - 4; // 16 bins: the top 4 bits
+  static_assert(PhotoModel::kColourBins == 16, "the shift assumes 16 bins per channel");
+  fg.assign(static_cast<std::size_t>(B) * B * B, 0.f);
+  bg.assign(fg.size(), 0.f);
+  double nf = 0, nb = 0;
+  for (const HullCamera *vc : cams)
+    for (int y = 0; y < vc->cam.h; y += 2)
+      for (int x = 0; x < vc->cam.w; x += 2) {
+        const float d = vc->signedDist.at<float>(y, x);
+        if (!(d > 2 || (d < -2 && d > -30)))
+          continue;
+        const vpRGBa c = vc->photo[static_cast<unsigned>(y)][static_cast<unsigned>(x)];
+        const std::size_t bin = (static_cast<std::size_t>(c.R >> shift) * B + static_cast<std::size_t>(c.G >> shift)) * B +
+                                static_cast<std::size_t>(c.B >> shift);
+        if (d > 0)
+          fg[bin] += 1.f, nf += 1;
+        else
+          bg[bin] += 1.f, nb += 1;
+      }
+  if (nf <= 0 || nb <= 0) {
+    fg.clear(), bg.clear();
+    return;
+  }
+  for (float &v : fg)
+    v = static_cast<float>(v / nf);
+  for (float &v : bg)
+    v = static_cast<float>(v / nb);
+}
+
 } // namespace
 
 AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
@@ -420,11 +339,13 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   for (int c = 0; c < 2; ++c)
     if (!rc[c]->distortion.isNone())
       und[c] = std::make_unique<UndistortMap>(*rc[c]);
-  std::vector<ViewCamera> cams;
+  std::vector<HullCamera> cams;
   std::vector<vpImage<vpRGBa>> backgrounds;
+  std::vector<std::string> names;
   for (std::size_t k = 0; k < pass.size(); ++k) {
     const PassView &v = pass[k];
     const std::string name = v.name.empty() ? "view " + std::to_string(k) : v.name;
+    names.push_back(name);
     const vpImage<vpRGBa> *ph[2] = {&v.left, &v.right}, *bg[2] = {&v.backgroundLeft, &v.backgroundRight};
     for (int c = 0; c < 2; ++c) {
       const char *side = c ? "right" : "left";
@@ -444,163 +365,81 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
         throw Error(name + ": the target is cut by the " + std::string(side) +
                     " image's border: every view must see the whole target");
       out.shadowPx += st.shadowPx;
-      ViewCamera vc{Pinhole(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height), std::move(photo),
-                    signedDistance(mask), static_cast<int>(k)};
+      HullCamera vc;
+      vc.cam = hull::Pinhole(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height);
+      vc.photo = std::move(photo);
+      vc.signedDist = hull::signedDistance(mask);
+      vc.view = static_cast<int>(k);
       cams.push_back(std::move(vc));
       backgrounds.push_back(std::move(back));
       out.silhouettes.push_back(std::move(mask));
     }
   }
 
-  // 2. The box around the target.
-  const Vec3 centre = raysMeet(cams, out.silhouettes);
-  double radius = 0;
-  for (std::size_t i = 0; i < cams.size(); ++i) {
-    double u, v, z;
-    if (!cams[i].cam.project(centre, u, v, z))
-      throw Error("all-around model: the target's centre is behind a camera of view " + std::to_string(cams[i].view) +
-                  " (are the poses right?)");
-    double far2 = 0;
-    const vpImage<unsigned char> &m = out.silhouettes[i];
-    for (unsigned y = 0; y < m.getHeight(); ++y)
-      for (unsigned x = 0; x < m.getWidth(); ++x)
-        if (m[y][x])
-          far2 = std::max(far2, (x - u) * (x - u) + (y - v) * (y - v));
-    radius = std::max(radius, 1.3 * std::sqrt(far2) * z / std::min(cams[i].cam.px, cams[i].cam.py));
-  }
-  radius = std::max(radius, 5.0);
-  double cell = std::max(p.finestMm, 2 * radius / 256);
-  int levels = 0;
-  while ((1 << levels) * cell < 2 * radius)
-    ++levels;
-  Grid g;
-  g.cell = cell;
-  g.n = static_cast<int>(std::ceil(2 * radius / cell));
-  g.origin = {centre[0] - 0.5 * g.n * cell, centre[1] - 0.5 * g.n * cell, centre[2] - 0.5 * g.n * cell};
-  const int rootSize = 1 << levels;
-  out.cellMm = cell;
-
-  // Views that disagree: on a coarse grid, the cells each view alone carves of what the others keep.
-  std::vector<bool> used(pass.size(), true);
-  {
-    const int coarse = std::max(1, std::min(rootSize, static_cast<int>(std::lround(4.0 / cell))));
-    const int nc = (g.n + coarse - 1) / coarse;
-    const double r = 0.5 * std::sqrt(3.0) * coarse * cell;
-    std::vector<std::vector<int>> carvers; // per coarse cell: the views that carve it
-    carvers.reserve(static_cast<std::size_t>(nc) * nc * nc);
-    for (int z = 0; z < nc; ++z)
-      for (int y = 0; y < nc; ++y)
-        for (int x = 0; x < nc; ++x) {
-          const Vec3 c{g.origin[0] + (x + 0.5) * coarse * cell, g.origin[1] + (y + 0.5) * coarse * cell,
-                       g.origin[2] + (z + 0.5) * coarse * cell};
-          std::vector<int> by;
-          for (const ViewCamera &vc : cams) {
-            if (!by.empty() && by.back() == vc.view)
-              continue;
-            double u, v, zz;
-            const bool out1 = !vc.cam.project(c, u, v, zz) || vc.sd(u, v) < -r * vc.cam.px / std::max(zz - r, 1.0);
-            if (out1)
-              by.push_back(vc.view);
-            if (by.size() > 2)
-              break;
-          }
-          if (by.size() <= 2)
-            carvers.push_back(std::move(by));
-        }
-    for (std::size_t round = 0; round < pass.size() / 4; ++round) {
-      std::vector<long> alone(pass.size(), 0);
-      long kept = 0;
-      for (const std::vector<int> &by : carvers) {
-        int n = 0, who = -1;
-        for (int v : by)
-          if (used[static_cast<std::size_t>(v)]) {
-            ++n;
-            who = v;
-          }
-        if (n == 0)
-          ++kept;
-        else if (n == 1)
-          ++alone[static_cast<std::size_t>(who)];
-      }
-      std::size_t worst = 0;
-      double worstF = -1;
-      for (std::size_t v = 0; v < pass.size(); ++v)
-        if (used[v]) {
-          const double f = static_cast<double>(alone[v]) / static_cast<double>(std::max(1L, kept + alone[v]));
-          if (f > worstF) {
-            worstF = f;
-            worst = v;
-          }
-        }
-      if (worstF <= p.outlierCarveFraction)
-        break;
-      used[worst] = false;
-      out.leftOut.push_back((pass[worst].name.empty() ? "view " + std::to_string(worst) : pass[worst].name) +
-                            ": its silhouettes alone carve " + std::to_string(static_cast<int>(100 * worstF)) +
-                            " % of what the other views keep (a wrong pose or background?)");
-    }
-  }
+  // 2. The box around the target, and the views that disagree with the others.
+  Vec3 centre;
+  double radius;
+  hullBox(cams, out.silhouettes, centre, radius);
+  VisualHull g = hullGrid(centre, radius, p.finestMm);
+  out.cellMm = g.cell;
+  const int coarse = std::max(1, static_cast<int>(std::lround(4.0 / g.cell)));
+  const std::vector<bool> used =
+      agreeingViews(cams, pass.size(), g.origin, (g.n + coarse - 1) / coarse, coarse * g.cell, p.outlierCarveFraction, names, out.leftOut);
   out.nViewsUsed = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
   if (out.nViewsUsed < p.minViews)
     throw Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
                 std::to_string(p.minViews) + " are needed (" + (out.leftOut.empty() ? "" : out.leftOut[0]) + ")");
-  std::vector<const ViewCamera *> usedCams;
-  for (const ViewCamera &vc : cams)
+  std::vector<const HullCamera *> usedCams;
+  for (const HullCamera &vc : cams)
     if (used[static_cast<std::size_t>(vc.view)])
       usedCams.push_back(&vc);
 
-  // 3. Carving, coarse to fine.
-  g.occ.assign(static_cast<std::size_t>(g.n) * g.n * g.n, 0);
-  int start = 1; // a power of two, so that halving reaches single cells
-  while (start * 2 <= rootSize && start * 2 * cell <= p.coarsestMm)
-    start *= 2;
-  for (int z = 0; z < g.n; z += start)
-    for (int y = 0; y < g.n; y += start)
-      for (int x = 0; x < g.n; x += start)
-        carve(usedCams, g, x, y, z, start);
-  const long nOcc = std::count(g.occ.begin(), g.occ.end(), std::uint8_t(1));
-  if (nOcc < 8)
-    throw Error("all-around model: the views carve the hull to nothing (the poses, the rig's calibration or the "
-                "silhouettes disagree)");
-  out.hullVolumeCm3 = static_cast<double>(nOcc) * cell * cell * cell * 1e-3;
-
-  // 4. The surface and its normals.
+  // 3. Carving, coarse to fine, and the hull's surface as a mesh.
+  carveVisualHull(usedCams, g, p.coarsestMm);
+  out.hullVolumeCm3 = g.volumeCm3();
+  DepthEvidence evidence;
+  if (p.fusion.enabled) {
+    StereoRig ideal = rig; // the photos are ideal already
+    ideal.left.distortion = ideal.right.distortion = LensDistortion();
+    evidence = measureStereo(ideal, cams, out.silhouettes, backgrounds, used, p.backdropHueDeg >= 0, g, p.fusion);
+    out.fusionCarvedCells = evidence.carve(g);
+    evidence.counts(out.matchedTargetPx, out.matchedBackdropPx);
+    if (g.occupied() < 8)
+      throw Error("all-around model: the views' depths carve the hull to nothing (the rig's calibration or the poses are off)");
+  }
+  // One field in mm: the silhouettes' (px, at the pass's distance) and the depths'.
+  double mmPerPx = 1;
+  {
+    double u, v, z;
+    if (cams.front().cam.project(centre, u, v, z))
+      mmPerPx = z / cams.front().cam.px;
+  }
+  HullMesh mesh = meshField(g, [&](int x, int y, int z) {
+    const Vec3 X = g.corner(x, y, z);
+    const double f = hull::field(usedCams, X) * mmPerPx;
+    return p.fusion.enabled ? std::min(f, evidence.field(X)) : f;
+  });
   Vec3 mean{0, 0, 0};
-  std::vector<Vec3> pts, normals;
-  for (int z = 0; z < g.n; ++z)
-    for (int y = 0; y < g.n; ++y)
-      for (int x = 0; x < g.n; ++x) {
-        if (!g.occ[g.idx(x, y, z)])
-          continue;
-        const Vec3 c = g.centre(x, y, z);
-        for (int k = 0; k < 3; ++k)
-          mean[k] += c[k];
-        if (g.at(x - 1, y, z) && g.at(x + 1, y, z) && g.at(x, y - 1, z) && g.at(x, y + 1, z) && g.at(x, y, z - 1) &&
-            g.at(x, y, z + 1))
-          continue;
-        Vec3 n{0, 0, 0};
-        const int R = 2;
-        for (int dz = -R; dz <= R; ++dz)
-          for (int dy = -R; dy <= R; ++dy)
-            for (int dx = -R; dx <= R; ++dx)
-              if (g.at(x + dx, y + dy, z + dz)) {
-                n[0] -= dx;
-                n[1] -= dy;
-                n[2] -= dz;
-              }
-        pts.push_back(c);
-        normals.push_back(unit(n));
-      }
-  for (int k = 0; k < 3; ++k)
-    mean[k] /= static_cast<double>(nOcc);
+  {
+    long nOcc = 0;
+    for (int z = 0; z < g.n; ++z)
+      for (int y = 0; y < g.n; ++y)
+        for (int x = 0; x < g.n; ++x)
+          if (g.occ[g.idx(x, y, z)]) {
+            mean = hull::add(mean, g.centre(x, y, z));
+            ++nOcc;
+          }
+    mean = hull::scaled(mean, 1.0 / static_cast<double>(nOcc));
+  }
+  std::vector<Vec3> &pts = mesh.vertices;
+  const std::vector<Vec3> &normals = mesh.normals;
 
-  // 5. Which cameras see each point (the hull's depth buffer, the normal facing the camera, off the outline).
+  // 4. Which cameras see each point (the hull's depth, the normal facing the camera, off the outline).
   std::vector<std::vector<std::uint16_t>> seenBy(pts.size());
-  const int splat = std::max(1, static_cast<int>(std::ceil(0.5 * cell * rig.left.cam.get_px() / 400.0)));
   std::vector<float> zbuf;
   for (std::size_t ci = 0; ci < usedCams.size(); ++ci) {
-    const ViewCamera *vc = usedCams[ci];
-    depthBuffer(vc->cam, pts, splat, zbuf);
+    const HullCamera *vc = usedCams[ci];
+    mesh.depthMap(vc->cam, zbuf);
     for (std::size_t i = 0; i < pts.size(); ++i) {
       double u, v, z;
       if (!vc->cam.project(pts[i], u, v, z))
@@ -618,15 +457,18 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
       seenBy[i].push_back(static_cast<std::uint16_t>(ci));
     }
   }
-  // 6. Photo-consistency: the hull bulges in front of flat and concave faces (no silhouette carves
+  // 5. Photo-consistency: the hull bulges in front of flat and concave faces (no silhouette carves
   // them); where the target has texture, each point moves inward along its normal to the depth where
-  // the patches of the cameras that see it agree best.
-  if (p.refineDepthMm > 0)
-    out.nRefined = refineByPhotoConsistency(usedCams, seenBy, normals, p, cell, pts);
+  // the patches of the cameras that see it agree best. The mesh follows its vertices.
+  if (p.refineDepthMm > 0 && !p.fusion.enabled) {
+    const std::vector<Vec3> normalsBefore = normals;
+    out.nRefined = refineByPhotoConsistency(usedCams, seenBy, normalsBefore, p, g.cell, pts);
+    mesh.update();
+  }
   std::vector<std::vector<ColourSample>> samples(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
     for (std::uint16_t ci : seenBy[i]) {
-      const ViewCamera *vc = usedCams[ci];
+      const HullCamera *vc = usedCams[ci];
       double u, v, z;
       if (!vc->cam.project(pts[i], u, v, z))
         continue;
@@ -651,101 +493,36 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   }
   const float bgHue = bgHues.empty() ? 0.f : circularMeanHue(bgHues);
 
-  // Model frame: origin at the hull's centroid, axes those of the hand at the first used view.
+  // 6. The model frame: origin at the hull's centroid, axes those of the hand at the first used view.
   std::size_t first = 0;
   while (!used[first])
     ++first;
   const vpRotationMatrix fRm = pass[first].fMh.getRotationMatrix();
   out.fMm = vpHomogeneousMatrix(vpTranslationVector(mean[0] * 1e-3, mean[1] * 1e-3, mean[2] * 1e-3), fRm);
-  auto toModel = [&](const Vec3 &w) {
-    const Vec3 d = sub(w, mean);
-    return Vec3{fRm[0][0] * d[0] + fRm[1][0] * d[1] + fRm[2][0] * d[2], fRm[0][1] * d[0] + fRm[1][1] * d[1] + fRm[2][1] * d[2],
-                fRm[0][2] * d[0] + fRm[1][2] * d[1] + fRm[2][2] * d[2]};
-  };
-  auto dirToModel = [&](const Vec3 &d) {
-    return Vec3{fRm[0][0] * d[0] + fRm[1][0] * d[1] + fRm[2][0] * d[2], fRm[0][1] * d[0] + fRm[1][1] * d[1] + fRm[2][1] * d[2],
-                fRm[0][2] * d[0] + fRm[1][2] * d[1] + fRm[2][2] * d[2]};
-  };
-
-  std::vector<Vec3> mpts(pts.size()), mnorm(pts.size());
-  out.surface.resize(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    mpts[i] = toModel(pts[i]);
-    mnorm[i] = dirToModel(normals[i]);
+  double mRf[9];
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 3; ++c)
+      mRf[3 * r + c] = fRm[c][r];
+  mesh.transform(mRf, mean); // pts and normals with it: the model frame from here on
+  const std::vector<Vec3> &mpts = mesh.vertices, &mnorm = mesh.normals;
+  out.surface.resize(mpts.size());
+  for (std::size_t i = 0; i < mpts.size(); ++i) {
     SurfacePoint &s = out.surface[i];
     s.x = static_cast<float>(mpts[i][0]), s.y = static_cast<float>(mpts[i][1]), s.z = static_cast<float>(mpts[i][2]);
     s.nx = static_cast<float>(mnorm[i][0]), s.ny = static_cast<float>(mnorm[i][1]), s.nz = static_cast<float>(mnorm[i][2]);
-    s.hue = 0, s.r = s.g = s.b = 128, s.nSeen = static_cast<std::uint8_t>(std::min<std::size_t>(255, samples[i].size()));
-    s.hasHue = false, s.highlight = false;
-    std::vector<ColourSample> &sm = samples[i];
-    if (sm.empty())
-      continue;
-    // Highlights: samples much brighter and paler than the point's median.
-    std::vector<float> vs, ss;
-    for (const ColourSample &c : sm)
-      vs.push_back(c.v), ss.push_back(c.s);
-    std::nth_element(vs.begin(), vs.begin() + static_cast<long>(vs.size() / 2), vs.end());
-    std::nth_element(ss.begin(), ss.begin() + static_cast<long>(ss.size() / 2), ss.end());
-    const float mv = vs[vs.size() / 2], ms = ss[ss.size() / 2];
-    std::vector<float> hues;
-    std::vector<unsigned char> rs, gs, bs;
-    for (const ColourSample &c : sm) {
-      if (sm.size() >= 3 && c.v > mv + 0.15f && c.s < ms - 0.1f) {
-        ++out.nHighlightSamples;
-        continue;
-      }
-      rs.push_back(c.r), gs.push_back(c.g), bs.push_back(c.b);
-      if (c.s >= p.minSaturation && c.v >= p.minValue)
-        hues.push_back(c.h);
-    }
-    auto med = [](std::vector<unsigned char> &x) {
-      std::nth_element(x.begin(), x.begin() + static_cast<long>(x.size() / 2), x.end());
-      return x[x.size() / 2];
-    };
-    if (!rs.empty())
-      s.r = med(rs), s.g = med(gs), s.b = med(bs);
-    if (hues.size() * 2 < sm.size() || hues.empty())
-      continue; // mostly pale: no hue to score
-    float spread = 0;
-    s.hue = medoidHue(hues, spread);
-    if (hues.size() >= 2 && spread > p.maxHueSpreadDeg) {
-      s.highlight = true;
-      ++out.nHighlight;
-      continue;
-    }
-    s.hasHue = hueDistance(s.hue, bgHue) > p.minHueFromBackgroundDeg;
+    colourPoint(samples[i], bgHue, p, s, out);
   }
+  out.surfaceVolumeCm3 = std::fabs(mesh.volume()) * 1e-3;
 
   // Hue edges: a point with a hue whose neighbours within 3 mm include one of a hue over 30 deg away.
   const std::vector<bool> edge = p.edgeShare > 0 ? hueEdges(out.surface, 3.0, 30.0) : std::vector<bool>(out.surface.size(), false);
-  constexpr long kEdgeKey = 1L << 40; // picks on an edge sort after the others, one per cell of their own
 
   // 7. The viewpoints: a Fibonacci lattice over the sphere, those within the cap.
   const vpHomogeneousMatrix mMf = out.fMm.inverse();
   const vpHomogeneousMatrix mMh0 = mMf * pass[first].fMh;
   const Vec3 rest{1e3 * mMh0[0][3], 1e3 * mMh0[1][3], 1e3 * mMh0[2][3]};
   const double D = std::sqrt(dot(rest, rest));
-  const Vec3 restDir = unit(rest);
-  const double capCos = std::cos(p.capDeg * M_PI / 180);
-  const int nSphere = static_cast<int>(std::ceil(p.viewpoints * 2.0 / (1.0 - capCos)));
-  std::vector<Vec3> dirs{restDir};
-  {
-    // A lattice about the rest direction: its pole on restDir.
-    const Vec3 a = unit(cross(restDir, std::fabs(restDir[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
-    const Vec3 b = cross(restDir, a);
-    const double golden = M_PI * (3.0 - std::sqrt(5.0));
-    for (int i = 0; i < nSphere; ++i) {
-      const double zz = 1.0 - (i + 0.5) * 2.0 / nSphere;
-      if (zz < capCos)
-        break;
-      const double r = std::sqrt(std::max(0.0, 1 - zz * zz)), phi = golden * i;
-      const Vec3 d{zz * restDir[0] + r * (std::cos(phi) * a[0] + std::sin(phi) * b[0]),
-                   zz * restDir[1] + r * (std::cos(phi) * a[1] + std::sin(phi) * b[1]),
-                   zz * restDir[2] + r * (std::cos(phi) * a[2] + std::sin(phi) * b[2])};
-      if (dot(d, restDir) < 1 - 1e-6)
-        dirs.push_back(d);
-    }
-  }
+  const std::vector<Vec3> dirs = capDirections(unit(rest), p.capDeg, p.viewpoints);
   const vpCameraParameters &ci = rig.left.cam;
   PhotoModel &M = out.model;
   M.distanceMm = D;
@@ -755,130 +532,13 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   M.backgroundHue = bgHue;
   M.nInDropped = out.nHighlight;
   for (int k = 0; k < 3; ++k)
-    M.originInHandMm[k] = 1e3 * mMh0.inverse()[k][3];
+    M.originInHandMm[k] = 1e3 * mMh0.inverse()[static_cast<unsigned>(k)][3];
   std::vector<float> vz;
   for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
-    const Vec3 d = dirs[vi], C{D * d[0], D * d[1], D * d[2]};
-    // Look at the origin: z toward it, x across, y down-ish.
-    const Vec3 zc = unit({-d[0], -d[1], -d[2]});
-    const Vec3 up = std::fabs(zc[1]) < 0.9 ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
-    const Vec3 xc = unit(cross(up, zc)), yc = cross(zc, xc);
-    vpHomogeneousMatrix mMc;
-    for (int r = 0; r < 3; ++r) {
-      mMc[r][0] = xc[r], mMc[r][1] = yc[r], mMc[r][2] = zc[r], mMc[r][3] = C[r] * 1e-3;
-    }
-    const Pinhole cam(mMc, ci, rig.left.width, rig.left.height);
-    depthBuffer(cam, mpts, splat, zbuf);
-    // The hull's mask: every surface point splatted, closed.
-    cv::Mat mask(cam.h, cam.w, CV_8U, cv::Scalar(0));
-    for (int y = 0; y < cam.h; ++y)
-      for (int x = 0; x < cam.w; ++x)
-        if (std::isfinite(zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]))
-          mask.at<unsigned char>(y, x) = 255;
-    cv::morphologyEx(mask, mask, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
-    // S_in: visible points with a hue, one per cell of a grid over the image.
-    double area = cv::countNonZero(mask);
-    const double step = std::max(1.0, std::sqrt(area / p.nIn));
-    struct Pick
-    {
-      long key;
-      double d2;
-      std::size_t i;
-      float u, v;
-    };
-    std::vector<Pick> picks;
-    for (std::size_t i = 0; i < mpts.size(); ++i) {
-      if (!out.surface[i].hasHue)
-        continue;
-      double u, v, z;
-      if (!cam.project(mpts[i], u, v, z))
-        continue;
-      const int ui = static_cast<int>(std::lround(u)), vv = static_cast<int>(std::lround(v));
-      if (ui < 0 || vv < 0 || ui >= cam.w || vv >= cam.h)
-        continue;
-      if (z > zbuf[static_cast<std::size_t>(vv) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(ui)] + p.visibilityTolMm)
-        continue;
-      if (dot(unit(sub(C, mpts[i])), mnorm[i]) < 0.2)
-        continue;
-      const long cx = static_cast<long>(std::floor(u / step)), cy = static_cast<long>(std::floor(v / step));
-      const double ddx = u - (static_cast<double>(cx) + 0.5) * step, ddy = v - (static_cast<double>(cy) + 0.5) * step;
-      picks.push_back({cy * 100000 + cx + (p.edgeShare > 0 && edge[i] ? kEdgeKey : 0), ddx * ddx + ddy * ddy, i, static_cast<float>(u), static_cast<float>(v)});
-    }
-    std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
-    ModelView view;
-    for (int k = 0; k < 3; ++k)
-      view.cameraMm[k] = C[k];
-    // One point per cell of each kind (on a hue edge, elsewhere); edgeShare of nIn from the edges,
-    // the rest elsewhere, each thinned evenly.
-    std::vector<ModelPoint> onEdge, plain;
-    for (std::size_t j = 0; j < picks.size(); ++j) {
-      if (j > 0 && picks[j].key == picks[j - 1].key)
-        continue;
-      const SurfacePoint &s = out.surface[picks[j].i];
-      (picks[j].key >= kEdgeKey ? onEdge : plain).push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v});
-    }
-    auto thin = [](std::vector<ModelPoint> &v, std::size_t n) {
-      if (v.size() <= n)
-        return;
-      std::vector<ModelPoint> t;
-      const double r = static_cast<double>(v.size()) / static_cast<double>(n);
-      for (std::size_t j = 0; j < n; ++j)
-        t.push_back(v[static_cast<std::size_t>(static_cast<double>(j) * r)]);
-      v.swap(t);
-    };
-    const std::size_t nEdge = std::min(onEdge.size(), static_cast<std::size_t>(std::lround(p.edgeShare * p.nIn)));
-    thin(onEdge, nEdge);
-    thin(plain, static_cast<std::size_t>(p.nIn) - onEdge.size());
-    view.inner = std::move(onEdge);
-    view.inner.insert(view.inner.end(), plain.begin(), plain.end());
-    // S_out: along the outline, offset outward, at the outline's depth.
-    std::vector<std::vector<cv::Point>> contours;
-    cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
-    double total = 0;
-    for (const auto &c : contours)
-      total += static_cast<double>(c.size());
-    const int perRow = std::max(1, p.nOut / p.stripRows);
-    for (const auto &c : contours) {
-      const int n = static_cast<int>(c.size());
-      if (n < 8)
-        continue;
-      const int count = std::max(1, static_cast<int>(std::lround(perRow * n / total)));
-      for (int j = 0; j < count; ++j) {
-        const int a = static_cast<int>(static_cast<long>(j) * n / count);
-        const cv::Point P = c[static_cast<std::size_t>(a)], A = c[static_cast<std::size_t>((a + n - 3) % n)],
-                        B = c[static_cast<std::size_t>((a + 3) % n)];
-        double nx = B.y - A.y, ny = -(B.x - A.x);
-        const double nn = std::hypot(nx, ny);
-        if (nn <= 0)
-          continue;
-        nx /= nn, ny /= nn;
-        if (cv::pointPolygonTest(c, cv::Point2f(static_cast<float>(P.x + 2 * nx), static_cast<float>(P.y + 2 * ny)), false) > 0)
-          nx = -nx, ny = -ny;
-        // The outline's depth: the nearest depth under the outline pixel and its neighbours.
-        float depth = std::numeric_limits<float>::infinity();
-        for (int dv = -2; dv <= 2; ++dv)
-          for (int du = -2; du <= 2; ++du) {
-            const int x = P.x + du, y = P.y + dv;
-            if (x >= 0 && y >= 0 && x < cam.w && y < cam.h)
-              depth = std::min(depth, zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]);
-          }
-        if (!std::isfinite(depth))
-          continue;
-        for (int row = 0; row < p.stripRows; ++row) {
-          const double off = p.stripGapPx + (p.stripRows > 1 ? p.stripWidthPx * row / (p.stripRows - 1) : 0.0);
-          const double u = P.x + off * nx, v = P.y + off * ny;
-          const int ui = static_cast<int>(std::lround(u)), vv = static_cast<int>(std::lround(v));
-          if (ui >= 0 && vv >= 0 && ui < cam.w && vv < cam.h && mask.at<unsigned char>(vv, ui))
-            continue; // in a concavity, on the target
-          const double x = (u - cam.u0) / cam.px * depth, y = (v - cam.v0) / cam.py * depth;
-          const Vec3 w{xc[0] * x + yc[0] * y + zc[0] * depth + C[0], xc[1] * x + yc[1] * y + zc[1] * depth + C[1],
-                       xc[2] * x + yc[2] * y + zc[2] * depth + C[2]};
-          view.outer.push_back({static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]), bgHue,
-                                static_cast<float>(u), static_cast<float>(v)});
-        }
-      }
-    }
-    if (view.inner.size() < 8 || view.outer.size() < 8) {
+    const Vec3 C = hull::scaled(dirs[vi], D);
+    const hull::Pinhole cam = hull::Pinhole::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
+    ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, zbuf);
+    if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
       if (vi == 0)
         throw Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +
                     std::to_string(view.inner.size()) + "): the target's colours are too close to the background's");
@@ -887,13 +547,14 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
     if (vi == 0) {
       M.inner = std::move(view.inner);
       M.outer = std::move(view.outer);
+      M.contour = std::move(view.contour);
       for (int k = 0; k < 3; ++k)
         M.cameraMm[k] = view.cameraMm[k];
       std::vector<float> hs;
+      const vpHomogeneousMatrix hM0m = mMh0.inverse();
       for (const ModelPoint &q : M.inner) {
         hs.push_back(q.hue);
-        vz.push_back(static_cast<float>(mMh0.inverse()[2][0] * q.x + mMh0.inverse()[2][1] * q.y + mMh0.inverse()[2][2] * q.z +
-                                        1e3 * mMh0.inverse()[2][3]));
+        vz.push_back(static_cast<float>(hM0m[2][0] * q.x + hM0m[2][1] * q.y + hM0m[2][2] * q.z + 1e3 * hM0m[2][3]));
       }
       M.targetHue = circularMeanHue(hs);
     } else
@@ -903,6 +564,10 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
     M.depthRangeMm[0] = *std::min_element(vz.begin(), vz.end());
     M.depthRangeMm[1] = *std::max_element(vz.begin(), vz.end());
   }
+  // 8. The colours of the target and around it, for the precise stage's posteriors.
+  colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);
+  out.mesh = std::move(mesh);
+  M.hasColours = true;
   M.validate("the all-around model");
   out.buildS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
@@ -911,7 +576,7 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
 vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
                             const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask)
 {
-  const Pinhole pin(mMc, cam, w, h);
+  const hull::Pinhole pin(mMc, cam, w, h);
   vpImage<vpRGBa> out(h, w, vpRGBa(0, 0, 0));
   std::vector<float> zbuf(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity());
   for (const SurfacePoint &s : surface) {

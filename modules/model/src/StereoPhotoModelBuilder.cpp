@@ -10,6 +10,7 @@
 #include "pm/core/Error.h"
 #include "pm/core/UndistortMap.h"
 #include "pm/core/Hue.h"
+#include "pm/model/StereoDepth.h"
 
 namespace pm {
 
@@ -36,113 +37,10 @@ void StereoModelParams::validate() const
 
 namespace {
 
-cv::Mat toBgr(const vpImage<vpRGBa> &im)
-{
-  cv::Mat m(static_cast<int>(im.getHeight()), static_cast<int>(im.getWidth()), CV_8UC3);
-  for (int v = 0; v < m.rows; ++v)
-    for (int u = 0; u < m.cols; ++u) {
-      const vpRGBa &p = im[static_cast<unsigned>(v)][static_cast<unsigned>(u)];
-      m.at<cv::Vec3b>(v, u) = cv::Vec3b(p.B, p.G, p.R);
-    }
-  return m;
-}
-
-cv::Matx33d intrinsics(const vpCameraParameters &c)
-{
-  return cv::Matx33d(c.get_px(), 0, c.get_u0(), 0, c.get_py(), c.get_v0(), 0, 0, 1);
-}
-
-//! The rectified geometry of the rig (pinhole cameras) and the maps of both views.
-struct Rectification
-{
-  cv::Matx33d K[2];
-  cv::Mat R1, R2, P1, P2, Q, map[2][2];
-  double f = 0, cx1 = 0, cx2 = 0, cy = 0, Tx = 0; // Tx: the right camera's x in the rectified left frame (mm)
-  cv::Size size;
-
-  Rectification(const StereoRig &rig)
-  {
-    size = cv::Size(static_cast<int>(rig.left.width), static_cast<int>(rig.left.height));
-    K[0] = intrinsics(rig.left.cam);
-    K[1] = intrinsics(rig.right.cam);
-    const vpHomogeneousMatrix cRMcL = rig.cLMcR().inverse(); // X_R = R X_L + T (OpenCV's convention)
-    cv::Matx33d R;
-    cv::Vec3d T;
-    for (unsigned i = 0; i < 3; ++i) {
-      for (unsigned j = 0; j < 3; ++j)
-        R(static_cast<int>(i), static_cast<int>(j)) = cRMcL[i][j];
-      T[static_cast<int>(i)] = cRMcL[i][3] * 1e3;
-    }
-    const cv::Mat noDistortion = cv::Mat::zeros(1, 5, CV_64F);
-    // Each view keeps its own principal point (no CALIB_ZERO_DISPARITY): a toed-in rig's target
-    // stays in both rectified images; alpha 0 keeps only valid pixels at the original size.
-    cv::stereoRectify(K[0], noDistortion, K[1], noDistortion, size, R, T, R1, R2, P1, P2, Q, 0, 0, size);
-    for (int k = 0; k < 2; ++k)
-      cv::initUndistortRectifyMap(K[k], noDistortion, k ? R2 : R1, k ? P2 : P1, size, CV_32FC1, map[k][0], map[k][1]);
-    f = P1.at<double>(0, 0);
-    cx1 = P1.at<double>(0, 2);
-    cx2 = P2.at<double>(0, 2);
-    cy = P1.at<double>(1, 2);
-    Tx = P2.at<double>(0, 3) / P2.at<double>(0, 0);
-  }
-  cv::Mat remap(const cv::Mat &im, int k, int interpolation = cv::INTER_LINEAR) const
-  {
-    cv::Mat out;
-    cv::remap(im, out, map[k][0], map[k][1], interpolation, cv::BORDER_CONSTANT);
-    return out;
-  }
-  //! Disparity (px) of a point at depth Z (mm) along the rectified axis, and back.
-  double disparityAt(double Z) const { return -f * Tx / Z + cx1 - cx2; }
-  double depthAt(double d) const { return -f * Tx / (d - (cx1 - cx2)); }
-  //! Where original left pixels land in the rectified left image.
-  std::vector<cv::Point2f> rectifiedLeft(const std::vector<cv::Point2f> &pts) const
-  {
-    std::vector<cv::Point2f> out;
-    if (!pts.empty())
-      cv::undistortPoints(pts, out, K[0], cv::noArray(), R1, P1);
-    return out;
-  }
-};
-
-//! SGBM disparity (px, float; NaN where invalid) of a rectified pair over [dMin, dMin + n).
-cv::Mat disparity(const cv::Mat &L, const cv::Mat &R, int dMin, int n, const StereoModelParams &p)
-{
-  const int cn = L.channels(), b = p.blockPx;
-  cv::Ptr<cv::StereoSGBM> sgbm = cv::StereoSGBM::create(dMin, n, b, 8 * cn * b * b, 32 * cn * b * b, 1, 31,
-                                                        p.uniquenessPercent, 100, 2, cv::StereoSGBM::MODE_HH);
-  // SGBM leaves the first minDisparity + numDisparities columns without a match, and a toed-in rig's
-  // disparities are large: both images are padded on the left (and on the right for negative
-  // disparities) so that every pixel of the original images can be matched over the whole range.
-  const int padL = std::max(0, dMin + n), padR = std::max(0, -dMin);
-  cv::Mat Lp, Rp, d16p;
-  cv::copyMakeBorder(L, Lp, 0, 0, padL, padR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
-  cv::copyMakeBorder(R, Rp, 0, 0, padL, padR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
-  sgbm->compute(Lp, Rp, d16p);
-  const cv::Mat d16 = d16p.colRange(padL, padL + L.cols);
-  cv::Mat d(d16.size(), CV_32F);
-  const short invalid = static_cast<short>((dMin - 1) * 16);
-  for (int v = 0; v < d.rows; ++v)
-    for (int u = 0; u < d.cols; ++u) {
-      const short s = d16.at<short>(v, u);
-      d.at<float>(v, u) = s <= invalid ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(s) / 16.f;
-    }
-  return d;
-}
-
-//! Bilinear disparity at (x, y) when its four neighbours are valid and agree within \e spread; NaN otherwise.
-float sampleDisparity(const cv::Mat &d, float x, float y, double spread)
-{
-  const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
-  if (i < 0 || j < 0 || i + 1 >= d.cols || j + 1 >= d.rows)
-    return std::numeric_limits<float>::quiet_NaN();
-  const float a = d.at<float>(j, i), b = d.at<float>(j, i + 1), c = d.at<float>(j + 1, i), e = d.at<float>(j + 1, i + 1);
-  if (!(std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(e)))
-    return std::numeric_limits<float>::quiet_NaN();
-  if (std::max({a, b, c, e}) - std::min({a, b, c, e}) > spread)
-    return std::numeric_limits<float>::quiet_NaN();
-  const float fx = x - static_cast<float>(i), fy = y - static_cast<float>(j);
-  return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + e * fx) * fy;
-}
+using stereo::Rectification;
+using stereo::disparity;
+using stereo::sampleDisparity;
+using stereo::toBgr;
 
 double median(std::vector<double> v)
 {
@@ -396,7 +294,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
     const int n = std::max(16, ((static_cast<int>(std::ceil(std::fabs(dNear - dFar))) + 4 + 15) / 16) * 16);
     StereoModelParams coarse = params;
     coarse.blockPx = 5;
-    const cv::Mat d = disparity(a, b, dMin, n, coarse);
+    const cv::Mat d = disparity(a, b, dMin, n, coarse.blockPx, coarse.uniquenessPercent);
     cv::Mat mask;
     cv::resize(rRegionL, mask, d.size(), 0, 0, cv::INTER_NEAREST);
     cv::dilate(mask, mask, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(9, 9)));
@@ -421,7 +319,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   const double dNear = rect.disparityAt(std::max(50.0, backdrop - params.maxReliefMm));
   const int dMin = static_cast<int>(std::floor(std::min(dFar, dNear)));
   const int n = std::max(16, ((static_cast<int>(std::ceil(std::fabs(dNear - dFar))) + 15) / 16) * 16);
-  const cv::Mat disp = disparity(rect.remap(toBgr(L), 0), rect.remap(toBgr(R), 1), dMin, n, params);
+  const cv::Mat disp = disparity(rect.remap(toBgr(L), 0), rect.remap(toBgr(R), 1), dMin, n, params.blockPx, params.uniquenessPercent);
 
   // A left pixel's position in the hand frame (mm) from its rectified disparity.
   const vpHomogeneousMatrix hMcL = rig.left.hMc;

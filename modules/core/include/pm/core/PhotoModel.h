@@ -42,17 +42,46 @@ struct ModelPoint
   /*! \var ModelPoint::u
       \brief column where it was sampled in the photo (px) */
   float u = 0, v = 0;        //!< row where it was sampled in the photo (px)
+  /*! \var ModelPoint::r
+      \brief the surface's red there (S_in of a model with colours, PhotoModel::hasColours)
+      \var ModelPoint::g
+      \brief its green */
+  unsigned char r = 0, g = 0, b = 0; //!< its blue
+};
+
+/*!
+  One point of a view's outline, as the precise stage reads it (pm/precise/PreciseStage.h): where the
+  target's outline seen from the view's camera passes, on the surface (the contour generator), the
+  outline's outward normal (perpendicular to the viewing direction), and how far the target and the
+  background stretch from it along that normal in the view's image, for the correspondence lines.
+*/
+struct ContourPoint
+{
+  /*! \var ContourPoint::x
+      \brief x of the point on the outline, in the model frame (mm)
+      \var ContourPoint::y
+      \brief y of the point (mm) */
+  float x = 0, y = 0, z = 0;    //!< z of the point (mm)
+  /*! \var ContourPoint::nx
+      \brief x of the outline's outward unit normal, in the model frame
+      \var ContourPoint::ny
+      \brief y of the normal */
+  float nx = 0, ny = 0, nz = 0; //!< z of the normal
+  float insideMm = 0;           //!< along -normal, how far the target stays unbroken in the view (mm, at the point's depth)
+  float outsideMm = 0;          //!< along +normal, how far the background stays unbroken (mm)
 };
 
 /*!
   One further view of a stereo model: S_in and S_out sampled in the photo of one camera, in the
   model frame (mm), and where that camera's centre was in the model frame when it took the photo.
+  An all-around model's views also hold their outline (the precise stage's contour points).
 */
 struct ModelView
 {
   double cameraMm[3] = {0, 0, 0}; //!< the camera's centre in the model frame (mm)
   std::vector<ModelPoint> inner;  //!< S_in of this view (u, v: pixels of its own photo)
   std::vector<ModelPoint> outer;  //!< S_out of this view
+  std::vector<ContourPoint> contour; //!< the outline seen from this view (empty: the model has none)
 };
 
 /*!
@@ -95,6 +124,20 @@ struct PhotoModel
   // Multi-view stereo models only (no views: one view, the points above, for both cameras):
   double cameraMm[3] = {0, 0, 0};       //!< the centre of the camera that sampled S_in and S_out, in the model frame (mm)
   std::vector<ModelView> views;         //!< further views; each camera is scored with the view nearest its direction
+  // All-around models (version 5) only: what the precise stage needs.
+  std::vector<ContourPoint> contour;    //!< the outline seen from cameraMm (the model's own view), as ModelView::contour
+  /*!
+    Colour histograms of the target (its surface in the photos) and of what surrounded it (the
+    backgrounds next to its outline): kColourBins^3 bins over RGB (red slowest), each summing to 1,
+    or empty. The precise stage starts its colour posteriors from them (ColourHistograms.h).
+  */
+  std::vector<float> foregroundHistogram; //!< the target's colour histogram (see above)
+  std::vector<float> backgroundHistogram; //!< the surroundings' colour histogram
+  static constexpr int kColourBins = 16; //!< bins per colour channel of the histograms
+  bool hasColours = false;              //!< the S_in points carry the surface's colour (ModelPoint::r, g, b), for the precise stage's interior term
+
+  //! True when every view (the model's own included) carries its outline: the precise stage can run.
+  bool hasContours() const;
 
   //! Number of points of S_in and S_out (those of the further views not counted).
   std::size_t size() const { return inner.size() + outer.size(); }

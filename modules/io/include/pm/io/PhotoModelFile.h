@@ -50,6 +50,20 @@
         "views": [ { "camera_mm": [x, y, z], "s_in": [i, ...], "s_out": [[x, y, z], ...] }, ... ]
       }
 
+  An all-around model with what the precise stage needs (its outlines and colours, PhotoModel::
+  hasContours() and hasColours) is written as version 5: version 4, each surface point with its
+  colour, each view with its outline (ContourPoint: positions to 0.01 mm, normals to 1e-4), and the
+  colour histograms of the target and around it (non-zero bins only):
+
+      {
+        "format": "visp-photomodel-model", "version": 5,
+        ... as version 4, and:
+        "surface": [[x, y, z, hue, r, g, b], ...],
+        "contour": [[x, y, z, nx, ny, nz, inside_mm, outside_mm], ...],   // the model's own view
+        "views": [ { ... as version 4, "contour": [...] }, ... ],
+        "colour_histograms": { "bins_per_channel": 16, "foreground": [[bin, p], ...], "background": [...] }
+      }
+
   A model with every z = 0 is written as version 1, byte for byte as before; version 1 files
   load as flat models and behave exactly as they always did.
 */

@@ -46,7 +46,9 @@
 #include "pm/core/PhotoModel.h"
 #include "pm/core/StereoRig.h"
 #include "pm/model/PassView.h"
+#include "pm/model/HullMesh.h"
 #include "pm/model/Silhouette.h"
+#include "pm/model/SurfaceFusion.h"
 
 namespace pm {
 
@@ -60,7 +62,8 @@ struct AllAroundParams
   double finestMm = 1;              //!< last cell size (mm; raised for large targets: at most 256 cells across)
   double outlierCarveFraction = 0.4;//!< a view carving more than this of what the others keep is left out
   double visibilityTolMm = 3;       //!< a surface point is seen when within this of the depth buffer (mm)
-  double refineDepthMm = 12;        //!< photo-consistency: a point may move this far inward (mm; 0: the hull as carved)
+  FusionParams fusion;              //!< the surface from the views' stereo pairs and the backdrop (SurfaceFusion.h)
+  double refineDepthMm = 12;        //!< without fusion, photo-consistency: a point may move this far inward (mm; 0: the hull as carved)
   double refineMinScore = 0.7;      //!< ... to a depth where the cameras' 5x5 patches correlate this well with their mean
   double refineMinGain = 0.1;       //!< ... and this much better than at the hull
   double minSaturation = 0.15;      //!< colour samples paler than this have no hue
@@ -70,11 +73,13 @@ struct AllAroundParams
   int viewpoints = 240;             //!< K, the viewpoints within the cap
   double capDeg = 75;               //!< viewpoints within this of the first view's direction
   int nIn = 400;                    //!< S_in points per viewpoint (fewer where fewer are seen)
+  double inMinInsidePx = 2;         //!< S_in points lie at least this far inside the viewpoint's outline (px)
   double edgeShare = 0;             //!< of them at most this share on hue edges (a hue over 30 deg away within 3 mm; measured: README)
   int nOut = 160;                   //!< S_out points per viewpoint
-  double stripGapPx = 3;            //!< S_out: the first row this far outside the outline (px)
+  double stripGapPx = 5;            //!< S_out: the first row this far outside the outline (px; the hull's exact one, HullMesh.h)
   double stripWidthPx = 8;          //!< ... the last this much farther
   int stripRows = 2;                //!< rows of S_out points across the strip
+  int nContour = 200;               //!< outline points per viewpoint, for the precise stage (ContourPoint)
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
@@ -109,14 +114,19 @@ struct AllAroundBuild
 {
   PhotoModel model;                 //!< views: the K viewpoints (view 0 in inner/outer)
   vpHomogeneousMatrix fMm;          //!< the model frame in the world frame of the poses (metres)
-  std::vector<SurfacePoint> surface; //!< the hull's surface points, in the model frame
+  std::vector<SurfacePoint> surface; //!< the surface's points (the mesh's vertices), in the model frame
+  HullMesh mesh;                    //!< the surface as triangles, in the model frame (vertex i is surface point i)
   std::vector<vpImage<unsigned char>> silhouettes; //!< left and right of each view: 2k, 2k + 1
   std::vector<std::string> leftOut; //!< views left out (their silhouettes disagree), with why
   //! Views in the pass.
   std::size_t nViews = 0, nViewsUsed = 0; //!< views used (not left out)
   double hullVolumeCm3 = 0;         //!< volume of the carved hull (cm^3)
+  double surfaceVolumeCm3 = 0;      //!< volume inside the final surface (the hull's mesh, refined; cm^3)
   double cellMm = 0;                //!< the finest cell size used
-  int nRefined = 0;                 //!< surface points moved inward by photo-consistency
+  int nRefined = 0;                 //!< surface points moved inward by photo-consistency (fusion off)
+  long fusionCarvedCells = 0;       //!< hull cells the views' depths put outside
+  long matchedTargetPx = 0;         //!< pixels of the target given a depth by stereo, over the views
+  long matchedBackdropPx = 0;       //!< pixels of the backdrop given a depth, over the views
   int nHighlight = 0;               //!< surface points marked (views disagree)
   int nHighlightSamples = 0;        //!< colour samples left out as highlights
   long shadowPx = 0;                //!< changed pixels taken for shadow over all silhouettes

@@ -1,0 +1,54 @@
+#pragma once
+/*!
+  \file ViewpointModel.h
+  One viewpoint of the all-around model (AllAroundModelBuilder.h, the last step): a camera at the
+  pass's distance looking at the model's origin from a direction of the cap, and what the tracker
+  needs from there:
+  - S_in: the surface points with a hue it sees (a depth buffer of the surface), at most nIn of
+    them spread over the image;
+  - the outline (ContourPoint, for the precise stage): the mesh's edges between a face turned
+    toward the camera and one turned away that lie on the silhouette's boundary, sampled evenly
+    along their projection; each point on the surface, exactly where the mesh's outline passes,
+    with the outline's outward normal and how far target and background reach along it;
+  - S_out: points offset outward from that outline by the strip (stripGapPx to stripGapPx +
+    stripWidthPx), at the outline's depth, where the strip falls off the target.
+
+      std::vector<float> zbuf;
+      const pm::ModelView v = pm::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, zbuf);
+*/
+#include <vector>
+
+#include "pm/core/PhotoModel.h"
+#include "pm/model/HullGeometry.h"
+#include "pm/model/HullMesh.h"
+
+namespace pm {
+
+struct AllAroundParams;
+struct SurfacePoint;
+
+/*!
+  The hull's depth buffer seen by \e cam: every point of \e pts splatted over a square of \e radius
+  pixels (nearest depth kept, +inf where none falls), into \e zbuf (w x h, row-major).
+*/
+void depthBuffer(const hull::Pinhole &cam, const std::vector<hull::Vec3> &pts, int radius, std::vector<float> &zbuf);
+
+/*!
+  The viewpoint of camera \e cam (in the model frame; Pinhole::lookingAtOrigin) of a model whose
+  surface is \e surface (model frame) and \e mesh (the same surface as triangles, model frame), its
+  surface points also given as \e pts: S_in, S_out and the outline (see ViewpointModel.h). \e onEdge
+  marks the surface points on a hue edge (AllAroundParams::edgeShare); \e zbuf is scratch. S_out
+  points carry \e bgHue. The view's cameraMm is the camera's centre.
+*/
+ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
+                          const HullMesh &mesh, const std::vector<bool> &onEdge, float bgHue, const AllAroundParams &p,
+                          std::vector<float> &zbuf);
+
+/*!
+  The outline of \e mesh seen by \e cam (see ViewpointModel.h): \e n points evenly along the contour
+  edges that border the background in \e mask (the mesh's coverage, HullMesh::depthMap: non-zero on
+  it). For the precise stage's lines and for S_out.
+*/
+std::vector<ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n);
+
+} // namespace pm

@@ -1,0 +1,122 @@
+#include "pm/model/HullMesh.h"
+
+#include <algorithm>
+#include <limits>
+#include <unordered_map>
+
+namespace pm {
+
+using hull::Vec3;
+
+void HullMesh::update()
+{
+  faceNormals.assign(triangles.size(), Vec3{0, 0, 0});
+  normals.assign(vertices.size(), Vec3{0, 0, 0});
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const auto &t = triangles[f];
+    const Vec3 c = hull::cross(hull::sub(vertices[t[1]], vertices[t[0]]), hull::sub(vertices[t[2]], vertices[t[0]]));
+    faceNormals[f] = hull::unit(c);
+    for (std::uint32_t v : t)
+      normals[v] = hull::add(normals[v], c); // area-weighted
+  }
+  for (Vec3 &n : normals)
+    n = hull::unit(n);
+  edges.clear();
+  std::unordered_map<std::uint64_t, std::size_t> index;
+  index.reserve(triangles.size() * 2);
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = triangles[f][static_cast<std::size_t>(k)], b = triangles[f][static_cast<std::size_t>((k + 1) % 3)];
+      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+      const auto it = index.find(key);
+      if (it == index.end()) {
+        index.emplace(key, edges.size());
+        edges.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(f), -1});
+      } else if (edges[it->second].f1 < 0) {
+        edges[it->second].f1 = static_cast<std::int32_t>(f);
+      }
+    }
+}
+
+void HullMesh::transform(const double R[9], const Vec3 &from)
+{
+  auto rot = [R](const Vec3 &d) {
+    return Vec3{R[0] * d[0] + R[1] * d[1] + R[2] * d[2], R[3] * d[0] + R[4] * d[1] + R[5] * d[2], R[6] * d[0] + R[7] * d[1] + R[8] * d[2]};
+  };
+  for (Vec3 &v : vertices)
+    v = rot(hull::sub(v, from));
+  for (Vec3 &nn : normals)
+    nn = rot(nn);
+  for (Vec3 &nn : faceNormals)
+    nn = rot(nn);
+}
+
+void HullMesh::smooth(int iterations, double lambda, double mu)
+{
+  std::vector<Vec3> sum(vertices.size());
+  std::vector<int> count(vertices.size());
+  auto step = [&](double f) {
+    std::fill(sum.begin(), sum.end(), Vec3{0, 0, 0});
+    std::fill(count.begin(), count.end(), 0);
+    for (const MeshEdge &e : edges) {
+      sum[e.a] = hull::add(sum[e.a], vertices[e.b]);
+      sum[e.b] = hull::add(sum[e.b], vertices[e.a]);
+      ++count[e.a], ++count[e.b];
+    }
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      if (count[i] > 0)
+        vertices[i] = hull::add(vertices[i], hull::scaled(hull::sub(hull::scaled(sum[i], 1.0 / count[i]), vertices[i]), f));
+  };
+  for (int k = 0; k < iterations; ++k) {
+    step(lambda);
+    step(mu);
+  }
+  update();
+}
+
+double HullMesh::volume() const
+{
+  double v = 0;
+  for (const auto &t : triangles)
+    v += hull::dot(vertices[t[0]], hull::cross(vertices[t[1]], vertices[t[2]]));
+  return v / 6.0;
+}
+
+void HullMesh::depthMap(const hull::Pinhole &cam, std::vector<float> &zbuf) const
+{
+  zbuf.assign(static_cast<std::size_t>(cam.w) * static_cast<std::size_t>(cam.h), std::numeric_limits<float>::infinity());
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    double u[3], v[3], z[3];
+    bool ok = true;
+    for (int k = 0; k < 3 && ok; ++k)
+      ok = cam.project(vertices[triangles[f][static_cast<std::size_t>(k)]], u[k], v[k], z[k]);
+    if (!ok)
+      continue;
+    const double area = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
+    if (std::fabs(area) < 1e-12)
+      continue;
+    const int x0 = std::max(0, static_cast<int>(std::ceil(std::min({u[0], u[1], u[2]})))),
+              x1 = std::min(cam.w - 1, static_cast<int>(std::floor(std::max({u[0], u[1], u[2]})))),
+              y0 = std::max(0, static_cast<int>(std::ceil(std::min({v[0], v[1], v[2]})))),
+              y1 = std::min(cam.h - 1, static_cast<int>(std::floor(std::max({v[0], v[1], v[2]}))));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        // Barycentric weights of the pixel centre (x, y); inside when all of one sign as the area's.
+        const double w0 = ((u[1] - x) * (v[2] - y) - (u[2] - x) * (v[1] - y)) / area;
+        const double w1 = ((u[2] - x) * (v[0] - y) - (u[0] - x) * (v[2] - y)) / area;
+        const double w2 = 1.0 - w0 - w1;
+        if (w0 < 0 || w1 < 0 || w2 < 0)
+          continue;
+        const float d = static_cast<float>(1.0 / (w0 / z[0] + w1 / z[1] + w2 / z[2])); // perspective-correct depth
+        float &b = zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
+        b = std::min(b, d);
+      }
+  }
+}
+
+HullMesh meshVisualHull(const VisualHull &g, const std::vector<const hull::HullCamera *> &cams)
+{
+  return meshField(g, [&](int x, int y, int z) { return hull::field(cams, g.corner(x, y, z)); });
+}
+
+} // namespace pm

@@ -1,0 +1,255 @@
+#include "pm/model/ViewpointModel.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <opencv2/imgproc.hpp>
+
+#include "pm/model/AllAroundModelBuilder.h"
+
+namespace pm {
+
+using hull::Vec3;
+
+void depthBuffer(const hull::Pinhole &cam, const std::vector<Vec3> &pts, int radius, std::vector<float> &zbuf)
+{
+  zbuf.assign(static_cast<std::size_t>(cam.w) * static_cast<std::size_t>(cam.h), std::numeric_limits<float>::infinity());
+  for (const Vec3 &p : pts) {
+    double u, v, z;
+    if (!cam.project(p, u, v, z))
+      continue;
+    const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+    for (int dv = -radius; dv <= radius; ++dv)
+      for (int du = -radius; du <= radius; ++du) {
+        const int x = ui + du, y = vi + dv;
+        if (x < 0 || y < 0 || x >= cam.w || y >= cam.h)
+          continue;
+        float &d = zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
+        d = std::min(d, static_cast<float>(z));
+      }
+  }
+}
+
+std::vector<ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n)
+{
+  auto inMask = [&](double u, double v) {
+    const int x = static_cast<int>(std::lround(u)), y = static_cast<int>(std::lround(v));
+    return x >= 0 && y >= 0 && x < cam.w && y < cam.h && mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
+  };
+  struct Segment
+  {
+    Vec3 a, b;
+    double ua, va, ub, vb, nu, nv, len;
+  };
+  std::vector<Segment> segs;
+  double total = 0;
+  for (const MeshEdge &e : mesh.edges) {
+    if (e.f1 < 0)
+      continue;
+    const bool fa = mesh.facing(static_cast<std::size_t>(e.f0), cam.centre), fb = mesh.facing(static_cast<std::size_t>(e.f1), cam.centre);
+    if (fa == fb)
+      continue;
+    const std::size_t front = static_cast<std::size_t>(fa ? e.f0 : e.f1);
+    Segment s;
+    s.a = mesh.vertices[e.a], s.b = mesh.vertices[e.b];
+    double za, zb, u3, v3, z3;
+    if (!cam.project(s.a, s.ua, s.va, za) || !cam.project(s.b, s.ub, s.vb, zb))
+      continue;
+    std::uint32_t third = mesh.triangles[front][0];
+    for (std::uint32_t v : mesh.triangles[front])
+      if (v != e.a && v != e.b)
+        third = v;
+    if (!cam.project(mesh.vertices[third], u3, v3, z3))
+      continue;
+    s.len = std::hypot(s.ub - s.ua, s.vb - s.va);
+    if (!(s.len > 1e-6))
+      continue;
+    s.nu = (s.vb - s.va) / s.len, s.nv = -(s.ub - s.ua) / s.len;
+    const double mu = 0.5 * (s.ua + s.ub), mv = 0.5 * (s.va + s.vb);
+    if (s.nu * (mu - u3) + s.nv * (mv - v3) < 0)
+      s.nu = -s.nu, s.nv = -s.nv;
+    // On the silhouette's boundary: the background just outside.
+    if (inMask(mu + 1.5 * s.nu, mv + 1.5 * s.nv) || !inMask(mu - 1.0 * s.nu, mv - 1.0 * s.nv))
+      continue;
+    segs.push_back(s);
+    total += s.len;
+  }
+  std::vector<ContourPoint> out;
+  if (segs.empty() || n <= 0)
+    return out;
+  // The outline's normal from the coverage, blurred: a contour edge of the mesh zigzags across its
+  // triangles, its own perpendicular is not the outline's.
+  cv::Mat cover(cam.h, cam.w, CV_32F);
+  for (int y = 0; y < cam.h; ++y)
+    for (int x = 0; x < cam.w; ++x)
+      cover.at<float>(y, x) = mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)] ? 1.f : 0.f;
+  cv::GaussianBlur(cover, cover, cv::Size(0, 0), 1.5);
+  auto coverAt = [&](double u, double v) {
+    const int x = std::clamp(static_cast<int>(std::floor(u)), 0, cam.w - 2), y = std::clamp(static_cast<int>(std::floor(v)), 0, cam.h - 2);
+    const double fu = std::clamp(u - x, 0.0, 1.0), fv = std::clamp(v - y, 0.0, 1.0);
+    return (1 - fv) * ((1 - fu) * cover.at<float>(y, x) + fu * cover.at<float>(y, x + 1)) +
+           fv * ((1 - fu) * cover.at<float>(y + 1, x) + fu * cover.at<float>(y + 1, x + 1));
+  };
+  const double step = total / n;
+  double next = 0.5 * step, walked = 0;
+  auto run = [&](double u, double v, double nu, double nv, double from, bool wantInside) {
+    int k = 0;
+    for (; k < 60; ++k)
+      if (inMask(u + (from + k) * nu, v + (from + k) * nv) != wantInside)
+        break;
+    return from + k;
+  };
+  for (const Segment &s : segs) {
+    while (next < walked + s.len && static_cast<int>(out.size()) < n) {
+      const double t = (next - walked) / s.len;
+      const Vec3 X{s.a[0] + t * (s.b[0] - s.a[0]), s.a[1] + t * (s.b[1] - s.a[1]), s.a[2] + t * (s.b[2] - s.a[2])};
+      const double u = s.ua + t * (s.ub - s.ua), v = s.va + t * (s.vb - s.va);
+      double uu, vv, z;
+      cam.project(X, uu, vv, z);
+      double gu = coverAt(u - 1, v) - coverAt(u + 1, v), gv = coverAt(u, v - 1) - coverAt(u, v + 1);
+      const double gn = std::hypot(gu, gv);
+      next += step;
+      if (!(gn > 0.05)) // no clear outline here (a thin part, a corner)
+        continue;
+      gu /= gn, gv /= gn;
+      const Vec3 ax = cam.axis(0), ay = cam.axis(1);
+      const Vec3 n3 = hull::unit({gu * ax[0] + gv * ay[0], gu * ax[1] + gv * ay[1], gu * ax[2] + gv * ay[2]});
+      ContourPoint c;
+      c.x = static_cast<float>(X[0]), c.y = static_cast<float>(X[1]), c.z = static_cast<float>(X[2]);
+      c.nx = static_cast<float>(n3[0]), c.ny = static_cast<float>(n3[1]), c.nz = static_cast<float>(n3[2]);
+      const double mmPerPx = z / cam.px;
+      c.insideMm = static_cast<float>(run(u, v, -gu, -gv, 1.0, true) * mmPerPx);
+      c.outsideMm = static_cast<float>(run(u, v, gu, gv, 1.0, false) * mmPerPx);
+      out.push_back(c);
+    }
+    walked += s.len;
+  }
+  return out;
+}
+
+ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
+                          const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
+                          std::vector<float> &zbuf)
+{
+  constexpr long kEdgeKey = 1L << 40; // picks on an edge sort after the others, one per cell of their own
+  mesh.depthMap(cam, zbuf); // the hull's exact coverage and depth
+  cv::Mat mask(cam.h, cam.w, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < cam.h; ++y)
+    for (int x = 0; x < cam.w; ++x)
+      if (std::isfinite(zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]))
+        mask.at<unsigned char>(y, x) = 255;
+  // S_in: visible points with a hue at least minInsidePx inside the outline (at the outline a pixel
+  // mixes target and background), one per cell of a grid over the image.
+  cv::Mat inside;
+  cv::distanceTransform(mask, inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  const double area = cv::countNonZero(mask);
+  const double step = std::max(1.0, std::sqrt(area / p.nIn));
+  struct Pick
+  {
+    long key;
+    double d2;
+    std::size_t i;
+    float u, v;
+  };
+  std::vector<Pick> picks;
+  for (std::size_t i = 0; i < mpts.size(); ++i) {
+    if (!surface[i].hasHue)
+      continue;
+    double u, v, z;
+    if (!cam.project(mpts[i], u, v, z))
+      continue;
+    const int ui = static_cast<int>(std::lround(u)), vv = static_cast<int>(std::lround(v));
+    if (ui < 0 || vv < 0 || ui >= cam.w || vv >= cam.h)
+      continue;
+    if (z > zbuf[static_cast<std::size_t>(vv) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(ui)] + p.visibilityTolMm)
+      continue;
+    if (hull::dot(hull::unit(hull::sub(cam.centre, mpts[i])), {surface[i].nx, surface[i].ny, surface[i].nz}) < 0.2)
+      continue;
+    if (inside.at<float>(vv, ui) < p.inMinInsidePx)
+      continue;
+    const long cx = static_cast<long>(std::floor(u / step)), cy = static_cast<long>(std::floor(v / step));
+    const double ddx = u - (static_cast<double>(cx) + 0.5) * step, ddy = v - (static_cast<double>(cy) + 0.5) * step;
+    picks.push_back({cy * 100000 + cx + (p.edgeShare > 0 && edge[i] ? kEdgeKey : 0), ddx * ddx + ddy * ddy, i, static_cast<float>(u),
+                     static_cast<float>(v)});
+  }
+  std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
+  ModelView view;
+  for (int k = 0; k < 3; ++k)
+    view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
+  // One point per cell of each kind (on a hue edge, elsewhere); edgeShare of nIn from the edges,
+  // the rest elsewhere, each thinned evenly.
+  std::vector<ModelPoint> onEdge, plain;
+  for (std::size_t j = 0; j < picks.size(); ++j) {
+    if (j > 0 && picks[j].key == picks[j - 1].key)
+      continue;
+    const SurfacePoint &s = surface[picks[j].i];
+    (picks[j].key >= kEdgeKey ? onEdge : plain).push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v, s.r, s.g, s.b});
+  }
+  auto thin = [](std::vector<ModelPoint> &v, std::size_t n) {
+    if (v.size() <= n)
+      return;
+    std::vector<ModelPoint> t;
+    const double r = static_cast<double>(v.size()) / static_cast<double>(n);
+    for (std::size_t j = 0; j < n; ++j)
+      t.push_back(v[static_cast<std::size_t>(static_cast<double>(j) * r)]);
+    v.swap(t);
+  };
+  const std::size_t nEdge = std::min(onEdge.size(), static_cast<std::size_t>(std::lround(p.edgeShare * p.nIn)));
+  thin(onEdge, nEdge);
+  thin(plain, static_cast<std::size_t>(p.nIn) - onEdge.size());
+  view.inner = std::move(onEdge);
+  view.inner.insert(view.inner.end(), plain.begin(), plain.end());
+  // The outline: the mesh's contour edges on the silhouette's boundary.
+  const std::vector<unsigned char> maskBytes(mask.datastart, mask.dataend);
+  view.contour = meshOutline(cam, mesh, maskBytes, p.nContour);
+  // S_out: along the mask's contours (every part of the outline, evenly), offset outward, at the
+  // outline's depth, where the strip falls off the target.
+  std::vector<std::vector<cv::Point>> contours;
+  cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+  double total = 0;
+  for (const auto &c : contours)
+    total += static_cast<double>(c.size());
+  const int perRow = std::max(1, p.nOut / p.stripRows);
+  for (const auto &c : contours) {
+    const int n = static_cast<int>(c.size());
+    if (n < 8)
+      continue;
+    const int count = std::max(1, static_cast<int>(std::lround(perRow * n / total)));
+    for (int j = 0; j < count; ++j) {
+      const int a = static_cast<int>(static_cast<long>(j) * n / count);
+      const cv::Point P = c[static_cast<std::size_t>(a)], A = c[static_cast<std::size_t>((a + n - 3) % n)],
+                      B = c[static_cast<std::size_t>((a + 3) % n)];
+      double nx = B.y - A.y, ny = -(B.x - A.x);
+      const double nn = std::hypot(nx, ny);
+      if (nn <= 0)
+        continue;
+      nx /= nn, ny /= nn;
+      if (cv::pointPolygonTest(c, cv::Point2f(static_cast<float>(P.x + 2 * nx), static_cast<float>(P.y + 2 * ny)), false) > 0)
+        nx = -nx, ny = -ny;
+      // The outline's depth: the nearest depth under the outline pixel and its neighbours.
+      float depth = std::numeric_limits<float>::infinity();
+      for (int dv = -2; dv <= 2; ++dv)
+        for (int du = -2; du <= 2; ++du) {
+          const int x = P.x + du, y = P.y + dv;
+          if (x >= 0 && y >= 0 && x < cam.w && y < cam.h)
+            depth = std::min(depth, zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]);
+        }
+      if (!std::isfinite(depth))
+        continue;
+      for (int row = 0; row < p.stripRows; ++row) {
+        // From the contour pixel (the last one on the target) to the outline is half a pixel.
+        const double off = 0.5 + p.stripGapPx + (p.stripRows > 1 ? p.stripWidthPx * row / (p.stripRows - 1) : 0.0);
+        const double su = P.x + off * nx, sv = P.y + off * ny;
+        const int ui = static_cast<int>(std::lround(su)), vv = static_cast<int>(std::lround(sv));
+        if (ui >= 0 && vv >= 0 && ui < cam.w && vv < cam.h && mask.at<unsigned char>(vv, ui))
+          continue; // in a concavity, on the target
+        const Vec3 w = cam.backProject(su, sv, depth);
+        view.outer.push_back({static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]), bgHue, static_cast<float>(su),
+                              static_cast<float>(sv)});
+      }
+    }
+  }
+  return view;
+}
+
+} // namespace pm
