@@ -154,6 +154,20 @@ void RmGa::transform(const std::function<Phi(const Phi &)> &f)
     m_prev2 = f(m_prev2);
 }
 
+void RmGa::inject(const Phi &p, double fitness)
+{
+  if (m_pop.empty() || !p.isValid())
+    return;
+  std::size_t weakest = 0;
+  for (std::size_t i = 1; i < m_pop.size(); ++i)
+    if (m_pop[i].fitness < m_pop[weakest].fitness)
+      weakest = i;
+  m_pop[weakest] = make(encode(m_space.clamp(p), m_space));
+  m_pop[weakest].fitness = fitness;
+  if (m_havePrev) // the frame's best, for the motion prediction: the injected pose when it scores as well
+    m_prev = p;
+}
+
 void RmGa::evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, double &cost, long &candidates, double rejectBelow)
 {
   const std::size_t n = ind.size() - from;

@@ -58,6 +58,9 @@ void TrackerParams::validate() const
     throw Error("tracker: the re-verification frames must be non-negative and its confidence lie in [0, 1], the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
                 "same-object distance be non-negative and its far distances positive");
   confidence.validate();
+  precise.validate();
+  if (!(preciseMaxDropQ >= 0) || !(preciseRestartMm > 0) || !(preciseRestartDeg > 0) || !(preciseMaxMoveMm > 0) || !(preciseMaxMoveDeg > 0))
+    throw Error("tracker: the precise stage's fitness drop must be non-negative and its restart and move distances positive");
   if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1) ||
       steadyHueMarginPx < 0 || steadyHueMarginPx > 10000)
     throw Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1, the steady "
@@ -113,6 +116,8 @@ PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &mod
                   " only " + std::to_string(static_cast<int>(100 * visible)) + " % of its points fall in the " +
                   (cam ? "right" : "left") + " image (a model too large for the cameras, or made at another scale?)");
   }
+  if (params.preciseStage && model.hasContours())
+    m_precise = std::make_unique<PreciseStage>(rig, model, params.precise);
   initialize();
 }
 
@@ -314,7 +319,53 @@ FrameResult PhotoModelTracker::search(const Frame &f, StereoObjective &objective
   return fr;
 }
 
-void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective)
+bool PhotoModelTracker::refinePrecise(TrackResult &r, const Frame &f)
+{
+  m_precise->setImages(*f.left, *f.right);
+  // A result is kept when it stays near its start and F there is not much under RM-GA's best: the
+  // outline's peak lies on F's plateau, a divergence (colours that do not separate, a wrong start)
+  // leaves it.
+  const double minF = r.fitness - m_params.preciseMaxDropQ * (m_fMax - m_fBackground);
+  auto acceptable = [&](const PreciseResult &p, const Phi &start, double &F) {
+    if (!p.ok || translationDistanceMm(p.phi, start) > m_params.preciseMaxMoveMm || rotationDistanceDeg(p.phi, start) > m_params.preciseMaxMoveDeg)
+      return false;
+    F = m_fitness.evaluate(p.phi);
+    return F >= minF;
+  };
+  const bool haveLast = m_last.state == TrackState::Tracking && m_last.precise && m_last.phi.isValid();
+  const bool near = haveLast && translationDistanceMm(r.phi, m_last.phi) <= m_params.preciseRestartMm &&
+                    rotationDistanceDeg(r.phi, m_last.phi) <= m_params.preciseRestartDeg;
+  PreciseResult best;
+  double bestF = 0;
+  bool found = false;
+  if (haveLast) {
+    const PreciseResult fromLast = m_precise->refine(m_last.phi);
+    r.preciseResult = fromLast;
+    found = acceptable(fromLast, m_last.phi, bestF);
+    if (found)
+      best = fromLast;
+  }
+  if (!near || !found) {
+    const PreciseResult fromSearch = m_precise->refine(r.phi);
+    double F = 0;
+    if (acceptable(fromSearch, r.phi, F) && (!found || fromSearch.residualPx < best.residualPx)) {
+      best = fromSearch;
+      bestF = F;
+      found = true;
+    }
+    if (!found)
+      r.preciseResult = fromSearch;
+  }
+  if (!found)
+    return false;
+  r.preciseResult = best;
+  r.phi = best.phi;
+  r.fitness = bestF;
+  m_ga.inject(best.phi, bestF);
+  return true;
+}
+
+void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective, const Frame &f)
 {
   if (m_params.smoothRefineEvaluations > 0 && quality(r.fitness) >= m_params.lockQuality) {
     // The top of F's plateau: a continuous search of the smooth score from RM-GA's best.
@@ -323,13 +374,20 @@ void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective)
     sp.maxEvaluations = m_params.smoothRefineEvaluations;
     const LocalSimplexResult lr = refineLocalSimplex(smooth, r.phi, sp);
     r.smoothEvaluations = lr.evaluations;
-    const double f = m_fitness.evaluate(lr.best);
-    if (f >= r.fitness - m_params.smoothRefineMaxDrop) {
+    const double F = m_fitness.evaluate(lr.best);
+    if (F >= r.fitness - m_params.smoothRefineMaxDrop) {
       r.phi = lr.best;
-      r.fitness = f;
+      r.fitness = F;
     }
   }
   const bool locked = quality(r.fitness) >= m_params.lockQuality;
+  if (m_precise && locked) {
+    r.precise = refinePrecise(r, f);
+    if (r.precise) {
+      m_tilt.reset();
+      return;
+    }
+  }
   if (m_params.smoothAscent.maxEvaluations > 0 && locked) {
     // The top of the smooth score near RM-GA's best, or near the last frame's pose if that scores higher
     // (the GA's best wanders over F's plateau from frame to frame).
@@ -337,10 +395,10 @@ void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective)
     const std::size_t n = m_last.state == TrackState::Tracking && m_last.phi.isValid() && m_params.smoothAscent.maxEvaluations > 1 ? 2 : 1;
     const SmoothAscentResult a = climbSmooth(objective, starts, n, m_params.smoothAscent);
     r.ascentEvaluations = a.evaluations;
-    const double f = m_fitness.evaluate(a.best);
-    if (f >= r.fitness - m_params.smoothAscentMaxDrop) {
+    const double F = m_fitness.evaluate(a.best);
+    if (F >= r.fitness - m_params.smoothAscentMaxDrop) {
       r.phi = a.best;
-      r.fitness = f;
+      r.fitness = F;
     }
   }
   if (!tiltFilter().passesThrough()) {
@@ -453,12 +511,11 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   r.evaluations = fr.evaluations;
   r.candidates = fr.candidates;
   r.generations = fr.generations;
-  const double searchMs = f.msSinceStart() - f.hueMs;
-  refine(r, objective);
-  const double refinedMs = f.msSinceStart();
   if (verifying)
     verify(m_params.coarseSearch ? coarseObjective : objective, part(whole, m_params.verifyBudgetFraction, m_params.ga.population), r);
-  const double verifyMs = f.msSinceStart() - refinedMs;
+  const double searchMs = f.msSinceStart() - f.hueMs;
+  refine(r, objective, f);
+  const double refinedMs = f.msSinceStart();
   r.hMo = toHomogeneousMatrix(r.phi);
   r.quality = quality(r.fitness);
   const TrackState prev = m_last.state;
@@ -466,8 +523,10 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   r.steady = f.steady && !f.escalated;
   r.escalated = f.escalated;
   scoreConfidence(r, f);
+  if (r.precise && r.trusted) // the scene's colours along the outline, where the pose is trusted
+    m_precise->learnColours(r.phi);
   r.computeMs = f.msSinceStart();
-  r.stageMs = {f.hueMs, searchMs + verifyMs, refinedMs - f.hueMs - searchMs, r.computeMs - refinedMs - verifyMs};
+  r.stageMs = {f.hueMs, searchMs, refinedMs - f.hueMs - searchMs, r.computeMs - refinedMs};
   m_beforeLast = m_last.phi;
   m_haveBeforeLast = prev == TrackState::Tracking && r.state == TrackState::Tracking;
   m_last = r;

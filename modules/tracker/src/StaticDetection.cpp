@@ -15,8 +15,10 @@ Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, 
   Detection d;
   double bestF = -1e300;
   int sinceBest = 0;
+  TrackResult last;
   while (seconds() < params.maxTimeS) {
     const TrackResult r = tracker.track(left, right);
+    last = r;
     ++d.frames;
     d.totalEvaluations += r.evaluations;
     if (r.fitness > bestF) {
@@ -29,6 +31,10 @@ Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, 
       break;
     }
   }
+  // The precise stage lands on the outline's peak, which F (flat there) does not rank: once
+  // converged, the last frame's pose is the detection when the stage gave it.
+  if (last.state == TrackState::Tracking && last.precise)
+    d.best = last;
   d.totalS = seconds();
   return d;
 }

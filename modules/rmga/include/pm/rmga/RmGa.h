@@ -194,6 +194,11 @@ public:
     the hand's own motion this way. The fitness values are kept until the next evaluation.
   */
   void transform(const std::function<Phi(const Phi &)> &f);
+  /*!
+    Puts \e p (clamped into the search space) in place of the weakest individual, with \e fitness
+    on the current frame: a pose found by other means (the tracker's precise stage) joins the search.
+  */
+  void inject(const Phi &p, double fitness);
 
   /*!
     Evolves the population on one frame (steps 2-9) within \e budget. Throws pm::Error if the

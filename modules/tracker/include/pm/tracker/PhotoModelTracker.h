@@ -36,7 +36,10 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
+#include <memory>
+
 #include "pm/core/StereoFitness.h"
+#include "pm/precise/PreciseStage.h"
 #include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/SmoothAscent.h"
@@ -178,6 +181,26 @@ struct TrackerParams
   SmoothAscentParams smoothAscent;
   double smoothAscentMaxDrop = 0.02; //!< the climb's pose is kept unless F there is this much under RM-GA's best (F's units)
   /*!
+    The precise last stage (PreciseStage.h): on every frame whose q reaches lockQuality, for a model
+    that carries outlines (an all-around model of version 5), Gauss-Newton steps on the outline's
+    correspondence lines in both cameras (and the interior's colours) from the frame's pose: RM-GA's
+    best (after a switch made by the lock's verification), or the last frame's pose when the target
+    was tracked and RM-GA's best lies within preciseRestartMm and preciseRestartDeg of it (else from
+    both, the lower residual kept; and from RM-GA's best when the last frame's start gives nothing
+    acceptable). A result is acceptable when it moved less than preciseMaxMoveMm and
+    preciseMaxMoveDeg from its start and F there is not under RM-GA's best by more than
+    preciseMaxDropQ (in q). The frame's pose is then the stage's: it seeds RM-GA's population,
+    replaces the smooth ascent, and the tilt filter is not applied. Colours are learnt on trusted
+    frames. false, or a model without outlines: off (the frame is RM-GA's and the smooth ascent's).
+  */
+  bool preciseStage = true;
+  PreciseParams precise;             //!< the precise stage's parameters (PreciseStage.h)
+  double preciseMaxDropQ = 0.02;     //!< the precise pose is kept unless q there is this much under RM-GA's best
+  double preciseMaxMoveMm = 12;      //!< ... and it moved less than this from its start (mm) ...
+  double preciseMaxMoveDeg = 8;      //!< ... and turned less than this (deg)
+  double preciseRestartMm = 8;       //!< RM-GA's best farther than this from the last frame's pose (mm) ...
+  double preciseRestartDeg = 4;      //!< ... or turned more than this (deg): the stage starts from both
+  /*!
     The tilt of the frame's pose smoothed from frame to frame (TiltFilter: alpha-beta on the
     rotation about the hand's x and y axes, which one viewpoint sees poorly), on tracked frames,
     for a model of one or a few views (flat, a stereo snapshot); alpha 1 and beta 0: off.
@@ -254,6 +277,8 @@ struct TrackResult
   bool escalated = false;   //!< a steady frame whose q fell, given the rest of the whole budget (see TrackerParams::steadyEscalation)
   int smoothEvaluations = 0; //!< evaluations of the smooth score by the local refinement (0: none)
   int ascentEvaluations = 0; //!< evaluations of the smooth score and its gradient by the climb (0: none)
+  bool precise = false;      //!< the precise stage's pose is the frame's (TrackerParams::preciseStage)
+  PreciseResult preciseResult; //!< what the precise stage found (its lines, residual, information), when it ran
 
   ConfidenceCues cues;       //!< what the confidence is computed from
   double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)
@@ -338,6 +363,10 @@ public:
   const TrackerParams &params() const { return m_params; }
   //! The tilt filter this model gets: TrackerParams::tiltFilterAllAround for an all-around model, tiltFilter otherwise.
   const TiltFilterParams &tiltFilter() const { return m_allAround ? m_params.tiltFilterAllAround : m_params.tiltFilter; }
+  //! True when the precise stage runs (TrackerParams::preciseStage and a model with outlines).
+  bool hasPreciseStage() const { return m_precise != nullptr; }
+  //! The precise stage (its colour statistics, its last lines); null when off.
+  const PreciseStage *preciseStage() const { return m_precise.get(); }
 
 private:
   //! What track() decided about the frame it works on.
@@ -355,8 +384,10 @@ private:
   };
   //! RM-GA on the frame (coarse while searching), and the escalation of a steady frame that went wrong.
   FrameResult search(const Frame &f, StereoObjective &objective, StereoObjective &coarseObjective);
-  //! The local refinements of the frame's pose: the simplex (option), the smooth ascent, the tilt filter.
-  void refine(TrackResult &r, StereoObjective &objective);
+  //! The local refinements of the frame's pose: the simplex (option), the smooth ascent or the precise stage, the tilt filter.
+  void refine(TrackResult &r, StereoObjective &objective, const Frame &f);
+  //! The precise stage on the frame: from r's pose or the last frame's (see TrackerParams::preciseStage); true when its pose is kept.
+  bool refinePrecise(TrackResult &r, const Frame &f);
   //! The state machine (with the lock gate), the verification's start, the steadiness.
   void updateState(TrackResult &r);
   //! The cues, the confidence, the trust, the anchor and the re-verification of a doubtful lock.
@@ -389,6 +420,7 @@ private:
   int m_untrustedFrames = 0; //!< tracked, verified frames in a row under reverifyBelowConfidence
   TiltFilter m_tilt;
   bool m_allAround = false;    //!< the model is an all-around one (PhotoModel::isAllAround)
+  std::unique_ptr<PreciseStage> m_precise; //!< null: off
 };
 
 } // namespace pm

@@ -24,7 +24,7 @@ struct DetectionParams
 //! What a static detection found.
 struct Detection
 {
-  TrackResult best;            //!< the frame with the highest fitness (its pose: best.phi, best.hMo)
+  TrackResult best;            //!< the frame with the highest fitness, or the last frame when the precise stage gave its pose (its pose: best.phi, best.hMo)
   double convergedS = 0;       //!< when that frame was found (s from the start)
   double totalS = 0;           //!< the whole search (s)
   long evaluations = 0;        //!< fitness evaluations until the best was found

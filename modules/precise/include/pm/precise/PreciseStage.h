@@ -1,0 +1,142 @@
+#pragma once
+/*!
+  \file PreciseStage.h
+  The precise last stage of a frame: from RM-GA's best pose (or the last frame's), Gauss-Newton
+  steps on a smooth objective of the outline in both cameras at once, coarse to fine, after the
+  region-based trackers (SRT3D, DLR's M3T). The hue fitness of Eqs. (8)-(11) finds the target with
+  no initial pose but is flat in rotation near its peak (a turn of 2 deg moves the image by 1.5 px
+  and costs nothing); this objective moves with every pixel the outline moves.
+
+  Each iteration: the correspondence lines of both cameras are measured at the current pose
+  (CorrespondenceLines.h: where along each outline normal the colours turn from target to
+  background), then \e updatesPerScale Gauss-Newton steps with a Tikhonov regularisation
+  (the step's prior: no motion) move the pose toward the outline's measured positions. The lines'
+  segments shrink from the first scale to the last (pixels per segment), their search range with
+  them. The colour posteriors come from the model's photos (PhotoModel::foregroundHistogram) and
+  follow the scene: learnColours() blends in each frame's colours along the outline.
+
+      pm::PreciseStage precise(rig, model);           // the model must carry outlines (version 5)
+      precise.setImages(IL, IR);                      // the frame (kept by pointer until the next)
+      const pm::PreciseResult r = precise.refine(rmgaBest);
+      if (r.ok) { phi = r.phi; precise.learnColours(phi); }
+*/
+#include <array>
+#include <memory>
+#include <vector>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/core/PhotoModel.h"
+#include "pm/core/Pose.h"
+#include "pm/core/StereoRig.h"
+#include "pm/core/UndistortMap.h"
+#include "pm/precise/ColourHistograms.h"
+#include "pm/precise/CorrespondenceLines.h"
+#include "pm/precise/InteriorTerm.h"
+#include "pm/precise/OutlineViews.h"
+
+namespace pm {
+
+/*!
+  The precise stage's parameters (PreciseStage.h), with measured defaults; validate() checks them.
+*/
+struct PreciseParams
+{
+  std::size_t lines = 150;               //!< correspondence lines per camera (at most; the viewpoint's contour points)
+  std::vector<int> scales{5, 2, 1, 1};   //!< pixels per segment, one measurement each, coarse to fine
+  std::vector<double> sigmasPx{12, 4, 1.5, 1.5}; //!< per scale: the lines' weight is the least variance over this squared (px)
+  int updatesPerScale = 2;               //!< Gauss-Newton steps per measurement
+  LineShape shape;                       //!< the smoothed step and the distribution's length (segments)
+  double minContinuous = 3;              //!< a line needs this many segments of target and of background
+  double regularisationRotation = 1000;  //!< Tikhonov weight of a turn (per rad^2)
+  double regularisationTranslation = 0.03; //!< Tikhonov weight of a shift (per mm^2)
+  double learningRate = 0.2;             //!< how much of a frame's colours learnColours() blends in
+  double histogramSkipPx = 0.5;          //!< colours are learnt from this far off the outline ...
+  double histogramMaxPx = 20;            //!< ... to this far (px)
+  std::size_t minLines = 24;             //!< fewer lines in both cameras: no result (PreciseResult::ok false)
+  std::size_t interiorPoints = 200;      //!< the interior term's points per camera (InteriorTerm.h; 0: off, the outline alone)
+  double interiorSigma = 0.1;            //!< the chromaticity's noise the interior term assumes
+  double interiorWeight = 1.0;           //!< the interior term's weight beside the outline's
+
+  //! Throws pm::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! What PreciseStage::refine() found.
+struct PreciseResult
+{
+  Phi phi;                     //!< the refined pose (the start when !ok)
+  bool ok = false;             //!< enough lines were measured in the last iteration
+  std::array<std::size_t, 2> lines{}; //!< lines measured in each camera at the finest scale
+  /*!
+    The Gauss-Newton information of the finest scale's lines at phi: sum over lines of J^T J /
+    variance, J the line position's derivative (px) with respect to the twist (mm, then rad; hand
+    frame, about the model's origin). Its inverse is the pose's covariance under the lines' model.
+  */
+  std::array<double, 36> information{};
+  double residualPx = 0;       //!< rms distance between the outline found on each line and the model's (finest scale, px)
+  double separation = 0;       //!< mean over lines of how sharply target and background split along them, in [0, 1]
+  int iterations = 0;          //!< Gauss-Newton steps taken
+};
+
+/*!
+  The precise stage (see PreciseStage.h). Copies what it needs of the rig and the model; holds the
+  colour histograms from frame to frame. refine() allocates nothing. Not thread-safe.
+  \code
+#include <pm/io/PhotoModelFile.h>
+#include <pm/io/RigFile.h>
+#include <pm/precise/PreciseStage.h>
+
+int main()
+{
+  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::PhotoModel model = pm::io::loadPhotoModel("model.json"); // an all-around model
+  pm::PreciseStage precise(rig, model);
+  const vpImage<vpRGBa> IL = pm::io::readColorImage("left.png"), IR = pm::io::readColorImage("right.png");
+  precise.setImages(IL, IR);
+  pm::Phi phi;                      // a pose within a few degrees and millimetres
+  phi.z = 500;
+  const pm::PreciseResult r = precise.refine(phi);
+  std::cout << r.phi.toString() << " from " << r.lines[0] + r.lines[1] << " lines\n";
+}
+  \endcode
+*/
+class PreciseStage
+{
+public:
+  //! Throws pm::Error for an invalid rig or parameters, or a model without outlines.
+  PreciseStage(const StereoRig &rig, const PhotoModel &model, const PreciseParams &params = PreciseParams());
+  /*!
+    The frame's images (raw, as the cameras gave them): kept by pointer, they must live until the
+    last refine() or learnColours() on them. Throws pm::Error if a size is not its camera's.
+  */
+  void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  //! Refines \e start on the images (see PreciseStage.h). Throws pm::Error for no images or an invalid start.
+  PreciseResult refine(const Phi &start);
+  /*!
+    Blends this frame's colours along the outline at \e phi into the histograms (learningRate; the
+    whole of them when the model gave none and none were learnt yet).
+  */
+  void learnColours(const Phi &phi);
+  //! Back to the model's colour histograms (or none).
+  void resetColours();
+  const ColourHistograms &colours() const { return m_colours; }                    //!< the colour statistics
+  const CorrespondenceLines &lines(int camera) const { return *m_lines[static_cast<std::size_t>(camera)]; } //!< the last measurement
+  const LineCamera &camera(int camera) const { return m_cams[static_cast<std::size_t>(camera)]; }           //!< a camera as the lines see it
+  const OutlineViews &outlines() const { return m_outlines; }                       //!< the model's outlines
+  const PreciseParams &params() const { return m_params; }                          //!< the parameters
+
+private:
+  PreciseParams m_params;
+  OutlineViews m_outlines;
+  std::array<LineCamera, 2> m_cams;
+  std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort;
+  std::array<std::unique_ptr<CorrespondenceLines>, 2> m_lines;
+  std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
+  ColourHistograms m_colours;
+  std::vector<float> m_modelF, m_modelB;
+  bool m_hasImages = false;
+};
+
+} // namespace pm

@@ -1,0 +1,167 @@
+#include "pm/precise/PreciseStage.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "pm/core/BatchPool.h"
+#include "pm/core/Error.h"
+
+namespace pm {
+
+void PreciseParams::validate() const
+{
+  auto check = [](bool ok, const char *what) {
+    if (!ok)
+      throw Error(std::string("precise stage: ") + what);
+  };
+  check(lines >= 8 && lines <= 10000, "the lines per camera must lie in [8, 10000]");
+  check(!scales.empty() && scales.size() <= 16, "give 1 to 16 scales");
+  check(sigmasPx.size() == scales.size(), "give one sigma per scale");
+  for (int s : scales)
+    check(s >= 1 && s <= 16, "a scale must lie in [1, 16] px per segment");
+  for (double s : sigmasPx)
+    check(s > 0 && s <= 1000, "a sigma must lie in (0, 1000] px");
+  check(updatesPerScale >= 1 && updatesPerScale <= 20, "the steps per scale must lie in [1, 20]");
+  check(minContinuous >= 0 && minContinuous <= 100, "the continuous segments must lie in [0, 100]");
+  check(regularisationRotation >= 0 && regularisationTranslation >= 0 && std::isfinite(regularisationRotation) &&
+            std::isfinite(regularisationTranslation),
+        "the regularisations must be finite and non-negative");
+  check(learningRate >= 0 && learningRate <= 1, "the learning rate must lie in [0, 1]");
+  check(histogramSkipPx >= 0 && histogramMaxPx > histogramSkipPx && histogramMaxPx <= 200,
+        "the colours' line must satisfy 0 <= skip < max <= 200 px");
+  check(minLines >= 6 && minLines <= 100000, "the least lines must lie in [6, 100000]");
+  check(interiorPoints <= 100000, "the interior points must lie in [0, 100000]");
+  check(interiorSigma > 0 && interiorSigma <= 10 && interiorWeight >= 0 && interiorWeight <= 1e6,
+        "the interior term's sigma must lie in (0, 10] and its weight in [0, 1e6]");
+  LineShape s = shape;
+  s.prepare();
+}
+
+PreciseStage::PreciseStage(const StereoRig &rig, const PhotoModel &model, const PreciseParams &params)
+    : m_params((params.validate(), params)), m_outlines(model)
+{
+  rig.validate();
+  m_params.shape.prepare();
+  const RigCamera *rc[2] = {&rig.left, &rig.right};
+  int maxScale = 1;
+  for (int s : m_params.scales)
+    maxScale = std::max(maxScale, s);
+  for (std::size_t k = 0; k < 2; ++k) {
+    LineCamera &c = m_cams[k];
+    const vpHomogeneousMatrix cMh = rc[k]->cMh();
+    for (unsigned r = 0; r < 3; ++r) {
+      for (unsigned q = 0; q < 3; ++q)
+        c.R[3 * r + q] = cMh[r][q];
+      c.t[r] = 1e3 * cMh[r][3];
+    }
+    c.px = rc[k]->cam.get_px(), c.py = rc[k]->cam.get_py(), c.u0 = rc[k]->cam.get_u0(), c.v0 = rc[k]->cam.get_v0();
+    c.w = static_cast<int>(rc[k]->width), c.h = static_cast<int>(rc[k]->height);
+    if (!rc[k]->distortion.isNone()) {
+      m_undistort[k] = std::make_shared<UndistortMap>(*rc[k]);
+      c.nearest = m_undistort[k]->nearest().data();
+    }
+    m_lines[k] = std::make_unique<CorrespondenceLines>(m_params.lines, m_params.shape.segments(), maxScale);
+  }
+  if (m_params.interiorPoints > 0 && m_params.interiorWeight > 0 && model.hasColours)
+    m_interior = std::make_unique<InteriorTerm>(model, m_params.interiorPoints);
+  m_modelF = model.foregroundHistogram;
+  m_modelB = model.backgroundHistogram;
+  resetColours();
+}
+
+void PreciseStage::resetColours() { m_colours.start(m_modelF, m_modelB); }
+
+void PreciseStage::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+{
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  for (std::size_t k = 0; k < 2; ++k) {
+    if (static_cast<int>(im[k]->getWidth()) != m_cams[k].w || static_cast<int>(im[k]->getHeight()) != m_cams[k].h)
+      throw Error(std::string("precise stage: the ") + (k ? "right" : "left") + " image is " + std::to_string(im[k]->getWidth()) +
+                  "x" + std::to_string(im[k]->getHeight()) + " but its camera is " + std::to_string(m_cams[k].w) + "x" +
+                  std::to_string(m_cams[k].h));
+    m_cams[k].image = im[k]->bitmap;
+  }
+  m_hasImages = true;
+}
+
+PreciseResult PreciseStage::refine(const Phi &start)
+{
+  if (!m_hasImages)
+    throw Error("precise stage: refine() before setImages()");
+  if (!start.isValid())
+    throw Error("precise stage: an invalid start pose " + start.toString());
+  PreciseResult res;
+  res.phi = start;
+  if (!m_colours.ready()) // nothing to tell target from background with yet
+    return res;
+  const PreciseParams &p = m_params;
+  Phi phi = start;
+  std::size_t n[2] = {0, 0};
+  for (std::size_t si = 0; si < p.scales.size(); ++si) {
+    const int scale = p.scales[si];
+    BatchPool::shared().run(2, [&](std::size_t k) {
+      n[k] = m_lines[k]->measure(m_cams[k], m_outlines, phi, p.shape, m_colours, scale, p.lines, p.minContinuous);
+    });
+    if (n[0] + n[1] < p.minLines)
+      return res; // too little of the outline to go on: the start stays
+    const double sigma = p.sigmasPx[si];
+    const double weight = p.shape.minVariance * scale * scale / (sigma * sigma);
+    for (int it = 0; it < p.updatesPerScale; ++it) {
+      double g[2][6] = {{0}}, H[2][36] = {{0}};
+      BatchPool::shared().run(2, [&](std::size_t k) {
+        m_lines[k]->accumulate(m_cams[k], phi, weight, g[k], H[k], nullptr);
+        if (m_interior)
+          m_interior->accumulate(m_cams[k], m_lines[k]->viewpoint(), phi, scale, p.interiorSigma, p.interiorWeight, g[k], H[k], nullptr);
+      });
+      Eigen::Matrix<double, 6, 6> A;
+      Eigen::Matrix<double, 6, 1> b;
+      for (int r = 0; r < 6; ++r) {
+        b(r) = g[0][r] + g[1][r];
+        for (int c = 0; c < 6; ++c)
+          A(r, c) = H[0][6 * r + c] + H[1][6 * r + c];
+        A(r, r) += r < 3 ? p.regularisationTranslation : p.regularisationRotation;
+      }
+      const Eigen::Matrix<double, 6, 1> step = A.ldlt().solve(b);
+      if (!step.allFinite())
+        return res;
+      double twist[6];
+      for (int k = 0; k < 6; ++k)
+        twist[k] = step(k);
+      const Phi next = applyTwist(phi, twist);
+      if (!next.isValid())
+        return res;
+      phi = next;
+      ++res.iterations;
+    }
+  }
+  // The finest measurement, at the final pose: its information, residual and separation.
+  double H[2][36] = {{0}}, g[2][6] = {{0}}, r2[2] = {0, 0};
+  for (std::size_t k = 0; k < 2; ++k)
+    m_lines[k]->accumulate(m_cams[k], phi, 1.0, g[k], H[k], &r2[k]);
+  double sep = 0;
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t i = 0; i < n[k]; ++i)
+      sep += m_lines[k]->line(i).separation;
+  for (int k = 0; k < 36; ++k)
+    res.information[static_cast<std::size_t>(k)] = H[0][k] + H[1][k];
+  const std::size_t total = n[0] + n[1];
+  res.lines = {n[0], n[1]};
+  res.residualPx = total ? std::sqrt((r2[0] + r2[1]) / static_cast<double>(total)) : 0.0;
+  res.separation = total ? sep / static_cast<double>(total) : 0.0;
+  res.phi = phi;
+  res.ok = true;
+  return res;
+}
+
+void PreciseStage::learnColours(const Phi &phi)
+{
+  if (!m_hasImages || !phi.isValid())
+    return;
+  for (std::size_t k = 0; k < 2; ++k)
+    m_lines[k]->collectColours(m_cams[k], m_outlines, phi, m_colours, m_params.lines, m_params.histogramSkipPx, m_params.histogramMaxPx);
+  m_colours.update(m_params.learningRate, m_params.learningRate);
+}
+
+} // namespace pm
