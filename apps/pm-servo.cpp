@@ -77,7 +77,9 @@ int main(int argc, char **argv)
   app.add_option("--duration-s", durationS, "stop after this long (0: the steps' duration, 20 s for a sine)")->check(CLI::Range(0.0, 1e6));
   app.add_option("--fps", fps, "camera and servo rate")->check(CLI::Range(1.0, 1000.0));
   app.add_flag("--oracle", lp.oracle, "servo on the true pose instead of the estimate (a baseline)");
-  app.add_flag("--filter,!--no-filter", lp.filter, "alpha-beta filter of the estimate (base frame) with velocity feed-forward");
+  app.add_flag_function(
+      "--filter,!--no-filter", [&lp](std::int64_t n) { lp.filter = n > 0 ? pm::lab::LoopParams::Filter::On : pm::lab::LoopParams::Filter::Off; },
+      "alpha-beta filter of the estimate (base frame) with velocity feed-forward (default: only without the precise stage)");
   app.add_option("--filter-alpha-rotation", lp.filterParams.alphaR, "filter: rotation gain")->check(CLI::Range(0.01, 1.0));
   app.add_option("--filter-beta-rotation", lp.filterParams.betaR, "filter: angular velocity gain")->check(CLI::Range(0.0, 1.9));
   app.add_option("--filter-alpha-translation", lp.filterParams.alphaT, "filter: translation gain")->check(CLI::Range(0.01, 1.0));

@@ -136,6 +136,9 @@ TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m
                                                         "before it is trusted (0: every lock trusted at once)")
           ->check(CLI::Range(0L, 100000000L)),
       [](TrackerParams &t, const TrackerParams &c) { t.verifyEvaluations = c.verifyEvaluations; });
+  add(app.add_flag("--precise,!--no-precise", p.preciseStage,
+                   "the precise last stage after RM-GA (outline and interior, Gauss-Newton; needs an all-around model)"),
+      [](TrackerParams &t, const TrackerParams &c) { t.preciseStage = c.preciseStage; });
   add(app.add_option("--trust-threshold", p.confidence.threshold, "confidence from which an estimate is trusted")
           ->check(CLI::Range(0.001, 0.999)),
       [](TrackerParams &t, const TrackerParams &c) { t.confidence.threshold = c.confidence.threshold; });

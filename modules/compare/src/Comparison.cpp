@@ -58,8 +58,8 @@ std::string recoveryText(const Summary &s, bool hadLoss)
 
 const std::vector<std::string> &comparedTrackerKeys()
 {
-  static const std::vector<std::string> keys{"ours",     "ours-3d", "ours-aa",      "ours-steady",  "mbt-edge",
-                                             "mbt-klt",  "mbt-edge-klt", "template-ssd", "template-zncc"};
+  static const std::vector<std::string> keys{"ours",    "ours-3d",      "ours-aa",      "ours-aa-rmga",  "ours-steady",
+                                             "mbt-edge", "mbt-klt", "mbt-edge-klt", "template-ssd", "template-zncc"};
   return keys;
 }
 
@@ -76,7 +76,7 @@ struct Comparison::Setup
   // The truth of a tracker's own model frame: each model has its own (the 3-D centroid of S_in, ...).
   const vpHomogeneousMatrix &ownFrame(const std::string &key) const
   {
-    return key == "ours-3d" ? stereo.oMm : key == "ours-aa" ? allAround.oMm : flat.oMm;
+    return key == "ours-3d" ? stereo.oMm : key.rfind("ours-aa", 0) == 0 ? allAround.oMm : flat.oMm;
   }
 };
 
@@ -95,7 +95,7 @@ Comparison::Comparison(const StereoRig &rig, const ComparisonParams &params) : m
   m_s->outline = outlinePolygon(m_s->flat.build.region, m_s->flat.build.model, m_p.outlineTolPx);
   if (has(m_p.trackers, "ours-3d"))
     m_s->stereo = sim::makeSimulatedStereoPhotoModel(m_s->scene, rig, m_p.distanceMm, StereoModelParams(), m_p.viewTurnDeg);
-  if (has(m_p.trackers, "ours-aa"))
+  if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga"))
     m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, PassPlan(), lab::LoopParams::startJoints(), m_p.distanceMm);
 }
 
@@ -126,6 +126,11 @@ ComparisonResult Comparison::run(const std::string &caoPath, std::ostream &csv, 
       return makeOurTracker(rig, s.stereo.build.model, m_p.tracker, "photo-model with depth (ours, stereo model)");
     if (key == "ours-aa")
       return makeOurTracker(rig, s.allAround.build.model, m_p.tracker, "all-around photo-model (ours, PA-10 pass)");
+    if (key == "ours-aa-rmga") {
+      TrackerParams rmga = m_p.tracker;
+      rmga.preciseStage = false;
+      return makeOurTracker(rig, s.allAround.build.model, rmga, "all-around photo-model, RM-GA alone (ours, no precise stage)");
+    }
     if (key == "ours-steady") {
       TrackerParams fast = m_p.tracker;
       fast.steadyBudgetFraction = m_p.steadyVariant;

@@ -71,7 +71,7 @@ LoopFrame ClosedLoop::step()
   vpColVector twist;
   if (m_lp.oracle) {
     f.hMmUsed = f.hMmTrue;
-  } else if (usable && m_lp.filter) { // filtered in the base frame, where the target moves smoothly
+  } else if (usable && filtering()) { // filtered in the base frame, where the target moves smoothly
     m_filter.update(fMh * f.track.hMo, 1.0 / m_lp.fps);
     f.hMmUsed = fMh.inverse() * m_filter.pose();
     twist = m_filter.twist();

@@ -68,6 +68,9 @@ void RunLog::add(const LoopFrame &f)
   m_sumMs += f.track.computeMs;
   m_servoedOnWrong += f.servoing && f.wrongUsed() ? 1 : 0;
   m_servoedOnWrongRaw += f.servoing && f.wrongEstimate() ? 1 : 0;
+  m_precise += f.track.precise ? 1 : 0;
+  if (converged() && f.track.state == TrackState::Tracking)
+    m_estimate.add(f.estimateErrorMm, f.estimateErrorDeg);
   m_held += f.servoing ? 0 : 1;
   m_servoed += f.servoing ? 1 : 0;
 

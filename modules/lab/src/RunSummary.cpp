@@ -38,6 +38,9 @@ std::string runSummaryJson(const RunLog &log, const RunInfo &info)
       {"frames_servoed_on_wrong_raw_estimate", log.framesServoedOnWrongRawEstimate()},
       {"wrong_pose", "the pose the servo used (the filtered estimate) more than 20 mm or 5 deg from the truth; "
                      "raw estimate: the tracker's own, before the filter"},
+      {"estimate_error", {{"rms_mm", log.estimate().rmsMm()}, {"max_mm", log.estimate().maxMm}, {"rms_deg", log.estimate().rmsDeg()},
+                          {"max_deg", log.estimate().maxDeg}, {"over", "the tracker's own estimate, tracked frames from convergence on"}}},
+      {"frames_precise", log.framesPrecise()},
       {"max_joint_speed_fraction", log.maxJointSpeedFraction()},
       {"mean_frame_ms", log.meanComputeMs()},
       {"overlays", info.overlays},
@@ -59,6 +62,9 @@ std::string runSummaryText(const RunLog &log, const RunInfo &info)
       << " deg, max " << rest.maxDeg << " deg\n"
       << "  while moving: rms " << moving.rmsMm() << " mm, max " << moving.maxMm << " mm; rotation rms " << moving.rmsDeg()
       << " deg, max " << moving.maxDeg << " deg\n"
+      << "  the tracker's estimate: rms " << log.estimate().rmsMm() << " mm and " << log.estimate().rmsDeg() << " deg, max "
+      << log.estimate().maxMm << " mm and " << log.estimate().maxDeg << " deg; the precise stage gave " << log.framesPrecise() << " of "
+      << log.frames() << " frames\n"
       << "  joint limit violations " << info.jointLimitViolations << ", tracker " << log.meanComputeMs() << " ms per frame\n"
       << "  servoed on " << log.framesServoed() << " frames ("
       << 100.0 * static_cast<double>(log.framesServoed()) / static_cast<double>(std::max(1L, log.frames())) << " %), held on "

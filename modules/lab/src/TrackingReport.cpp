@@ -61,6 +61,19 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
     }
   }
   r.goalsMet = r.goalsMet && r.haveTruth; // nothing to meet them with otherwise
+  double mm2 = 0, deg2 = 0;
+  std::size_t nTruth = 0;
+  for (std::size_t k = from; k < frames.size(); ++k)
+    if (frames[k].haveTruth) {
+      const double mm = translationDistanceMm(frames[k].result.phi, frames[k].truth), deg = rotationDistanceDeg(frames[k].result.phi, frames[k].truth);
+      mm2 += mm * mm, deg2 += deg * deg, ++nTruth;
+      r.positionMaxMm = std::max(r.positionMaxMm, mm);
+      r.rotationMaxDeg = std::max(r.rotationMaxDeg, deg);
+    }
+  if (nTruth > 0) {
+    r.positionRmsMm = std::sqrt(mm2 / static_cast<double>(nTruth));
+    r.rotationRmsDeg = std::sqrt(deg2 / static_cast<double>(nTruth));
+  }
   std::vector<double> ms;
   ms.reserve(frames.size());
   double evals = 0;
@@ -68,6 +81,7 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
     ms.push_back(f.result.computeMs);
     evals += static_cast<double>(f.result.evaluations);
     ++r.states[toString(f.result.state)];
+    r.preciseFrames += f.result.precise ? 1 : 0;
   }
   double sum = 0;
   for (double v : ms)
@@ -118,6 +132,9 @@ std::string trackingSummaryJson(const TrackingReport &report, const TrackingRunI
                          {"errors", errors},
                          {"errors_over", report.convergedFrame >= 0 ? "frames after convergence" : "all frames (never converged)"},
                          {"goals_met", report.goalsMet},
+                         {"position_error_mm", {{"rms", report.positionRmsMm}, {"max", report.positionMaxMm}}},
+                         {"rotation_error_deg", {{"rms", report.rotationRmsDeg}, {"max", report.rotationMaxDeg}}},
+                         {"precise_frames", report.preciseFrames},
                          {"mean_frame_ms", report.meanMs},
                          {"p99_frame_ms", report.p99Ms},
                          {"mean_evaluations_per_frame", report.meanEvaluations},
@@ -144,6 +161,10 @@ std::string trackingSummaryText(const TrackingReport &report, const TrackingRunI
   for (std::size_t i = 0; i < 6 && report.haveTruth; ++i)
     out << std::setprecision(i < 3 ? 2 : 4) << "  " << std::setw(4) << names[i] << ": rms " << report.errors[i].rms << ", max "
         << report.errors[i].max << " (goal " << report.errors[i].goal << ")\n";
+  if (report.haveTruth)
+    out << std::setprecision(2) << "  pose error: rms " << report.positionRmsMm << " mm and " << report.rotationRmsDeg << " deg, max "
+        << report.positionMaxMm << " mm and " << report.rotationMaxDeg << " deg\n";
+  out << "  precise stage: " << report.preciseFrames << " of " << info.frames << " frames\n";
   out << std::setprecision(2) << "  compute per frame: mean " << report.meanMs << " ms, p99 " << report.p99Ms << " ms (" << info.budget
       << " budget)\n";
   return out.str();

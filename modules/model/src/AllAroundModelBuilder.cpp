@@ -402,7 +402,7 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
     StereoRig ideal = rig; // the photos are ideal already
     ideal.left.distortion = ideal.right.distortion = LensDistortion();
     evidence = measureStereo(ideal, cams, out.silhouettes, backgrounds, used, p.backdropHueDeg >= 0, g, p.fusion);
-    out.fusionCarvedCells = evidence.carve(g);
+    out.fusionCarvedCells = evidence.carve(g, usedCams);
     evidence.counts(out.matchedTargetPx, out.matchedBackdropPx);
     if (g.occupied() < 8)
       throw Error("all-around model: the views' depths carve the hull to nothing (the rig's calibration or the poses are off)");
@@ -416,8 +416,8 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   }
   HullMesh mesh = meshField(g, [&](int x, int y, int z) {
     const Vec3 X = g.corner(x, y, z);
-    const double f = hull::field(usedCams, X) * mmPerPx;
-    return p.fusion.enabled ? std::min(f, evidence.field(X)) : f;
+    const double px = hull::field(usedCams, X), f = px * mmPerPx;
+    return p.fusion.enabled ? std::min(f, evidence.fieldInside(X, px)) : f;
   });
   Vec3 mean{0, 0, 0};
   {

@@ -27,6 +27,7 @@ void FusionParams::validate() const
   check(minTexture >= 0 && minTexture <= 255 && uniquenessPercent >= 0 && uniquenessPercent <= 100,
         "the least texture must lie in [0, 255] and the uniqueness in [0, 100] %");
   check(grazingCos >= 0 && grazingCos < 1, "the grazing cosine must lie in [0, 1)");
+  check(outlineMarginPx > 0 && outlineMarginPx <= 100, "the outline margin must lie in (0, 100] px");
   check(edgeRampPx > 0 && edgeRampPx <= 200, "the edge ramp must lie in (0, 200] px");
   check(backdropSearchMm > 0 && backdropSearchMm <= 5000, "the backdrop's search must lie in (0, 5000] mm");
 }
@@ -85,14 +86,14 @@ double DepthEvidence::field(const Vec3 &X) const
   return std::min(surface, behind2);
 }
 
-long DepthEvidence::carve(VisualHull &g) const
+long DepthEvidence::carve(VisualHull &g, const std::vector<const hull::HullCamera *> &cams) const
 {
   long removed = 0;
   for (int z = 0; z < g.n; ++z)
     for (int y = 0; y < g.n; ++y)
       for (int x = 0; x < g.n; ++x) {
         std::uint8_t &o = g.occ[g.idx(x, y, z)];
-        if (o && field(g.centre(x, y, z)) < 0) {
+        if (o && fieldInside(g.centre(x, y, z), hull::field(cams, g.centre(x, y, z))) < 0) {
           o = 0;
           ++removed;
         }

@@ -59,10 +59,11 @@ void ColourHistograms::update(double rateForeground, double rateBackground)
 
 void ColourHistograms::computePosteriors()
 {
-  for (std::size_t i = 0; i < kSize; ++i) {
-    const float s = m_f[i] + m_b[i];
-    m_posterior[i] = s > 0 ? m_f[i] / s : 0.5f;
-  }
+  // A pseudo-count in every bin of both histograms: a colour seen only on one side is very likely
+  // that side's, never certainly. (Certain posteriors make a segment's product collapse to 0 on one
+  // side, and a segment across the outline then counts wholly for the other: a bias of half a segment.)
+  for (std::size_t i = 0; i < kSize; ++i)
+    m_posterior[i] = (m_f[i] + kPseudoCount) / (m_f[i] + m_b[i] + 2 * kPseudoCount);
 }
 
 double ColourHistograms::separation() const

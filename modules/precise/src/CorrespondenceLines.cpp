@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 #include "pm/core/Error.h"
 
 namespace pm {
@@ -63,6 +67,29 @@ inline long pixelAt(const LineCamera &cam, long x, long y)
   const long i = y * cam.w + x;
   return cam.nearest ? cam.nearest[i] : i;
 }
+
+#if defined(__x86_64__) || defined(__i386__)
+bool haveAvx2() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
+
+/*!
+  The distribution for a step of 8 segments, 8 lanes at a time: out[d] = prod_j (f[d + j] hf[j] +
+  b[d + j] hb[j]) for d < D; returns its sum. The same products as the scalar loop, in another order.
+*/
+__attribute__((target("avx2,fma"))) float distribution8(const float *f, const float *b, const float *hf, const float *hb, int D, float *out)
+{
+  const __m256 HF = _mm256_loadu_ps(hf), HB = _mm256_loadu_ps(hb);
+  float area = 0;
+  for (int d = 0; d < D; ++d) {
+    __m256 v = _mm256_fmadd_ps(_mm256_loadu_ps(f + d), HF, _mm256_mul_ps(_mm256_loadu_ps(b + d), HB));
+    __m128 h = _mm_mul_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    h = _mm_mul_ps(h, _mm_movehl_ps(h, h));
+    h = _mm_mul_ss(h, _mm_shuffle_ps(h, h, 1));
+    out[d] = _mm_cvtss_f32(h);
+    area += out[d];
+  }
+  return area;
+}
+#endif
 
 //! A contour point seen by a camera: where it projects, the outline's normal there, pixels per mm at its depth.
 struct Projected
@@ -154,15 +181,22 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
     const double sg = nd > 0 ? 1.0 : -1.0, pxStep = 1.0 / std::fabs(nd);
     const long start = std::lrint(cd - sg * (0.5 * P - 0.5));
     const double t0 = (static_cast<double>(start) - cd) / nd;
+    // The whole line on the image (a straight line: its ends), then its pixels without further checks.
+    const double mStart = cMinor + t0 * nm, mStep = pxStep * nm, mEnd = mStart + (P - 1) * mStep;
+    const long majorEnd = start + static_cast<long>(sg) * (P - 1);
+    const long majorMax = alongU ? cam.w : cam.h, minorMax = alongU ? cam.h : cam.w;
+    if (std::min(start, majorEnd) < 0 || std::max(start, majorEnd) >= majorMax || std::min(mStart, mEnd) < -0.5 ||
+        std::max(mStart, mEnd) + 0.5 >= static_cast<double>(minorMax))
+      continue;
+    const long majorStep = alongU ? static_cast<long>(sg) : static_cast<long>(sg) * cam.w, minorStride = alongU ? cam.w : 1;
+    long major = alongU ? start : start * cam.w;
+    double mc = mStart + 0.5; // rounded by truncation: mc >= 0 here
     bool ok = true;
     for (int s = 0; s < L && ok; ++s) {
       float pf = 1.f, pb = 1.f;
-      for (int j = 0; j < scale; ++j) {
-        const int px = s * scale + j;
-        const double t = t0 + px * pxStep;
-        const long d0 = start + static_cast<long>(sg) * px, m0 = std::lrint(cMinor + t * nm);
-        const long idx = alongU ? pixelAt(cam, d0, m0) : pixelAt(cam, m0, d0);
-        if (idx < 0) {
+      for (int j = 0; j < scale; ++j, major += majorStep, mc += mStep) {
+        long idx = major + static_cast<long>(mc) * minorStride;
+        if (cam.nearest && (idx = cam.nearest[idx]) < 0) {
           ok = false;
           break;
         }
@@ -178,14 +212,20 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
       continue;
     // The outline's position: the smoothed step slid along the line.
     float area = 0;
-    for (int d = 0; d < D; ++d) {
-      float p = 1.f;
-      for (int j = 0; j < F; ++j)
-        p *= m_segF[static_cast<std::size_t>(d + j)] * shape.foreground[static_cast<std::size_t>(j)] +
-             m_segB[static_cast<std::size_t>(d + j)] * shape.background[static_cast<std::size_t>(j)];
-      m_dist[static_cast<std::size_t>(d)] = p;
-      area += p;
-    }
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool avx2 = haveAvx2();
+    if (avx2 && F == 8)
+      area = distribution8(m_segF.data(), m_segB.data(), shape.foreground.data(), shape.background.data(), D, m_dist.data());
+    else
+#endif
+      for (int d = 0; d < D; ++d) {
+        float p = 1.f;
+        for (int j = 0; j < F; ++j)
+          p *= m_segF[static_cast<std::size_t>(d + j)] * shape.foreground[static_cast<std::size_t>(j)] +
+               m_segB[static_cast<std::size_t>(d + j)] * shape.background[static_cast<std::size_t>(j)];
+        m_dist[static_cast<std::size_t>(d)] = p;
+        area += p;
+      }
     if (!(area > 0))
       continue;
     double mean = 0, var = 0;

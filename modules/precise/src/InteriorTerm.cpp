@@ -25,6 +25,7 @@ InteriorTerm::InteriorTerm(const PhotoModel &model, std::size_t maxPoints)
       m_points.push_back(p);
     }
     v.end = m_points.size();
+    m_maxPoints = std::max(m_maxPoints, v.end - v.begin);
     m_views.push_back(v);
   };
   add(model.inner);
@@ -47,7 +48,7 @@ inline bool pixel(const LineCamera &cam, long x, long y, double rgb[3])
   return true;
 }
 
-//! The chromaticity at (u, v), bilinear in the colour; false off the image.
+//! The chromaticity at (\e u, \e v), bilinear in the colour; false off the image.
 inline bool chromaAt(const LineCamera &cam, double u, double v, double out[2])
 {
   const long x = static_cast<long>(std::floor(u)), y = static_cast<long>(std::floor(v));
@@ -62,15 +63,28 @@ inline bool chromaAt(const LineCamera &cam, double u, double v, double out[2])
   return true;
 }
 
+//! The chromaticity at (\e u, \e v) and its gradient by central differences over \e h pixels; false off the image.
+inline bool chromaAndGradient(const LineCamera &cam, double u, double v, double h, double c[2], double dc[2][2])
+{
+  double cu0[2], cu1[2], cv0[2], cv1[2];
+  if (!chromaAt(cam, u, v, c) || !chromaAt(cam, u - h, v, cu0) || !chromaAt(cam, u + h, v, cu1) || !chromaAt(cam, u, v - h, cv0) ||
+      !chromaAt(cam, u, v + h, cv1))
+    return false;
+  for (int ch = 0; ch < 2; ++ch) {
+    dc[ch][0] = (cu1[ch] - cu0[ch]) / (2 * h);
+    dc[ch][1] = (cv1[ch] - cv0[ch]) / (2 * h);
+  }
+  return true;
+}
+
 } // namespace
 
-std::size_t InteriorTerm::accumulate(const LineCamera &cam, std::size_t view, const Phi &phi, double h, double sigma, double weight,
-                                     double g[6], double H[36], double *residual2) const
+namespace {
+
+//! cMo of \e cam at \e phi (R row-major, t in mm) and hRo.
+void composeCamera(const LineCamera &cam, const Phi &phi, double R[9], double t[3], Rot3 &hRo)
 {
-  if (view >= m_views.size())
-    return 0;
-  const Rot3 hRo = rotationOf(phi);
-  double R[9], t[3];
+  hRo = rotationOf(phi);
   const double th[3] = {phi.x, phi.y, phi.z};
   for (int r = 0; r < 3; ++r) {
     for (int k = 0; k < 3; ++k)
@@ -78,30 +92,70 @@ std::size_t InteriorTerm::accumulate(const LineCamera &cam, std::size_t view, co
                      cam.R[3 * r + 2] * hRo[static_cast<std::size_t>(6 + k)];
     t[r] = cam.R[3 * r] * th[0] + cam.R[3 * r + 1] * th[1] + cam.R[3 * r + 2] * th[2] + cam.t[r];
   }
-  const double inv2 = weight / (sigma * sigma), huber = 2.0 * sigma;
-  double Hl[21] = {0};
-  std::size_t used = 0;
-  for (std::size_t i = m_views[view].begin; i < m_views[view].end; ++i) {
+}
+
+} // namespace
+
+std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const Phi &phi, double h, InteriorSamples &s) const
+{
+  s.n = 0;
+  if (view >= m_views.size())
+    return 0;
+  double R[9], t[3];
+  Rot3 hRo;
+  composeCamera(cam, phi, R, t, hRo);
+  for (std::size_t i = m_views[view].begin; i < m_views[view].end && s.n < s.samples.size(); ++i) {
     const Point &p = m_points[i];
     double Xc[3];
     for (int r = 0; r < 3; ++r)
       Xc[r] = R[3 * r] * p.X[0] + R[3 * r + 1] * p.X[1] + R[3 * r + 2] * p.X[2] + t[r];
     if (!(Xc[2] > 1.0))
       continue;
-    const double iz = 1.0 / Xc[2], u = cam.px * Xc[0] * iz + cam.u0, v = cam.py * Xc[1] * iz + cam.v0;
-    double c[2], cu0[2], cu1[2], cv0[2], cv1[2];
-    if (!chromaAt(cam, u, v, c) || !chromaAt(cam, u - h, v, cu0) || !chromaAt(cam, u + h, v, cu1) || !chromaAt(cam, u, v - h, cv0) ||
-        !chromaAt(cam, u, v + h, cv1))
+    const double u = cam.px * Xc[0] / Xc[2] + cam.u0, v = cam.py * Xc[1] / Xc[2] + cam.v0;
+    double c[2], dc[2][2];
+    if (!chromaAndGradient(cam, u, v, h, c, dc))
+      continue;
+    InteriorSamples::Sample &m = s.samples[s.n++];
+    for (int k = 0; k < 3; ++k)
+      m.X[k] = p.X[k];
+    m.u = static_cast<float>(u), m.v = static_cast<float>(v);
+    for (int ch = 0; ch < 2; ++ch) {
+      m.c[ch] = static_cast<float>(c[ch]);
+      m.dc[ch][0] = static_cast<float>(dc[ch][0]);
+      m.dc[ch][1] = static_cast<float>(dc[ch][1]);
+      m.model[ch] = p.c[ch];
+    }
+  }
+  return s.n;
+}
+
+std::size_t InteriorTerm::accumulate(const LineCamera &cam, const Phi &phi, const InteriorSamples &s, double sigma, double weight,
+                                     double g[6], double H[36], double *residual2)
+{
+  double R[9], t[3];
+  Rot3 hRo;
+  composeCamera(cam, phi, R, t, hRo);
+  const double inv2 = weight / (sigma * sigma), huber = 2.0 * sigma;
+  double Hl[21] = {0};
+  std::size_t used = 0;
+  for (std::size_t i = 0; i < s.n; ++i) {
+    const InteriorSamples::Sample &m = s.samples[i];
+    double Xc[3];
+    for (int r = 0; r < 3; ++r)
+      Xc[r] = R[3 * r] * m.X[0] + R[3 * r + 1] * m.X[1] + R[3 * r + 2] * m.X[2] + t[r];
+    if (!(Xc[2] > 1.0))
       continue;
     ++used;
-    const double r[2] = {c[0] - p.c[0], c[1] - p.c[1]};
+    const double iz = 1.0 / Xc[2], du = cam.px * Xc[0] * iz + cam.u0 - m.u, dv = cam.py * Xc[1] * iz + cam.v0 - m.v;
+    // The image's chromaticity where the point projects now, linearised about where it was measured.
+    const double r[2] = {m.c[0] + m.dc[0][0] * du + m.dc[0][1] * dv - m.model[0], m.c[1] + m.dc[1][0] * du + m.dc[1][1] * dv - m.model[1]};
     const double norm = std::sqrt(r[0] * r[0] + r[1] * r[1]);
     const double w = norm <= huber ? 1.0 : huber / norm;
     if (residual2)
       *residual2 += r[0] * r[0] + r[1] * r[1];
     // The pixel's motion per twist: d(u, v)/dX_c, into the hand frame, then [g_h, a x g_h].
-    const double a[3] = {hRo[0] * p.X[0] + hRo[1] * p.X[1] + hRo[2] * p.X[2], hRo[3] * p.X[0] + hRo[4] * p.X[1] + hRo[5] * p.X[2],
-                         hRo[6] * p.X[0] + hRo[7] * p.X[1] + hRo[8] * p.X[2]};
+    const double a[3] = {hRo[0] * m.X[0] + hRo[1] * m.X[1] + hRo[2] * m.X[2], hRo[3] * m.X[0] + hRo[4] * m.X[1] + hRo[5] * m.X[2],
+                         hRo[6] * m.X[0] + hRo[7] * m.X[1] + hRo[8] * m.X[2]};
     double Ju[6], Jv[6];
     for (int axis = 0; axis < 2; ++axis) {
       const double gc[3] = {axis == 0 ? cam.px * iz : 0.0, axis == 1 ? cam.py * iz : 0.0,
@@ -114,10 +168,9 @@ std::size_t InteriorTerm::accumulate(const LineCamera &cam, std::size_t view, co
       J[3] = a[1] * gh[2] - a[2] * gh[1], J[4] = a[2] * gh[0] - a[0] * gh[2], J[5] = a[0] * gh[1] - a[1] * gh[0];
     }
     for (int ch = 0; ch < 2; ++ch) {
-      const double du = (cu1[ch] - cu0[ch]) / (2 * h), dv = (cv1[ch] - cv0[ch]) / (2 * h);
       double J[6];
       for (int k = 0; k < 6; ++k)
-        J[k] = du * Ju[k] + dv * Jv[k];
+        J[k] = m.dc[ch][0] * Ju[k] + m.dc[ch][1] * Jv[k];
       for (int k = 0; k < 6; ++k)
         g[k] -= w * inv2 * r[ch] * J[k];
       for (int r0 = 0, k = 0; r0 < 6; ++r0)

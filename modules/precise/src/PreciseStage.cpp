@@ -17,12 +17,16 @@ void PreciseParams::validate() const
       throw Error(std::string("precise stage: ") + what);
   };
   check(lines >= 8 && lines <= 10000, "the lines per camera must lie in [8, 10000]");
-  check(!scales.empty() && scales.size() <= 16, "give 1 to 16 scales");
-  check(sigmasPx.size() == scales.size(), "give one sigma per scale");
-  for (int s : scales)
-    check(s >= 1 && s <= 16, "a scale must lie in [1, 16] px per segment");
-  for (double s : sigmasPx)
-    check(s > 0 && s <= 1000, "a sigma must lie in (0, 1000] px");
+  for (const auto *sc : {&scales, &nearScales}) {
+    check(!sc->empty() && sc->size() <= 16, "give 1 to 16 scales");
+    for (int s : *sc)
+      check(s >= 1 && s <= 16, "a scale must lie in [1, 16] px per segment");
+  }
+  check(sigmasPx.size() == scales.size() && nearSigmasPx.size() == nearScales.size(), "give one sigma per scale");
+  for (const auto *sg : {&sigmasPx, &nearSigmasPx})
+    for (double s : *sg)
+      check(s > 0 && s <= 1000, "a sigma must lie in (0, 1000] px");
+  check(interiorMaxScale >= 1 && interiorMaxScale <= 16, "the interior term's largest scale must lie in [1, 16]");
   check(updatesPerScale >= 1 && updatesPerScale <= 20, "the steps per scale must lie in [1, 20]");
   check(minContinuous >= 0 && minContinuous <= 100, "the continuous segments must lie in [0, 100]");
   check(regularisationRotation >= 0 && regularisationTranslation >= 0 && std::isfinite(regularisationRotation) &&
@@ -48,6 +52,8 @@ PreciseStage::PreciseStage(const StereoRig &rig, const PhotoModel &model, const 
   int maxScale = 1;
   for (int s : m_params.scales)
     maxScale = std::max(maxScale, s);
+  for (int s : m_params.nearScales)
+    maxScale = std::max(maxScale, s);
   for (std::size_t k = 0; k < 2; ++k) {
     LineCamera &c = m_cams[k];
     const vpHomogeneousMatrix cMh = rc[k]->cMh();
@@ -65,7 +71,11 @@ PreciseStage::PreciseStage(const StereoRig &rig, const PhotoModel &model, const 
     m_lines[k] = std::make_unique<CorrespondenceLines>(m_params.lines, m_params.shape.segments(), maxScale);
   }
   if (m_params.interiorPoints > 0 && m_params.interiorWeight > 0 && model.hasColours)
+  {
     m_interior = std::make_unique<InteriorTerm>(model, m_params.interiorPoints);
+    for (InteriorSamples &smp : m_samples)
+      m_interior->reserve(smp);
+  }
   m_modelF = model.foregroundHistogram;
   m_modelB = model.backgroundHistogram;
   resetColours();
@@ -86,7 +96,7 @@ void PreciseStage::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> 
   m_hasImages = true;
 }
 
-PreciseResult PreciseStage::refine(const Phi &start)
+PreciseResult PreciseStage::refine(const Phi &start, bool near)
 {
   if (!m_hasImages)
     throw Error("precise stage: refine() before setImages()");
@@ -99,21 +109,24 @@ PreciseResult PreciseStage::refine(const Phi &start)
   const PreciseParams &p = m_params;
   Phi phi = start;
   std::size_t n[2] = {0, 0};
-  for (std::size_t si = 0; si < p.scales.size(); ++si) {
-    const int scale = p.scales[si];
+  const std::vector<int> &scales = near ? p.nearScales : p.scales;
+  const std::vector<double> &sigmas = near ? p.nearSigmasPx : p.sigmasPx;
+  for (std::size_t si = 0; si < scales.size(); ++si) {
+    const int scale = scales[si];
+    const bool interior = m_interior && scale <= p.interiorMaxScale;
     BatchPool::shared().run(2, [&](std::size_t k) {
       n[k] = m_lines[k]->measure(m_cams[k], m_outlines, phi, p.shape, m_colours, scale, p.lines, p.minContinuous);
     });
     if (n[0] + n[1] < p.minLines)
       return res; // too little of the outline to go on: the start stays
-    const double sigma = p.sigmasPx[si];
+    const double sigma = sigmas[si];
     const double weight = p.shape.minVariance * scale * scale / (sigma * sigma);
     for (int it = 0; it < p.updatesPerScale; ++it) {
       double g[2][6] = {{0}}, H[2][36] = {{0}};
       BatchPool::shared().run(2, [&](std::size_t k) {
         m_lines[k]->accumulate(m_cams[k], phi, weight, g[k], H[k], nullptr);
-        if (m_interior)
-          m_interior->accumulate(m_cams[k], m_lines[k]->viewpoint(), phi, scale, p.interiorSigma, p.interiorWeight, g[k], H[k], nullptr);
+        if (interior && m_interior->measure(m_cams[k], m_lines[k]->viewpoint(), phi, scale, m_samples[k]) > 0)
+          InteriorTerm::accumulate(m_cams[k], phi, m_samples[k], p.interiorSigma, p.interiorWeight, g[k], H[k], nullptr);
       });
       Eigen::Matrix<double, 6, 6> A;
       Eigen::Matrix<double, 6, 1> b;

@@ -339,7 +339,7 @@ bool PhotoModelTracker::refinePrecise(TrackResult &r, const Frame &f)
   double bestF = 0;
   bool found = false;
   if (haveLast) {
-    const PreciseResult fromLast = m_precise->refine(m_last.phi);
+    const PreciseResult fromLast = m_precise->refine(m_last.phi, true); // the target moves little between frames
     r.preciseResult = fromLast;
     found = acceptable(fromLast, m_last.phi, bestF);
     if (found)

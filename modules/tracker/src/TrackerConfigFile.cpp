@@ -45,7 +45,36 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
       })
       .value("smooth_ascent_max_drop", p.smoothAscentMaxDrop)
       .value("reject_margin_q", p.rejectMarginQ)
-      .value("coarse_search", p.coarseSearch);
+      .value("coarse_search", p.coarseSearch)
+      .value("precise_stage", p.preciseStage)
+      .value("precise_max_drop_q", p.preciseMaxDropQ)
+      .value("precise_max_move_mm", p.preciseMaxMoveMm)
+      .value("precise_max_move_deg", p.preciseMaxMoveDeg)
+      .value("precise_restart_mm", p.preciseRestartMm)
+      .value("precise_restart_deg", p.preciseRestartDeg)
+      .section("precise", [&](V &q) {
+        q.value("lines", p.precise.lines)
+            .value("scales", p.precise.scales)
+            .value("sigmas_px", p.precise.sigmasPx)
+            .value("near_scales", p.precise.nearScales)
+            .value("near_sigmas_px", p.precise.nearSigmasPx)
+            .value("interior_max_scale", p.precise.interiorMaxScale)
+            .value("updates_per_scale", p.precise.updatesPerScale)
+            .value("function_length", p.precise.shape.functionLength)
+            .value("distribution_length", p.precise.shape.distributionLength)
+            .value("amplitude", p.precise.shape.amplitude)
+            .value("slope", p.precise.shape.slope)
+            .value("min_continuous", p.precise.minContinuous)
+            .value("regularisation_rotation", p.precise.regularisationRotation)
+            .value("regularisation_translation", p.precise.regularisationTranslation)
+            .value("learning_rate", p.precise.learningRate)
+            .value("histogram_skip_px", p.precise.histogramSkipPx)
+            .value("histogram_max_px", p.precise.histogramMaxPx)
+            .value("min_lines", p.precise.minLines)
+            .value("interior_points", p.precise.interiorPoints)
+            .value("interior_sigma", p.precise.interiorSigma)
+            .value("interior_weight", p.precise.interiorWeight);
+      });
   for (const auto &named : {std::pair<const char *, TiltFilterParams *>{"tilt_filter", &p.tiltFilter},
                              std::pair<const char *, TiltFilterParams *>{"tilt_filter_all_around", &p.tiltFilterAllAround}}) {
     TiltFilterParams *filter = named.second; // not a structured binding: a lambda may not capture one in C++17

@@ -37,7 +37,13 @@ struct LoopParams
   double fps = 30;          //!< camera rate, also the servo rate (frames per second)
   double robotDt = 0.002;   //!< integration step of the robot (its servo cycle, s; at most 1 / fps)
   bool oracle = false;      //!< servo on the true pose instead of the estimate
-  bool filter = true;       //!< filter the estimate (alpha-beta, in the base frame) and feed its velocity forward
+  /*!
+    Filter the estimate (alpha-beta, in the base frame) and feed its velocity forward: on or off,
+    or Auto: on for a tracker without the precise stage (RM-GA's estimates wander over the hue
+    fitness's plateau), off with it (its estimates are within a few tenths of a millimetre and degree,
+    the filter's lag would cost more: measured in docs/precise-stage.md).
+  */
+  enum class Filter { Auto, On, Off } filter = Filter::Auto;
   PoseFilterParams filterParams; //!< the gains of that filter
   /*!
     Fail-safe on the quality q: the servo also stops when q falls more than this under its recent
@@ -136,6 +142,11 @@ public:
   const sim::StereoImages &images() const { return m_images; }
   //! The photo-model tracker.
   const PhotoModelTracker &tracker() const { return m_tracker; }
+  //! Whether the estimate is filtered (LoopParams::filter, Auto resolved for this tracker).
+  bool filtering() const
+  {
+    return m_lp.filter == LoopParams::Filter::On || (m_lp.filter == LoopParams::Filter::Auto && !m_tracker.hasPreciseStage());
+  }
   //! The simulated PA-10 that carries the rig.
   const sim::RobotPA10 &robot() const { return m_robot; }
   //! The TC-robot that moves the target.

@@ -108,6 +108,10 @@ public:
   long framesHeld() const { return m_held; }
   //! Frames the servo acted on (LoopFrame::servoing).
   long framesServoed() const { return m_servoed; }
+  //! The tracker's own estimate against the truth over the tracked frames from convergence on (ErrorStats: rms and max).
+  const ErrorStats &estimate() const { return m_estimate; }
+  //! Frames whose pose the precise stage gave (TrackResult::precise).
+  long framesPrecise() const { return m_precise; }
   //! The tracker's mean time per frame (TrackResult::computeMs, ms; 0 without frames).
   double meanComputeMs() const { return m_frames ? m_sumMs / static_cast<double>(m_frames) : 0; }
   //! The decimated record for the plots (the last, partial bucket only after finish()).
@@ -130,7 +134,8 @@ private:
   std::array<ErrorStats, 10> m_tenths{};
   int m_violations = 0;
   double m_maxSpeedFraction = 0, m_sumMs = 0;
-  long m_servoedOnWrong = 0, m_servoedOnWrongRaw = 0, m_held = 0, m_servoed = 0;
+  long m_servoedOnWrong = 0, m_servoedOnWrongRaw = 0, m_held = 0, m_servoed = 0, m_precise = 0;
+  ErrorStats m_estimate;
   std::vector<RunSample> m_samples;
   RunSample m_open;
   long m_inBucket = 0;

@@ -51,6 +51,14 @@ struct TrackingReport
   double p99Ms = 0;           //!< its 99th percentile (ms, pm::percentile)
   double meanEvaluations = 0; //!< mean TrackResult::evaluations per frame
   std::map<std::string, int> states; //!< frames per tracker state ("searching", "tracking", "lost")
+  long preciseFrames = 0;     //!< frames whose pose the precise stage gave (TrackResult::precise)
+  /*! \var TrackingReport::positionRmsMm
+      \brief rms distance of the estimate's position to the truth over the frames after convergence (mm)
+      \var TrackingReport::positionMaxMm
+      \brief its largest value (mm)
+      \var TrackingReport::rotationRmsDeg
+      \brief rms angle between the estimate's rotation and the truth's (deg) */
+  double positionRmsMm = 0, positionMaxMm = 0, rotationRmsDeg = 0, rotationMaxDeg = 0; //!< its largest value (deg)
   //! The names of the pose variables, in the order of \e errors.
   static const std::array<const char *, 6> &names();
 };

@@ -25,6 +25,7 @@
       const pm::DepthEvidence ev = pm::measureStereo(idealRig, cams, masks, backgrounds, used, false, hull, params);
       const long removed = ev.carve(hull);
 */
+#include <algorithm>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -45,6 +46,7 @@ struct FusionParams
   double maxDisparitySpreadPx = 1.0; //!< a pixel's neighbouring disparities must agree within this (px)
   int erodePx = 3;              //!< the silhouette is eroded by this before matching (its edge mixes target and backdrop)
   double edgeRampPx = 10;       //!< a view's depth counts fully this far inside its eroded silhouette, less nearer its edge (px)
+  double outlineMarginPx = 4;   //!< the depths carve nothing that projects within this of any silhouette's edge (fieldInside(); px)
   double grazingCos = 0.3;      //!< a depth whose surface faces the view at a cosine under this counts nothing (full weight half way to 1)
   double backdropSearchMm = 300; //!< the backdrop is searched this far behind the hull (mm)
   bool fastMatching = true;     //!< the matcher's three-path mode (StereoDepth.h), about 3 times faster than eight paths
@@ -82,8 +84,18 @@ public:
     +inf where no view says anything.
   */
   double field(const hull::Vec3 &X) const;
-  //! Empties the occupied cells of \e hull whose centre the evidence puts outside; returns how many.
-  long carve(VisualHull &hull) const;
+  /*!
+    The evidence's field at \e X where the silhouettes' field there is \e silhouettePx (VisualHull.h:
+    how far inside every silhouette X projects, px): within outlineMarginPx of a silhouette's edge
+    the evidence is raised until, at the edge, it cannot carve. The outline the pass's views saw is
+    the silhouettes', which know it to a fraction of a pixel; the depths carve behind it.
+  */
+  double fieldInside(const hull::Vec3 &X, double silhouettePx) const
+  {
+    return field(X) + params.truncationMm * std::max(0.0, 1.0 - silhouettePx / params.outlineMarginPx);
+  }
+  //! Empties the occupied cells of \e hull whose centre the evidence puts outside (fieldInside() with \e cams' silhouettes); returns how many.
+  long carve(VisualHull &hull, const std::vector<const hull::HullCamera *> &cams) const;
   //! Pixels with a measured depth: target and backdrop, over every view.
   void counts(long &target, long &backdrop) const;
 };

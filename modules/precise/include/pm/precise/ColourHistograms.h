@@ -42,6 +42,7 @@ public:
   static constexpr int kBins = PhotoModel::kColourBins;           //!< bins per channel
   static constexpr int kShift = 4;                                //!< 256 / kBins = 2^kShift
   static constexpr std::size_t kSize = static_cast<std::size_t>(kBins) * kBins * kBins; //!< bins in all
+  static constexpr float kPseudoCount = 2e-4f; //!< added to every bin of both histograms for the posteriors (about one sample of a few thousand)
 
   ColourHistograms();
 
@@ -70,7 +71,7 @@ public:
   void update(double rateForeground, double rateBackground);
   //! Foreground and background histograms both known.
   bool ready() const { return m_ready; }
-  //! P(foreground | colour of bin \e b), in [0, 1] (0.5 where neither histogram has the colour).
+  //! P(foreground | colour of bin \e b), in (0, 1) (0.5 where neither histogram has the colour; see kPseudoCount).
   float posteriorOfBin(std::size_t b) const { return m_posterior[b]; }
   //! P(foreground | \e c).
   float posterior(const vpRGBa &c) const { return m_posterior[bin(c)]; }

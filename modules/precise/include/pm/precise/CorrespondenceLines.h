@@ -66,7 +66,13 @@ struct LineShape
   static constexpr int kMaxFunction = 16;     //!< longest smoothed step (segments)
   static constexpr int kMaxDistribution = 32; //!< longest distribution (segments)
   int functionLength = 8;      //!< segments the smoothed step spans
-  int distributionLength = 12; //!< positions of the outline considered along a line
+  /*!
+    Positions of the outline considered along a line. Odd, with an even step: the line's centre (the
+    contour point's projection) is then a segment boundary, one of the positions; with an even length
+    an outline right at the centre would fall mid-segment, where the segment's pixels tie and the
+    tie's winner moves the measure by half a segment.
+  */
+  int distributionLength = 13;
   double amplitude = 0.43;     //!< the step goes from 0.5 + amplitude to 0.5 - amplitude
   double slope = 0.5;          //!< its width (segments)
   std::array<float, kMaxFunction> foreground{}; //!< the step's values on the target's side (prepare())

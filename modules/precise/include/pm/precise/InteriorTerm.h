@@ -6,12 +6,14 @@
   outline pin it. Each S_in point of the viewpoint nearest the camera carries the surface's colour
   (PhotoModel::hasColours); at the pose being refined it should see that colour in the image. The
   residual is the difference of chromaticities (two opponent channels divided by the brightness, so
-  that shading and exposure change it little), its Jacobian the image's chromaticity gradient (central
-  differences over \e stepPx pixels, wider at the coarse scales) times the point's projection
-  Jacobian; a Huber weight bounds what a shadow, a highlight or an occluder can do.
+  that shading and exposure change it little), its Jacobian the image's chromaticity gradient (over
+  the segment's length) times the point's projection Jacobian, linearised at each Gauss-Newton step
+  (the texture varies over a pixel or two); a Huber weight bounds what a shadow, a highlight or an
+  occluder can do.
 
       pm::InteriorTerm interior(model, 200);
-      interior.accumulate(camera, view, phi, 1.0, 0.05, 1.0, g, H, nullptr);
+      interior.measure(camera, view, phi, 1.0, samples);          // at each step
+      pm::InteriorTerm::accumulate(camera, phi, samples, 0.05, 1.0, g, H, nullptr); // each step
 */
 #include <cstddef>
 #include <vector>
@@ -23,13 +25,37 @@
 namespace pm {
 
 /*!
+  One camera's interior samples, measured at a pose (InteriorTerm::measure()): for each point, where
+  it projected, the image's chromaticity there and its gradient. Held by the caller per camera, so
+  that the Gauss-Newton steps read them without touching the image (the term linearised once per
+  measurement, as the lines are).
+*/
+struct InteriorSamples
+{
+  //! One point as measured.
+  struct Sample
+  {
+    float X[3];     //!< in the model frame (mm)
+    float u, v;     //!< where it projected at the measurement (px)
+    float c[2];     //!< the image's chromaticity there
+    float dc[2][2]; //!< its gradient: dc[k][0] = d c_k / du, dc[k][1] = d c_k / dv
+    float model[2]; //!< the model's chromaticity
+  };
+  std::vector<Sample> samples; //!< reserved once (no allocation while measuring)
+  std::size_t n = 0;           //!< the samples of the last measurement
+};
+
+/*!
   The interior colour term of the precise stage (see InteriorTerm.h): the S_in points of every
   viewpoint with their colour, in the order of OutlineViews (the model's own view, then its views).
-  accumulate() allocates nothing.
+  measure() and accumulate() allocate nothing once the samples are reserved (reserve()).
   \code
   const pm::InteriorTerm interior(model, 200);  // model.hasColours
+  pm::InteriorSamples s;
+  interior.reserve(s);
+  interior.measure(camera, outlines.nearest(c), phi, 1.0, s);
   double g[6] = {0}, H[36] = {0};
-  interior.accumulate(camera, outlines.nearest(c), phi, 1.0, 0.05, 1.0, g, H, nullptr);
+  pm::InteriorTerm::accumulate(camera, phi, s, 0.05, 1.0, g, H, nullptr);
   \endcode
 */
 class InteriorTerm
@@ -46,14 +72,23 @@ public:
     chosen). Throws pm::Error unless the model carries colours.
   */
   InteriorTerm(const PhotoModel &model, std::size_t maxPoints);
+  //! Reserves \e s for the largest viewpoint.
+  void reserve(InteriorSamples &s) const { s.samples.resize(m_maxPoints); }
+  /*!
+    Measures the points of viewpoint \e view in camera \e cam at pose \e phi: the chromaticity where
+    each projects (bilinear) and its gradient (central differences over \e stepPx pixels: wider at
+    the coarse scales, a smoother texture). Points off the image are left out. Returns the samples kept.
+  */
+  std::size_t measure(const LineCamera &cam, std::size_t view, const Phi &phi, double stepPx, InteriorSamples &s) const;
   /*!
     Adds \e weight times the term's gradient (of the log-likelihood, 6, twist) to \e g and its
-    Gauss-Newton information to \e H, for camera \e cam at pose \e phi with the points of viewpoint
-    \e view; \e sigma is the chromaticity's noise, \e stepPx the gradient's half-width. \e residual2
-    (when given) gets the sum of squared residuals of the points used. Returns the points used.
+    Gauss-Newton information to \e H, for camera \e cam at pose \e phi from its measured samples
+    \e s (the image's chromaticity linearised about each sample's measured place); \e sigma is the
+    chromaticity's noise (a Huber weight beyond twice it). \e residual2 (when given) gets the sum of
+    squared residuals. Returns the samples used.
   */
-  std::size_t accumulate(const LineCamera &cam, std::size_t view, const Phi &phi, double stepPx, double sigma, double weight,
-                         double g[6], double H[36], double *residual2) const;
+  static std::size_t accumulate(const LineCamera &cam, const Phi &phi, const InteriorSamples &s, double sigma, double weight, double g[6],
+                                double H[36], double *residual2);
   //! The chromaticity of a colour: (R - G, R + G - 2 B) / (R + G + B + 30), each in about [-1, 1].
   static void chroma(double r, double g, double b, double out[2])
   {
@@ -70,6 +105,7 @@ private:
   };
   std::vector<View> m_views;
   std::vector<Point> m_points;
+  std::size_t m_maxPoints = 0;
 };
 
 } // namespace pm

@@ -46,6 +46,9 @@ struct PreciseParams
   std::size_t lines = 150;               //!< correspondence lines per camera (at most; the viewpoint's contour points)
   std::vector<int> scales{5, 2, 1, 1};   //!< pixels per segment, one measurement each, coarse to fine
   std::vector<double> sigmasPx{12, 4, 1.5, 1.5}; //!< per scale: the lines' weight is the least variance over this squared (px)
+  std::vector<int> nearScales{2, 1, 1};  //!< the scales from a start known to be near (refine(start, true): the last frame's pose)
+  std::vector<double> nearSigmasPx{4, 1.5, 1.5}; //!< their sigmas
+  int interiorMaxScale = 16;             //!< the interior term joins from this scale down (px per segment; 16: at every scale)
   int updatesPerScale = 2;               //!< Gauss-Newton steps per measurement
   LineShape shape;                       //!< the smoothed step and the distribution's length (segments)
   double minContinuous = 3;              //!< a line needs this many segments of target and of background
@@ -56,7 +59,7 @@ struct PreciseParams
   double histogramMaxPx = 20;            //!< ... to this far (px)
   std::size_t minLines = 24;             //!< fewer lines in both cameras: no result (PreciseResult::ok false)
   std::size_t interiorPoints = 200;      //!< the interior term's points per camera (InteriorTerm.h; 0: off, the outline alone)
-  double interiorSigma = 0.1;            //!< the chromaticity's noise the interior term assumes
+  double interiorSigma = 0.05;           //!< the chromaticity's noise the interior term assumes
   double interiorWeight = 1.0;           //!< the interior term's weight beside the outline's
 
   //! Throws pm::Error naming the first parameter out of range.
@@ -112,8 +115,12 @@ public:
     last refine() or learnColours() on them. Throws pm::Error if a size is not its camera's.
   */
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
-  //! Refines \e start on the images (see PreciseStage.h). Throws pm::Error for no images or an invalid start.
-  PreciseResult refine(const Phi &start);
+  /*!
+    Refines \e start on the images (see PreciseStage.h): with every scale, or, \e near (a start known
+    to lie within a few pixels, e.g. the last frame's pose while tracking), with nearScales only.
+    Throws pm::Error for no images or an invalid start.
+  */
+  PreciseResult refine(const Phi &start, bool near = false);
   /*!
     Blends this frame's colours along the outline at \e phi into the histograms (learningRate; the
     whole of them when the model gave none and none were learnt yet).
@@ -134,6 +141,7 @@ private:
   std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort;
   std::array<std::unique_ptr<CorrespondenceLines>, 2> m_lines;
   std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
+  std::array<InteriorSamples, 2> m_samples;  //!< each camera's interior samples of the last measurement
   ColourHistograms m_colours;
   std::vector<float> m_modelF, m_modelB;
   bool m_hasImages = false;

@@ -1,0 +1,80 @@
+//! pm-bench: the precise stage alone, and a tracked frame of the all-around model with and without it.
+#include <benchmark/benchmark.h>
+
+#include "pm/io/RigFile.h"
+#include "pm/lab/LabModel.h"
+#include "pm/precise/PreciseStage.h"
+#include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/PhotoModelTracker.h"
+
+#include "BenchSetup.h"
+
+namespace {
+
+using pm::bench::setup;
+
+//! The crab's all-around model (the lab's pass: about 6 s), its pair at a tilted pose and the truth, made on first use.
+struct AllAround
+{
+  pm::sim::Scene scene{pm::sim::makeTarget("C12")};
+  pm::sim::SimulatedPhotoModel model = pm::lab::makeLabModel(scene, setup().rig, pm::lab::LabModelChoice());
+  vpHomogeneousMatrix hMo = vpHomogeneousMatrix(0.01, -0.005, 0.51, vpMath::rad(15), vpMath::rad(-10), 0);
+  pm::sim::StereoImages images = scene.renderStereo(setup().rig, hMo, 0);
+  pm::Phi truth = model.truth(hMo);
+};
+const AllAround &allAround()
+{
+  static const AllAround a;
+  return a;
+}
+
+/*!
+  PreciseStage::refine() from 1 mm and 1 deg off the truth (a tracked frame's start), on the crab's
+  all-around model: the outline's lines in both cameras with the interior term, and without it (its peer).
+*/
+void preciseRefine(benchmark::State &state, bool interior)
+{
+  const AllAround &a = allAround();
+  pm::PreciseParams p;
+  if (!interior)
+    p.interiorPoints = 0;
+  pm::PreciseStage precise(setup().rig, a.model.build.model, p);
+  precise.setImages(a.images.left, a.images.right);
+  const double twist[6] = {0.6, -0.5, 0.6, 0.01, -0.01, 0.008};
+  const pm::Phi start = pm::applyTwist(a.truth, twist);
+  std::size_t lines = 0;
+  for (auto _ : state) {
+    const pm::PreciseResult r = precise.refine(start);
+    lines = r.lines[0] + r.lines[1];
+    benchmark::DoNotOptimize(r.phi);
+  }
+  state.counters["lines"] = static_cast<double>(lines);
+}
+void Precise_Refine(benchmark::State &s) { preciseRefine(s, true); }
+//! Its peer: the outline alone (PreciseParams::interiorPoints 0).
+void Precise_Refine_OutlineOnly(benchmark::State &s) { preciseRefine(s, false); }
+
+//! A steady tracked frame of the all-around model (the tracker's defaults), with the precise stage, and without it (its peer).
+void allAroundFrame(benchmark::State &state, bool precise)
+{
+  const AllAround &a = allAround();
+  pm::TrackerParams p;
+  p.preciseStage = precise;
+  pm::PhotoModelTracker tracker(setup().rig, a.model.build.model, p);
+  tracker.initFromPose(pm::toHomogeneousMatrix(a.truth));
+  for (int k = 0; k < 5; ++k) // a few frames: steady
+    tracker.track(a.images.left, a.images.right);
+  for (auto _ : state) {
+    const pm::TrackResult r = tracker.track(a.images.left, a.images.right);
+    benchmark::DoNotOptimize(r.fitness);
+  }
+}
+void Tracker_Frame_Steady_AllAround(benchmark::State &s) { allAroundFrame(s, true); }
+void Tracker_Frame_Steady_AllAround_NoPrecise(benchmark::State &s) { allAroundFrame(s, false); }
+
+} // namespace
+
+BENCHMARK(Precise_Refine)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(Precise_Refine_OutlineOnly)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_Steady_AllAround)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_Steady_AllAround_NoPrecise)->Unit(benchmark::kMillisecond)->UseRealTime();
