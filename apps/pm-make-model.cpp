@@ -16,6 +16,7 @@
 #include "pm/lab/ClosedLoop.h"
 #include "pm/lab/LabPass.h"
 #include "pm/lab/ModelMaking.h"
+#include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
@@ -23,15 +24,15 @@
 
 int main(int argc, char **argv)
 {
-  CLI::App app{"Builds a photo-model. All-around (the lab programs' default model): from a pass of the hand around the "
-               "target, a views folder taken by --rig (--views), or the simulator's pass (--all-around); writes model.json, "
+  CLI::App app{"Builds a photo-model. All-around (the default, as in the lab programs): from a pass of the hand around the "
+               "target, a views folder taken by --rig (--views), or the simulator's pass (--target); writes model.json, "
                "model.ply (the carved surface), contact.png (views beside the model seen from them), silhouettes.png and "
-               "summary.json (and views/ with --all-around). The paper's (Fig. 4), flat: a photo of the background alone and a "
+               "summary.json (and views/ in the lab). The paper's (Fig. 4), flat: a photo of the background alone and a "
                "photo of the target on it, taken by one camera at a known distance. Stereo (with depth): the rig's "
                "two cameras take the background pair, then the photo pair, from one hand pose (--left-background, "
                "--right-background, --left-photo, --right-photo, --rig); every point gets its relief by stereo "
                "matching and no distance is needed. Or from the simulator, which takes the photos of a lab target "
-               "(--target; --stereo for the stereo model) or of a user's image (--texture). Writes model.json, "
+               "(--target --flat, --target --stereo) or of a user's image (--texture). Writes model.json, "
                "overlay.png (S_in and S_out on the photo), model.png, summary.json and, for a stereo model, "
                "depth.png (the relief); and, unless they are --background and --photo, the (left) photos it was made "
                "from (photo_background.png, photo_target.png).",
@@ -77,6 +78,9 @@ int main(int argc, char **argv)
   optLS->needs(optRS)->excludes(optLB)->excludes(optTarget)->excludes(optTex);
   optRS->needs(optLS);
   auto *optStereo = app.add_flag("--stereo", stereo, "simulator: the stereo model (the rig's two cameras, depth per point)");
+  bool flat = false;
+  auto *optFlat = app.add_flag("--flat", flat, "simulator: the paper's flat model (two photos face-on) instead of the all-around one");
+  optFlat->excludes(optStereo)->excludes(optTex)->excludes(optBg)->excludes(optLB)->excludes(optLS);
   app.add_flag("--right-view", smp.rightView, "stereo: add the right camera's own view (S_in and S_out sampled in the "
                "right photo, scored in the right camera; a version 3 model file)");
   double viewTurnDeg = 0;
@@ -108,37 +112,47 @@ int main(int argc, char **argv)
                                   "(left_%02d.png, right_%02d.png, background_left_%02d.png, background_right_%02d.png, "
                                   "pose_fPh_%02d.yaml for k = 0, 1, ...), taken by --rig");
   auto *optAA = app.add_flag("--all-around", allAround, "simulator: the PA-10 walks the rig around --target (a pass of "
-                             "--pass-views hand poses), the all-around model is built from it and the pass kept in OUT/views");
+                             "--pass-views hand poses), the all-around model is built from it and the pass kept in OUT/views "
+                             "(the default for --target; kept for older command lines)");
   app.add_option("--pass-views", plan.views, "all-around, simulator: hand poses of the pass")->check(CLI::Range(6, 200));
   app.add_option("--backdrop-hue", ap.backdropHueDeg, "all-around: a plain backdrop of this hue (deg) replaces the "
                  "background images (none needed in --views; the lab makes no second pass)")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
   app.add_option("--refine-depth-mm", ap.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   for (auto *o : {optViews, optAA})
-    o->excludes(optBg)->excludes(optTex)->excludes(optLB)->excludes(optLS)->excludes(optStereo);
+    o->excludes(optBg)->excludes(optTex)->excludes(optLB)->excludes(optLS)->excludes(optStereo)->excludes(optFlat);
   optViews->excludes(optAA)->excludes(optTarget);
 
   return pm::app::run(app, argc, argv, [&] {
     const auto t0 = std::chrono::steady_clock::now();
     pm::report::ModelOutputs o;
     smp.photo = mp;
+    // The simulator's default: the all-around model (the lab programs' too); --flat, --stereo and --texture the others.
+    allAround = allAround || (viewsDir.empty() && background.empty() && leftBg.empty() && leftSource.empty() && texture.empty() &&
+                              !stereo && !flat);
     if (allAround || !viewsDir.empty()) {
       const pm::StereoRig rig = pm::io::loadRig(rigPath);
-      std::vector<pm::PassView> pass;
       std::string source;
       if (!viewsDir.empty()) {
-        pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
+        const std::vector<pm::PassView> pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
         source = "views " + viewsDir;
-      } else {
-        const pm::sim::TargetShape shape = pm::sim::makeTarget(target);
-        pass = pm::lab::runLabPass(pm::sim::Scene(shape, sp), rig, plan, pm::lab::LoopParams::startJoints(),
-                                   vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), ap.backdropHueDeg < 0).views;
-        source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), PA-10 pass";
+        const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, ap);
+        pm::io::writeAllAroundModel(b, pass, rig, out, source, false);
+        if (!quiet)
+          std::cout << pm::report::describeAllAroundModel(b, source, out, false) << std::flush;
+        return 0;
       }
-      const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, ap);
-      pm::io::writeAllAroundModel(b, pass, rig, out, source, allAround);
+      // The lab: the PA-10's pass, the model, and the model checked against the toy (the renderer's truth).
+      const pm::sim::TargetShape shape = pm::sim::makeTarget(target);
+      const pm::sim::Scene scene(shape, sp);
+      const pm::lab::LabPass lp = pm::lab::runLabPass(scene, rig, plan, pm::lab::LoopParams::startJoints(),
+                                                      vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), ap.backdropHueDeg < 0);
+      source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), PA-10 pass";
+      const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, lp.views, ap);
+      const pm::lab::SurfaceTruth truth = pm::lab::checkSurface(scene, b, lp.fMo.inverse() * b.fMm, rig.left.cam);
+      pm::io::writeAllAroundModel(b, lp.views, rig, out, source, true, pm::lab::surfaceTruthJson(truth));
       if (!quiet)
-        std::cout << pm::report::describeAllAroundModel(b, source, out, allAround) << std::flush;
+        std::cout << pm::report::describeAllAroundModel(b, source, out, true) << truth.text << std::flush;
       return 0;
     }
     if (!leftBg.empty() || !leftSource.empty()) {

@@ -116,7 +116,7 @@ TEST(Apps, UsageErrorsExitTwo)
 TEST(Apps, MakeModelFromTheSimulator)
 {
   TempDir d("apps");
-  const auto r = runProgram("pm-make-model", "--target C12 --quiet --out " + d.file("out"));
+  const auto r = runProgram("pm-make-model", "--target C12 --flat --quiet --out " + d.file("out"));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(pm::test::listFiles(d.file("out")),
             (std::vector<std::string>{"model.json", "model.png", "overlay.png", "photo_background.png",

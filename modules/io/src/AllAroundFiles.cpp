@@ -45,21 +45,28 @@ vpHomogeneousMatrix leftInModel(const AllAroundBuild &b, const PassView &v, cons
 
 } // namespace
 
-std::string plyText(const std::vector<SurfacePoint> &surface)
+std::string plyText(const std::vector<SurfacePoint> &surface, const HullMesh *mesh)
 {
+  const bool faces = mesh && mesh->vertices.size() == surface.size();
   std::ostringstream s;
-  s << "ply\nformat ascii 1.0\ncomment visp-photomodel all-around hull, model frame, mm\nelement vertex " << surface.size()
+  s << "ply\nformat ascii 1.0\ncomment visp-photomodel all-around surface, model frame, mm\nelement vertex " << surface.size()
     << "\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
-       "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
+       "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  if (faces)
+    s << "element face " << mesh->triangles.size() << "\nproperty list uchar int vertex_indices\n";
+  s << "end_header\n";
   for (const SurfacePoint &p : surface)
     s << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.nx << ' ' << p.ny << ' ' << p.nz << ' ' << int(p.r) << ' ' << int(p.g)
       << ' ' << int(p.b) << '\n';
+  if (faces)
+    for (const auto &t : mesh->triangles)
+      s << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
   return s.str();
 }
 
 void writeAllAroundPictures(const AllAroundBuild &b, const std::vector<PassView> &pass, const StereoRig &rig, StagedFiles &out)
 {
-  writeTextFile(out.stage("model.ply"), plyText(b.surface));
+  writeTextFile(out.stage("model.ply"), plyText(b.surface, &b.mesh));
   const unsigned w = rig.left.width, h = rig.left.height;
   const int tw = 320, th = static_cast<int>(320.0 * h / w);
   std::unique_ptr<UndistortMap> und;
@@ -96,7 +103,7 @@ void writeAllAroundPictures(const AllAroundBuild &b, const std::vector<PassView>
 }
 
 std::string writeAllAroundModel(const AllAroundBuild &b, const std::vector<PassView> &pass, const StereoRig &rig,
-                                const std::string &dir, const std::string &source, bool keepViews)
+                                const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson)
 {
   StagedFiles out(dir);
   savePhotoModel(b.model, out.stage("model.json"));
@@ -107,7 +114,7 @@ std::string writeAllAroundModel(const AllAroundBuild &b, const std::vector<PassV
   std::size_t nPoints = b.model.size();
   for (const ModelView &v : b.model.views)
     nPoints += v.inner.size() + v.outer.size();
-  const nlohmann::json summary{{"source", source},
+  nlohmann::json summary{{"source", source},
                                {"kind", "all-around"},
                                {"fMo", fMo},
                                {"n_views", b.nViews},
@@ -119,6 +126,12 @@ std::string writeAllAroundModel(const AllAroundBuild &b, const std::vector<PassV
                                {"n_in", b.model.inner.size()},
                                {"n_out", b.model.outer.size()},
                                {"hull_volume_cm3", b.hullVolumeCm3},
+                               {"surface_volume_cm3", b.surfaceVolumeCm3},
+                               {"n_mesh_triangles", b.mesh.triangles.size()},
+                               {"fusion_carved_cells", b.fusionCarvedCells},
+                               {"matched_target_px", b.matchedTargetPx},
+                               {"matched_backdrop_px", b.matchedBackdropPx},
+                               {"n_contour_points", b.model.contour.size()},
                                {"cell_mm", b.cellMm},
                                {"n_refined_points", b.nRefined},
                                {"n_highlight_points", b.nHighlight},
@@ -127,6 +140,8 @@ std::string writeAllAroundModel(const AllAroundBuild &b, const std::vector<PassV
                                {"background_hue_deg", b.model.backgroundHue},
                                {"distance_mm", b.model.distanceMm},
                                {"build_s", b.buildS}};
+  if (!truthJson.empty())
+    summary["truth"] = nlohmann::json::parse(truthJson);
   const std::string text = summary.dump(2) + "\n";
   writeTextFile(out.stage("summary.json"), text);
   out.commit();

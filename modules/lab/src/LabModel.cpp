@@ -11,6 +11,7 @@ sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &
   if (!c.flat && !c.stereo) {
     PassPlan plan;
     plan.views = c.passViews;
+    plan.ringsDeg = c.passRingsDeg;
     return makeSimulatedAllAroundModel(scene, rig, plan, LoopParams::startJoints(), c.distanceMm, c.allAroundParams);
   }
   if (c.stereo) {

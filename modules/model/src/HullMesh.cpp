@@ -1,6 +1,7 @@
 #include "pm/model/HullMesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <unordered_map>
 
@@ -112,6 +113,52 @@ void HullMesh::depthMap(const hull::Pinhole &cam, std::vector<float> &zbuf) cons
         b = std::min(b, d);
       }
   }
+}
+
+HullMesh HullMesh::decimated(double cellMm) const
+{
+  HullMesh out;
+  if (!(cellMm > 0) || vertices.empty())
+    return out;
+  std::unordered_map<std::uint64_t, std::uint32_t> cluster;
+  std::vector<std::uint32_t> of(vertices.size());
+  std::vector<int> count;
+  auto key = [cellMm](const Vec3 &v) {
+    auto c = [cellMm](double x) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(x / cellMm)) + (1 << 20)) & 0x1FFFFF; };
+    return (c(v[0]) << 42) | (c(v[1]) << 21) | c(v[2]);
+  };
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const auto it = cluster.emplace(key(vertices[i]), static_cast<std::uint32_t>(out.vertices.size()));
+    if (it.second) {
+      out.vertices.push_back({0, 0, 0});
+      count.push_back(0);
+    }
+    of[i] = it.first->second;
+    out.vertices[of[i]] = hull::add(out.vertices[of[i]], vertices[i]);
+    ++count[of[i]];
+  }
+  for (std::size_t k = 0; k < out.vertices.size(); ++k)
+    out.vertices[k] = hull::scaled(out.vertices[k], 1.0 / count[k]);
+  for (const auto &t : triangles) {
+    const std::array<std::uint32_t, 3> d{of[t[0]], of[t[1]], of[t[2]]};
+    if (d[0] != d[1] && d[1] != d[2] && d[0] != d[2])
+      out.triangles.push_back(d);
+  }
+  // Two triangles over the same three vertices (a fold the merge made) are dropped together.
+  std::unordered_map<std::uint64_t, int> seen;
+  auto triKey = [](std::array<std::uint32_t, 3> t) {
+    std::sort(t.begin(), t.end());
+    return (static_cast<std::uint64_t>(t[0]) << 42) ^ (static_cast<std::uint64_t>(t[1]) << 21) ^ t[2];
+  };
+  for (const auto &t : out.triangles)
+    ++seen[triKey(t)];
+  std::vector<std::array<std::uint32_t, 3>> kept;
+  for (const auto &t : out.triangles)
+    if (seen[triKey(t)] == 1)
+      kept.push_back(t);
+  out.triangles.swap(kept);
+  out.update();
+  return out;
 }
 
 HullMesh meshVisualHull(const VisualHull &g, const std::vector<const hull::HullCamera *> &cams)

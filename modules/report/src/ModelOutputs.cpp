@@ -78,10 +78,11 @@ std::string describeAllAroundModel(const AllAroundBuild &b, const std::string &s
 {
   std::ostringstream out;
   out << std::fixed << std::setprecision(1) << "all-around photo-model of " << source << "\n"
-      << "  " << b.nViewsUsed << " of " << b.nViews << " views used, hull " << b.hullVolumeCm3 << " cm3 (" << b.surface.size()
-      << " surface points, " << b.cellMm << " mm cells)\n"
+      << "  " << b.nViewsUsed << " of " << b.nViews << " views used, hull " << b.hullVolumeCm3 << " cm3 as carved, "
+      << b.surfaceVolumeCm3 << " cm3 after the views' stereo pairs (" << b.surface.size() << " surface points, "
+      << b.mesh.triangles.size() << " triangles, " << b.cellMm << " mm cells)\n"
       << "  " << b.model.views.size() + 1 << " viewpoints, " << b.model.inner.size() << " S_in and " << b.model.outer.size()
-      << " S_out points from the first\n";
+      << " S_out points and " << b.model.contour.size() << " outline points from the first\n";
   for (const std::string &s : b.leftOut)
     out << "  left out: " << s << "\n";
   out << "  written to " << dir << "/ (model.json, model.ply, contact.png, silhouettes.png, summary.json"

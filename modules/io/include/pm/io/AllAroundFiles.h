@@ -24,8 +24,8 @@
 
 namespace pm::io {
 
-//! The ASCII PLY of \e surface (x y z nx ny nz red green blue).
-std::string plyText(const std::vector<SurfacePoint> &surface);
+//! The ASCII PLY of \e surface (x y z nx ny nz red green blue), with \e mesh's triangles when it is the surface's (a vertex per point).
+std::string plyText(const std::vector<SurfacePoint> &surface, const HullMesh *mesh = nullptr);
 //! Stages model.ply, contact.png and silhouettes.png into \e out.
 void writeAllAroundPictures(const AllAroundBuild &build, const std::vector<PassView> &pass, const StereoRig &rig,
                             StagedFiles &out);
@@ -36,9 +36,10 @@ void writeAllAroundPictures(const AllAroundBuild &build, const std::vector<PassV
   n_surface_points, n_viewpoints, hull_volume_cm3, fMm as fMo, build_s, ...) and, with
   \e keepViews, the pass itself in views/ (the layout loadViewsFolder reads; written after the rest
   has appeared, so that its failure leaves the model in place). \e source says where the pass
-  came from (summary.json). Returns the summary's text.
+  came from (summary.json); \e truthJson (a JSON object, when not empty: the lab's check against the
+  toy) goes into the summary as "truth". Returns the summary's text.
 */
 std::string writeAllAroundModel(const AllAroundBuild &build, const std::vector<PassView> &pass, const StereoRig &rig,
-                                const std::string &dir, const std::string &source, bool keepViews);
+                                const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson = "");
 
 } // namespace pm::io

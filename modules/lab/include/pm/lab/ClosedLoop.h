@@ -43,7 +43,8 @@ struct LoopParams
     fitness's plateau), off with it (its estimates are within a few tenths of a millimetre and degree,
     the filter's lag would cost more: measured in docs/precise-stage.md).
   */
-  enum class Filter { Auto, On, Off } filter = Filter::Auto;
+  enum class Filter { Auto, On, Off };
+  Filter filter = Filter::Auto; //!< see Filter
   PoseFilterParams filterParams; //!< the gains of that filter
   /*!
     Fail-safe on the quality q: the servo also stops when q falls more than this under its recent

@@ -27,6 +27,7 @@ struct LabModelChoice
   double viewTurnDeg = 0;   //!< the stereo model's four further photo pairs, the hand turned by this about x and y (deg; 0: one pair)
   bool allAroundAsked = false; //!< --all-around given: the default anyway (neither flat nor stereo), kept for older command lines
   int passViews = 16;       //!< hand poses of the all-around model's pass
+  std::vector<double> passRingsDeg{20, 40}; //!< its rings' angles from the rest axis (deg; PassPlan::ringsDeg)
   AllAroundParams allAroundParams; //!< the all-around build (refinement depth, viewpoints, backdrop)
 };
 

@@ -68,6 +68,12 @@ struct HullMesh
   //! The volume enclosed (mm^3; the mesh closed and facing out).
   double volume() const;
   /*!
+    A coarser mesh of the same surface, by vertex clustering: the vertices within each cube of
+    \e cellMm merged into their mean, the triangles left with three distinct vertices kept (faces
+    as before, outward). For a CAD model of a few hundred faces (ViSP's model-based trackers).
+  */
+  HullMesh decimated(double cellMm) const;
+  /*!
     The mesh's depth as camera \e cam sees it: for each pixel whose centre a face covers, the nearest
     face's depth there (mm), +inf elsewhere, into \e zbuf (w x h, row-major). The coverage is exact
     (pixel centres against the projected triangles; every face, so that a fold of the mesh's small
