@@ -59,11 +59,12 @@ nlohmann::json scoresJson(const Summary &s)
 int main(int argc, char **argv)
 {
   CLI::App app{"Runs our photo-model tracker and ViSP's own trackers on the same rendered stereo sequences, in the "
-               "same process: ours started with no initial pose (twice: with the whole budget on every frame, and with a "
-               "fraction of it on steady frames, --steady-variant); vpMbGenericTracker (stereo, EDGE, KLT, EDGE|KLT) on a "
-               "one-face .cao model of the target's outline from the photo-model, and vpTemplateTracker (SSD, ZNCC, "
-               "homography) on the left image, both started from the true pose. Scenarios: table2, sinusoid, fast, "
-               "occlusion, lighting, loss. Writes summary.json (a 'trackers' list), table.md, frames.csv, model.cao "
+               "same process: ours started with no initial pose (flat, stereo and all-around models; ours-aa with the "
+               "precise last stage, ours-aa-rmga without; ours-steady with a fraction of the budget on steady frames); "
+               "vpMbGenericTracker (stereo, EDGE, KLT, EDGE|KLT) on the all-around model's surface decimated to a .cao "
+               "mesh (--mbt-mesh-cell-mm; 0: a one-face outline), and vpTemplateTracker (SSD, ZNCC, homography) on the "
+               "left image, both started from the true pose. Scenarios: table2, sinusoid, fast, occlusion, lighting, "
+               "loss (random6dof on request). Writes summary.json (a 'trackers' list), table.md, frames.csv, model.cao "
                "and a PNG of the errors per scenario.",
                "pm-compare"};
   app.option_defaults()->always_capture_default();
@@ -83,6 +84,9 @@ int main(int argc, char **argv)
   app.add_option("--trajectory", cp.trajectoryPath, "table2: the waypoints (step,x,y,z,e1,e2,e3)");
   app.add_option("--rig", rigPath, "stereo rig file");
   app.add_option("--mbt-config", cp.mbtXml, "vpMbGenericTracker's XML settings (moving edges, KLT, visibility)");
+  app.add_option("--mbt-mesh-cell-mm", cp.mbtMeshCellMm, "ViSP's MBT trackers' CAD model: the all-around model's surface "
+                 "decimated to cells of this size (mm); 0: the flat model's outline, one face")
+      ->check(CLI::Range(0.0, 100.0));
   app.add_option("--outline-tolerance-px", cp.outlineTolPx, "simplification of the outline for ViSP's trackers (px of the photo)")
       ->check(CLI::Range(0.1, 50.0));
   app.add_option("--distance-mm", cp.distanceMm, "photo distance of the photo-model")->check(CLI::PositiveNumber);

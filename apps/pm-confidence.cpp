@@ -60,6 +60,8 @@ int main(int argc, char **argv)
   app.add_flag("--fit", fit, "fit the logistic model on the set (two-fold by run for the cross-validated AUROC)");
   app.add_flag("--all-around", allAround, "every run's model is the all-around one (the PA-10's pass around its toy) "
                "instead of the flat or stereo one; the tracker then weighs the cues with the all-around coefficients");
+  bool precise = true;
+  app.add_flag("--precise,!--no-precise", precise, "the tracker's precise last stage after RM-GA (all-around models: --all-around)");
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
@@ -70,6 +72,7 @@ int main(int argc, char **argv)
     cs.steps = steps;
     cs.quick = quick;
     cs.allAround = allAround;
+    cs.precise = precise;
     cs.dataDir = pm::app::dataDir();
     std::size_t total = 0;
     for (const auto &s : pm::compare::makeScenarios(scenarios, trajectoryPath, steps))

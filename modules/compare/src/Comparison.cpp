@@ -1,5 +1,7 @@
 #include "pm/compare/Comparison.h"
 
+#include "pm/compare/CadMesh.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -70,12 +72,16 @@ struct Comparison::Setup
 {
   sim::Scene scene;
   sim::SimulatedPhotoModel flat, stereo, allAround;
+  AllAroundBuild allAroundBuild;      //!< its build (the surface's mesh for ViSP's trackers)
+  HullMesh cad;                        //!< ViSP's trackers' CAD model (empty: the flat outline)
   std::vector<vpPoint> outline;
   std::vector<Scenario> scenarios;
   Setup(const sim::TargetShape &target, const sim::SceneParams &params) : scene(target, params) {}
   // The truth of a tracker's own model frame: each model has its own (the 3-D centroid of S_in, ...).
   const vpHomogeneousMatrix &ownFrame(const std::string &key) const
   {
+    if (key.rfind("mbt", 0) == 0 && !cad.triangles.empty()) // ViSP's MBT on the all-around model's surface
+      return allAround.oMm;
     return key == "ours-3d" ? stereo.oMm : key.rfind("ours-aa", 0) == 0 ? allAround.oMm : flat.oMm;
   }
 };
@@ -95,14 +101,23 @@ Comparison::Comparison(const StereoRig &rig, const ComparisonParams &params) : m
   m_s->outline = outlinePolygon(m_s->flat.build.region, m_s->flat.build.model, m_p.outlineTolPx);
   if (has(m_p.trackers, "ours-3d"))
     m_s->stereo = sim::makeSimulatedStereoPhotoModel(m_s->scene, rig, m_p.distanceMm, StereoModelParams(), m_p.viewTurnDeg);
-  if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga"))
-    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, PassPlan(), lab::LoopParams::startJoints(), m_p.distanceMm);
+  bool mbt = false;
+  for (const std::string &k : m_p.trackers)
+    mbt = mbt || k.rfind("mbt", 0) == 0;
+  if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || (mbt && m_p.mbtMeshCellMm > 0))
+    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, PassPlan(), lab::LoopParams::startJoints(), m_p.distanceMm,
+                                                      AllAroundParams(), &m_s->allAroundBuild);
+  if (mbt && m_p.mbtMeshCellMm > 0)
+    m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);
 }
 
 Comparison::~Comparison() = default;
 
 std::string Comparison::caoText() const
 {
+  if (!m_s->cad.triangles.empty())
+    return meshCaoText(m_s->cad, "surface of " + m_p.target + " from its all-around photo-model, " + std::to_string(m_s->cad.triangles.size()) +
+                                     " triangles, metres, the all-around model's frame");
   return compare::caoText(m_s->outline, "outline of " + m_p.target + " from its photo-model, " + std::to_string(m_s->outline.size()) +
                                             " vertices, metres, model frame");
 }

@@ -65,6 +65,7 @@ ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const Confidence
       c.params.budgetEvaluations = r.budget;
       c.params.ga.seed = r.seed;
       c.params.steadyBudgetFraction = r.steady;
+      c.params.preciseStage = params.precise;
       c.name = pass.label + ": " + (params.allAround ? "all-around model of " : r.stereo ? "stereo model of " : "model of ") + r.model +
                ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) + (r.steady < 1 ? ", steady frames 25 %" : "");
       runs.push_back(c);

@@ -40,6 +40,12 @@ struct ComparisonParams
   std::string mbtXml;                         //!< vpMbGenericTracker's XML settings
   double distanceMm = 500;                    //!< photo distance of the flat and stereo models (mm)
   double outlineTolPx = 1.5;                  //!< simplification of the outline for ViSP's trackers (px)
+  /*!
+    ViSP's model-based trackers' CAD model: the all-around model's surface, decimated to cells of
+    this size (mm; CadMesh.h), the shape ours follows; 0: the flat model's outline (one face, as
+    before issue 36).
+  */
+  double mbtMeshCellMm = 8;
   double viewTurnDeg = 0;                     //!< ours-3d: the stereo model's further pairs (deg; 0: one pair)
   double steadyVariant = 0.25;                //!< ours-steady: the fraction of the budget on steady frames
   sim::SceneParams scene;                     //!< the lab's scene
