@@ -7,6 +7,7 @@
 
 #include "pm/app/App.h"
 #include "pm/report/FitnessMapOutputs.h"
+#include "pm/report/ObjectiveProfiles.h"
 #include "pm/app/Options.h"
 #include "pm/app/Progress.h"
 #include "pm/core/Error.h"
@@ -54,6 +55,9 @@ int main(int argc, char **argv)
   pm::app::addSceneOptions(app, sp);
   pm::app::addFitnessOptions(app, fp);
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
+  bool profiles = false;
+  app.add_flag("--profiles", profiles, "also the hue fitness and the precise stage's objective along turns of +-6 deg about "
+                                       "each axis at the reference pose (an all-around model): profiles.png, profiles.csv");
   bool allTargets = false;
   app.add_flag("--all-targets", allTargets, "run the 12 simulated targets, each into DIR/<code>/, and write the table "
                                             "peaks.md / peaks.csv of their peak errors")
@@ -101,6 +105,17 @@ int main(int argc, char **argv)
       const pm::report::FitnessMapsResult r =
           pm::report::writeFitnessMaps(dir, fit, model.size(), truth, specs, source, IL, IR, [&] { progress.step(); });
       progress.finish();
+      if (profiles && model.hasContours()) { // beside the maps, in the same folder
+        pm::PreciseStage precise(rig, model);
+        precise.setImages(IL, IR);
+        pm::io::StagedFiles more(dir);
+        const pm::report::ProfileResult pr = pm::report::writeObjectiveProfiles(more, fit, precise, truth, 6.0, 0.25);
+        more.commit();
+        if (!silent)
+          std::cout << "profiles along turns at the reference pose:\n" << pr.text;
+      } else if (profiles) {
+        throw pm::Error("--profiles needs a model with outlines (an all-around model, version 5)");
+      }
       if (!silent)
         std::cout << "fitness maps of " << source << " (" << model.size() << " model points)\n"
                   << r.text << "  all four in " << std::setprecision(2) << r.seconds << " s, written to " << dir << "/" << std::endl;
