@@ -26,7 +26,7 @@
 
 namespace pm::compare {
 
-//! The trackers a comparison can run, by key: ours (four kinds) and ViSP's (five).
+//! The trackers a comparison can run, by key: ours (five kinds) and ViSP's (five).
 const std::vector<std::string> &comparedTrackerKeys();
 
 //! What a comparison runs (pm-compare's options).

@@ -44,8 +44,8 @@ namespace pm {
 struct PreciseParams
 {
   std::size_t lines = 150;               //!< correspondence lines per camera (at most; the viewpoint's contour points)
-  std::vector<int> scales{5, 2, 1, 1, 1, 1}; //!< pixels per segment, one measurement each, coarse to fine
-  std::vector<double> sigmasPx{12, 4, 1.5, 1.5, 1.5, 1.5}; //!< per scale: the lines' weight is the least variance over this squared (px)
+  std::vector<int> scales{5, 2, 1, 1};   //!< pixels per segment, one measurement each, coarse to fine
+  std::vector<double> sigmasPx{12, 4, 1.5, 1.5}; //!< per scale: the lines' weight is the least variance over this squared (px)
   std::vector<int> nearScales{2, 1, 1};  //!< the scales from a start known to be near (refine(start, true): the last frame's pose)
   std::vector<double> nearSigmasPx{4, 1.5, 1.5}; //!< their sigmas
   int interiorMaxScale = 16;             //!< the interior term joins from this scale down (px per segment; 16: at every scale)
@@ -60,7 +60,7 @@ struct PreciseParams
   std::size_t minLines = 24;             //!< fewer lines in both cameras: no result (PreciseResult::ok false)
   std::size_t interiorPoints = 200;      //!< the interior term's points per camera (InteriorTerm.h; 0: off, the outline alone)
   double interiorSigma = 0.05;           //!< the chromaticity's noise the interior term assumes
-  double interiorWeight = 0.3;           //!< the interior term's weight beside the outline's
+  double interiorWeight = 1.0;           //!< the interior term's weight beside the outline's
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
