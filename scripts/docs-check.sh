@@ -6,6 +6,9 @@
 #   2. checks every command line shown in README.md and docs/*.md (code blocks and `pm-...` spans):
 #      the program exists and each --option it names is in that program's --help;
 #   3. checks that every ```cpp block of docs/ is a verbatim part of a source file in examples/.
+# A tutorial that runs on sample data of a Debian package says so in a line of its own,
+#   <!-- docs-check: needs PATH (PACKAGE) -->
+# and is skipped, with a line that says why, when PATH is missing (a machine without that package).
 # usage: bash scripts/docs-check.sh BUILD_DIR [--only PAGE.md]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -77,6 +80,14 @@ done
 for page in "$root"/docs/tutorial-*.md; do
   name="$(basename "$page" .md)"
   [ -z "$only" ] || [ "$only" = "$name.md" ] || continue
+  missing=""
+  while read -r need what; do
+    [ -e "$need" ] || missing="$need $what"
+  done < <(sed -n 's/^<!-- docs-check: needs \([^ ]*\) \(.*\) -->$/\1 \2/p' "$page")
+  if [ -n "$missing" ]; then
+    echo "docs: $name.md skipped: it needs ${missing} (install it to run this page)"
+    continue
+  fi
   dir="$scratch/$name"
   mkdir -p "$dir"
   ln -s "$root/data" "$dir/data"
