@@ -322,26 +322,28 @@ void colourHistograms(const std::vector<const HullCamera *> &cams, std::vector<f
 
 } // namespace
 
-AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
-{
-  const auto t0 = std::chrono::steady_clock::now();
-  p.validate();
-  rig.validate();
-  if (pass.size() < p.minViews)
-    throw Error("all-around model: the pass holds " + std::to_string(pass.size()) + " views; at least " +
-                std::to_string(p.minViews) + " are needed");
-  AllAroundBuild out;
-  out.nViews = pass.size();
+namespace {
 
-  // 1. Silhouettes in the ideal images.
+//! The pass's photos in the ideal images: each camera of each view with its silhouette's field.
+struct PassImages
+{
+  std::vector<HullCamera> cams;                //!< two per view, left then right
+  std::vector<vpImage<vpRGBa>> backgrounds;    //!< each camera's background (the photo against a plain backdrop)
+  std::vector<std::string> names;              //!< each view's name
+};
+
+//! Stage 1: the silhouettes in the ideal images (out: silhouettes, shadowPx). Throws pm::Error.
+PassImages silhouettesOfPass(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p, AllAroundBuild &out)
+{
+  PassImages images;
+  std::vector<HullCamera> &cams = images.cams;
+  std::vector<vpImage<vpRGBa>> &backgrounds = images.backgrounds;
+  std::vector<std::string> &names = images.names;
   const RigCamera *rc[2] = {&rig.left, &rig.right};
   std::unique_ptr<UndistortMap> und[2];
   for (int c = 0; c < 2; ++c)
     if (!rc[c]->distortion.isNone())
       und[c] = std::make_unique<UndistortMap>(*rc[c]);
-  std::vector<HullCamera> cams;
-  std::vector<vpImage<vpRGBa>> backgrounds;
-  std::vector<std::string> names;
   for (std::size_t k = 0; k < pass.size(); ++k) {
     const PassView &v = pass[k];
     const std::string name = v.name.empty() ? "view " + std::to_string(k) : v.name;
@@ -375,6 +377,166 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
       out.silhouettes.push_back(std::move(mask));
     }
   }
+
+  return images;
+}
+
+//! The centroid of the hull's occupied cells (mm).
+Vec3 occupiedCentroid(const VisualHull &g)
+{
+  Vec3 mean{0, 0, 0};
+  {
+    long nOcc = 0;
+    for (int z = 0; z < g.n; ++z)
+      for (int y = 0; y < g.n; ++y)
+        for (int x = 0; x < g.n; ++x)
+          if (g.occ[g.idx(x, y, z)]) {
+            mean = hull::add(mean, g.centre(x, y, z));
+            ++nOcc;
+          }
+    mean = hull::scaled(mean, 1.0 / static_cast<double>(nOcc));
+  }
+  return mean;
+}
+
+//! Stage 4: which cameras see each vertex (the mesh's depth, the normal facing the camera, off the outline).
+std::vector<std::vector<std::uint16_t>> camerasSeeing(const std::vector<const HullCamera *> &usedCams, const HullMesh &mesh,
+                                                      const AllAroundParams &p, std::vector<float> &zbuf)
+{
+  const std::vector<Vec3> &pts = mesh.vertices;
+  const std::vector<Vec3> &normals = mesh.normals;
+  std::vector<std::vector<std::uint16_t>> seenBy(pts.size());
+  for (std::size_t ci = 0; ci < usedCams.size(); ++ci) {
+    const HullCamera *vc = usedCams[ci];
+    mesh.depthMap(vc->cam, zbuf);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      double u, v, z;
+      if (!vc->cam.project(pts[i], u, v, z))
+        continue;
+      const Vec3 toCam = unit(sub(vc->cam.centre, pts[i]));
+      if (dot(toCam, normals[i]) < 0.2)
+        continue;
+      const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+      if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
+        continue;
+      if (z > zbuf[static_cast<std::size_t>(vi) * static_cast<std::size_t>(vc->cam.w) + static_cast<std::size_t>(ui)] + p.visibilityTolMm)
+        continue;
+      if (vc->sd(u, v) < 2) // on the outline the pixel mixes target and background
+        continue;
+      seenBy[i].push_back(static_cast<std::uint16_t>(ci));
+    }
+  }
+  return seenBy;
+}
+
+//! Each vertex's colour in each camera that sees it.
+std::vector<std::vector<ColourSample>> colourSamples(const std::vector<const HullCamera *> &usedCams,
+                                                     const std::vector<std::vector<std::uint16_t>> &seenBy, const std::vector<Vec3> &pts)
+{
+  std::vector<std::vector<ColourSample>> samples(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (std::uint16_t ci : seenBy[i]) {
+      const HullCamera *vc = usedCams[ci];
+      double u, v, z;
+      if (!vc->cam.project(pts[i], u, v, z))
+        continue;
+      const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+      if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
+        continue;
+      const vpRGBa px = vc->photo[static_cast<unsigned>(vi)][static_cast<unsigned>(ui)];
+      const Hsv hsv = rgbToHsv(px);
+      samples[i].push_back({hsv.h, hsv.s, hsv.v, px.R, px.G, px.B});
+    }
+  return samples;
+}
+
+//! H_B: the mean hue of the backgrounds around the used views' silhouettes.
+float backgroundHueAround(const PassImages &im, const std::vector<vpImage<unsigned char>> &silhouettes, const std::vector<bool> &used)
+{
+  const std::vector<HullCamera> &cams = im.cams;
+  const std::vector<vpImage<vpRGBa>> &backgrounds = im.backgrounds;
+  std::vector<float> bgHues;
+  for (std::size_t i = 0; i < cams.size(); ++i) {
+    if (!used[static_cast<std::size_t>(cams[i].view)])
+      continue;
+    for (unsigned y = 0; y < silhouettes[i].getHeight(); y += 3)
+      for (unsigned x = 0; x < silhouettes[i].getWidth(); x += 3) {
+        const float d = cams[i].signedDist.at<float>(static_cast<int>(y), static_cast<int>(x));
+        if (d < -3 && d > -40)
+          bgHues.push_back(hueDeg(backgrounds[i][y][x]));
+      }
+  }
+  return bgHues.empty() ? 0.f : circularMeanHue(bgHues);
+
+}
+
+//! Stage 7: the model's viewpoints along \e dirs at \e D mm (the first is the model's own view; out: M's points).
+void sampleViewpoints(const StereoRig &rig, const std::vector<Vec3> &dirs, double D, const vpHomogeneousMatrix &mMh0,
+                      const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
+                      std::vector<float> &zbuf, AllAroundBuild &out)
+{
+  const std::vector<Vec3> &mpts = mesh.vertices;
+  const vpCameraParameters &ci = rig.left.cam;
+  PhotoModel &M = out.model;
+  M.distanceMm = D;
+  M.px = ci.get_px(), M.py = ci.get_py(), M.u0 = ci.get_u0(), M.v0 = ci.get_v0();
+  M.photoWidth = rig.left.width, M.photoHeight = rig.left.height;
+  M.centroidU = M.u0, M.centroidV = M.v0;
+  M.backgroundHue = bgHue;
+  M.nInDropped = out.nHighlight;
+  for (int k = 0; k < 3; ++k)
+    M.originInHandMm[k] = 1e3 * mMh0.inverse()[static_cast<unsigned>(k)][3];
+  std::vector<float> vz;
+  for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
+    const Vec3 C = hull::scaled(dirs[vi], D);
+    const hull::Pinhole cam = hull::Pinhole::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
+    ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, zbuf);
+    if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
+      if (vi == 0)
+        throw Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +
+                    std::to_string(view.inner.size()) + "): the target's colours are too close to the background's");
+      continue; // a direction from which too little is seen: its neighbours serve it
+    }
+    if (vi == 0) {
+      M.inner = std::move(view.inner);
+      M.outer = std::move(view.outer);
+      M.contour = std::move(view.contour);
+      for (int k = 0; k < 3; ++k)
+        M.cameraMm[k] = view.cameraMm[k];
+      std::vector<float> hs;
+      const vpHomogeneousMatrix hM0m = mMh0.inverse();
+      for (const ModelPoint &q : M.inner) {
+        hs.push_back(q.hue);
+        vz.push_back(static_cast<float>(hM0m[2][0] * q.x + hM0m[2][1] * q.y + hM0m[2][2] * q.z + 1e3 * hM0m[2][3]));
+      }
+      M.targetHue = circularMeanHue(hs);
+    } else
+      M.views.push_back(std::move(view));
+  }
+  if (!vz.empty()) {
+    M.depthRangeMm[0] = *std::min_element(vz.begin(), vz.end());
+    M.depthRangeMm[1] = *std::max_element(vz.begin(), vz.end());
+  }
+}
+
+} // namespace
+
+AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  p.validate();
+  rig.validate();
+  if (pass.size() < p.minViews)
+    throw Error("all-around model: the pass holds " + std::to_string(pass.size()) + " views; at least " +
+                std::to_string(p.minViews) + " are needed");
+  AllAroundBuild out;
+  out.nViews = pass.size();
+
+  // 1. Silhouettes in the ideal images.
+  const PassImages im = silhouettesOfPass(rig, pass, p, out);
+  const std::vector<HullCamera> &cams = im.cams;
+  const std::vector<vpImage<vpRGBa>> &backgrounds = im.backgrounds;
+  const std::vector<std::string> &names = im.names;
 
   // 2. The box around the target, and the views that disagree with the others.
   Vec3 centre;
@@ -419,44 +581,13 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
     const double px = hull::field(usedCams, X), f = px * mmPerPx;
     return p.fusion.enabled ? std::min(f, evidence.fieldInside(X, px)) : f;
   });
-  Vec3 mean{0, 0, 0};
-  {
-    long nOcc = 0;
-    for (int z = 0; z < g.n; ++z)
-      for (int y = 0; y < g.n; ++y)
-        for (int x = 0; x < g.n; ++x)
-          if (g.occ[g.idx(x, y, z)]) {
-            mean = hull::add(mean, g.centre(x, y, z));
-            ++nOcc;
-          }
-    mean = hull::scaled(mean, 1.0 / static_cast<double>(nOcc));
-  }
+  const Vec3 mean = occupiedCentroid(g);
   std::vector<Vec3> &pts = mesh.vertices;
   const std::vector<Vec3> &normals = mesh.normals;
 
-  // 4. Which cameras see each point (the hull's depth, the normal facing the camera, off the outline).
-  std::vector<std::vector<std::uint16_t>> seenBy(pts.size());
+  // 4. Which cameras see each point.
   std::vector<float> zbuf;
-  for (std::size_t ci = 0; ci < usedCams.size(); ++ci) {
-    const HullCamera *vc = usedCams[ci];
-    mesh.depthMap(vc->cam, zbuf);
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      double u, v, z;
-      if (!vc->cam.project(pts[i], u, v, z))
-        continue;
-      const Vec3 toCam = unit(sub(vc->cam.centre, pts[i]));
-      if (dot(toCam, normals[i]) < 0.2)
-        continue;
-      const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
-      if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
-        continue;
-      if (z > zbuf[static_cast<std::size_t>(vi) * static_cast<std::size_t>(vc->cam.w) + static_cast<std::size_t>(ui)] + p.visibilityTolMm)
-        continue;
-      if (vc->sd(u, v) < 2) // on the outline the pixel mixes target and background
-        continue;
-      seenBy[i].push_back(static_cast<std::uint16_t>(ci));
-    }
-  }
+  const std::vector<std::vector<std::uint16_t>> seenBy = camerasSeeing(usedCams, mesh, p, zbuf);
   // 5. Photo-consistency: the hull bulges in front of flat and concave faces (no silhouette carves
   // them); where the target has texture, each point moves inward along its normal to the depth where
   // the patches of the cameras that see it agree best. The mesh follows its vertices.
@@ -465,33 +596,8 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
     out.nRefined = refineByPhotoConsistency(usedCams, seenBy, normalsBefore, p, g.cell, pts);
     mesh.update();
   }
-  std::vector<std::vector<ColourSample>> samples(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    for (std::uint16_t ci : seenBy[i]) {
-      const HullCamera *vc = usedCams[ci];
-      double u, v, z;
-      if (!vc->cam.project(pts[i], u, v, z))
-        continue;
-      const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
-      if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
-        continue;
-      const vpRGBa px = vc->photo[static_cast<unsigned>(vi)][static_cast<unsigned>(ui)];
-      const Hsv hsv = rgbToHsv(px);
-      samples[i].push_back({hsv.h, hsv.s, hsv.v, px.R, px.G, px.B});
-    }
-  // H_B: the backgrounds around the silhouettes.
-  std::vector<float> bgHues;
-  for (std::size_t i = 0; i < cams.size(); ++i) {
-    if (!used[static_cast<std::size_t>(cams[i].view)])
-      continue;
-    for (unsigned y = 0; y < out.silhouettes[i].getHeight(); y += 3)
-      for (unsigned x = 0; x < out.silhouettes[i].getWidth(); x += 3) {
-        const float d = cams[i].signedDist.at<float>(static_cast<int>(y), static_cast<int>(x));
-        if (d < -3 && d > -40)
-          bgHues.push_back(hueDeg(backgrounds[i][y][x]));
-      }
-  }
-  const float bgHue = bgHues.empty() ? 0.f : circularMeanHue(bgHues);
+  std::vector<std::vector<ColourSample>> samples = colourSamples(usedCams, seenBy, pts);
+  const float bgHue = backgroundHueAround(im, out.silhouettes, used);
 
   // 6. The model frame: origin at the hull's centroid, axes those of the hand at the first used view.
   std::size_t first = 0;
@@ -523,47 +629,8 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   const Vec3 rest{1e3 * mMh0[0][3], 1e3 * mMh0[1][3], 1e3 * mMh0[2][3]};
   const double D = std::sqrt(dot(rest, rest));
   const std::vector<Vec3> dirs = capDirections(unit(rest), p.capDeg, p.viewpoints);
-  const vpCameraParameters &ci = rig.left.cam;
+  sampleViewpoints(rig, dirs, D, mMh0, mesh, edge, bgHue, p, zbuf, out);
   PhotoModel &M = out.model;
-  M.distanceMm = D;
-  M.px = ci.get_px(), M.py = ci.get_py(), M.u0 = ci.get_u0(), M.v0 = ci.get_v0();
-  M.photoWidth = rig.left.width, M.photoHeight = rig.left.height;
-  M.centroidU = M.u0, M.centroidV = M.v0;
-  M.backgroundHue = bgHue;
-  M.nInDropped = out.nHighlight;
-  for (int k = 0; k < 3; ++k)
-    M.originInHandMm[k] = 1e3 * mMh0.inverse()[static_cast<unsigned>(k)][3];
-  std::vector<float> vz;
-  for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
-    const Vec3 C = hull::scaled(dirs[vi], D);
-    const hull::Pinhole cam = hull::Pinhole::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
-    ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, zbuf);
-    if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
-      if (vi == 0)
-        throw Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +
-                    std::to_string(view.inner.size()) + "): the target's colours are too close to the background's");
-      continue; // a direction from which too little is seen: its neighbours serve it
-    }
-    if (vi == 0) {
-      M.inner = std::move(view.inner);
-      M.outer = std::move(view.outer);
-      M.contour = std::move(view.contour);
-      for (int k = 0; k < 3; ++k)
-        M.cameraMm[k] = view.cameraMm[k];
-      std::vector<float> hs;
-      const vpHomogeneousMatrix hM0m = mMh0.inverse();
-      for (const ModelPoint &q : M.inner) {
-        hs.push_back(q.hue);
-        vz.push_back(static_cast<float>(hM0m[2][0] * q.x + hM0m[2][1] * q.y + hM0m[2][2] * q.z + 1e3 * hM0m[2][3]));
-      }
-      M.targetHue = circularMeanHue(hs);
-    } else
-      M.views.push_back(std::move(view));
-  }
-  if (!vz.empty()) {
-    M.depthRangeMm[0] = *std::min_element(vz.begin(), vz.end());
-    M.depthRangeMm[1] = *std::max_element(vz.begin(), vz.end());
-  }
   // 8. The colours of the target and around it, for the precise stage's posteriors.
   colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);
   out.mesh = std::move(mesh);
