@@ -241,6 +241,88 @@ PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im,
   return b;
 }
 
+//! The backdrop's depth (rectified left z, mm), matched on the background pair at a quarter of the
+//! resolution over a wide range, the median over the target's region \e rRegionL (rectified). Throws pm::Error.
+double measuredBackdropMm(const Rectification &rect, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR, const cv::Mat &rRegionL,
+                          const StereoModelParams &params)
+{
+  cv::Mat a = rect.remap(toBgr(bgL), 0), b = rect.remap(toBgr(bgR), 1);
+  cv::pyrDown(a, a);
+  cv::pyrDown(a, a);
+  cv::pyrDown(b, b);
+  cv::pyrDown(b, b);
+  const double dNear = rect.disparityAt(150.0) / 4, dFar = rect.disparityAt(5000.0) / 4;
+  const int dMin = static_cast<int>(std::floor(std::min(dNear, dFar))) - 2;
+  const int n = std::max(16, ((static_cast<int>(std::ceil(std::fabs(dNear - dFar))) + 4 + 15) / 16) * 16);
+  StereoModelParams coarse = params;
+  coarse.blockPx = 5;
+  const cv::Mat d = disparity(a, b, dMin, n, coarse.blockPx, coarse.uniquenessPercent);
+  cv::Mat mask;
+  cv::resize(rRegionL, mask, d.size(), 0, 0, cv::INTER_NEAREST);
+  cv::dilate(mask, mask, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(9, 9)));
+  std::vector<double> ds;
+  for (int v = 0; v < d.rows; ++v)
+    for (int u = 0; u < d.cols; ++u)
+      if (mask.at<unsigned char>(v, u) && std::isfinite(d.at<float>(v, u)))
+        ds.push_back(4.0 * d.at<float>(v, u));
+  std::size_t maskArea = static_cast<std::size_t>(cv::countNonZero(mask));
+  if (ds.size() < 20 || static_cast<double>(ds.size()) < 0.2 * static_cast<double>(maskArea))
+    throw Error("stereo photo-model: the backdrop behind the target cannot be matched in the background pair (" +
+                std::to_string(ds.size()) + " of " + std::to_string(maskArea) +
+                " pixels matched; a plain backdrop has no texture): give its distance (--backdrop-mm)");
+  const double backdrop = rect.depthAt(median(ds));
+  if (!(backdrop > 0) || !std::isfinite(backdrop))
+    throw Error("stereo photo-model: the backdrop's depth came out invalid; give its distance (--backdrop-mm)");
+  return backdrop;
+}
+
+/*!
+  Dense depth of the left region from the rectified disparities \e disp: the left camera's z (returned,
+  NaN elsewhere; for S_out) and the hand's z (\e depthLeft, for depth.png).
+*/
+cv::Mat leftRegionDepth(const StereoRig &rig, const Rectification &rect, const cv::Mat &disp, const vpImage<unsigned char> &region,
+                        const StereoModelParams &params, vpImage<float> &depthLeft)
+{
+  // A left pixel's position in the hand frame (mm) from its rectified disparity.
+  const vpHomogeneousMatrix hMcL = rig.left.hMc;
+  cv::Matx33d R1t;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      R1t(i, j) = rect.R1.at<double>(j, i);
+  auto leftCameraPoint = [&](const cv::Point2f &r, double d) {
+    const double Z = rect.depthAt(d);
+    const cv::Vec3d Xr((r.x - rect.cx1) * Z / rect.f, (r.y - rect.cy) * Z / rect.f, Z);
+    return R1t * Xr;
+  };
+  auto toHand = [&](const cv::Vec3d &c) {
+    cv::Vec3d h;
+    for (unsigned i = 0; i < 3; ++i)
+      h[static_cast<int>(i)] = hMcL[i][0] * c[0] + hMcL[i][1] * c[1] + hMcL[i][2] * c[2] + hMcL[i][3] * 1e3;
+    return h;
+  };
+
+  const unsigned w = rig.left.width, h = rig.left.height;
+  std::vector<cv::Point2f> regionPx;
+  for (unsigned v = 0; v < h; ++v)
+    for (unsigned u = 0; u < w; ++u)
+      if (region[v][u])
+        regionPx.emplace_back(static_cast<float>(u), static_cast<float>(v));
+  const std::vector<cv::Point2f> regionRect = rect.rectifiedLeft(regionPx);
+  cv::Mat camZ(static_cast<int>(h), static_cast<int>(w), CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
+  depthLeft.resize(h, w, std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t i = 0; i < regionPx.size(); ++i) {
+    const float d = sampleDisparity(disp, regionRect[i].x, regionRect[i].y, params.maxDisparitySpreadPx);
+    if (!std::isfinite(d))
+      continue;
+    const cv::Vec3d c = leftCameraPoint(regionRect[i], d);
+    const int u = static_cast<int>(regionPx[i].x), v = static_cast<int>(regionPx[i].y);
+    camZ.at<float>(v, u) = static_cast<float>(c[2]);
+    depthLeft[static_cast<unsigned>(v)][static_cast<unsigned>(u)] = static_cast<float>(toHand(c)[2]);
+  }
+
+  return camZ;
+}
+
 } // namespace
 
 StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR,
@@ -284,33 +366,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   double backdrop = params.backdropMm;
   out.backdropMeasured = backdrop <= 0;
   if (out.backdropMeasured) {
-    cv::Mat a = rect.remap(toBgr(bgL), 0), b = rect.remap(toBgr(bgR), 1);
-    cv::pyrDown(a, a);
-    cv::pyrDown(a, a);
-    cv::pyrDown(b, b);
-    cv::pyrDown(b, b);
-    const double dNear = rect.disparityAt(150.0) / 4, dFar = rect.disparityAt(5000.0) / 4;
-    const int dMin = static_cast<int>(std::floor(std::min(dNear, dFar))) - 2;
-    const int n = std::max(16, ((static_cast<int>(std::ceil(std::fabs(dNear - dFar))) + 4 + 15) / 16) * 16);
-    StereoModelParams coarse = params;
-    coarse.blockPx = 5;
-    const cv::Mat d = disparity(a, b, dMin, n, coarse.blockPx, coarse.uniquenessPercent);
-    cv::Mat mask;
-    cv::resize(rRegionL, mask, d.size(), 0, 0, cv::INTER_NEAREST);
-    cv::dilate(mask, mask, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(9, 9)));
-    std::vector<double> ds;
-    for (int v = 0; v < d.rows; ++v)
-      for (int u = 0; u < d.cols; ++u)
-        if (mask.at<unsigned char>(v, u) && std::isfinite(d.at<float>(v, u)))
-          ds.push_back(4.0 * d.at<float>(v, u));
-    std::size_t maskArea = static_cast<std::size_t>(cv::countNonZero(mask));
-    if (ds.size() < 20 || static_cast<double>(ds.size()) < 0.2 * static_cast<double>(maskArea))
-      throw Error("stereo photo-model: the backdrop behind the target cannot be matched in the background pair (" +
-                  std::to_string(ds.size()) + " of " + std::to_string(maskArea) +
-                  " pixels matched; a plain backdrop has no texture): give its distance (--backdrop-mm)");
-    backdrop = rect.depthAt(median(ds));
-    if (!(backdrop > 0) || !std::isfinite(backdrop))
-      throw Error("stereo photo-model: the backdrop's depth came out invalid; give its distance (--backdrop-mm)");
+    backdrop = measuredBackdropMm(rect, bgL, bgR, rRegionL, params);
   }
   out.backdropMm = backdrop;
 
@@ -321,43 +377,8 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   const int n = std::max(16, ((static_cast<int>(std::ceil(std::fabs(dNear - dFar))) + 15) / 16) * 16);
   const cv::Mat disp = disparity(rect.remap(toBgr(L), 0), rect.remap(toBgr(R), 1), dMin, n, params.blockPx, params.uniquenessPercent);
 
-  // A left pixel's position in the hand frame (mm) from its rectified disparity.
-  const vpHomogeneousMatrix hMcL = rig.left.hMc;
-  cv::Matx33d R1t;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      R1t(i, j) = rect.R1.at<double>(j, i);
-  auto leftCameraPoint = [&](const cv::Point2f &r, double d) {
-    const double Z = rect.depthAt(d);
-    const cv::Vec3d Xr((r.x - rect.cx1) * Z / rect.f, (r.y - rect.cy) * Z / rect.f, Z);
-    return R1t * Xr;
-  };
-  auto toHand = [&](const cv::Vec3d &c) {
-    cv::Vec3d h;
-    for (unsigned i = 0; i < 3; ++i)
-      h[static_cast<int>(i)] = hMcL[i][0] * c[0] + hMcL[i][1] * c[1] + hMcL[i][2] * c[2] + hMcL[i][3] * 1e3;
-    return h;
-  };
-
-  // Dense depth of the left region: the left camera's z (for S_out) and the hand's z (depth.png).
-  const unsigned w = rig.left.width, h = rig.left.height;
-  std::vector<cv::Point2f> regionPx;
-  for (unsigned v = 0; v < h; ++v)
-    for (unsigned u = 0; u < w; ++u)
-      if (left.region[v][u])
-        regionPx.emplace_back(static_cast<float>(u), static_cast<float>(v));
-  const std::vector<cv::Point2f> regionRect = rect.rectifiedLeft(regionPx);
-  cv::Mat camZ(static_cast<int>(h), static_cast<int>(w), CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
-  out.depthLeft.resize(h, w, std::numeric_limits<float>::quiet_NaN());
-  for (std::size_t i = 0; i < regionPx.size(); ++i) {
-    const float d = sampleDisparity(disp, regionRect[i].x, regionRect[i].y, params.maxDisparitySpreadPx);
-    if (!std::isfinite(d))
-      continue;
-    const cv::Vec3d c = leftCameraPoint(regionRect[i], d);
-    const int u = static_cast<int>(regionPx[i].x), v = static_cast<int>(regionPx[i].y);
-    camZ.at<float>(v, u) = static_cast<float>(c[2]);
-    out.depthLeft[static_cast<unsigned>(v)][static_cast<unsigned>(u)] = static_cast<float>(toHand(c)[2]);
-  }
+  // Dense depth of the left region.
+  const cv::Mat camZ = leftRegionDepth(rig, rect, disp, left.region, params, out.depthLeft);
 
   // S_in and S_out of the left view placed on their rays.
   PhotoModel &m = out.model;
