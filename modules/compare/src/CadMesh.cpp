@@ -1,24 +1,20 @@
 #include "pm/compare/CadMesh.h"
 
-#include <cstdio>
-#include <sstream>
+#include "pm/compare/OutlineModel.h"
 
 namespace pm::compare {
 
 std::string meshCaoText(const HullMesh &mesh, const std::string &comment)
 {
-  std::ostringstream s;
-  s << "V1\n# " << comment << "\n# 3D points\n" << mesh.vertices.size() << "\n";
-  char buf[96];
-  for (const hull::Vec3 &v : mesh.vertices) {
-    std::snprintf(buf, sizeof buf, "%.6f %.6f %.6f\n", 1e-3 * v[0], 1e-3 * v[1], 1e-3 * v[2]);
-    s << buf;
-  }
-  s << "# 3D lines\n0\n# Faces from 3D lines\n0\n# Faces from 3D points\n" << mesh.triangles.size() << "\n";
+  std::vector<std::array<double, 3>> pointsM;
+  pointsM.reserve(mesh.vertices.size());
+  for (const hull::Vec3 &v : mesh.vertices)
+    pointsM.push_back({1e-3 * v[0], 1e-3 * v[1], 1e-3 * v[2]});
+  std::vector<std::vector<std::size_t>> faces;
+  faces.reserve(mesh.triangles.size());
   for (const auto &t : mesh.triangles)
-    s << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-  s << "# 3D cylinders\n0\n# 3D circles\n0\n";
-  return s.str();
+    faces.push_back({static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2])});
+  return caoText(pointsM, faces, comment);
 }
 
 } // namespace pm::compare

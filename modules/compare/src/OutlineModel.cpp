@@ -1,5 +1,7 @@
 #include "pm/compare/OutlineModel.h"
 
+#include <array>
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -39,20 +41,36 @@ std::vector<vpPoint> outlinePolygon(const vpImage<unsigned char> &region, const 
   return out;
 }
 
-std::string caoText(const std::vector<vpPoint> &polygon, const std::string &comment)
+std::string caoText(const std::vector<std::array<double, 3>> &pointsM, const std::vector<std::vector<std::size_t>> &faces,
+                    const std::string &comment)
 {
   std::ostringstream s;
-  s << "V1\n# " << comment << "\n# 3D points\n" << polygon.size() << "\n";
+  s << "V1\n# " << comment << "\n# 3D points\n" << pointsM.size() << "\n";
   char buf[96];
-  for (const vpPoint &p : polygon) {
-    std::snprintf(buf, sizeof buf, "%.6f %.6f %.6f\n", p.get_oX(), p.get_oY(), p.get_oZ());
+  for (const std::array<double, 3> &p : pointsM) {
+    std::snprintf(buf, sizeof buf, "%.6f %.6f %.6f\n", p[0], p[1], p[2]);
     s << buf;
   }
-  s << "# 3D lines\n0\n# Faces from 3D lines\n0\n# Faces from 3D points\n1\n" << polygon.size();
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    s << " " << i;
-  s << "\n# 3D cylinders\n0\n# 3D circles\n0\n";
+  s << "# 3D lines\n0\n# Faces from 3D lines\n0\n# Faces from 3D points\n" << faces.size() << "\n";
+  for (const std::vector<std::size_t> &f : faces) {
+    s << f.size();
+    for (std::size_t i : f)
+      s << " " << i;
+    s << "\n";
+  }
+  s << "# 3D cylinders\n0\n# 3D circles\n0\n";
   return s.str();
+}
+
+std::string caoText(const std::vector<vpPoint> &polygon, const std::string &comment)
+{
+  std::vector<std::array<double, 3>> pts;
+  std::vector<std::vector<std::size_t>> faces(1);
+  for (const vpPoint &p : polygon) {
+    faces[0].push_back(pts.size());
+    pts.push_back({p.get_oX(), p.get_oY(), p.get_oZ()});
+  }
+  return caoText(pts, faces, comment);
 }
 
 std::vector<std::pair<double, double>> projectPolygon(const std::vector<vpPoint> &polygon, const vpHomogeneousMatrix &cMm,

@@ -6,6 +6,7 @@
   (z = 0, the toy's base plane, where the toy's rounded edge meets the backdrop). It becomes a
   one-face .cao model for vpMbGenericTracker, and a template zone for vpTemplateTracker.
 */
+#include <array>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ std::vector<vpPoint> outlinePolygon(const vpImage<unsigned char> &region, const 
 
 //! The .cao text (ViSP's model format, version 1) of one planar face bounded by \e polygon.
 std::string caoText(const std::vector<vpPoint> &polygon, const std::string &comment);
+//! A ViSP .cao model of points (model frame, metres) and faces (indices into them, each a polygon), in ViSP's "V1" text format.
+std::string caoText(const std::vector<std::array<double, 3>> &pointsM, const std::vector<std::vector<std::size_t>> &faces,
+                    const std::string &comment);
 
 //! Where the polygon's vertices project in a camera at cMm (pixels, (i, j) = (v, u)).
 std::vector<std::pair<double, double>> projectPolygon(const std::vector<vpPoint> &polygon, const vpHomogeneousMatrix &cMm,
