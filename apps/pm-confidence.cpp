@@ -12,6 +12,7 @@
 #include "pm/app/Options.h"
 #include "pm/app/Progress.h"
 #include "pm/report/TimePlot.h"
+#include "pm/compare/ConfidenceFit.h"
 #include "pm/compare/ConfidenceStudy.h"
 #include "pm/compare/LabelledFrames.h"
 #include "pm/compare/Roc.h"
@@ -21,17 +22,7 @@
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
 
-namespace {
-
 using pm::compare::LabelledFrame;
-
-std::vector<double> featureRow(const LabelledFrame &f)
-{
-  const auto x = f.cues.features();
-  return {x.begin(), x.end()};
-}
-
-} // namespace
 
 int main(int argc, char **argv)
 {
@@ -40,8 +31,8 @@ int main(int argc, char **argv)
                "supersampling 1, a model of another toy, a look-alike of similar hue beside the toy, an identical twin beside it, the relief "
                "toys R1 and R2 with cast shadows and highlights, the stereo model, a lens; C12 and C08), each frame labelled right when the estimate is "
                "within 2 cm and 5 deg of the truth. Writes frames.csv (cues, confidence, label), roc.png and summary.json "
-               "(auroc, threshold, accept rates); --fit also fits the logistic model anew (two-fold cross-validated by run) "
-               "and prints its coefficients.",
+               "(auroc, threshold, accept rates); --fit also fits the logistic model of the run's kind of photo-model anew (two-fold cross-validated by run, "
+               "its bias placed so that the threshold 0.95 trusts at most --max-false-accept of the wrong frames) and prints its coefficients.",
                "pm-confidence"};
   app.option_defaults()->always_capture_default();
   std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
@@ -58,8 +49,11 @@ int main(int argc, char **argv)
       ->check(CLI::Range(0.0, 1.0));
   app.add_flag("--quick", quick, "two runs on C12 only (for tests)");
   app.add_flag("--fit", fit, "fit the logistic model on the set (two-fold by run for the cross-validated AUROC)");
-  app.add_flag("--all-around", allAround, "every run's model is the all-around one (the PA-10's pass around its toy) "
-               "instead of the flat or stereo one; the tracker then weighs the cues with the all-around coefficients");
+  bool stereo = false;
+  auto *aa = app.add_flag("--all-around", allAround, "every run's model is the all-around one (the PA-10's pass around its toy) "
+                          "instead of the flat one; the tracker then weighs the cues with the all-around coefficients");
+  app.add_flag("--stereo", stereo, "every run's model is the stereo one (the rig's two photos, with their relief) instead of the flat "
+               "one; the tracker weighs the cues with the stereo coefficients")->excludes(aa);
   bool precise = true;
   app.add_flag("--precise,!--no-precise", precise, "the tracker's precise last stage after RM-GA (all-around models: --all-around)");
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
@@ -72,6 +66,7 @@ int main(int argc, char **argv)
     cs.steps = steps;
     cs.quick = quick;
     cs.allAround = allAround;
+    cs.stereo = stereo;
     cs.precise = precise;
     cs.dataDir = pm::app::dataDir();
     std::size_t total = 0;
@@ -82,30 +77,15 @@ int main(int argc, char **argv)
     const pm::compare::ConfidenceStudy study = pm::compare::runConfidenceStudy(defaultRig, cs, [&] { progress.step(); });
     progress.finish();
     const std::vector<LabelledFrame> &set = study.frames;
-    const std::vector<std::size_t> &runOf = study.runOf;
     const pm::compare::ConfidenceReport rep = pm::compare::reportConfidence(study, maxFalseAccept, pm::TrackerParams().confidence.threshold);
-    std::vector<bool> right;
-    for (const auto &f : set)
-      right.push_back(f.right);
-
     nlohmann::json fitJson;
     if (fit) {
-      // Two folds by run (even and odd run indices): each frame scored by the model fitted on the other fold.
-      std::vector<std::vector<double>> rows;
-      std::vector<int> fold;
-      for (std::size_t k = 0; k < set.size(); ++k) {
-        rows.push_back(featureRow(set[k]));
-        fold.push_back(static_cast<int>(runOf[k] % 2));
-      }
-      std::vector<double> held;
-      try {
-        held = pm::compare::crossValidatedLogistic(rows, right, fold, 2);
-      } catch (const pm::Error &e) {
-        throw pm::Error(std::string("--fit (folds: runs of even and odd index): ") + e.what());
-      }
-      const auto all = pm::compare::fitLogistic(rows, right);
-      fitJson = {{"auroc_cross_validated", pm::compare::auroc(held, right)}, {"weights", all.weights}, {"bias", all.bias},
-                 {"features", pm::ConfidenceCues::featureNames()}, {"iterations", all.iterations}};
+      const pm::ConfidenceKind kind = allAround ? pm::ConfidenceKind::AllAround : stereo ? pm::ConfidenceKind::Stereo : pm::ConfidenceKind::Flat;
+      const pm::compare::ConfidenceFit f = pm::compare::fitConfidence(study, kind, maxFalseAccept);
+      fitJson = {{"kind", pm::toString(kind)}, {"auroc_cross_validated", f.aurocCrossValidated}, {"auroc", f.auroc},
+                 {"weights", f.model.weights}, {"bias", f.model.bias}, {"threshold", f.model.threshold},
+                 {"operating_threshold_unshifted", f.operatingThreshold}, {"trusted_right_frames", f.trustedRight},
+                 {"trusted_wrong_frames", f.trustedWrong}, {"features", pm::ConfidenceCues::featureNames()}, {"iterations", f.iterations}};
     }
 
     std::ofstream csv(files.stage("frames.csv"));

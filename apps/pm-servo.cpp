@@ -80,6 +80,9 @@ int main(int argc, char **argv)
   app.add_flag_function(
       "--filter,!--no-filter", [&lp](std::int64_t n) { lp.filter = n > 0 ? pm::lab::LoopParams::Filter::On : pm::lab::LoopParams::Filter::Off; },
       "alpha-beta filter of the estimate (base frame) with velocity feed-forward (default: only without the precise stage)");
+  app.add_option("--max-sigma-mm", lp.maxSigmaMm, "hold the arm when the pose's reported 1-sigma uncertainty along an axis exceeds this (mm; 0: no check; docs/trust.md)")
+      ->check(CLI::Range(0.0, 1e6));
+  app.add_option("--max-sigma-deg", lp.maxSigmaDeg, "... or about an axis exceeds this (deg; 0: no check)")->check(CLI::Range(0.0, 1e6));
   app.add_option("--filter-alpha-rotation", lp.filterParams.alphaR, "filter: rotation gain")->check(CLI::Range(0.01, 1.0));
   app.add_option("--filter-beta-rotation", lp.filterParams.betaR, "filter: angular velocity gain")->check(CLI::Range(0.0, 1.9));
   app.add_option("--filter-alpha-translation", lp.filterParams.alphaT, "filter: translation gain")->check(CLI::Range(0.01, 1.0));

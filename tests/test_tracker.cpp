@@ -341,6 +341,38 @@ TEST(Tracker, BadInputIsRefused)
   pm::TrackerParams c = evalBudget(100);
   c.confidence.threshold = 1.5;
   EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, S.sm.build.model, c); }).find("threshold"), std::string::npos);
+  pm::TrackerParams u = evalBudget(100);
+  u.uncertainty.floor[1] = -1;
+  EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, S.sm.build.model, u); }).find("uncertainty"), std::string::npos);
+}
+
+TEST(Tracker, WeighsTheCuesWithTheCoefficientsOfItsModelsKindUnlessGivenItsOwn)
+{
+  const C12Scene &S = c12(); // a flat model
+  pm::TrackerParams p = evalBudget(100);
+  p.confidence.threshold = 0.9;
+  const pm::PhotoModelTracker flat(S.rig, S.sm.build.model, p);
+  EXPECT_EQ(flat.params().confidence.kind, pm::ConfidenceKind::Flat);
+  EXPECT_EQ(flat.params().confidence.weights, pm::ConfidenceModel::shipped(pm::ConfidenceKind::Flat).weights);
+  EXPECT_NE(flat.params().confidence.weights[4], 0.0); // the flat model weighs the tilt
+  EXPECT_DOUBLE_EQ(flat.params().confidence.threshold, 0.9); // the threshold as given
+  p.confidence.kind = pm::ConfidenceKind::Custom;
+  p.confidence.weights.fill(0.25);
+  const pm::PhotoModelTracker custom(S.rig, S.sm.build.model, p);
+  EXPECT_EQ(custom.params().confidence.weights[4], 0.25);
+  // The kinds that see the relief do not weigh the tilt; only the all-around one weighs the precise stage's cues.
+  for (pm::ConfidenceKind k : {pm::ConfidenceKind::Stereo, pm::ConfidenceKind::AllAround}) {
+    const pm::ConfidenceModel m = pm::ConfidenceModel::shipped(k);
+    EXPECT_EQ(m.weights[4], 0.0) << pm::toString(k);
+    EXPECT_FALSE(pm::ConfidenceModel::featuresUsed(k)[4]);
+  }
+  for (std::size_t i = 12; i < pm::ConfidenceCues::kFeatures; ++i) {
+    EXPECT_EQ(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Stereo).weights[i], 0.0) << i;
+    EXPECT_EQ(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Flat).weights[i], 0.0) << i;
+    EXPECT_TRUE(pm::ConfidenceModel::featuresUsed(pm::ConfidenceKind::AllAround)[i]) << i;
+  }
+  EXPECT_THROW(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Auto), pm::Error);
+  EXPECT_THROW(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Custom), pm::Error);
 }
 
 TEST(TrackerConfig, FileRoundTripAndErrors)
@@ -367,6 +399,9 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.rejectMarginQ = 0.25;
   p.coarseSearch = false;
   p.steadyEscalation = false;
+  p.confidence.kind = pm::ConfidenceKind::Custom;
+  p.uncertainty.scale[3] = 2.5;
+  p.uncertainty.floor[0] = 0.125;
   pm::test::writeText(d.file("t.json"), pm::trackerConfigToJson(p));
   const pm::TrackerParams q = pm::loadTrackerConfig(d.file("t.json"));
   EXPECT_EQ(q.budgetEvaluations, 1234);
@@ -380,6 +415,9 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_DOUBLE_EQ(q.verifySameObjectMm, 45);
   EXPECT_DOUBLE_EQ(q.confidence.weights[2], -3.25);
   EXPECT_DOUBLE_EQ(q.confidence.threshold, 0.7);
+  EXPECT_EQ(q.confidence.kind, pm::ConfidenceKind::Custom);
+  EXPECT_DOUBLE_EQ(q.uncertainty.scale[3], 2.5);
+  EXPECT_DOUBLE_EQ(q.uncertainty.floor[0], 0.125);
   EXPECT_EQ(q.smoothAscent.maxEvaluations, 31);
   EXPECT_DOUBLE_EQ(q.smoothAscent.minStepPx, 0.03);
   EXPECT_DOUBLE_EQ(q.smoothAscentMaxDrop, 0.04);
@@ -398,6 +436,11 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
   EXPECT_EQ(pm::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
   EXPECT_EQ(pm::loadTrackerConfig(d.file("partial.json")).ga.population, 20);
+  // Weights written without a kind are meant to be used: the kind is then custom.
+  pm::test::writeText(d.file("weights.json"), R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"weights":[1,1,1,1,1,1,1,1,1,1,1,1,0,0,0,0,0,0]}})");
+  EXPECT_EQ(pm::loadTrackerConfig(d.file("weights.json")).confidence.kind, pm::ConfidenceKind::Custom);
+  pm::test::writeText(d.file("kind.json"), R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"kind":"all-around"}})");
+  EXPECT_EQ(pm::loadTrackerConfig(d.file("kind.json")).confidence.kind, pm::ConfidenceKind::AllAround);
   const std::vector<std::pair<std::string, std::string>> bad = {
       {R"({"format":"visp-photomodel-tracker","version":1,"budget_ms":0})", "budget"},
       {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"populaton":10}})", "populaton"},
@@ -412,6 +455,8 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
       {R"({"format":"visp-photomodel-tracker","version":1,"tilt_filter_all_around":{"beta":1}})", "tilt filter"},
       {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"threshold":0}})", "threshold"},
       {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"wieghts":[1]}})", "wieghts"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"kind":"round"}})", "unknown kind"},
+      {R"({"format":"visp-photomodel-tracker","version":1,"uncertainty":{"scale":[1,1,0,1,1,1]}})", "uncertainty"},
       {"{ not json", "not valid"},
       {R"({"format":"x"})", "format"}};
   for (const auto &[text, expect] : bad) {

@@ -49,8 +49,8 @@ ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const Confidence
     for (const auto &r : pass.runs) {
       const sim::Scene own(sim::makeTarget(r.model));
       lab::LabModelChoice choice;
-      choice.stereo = r.stereo && !params.allAround;
-      choice.flat = !r.stereo && !params.allAround;
+      choice.stereo = (r.stereo || params.stereo) && !params.allAround;
+      choice.flat = !choice.stereo && !params.allAround;
       models.push_back(lab::makeLabModel(own, rig, choice));
     }
     std::vector<ConfidenceRun> runs;
@@ -66,7 +66,7 @@ ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const Confidence
       c.params.ga.seed = r.seed;
       c.params.steadyBudgetFraction = r.steady;
       c.params.preciseStage = params.precise;
-      c.name = pass.label + ": " + (params.allAround ? "all-around model of " : r.stereo ? "stereo model of " : "model of ") + r.model +
+      c.name = pass.label + ": " + (params.allAround ? "all-around model of " : r.stereo || params.stereo ? "stereo model of " : "model of ") + r.model +
                ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) + (r.steady < 1 ? ", steady frames 25 %" : "");
       runs.push_back(c);
       study.runNames.push_back(c.name);

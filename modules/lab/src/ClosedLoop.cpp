@@ -27,6 +27,8 @@ ClosedLoop::ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim:
     throw Error("closed loop: the frame rate must be positive and the robot step at most a frame");
   if (!(lp.qualityDrop > 0 && lp.qualityMemoryPerS >= 0))
     throw Error("closed loop: the quality drop must be positive and its memory rate non-negative");
+  if (!(lp.maxSigmaMm >= 0 && lp.maxSigmaDeg >= 0))
+    throw Error("closed loop: the largest uncertainty allowed must be non-negative (0: no check)");
   m_robot.setPosition(vpRobot::JOINT_STATE, lp.q0);
   m_robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
   // The target starts at the desired pose in front of the hand.
@@ -64,7 +66,7 @@ LoopFrame ClosedLoop::step()
   m_qRef -= m_lp.qualityMemoryPerS / m_lp.fps;
   const bool usable = m_lp.oracle || (f.track.trusted && !f.frozen &&
                                       f.track.quality >= m_tracker.params().lostQuality &&
-                                      f.track.quality >= m_qRef - m_lp.qualityDrop && f.track.phi.isValid() &&
+                                      f.track.quality >= m_qRef - m_lp.qualityDrop && f.track.phi.isValid() && certainEnough(f.track.uncertainty) &&
                                       m_tracker.params().space.contains(f.track.phi));
   if (usable)
     m_qRef = std::max(m_qRef, f.track.quality);

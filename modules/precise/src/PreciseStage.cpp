@@ -168,6 +168,8 @@ PreciseResult PreciseStage::refine(const Phi &start, bool near)
   res.lines = {n[0], n[1]};
   res.residualPx = total ? std::sqrt((r2[0] + r2[1]) / static_cast<double>(total)) : 0.0;
   res.separation = total ? sep / static_cast<double>(total) : 0.0;
+  for (std::size_t k = 0; k < 2; ++k)
+    res.residualPxPerCamera[k] = n[k] ? std::sqrt(r2[k] / static_cast<double>(n[k])) : 0.0;
   res.phi = phi;
   res.ok = true;
   return res;

@@ -58,6 +58,7 @@ void TrackerParams::validate() const
     throw Error("tracker: the re-verification frames must be non-negative and its confidence lie in [0, 1], the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
                 "same-object distance be non-negative and its far distances positive");
   confidence.validate();
+  uncertainty.validate();
   precise.validate();
   if (!(preciseMaxDropQ >= 0) || !(preciseRestartMm > 0) || !(preciseRestartDeg > 0) || !(preciseMaxMoveMm > 0) || !(preciseMaxMoveDeg > 0))
     throw Error("tracker: the precise stage's fitness drop must be non-negative and its restart and move distances positive");
@@ -118,6 +119,12 @@ PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &mod
   }
   if (params.preciseStage && model.hasContours())
     m_precise = std::make_unique<PreciseStage>(rig, model, params.precise);
+  if (params.confidence.kind == ConfidenceKind::Auto) { // the coefficients of the model's kind, the threshold as given
+    const ConfidenceKind kind = model.isAllAround() ? ConfidenceKind::AllAround : model.hasDepth() ? ConfidenceKind::Stereo : ConfidenceKind::Flat;
+    const double threshold = m_params.confidence.threshold;
+    m_params.confidence = ConfidenceModel::shipped(kind);
+    m_params.confidence.threshold = threshold;
+  }
   initialize();
 }
 
@@ -467,6 +474,17 @@ void PhotoModelTracker::scoreConfidence(TrackResult &r, const Frame &f)
   c.framesTracked = m_framesTracked;
   c.verified = m_verified;
   c.tracking = r.state == TrackState::Tracking;
+  if (r.precise) { // how well the precise stage's lines pin the pose, and how well they fit
+    const PreciseResult &p = r.preciseResult;
+    const std::array<double, 6> s = lineSigmas(p.information);
+    c.precise = true;
+    c.preciseResidualPx = p.residualPx;
+    c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
+    c.preciseSigmaDeg = std::min(1e3, std::max({s[3], s[4], s[5]}));
+    c.separation = p.separation;
+    c.cameraDisagreementPx = std::fabs(p.residualPxPerCamera[0] - p.residualPxPerCamera[1]);
+    r.uncertainty = m_params.uncertainty.uncertainty(s, p.residualPx);
+  }
   r.verified = m_verified;
   r.confidence = m_params.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_params.confidence.threshold;

@@ -20,23 +20,88 @@ std::array<double, ConfidenceCues::kFeatures> ConfidenceCues::features() const
           std::log1p(std::max(0.0, jumpDeg)),
           std::min(framesTracked, 30) / 30.0,
           verified ? 1.0 : 0.0,
-          tracking ? 1.0 : 0.0};
+          tracking ? 1.0 : 0.0,
+          precise ? 1.0 : 0.0,
+          precise ? preciseResidualPx : 0.0,
+          precise ? std::log1p(std::max(0.0, preciseSigmaMm)) : 0.0,
+          precise ? std::log1p(std::max(0.0, preciseSigmaDeg)) : 0.0,
+          precise ? separation : 0.0,
+          precise ? std::log1p(std::max(0.0, cameraDisagreementPx)) : 0.0};
 }
 
 const std::array<const char *, ConfidenceCues::kFeatures> &ConfidenceCues::featureNames()
 {
   static const std::array<const char *, kFeatures> names{"quality",       "quality_min",   "in_match_min",   "out_background_min",
                                                          "tilt_deg_10",   "competitor_margin", "quality_drop",  "log1p_jump_mm",  "log1p_jump_deg",
-                                                         "frames_tracked", "verified",     "tracking"};
+                                                         "frames_tracked", "verified",     "tracking",
+                                                         "precise",        "precise_residual_px", "log1p_precise_sigma_mm", "log1p_precise_sigma_deg",
+                                                         "separation",     "log1p_camera_disagreement_px"};
   return names;
 }
 
-ConfidenceModel::ConfidenceModel()
-    // Fitted by `pm-confidence --fit` on its labelled set (28,809 frames, 11 runs; README "Trust");
-    // at the threshold under 1 percent of the wrong frames there are trusted.
-    : weights{0.9438, 1.1876, 1.0343, 0.0937, -2.3464, 1.9558, -0.5062, -0.8389, -0.5246, 0.4761, 0.8054, 0.1629},
-      bias(1.0548), threshold(0.95)
+const char *toString(ConfidenceKind k)
 {
+  switch (k) {
+  case ConfidenceKind::Auto:
+    return "auto";
+  case ConfidenceKind::Flat:
+    return "flat";
+  case ConfidenceKind::Stereo:
+    return "stereo";
+  case ConfidenceKind::AllAround:
+    return "all-around";
+  case ConfidenceKind::Custom:
+    break;
+  }
+  return "custom";
+}
+
+ConfidenceKind confidenceKindFromString(const std::string &s)
+{
+  for (ConfidenceKind k : {ConfidenceKind::Auto, ConfidenceKind::Flat, ConfidenceKind::Stereo, ConfidenceKind::AllAround, ConfidenceKind::Custom})
+    if (s == toString(k))
+      return k;
+  throw Error("confidence model: unknown kind '" + s + "' (auto, flat, stereo, all-around or custom)");
+}
+
+ConfidenceModel::ConfidenceModel() : ConfidenceModel(shipped(ConfidenceKind::Flat)) { kind = ConfidenceKind::Auto; }
+
+std::array<bool, ConfidenceCues::kFeatures> ConfidenceModel::featuresUsed(ConfidenceKind kind)
+{
+  std::array<bool, ConfidenceCues::kFeatures> used{};
+  for (std::size_t i = 0; i < 12; ++i)
+    used[i] = true;
+  if (kind == ConfidenceKind::Flat)
+    return used;
+  used[4] = false; // the tilt: a model that knows the relief is not biased by it
+  if (kind == ConfidenceKind::AllAround)
+    for (std::size_t i = 12; i < ConfidenceCues::kFeatures; ++i)
+      used[i] = true;
+  return used;
+}
+
+ConfidenceModel ConfidenceModel::shipped(ConfidenceKind kind)
+{
+  ConfidenceModel m{Blank{}};
+  m.kind = kind;
+  m.threshold = 0.95;
+  switch (kind) {
+  case ConfidenceKind::Flat:
+    // Fitted by `pm-confidence --fit` on its labelled set (28,809 frames, 11 runs; docs/trust.md);
+    // at the threshold under 1 percent of the wrong frames there are trusted.
+    m.weights = {0.9438, 1.1876, 1.0343, 0.0937, -2.3464, 1.9558, -0.5062, -0.8389, -0.5246, 0.4761, 0.8054, 0.1629, 0, 0, 0, 0, 0, 0};
+    m.bias = 1.0548;
+    return m;
+  case ConfidenceKind::Stereo:
+  case ConfidenceKind::AllAround:
+    m.weights = {0.9438, 1.1876, 1.0343, 0.0937, 0, 1.9558, -0.5062, -0.8389, -0.5246, 0.4761, 0.8054, 0.1629, 0, 0, 0, 0, 0, 0};
+    m.bias = 1.0548;
+    return m;
+  case ConfidenceKind::Auto:
+  case ConfidenceKind::Custom:
+    break;
+  }
+  throw Error(std::string("confidence model: no shipped coefficients for the kind '") + toString(kind) + "'");
 }
 
 double ConfidenceModel::confidence(const ConfidenceCues &c) const

@@ -12,6 +12,10 @@ using nlohmann::json;
 
 namespace pm {
 
+// The confidence model's kind as its name ("auto", "flat", ..., see toString(ConfidenceKind)).
+void to_json(json &j, const ConfidenceKind &k) { j = toString(k); }
+void from_json(const json &j, ConfidenceKind &k) { k = confidenceKindFromString(j.get<std::string>()); }
+
 namespace {
 constexpr const char *kFormat = "visp-photomodel-tracker";
 
@@ -90,8 +94,9 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
       .value("reverify_after_frames", p.reverifyAfterFrames)
       .value("reverify_below_confidence", p.reverifyBelowConfidence)
       .section("confidence", [&](V &c) {
-        c.value("weights", p.confidence.weights).value("bias", p.confidence.bias).value("threshold", p.confidence.threshold);
+        c.value("kind", p.confidence.kind).value("weights", p.confidence.weights).value("bias", p.confidence.bias).value("threshold", p.confidence.threshold);
       })
+      .section("uncertainty", [&](V &u) { u.value("scale", p.uncertainty.scale).value("floor", p.uncertainty.floor); })
       .section("search_space", [&](V &s) { s.value("lo", p.space.lo).value("hi", p.space.hi); })
       .section("rmga", [&](V &g) {
         g.value("population", p.ga.population)
@@ -202,6 +207,10 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
     top.known("format").known("version");
     eachKey(top, p);
     top.done();
+    const json &c = j.value("confidence", json::object());
+    if (c.is_object() && c.contains("weights") && !c.contains("kind"))
+      p.confidence.kind = ConfidenceKind::Custom; // weights written by hand are meant to be used
+
     p.validate();
   } catch (const Error &e) {
     throw Error("tracker configuration '" + path + "': " + e.what());

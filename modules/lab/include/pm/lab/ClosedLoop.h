@@ -8,7 +8,8 @@
 
   Fail-safe: the servo runs only on an estimate that is usable: the tracker trusts it
   (TrackResult::trusted: tracking, its lock verified, its confidence over the threshold), its quality is not under the lost threshold (no grace frames here) nor far under its recent best
-  (LoopParams::qualityDrop), the pose lies in the search
+  (LoopParams::qualityDrop), its reported 1-sigma uncertainty is within LoopParams::maxSigmaMm
+  and maxSigmaDeg, the pose lies in the search
   space, and the images are not the very same as the last ones (a frozen camera: real frames are
   never equal to the bit). Otherwise the arm is stopped. Every command goes through
   pm::SafeCommand with the PA-10's speed and acceleration limits, so a stop is a ramp of at most
@@ -54,6 +55,14 @@ struct LoopParams
   */
   double qualityDrop = 0.08;
   double qualityMemoryPerS = 0.03; //!< how fast the recent best q is forgotten (q units per second, >= 0)
+  /*!
+    Fail-safe on the pose's reported uncertainty (TrackResult::uncertainty, 1-sigma per axis): the
+    servo also stops when it is known and its largest sigma exceeds maxSigmaMm (mm) or maxSigmaDeg
+    (deg). A frame without a known uncertainty (no precise stage: the flat and stereo models, or
+    its pose not kept) is judged by the other checks alone. 0: no such check.
+  */
+  double maxSigmaMm = 0;
+  double maxSigmaDeg = 0; //!< see maxSigmaMm
   vpColVector q0 = startJoints(); //!< initial joints (never empty: ViSP 3.5 copies an empty vpColVector with memcpy(nullptr))
 
   //! The PA-10 looking horizontally along the base's x axis, elbow and wrist well bent (away from their singularities): (0, -35, 0, 80, 0, 45, -90) deg.
@@ -147,6 +156,11 @@ public:
   bool filtering() const
   {
     return m_lp.filter == LoopParams::Filter::On || (m_lp.filter == LoopParams::Filter::Auto && !m_tracker.hasPreciseStage());
+  }
+  //! False when \e u is known and over LoopParams::maxSigmaMm or maxSigmaDeg (each when positive).
+  bool certainEnough(const PoseUncertainty &u) const
+  {
+    return !u.known || ((m_lp.maxSigmaMm <= 0 || u.maxMm() <= m_lp.maxSigmaMm) && (m_lp.maxSigmaDeg <= 0 || u.maxDeg() <= m_lp.maxSigmaDeg));
   }
   //! The simulated PA-10 that carries the rig.
   const sim::RobotPA10 &robot() const { return m_robot; }

@@ -79,6 +79,7 @@ struct PreciseResult
   */
   std::array<double, 36> information{};
   double residualPx = 0;       //!< rms distance between the outline found on each line and the model's (finest scale, px)
+  std::array<double, 2> residualPxPerCamera{}; //!< the same in the left and in the right camera alone (0 where a camera has no line)
   double separation = 0;       //!< mean over lines of how sharply target and background split along them, in [0, 1]
   int iterations = 0;          //!< Gauss-Newton steps taken
 };

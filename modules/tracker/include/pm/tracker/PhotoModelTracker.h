@@ -39,6 +39,7 @@
 #include <memory>
 
 #include "pm/core/StereoFitness.h"
+#include "pm/precise/PoseUncertainty.h"
 #include "pm/precise/PreciseStage.h"
 #include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
@@ -245,8 +246,14 @@ struct TrackerParams
   */
   int reverifyAfterFrames = 15;
   double reverifyBelowConfidence = 0.5; //!< the confidence under which a tracked, verified frame counts toward reverifyAfterFrames
-  //! How the frame's confidence is computed from its cues, and its threshold (TrackResult::trusted).
+  /*!
+    How the frame's confidence is computed from its cues, and its threshold (TrackResult::trusted).
+    Its kind Auto (the default): the tracker weighs the cues with the coefficients shipped for its
+    model's kind (flat, stereo or all-around); the threshold is this one.
+  */
   ConfidenceModel confidence;
+  //! From the precise stage's information to the reported 1-sigma per axis (TrackResult::uncertainty).
+  UncertaintyModel uncertainty;
 
   //! Throws pm::Error naming the first parameter out of range.
   void validate() const;
@@ -279,6 +286,8 @@ struct TrackResult
   int ascentEvaluations = 0; //!< evaluations of the smooth score and its gradient by the climb (0: none)
   bool precise = false;      //!< the precise stage's pose is the frame's (TrackerParams::preciseStage)
   PreciseResult preciseResult; //!< what the precise stage found (its lines, residual, information), when it ran
+  //! The pose's 1-sigma per axis in mm and deg (PoseUncertainty.h): known when the precise stage's pose is the frame's.
+  PoseUncertainty uncertainty;
 
   ConfidenceCues cues;       //!< what the confidence is computed from
   double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)

@@ -19,7 +19,17 @@
   - how far the pose jumped since the last frame (the hand's own motion taken out), in mm and deg;
   - how long the target has been tracked, and whether the lock was verified (a challenger search
     after the lock found no better pose elsewhere, see TrackerParams::verifyEvaluations);
-  - whether the tracker says it is tracking at all.
+  - whether the tracker says it is tracking at all;
+  - from the precise stage, when its pose is the frame's (all-around models): the rms distance
+    between the outline found along its lines and the model's, how well its lines pin the pose
+    (the largest 1-sigma of their own covariance, in mm and deg, PoseUncertainty.h), how sharply
+    the colours split into target and background along them, and how much the two cameras'
+    residuals differ (a pose that fits one camera's outline only).
+
+  Each kind of photo-model has its own coefficients (ConfidenceKind, ConfidenceModel::shipped),
+  fitted on labelled runs of that kind: the flat model weighs the tilt (its error grows with the
+  tilt, the relief it does not know), the stereo and all-around models do not (they see the
+  relief); only the all-around model has the precise stage's cues.
 
   \code
     pm::ConfidenceModel m;                 // the shipped coefficients
@@ -47,13 +57,38 @@ struct ConfidenceCues
   int framesTracked = 0;     //!< frames in a row in the tracking state, this one included
   bool verified = false;     //!< the lock survived its challenger search
   bool tracking = false;     //!< the state is tracking
+  bool precise = false;      //!< the precise stage's pose is the frame's (the cues below are measured)
+  double preciseResidualPx = 0; //!< PreciseResult::residualPx
+  double preciseSigmaMm = 0;    //!< the largest of the lines' own 1-sigma along x, y, z (mm, lineSigmas())
+  double preciseSigmaDeg = 0;   //!< the largest of the lines' own 1-sigma about x, y, z (deg)
+  double separation = 0;        //!< PreciseResult::separation, in [0, 1]
+  double cameraDisagreementPx = 0; //!< |left camera's residual - right camera's| (px)
 
-  static constexpr std::size_t kFeatures = 12; //!< the number of features
-  //! The features the logistic model weighs (the jumps as log1p, the frames capped at 30, then / 30, the tilt / 10).
+  static constexpr std::size_t kFeatures = 18; //!< the number of features
+  /*!
+    The features the logistic model weighs (the jumps as log1p, the frames capped at 30, then / 30,
+    the tilt / 10; the precise stage's: its flag, then the residual, log1p of the sigmas, the
+    separation and the disagreement, each 0 when the flag is 0).
+  */
   std::array<double, kFeatures> features() const;
   //! The features' names, in the order of features() ("quality", "quality_min", ..., "tracking").
   static const std::array<const char *, kFeatures> &featureNames();
 };
+
+//! The kind of photo-model a confidence model is fitted on; Auto: the tracker's model's own kind.
+enum class ConfidenceKind
+{
+  Auto,      //!< the kind of the tracker's model (PhotoModelTracker's constructor chooses)
+  Flat,      //!< the paper's flat model (two photos face-on)
+  Stereo,    //!< the stereo snapshot model (relief from the rig's two cameras)
+  AllAround, //!< the all-around model (a pass of the hand around the target)
+  Custom     //!< the weights as given (a configuration file's)
+};
+
+//! "auto", "flat", "stereo", "all-around" or "custom".
+const char *toString(ConfidenceKind k);
+//! The kind named \e s (as toString()); throws pm::Error for another name.
+ConfidenceKind confidenceKindFromString(const std::string &s);
 
 /*!
   The logistic model that turns a frame's cues into its confidence, with the threshold of trust.
@@ -87,13 +122,32 @@ struct ConfidenceModel
   std::array<double, ConfidenceCues::kFeatures> weights{};
   double bias = 0;        //!< the bias b
   double threshold = 0.5; //!< the confidence from which an estimate is trusted (the constructor sets 0.95)
+  /*!
+    Whose coefficients these are. Auto (the default): PhotoModelTracker replaces the weights and
+    the bias with those shipped for its model's kind (the threshold stays); Custom: as given.
+  */
+  ConfidenceKind kind = ConfidenceKind::Auto;
 
-  //! The shipped model (fitted by pm-confidence, see README "Trust").
+  //! The flat model's shipped coefficients, kind Auto, threshold 0.95.
   ConfidenceModel();
+  /*!
+    The coefficients shipped for the model \e kind (Flat, Stereo or AllAround; fitted by
+    `pm-confidence --fit`, docs/trust.md), each kind's bias placed so that its operating point is
+    the threshold 0.95. The result's kind is \e kind. Throws pm::Error for Auto or Custom.
+  */
+  static ConfidenceModel shipped(ConfidenceKind kind);
+  //! The features a model of \e kind weighs (the others' weights are 0): Flat the first 12, Stereo those but the tilt, AllAround also the precise stage's.
+  static std::array<bool, ConfidenceCues::kFeatures> featuresUsed(ConfidenceKind kind);
   //! 1 / (1 + exp(-(w . x + b))) with x = c.features(): in (0, 1).
   double confidence(const ConfidenceCues &c) const;
   //! Throws pm::Error if a coefficient is not finite or the threshold is outside (0, 1).
   void validate() const;
+
+private:
+  struct Blank
+  {
+  };
+  explicit ConfidenceModel(Blank) {} // every weight 0 (shipped() fills them)
 };
 
 } // namespace pm
