@@ -81,7 +81,12 @@ int main(int argc, char **argv)
     nlohmann::json fitJson;
     if (fit) {
       const pm::ConfidenceKind kind = allAround ? pm::ConfidenceKind::AllAround : stereo ? pm::ConfidenceKind::Stereo : pm::ConfidenceKind::Flat;
-      const pm::compare::ConfidenceFit f = pm::compare::fitConfidence(study, kind, maxFalseAccept);
+      pm::compare::ConfidenceFit f;
+      try {
+        f = pm::compare::fitConfidence(study, kind, maxFalseAccept);
+      } catch (const pm::Error &e) {
+        throw pm::Error(std::string("--fit: ") + e.what());
+      }
       fitJson = {{"kind", pm::toString(kind)}, {"auroc_cross_validated", f.aurocCrossValidated}, {"auroc", f.auroc},
                  {"weights", f.model.weights}, {"bias", f.model.bias}, {"threshold", f.model.threshold},
                  {"operating_threshold_unshifted", f.operatingThreshold}, {"trusted_right_frames", f.trustedRight},

@@ -86,7 +86,7 @@ int main(int argc, char **argv)
     const vpRGBa colours[] = {vpRGBa(200, 40, 40), vpRGBa(40, 90, 200), vpRGBa(30, 150, 60), vpRGBa(190, 120, 0), vpRGBa(130, 50, 170), vpRGBa(0, 150, 160)};
     for (std::size_t a = 0; a < 6; ++a) {
       panels[a] = {kAxes[a], "% within", {}, 0, {1.0}};
-      pm::report::Series gauss{"Gaussian", vpRGBa(90, 90, 90), {}, {}, true};
+      pm::report::Series gauss{"Gaussian", vpRGBa(0, 0, 0), {}, {}, true};
       for (int k = 0; k <= 30; ++k) {
         gauss.t.push_back(k / 10.0);
         gauss.y.push_back(100 * std::erf(k / 10.0 / std::sqrt(2.0)));
@@ -101,7 +101,7 @@ int main(int argc, char **argv)
           csv << "," << s.error[a] << "," << s.lineSigma[a] << "," << (a < 3 ? u.sigmaMm[a] : u.sigmaDeg[a - 3]);
         csv << "\n";
       }
-      const std::string name = runs[i].target + " seed " + std::to_string(runs[i].seed) + (i < fitRuns.size() ? " (fit)" : "");
+      const std::string name = runs[i].target + ":" + std::to_string(runs[i].seed) + (i < fitRuns.size() ? " fit" : "");
       runsJson.push_back({{"name", name}, {"frames", samples[i].size()}, {"within_1_sigma", pm::compare::shareWithin(samples[i], model, 1.0)},
                           {"within_2_sigma", pm::compare::shareWithin(samples[i], model, 2.0)}});
       for (std::size_t a = 0; a < 6; ++a) {
@@ -116,7 +116,7 @@ int main(int argc, char **argv)
     csv.close();
     if (!csv)
       throw pm::Error("cannot write samples.csv");
-    pm::io::writeImage(pm::report::drawTimePlots(panels, 3, "Share of true errors within m reported sigmas (dashed: a Gaussian, 68 % at m = 1)", "m (sigmas)", 420),
+    pm::io::writeImage(pm::report::drawTimePlots(panels, 3, "Share of true errors within m reported sigmas (dashed: a Gaussian, 68 % at m = 1)", "m (sigmas)", 560),
                        files.stage("calibration.png"));
     const nlohmann::json summary{{"model", {{"scale", model.scale}, {"floor", model.floor}, {"fitted", fit}}},
                                  {"axes", {"x mm", "y mm", "z mm", "about x deg", "about y deg", "about z deg"}},

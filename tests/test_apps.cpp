@@ -42,7 +42,7 @@ void expectOneLineError(const pm::test::RunResult &r, const std::string &fragmen
 TEST(Apps, HelpExitsZeroAndShowsDefaults)
 {
   for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
-                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-bench"}) {
+                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-uncertainty", "pm-bench"}) {
     const auto r = runProgram(p, "--help");
     EXPECT_EQ(r.status, 0) << p;
     EXPECT_NE(r.out.find(std::string(p) == "pm-bench" ? "benchmark" : "--out"), std::string::npos) << p;
@@ -68,7 +68,7 @@ TEST(Apps, EveryProgramSpeaksTheSameVocabulary)
                                       "--output", "--out-dir", "--model-file", "--rig-file", "--random-seed", "--silent"};
   int withImages = 0, withRig = 0;
   for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
-                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence"}) {
+                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-uncertainty"}) {
     const auto r = runProgram(p, "--help");
     ASSERT_EQ(r.status, 0) << p;
     const std::set<std::string> o = options(r.out);

@@ -390,6 +390,17 @@ TEST(PmConfidence, ItsFiguresOnASmallSetAndItsErrors)
   EXPECT_FALSE(std::filesystem::exists(e.file("o") + "/summary.json"));
 }
 
+TEST(PmUncertainty, BadRunsAreRefusedAndNothingIsWritten)
+{
+  TempDir e("uncertainty-bad");
+  for (const char *runs : {"C12:x", "Z9:1"}) {
+    const auto r = runProgram("pm-uncertainty", std::string("--quiet --check-runs '' --fit-runs ") + runs + " --out " + e.file("o"));
+    EXPECT_EQ(r.status, 1) << runs;
+    EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(e.file("o") + "/summary.json")) << runs;
+  }
+}
+
 TEST(Comparison, OneRowPerFrameAndTrackerTheResultsShapeAndAClearErrorForAnUnknownTracker)
 {
   // The runner behind pm-compare, on the first step of Table 2 with ours and ViSP's KLT tracker.

@@ -215,9 +215,29 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::getline(lines, header);
   std::getline(lines, row);
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 40); // 41 columns: 27 and 14 joints
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 46); // 47 columns: 27, 6 sigmas and 14 joints
   EXPECT_NE(row.find(",1.25,"), std::string::npos) << row;
   EXPECT_NE(row.find(",oracle,"), std::string::npos) << row;
+  EXPECT_NE(row.find(",,,,,,"), std::string::npos) << row; // an unknown uncertainty: six empty cells
+  // A known uncertainty: its six sigmas under their headers.
+  f.track.uncertainty.known = true;
+  f.track.uncertainty.sigmaMm = {0.125, 0.25, 0.5};
+  f.track.uncertainty.sigmaDeg = {0.375, 0.625, 0.875};
+  std::ostringstream known;
+  pm::lab::writeLoopCsvRow(known, f, true);
+  const std::string k = known.str();
+  const auto col = [&](const std::string &name) {
+    const auto at = header.find(name);
+    return at == std::string::npos ? -1 : static_cast<int>(std::count(header.begin(), header.begin() + static_cast<long>(at), ','));
+  };
+  const auto cell = [&](int c) {
+    std::size_t b = 0;
+    for (int i = 0; i < c; ++i)
+      b = k.find(',', b) + 1;
+    return k.substr(b, k.find(',', b) - b);
+  };
+  EXPECT_EQ(cell(col("sigma_x_mm")), "0.125");
+  EXPECT_EQ(cell(col("sigma_rz_deg")), "0.875");
 }
 
 TEST(TargetRendering, TheReliefTurnsTheTimeIsTheMeanAndTheGalleryHoldsEveryTarget)

@@ -1,8 +1,8 @@
 #include "pm/lab/LoopTable.h"
+#include "pm/lab/TrackingReport.h"
 
 #include <iomanip>
 #include <ostream>
-#include <string>
 
 namespace pm::lab {
 
@@ -11,7 +11,8 @@ void writeLoopCsvHeader(std::ostream &csv)
   csv << std::setprecision(8) << "t,moving,true_x,true_y,true_z,true_e1,true_e2,true_e3,used_x,used_y,used_z,used_e1,used_e2,used_e3,"
          "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms,estimate_error_mm,estimate_error_deg,"
          "used_error_mm,used_error_deg,"
-         "confidence,verified,trusted,sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg";
+         "confidence,verified,trusted"
+      << uncertaintyCsvHeader();
   for (int i = 1; i <= 7; ++i)
     csv << ",q" << i;
   for (int i = 1; i <= 7; ++i)
@@ -31,11 +32,7 @@ void writeLoopCsvRow(std::ostream &csv, const LoopFrame &f, bool oracle)
       << (oracle ? "oracle" : toString(f.track.state)) << "," << (f.servoing ? 1 : 0) << "," << f.track.computeMs << ","
       << f.estimateErrorMm << "," << f.estimateErrorDeg << "," << f.usedErrorMm << "," << f.usedErrorDeg << ","
       << f.track.confidence << "," << (f.track.verified ? 1 : 0) << "," << (f.track.trusted ? 1 : 0);
-  const PoseUncertainty &u = f.track.uncertainty; // empty cells when unknown
-  for (double v : u.sigmaMm)
-    csv << "," << (u.known ? std::to_string(v) : "");
-  for (double v : u.sigmaDeg)
-    csv << "," << (u.known ? std::to_string(v) : "");
+  writeUncertaintyCells(csv, f.track.uncertainty);
   for (unsigned i = 0; i < 7; ++i)
     csv << "," << f.q[i];
   for (unsigned i = 0; i < 7; ++i)

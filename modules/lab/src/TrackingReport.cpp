@@ -95,7 +95,8 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
 {
   out << "t,true_x,true_y,true_z,true_e1,true_e2,true_e3,est_x,est_y,est_z,est_e1,est_e2,est_e3,err_x,err_y,err_z,"
-         "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving\n";
+         "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving,confidence,trusted"
+      << uncertaintyCsvHeader() << "\n";
   out << std::setprecision(8);
   for (const TrackedFrame &f : frames) {
     out << f.t;
@@ -106,10 +107,24 @@ void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
     for (std::size_t i = 0; i < 6; ++i)
       out << "," << (f.haveTruth ? f.result.phi[i] - f.truth[i] : NAN);
     out << "," << f.result.fitness << "," << f.result.quality << "," << toString(f.result.state) << ","
-        << f.result.evaluations << "," << f.result.generations << "," << f.result.computeMs << "," << (f.moving ? 1 : 0) << "\n";
+        << f.result.evaluations << "," << f.result.generations << "," << f.result.computeMs << "," << (f.moving ? 1 : 0) << ","
+        << f.result.confidence << "," << (f.result.trusted ? 1 : 0);
+    writeUncertaintyCells(out, f.result.uncertainty);
+    out << "\n";
   }
   if (!out)
     throw Error("cannot write the frames' table");
+}
+
+const char *uncertaintyCsvHeader() { return ",sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg"; }
+
+void writeUncertaintyCells(std::ostream &out, const PoseUncertainty &u)
+{
+  for (std::size_t i = 0; i < 6; ++i) {
+    out << ",";
+    if (u.known)
+      out << (i < 3 ? u.sigmaMm[i] : u.sigmaDeg[i - 3]);
+  }
 }
 
 std::string trackingSummaryJson(const TrackingReport &report, const TrackingRunInfo &info)

@@ -82,9 +82,15 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
 /*!
   Writes \e frames as pm-track's frames.csv: a header, then per frame t, the truth (NaN when
   unknown), the estimate, their difference, fitness, quality, state, evaluations, generations,
-  compute_ms and moving (0/1), at 8 significant digits. Throws pm::Error when the stream fails.
+  compute_ms, moving (0/1), confidence, trusted (0/1) and the reported uncertainty
+  (writeUncertaintyCells()), at 8 significant digits. Throws pm::Error when the stream fails.
 */
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames);
+
+//! The uncertainty's columns of a frames.csv: ",sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg".
+const char *uncertaintyCsvHeader();
+//! Its six cells of one frame, each after a comma; empty when the uncertainty is unknown (TrackResult::uncertainty).
+void writeUncertaintyCells(std::ostream &out, const PoseUncertainty &u);
 
 //! What a TrackingReport does not know of the run (for its summary).
 struct TrackingRunInfo
