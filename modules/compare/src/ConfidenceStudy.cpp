@@ -26,7 +26,10 @@ std::vector<ConfidencePass> confidencePasses(bool quick)
           {"R2 (relief, cast shadows, highlights)", "R2", 2, {{"R2", 1900, 12}, {"R2", 600, 13}}, "", ""},
           {"R1 (relief, cast shadows, highlights)", "R1", 2, {{"R1", 1900, 14, 1.0, true}, {"R1", 600, 15}}, "", ""},
           {"C12 through a lens (k1 -0.25, k2 0.08)", "C12", 2, {{"C12", 1900, 16}, {"C12", 600, 17}}, "", "rig/pa10_stereo_lens.json"},
-          {"C12 beside its twin", "C12", 2, {{"C12", 1900, 18}, {"C12", 600, 19}}, "C12", ""}};
+          {"C12 beside its twin", "C12", 2, {{"C12", 1900, 18}, {"C12", 600, 19}}, "C12", ""},
+          // A strand of seaweed in front of the toy all along (pm-servo --occluder), since issue 37.
+          {"C12 behind a strand of seaweed", "C12", 2, {{"C12", 1900, 20}, {"C12", 600, 21}}, "", "", true},
+          {"R2 behind a strand of seaweed", "R2", 2, {{"R2", 1900, 22}}, "", "", true}};
 }
 
 ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const ConfidenceStudyParams &params, const std::function<void()> &onFrame)
@@ -37,7 +40,8 @@ ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const Confidence
     const StereoRig rig = pass.rig.empty() ? defaultRig : io::loadRig(params.dataDir + "/" + pass.rig);
     sim::SceneParams sp;
     sp.supersampling = pass.supersampling;
-    sp.occluderSizeMm[0] = 40; // pm-compare's strand
+    if (!pass.strand)
+      sp.occluderSizeMm[0] = 40; // pm-compare's strand
     sim::Scene scene(sim::makeTarget(pass.target), sp);
     std::function<void(sim::Scene &, double)> sceneAt;
     if (!pass.distractor.empty()) {
@@ -71,7 +75,9 @@ ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const Confidence
       runs.push_back(c);
       study.runNames.push_back(c.name);
     }
-    for (const auto &s : seqs) {
+    for (Scenario s : seqs) {
+      for (ScenarioFrame &f : s.frames)
+        f.occluded = f.occluded || pass.strand;
       const std::size_t before = study.frames.size();
       collectLabelledFrames(rig, scene, s, runs, study.frames, onFrame, sceneAt);
       for (std::size_t k = before; k < study.frames.size(); ++k)

@@ -425,6 +425,7 @@ void PhotoModelTracker::updateState(TrackResult &r)
   if (r.quality >= m_params.lockQuality && prev != TrackState::Tracking && m_params.lockConfidence > 0) {
     // A new lock: only if it would not be plainly wrong (its confidence as a first, unverified lock).
     ConfidenceCues lock = cuesAt(r.phi, r.quality, nullptr);
+    addPreciseCues(lock, r);
     lock.framesTracked = 1;
     lock.verified = m_params.verifyEvaluations == 0;
     lock.tracking = true;
@@ -456,6 +457,21 @@ void PhotoModelTracker::updateState(TrackResult &r)
   m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
 }
 
+void PhotoModelTracker::addPreciseCues(ConfidenceCues &c, const TrackResult &r)
+{
+  if (!r.precise)
+    return;
+  // How well the precise stage's lines pin the pose, and how well they fit.
+  const PreciseResult &p = r.preciseResult;
+  const std::array<double, 6> s = lineSigmas(p.information);
+  c.precise = true;
+  c.preciseResidualPx = p.residualPx;
+  c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
+  c.preciseSigmaDeg = std::min(1e3, std::max({s[3], s[4], s[5]}));
+  c.separation = p.separation;
+  c.cameraDisagreementPx = std::fabs(p.residualPxPerCamera[0] - p.residualPxPerCamera[1]);
+}
+
 void PhotoModelTracker::scoreConfidence(TrackResult &r, const Frame &f)
 {
   // The cues are scored on the whole images: the hue under the poses they look at is added where
@@ -474,17 +490,9 @@ void PhotoModelTracker::scoreConfidence(TrackResult &r, const Frame &f)
   c.framesTracked = m_framesTracked;
   c.verified = m_verified;
   c.tracking = r.state == TrackState::Tracking;
-  if (r.precise) { // how well the precise stage's lines pin the pose, and how well they fit
-    const PreciseResult &p = r.preciseResult;
-    const std::array<double, 6> s = lineSigmas(p.information);
-    c.precise = true;
-    c.preciseResidualPx = p.residualPx;
-    c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
-    c.preciseSigmaDeg = std::min(1e3, std::max({s[3], s[4], s[5]}));
-    c.separation = p.separation;
-    c.cameraDisagreementPx = std::fabs(p.residualPxPerCamera[0] - p.residualPxPerCamera[1]);
-    r.uncertainty = m_params.uncertainty.uncertainty(s, p.residualPx);
-  }
+  addPreciseCues(c, r);
+  if (r.precise)
+    r.uncertainty = m_params.uncertainty.uncertainty(r.preciseResult.information, r.preciseResult.residualPx);
   r.verified = m_verified;
   r.confidence = m_params.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_params.confidence.threshold;

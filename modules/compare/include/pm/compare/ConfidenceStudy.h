@@ -39,6 +39,7 @@ struct ConfidencePass
   std::vector<Run> runs;       //!< the runs, in order
   std::string distractor;      //!< a look-alike beside the toy (empty: none), swaying 40 mm sideways at 0.2 Hz
   std::string rig;             //!< a rig file under the data folder instead of the default rig (e.g. one with a lens)
+  bool strand = false;         //!< pm-servo's strand of seaweed (22 mm wide) in front of the toy on every frame, instead of pm-compare's passing one
 };
 
 //! The study's scenes and runs (\e quick: two runs on C12 only, for tests).
