@@ -118,3 +118,46 @@ TEST(TrackConfidence, ACoefficientThatIsNotFiniteOrAThresholdOutsideTheOpenInter
     EXPECT_THROW(m.validate(), pm::Error) << t;
   }
 }
+
+TEST(TrackConfidence, TheAllAroundModelTrustsASurePreciseFrameAndDoubtsWhatThePreciseStageDoubts)
+{
+  // The all-around model's coefficients weigh the precise stage's cues: a frame the stage pins well
+  // and fits well is trusted; each doubt, alone, lowers its confidence; the tilt weighs nothing.
+  const pm::ConfidenceModel m = pm::ConfidenceModel::shipped(pm::ConfidenceKind::AllAround);
+  EXPECT_NO_THROW(m.validate());
+  pm::ConfidenceCues sure = goodFrame(); // then the median cues of the crab's trusted frames in pm-confidence --all-around
+  sure.quality = 0.975;
+  sure.qualityMin = 0.97;
+  sure.inMatchMin = 0.97;
+  sure.outBackgroundMin = 1.0;
+  sure.competitorMargin = 0.39;
+  sure.precise = true;
+  sure.preciseResidualPx = 0.57;
+  sure.preciseSigmaMm = 0.2;
+  sure.preciseSigmaDeg = 0.28;
+  sure.separation = 0.9;
+  sure.cameraDisagreementPx = 0.12;
+  const double c = m.confidence(sure);
+  EXPECT_GE(c, m.threshold);
+  struct Change
+  {
+    const char *what;
+    void (*apply)(pm::ConfidenceCues &);
+  };
+  const Change doubts[] = {
+      {"the outline found 3 px from the model's", [](pm::ConfidenceCues &x) { x.preciseResidualPx = 3; }},
+      {"lines that pin the position to 3 mm only", [](pm::ConfidenceCues &x) { x.preciseSigmaMm = 3; }},
+      {"colours that do not split along the lines", [](pm::ConfidenceCues &x) { x.separation = 0.3; }},
+      {"S_out off the background", [](pm::ConfidenceCues &x) { x.outBackgroundMin = 0.6; }},
+      {"a competitor as good", [](pm::ConfidenceCues &x) { x.competitorMargin = 0; }},
+      {"a lock not yet verified", [](pm::ConfidenceCues &x) { x.verified = false; }},
+  };
+  for (const Change &d : doubts) {
+    pm::ConfidenceCues x = sure;
+    d.apply(x);
+    EXPECT_LT(m.confidence(x), c) << d.what;
+  }
+  pm::ConfidenceCues tilted = sure;
+  tilted.tiltDeg = 60;
+  EXPECT_DOUBLE_EQ(m.confidence(tilted), c); // a model that knows the relief is not doubted for a tilt
+}

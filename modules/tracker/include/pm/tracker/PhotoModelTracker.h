@@ -19,14 +19,18 @@
   Trust: "tracking" says the model fits somewhere, not that the pose is right. A new lock is
   verified by a challenger search (TrackerParams::verifyEvaluations), and every frame gets a
   confidence from its cues (TrackConfidence.h); TrackResult::trusted (tracking, verified,
-  confidence over its threshold) is what a robot should act on.
+  confidence over its threshold) is what a robot should act on. The confidence's coefficients are
+  those of the model's kind (flat, stereo or all-around). With the precise stage (all-around
+  models), TrackResult::uncertainty gives the pose's 1-sigma along and about the hand frame's
+  axes in mm and deg (PoseUncertainty.h): hold the robot when it exceeds what the task tolerates.
 
       pm::PhotoModelTracker tracker(rig, model);
       tracker.initialize();
       for (;;) {
         grab(IL, IR);
         const pm::TrackResult r = tracker.track(IL, IR);
-        if (r.trusted) use(r.hMo);
+        if (r.trusted && (!r.uncertainty.known || (r.uncertainty.maxMm() < 2 && r.uncertainty.maxDeg() < 2)))
+          use(r.hMo);
       }
 */
 #include <chrono>
