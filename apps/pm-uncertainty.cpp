@@ -84,15 +84,8 @@ int main(int argc, char **argv)
     nlohmann::json runsJson = nlohmann::json::array();
     std::vector<pm::report::Panel> panels(6);
     const vpRGBa colours[] = {vpRGBa(200, 40, 40), vpRGBa(40, 90, 200), vpRGBa(30, 150, 60), vpRGBa(190, 120, 0), vpRGBa(130, 50, 170), vpRGBa(0, 150, 160)};
-    for (std::size_t a = 0; a < 6; ++a) {
+    for (std::size_t a = 0; a < 6; ++a)
       panels[a] = {kAxes[a], "% within", {}, 0, {1.0}};
-      pm::report::Series gauss{"Gaussian", vpRGBa(0, 0, 0), {}, {}, true};
-      for (int k = 0; k <= 30; ++k) {
-        gauss.t.push_back(k / 10.0);
-        gauss.y.push_back(100 * std::erf(k / 10.0 / std::sqrt(2.0)));
-      }
-      panels[a].series.push_back(gauss);
-    }
     for (std::size_t i = 0; i < runs.size(); ++i) {
       for (const auto &s : samples[i]) {
         const pm::PoseUncertainty u = model.uncertainty(s.lineSigma, s.residualPx);
@@ -113,6 +106,13 @@ int main(int argc, char **argv)
         panels[a].series.push_back(c);
       }
     }
+    pm::report::Series gauss{"Gaussian", vpRGBa(0, 0, 0), {}, {}, true}; // drawn last: on top
+    for (int k = 0; k <= 30; ++k) {
+      gauss.t.push_back(k / 10.0);
+      gauss.y.push_back(100 * std::erf(k / 10.0 / std::sqrt(2.0)));
+    }
+    for (auto &p : panels)
+      p.series.push_back(gauss);
     csv.close();
     if (!csv)
       throw pm::Error("cannot write samples.csv");
