@@ -106,7 +106,7 @@ int main(int argc, char **argv)
         panels[a].series.push_back(c);
       }
     }
-    pm::report::Series gauss{"Gaussian", vpRGBa(0, 0, 0), {}, {}, true}; // drawn last: on top
+    pm::report::Series gauss{"Gaussian", vpRGBa(0, 0, 0), {}, {}, false}; // drawn last: on top
     for (int k = 0; k <= 30; ++k) {
       gauss.t.push_back(k / 10.0);
       gauss.y.push_back(100 * std::erf(k / 10.0 / std::sqrt(2.0)));
@@ -116,7 +116,7 @@ int main(int argc, char **argv)
     csv.close();
     if (!csv)
       throw pm::Error("cannot write samples.csv");
-    pm::io::writeImage(pm::report::drawTimePlots(panels, 3, "Share of true errors within m reported sigmas (dashed: a Gaussian, 68 % at m = 1)", "m (sigmas)", 560),
+    pm::io::writeImage(pm::report::drawTimePlots(panels, 3, "Share of true errors within m reported sigmas (black: a Gaussian, 68 % at m = 1)", "m (sigmas)", 560),
                        files.stage("calibration.png"));
     const nlohmann::json summary{{"model", {{"scale", model.scale}, {"floor", model.floor}, {"fitted", fit}}},
                                  {"axes", {"x mm", "y mm", "z mm", "about x deg", "about y deg", "about z deg"}},
