@@ -66,129 +66,136 @@ void handFrameOf(const vpHomogeneousMatrix &cLMcR, vpHomogeneousMatrix &hMcL, vp
   hMcR = hMcL * cLMcR;
 }
 
-RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pattern &board, const RigCalibrationParams &params)
+namespace {
+
+//! The views the calibration uses: each camera's own (intrinsics) and the pairs both cameras saw (the stereo pose).
+struct CalibrationViews
 {
-  board.validate();
-  params.validate();
-  if (pairs.empty())
-    throw Error("rig calibration: no image pair was given");
-  RigCalibration result;
-  const unsigned w = pairs.front().left.getWidth(), h = pairs.front().left.getHeight();
-  std::vector<std::vector<cv::Point3f>> object, monoObject[2];
-  std::vector<std::vector<cv::Point2f>> image[2], monoImage[2];
-  std::vector<std::size_t> usedIndex;
-  std::vector<int> monoOfStereo[2]; // for each stereo pair, its index among the camera's views
-  const auto onBoard = [](const vpPoint &P) {
-    return cv::Point3f(static_cast<float>(P.get_oX() * 1e3), static_cast<float>(P.get_oY() * 1e3), 0.f);
-  };
-  const ChessBoard *chess = dynamic_cast<const ChessBoard *>(&board);
-  for (const StereoImagePair &p : pairs) {
-    PairReport rep;
-    rep.name = p.name;
-    const vpImage<vpRGBa> *im[2] = {&p.left, &p.right};
-    std::string why[2];
-    PatternDetection det[2];
-    for (int k = 0; k < 2; ++k) {
-      const char *side = k ? "right" : "left";
-      try {
-        if (im[k]->getWidth() != w || im[k]->getHeight() != h)
-          throw Error(std::string(side) + " image is " + std::to_string(im[k]->getWidth()) + "x" +
-                      std::to_string(im[k]->getHeight()) + ", the first pair's are " + std::to_string(w) + "x" + std::to_string(h));
-        det[k] = board.detect(*im[k], side);
-        if (det[k].pixels.size() < 6)
-          throw Error(std::string("only ") + std::to_string(det[k].pixels.size()) + " features in the " + side + " image (6 needed)");
-        if (chess) {
-          vpImage<unsigned char> g;
-          const cv::Scalar sh = cv::estimateChessboardSharpness(grey(*im[k], g), cv::Size(chess->innerCols, chess->innerRows),
-                                                                toCv(det[k].pixels));
-          rep.edgeWidthPx[k] = sh[0];
-          if (!(sh[0] <= params.maxEdgeWidthPx)) {
-            std::ostringstream os;
-            os.precision(2);
-            os << std::fixed << "blurred: the " << side << " board's edges are " << sh[0] << " px wide (limit "
-               << params.maxEdgeWidthPx << ")";
-            throw Error(os.str());
-          }
-        }
-        rep.usedBy[k] = true;
-      } catch (const Error &e) {
-        why[k] = e.what();
-        det[k] = PatternDetection();
+  std::vector<std::vector<cv::Point3f>> object;          //!< per stereo pair, the board points both cameras found (mm)
+  std::vector<std::vector<cv::Point2f>> image[2];        //!< ... and where each camera saw them
+  std::vector<std::vector<cv::Point3f>> monoObject[2];   //!< per camera's own view, the board points it found
+  std::vector<std::vector<cv::Point2f>> monoImage[2];    //!< ... and where
+  std::vector<std::size_t> usedIndex;                    //!< per stereo pair, its index in RigCalibration::pairs
+  std::vector<int> monoOfStereo[2];                      //!< per stereo pair, its index among the camera's own views
+};
+
+cv::Point3f onBoard(const vpPoint &P)
+{
+  return cv::Point3f(static_cast<float>(P.get_oX() * 1e3), static_cast<float>(P.get_oY() * 1e3), 0.f);
+}
+
+//! The board in camera \e k's image of \e p (checked for size and blur), or empty with the reason in \e why.
+PatternDetection detectInCamera(const StereoImagePair &p, int k, const Pattern &board, const RigCalibrationParams &params, unsigned w,
+                                unsigned h, PairReport &rep, std::string &why)
+{
+  const vpImage<vpRGBa> &im = k ? p.right : p.left;
+  const char *side = k ? "right" : "left";
+  try {
+    if (im.getWidth() != w || im.getHeight() != h)
+      throw Error(std::string(side) + " image is " + std::to_string(im.getWidth()) + "x" + std::to_string(im.getHeight()) +
+                  ", the first pair's are " + std::to_string(w) + "x" + std::to_string(h));
+    PatternDetection det = board.detect(im, side);
+    if (det.pixels.size() < 6)
+      throw Error(std::string("only ") + std::to_string(det.pixels.size()) + " features in the " + side + " image (6 needed)");
+    if (const ChessBoard *chess = dynamic_cast<const ChessBoard *>(&board)) {
+      vpImage<unsigned char> g;
+      const cv::Scalar sh = cv::estimateChessboardSharpness(grey(im, g), cv::Size(chess->innerCols, chess->innerRows), toCv(det.pixels));
+      rep.edgeWidthPx[k] = sh[0];
+      if (!(sh[0] <= params.maxEdgeWidthPx)) {
+        std::ostringstream os;
+        os.precision(2);
+        os << std::fixed << "blurred: the " << side << " board's edges are " << sh[0] << " px wide (limit " << params.maxEdgeWidthPx << ")";
+        throw Error(os.str());
       }
     }
-    for (int k = 0; k < 2; ++k)
-      if (rep.usedBy[k]) {
-        std::vector<cv::Point3f> o;
-        for (const vpPoint &P : det[k].points)
-          o.push_back(onBoard(P));
-        monoObject[k].push_back(o);
-        monoImage[k].push_back(toCv(det[k].pixels));
-        result.viewsUsed[k]++;
-        rep.corners[k] = det[k].pixels;
-      }
-    if (rep.usedBy[0] && rep.usedBy[1]) {
-      // The features both cameras found (a tag board may be seen in part), in the left camera's order.
+    rep.usedBy[k] = true;
+    return det;
+  } catch (const Error &e) {
+    why = e.what();
+    return PatternDetection();
+  }
+}
+
+//! Pair \e p's views into \e v and its report into \e result.
+void addPair(const StereoImagePair &p, const Pattern &board, const RigCalibrationParams &params, unsigned w, unsigned h,
+             CalibrationViews &v, RigCalibration &result)
+{
+  PairReport rep;
+  rep.name = p.name;
+  std::string why[2];
+  PatternDetection det[2];
+  for (int k = 0; k < 2; ++k)
+    det[k] = detectInCamera(p, k, board, params, w, h, rep, why[k]);
+  for (int k = 0; k < 2; ++k)
+    if (rep.usedBy[k]) {
       std::vector<cv::Point3f> o;
-      std::vector<vpImagePoint> common[2];
-      for (std::size_t i = 0; i < det[0].ids.size(); ++i)
-        for (std::size_t j = 0; j < det[1].ids.size(); ++j)
-          if (det[0].ids[i] == det[1].ids[j]) {
-            o.push_back(onBoard(det[0].points[i]));
-            common[0].push_back(det[0].pixels[i]);
-            common[1].push_back(det[1].pixels[j]);
-          }
-      if (o.size() >= 6) {
-        rep.used = true;
-        object.push_back(o);
-        for (int k = 0; k < 2; ++k) {
-          image[k].push_back(toCv(common[k]));
-          rep.corners[k] = common[k];
-          monoOfStereo[k].push_back(static_cast<int>(monoImage[k].size()) - 1);
+      for (const vpPoint &P : det[k].points)
+        o.push_back(onBoard(P));
+      v.monoObject[k].push_back(o);
+      v.monoImage[k].push_back(toCv(det[k].pixels));
+      result.viewsUsed[k]++;
+      rep.corners[k] = det[k].pixels;
+    }
+  if (rep.usedBy[0] && rep.usedBy[1]) {
+    // The features both cameras found (a tag board may be seen in part), in the left camera's order.
+    std::vector<cv::Point3f> o;
+    std::vector<vpImagePoint> common[2];
+    for (std::size_t i = 0; i < det[0].ids.size(); ++i)
+      for (std::size_t j = 0; j < det[1].ids.size(); ++j)
+        if (det[0].ids[i] == det[1].ids[j]) {
+          o.push_back(onBoard(det[0].points[i]));
+          common[0].push_back(det[0].pixels[i]);
+          common[1].push_back(det[1].pixels[j]);
         }
-        usedIndex.push_back(result.pairs.size());
-      } else {
-        why[0] = "only " + std::to_string(o.size()) + " features seen by both cameras (6 needed)";
+    if (o.size() >= 6) {
+      rep.used = true;
+      v.object.push_back(o);
+      for (int k = 0; k < 2; ++k) {
+        v.image[k].push_back(toCv(common[k]));
+        rep.corners[k] = common[k];
+        v.monoOfStereo[k].push_back(static_cast<int>(v.monoImage[k].size()) - 1);
       }
-    }
-    rep.reason = rep.used ? "" : (!why[0].empty() ? why[0] : why[1]);
-    result.pairs.push_back(std::move(rep));
-  }
-  result.pairsUsed = static_cast<int>(usedIndex.size());
-  if (result.pairsUsed < params.minPairs || result.viewsUsed[0] < params.minPairs || result.viewsUsed[1] < params.minPairs) {
-    std::ostringstream os;
-    os << "rig calibration: " << result.pairsUsed << " usable pair" << (result.pairsUsed == 1 ? "" : "s") << " of "
-       << pairs.size() << ", at least " << params.minPairs << " needed";
-    for (const PairReport &r : result.pairs)
-      if (!r.used)
-        os << "\n  " << r.name << ": " << r.reason;
-    throw Error(os.str());
-  }
-
-  const cv::Size size(static_cast<int>(w), static_cast<int>(h));
-  cv::Mat K[2], D[2];
-  std::vector<cv::Mat> rvecs[2], tvecs[2];
-  double rms[2];
-  for (int k = 0; k < 2; ++k) {
-    rms[k] = cv::calibrateCamera(monoObject[k], monoImage[k], size, K[k], D[k], rvecs[k], tvecs[k]);
-    // Too few views at the image's edges can leave k3 free to bend the lens model back on itself
-    // there; the usual remedy is to fix k3 at 0.
-    const LensDistortion lens{std::vector<double>(D[k].begin<double>(), D[k].end<double>())};
-    if (!errorFree([&] { lens.validate(vispCamera(K[k]), w, h, "camera"); })) {
-      rms[k] = cv::calibrateCamera(monoObject[k], monoImage[k], size, K[k], D[k], rvecs[k], tvecs[k], cv::CALIB_FIX_K3);
-      result.k3Fixed[k] = true;
+      v.usedIndex.push_back(result.pairs.size());
+    } else {
+      why[0] = "only " + std::to_string(o.size()) + " features seen by both cameras (6 needed)";
     }
   }
-  cv::Mat R, T, E, F, perView;
-  const double stereoRms = cv::stereoCalibrate(object, image[0], image[1], K[0], D[0], K[1], D[1], size, R, T, E, F,
-                                               perView, cv::CALIB_FIX_INTRINSIC);
-  result.rmsLeftPx = rms[0];
-  result.rmsRightPx = rms[1];
-  result.rmsStereoPx = stereoRms;
-  result.baselineMm = cv::norm(T);
-  cv::Mat rv;
-  cv::Rodrigues(R, rv);
-  result.rotationDeg = cv::norm(rv) * 180.0 / CV_PI;
+  rep.reason = rep.used ? "" : (!why[0].empty() ? why[0] : why[1]);
+  result.pairs.push_back(std::move(rep));
+}
 
+//! Throws pm::Error naming every pair left out when too few pairs or views remain.
+void requireEnoughPairs(const RigCalibration &result, std::size_t given, const RigCalibrationParams &params)
+{
+  if (result.pairsUsed >= params.minPairs && result.viewsUsed[0] >= params.minPairs && result.viewsUsed[1] >= params.minPairs)
+    return;
+  std::ostringstream os;
+  os << "rig calibration: " << result.pairsUsed << " usable pair" << (result.pairsUsed == 1 ? "" : "s") << " of " << given
+     << ", at least " << params.minPairs << " needed";
+  for (const PairReport &r : result.pairs)
+    if (!r.used)
+      os << "\n  " << r.name << ": " << r.reason;
+  throw Error(os.str());
+}
+
+//! One camera's intrinsics and its board poses (OpenCV), k3 fixed at 0 when it bends the lens model back on itself.
+double calibrateOneCamera(const CalibrationViews &v, int k, const cv::Size &size, cv::Mat &K, cv::Mat &D, std::vector<cv::Mat> &rvecs,
+                       std::vector<cv::Mat> &tvecs, bool &k3Fixed)
+{
+  double rms = cv::calibrateCamera(v.monoObject[k], v.monoImage[k], size, K, D, rvecs, tvecs);
+  // Too few views at the image's edges can leave k3 free to bend the lens model back on itself
+  // there; the usual remedy is to fix k3 at 0.
+  const LensDistortion lens{std::vector<double>(D.begin<double>(), D.end<double>())};
+  if (!errorFree([&] { lens.validate(vispCamera(K), static_cast<unsigned>(size.width), static_cast<unsigned>(size.height), "camera"); })) {
+    rms = cv::calibrateCamera(v.monoObject[k], v.monoImage[k], size, K, D, rvecs, tvecs, cv::CALIB_FIX_K3);
+    k3Fixed = true;
+  }
+  return rms;
+}
+
+//! The rig of the stereo pose cRMcL = [R T] (mm) and the cameras' intrinsics, its hand frame halfway between them.
+void setRig(const cv::Mat &R, const cv::Mat &T, const cv::Mat K[2], const cv::Mat D[2], unsigned w, unsigned h, RigCalibration &result)
+{
   // The right camera in the left one: cRMcL = [R T], so cLMcR is its inverse (metres: the unit / 1000).
   vpHomogeneousMatrix cRMcL;
   for (unsigned i = 0; i < 3; ++i) {
@@ -209,21 +216,27 @@ RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pat
     cams[k]->hMc = hMc[k];
   }
   result.rig.validate();
+}
 
-  // Per pair: each camera's rms in the stereo calibration and the reprojected corners (the left
-  // camera's board pose from calibrateCamera; the right one's through the stereo pose).
-  for (std::size_t i = 0; i < usedIndex.size(); ++i) {
-    PairReport &rep = result.pairs[usedIndex[i]];
+/*!
+  Per pair: each camera's rms in the stereo calibration and the reprojected corners (the left
+  camera's board pose from its own calibration; the right one's through the stereo pose).
+*/
+void reportPairs(const CalibrationViews &v, const cv::Mat &R, const cv::Mat &T, const cv::Mat K[2], const cv::Mat D[2],
+                 const std::vector<cv::Mat> &rvecsLeft, const std::vector<cv::Mat> &tvecsLeft, const cv::Mat &perView, RigCalibration &result)
+{
+  for (std::size_t i = 0; i < v.usedIndex.size(); ++i) {
+    PairReport &rep = result.pairs[v.usedIndex[i]];
     cv::Mat Rl;
-    const std::size_t li = static_cast<std::size_t>(monoOfStereo[0][i]);
-    cv::Rodrigues(rvecs[0][li], Rl);
-    const cv::Mat Rr = R * Rl, tr = R * tvecs[0][li] + T;
+    const std::size_t li = static_cast<std::size_t>(v.monoOfStereo[0][i]);
+    cv::Rodrigues(rvecsLeft[li], Rl);
+    const cv::Mat Rr = R * Rl, tr = R * tvecsLeft[li] + T;
     cv::Mat rvr;
     cv::Rodrigues(Rr, rvr);
-    const cv::Mat rv2[2] = {rvecs[0][li], rvr}, tv2[2] = {tvecs[0][li], tr};
+    const cv::Mat rv2[2] = {rvecsLeft[li], rvr}, tv2[2] = {tvecsLeft[li], tr};
     for (int k = 0; k < 2; ++k) {
       std::vector<cv::Point2f> proj;
-      cv::projectPoints(object[i], rv2[k], tv2[k], K[k], D[k], proj);
+      cv::projectPoints(v.object[i], rv2[k], tv2[k], K[k], D[k], proj);
       double s2 = 0;
       rep.projected[k].resize(proj.size());
       for (std::size_t j = 0; j < proj.size(); ++j) {
@@ -234,6 +247,38 @@ RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pat
       rep.rmsPx[k] = perView.empty() ? std::sqrt(s2 / static_cast<double>(proj.size())) : perView.at<double>(static_cast<int>(i), k);
     }
   }
+}
+
+} // namespace
+
+RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pattern &board, const RigCalibrationParams &params)
+{
+  board.validate();
+  params.validate();
+  if (pairs.empty())
+    throw Error("rig calibration: no image pair was given");
+  RigCalibration result;
+  const unsigned w = pairs.front().left.getWidth(), h = pairs.front().left.getHeight();
+  CalibrationViews v;
+  for (const StereoImagePair &p : pairs)
+    addPair(p, board, params, w, h, v, result);
+  result.pairsUsed = static_cast<int>(v.usedIndex.size());
+  requireEnoughPairs(result, pairs.size(), params);
+
+  const cv::Size size(static_cast<int>(w), static_cast<int>(h));
+  cv::Mat K[2], D[2];
+  std::vector<cv::Mat> rvecs[2], tvecs[2];
+  result.rmsLeftPx = calibrateOneCamera(v, 0, size, K[0], D[0], rvecs[0], tvecs[0], result.k3Fixed[0]);
+  result.rmsRightPx = calibrateOneCamera(v, 1, size, K[1], D[1], rvecs[1], tvecs[1], result.k3Fixed[1]);
+  cv::Mat R, T, E, F, perView;
+  result.rmsStereoPx = cv::stereoCalibrate(v.object, v.image[0], v.image[1], K[0], D[0], K[1], D[1], size, R, T, E, F, perView,
+                                           cv::CALIB_FIX_INTRINSIC);
+  result.baselineMm = cv::norm(T);
+  cv::Mat rv;
+  cv::Rodrigues(R, rv);
+  result.rotationDeg = cv::norm(rv) * 180.0 / CV_PI;
+  setRig(R, T, K, D, w, h, result);
+  reportPairs(v, R, T, K, D, rvecs[0], tvecs[0], perView, result);
   return result;
 }
 
