@@ -425,7 +425,8 @@ void PhotoModelTracker::updateState(TrackResult &r)
   if (r.quality >= m_params.lockQuality && prev != TrackState::Tracking && m_params.lockConfidence > 0) {
     // A new lock: only if it would not be plainly wrong (its confidence as a first, unverified lock).
     ConfidenceCues lock = cuesAt(r.phi, r.quality, nullptr);
-    addPreciseCues(lock, r);
+    if (r.precise)
+      addPreciseCues(lock, r, lineSigmas(r.preciseResult.information));
     lock.framesTracked = 1;
     lock.verified = m_params.verifyEvaluations == 0;
     lock.tracking = true;
@@ -457,13 +458,12 @@ void PhotoModelTracker::updateState(TrackResult &r)
   m_steadyFrames = r.state == TrackState::Tracking && r.quality >= m_recentBestQ - m_params.steadyQualityDrop ? m_steadyFrames + 1 : 0;
 }
 
-void PhotoModelTracker::addPreciseCues(ConfidenceCues &c, const TrackResult &r)
+void PhotoModelTracker::addPreciseCues(ConfidenceCues &c, const TrackResult &r, const std::array<double, 6> &s)
 {
   if (!r.precise)
     return;
-  // How well the precise stage's lines pin the pose, and how well they fit.
+  // How well the precise stage's lines pin the pose (s: their sigmas), and how well they fit.
   const PreciseResult &p = r.preciseResult;
-  const std::array<double, 6> s = lineSigmas(p.information);
   c.precise = true;
   c.preciseResidualPx = p.residualPx;
   c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
@@ -490,9 +490,11 @@ void PhotoModelTracker::scoreConfidence(TrackResult &r, const Frame &f)
   c.framesTracked = m_framesTracked;
   c.verified = m_verified;
   c.tracking = r.state == TrackState::Tracking;
-  addPreciseCues(c, r);
-  if (r.precise)
-    r.uncertainty = m_params.uncertainty.uncertainty(r.preciseResult.information, r.preciseResult.residualPx);
+  if (r.precise) { // the lines' sigmas once: for the cues and for the uncertainty
+    const std::array<double, 6> s = lineSigmas(r.preciseResult.information);
+    addPreciseCues(c, r, s);
+    r.uncertainty = m_params.uncertainty.uncertainty(s, r.preciseResult.residualPx);
+  }
   r.verified = m_verified;
   r.confidence = m_params.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_params.confidence.threshold;

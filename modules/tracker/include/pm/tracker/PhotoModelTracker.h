@@ -410,8 +410,8 @@ private:
   static std::array<Phi, 8> competitors(const Phi &b);
   //! The cues of pose \e phi of quality \e q on this frame's images (\e last: the last frame's pose, when it was tracked); the state's own cues are left to the caller.
   ConfidenceCues cuesAt(const Phi &phi, double q, const Phi *last) const;
-  //! The precise stage's cues of \e r (when its pose is the frame's) into \e c.
-  static void addPreciseCues(ConfidenceCues &c, const TrackResult &r);
+  //! The precise stage's cues of \e r (when its pose is the frame's; \e s: its lines' sigmas, lineSigmas()) into \e c.
+  static void addPreciseCues(ConfidenceCues &c, const TrackResult &r, const std::array<double, 6> &s);
   //! A steady frame's hue windows (see TrackerParams::steadyHueMarginPx).
   std::array<PixelRect, 2> steadyWindows() const;
   void startVerification(const Phi &lock);
