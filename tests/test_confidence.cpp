@@ -12,16 +12,19 @@
 
 namespace {
 
-//! A frame the tracker is sure of: tracked a second, verified, fitting in both cameras, still.
-pm::ConfidenceCues goodFrame()
+/*!
+  A frame the tracker is sure of: tracked a second, verified, fitting in both cameras (q, the worse
+  camera's q, S_in on the hue, S_out on the background), above its rivals by \e margin, still.
+*/
+pm::ConfidenceCues goodFrame(double q = 0.8, double qMin = 0.75, double inMatch = 0.8, double outBackground = 0.9, double margin = 0.3)
 {
   pm::ConfidenceCues c;
-  c.quality = 0.8;
-  c.qualityMin = 0.75;
-  c.inMatchMin = 0.8;
-  c.outBackgroundMin = 0.9;
+  c.quality = q;
+  c.qualityMin = qMin;
+  c.inMatchMin = inMatch;
+  c.outBackgroundMin = outBackground;
   c.tiltDeg = 3;
-  c.competitorMargin = 0.3;
+  c.competitorMargin = margin;
   c.qualityDrop = 0;
   c.jumpMm = 0.5;
   c.jumpDeg = 0.2;
@@ -125,12 +128,8 @@ TEST(TrackConfidence, TheAllAroundModelTrustsASurePreciseFrameAndDoubtsWhatThePr
   // and fits well is trusted; each doubt, alone, lowers its confidence; the tilt weighs nothing.
   const pm::ConfidenceModel m = pm::ConfidenceModel::shipped(pm::ConfidenceKind::AllAround);
   EXPECT_NO_THROW(m.validate());
-  pm::ConfidenceCues sure = goodFrame(); // then the median cues of the crab's trusted frames in pm-confidence --all-around
-  sure.quality = 0.975;
-  sure.qualityMin = 0.97;
-  sure.inMatchMin = 0.97;
-  sure.outBackgroundMin = 1.0;
-  sure.competitorMargin = 0.39;
+  // The median cues of the crab's trusted frames in pm-confidence --all-around.
+  pm::ConfidenceCues sure = goodFrame(0.975, 0.97, 0.97, 1.0, 0.39);
   sure.precise = true;
   sure.preciseResidualPx = 0.57;
   sure.preciseSigmaMm = 0.2;
