@@ -29,7 +29,7 @@ int main(int argc, char **argv)
   CLI::App app{"Measures the tracker's confidence (TrackResult::confidence) on a labelled set of frames: every pm-compare "
                "scenario rendered once per scene and tracked by several runs (seeds, budgets from 300 evaluations, "
                "supersampling 1, a model of another toy, a look-alike of similar hue beside the toy, an identical twin beside it, the relief "
-               "toys R1 and R2 with cast shadows and highlights, the stereo model, a lens; C12 and C08), each frame labelled right when the estimate is "
+               "toys R1 and R2 with cast shadows and highlights, the stereo model, a lens, a strand of seaweed in front of C12 and R2; C12 and C08), each frame labelled right when the estimate is "
                "within 2 cm and 5 deg of the truth. Writes frames.csv (cues, confidence, label), roc.png and summary.json "
                "(auroc, threshold, accept rates); --fit also fits the logistic model of the run's kind of photo-model anew (two-fold cross-validated by run, "
                "its bias placed so that the threshold 0.95 trusts at most --max-false-accept of the wrong frames) and prints its coefficients.",

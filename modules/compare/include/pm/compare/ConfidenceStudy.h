@@ -4,7 +4,7 @@
   pm-confidence's experiment: the labelled set of frames on which the tracker's confidence is
   measured (scenes and runs chosen to make it fail: seeds, small budgets, supersampling 1, a model
   of another toy, a look-alike of similar hue, an identical twin, the relief toys with cast
-  shadows and highlights, the stereo model, a lens), and its report: AUROC (all frames, and the
+  shadows and highlights, the stereo model, a lens, a strand of seaweed in front all along), and its report: AUROC (all frames, and the
   frames the tracker claims to track), accept rates at the tracker's threshold, the threshold for
   a largest false accept rate, and the counts per run.
 */
