@@ -2,7 +2,7 @@
 # pm_setup [release|sanitize|fuzz] [optional packages...]  ->  sets PM_BUILD_DIR to the built tree.
 
 PM_DEBIAN_PACKAGES=(build-essential cmake ninja-build pkg-config libvisp-dev libopencv-dev libeigen3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libapriltag-dev libyaml-cpp-dev)
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libxml2-dev libapriltag-dev libyaml-cpp-dev)
 
 # Only for the tests: ViSP's images (the AprilTag benchmark test is skipped without them) and OpenCV's
 # sample data (real stereo chessboard pairs and a calibration file; their tests are skipped without them);

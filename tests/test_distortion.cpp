@@ -276,12 +276,16 @@ TEST(CameraFile, BadFilesAreClearErrors)
       {head + "image_width: 640\n", "no \"camera_matrix\""},
       {head + "camera_matrix: !!opencv-matrix\n   rows: 2\n   cols: 2\n   dt: d\n   data: [ 1., 0., 0., 1. ]\n", "must be 3x3"},
       {head + "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ -5., 0., 320., 0., 500., 240., 0., 0., 1. ]\n", "focal lengths must be positive"},
+      {head + "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ 1e-9, 0., 320., 0., 500., 240., 0., 0., 1. ]\n", "focal lengths must be positive"},
       {head + K + "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 3\n   dt: d\n   data: [ 0.1, 0., 0. ]\n", "3 distortion coefficients"},
       {head + K + "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 5\n   dt: d\n   data: [ -0.9, 0., 0., 0., 0. ]\n", "folds the image"},
       {head + K + "image_width: 320\nimage_height: 240\n", "for 320x240 images"},
       {"image_width: 640\ncamera_matrix:\n  rows: 3\n  cols: 3\n  data: [1, 2]\n", "holds 2 values"},
       {"camera_matrix:\n  rows: 3\n  cols: 3\n  data: [500, 0, 320, 0, 500, 240, 0, 0, 1]\ndistortion_model: equidistant\n", "not supported"},
       {head + "camera_matrix: [ 1, 2\n", "cannot be read"},
+      // OpenCV 4.6's XML parser reads past the end of a file cut inside an attribute (fuzzing found it).
+      {"<?xml version=\"1.0\"?>\n<opencv_storage>\n<image_width>640</image_width>\n<distortion_coefficients type_id=",
+       "not well-formed XML (line 4"},
   };
   for (const Case &c : cases) {
     pm::test::writeText(d.file("c.yml"), c.text);
@@ -321,6 +325,17 @@ TEST(CameraFile, AKannalaBrandtModelIsRefusedBeforeViSPsParserReadsPastItsCoeffi
   EXPECT_DOUBLE_EQ(c.cam.get_px(), 600.0);
   ASSERT_FALSE(c.distortion.coefficients.empty());
   EXPECT_DOUBLE_EQ(c.distortion.coefficients[0], 0.1);
+  // ViSP's parser hands back px = 0 with a distortion model (fuzzing found it): a clear error, not ViSP's exception.
+  std::string zero = file("perspectiveProjWith");
+  zero.replace(zero.find("<px>600"), 7, "<px>0");
+  pm::test::writeText(d.file("c.xml"), zero);
+  const std::string e = errorOf([&] { pm::io::readCameraFile(d.file("c.xml"), "left", 640, 480); });
+  EXPECT_NE(e.find("must be positive"), std::string::npos) << e;
+  EXPECT_NE(e.find("c.xml"), std::string::npos) << e;
+  // ViSP's parser reads a negative px with a distortion model without a word.
+  zero.replace(zero.find("<px>0"), 5, "<px>-600");
+  pm::test::writeText(d.file("c.xml"), zero);
+  EXPECT_NE(errorOf([&] { pm::io::readCameraFile(d.file("c.xml"), "left", 640, 480); }).find("must be positive"), std::string::npos);
 }
 
 TEST(RigFile, ALensSurvivesTheRoundTripInOpenCvAndViSPFiles)

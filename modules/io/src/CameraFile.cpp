@@ -14,6 +14,7 @@
 #include "pm/io/CameraXml.h"
 #include "pm/io/QuietStdout.h"
 #include "pm/io/StagedFiles.h"
+#include "pm/io/WellFormedXml.h"
 
 namespace pm::io {
 
@@ -161,7 +162,11 @@ CameraIntrinsics fromFields(const Fields &f, bool ros)
                 std::to_string(K[4]) + ")");
   if (K[1] != 0 || K[3] != 0 || K[6] != 0 || K[7] != 0 || K[8] != 1)
     throw Error("\"camera_matrix\" is not a camera matrix [fx 0 cx; 0 fy cy; 0 0 1] (a skew is not supported)");
-  c.cam.initPersProjWithoutDistortion(K[0], K[4], K[2], K[5]);
+  try {
+    c.cam.initPersProjWithoutDistortion(K[0], K[4], K[2], K[5]);
+  } catch (const vpException &e) { // ViSP takes a focal length under 1e-6 for 0 (fuzzing found it)
+    throw Error("\"camera_matrix\": " + e.getStringMessage() + " (focal lengths must be positive)");
+  }
   if (f.D.present)
     c.distortion.coefficients = f.D.values;
   if (ros) {
@@ -191,7 +196,10 @@ CameraIntrinsics fromVispXml(const std::string &path, const std::string &name, u
     status = vpXmlParserCamera::SEQUENCE_ERROR;
   }
   if (status == vpXmlParserCamera::SEQUENCE_OK) {
+    requireValidIntrinsics(c.cam, path, name);
     const double kud = c.cam.get_kud();
+    if (!std::isfinite(kud))
+      throw Error("camera '" + name + "' in '" + path + "': kud is not finite");
     c.distortion.coefficients = {kud, 0, 0, 0, 0};
     c.cam.initPersProjWithoutDistortion(c.cam.get_px(), c.cam.get_py(), c.cam.get_u0(), c.cam.get_v0());
   } else {
@@ -219,6 +227,8 @@ CameraIntrinsics readCameraFile(const std::string &path, const std::string &name
         throw Error("it holds a control character (byte " + std::to_string(static_cast<int>(ch)) + "): not a text file");
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     const bool xml = first != std::string::npos && text[first] == '<';
+    if (xml)
+      requireWellFormedXml(text); // before OpenCV's and ViSP's parsers, which read past a cut file
     if (xml && text.find("<opencv_storage") != std::string::npos)
       c = fromFields(xmlFields(text), false);
     else if (xml && text.find("<camera>") != std::string::npos)

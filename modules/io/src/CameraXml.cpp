@@ -47,11 +47,16 @@ vpCameraParameters readCameraXml(const std::string &xml, const std::string &name
   if (status != vpXmlParserCamera::SEQUENCE_OK)
     throw Error("no camera named '" + name + "' of size " + std::to_string(w) + "x" + std::to_string(h) +
                 " without distortion in the intrinsics file '" + xml + "'");
+  requireValidIntrinsics(cam, xml, name);
+  return cam;
+}
+
+void requireValidIntrinsics(const vpCameraParameters &cam, const std::string &xml, const std::string &name)
+{
   const double v[4] = {cam.get_px(), cam.get_py(), cam.get_u0(), cam.get_v0()};
   if (!(v[0] > 0 && v[1] > 0) || !std::isfinite(v[0] + v[1] + v[2] + v[3]))
     throw Error("camera '" + name + "' in '" + xml + "': px = " + std::to_string(v[0]) + ", py = " + std::to_string(v[1]) +
                 ": focal lengths must be positive");
-  return cam;
 }
 
 void writeCameraXml(const vpCameraParameters &cam, const std::string &xml, const std::string &name, unsigned w, unsigned h)

@@ -25,6 +25,12 @@ vpCameraParameters readCameraXml(const std::string &xml, const std::string &name
   readCameraXml() and readCameraFile() call it before ViSP's parser.
 */
 void refuseUnsafeCameraXml(const std::string &xml);
+/*!
+  Refuses, with pm::Error naming camera \e name of file \e xml, intrinsics whose focal lengths
+  are not positive or whose values are not finite (ViSP's parser reads a negative px with a
+  distortion model without a word).
+*/
+void requireValidIntrinsics(const vpCameraParameters &cam, const std::string &xml, const std::string &name);
 //! Appends camera \e name to \e xml (created if missing). Throws pm::Error.
 void writeCameraXml(const vpCameraParameters &cam, const std::string &xml, const std::string &name, unsigned w, unsigned h);
 
