@@ -18,6 +18,8 @@
 #include "pm/lab/ModelMaking.h"
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
+#include "pm/robot/ArmCatalog.h"
+#include "pm/robot/SteppedArm.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -111,9 +113,11 @@ int main(int argc, char **argv)
   auto *optViews = app.add_option("--views", viewsDir, "all-around: a pass of the hand around the target, as a views folder "
                                   "(left_%02d.png, right_%02d.png, background_left_%02d.png, background_right_%02d.png, "
                                   "pose_fPh_%02d.yaml for k = 0, 1, ...), taken by --rig");
-  auto *optAA = app.add_flag("--all-around", allAround, "simulator: the PA-10 walks the rig around --target (a pass of "
+  auto *optAA = app.add_flag("--all-around", allAround, "simulator: the arm (--robot) walks the rig around --target (a pass of "
                              "--pass-views hand poses), the all-around model is built from it and the pass kept in OUT/views "
                              "(the default for --target; kept for older command lines)");
+  std::string robotName = "pa10";
+  pm::app::addRobotOption(app, robotName);
   app.add_option("--pass-views", plan.views, "all-around, simulator: hand poses of the pass")->check(CLI::Range(6, 200));
   app.add_option("--backdrop-hue", ap.backdropHueDeg, "all-around: a plain backdrop of this hue (deg) replaces the "
                  "background images (none needed in --views; the lab makes no second pass)")->check(CLI::Range(0.0, 359.999));
@@ -142,12 +146,12 @@ int main(int argc, char **argv)
           std::cout << pm::report::describeAllAroundModel(b, source, out, false) << std::flush;
         return 0;
       }
-      // The lab: the PA-10's pass, the model, and the model checked against the toy (the renderer's truth).
+      // The lab: the arm's pass, the model, and the model checked against the toy (the renderer's truth).
       const pm::sim::TargetShape shape = pm::sim::makeTarget(target);
       const pm::sim::Scene scene(shape, sp);
-      const pm::lab::LabPass lp = pm::lab::runLabPass(scene, rig, plan, pm::lab::LoopParams::startJoints(),
-                                                      vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), ap.backdropHueDeg < 0);
-      source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), PA-10 pass";
+      pm::robot::SteppedArm arm(pm::robot::makeArmModel(robotName));
+      const pm::lab::LabPass lp = pm::lab::runLabPass(scene, rig, plan, arm, vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), ap.backdropHueDeg < 0);
+      source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), " + arm.model().title() + " pass";
       const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, lp.views, ap);
       const pm::lab::SurfaceTruth truth = pm::lab::checkSurface(scene, b, lp.fMo.inverse() * b.fMm, rig.left.cam);
       pm::io::writeAllAroundModel(b, lp.views, rig, out, source, true, pm::lab::surfaceTruthJson(truth));

@@ -96,6 +96,9 @@ int main(int argc, char **argv)
   app.add_option("--gain-infinity", servo.gainAtInfinity, "vpAdaptiveGain: gain at infinite error (1/s)")->check(CLI::PositiveNumber);
   app.add_flag("--feed-forward,!--no-feed-forward", servo.feedForward, "follow the target's estimated velocity");
   pm::app::addLabModelOptions(app, lab);
+  pm::app::addRobotOption(app, lp.arm);
+  app.add_flag("--realtime", lp.realTime, "simulator: drive ViSP's own threaded simulator of --robot (viper850 or afma6) as "
+               "a real vpRobot is driven, in real time (not repeatable frame for frame); the pass before it is stepped");
   pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
   pm::app::DistractorChoice distractor;
@@ -107,6 +110,7 @@ int main(int argc, char **argv)
     const pm::TrackerParams tp = trackerOptions.resolve();
     const pm::StereoRig rig = pm::io::loadRig(rigPath);
     lp.fps = fps;
+    lab.arm = lp.arm; // the same arm makes the pass and servos
     pm::sim::Scene scene(pm::sim::makeTarget(target), sp);
     distractor.apply(scene);
     const auto sm = pm::app::makeLabModel(scene, rig, lab);
@@ -166,9 +170,9 @@ int main(int argc, char **argv)
     pm::lab::ClosedLoop loop(rig, scene, sm, tp, servo, lp, makeTc);
     // Nothing here grows with the run: frames.csv is written as the frames come, the figures are
     // computed online and the plots drawn from a decimated record (pm::lab::RunLog).
-    pm::lab::RunLog log(nFrames, fps, loop.robot());
+    pm::lab::RunLog log(nFrames, fps, loop.arm().model());
     std::ofstream csv(files.stage("frames.csv"));
-    pm::lab::writeLoopCsvHeader(csv);
+    pm::lab::writeLoopCsvHeader(csv, loop.arm().model().dof());
     std::vector<double> memoryMb; // resident memory at the start of each tenth of the run, and at its end
     std::unique_ptr<pm::lab::RunRecorder> recorder;
     try {
@@ -195,18 +199,19 @@ int main(int argc, char **argv)
       throw pm::Error("cannot write " + files.finalPath("frames.csv"));
 
     // Figures (the plotted errors are the maxima over the frames each sample stands for).
-    pm::io::writeImage(pm::lab::drawRunErrors(log, std::string("PA-10 following ") + scene.target().info.name +
+    pm::io::writeImage(pm::lab::drawRunErrors(log, loop.arm().model().title() + " following " + scene.target().info.name +
                                                        (lp.oracle ? " (oracle: true pose)" : " (photo-model tracker)")),
                        files.stage("errors.png"));
     pm::io::writeImage(pm::lab::drawRunRelativePose(log), files.stage("relative_pose.png"));
-    pm::io::writeImage(pm::lab::drawRunJoints(log), files.stage("joints.png"));
+    pm::io::writeImage(pm::lab::drawRunJoints(log, loop.arm().model()), files.stage("joints.png"));
     pm::lab::RunInfo info;
+    info.arm = loop.arm().model().title();
     info.targetCode = scene.target().info.code;
     info.targetName = scene.target().info.name;
     info.trajectory = motion == "steps" ? "steps (" + std::to_string(waypoints.size()) + ")"
                                         : "sine " + axis + " " + std::to_string(amplitude) + " at " + std::to_string(frequency) + " Hz";
     info.oracle = lp.oracle;
-    info.jointLimitViolations = loop.robot().limitHits() + log.jointLimitViolations();
+    info.jointLimitViolations = loop.arm().limitHits() + log.jointLimitViolations();
     info.memoryMb = memoryMb;
     info.overlays = recorder->overlays();
     info.video = noVideo ? "" : "servo.avi";

@@ -11,6 +11,9 @@
 #include <visp3/core/vpThetaUVector.h>
 
 #include "TestSupport.h"
+#include "pm/robot/ArmCatalog.h"
+#include "pm/robot/Pa10Model.h"
+#include "pm/robot/SteppedArm.h"
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 #include "pm/core/StereoFitness.h"
@@ -49,7 +52,8 @@ double angleDeg(const vpRotationMatrix &R)
 struct CrabPass
 {
   pm::sim::Scene scene{pm::sim::makeTarget("C12")};
-  pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::PassPlan(), pm::lab::LoopParams::startJoints());
+  pm::robot::SteppedArm pa10{pm::robot::makeArmModel("pa10")};
+  pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::PassPlan(), pa10);
   pm::AllAroundBuild build = pm::buildAllAroundModel(rig(), pass.views);
   vpHomogeneousMatrix oMm = pass.fMo.inverse() * build.fMm;
 };
@@ -124,7 +128,7 @@ TEST(PassPlan, EveryPoseLooksAtThePivotFromItsRingAngle)
 
 TEST(RobotPA10, InverseKinematicsReachesPosesAndRefusesTheUnreachable)
 {
-  const vpColVector q0 = pm::lab::LoopParams::startJoints();
+  const vpColVector q0 = pm::robot::Pa10Model().restJoints();
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> d(-0.4, 0.4);
   for (int k = 0; k < 10; ++k) {
@@ -366,7 +370,8 @@ TEST(AllAround, TheViewsStereoPairsBringTheBulgingHullBackToTheBoxsFaceAndBoundI
   // camera, over the surface that camera sees: the silhouettes alone, photo-consistency (without
   // fusion), and the views' stereo pairs fused with the hull and bounded by the backdrop.
   const pm::sim::Scene scene(pm::sim::makeTarget("R1"));
-  const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::PassPlan(), pm::lab::LoopParams::startJoints());
+  pm::robot::SteppedArm pa10(pm::robot::makeArmModel("pa10"));
+  const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::PassPlan(), pa10);
   pm::sim::Rasterizer r;
   vpImage<vpRGBa> unused;
   const vpHomogeneousMatrix hMo = pass.views[0].fMh.inverse() * pass.fMo;

@@ -338,17 +338,19 @@ std::string withoutColumns(const std::string &csv, const std::vector<std::string
 TEST(Reproducibility, SameSeedSameInputsSameCsvTimingsAside)
 {
   // On an evaluation budget the runs are deterministic: every column but the timings is the same
-  // to the byte, for the closed loop (pm-servo) and the tracker (pm-track).
+  // to the byte, for the closed loop (pm-servo, on the PA-10 and on ViSP's Viper850 stepped in our
+  // loop) and the tracker (pm-track).
   pm::test::TempDir d("repro");
   const std::string servo = "--motion sine --duration-s 1.5 --budget-evals 800 --ga-seed 7 --seed 3 --supersampling 1 "
                             "--no-video --overlay-every 0 --quiet --out ";
   const std::string track = "--steps 2 --hold-s 0.5 --move-s 0.5 --budget-evals 800 --ga-seed 7 --quiet --out ";
   for (const auto &[program, args, drop] :
        std::vector<std::tuple<std::string, std::string, std::vector<std::string>>>{{"pm-servo", servo, {"compute_ms"}},
+                                                                                   {"pm-servo", "--robot viper850 " + servo, {"compute_ms"}},
                                                                                    {"pm-track", track, {"compute_ms"}}}) {
     std::string csv[2];
     for (int run = 0; run < 2; ++run) {
-      const std::string out = d.file(program + std::to_string(run));
+      const std::string out = d.file(program + std::to_string(args.size()) + "_" + std::to_string(run));
       const auto r = runProgram(program, args + out);
       ASSERT_EQ(r.status, 0) << program << ": " << r.err;
       csv[run] = pm::test::readText(out + "/frames.csv");

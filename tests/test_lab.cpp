@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
+#include "pm/robot/Pa10Model.h"
 #include "pm/core/Error.h"
 #include "pm/core/Statistics.h"
 #include "pm/io/ImageFile.h"
@@ -206,7 +207,7 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   pm::lab::writeLoopCsvHeader(csv);
   pm::lab::LoopFrame f;
   f.t = 0.5;
-  f.q = pm::lab::LoopParams::startJoints();
+  f.q = pm::robot::Pa10Model().restJoints();
   f.qdot.resize(7);
   f.translationErrorMm = 1.25;
   pm::lab::writeLoopCsvRow(csv, f, true);
@@ -238,6 +239,18 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   };
   EXPECT_EQ(cell(col("sigma_x_mm")), "0.125");
   EXPECT_EQ(cell(col("sigma_rz_deg")), "0.875");
+  // A 6-joint arm (ViSP's Viper850 and Afma6): 12 joint columns, and a row of its 6 joints fits them.
+  std::ostringstream six;
+  pm::lab::writeLoopCsvHeader(six, 6);
+  f.q.resize(6);
+  f.qdot.resize(6);
+  pm::lab::writeLoopCsvRow(six, f, true);
+  std::istringstream sixLines(six.str());
+  std::getline(sixLines, header);
+  std::getline(sixLines, row);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 44);
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 44);
+  EXPECT_EQ(header.find(",q7"), std::string::npos);
 }
 
 TEST(TargetRendering, TheReliefTurnsTheTimeIsTheMeanAndTheGalleryHoldsEveryTarget)

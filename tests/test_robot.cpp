@@ -5,6 +5,7 @@
 #include <random>
 
 #include "TestSupport.h"
+#include "pm/robot/Pa10Model.h"
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
 #include "pm/lab/ClosedLoop.h"
@@ -49,7 +50,7 @@ TEST(PA10, ForwardKinematicsAgainstPosesComputedByHand)
   EXPECT_NEAR(B[0][3], -A[1][3], 1e-12);
   EXPECT_NEAR(B[2][3], A[2][3], 1e-12);
   // The start pose of the lab looks along +x with y down.
-  M = RobotPA10::forward(pm::lab::LoopParams::startJoints());
+  M = RobotPA10::forward(pm::robot::Pa10Model().restJoints());
   EXPECT_NEAR(M[0][2], 1, 1e-9);
   EXPECT_NEAR(M[2][1], -1, 1e-9);
 }
@@ -109,7 +110,7 @@ TEST(PA10, JointLimitsAndSpeedsAreNeverCrossed)
 TEST(PA10, EndEffectorVelocityMovesTheFlangeAsCommanded)
 {
   RobotPA10 robot;
-  robot.setPosition(vpRobot::JOINT_STATE, pm::lab::LoopParams::startJoints());
+  robot.setPosition(vpRobot::JOINT_STATE, pm::robot::Pa10Model().restJoints());
   const vpHomogeneousMatrix M0 = robot.fMe();
   vpColVector v(6, 0.0);
   v[2] = 0.05; // 5 cm/s along the flange's z
@@ -139,7 +140,7 @@ TEST(Servo, InvalidPosesNeverReachVpServo)
 {
   pm::PbvsServo servo;
   RobotPA10 robot;
-  robot.setPosition(vpRobot::JOINT_STATE, pm::lab::LoopParams::startJoints());
+  robot.setPosition(vpRobot::JOINT_STATE, pm::robot::Pa10Model().restJoints());
   vpMatrix eJe;
   robot.get_eJe(eJe);
   vpHomogeneousMatrix bad;
@@ -183,14 +184,14 @@ TEST(ClosedLoop, OracleFollowsAStepOfTheTarget)
     f = loop.step();
     maxMoving = std::max(maxMoving, f.translationErrorMm);
     for (unsigned i = 0; i < 7; ++i) {
-      EXPECT_LE(f.q[i], loop.robot().jointMax()[i]);
-      EXPECT_GE(f.q[i], loop.robot().jointMin()[i]);
+      EXPECT_LE(f.q[i], loop.arm().model().jointMax()[i]);
+      EXPECT_GE(f.q[i], loop.arm().model().jointMin()[i]);
     }
   }
   EXPECT_LT(maxMoving, 10.0) << "max error while moving";          // the hand keeps up with the move
   EXPECT_LT(f.translationErrorMm, 2.0); // and settles
   EXPECT_LT(f.rotationErrorDeg, 0.5);
-  EXPECT_EQ(loop.robot().limitHits(), 0);
+  EXPECT_EQ(loop.arm().limitHits(), 0);
 }
 
 TEST(SafeCommand, StopsAndStartsWithinTheLimits)
@@ -268,7 +269,7 @@ FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std:
     return std::make_unique<pm::sim::TcRobot>(wMh0, pm::Phi{0, 0, 500, 0, 0, 0}, 0, 30.0, 0.2, 200.0, 500.0);
   });
   loop.setFaults(faults);
-  const vpColVector vmax = loop.robot().speedLimits(), amax = loop.robot().accelerationLimits();
+  const vpColVector vmax = loop.arm().model().speedLimits(), amax = loop.arm().model().accelerationLimits();
   FaultRun run;
   vpColVector prev(7, 0.0);
   for (int k = 0; k < frames; ++k) {
@@ -286,7 +287,7 @@ FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std:
     }
     prev = qd;
   }
-  run.limitHits = loop.robot().limitHits();
+  run.limitHits = loop.arm().limitHits();
   return run;
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "pm/robot/Pa10Model.h"
 #include "pm/lab/RunLog.h"
 
 namespace {
@@ -26,7 +27,7 @@ std::vector<LoopFrame> syntheticRun(long n, long settle, unsigned seed)
     const bool spike = u(rng) < 0.01;
     f.translationErrorMm = k < settle ? 20 + 30 * u(rng) : (spike ? 12 + 40 * u(rng) : 8 * u(rng));
     f.rotationErrorDeg = k < settle ? 3 + 5 * u(rng) : (spike ? 2.5 : 1.5 * u(rng));
-    f.q = pm::lab::LoopParams::startJoints();
+    f.q = pm::robot::Pa10Model().restJoints();
     f.qdot.resize(7);
     for (unsigned i = 0; i < 7; ++i)
       f.qdot[i] = 0.5 * (u(rng) - 0.5);
@@ -53,7 +54,7 @@ long batchConvergence(const std::vector<LoopFrame> &run)
 
 TEST(RunLog, OnlineFiguresEqualTheBatchOnes)
 {
-  const pm::sim::RobotPA10 robot;
+  const pm::robot::Pa10Model robot;
   for (unsigned seed = 1; seed <= 3; ++seed) {
     const std::vector<LoopFrame> run = syntheticRun(3000, 100 * seed, seed);
     pm::lab::RunLog log(static_cast<long>(run.size()), 30, robot, 500);
@@ -97,7 +98,7 @@ TEST(RunLog, OnlineFiguresEqualTheBatchOnes)
 
 TEST(RunLog, NeverConvergedMeansTheWholeRun)
 {
-  const pm::sim::RobotPA10 robot;
+  const pm::robot::Pa10Model robot;
   std::vector<LoopFrame> run = syntheticRun(300, 300, 7); // never within the bounds
   pm::lab::RunLog log(300, 30, robot);
   for (const auto &f : run)
@@ -109,7 +110,7 @@ TEST(RunLog, NeverConvergedMeansTheWholeRun)
 
 TEST(RunLog, SamplesStayBoundedAndKeepThePeaks)
 {
-  const pm::sim::RobotPA10 robot;
+  const pm::robot::Pa10Model robot;
   const std::vector<LoopFrame> run = syntheticRun(100000, 50, 3);
   const double peak = std::max_element(run.begin(), run.end(), [](const LoopFrame &a, const LoopFrame &b) {
                         return a.translationErrorMm < b.translationErrorMm;

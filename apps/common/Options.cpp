@@ -1,5 +1,6 @@
 #include "pm/app/Options.h"
 
+#include "pm/robot/ArmCatalog.h"
 #include "pm/tracker/TrackerConfigFile.h"
 
 namespace pm::app {
@@ -32,7 +33,7 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
   app.add_option("--view-turn-deg", c.viewTurnDeg, "simulator, --stereo: four further photo pairs with the hand "
                  "turned by this about its x and y axes around the toy (a multi-view model; 0: one pair)")
       ->check(CLI::Range(0.0, 45.0));
-  auto *aa = app.add_flag("--all-around", c.allAroundAsked, "simulator: the all-around photo-model, the default: the PA-10 "
+  auto *aa = app.add_flag("--all-around", c.allAroundAsked, "simulator: the all-around photo-model, the default: the arm "
                           "first walks the rig around the toy (a pass of --pass-views hand poses) and the model is built "
                           "from its silhouettes and photos");
   fl->excludes(st);
@@ -45,6 +46,13 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
                  "a plain backdrop of this hue (deg) instead of a second pass without the toy")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", c.allAroundParams.viewpoints, "simulator, all-around model: the model's viewing directions (K)")
       ->check(CLI::Range(1, 5000));
+}
+
+void addRobotOption(CLI::App &app, std::string &arm)
+{
+  app.add_option("--robot", arm, "simulator: the arm that carries the rig: pa10 (the paper's Mitsubishi PA-10), viper850 or "
+                 "afma6 (ViSP's own models of its Viper850 and Afma6); each stepped in our own loop, repeatable")
+      ->check(CLI::IsMember(robot::armNames()));
 }
 
 void addSceneOptions(CLI::App &app, sim::SceneParams &p)

@@ -105,7 +105,7 @@ Comparison::Comparison(const StereoRig &rig, const ComparisonParams &params) : m
   for (const std::string &k : m_p.trackers)
     mbt = mbt || k.rfind("mbt", 0) == 0;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || (mbt && m_p.mbtMeshCellMm > 0))
-    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, PassPlan(), lab::LoopParams::startJoints(), m_p.distanceMm,
+    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, PassPlan(), "pa10", m_p.distanceMm,
                                                       AllAroundParams(), &m_s->allAroundBuild);
   if (mbt && m_p.mbtMeshCellMm > 0)
     m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);

@@ -5,23 +5,28 @@
 #include <utility>
 
 #include "pm/core/Error.h"
+#include "pm/robot/ArmCatalog.h"
+#include "pm/robot/SteppedArm.h"
+#include "pm/robot/ViSPSimulatedArm.h"
 
 namespace pm::lab {
 
-vpColVector LoopParams::startJoints()
+namespace {
+std::unique_ptr<robot::Arm> makeArm(const LoopParams &lp)
 {
-  const double deg[7] = {0, -35, 0, 80, 0, 45, -90};
-  vpColVector q(7);
-  for (unsigned i = 0; i < 7; ++i)
-    q[i] = deg[i] * M_PI / 180;
-  return q;
+  if (lp.realTime)
+    return std::make_unique<robot::ViSPSimulatedArm>(lp.arm, lp.eMh);
+  return std::make_unique<robot::SteppedArm>(robot::makeArmModel(lp.arm), lp.eMh, lp.robotDt);
 }
+} // namespace
 
 ClosedLoop::ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
                        const TrackerParams &tp, const ServoParams &sp, const LoopParams &lp,
-                       const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &)> &makeTc)
+                       const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &)> &makeTc,
+                       std::unique_ptr<robot::Arm> arm)
     : m_rig(rig), m_scene(scene), m_oMm(model.oMm), m_hdMo(sp.hdMo), m_lp(lp), m_tracker(rig, model.build.model, tp),
-      m_servo(sp), m_safe(m_robot.speedLimits(), m_robot.accelerationLimits()), m_filter(lp.filterParams)
+      m_servo(sp), m_arm(arm ? std::move(arm) : makeArm(lp)),
+      m_safe(m_arm->model().speedLimits(), m_arm->model().accelerationLimits()), m_filter(lp.filterParams)
 {
   if (!(lp.fps > 0 && lp.robotDt > 0 && lp.robotDt <= 1.0 / lp.fps))
     throw Error("closed loop: the frame rate must be positive and the robot step at most a frame");
@@ -29,10 +34,8 @@ ClosedLoop::ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim:
     throw Error("closed loop: the quality drop must be positive and its memory rate non-negative");
   if (!(lp.maxSigmaMm >= 0 && lp.maxSigmaDeg >= 0))
     throw Error("closed loop: the largest uncertainty allowed must be non-negative (0: no check)");
-  m_robot.setPosition(vpRobot::JOINT_STATE, lp.q0);
-  m_robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
   // The target starts at the desired pose in front of the hand.
-  m_tc = makeTc(m_robot.fMe());
+  m_tc = makeTc(m_arm->fMh());
   if (!m_tc)
     throw Error("closed loop: no TC-robot");
   m_tracker.initialize(); // no initial pose
@@ -43,7 +46,8 @@ LoopFrame ClosedLoop::step()
   LoopFrame f;
   f.t = time();
   f.moving = m_tc->moving(f.t);
-  const vpHomogeneousMatrix fMh = m_robot.fMe();
+  const vpColVector q = m_arm->q();
+  const vpHomogeneousMatrix fMh = m_arm->fMh(q);
   vpHomogeneousMatrix wMo = m_tc->wMo(f.t);
   if (m_faults.jumpFrame >= 0 && m_frame >= m_faults.jumpFrame)
     wMo = m_faults.wJump * wMo;
@@ -82,29 +86,26 @@ LoopFrame ClosedLoop::step()
     if (!usable)
       m_filter.reset();
   }
-  vpMatrix eJe;
-  m_robot.get_eJe(eJe);
+  const vpMatrix hJe = m_arm->hJe(q);
   vpColVector wanted;
   f.servoing = usable;
   if (usable) {
     try {
-      wanted = m_servo.computeJointVelocity(f.hMmUsed, fMh, eJe, m_robot.q(), m_robot.jointMin(), m_robot.jointMax(),
+      wanted = m_servo.computeJointVelocity(f.hMmUsed, fMh, hJe, q, m_arm->model().jointMin(), m_arm->model().jointMax(),
                                             1.0 / m_lp.fps, twist.size() == 6 ? &twist : nullptr);
     } catch (const Error &) { // a pose vpServo must not see
       f.servoing = false;
     }
   }
   if (!f.servoing)
-    wanted = m_servo.stop(sim::RobotPA10::kDof); // fail-safe: SafeCommand ramps down to it
+    wanted = m_servo.stop(m_arm->model().dof()); // fail-safe: SafeCommand ramps down to it
   const vpColVector qdot = m_safe.next(wanted, 1.0 / m_lp.fps);
-  m_robot.setVelocity(vpRobot::JOINT_STATE, qdot);
-  f.qdot = m_robot.qdot(); // as clamped to the speed limits
-  const int n = std::max(1, static_cast<int>(std::lround(1.0 / m_lp.fps / m_lp.robotDt)));
-  for (int i = 0; i < n; ++i)
-    m_robot.step(1.0 / m_lp.fps / n);
-  f.q = m_robot.q();
+  m_arm->setJointVelocity(qdot);
+  f.qdot = m_arm->commanded(); // as clamped by the arm
+  m_arm->advance(1.0 / m_lp.fps);
+  f.q = m_arm->q();
   // Tell the tracker how the hand moved (the robot's odometry).
-  const vpHomogeneousMatrix hNowMhPrev = m_robot.fMe().inverse() * fMh;
+  const vpHomogeneousMatrix hNowMhPrev = m_arm->fMh(f.q).inverse() * fMh;
   m_tracker.applyHandMotion(hNowMhPrev);
   const vpHomogeneousMatrix e = m_hdMo.inverse() * f.hMmTrue;
   f.translationErrorMm = e.getTranslationVector().frobeniusNorm() * 1e3;

@@ -6,16 +6,16 @@
 
 namespace pm::lab {
 
-void writeLoopCsvHeader(std::ostream &csv)
+void writeLoopCsvHeader(std::ostream &csv, unsigned dof)
 {
   csv << std::setprecision(8) << "t,moving,true_x,true_y,true_z,true_e1,true_e2,true_e3,used_x,used_y,used_z,used_e1,used_e2,used_e3,"
          "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms,estimate_error_mm,estimate_error_deg,"
          "used_error_mm,used_error_deg,"
          "confidence,verified,trusted"
       << uncertaintyCsvHeader();
-  for (int i = 1; i <= 7; ++i)
+  for (unsigned i = 1; i <= dof; ++i)
     csv << ",q" << i;
-  for (int i = 1; i <= 7; ++i)
+  for (unsigned i = 1; i <= dof; ++i)
     csv << ",qdot" << i;
   csv << "\n";
 }
@@ -33,9 +33,9 @@ void writeLoopCsvRow(std::ostream &csv, const LoopFrame &f, bool oracle)
       << f.estimateErrorMm << "," << f.estimateErrorDeg << "," << f.usedErrorMm << "," << f.usedErrorDeg << ","
       << f.track.confidence << "," << (f.track.verified ? 1 : 0) << "," << (f.track.trusted ? 1 : 0);
   writeUncertaintyCells(csv, f.track.uncertainty);
-  for (unsigned i = 0; i < 7; ++i)
+  for (unsigned i = 0; i < f.q.size(); ++i)
     csv << "," << f.q[i];
-  for (unsigned i = 0; i < 7; ++i)
+  for (unsigned i = 0; i < f.qdot.size(); ++i)
     csv << "," << f.qdot[i];
   csv << "\n";
 }

@@ -100,20 +100,25 @@ vpImage<vpRGBa> drawRunRelativePose(const RunLog &log)
   return report::drawTimePlots(rel, 2, "relative pose: estimate used by the servo against truth");
 }
 
-vpImage<vpRGBa> drawRunJoints(const RunLog &log)
+vpImage<vpRGBa> drawRunJoints(const RunLog &log, const robot::ArmModel &arm)
 {
   std::vector<report::Series> js;
   const vpRGBa colors[7] = {vpRGBa(220, 60, 40), vpRGBa(40, 90, 200), vpRGBa(40, 160, 60), vpRGBa(160, 60, 200),
                             vpRGBa(230, 150, 20), vpRGBa(20, 170, 170), vpRGBa(90, 90, 90)};
-  for (unsigned i = 0; i < 7; ++i) {
-    report::Series s{"q" + std::to_string(i + 1), colors[i], {}, {}, false};
+  std::vector<report::Series> slides; // prismatic joints, in mm
+  for (unsigned i = 0; i < arm.dof(); ++i) {
+    report::Series s{"q" + std::to_string(i + 1), colors[i % 7], {}, {}, false};
     for (const auto &f : log.samples()) {
       s.t.push_back(f.t);
-      s.y.push_back(f.q[i] * 180 / M_PI);
+      s.y.push_back(i < f.q.size() ? f.q[i] * (arm.prismatic(i) ? 1e3 : 180 / M_PI) : NAN);
     }
-    js.push_back(s);
+    (arm.prismatic(i) ? slides : js).push_back(s);
   }
-  return report::drawTimePlots({{"PA-10 joints", "deg", js, 0, runMarks(log)}}, 1, "joint trajectories");
+  std::vector<report::Panel> panels;
+  if (!slides.empty())
+    panels.push_back({arm.title() + " slides", "mm", slides, 0, runMarks(log)});
+  panels.push_back({arm.title() + " joints", "deg", js, 0, runMarks(log)});
+  return report::drawTimePlots(panels, 1, "joint trajectories");
 }
 
 } // namespace pm::lab

@@ -28,10 +28,10 @@ void ErrorStats::add(const ErrorStats &o)
 double ErrorStats::rmsMm() const { return frames ? std::sqrt(sumSquaredMm / static_cast<double>(frames)) : 0.0; }
 double ErrorStats::rmsDeg() const { return frames ? std::sqrt(sumSquaredDeg / static_cast<double>(frames)) : 0.0; }
 
-RunLog::RunLog(long expectedFrames, double fps, const sim::RobotPA10 &robot, std::size_t maxSamples, double convergedMm,
+RunLog::RunLog(long expectedFrames, double fps, const robot::ArmModel &arm, std::size_t maxSamples, double convergedMm,
                double convergedDeg)
-  : m_expected(expectedFrames), m_mm(convergedMm), m_deg(convergedDeg), m_qmin(robot.jointMin()), m_qmax(robot.jointMax()),
-    m_vmax(robot.speedLimits()), m_maxSamples(maxSamples),
+  : m_expected(expectedFrames), m_mm(convergedMm), m_deg(convergedDeg), m_qmin(arm.jointMin()), m_qmax(arm.jointMax()),
+    m_vmax(arm.speedLimits()), m_maxSamples(maxSamples),
     m_conv(std::max(1L, std::lround(fps > 0 ? fps : 1.0)))
 {
   if (expectedFrames < 1 || maxSamples < 1 || !(fps > 0))

@@ -20,6 +20,7 @@ std::string runSummaryJson(const RunLog &log, const RunInfo &info)
   for (double m : info.memoryMb)
     memory.push_back(std::isfinite(m) ? nlohmann::json(m) : nlohmann::json());
   const nlohmann::json summary{
+      {"robot", info.arm},
       {"target", info.targetCode},
       {"trajectory", info.trajectory},
       {"oracle", info.oracle},
@@ -52,7 +53,7 @@ std::string runSummaryText(const RunLog &log, const RunInfo &info)
 {
   const ErrorStats &rest = log.atRest(), &moving = log.moving();
   std::ostringstream out;
-  out << std::fixed << std::setprecision(2) << "PA-10 following " << info.targetCode << " (" << info.targetName << "), "
+  out << std::fixed << std::setprecision(2) << info.arm << " following " << info.targetCode << " (" << info.targetName << "), "
       << info.trajectory << ", " << (info.oracle ? "oracle pose" : "photo-model tracker") << ", " << log.frames() << " frames\n";
   if (log.converged())
     out << "  converged after " << log.convergedAfterS() << " s\n";

@@ -12,6 +12,7 @@
 #include "pm/io/QuietStdout.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/sim/Rasterizer.h"
+#include "pm/robot/Pa10Model.h"
 #include "pm/sim/RobotPA10.h"
 
 namespace pm::lab {
@@ -30,7 +31,7 @@ vpImage<vpRGBa> defocused(const vpImage<vpRGBa> &I, double px)
 HandEyeResult simulatedHandEye(const sim::Scene &scene, const StereoRig &truthRig, const StereoRig &rig, const calib::Pattern &pattern,
                                int poses, std::uint64_t seed, double blurPx)
 {
-  const vpColVector q0 = LoopParams::startJoints();
+  const vpColVector q0 = robot::Pa10Model().restJoints();
   const vpHomogeneousMatrix wMb = sim::RobotPA10::forward(q0) * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0);
   std::mt19937 rng(static_cast<std::uint32_t>(seed) + 17);
   std::uniform_real_distribution<double> u(-1, 1);

@@ -46,7 +46,8 @@ vpHomogeneousMatrix passPose(const PassDirection &d, double distanceMm)
   const vpHomogeneousMatrix toPivot(0, 0, distanceMm * 1e-3, 0, 0, 0);
   // Turned by a about the axis (-sin b, cos b, 0): the hand's z swings toward direction b.
   const vpHomogeneousMatrix turn(vpTranslationVector(0, 0, 0), vpThetaUVector(-a * std::sin(b), a * std::cos(b), 0));
-  return toPivot * turn * toPivot.inverse();
+  const vpHomogeneousMatrix roll(0, 0, 0, 0, 0, d.rollDeg * M_PI / 180); // about the axis through the pivot
+  return toPivot * turn * toPivot.inverse() * roll;
 }
 
 std::vector<vpHomogeneousMatrix> planPass(const PassPlan &plan)

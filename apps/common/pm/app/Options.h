@@ -28,6 +28,8 @@ void addDistractorOptions(CLI::App &app, DistractorChoice &c);
 using lab::LabModelChoice;
 using lab::makeLabModel;
 void addLabModelOptions(CLI::App &app, LabModelChoice &c);
+//! --robot NAME: the simulated arm that carries the rig (pm::robot::armNames(): pa10, viper850, afma6).
+void addRobotOption(CLI::App &app, std::string &arm);
 
 //! --in-tol-deg, --in-bg-tol-deg, --out-bg-tol-deg
 void addFitnessOptions(CLI::App &app, FitnessParams &p);

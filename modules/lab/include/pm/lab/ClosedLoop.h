@@ -1,10 +1,12 @@
 #pragma once
 /*!
   \file ClosedLoop.h
-  The simulated lab in closed loop: the TC-robot moves the target, the stereo rig on the PA-10's
-  hand takes a pair every frame (30 fps), the photo-model tracker estimates the target's pose in
-  the hand frame (or, in oracle mode, the true pose is used), and PBVS with vpServo commands the
-  PA-10's joint velocities, integrated every 2 ms until the next frame.
+  The simulated lab in closed loop: the TC-robot moves the target, the stereo rig on the arm's
+  hand (the PA-10 by default, or any pm::robot::Arm: ViSP's Viper850 and Afma6) takes a pair
+  every frame (30 fps), the photo-model tracker estimates the target's pose in the hand frame
+  (or, in oracle mode, the true pose is used), and PBVS with vpServo commands the arm's joint
+  velocities, integrated every 2 ms until the next frame (SteppedArm) or sent to a vpRobot that
+  moves in real time (ViSPRobotArm).
 
   Fail-safe: the servo runs only on an estimate that is usable: the tracker trusts it
   (TrackResult::trusted: tracking, its lock verified, its confidence over the threshold), its quality is not under the lost threshold (no grace frames here) nor far under its recent best
@@ -12,19 +14,20 @@
   and maxSigmaDeg, the pose lies in the search
   space, and the images are not the very same as the last ones (a frozen camera: real frames are
   never equal to the bit). Otherwise the arm is stopped. Every command goes through
-  pm::SafeCommand with the PA-10's speed and acceleration limits, so a stop is a ramp of at most
+  pm::SafeCommand with the arm's speed and acceleration limits, so a stop is a ramp of at most
   the acceleration limits, as is the resumption when the estimate is usable again. Faults can be
   injected (LoopFaults) to test this: blank frames, a frozen camera, a sudden jump of the target.
 */
 #include <functional>
 #include <memory>
+#include <string>
 
 #include <visp3/core/vpColVector.h>
 
 #include "pm/servo/PbvsServo.h"
 #include "pm/servo/PoseFilter.h"
 #include "pm/servo/SafeCommand.h"
-#include "pm/sim/RobotPA10.h"
+#include "pm/robot/Arm.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TcRobot.h"
@@ -32,7 +35,7 @@
 
 namespace pm::lab {
 
-//! Settings of ClosedLoop: rates, oracle and filter modes, the quality fail-safe, the PA-10's start.
+//! Settings of ClosedLoop: rates, oracle and filter modes, the quality fail-safe, the arm.
 struct LoopParams
 {
   double fps = 30;          //!< camera rate, also the servo rate (frames per second)
@@ -66,10 +69,18 @@ struct LoopParams
   */
   double maxSigmaMm = 2;
   double maxSigmaDeg = 2; //!< see maxSigmaMm
-  vpColVector q0 = startJoints(); //!< initial joints (never empty: ViSP 3.5 copies an empty vpColVector with memcpy(nullptr))
-
-  //! The PA-10 looking horizontally along the base's x axis, elbow and wrist well bent (away from their singularities): (0, -35, 0, 80, 0, 45, -90) deg.
-  static vpColVector startJoints();
+  /*!
+    The arm that carries the rig when ClosedLoop is not given one: a pm::robot::SteppedArm of
+    pm::robot::makeArmModel(arm) at its rest joints, stepped every robotDt ("pa10", "viper850", "afma6").
+  */
+  std::string arm = "pa10";
+  /*!
+    Drive ViSP's threaded simulator of that arm instead (pm::robot::ViSPSimulatedArm: viper850 or
+    afma6), in real time, exactly as a real vpRobot would be driven: a run takes the motion's real
+    duration and does not repeat frame for frame.
+  */
+  bool realTime = false;
+  vpHomogeneousMatrix eMh; //!< the rig's hand frame on that arm's flange (identity: the rig looks along the flange's z axis)
 };
 
 //! What the camera does at a frame (LoopFaults::camera).
@@ -99,8 +110,8 @@ struct LoopFrame
   CameraFault fault = CameraFault::None; //!< the fault injected at this frame
   bool frozen = false;           //!< the images were the very same as the last ones
   bool servoing = false;         //!< the servo ran on the estimate (else the arm was being stopped)
-  //! The PA-10's joints after the frame (rad).
-  vpColVector q, qdot;           //!< the joint velocity commanded during the frame (rad/s, after SafeCommand and the robot's clamp)
+  //! The arm's joints after the frame (rad or m).
+  vpColVector q, qdot;           //!< the joint velocity commanded during the frame (rad/s or m/s, after SafeCommand and the arm's clamp)
   double translationErrorMm = 0; //!< true relative pose against the desired one: translation (mm) ...
   double rotationErrorDeg = 0;   //!< ... and rotation (deg)
   double estimateErrorMm = 0;    //!< the tracker's estimate against the true pose (mm) ...
@@ -117,7 +128,7 @@ struct LoopFrame
 
 /*!
   The simulated lab in closed loop, one camera frame per step() (see ClosedLoop.h). It keeps \e rig
-  and \e scene by reference (they must outlive it) and owns the tracker, the servo, the PA-10 and
+  and \e scene by reference (they must outlive it) and owns the tracker, the servo, the arm and
   the TC-robot.
 
   \code
@@ -139,13 +150,15 @@ class ClosedLoop
 {
 public:
   /*!
-    \e makeTc makes the TC-robot from wMh0, the hand's pose in the world (the PA-10's base frame)
-    at LoopParams::q0; the target's motion is given in that hand frame h0. \e model's
+    \e makeTc makes the TC-robot from wMh0, the hand's pose in the world (the arm's base frame)
+    at the start; the target's motion is given in that hand frame h0. \e arm drives the rig
+    from where it is (null: LoopParams::arm stepped in our loop, from its rest joints). \e model's
     build.model is tracked and its oMm gives the truth. The tracker starts searching, with no
     initial pose. Throws pm::Error for invalid parameters or if \e makeTc gives no TC-robot.
   */
   ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model, const TrackerParams &tp,
-             const ServoParams &sp, const LoopParams &lp, const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &wMh0)> &makeTc);
+             const ServoParams &sp, const LoopParams &lp, const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &wMh0)> &makeTc,
+             std::unique_ptr<robot::Arm> arm = nullptr);
 
   //! One frame: images, estimate, command, integration to the next frame.
   LoopFrame step();
@@ -165,8 +178,8 @@ public:
   {
     return !u.known || ((m_lp.maxSigmaMm <= 0 || u.maxMm() <= m_lp.maxSigmaMm) && (m_lp.maxSigmaDeg <= 0 || u.maxDeg() <= m_lp.maxSigmaDeg));
   }
-  //! The simulated PA-10 that carries the rig.
-  const sim::RobotPA10 &robot() const { return m_robot; }
+  //! The arm that carries the rig.
+  const robot::Arm &arm() const { return *m_arm; }
   //! The TC-robot that moves the target.
   const sim::TcRobot &tc() const { return *m_tc; }
   //! The time of the next step()'s frame (s).
@@ -179,8 +192,8 @@ private:
   LoopParams m_lp;
   PhotoModelTracker m_tracker;
   PbvsServo m_servo;
-  sim::RobotPA10 m_robot;
-  SafeCommand m_safe;            //!< after m_robot: made from its limits
+  std::unique_ptr<robot::Arm> m_arm;
+  SafeCommand m_safe;            //!< after m_arm: made from its limits
   LoopFaults m_faults;
   std::unique_ptr<sim::TcRobot> m_tc;
   sim::StereoImages m_images;

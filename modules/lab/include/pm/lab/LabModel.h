@@ -2,7 +2,7 @@
 /*!
   \file LabModel.h
   The lab's photo-model of a simulated toy, made as a user would make it: by default the
-  all-around model (the PA-10 walks the rig around the toy, LabPass.h), or the paper's flat model
+  all-around model (an arm, the PA-10 by default, walks the rig around the toy, LabPass.h), or the paper's flat model
   (two photos face-on) or the stereo snapshot; and a look-alike toy put beside the target.
 */
 #include <string>
@@ -26,6 +26,7 @@ struct LabModelChoice
   bool rightView = false;   //!< the stereo model adds the right camera's own views
   double viewTurnDeg = 0;   //!< the stereo model's four further photo pairs, the hand turned by this about x and y (deg; 0: one pair)
   bool allAroundAsked = false; //!< --all-around given: the default anyway (neither flat nor stereo), kept for older command lines
+  std::string arm = "pa10"; //!< the arm that makes the all-around model's pass (pm::robot::makeArmModel(); --robot)
   int passViews = 16;       //!< hand poses of the all-around model's pass
   std::vector<double> passRingsDeg{20, 40}; //!< its rings' angles from the rest axis (deg; PassPlan::ringsDeg)
   AllAroundParams allAroundParams; //!< the all-around build (refinement depth, viewpoints, backdrop)

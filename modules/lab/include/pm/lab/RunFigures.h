@@ -37,7 +37,7 @@ vpImage<vpRGBa> drawTrackingErrors(const std::vector<TrackedFrame> &frames, cons
 vpImage<vpRGBa> drawRunErrors(const RunLog &log, const std::string &title);
 //! The target's pose in the hand frame over time: the one the servo used against the truth.
 vpImage<vpRGBa> drawRunRelativePose(const RunLog &log);
-//! The PA-10's seven joints over time (deg).
-vpImage<vpRGBa> drawRunJoints(const RunLog &log);
+//! The arm's joints over time (deg; a prismatic one in mm, in a panel of its own).
+vpImage<vpRGBa> drawRunJoints(const RunLog &log, const robot::ArmModel &arm);
 
 } // namespace pm::lab

@@ -22,6 +22,7 @@
 #include "pm/core/Pose.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/lab/Convergence.h"
+#include "pm/robot/ArmModel.h"
 
 namespace pm::lab {
 
@@ -59,7 +60,7 @@ struct RunSample
   \code
     pm::lab::ClosedLoop loop(rig, scene, sm, tp, sp, lp, makeTc);
     const long n = static_cast<long>(60 * lp.fps) + 1; // one minute
-    pm::lab::RunLog log(n, lp.fps, loop.robot());
+    pm::lab::RunLog log(n, lp.fps, loop.arm().model());
     for (long k = 0; k < n; ++k)
       log.add(loop.step());
     log.finish();
@@ -73,10 +74,10 @@ public:
   /*!
     \e expectedFrames: the run's length (sets the decimation and the tenths). More frames are
     accepted: they count in the last tenth, and the samples are merged by pairs when they reach
-    twice \e maxSamples, so memory stays bounded. \e robot gives the joint and speed limits.
+    twice \e maxSamples, so memory stays bounded. \e arm gives the joint and speed limits.
     Convergence: the true relative pose within \e convergedMm and \e convergedDeg for 1 s.
   */
-  RunLog(long expectedFrames, double fps, const sim::RobotPA10 &robot, std::size_t maxSamples = 4000,
+  RunLog(long expectedFrames, double fps, const robot::ArmModel &arm, std::size_t maxSamples = 4000,
          double convergedMm = kConvergedMm, double convergedDeg = kConvergedDeg);
 
   //! Takes the run's next frame (in order: the convergence and the tenths count them).

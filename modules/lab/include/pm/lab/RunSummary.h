@@ -15,6 +15,7 @@ namespace pm::lab {
 //! What RunLog does not know of the run.
 struct RunInfo
 {
+  std::string arm = "PA-10";         //!< the arm that carries the rig (ArmModel::title())
   std::string targetCode;            //!< the toy followed (catalogue code)
   std::string targetName;            //!< its name
   std::string trajectory;            //!< the TC-robot's motion, in words (e.g. "steps (20)")

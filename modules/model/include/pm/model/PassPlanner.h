@@ -32,6 +32,7 @@ struct PassDirection
 {
   //! The axis's tilt from rest (deg).
   double tiltDeg = 0, azimuthDeg = 0; //!< the azimuth it tilts toward (deg)
+  double rollDeg = 0; //!< the hand then turned about its own axis (deg; where an arm's wrist cannot reach the pose unturned)
 };
 
 //! The directions of the plan: the rest one, then each ring's, evenly around (rings staggered by half a step).

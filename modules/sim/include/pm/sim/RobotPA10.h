@@ -1,10 +1,9 @@
 #pragma once
 /*!
   \file RobotPA10.h
-  The Mitsubishi PA-10-7C as a ViSP robot (vpRobotSimulator): 7 revolute joints, standard DH
-  (a = 0, d = 0.317, 0, 0.450, 0, 0.480, 0, 0.070 m, alpha = -90, 90, -90, 90, -90, 90, 0 deg; q = 0
-  points the arm straight up, the flange at 1.317 m), joint ranges S1 +-177, S2 +-94, S3 +-174,
-  E1 +-137, E2 +-255, W1 +-165, W2 +-255 deg, speed limits 1, 1, 2, 2, 2 pi, 2 pi, 2 pi rad/s.
+  The Mitsubishi PA-10-7C as a ViSP robot (vpRobotSimulator): its kinematics and limits are
+  pm::robot::Pa10Model's, its motion pm::robot::SteppedArm's (the lab's own loop drives the
+  PA-10 through that Arm, as any other arm; this class lets ViSP code drive it as a vpRobot).
 
   Frames: f the base (reference), e the flange; the hand frame H of the stereo rig is the flange
   frame (z along the last joint axis, out of the flange), so eMh is the identity.
@@ -15,12 +14,14 @@
   limit stops on it (the count of such events is kept; it must stay 0 under a sane controller).
   A command over a joint's speed limit is scaled down as a whole, so the motion keeps its direction.
 */
-#include <array>
+#include <memory>
 
 #include <visp3/core/vpColVector.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpMatrix.h>
 #include <visp3/robot/vpRobotSimulator.h>
+
+#include "pm/robot/SteppedArm.h"
 
 namespace pm::sim {
 
@@ -94,25 +95,20 @@ public:
     0.01 deg was found (out of reach, or only past a joint limit); \e q holds the last iterate.
   */
   static bool inverse(const vpHomogeneousMatrix &fMe, const vpColVector &seed, vpColVector &q, double marginDeg = 2.0);
-  vpHomogeneousMatrix fMe() const { return forward(m_q); } //!< the flange (= hand) pose in the base frame now (metres)
-  const vpColVector &q() const { return m_q; }             //!< the joint values now (rad)
-  const vpColVector &qdot() const { return m_qdot; }       //!< the joint velocities commanded, scaled to the speed limits; 0 for a joint stopped on its limit (rad/s)
+  vpHomogeneousMatrix fMe() const { return forward(q()); } //!< the flange (= hand) pose in the base frame now (metres)
+  const vpColVector &q() const { return m_arm->joints(); } //!< the joint values now (rad)
+  const vpColVector &qdot() const { return m_arm->qdot(); } //!< the joint velocities commanded, scaled to the speed limits; 0 for a joint stopped on its limit (rad/s)
   vpColVector jointMin() const;    //!< lower joint limits (rad)
   vpColVector jointMax() const;    //!< upper joint limits (rad)
   vpColVector speedLimits() const; //!< joint speed limits (rad/s)
-  /*!
-    Acceleration limits (rad/s^2) for the commands: 5, 5, 10, 10, 10 pi, 10 pi, 10 pi, i.e. each
-    joint from rest to full speed in 0.2 s. Our choice (the PA-10's servo amplifiers' figures were
-    not found; with 0.5 s the hand overshot the end of Table 2's moves by 20 mm); pm::SafeCommand
-    holds the commands to them.
-  */
+  //! Acceleration limits (rad/s^2) for the commands (robot::Pa10Model::accelerationLimits()); pm::SafeCommand holds the commands to them.
   vpColVector accelerationLimits() const;
   //! Times a joint reached its limit and was stopped there (should stay 0).
-  int limitHits() const { return m_limitHits; }
+  int limitHits() const { return m_arm->limitHits(); }
 
 private:
-  vpColVector m_q, m_qdot, m_prevQ;
-  int m_limitHits = 0;
+  std::unique_ptr<robot::SteppedArm> m_arm;
+  vpColVector m_prevQ;
 };
 
 } // namespace pm::sim

@@ -1,0 +1,72 @@
+#pragma once
+/*!
+  \file ViSPRobotArm.h
+  The drive of any ViSP robot (a vpRobot: a real arm's driver, or ViSP's threaded simulators
+  vpSimulatorViper850 and vpSimulatorAfma6) behind pm::robot::Arm, in real time: joint
+  velocities through vpRobot::setVelocity(JOINT_STATE), the joints read back with
+  getPosition(JOINT_STATE), positions reached in position control. Its kinematics (for the
+  pass's inverse kinematics and the servo's Jacobian) come from an ArmModel that matches it.
+
+  A robot that does not answer (an exception, joints of the wrong size or not finite, or joints
+  that do not move for ViSPRobotArmParams::stallS while a motion is commanded) stops the arm and
+  throws pm::Error: the loop that drives it ends with that error and the arm at rest.
+*/
+#include <visp3/robot/vpRobot.h>
+
+#include "pm/robot/Arm.h"
+
+namespace pm::robot {
+
+//! Settings of ViSPRobotArm.
+struct ViSPRobotArmParams
+{
+  double stallS = 1.0;           //!< a commanded motion that moves no joint for this long means the robot does not answer (s)
+  double positionTolerance = 1e-3; //!< moveTo() fails when a joint ends farther than this from its goal (rad or m)
+};
+
+/*!
+  A vpRobot driven in real time through Arm (see ViSPRobotArm.h). The robot must outlive it.
+  \code
+    vpSimulatorViper850 sim(false);                       // headless, its own thread
+    sim.init(vpViper850::TOOL_PTGREY_FLEA2_CAMERA, vpCameraParameters::perspectiveProjWithoutDistortion);
+    pm::robot::ViSPRobotArm arm(sim, pm::robot::makeArmModel("viper850"));
+    arm.moveTo(arm.model().restJoints());                 // position control, blocking
+    vpColVector qdot(6, 0.0);
+    qdot[0] = 0.1;
+    arm.setJointVelocity(qdot);                           // velocity control
+    arm.advance(1.0 / 30);                                // waits until 1/30 s after the last advance()
+    arm.stop();
+  \endcode
+*/
+class ViSPRobotArm : public Arm
+{
+public:
+  //! \e robot with the kinematics of \e model and the rig at \e eMh on its flange. Throws pm::Error for a null model.
+  ViSPRobotArm(vpRobot &robot, std::unique_ptr<ArmModel> model, const vpHomogeneousMatrix &eMh = vpHomogeneousMatrix(),
+               const ViSPRobotArmParams &params = ViSPRobotArmParams());
+  //! Stops the robot (a stop that fails is not reported from a destructor).
+  ~ViSPRobotArm() override;
+  vpColVector q() override;
+  vpColVector commanded() const override { return m_command; }
+  void setJointVelocity(const vpColVector &qdot) override;
+  //! Waits until \e dt seconds after the end of the last advance() (or the first command), then checks the robot moves.
+  void advance(double dt) override;
+  /*!
+    Position control to \e q (within the model's limits; throws pm::Error naming a joint out of
+    them), through the robot's own blocking vpRobot::setPosition(); then at rest. Throws pm::Error
+    when it stops short of \e q.
+  */
+  void moveTo(const vpColVector &q) override;
+  void stop() override;
+  std::string describe() const override;
+
+private:
+  [[noreturn]] void fail(const std::string &what);
+  vpRobot &m_robot;
+  ViSPRobotArmParams m_params;
+  vpColVector m_command, m_lastQ;
+  double m_tickMs = -1;    //!< the end of the last advance() (vpTime ms; -1: none yet)
+  double m_stillS = 0;     //!< how long the joints have not moved under a motion command (s)
+};
+
+} // namespace pm::robot

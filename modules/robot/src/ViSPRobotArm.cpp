@@ -1,0 +1,140 @@
+#include "pm/robot/ViSPRobotArm.h"
+
+#include <cmath>
+
+#include <visp3/core/vpException.h>
+#include <visp3/core/vpTime.h>
+
+#include "pm/core/Error.h"
+#include "pm/io/QuietStdout.h"
+
+namespace pm::robot {
+
+ViSPRobotArm::ViSPRobotArm(vpRobot &robot, std::unique_ptr<ArmModel> model, const vpHomogeneousMatrix &eMh,
+                           const ViSPRobotArmParams &params)
+    : Arm(std::move(model), eMh), m_robot(robot), m_params(params)
+{
+  if (!(params.stallS > 0 && params.positionTolerance > 0))
+    throw Error(m_model->title() + ": the stall time and the position tolerance must be positive");
+  m_command.resize(m_model->dof(), true);
+}
+
+ViSPRobotArm::~ViSPRobotArm()
+{
+  try {
+    stop();
+  } catch (...) {
+  }
+}
+
+void ViSPRobotArm::fail(const std::string &what)
+{
+  try {
+    stop();
+  } catch (...) {
+  }
+  throw Error(m_model->title() + " (" + describe() + "): " + what + "; the arm was told to stop");
+}
+
+vpColVector ViSPRobotArm::q()
+{
+  vpColVector q;
+  try {
+    m_robot.getPosition(vpRobot::JOINT_STATE, q);
+  } catch (const vpException &e) {
+    fail("the robot does not answer: reading its joints failed (" + e.getStringMessage() + ")");
+  }
+  if (q.size() != m_model->dof())
+    fail("the robot does not answer: it gave " + std::to_string(q.size()) + " joint values, its model has " +
+         std::to_string(m_model->dof()));
+  for (unsigned i = 0; i < q.size(); ++i)
+    if (!std::isfinite(q[i]))
+      fail("the robot does not answer: joint " + std::to_string(i + 1) + " reads as not finite");
+  return q;
+}
+
+void ViSPRobotArm::setJointVelocity(const vpColVector &qdot)
+{
+  if (qdot.size() != m_model->dof())
+    fail(std::to_string(m_model->dof()) + " joint velocities expected, got " + std::to_string(qdot.size()));
+  for (unsigned i = 0; i < qdot.size(); ++i)
+    if (!std::isfinite(qdot[i]))
+      fail("the commanded velocity of joint " + std::to_string(i + 1) + " is not finite");
+  try {
+    if (m_robot.getRobotState() != vpRobot::STATE_VELOCITY_CONTROL) {
+      io::QuietStdout quiet; // ViSP's robots say so on std::cout
+      m_robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
+    }
+    m_robot.setVelocity(vpRobot::JOINT_STATE, qdot);
+  } catch (const vpException &e) {
+    fail("the robot refused the velocity command (" + e.getStringMessage() + ")");
+  }
+  m_command = qdot;
+  if (m_tickMs < 0)
+    m_tickMs = vpTime::measureTimeMs();
+}
+
+void ViSPRobotArm::advance(double dt)
+{
+  if (!(dt >= 0))
+    fail("time runs forward only");
+  if (m_tickMs < 0)
+    m_tickMs = vpTime::measureTimeMs();
+  vpTime::wait(m_tickMs, 1e3 * dt);
+  m_tickMs += 1e3 * dt;
+  // A commanded motion must move the joints: otherwise the robot does not answer.
+  const vpColVector now = q();
+  const bool commanding = m_command.frobeniusNorm() > 1e-6;
+  if (commanding && m_lastQ.size() == now.size() && (now - m_lastQ).frobeniusNorm() == 0.0) {
+    m_stillS += dt;
+    if (m_stillS >= m_params.stallS)
+      fail("the robot does not answer: its joints have not moved for " + std::to_string(m_stillS) +
+           " s under a velocity command");
+  } else {
+    m_stillS = 0;
+  }
+  m_lastQ = now;
+}
+
+void ViSPRobotArm::moveTo(const vpColVector &goal)
+{
+  m_model->requireJoints(goal, "joint values to move to");
+  const vpColVector lo = m_model->jointMin(), hi = m_model->jointMax();
+  for (unsigned i = 0; i < goal.size(); ++i)
+    if (goal[i] < lo[i] || goal[i] > hi[i])
+      throw Error(m_model->title() + ": cannot move to " + m_model->describeJoint(i, goal) + ": out of its limits");
+  try {
+    {
+      io::QuietStdout quiet;
+      m_robot.setRobotState(vpRobot::STATE_POSITION_CONTROL);
+    }
+    m_robot.setPosition(vpRobot::JOINT_STATE, goal); // ViSP's robots return when the position is reached
+  } catch (const vpException &e) {
+    fail("the robot refused to move to the joints asked (" + e.getStringMessage() + ")");
+  }
+  const vpColVector reached = q();
+  for (unsigned i = 0; i < goal.size(); ++i)
+    if (std::fabs(reached[i] - goal[i]) > m_params.positionTolerance)
+      fail("it stopped at " + m_model->describeJoint(i, reached) + " short of the position asked");
+  m_command = 0;
+  m_lastQ = reached;
+  m_tickMs = -1;
+  m_stillS = 0;
+}
+
+void ViSPRobotArm::stop()
+{
+  m_command = 0;
+  try {
+    if (m_robot.getRobotState() == vpRobot::STATE_VELOCITY_CONTROL)
+      m_robot.setVelocity(vpRobot::JOINT_STATE, m_command);
+    io::QuietStdout quiet;
+    m_robot.setRobotState(vpRobot::STATE_STOP);
+  } catch (const vpException &e) {
+    throw Error(m_model->title() + ": the robot did not take the stop (" + e.getStringMessage() + ")");
+  }
+}
+
+std::string ViSPRobotArm::describe() const { return "a ViSP vpRobot driven in real time"; }
+
+} // namespace pm::robot
