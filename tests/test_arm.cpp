@@ -3,9 +3,11 @@
 // lab's pass on each arm and the views folder it writes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
+#include <visp3/core/vpTime.h>
 #include <visp3/core/vpVelocityTwistMatrix.h>
 
 #include "TestSupport.h"
@@ -273,11 +275,19 @@ class FakeRobot : public vpRobot
 public:
   vpColVector q = vpColVector(6, 0.0), qdot = vpColVector(6, 0.0);
   bool nanJoints = false, frozen = false, stopped = false;
+  double clockedGain = 0;  //!< > 0: moves by itself in real time, at this share of the command (a sluggish or eager controller)
+  double lastReadMs = -1;
+  double fastestShare = 0; //!< the largest |qdot_i| / limit_i commanded, against \e limits
+  vpColVector limits;
   void get_eJe(vpMatrix &) override {}
   void get_fJe(vpMatrix &) override {}
   void getDisplacement(const vpRobot::vpControlFrameType, vpColVector &d) override { d.resize(6, true); }
   void getPosition(const vpRobot::vpControlFrameType, vpColVector &out) override
   {
+    const double now = vpTime::measureTimeMs();
+    if (clockedGain > 0 && lastReadMs >= 0)
+      run(clockedGain * 1e-3 * (now - lastReadMs));
+    lastReadMs = now;
     out = q;
     if (nanJoints)
       out[2] = NAN;
@@ -288,6 +298,8 @@ public:
   {
     qdot = v;
     stopped = v.frobeniusNorm() == 0;
+    for (unsigned i = 0; i < limits.size(); ++i)
+      fastestShare = std::max(fastestShare, std::fabs(v[i]) / limits[i]);
   }
   vpRobot::vpRobotStateType setRobotState(const vpRobot::vpRobotStateType s) override
   {
@@ -342,6 +354,35 @@ TEST(ViSPRobotArm, ARobotThatStopsAnsweringStopsTheArmWithAClearError)
   const vpColVector before = robot.q;
   EXPECT_NE(errorOf([&] { arm.moveTo(beyond); }).find("joint 1"), std::string::npos);
   EXPECT_EQ(robot.q, before);
+}
+
+TEST(ViSPRobotArm, MovesByVelocityOntoTheGoalWithinItsSpeedLimitsWhateverTheControllersGain)
+{
+  // ViSPRobotArmParams::moveByVelocity (what ViSP's simulators need): a closed loop, so a robot
+  // that moves at 60 % or 150 % of what it is told still lands on the goal, and at most at the
+  // model's speed limits.
+  pm::robot::ViSPRobotArmParams params;
+  params.moveByVelocity = true;
+  for (const double gain : {0.6, 1.5}) {
+    FakeRobot robot;
+    pm::robot::ViSPRobotArm arm(robot, pm::robot::makeArmModel("viper850"), vpHomogeneousMatrix(), params);
+    robot.limits = arm.model().speedLimits();
+    robot.clockedGain = gain;
+    robot.q = arm.model().restJoints();
+    vpColVector goal = robot.q;
+    goal[0] += 0.4;
+    goal[3] -= 0.3;
+    arm.moveTo(goal);
+    EXPECT_TRUE(robot.stopped);
+    for (unsigned i = 0; i < 6; ++i)
+      EXPECT_NEAR(robot.q[i], goal[i], params.positionTolerance) << "joint " << i + 1 << ", gain " << gain;
+    EXPECT_GT(robot.fastestShare, 0.5) << gain; // it does hurry
+    EXPECT_LE(robot.fastestShare, 1.0) << gain;
+    // A robot that does not move: the stall error, not a wait for ever.
+    robot.frozen = true;
+    const std::string e = errorOf([&] { arm.moveTo(arm.model().restJoints()); });
+    EXPECT_NE(e.find("have not moved"), std::string::npos) << e;
+  }
 }
 
 TEST(ViSPSimulatedArm, ViSPsThreadedSimulatorsMoveAsCommandedInRealTime)

@@ -1,5 +1,6 @@
 #include "pm/robot/ViSPRobotArm.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <visp3/core/vpException.h>
@@ -103,6 +104,22 @@ void ViSPRobotArm::moveTo(const vpColVector &goal)
   for (unsigned i = 0; i < goal.size(); ++i)
     if (goal[i] < lo[i] || goal[i] > hi[i])
       throw Error(m_model->title() + ": cannot move to " + m_model->describeJoint(i, goal) + ": out of its limits");
+  if (m_params.moveByVelocity)
+    driveTo(goal);
+  else
+    setPosition(goal);
+  const vpColVector reached = q();
+  for (unsigned i = 0; i < goal.size(); ++i)
+    if (std::fabs(reached[i] - goal[i]) > m_params.positionTolerance)
+      fail("it stopped at " + m_model->describeJoint(i, reached) + " short of the position asked");
+  m_command = 0;
+  m_lastQ = reached;
+  m_tickMs = -1;
+  m_stillS = 0;
+}
+
+void ViSPRobotArm::setPosition(const vpColVector &goal)
+{
   try {
     {
       io::QuietStdout quiet;
@@ -112,14 +129,31 @@ void ViSPRobotArm::moveTo(const vpColVector &goal)
   } catch (const vpException &e) {
     fail("the robot refused to move to the joints asked (" + e.getStringMessage() + ")");
   }
-  const vpColVector reached = q();
-  for (unsigned i = 0; i < goal.size(); ++i)
-    if (std::fabs(reached[i] - goal[i]) > m_params.positionTolerance)
-      fail("it stopped at " + m_model->describeJoint(i, reached) + " short of the position asked");
-  m_command = 0;
-  m_lastQ = reached;
-  m_tickMs = -1;
-  m_stillS = 0;
+}
+
+void ViSPRobotArm::driveTo(const vpColVector &goal)
+{
+  // Each joint at its speed limit (80 % of it), then exponentially onto its goal (5 /s): a
+  // tenth of the tolerance is reached within a few seconds of the slowest joint's travel.
+  constexpr double gain = 5.0, dt = 0.01, share = 0.8;
+  const vpColVector vmax = m_model->speedLimits();
+  const double precision = 0.1 * m_params.positionTolerance;
+  vpColVector e = goal - q();
+  double travelS = 0;
+  for (unsigned i = 0; i < e.size(); ++i)
+    travelS = std::max(travelS, std::fabs(e[i]) / (share * vmax[i]));
+  const double deadlineS = 3.0 * (travelS + std::log(1.0 + e.infinityNorm() / precision) / gain) + 5.0;
+  vpColVector qdot(e.size());
+  for (double t = 0; e.infinityNorm() > precision; t += dt) {
+    if (t > deadlineS)
+      fail("it did not reach the position asked within " + std::to_string(deadlineS) + " s");
+    for (unsigned i = 0; i < e.size(); ++i)
+      qdot[i] = std::clamp(gain * e[i], -share * vmax[i], share * vmax[i]);
+    setJointVelocity(qdot);
+    advance(dt);
+    e = goal - q();
+  }
+  stop();
 }
 
 void ViSPRobotArm::stop()

@@ -20,12 +20,10 @@ std::unique_ptr<vpRobot> makeSimulator(const std::string &name, const ArmModel &
   if (name == "viper850") {
     auto sim = std::make_unique<vpSimulatorViper850>(false);
     sim->init(vpViper850::TOOL_PTGREY_FLEA2_CAMERA, vpCameraParameters::perspectiveProjWithoutDistortion);
-    sim->setPositioningVelocity(100);
     robot = std::move(sim);
   } else if (name == "afma6") {
     auto sim = std::make_unique<vpSimulatorAfma6>(false);
     sim->init(vpAfma6::TOOL_CCMOP, vpCameraParameters::perspectiveProjWithoutDistortion);
-    sim->setPositioningVelocity(100);
     robot = std::move(sim);
   } else {
     throw Error("robot '" + name + "' has no ViSP simulator running in real time (viper850 or afma6; the PA-10's runs are stepped)");
@@ -47,10 +45,18 @@ detail::SimulatorHolder holder(const std::string &name)
   return detail::SimulatorHolder{makeSimulator(name, *makeArmModel(name))};
 }
 
+//! ViSP's simulators' setPosition() in joint space races their thread (it can wait for ever on one core): our velocity loop instead.
+ViSPRobotArmParams simulatorParams()
+{
+  ViSPRobotArmParams p;
+  p.moveByVelocity = true;
+  return p;
+}
+
 } // namespace
 
 ViSPSimulatedArm::ViSPSimulatedArm(const std::string &name, const vpHomogeneousMatrix &eMh)
-    : detail::SimulatorHolder(holder(name)), ViSPRobotArm(*simulator, makeArmModel(name), eMh)
+    : detail::SimulatorHolder(holder(name)), ViSPRobotArm(*simulator, makeArmModel(name), eMh, simulatorParams())
 {
   moveTo(model().restJoints());
 }

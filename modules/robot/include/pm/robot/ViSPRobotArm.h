@@ -22,6 +22,13 @@ struct ViSPRobotArmParams
 {
   double stallS = 1.0;           //!< a commanded motion that moves no joint for this long means the robot does not answer (s)
   double positionTolerance = 1e-3; //!< moveTo() fails when a joint ends farther than this from its goal (rad or m)
+  /*!
+    moveTo() through joint velocities in our own loop (each joint at most at its model's speed
+    limit, slowing down proportionally near its goal) instead of the robot's vpRobot::setPosition().
+    For ViSP's threaded simulators, whose setPosition() in joint space races their own thread:
+    on a loaded machine (or one core) it can wait for ever.
+  */
+  bool moveByVelocity = false;
 };
 
 /*!
@@ -53,8 +60,8 @@ public:
   void advance(double dt) override;
   /*!
     Position control to \e q (within the model's limits; throws pm::Error naming a joint out of
-    them), through the robot's own blocking vpRobot::setPosition(); then at rest. Throws pm::Error
-    when it stops short of \e q.
+    them), through the robot's own blocking vpRobot::setPosition() (or our velocity loop, see
+    ViSPRobotArmParams::moveByVelocity); then at rest. Throws pm::Error when it stops short of \e q.
   */
   void moveTo(const vpColVector &q) override;
   void stop() override;
@@ -62,6 +69,8 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string &what);
+  void setPosition(const vpColVector &goal);   //!< through vpRobot::setPosition()
+  void driveTo(const vpColVector &goal);       //!< through joint velocities (moveByVelocity)
   vpRobot &m_robot;
   ViSPRobotArmParams m_params;
   vpColVector m_command, m_lastQ;

@@ -26,7 +26,7 @@ struct SimulatorHolder
 /*!
   A headless ViSP simulator of the arm called \e name ("viper850" or "afma6"; the PA-10 has none)
   at its model's rest joints, driven through ViSPRobotArm. The simulator's velocity saturation is
-  set to the model's speed limits, its positioning speed to its fastest.
+  set to the model's speed limits; it moves to a position through joint velocities (ViSPRobotArmParams::moveByVelocity).
   \code
     pm::robot::ViSPSimulatedArm arm("afma6");      // at rest, in real time
     arm.setJointVelocity(vpColVector(6, 0.0));
