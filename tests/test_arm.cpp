@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 #include <visp3/core/vpTime.h>
@@ -13,7 +14,9 @@
 #include "TestSupport.h"
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
+#include "pm/hand/HandLoop.h"
 #include "pm/io/ViewsFolder.h"
+#include "pm/lab/ArmCameraSource.h"
 #include "pm/lab/LabPass.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/robot/ArmCatalog.h"
@@ -21,6 +24,7 @@
 #include "pm/robot/SteppedArm.h"
 #include "pm/robot/ViSPRobotArm.h"
 #include "pm/robot/ViSPSimulatedArm.h"
+#include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
 
 #include <nlohmann/json.hpp>
@@ -356,6 +360,24 @@ TEST(ViSPRobotArm, ARobotThatStopsAnsweringStopsTheArmWithAClearError)
   EXPECT_EQ(robot.q, before);
 }
 
+TEST(ViSPRobotArm, ARobotStoppedWithAJointOnItsLimitSaysWhichJoint)
+{
+  // ViSP's simulators stop the arm when a joint reaches its limit: the error names it.
+  FakeRobot robot;
+  pm::robot::ViSPRobotArm arm(robot, pm::robot::makeArmModel("viper850"));
+  robot.q = arm.model().restJoints();
+  robot.q[2] = arm.model().jointMax()[2];
+  robot.frozen = true;
+  vpColVector qd(6, 0.0);
+  qd[2] = 0.1;
+  arm.setJointVelocity(qd);
+  std::string e;
+  for (int k = 0; k < 40 && e.empty(); ++k)
+    e = errorOf([&] { arm.advance(1.0 / 30); });
+  EXPECT_NE(e.find("joint 3 (215.0 deg, limits -29.0..215.0 deg) is on its limit"), std::string::npos) << e;
+  EXPECT_TRUE(robot.stopped);
+}
+
 TEST(ViSPRobotArm, MovesByVelocityOntoTheGoalWithinItsSpeedLimitsWhateverTheControllersGain)
 {
   // ViSPRobotArmParams::moveByVelocity (what ViSP's simulators need): a closed loop, so a robot
@@ -383,6 +405,64 @@ TEST(ViSPRobotArm, MovesByVelocityOntoTheGoalWithinItsSpeedLimitsWhateverTheCont
     const std::string e = errorOf([&] { arm.moveTo(arm.model().restJoints()); });
     EXPECT_NE(e.find("have not moved"), std::string::npos) << e;
   }
+}
+
+TEST(HandLoop, ARobotThatStopsAnsweringMidServoEndsTheLoopWithAClearErrorAndTheArmStopped)
+{
+  // A vpRobot that moves in real time as told, servoed from the lab's cameras on its hand to bring
+  // the crab 50 mm nearer; then its joints freeze.
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
+  const pm::sim::SimulatedPhotoModel sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig());
+  FakeRobot robot;
+  pm::robot::ViSPRobotArm arm(robot, pm::robot::makeArmModel("viper850"));
+  robot.q = arm.model().restJoints();
+  robot.clockedGain = 1;
+  pm::lab::ArmCameraSource cameras(scene, rig(), arm, arm.fMh() * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), 30, 0);
+  pm::ServoParams sp;
+  sp.hdMo = sm.photoHMo * sm.oMm * vpHomogeneousMatrix(0, 0, -0.05, 0, 0, 0); // the model's frame, 50 mm nearer
+  pm::hand::HandLoop loop(rig(), sm.build.model, pm::TrackerParams(), sp, pm::hand::GuardParams(), cameras, arm);
+  pm::hand::HandFrame f;
+  long servoed = 0;
+  for (int k = 0; k < 60; ++k) { // 2 s
+    ASSERT_TRUE(loop.step(f));
+    servoed += f.command.servoing ? 1 : 0;
+  }
+  ASSERT_GT(servoed, 30);
+  ASSERT_GT(arm.commanded().frobeniusNorm(), 1e-3);
+  robot.frozen = true;
+  std::string e;
+  for (int k = 0; k < 90 && e.empty(); ++k)
+    e = errorOf([&] { loop.step(f); });
+  EXPECT_NE(e.find("does not answer"), std::string::npos) << e;
+  EXPECT_NE(e.find("the arm was told to stop"), std::string::npos) << e;
+  EXPECT_TRUE(robot.stopped);
+  EXPECT_EQ(robot.qdot.frobeniusNorm(), 0.0);
+}
+
+TEST(ArmProgram, YourArmsProgramRefusesBadInputClearlyAndWritesNothing)
+{
+  // examples/own-arm: ViSP's simulated Viper850 handed to pm::program::runArmProgram.
+  pm::test::TempDir d("my-arm");
+  const std::string rigFile = pm::test::dataPath("rig/pa10_stereo.json");
+  EXPECT_EQ(pm::test::runProgram("my-arm", "").status, 2); // a subcommand is needed
+  const auto help = pm::test::runProgram("my-arm", "pass --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--views"), std::string::npos);
+  EXPECT_EQ(pm::test::runProgram("my-arm", "pass --rig " + rigFile + " --simulate C12").status, 2); // no --views
+  EXPECT_EQ(pm::test::runProgram("my-arm", "pass --rig " + rigFile + " --views " + d.file("v")).status, 2); // no cameras
+  // Out of the arm's reach: the view and the joint, nothing written.
+  const auto far = pm::test::runProgram("my-arm", "pass --rig " + rigFile + " --simulate C12 --distance-mm 2500 --views " + d.file("far"));
+  EXPECT_EQ(far.status, 1);
+  EXPECT_NE(far.err.find("error: view 01 of the pass"), std::string::npos) << far.err;
+  EXPECT_NE(far.err.find("joint 2"), std::string::npos) << far.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("far")));
+  // Live cameras and backgrounds with no terminal to answer: refused before the cameras open.
+  const auto live = pm::test::runProgram("my-arm", "pass --rig " + rigFile + " --left 0 --right 1 --views " + d.file("live"));
+  EXPECT_EQ(live.status, 1);
+  EXPECT_NE(live.err.find("terminal"), std::string::npos) << live.err;
+  const auto noModel = pm::test::runProgram("my-arm", "servo --rig " + rigFile + " --simulate C12 --model " + d.file("none.json"));
+  EXPECT_EQ(noModel.status, 1);
+  EXPECT_NE(noModel.err.find("error: "), std::string::npos) << noModel.err;
 }
 
 TEST(ViSPSimulatedArm, ViSPsThreadedSimulatorsMoveAsCommandedInRealTime)

@@ -25,15 +25,10 @@ ClosedLoop::ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim:
                        const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &)> &makeTc,
                        std::unique_ptr<robot::Arm> arm)
     : m_rig(rig), m_scene(scene), m_oMm(model.oMm), m_hdMo(sp.hdMo), m_lp(lp), m_tracker(rig, model.build.model, tp),
-      m_servo(sp), m_arm(arm ? std::move(arm) : makeArm(lp)),
-      m_safe(m_arm->model().speedLimits(), m_arm->model().accelerationLimits()), m_filter(lp.filterParams)
+      m_arm(arm ? std::move(arm) : makeArm(lp)), m_guard(sp, lp, m_tracker, m_arm->model())
 {
   if (!(lp.fps > 0 && lp.robotDt > 0 && lp.robotDt <= 1.0 / lp.fps))
     throw Error("closed loop: the frame rate must be positive and the robot step at most a frame");
-  if (!(lp.qualityDrop > 0 && lp.qualityMemoryPerS >= 0))
-    throw Error("closed loop: the quality drop must be positive and its memory rate non-negative");
-  if (!(lp.maxSigmaMm >= 0 && lp.maxSigmaDeg >= 0))
-    throw Error("closed loop: the largest uncertainty allowed must be non-negative (0: no check)");
   // The target starts at the desired pose in front of the hand.
   m_tc = makeTc(m_arm->fMh());
   if (!m_tc)
@@ -67,40 +62,11 @@ LoopFrame ClosedLoop::step()
   m_images = std::move(next);
   // The tracker runs in both modes (its estimate is recorded); the oracle servos on the truth.
   f.track = m_tracker.track(m_images.left, m_images.right);
-  m_qRef -= m_lp.qualityMemoryPerS / m_lp.fps;
-  const bool usable = m_lp.oracle || (f.track.trusted && !f.frozen &&
-                                      f.track.quality >= m_tracker.params().lostQuality &&
-                                      f.track.quality >= m_qRef - m_lp.qualityDrop && f.track.phi.isValid() && certainEnough(f.track.uncertainty) &&
-                                      m_tracker.params().space.contains(f.track.phi));
-  if (usable)
-    m_qRef = std::max(m_qRef, f.track.quality);
-  vpColVector twist;
-  if (m_lp.oracle) {
-    f.hMmUsed = f.hMmTrue;
-  } else if (usable && filtering()) { // filtered in the base frame, where the target moves smoothly
-    m_filter.update(fMh * f.track.hMo, 1.0 / m_lp.fps);
-    f.hMmUsed = fMh.inverse() * m_filter.pose();
-    twist = m_filter.twist();
-  } else {
-    f.hMmUsed = f.track.hMo;
-    if (!usable)
-      m_filter.reset();
-  }
   const vpMatrix hJe = m_arm->hJe(q);
-  vpColVector wanted;
-  f.servoing = usable;
-  if (usable) {
-    try {
-      wanted = m_servo.computeJointVelocity(f.hMmUsed, fMh, hJe, q, m_arm->model().jointMin(), m_arm->model().jointMax(),
-                                            1.0 / m_lp.fps, twist.size() == 6 ? &twist : nullptr);
-    } catch (const Error &) { // a pose vpServo must not see
-      f.servoing = false;
-    }
-  }
-  if (!f.servoing)
-    wanted = m_servo.stop(m_arm->model().dof()); // fail-safe: SafeCommand ramps down to it
-  const vpColVector qdot = m_safe.next(wanted, 1.0 / m_lp.fps);
-  m_arm->setJointVelocity(qdot);
+  const hand::GuardedCommand c = m_guard.step(f.track, f.frozen, q, fMh, hJe, 1.0 / m_lp.fps, m_lp.oracle ? &f.hMmTrue : nullptr);
+  f.hMmUsed = c.hMoUsed;
+  f.servoing = c.servoing;
+  m_arm->setJointVelocity(c.qdot);
   f.qdot = m_arm->commanded(); // as clamped by the arm
   m_arm->advance(1.0 / m_lp.fps);
   f.q = m_arm->q();

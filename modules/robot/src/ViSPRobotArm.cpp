@@ -75,6 +75,19 @@ void ViSPRobotArm::setJointVelocity(const vpColVector &qdot)
     m_tickMs = vpTime::measureTimeMs();
 }
 
+std::string ViSPRobotArm::stallReason(const vpColVector &q) const
+{
+  // A robot's controller stops the whole arm when a joint reaches its limit (ViSP's simulators do):
+  // name it when one is there (within a degree or a millimetre) and is driven on.
+  const vpColVector lo = m_model->jointMin(), hi = m_model->jointMax();
+  for (unsigned i = 0; i < q.size(); ++i) {
+    const double margin = m_model->prismatic(i) ? 1e-3 : M_PI / 180;
+    if ((q[i] <= lo[i] + margin && m_command[i] < 0) || (q[i] >= hi[i] - margin && m_command[i] > 0))
+      return "the robot stopped: " + m_model->describeJoint(i, q) + " is on its limit, and the servo drove it on";
+  }
+  return "the robot does not answer: its joints have not moved for " + std::to_string(m_stillS) + " s under a velocity command";
+}
+
 void ViSPRobotArm::advance(double dt)
 {
   if (!(dt >= 0))
@@ -89,8 +102,7 @@ void ViSPRobotArm::advance(double dt)
   if (commanding && m_lastQ.size() == now.size() && (now - m_lastQ).frobeniusNorm() == 0.0) {
     m_stillS += dt;
     if (m_stillS >= m_params.stallS)
-      fail("the robot does not answer: its joints have not moved for " + std::to_string(m_stillS) +
-           " s under a velocity command");
+      fail(stallReason(now));
   } else {
     m_stillS = 0;
   }

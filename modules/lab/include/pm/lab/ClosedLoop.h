@@ -8,15 +8,9 @@
   velocities, integrated every 2 ms until the next frame (SteppedArm) or sent to a vpRobot that
   moves in real time (ViSPRobotArm).
 
-  Fail-safe: the servo runs only on an estimate that is usable: the tracker trusts it
-  (TrackResult::trusted: tracking, its lock verified, its confidence over the threshold), its quality is not under the lost threshold (no grace frames here) nor far under its recent best
-  (LoopParams::qualityDrop), its reported 1-sigma uncertainty is within LoopParams::maxSigmaMm
-  and maxSigmaDeg, the pose lies in the search
-  space, and the images are not the very same as the last ones (a frozen camera: real frames are
-  never equal to the bit). Otherwise the arm is stopped. Every command goes through
-  pm::SafeCommand with the arm's speed and acceleration limits, so a stop is a ramp of at most
-  the acceleration limits, as is the resumption when the estimate is usable again. Faults can be
-  injected (LoopFaults) to test this: blank frames, a frozen camera, a sudden jump of the target.
+  Fail-safe: the servo runs only on an estimate that is usable, through pm::hand::GuardedServo,
+  the same as on a real arm (pm::hand::HandLoop): see GuardedServo.h. Faults can be injected
+  (LoopFaults) to test this: blank frames, a frozen camera, a sudden jump of the target.
 */
 #include <functional>
 #include <memory>
@@ -24,9 +18,7 @@
 
 #include <visp3/core/vpColVector.h>
 
-#include "pm/servo/PbvsServo.h"
-#include "pm/servo/PoseFilter.h"
-#include "pm/servo/SafeCommand.h"
+#include "pm/hand/GuardedServo.h"
 #include "pm/robot/Arm.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
@@ -35,40 +27,12 @@
 
 namespace pm::lab {
 
-//! Settings of ClosedLoop: rates, oracle and filter modes, the quality fail-safe, the arm.
-struct LoopParams
+//! Settings of ClosedLoop: rates, oracle mode, the fail-safe and filter (hand::GuardParams), the arm.
+struct LoopParams : hand::GuardParams
 {
   double fps = 30;          //!< camera rate, also the servo rate (frames per second)
   double robotDt = 0.002;   //!< integration step of the robot (its servo cycle, s; at most 1 / fps)
   bool oracle = false;      //!< servo on the true pose instead of the estimate
-  /*!
-    Filter the estimate (alpha-beta, in the base frame) and feed its velocity forward: on or off,
-    or Auto: on for a tracker without the precise stage (RM-GA's estimates wander over the hue
-    fitness's plateau), off with it (its estimates are within a few tenths of a millimetre and degree,
-    the filter's lag would cost more: measured in docs/precise-stage.md).
-  */
-  enum class Filter { Auto, On, Off };
-  Filter filter = Filter::Auto; //!< see Filter
-  PoseFilterParams filterParams; //!< the gains of that filter
-  /*!
-    Fail-safe on the quality q: the servo also stops when q falls more than this under its recent
-    best (the best q of the servoed frames, forgotten at qualityMemoryPerS per second): after a
-    loss the tracker may lock first on a wrong pose that still covers much of the target (q 0.86
-    against 0.97), and servoing on it drives the hand away.
-  */
-  double qualityDrop = 0.08;
-  double qualityMemoryPerS = 0.03; //!< how fast the recent best q is forgotten (q units per second, >= 0)
-  /*!
-    Fail-safe on the pose's reported uncertainty (TrackResult::uncertainty, 1-sigma per axis): the
-    servo also stops when it is known and its largest sigma exceeds maxSigmaMm (mm) or maxSigmaDeg
-    (deg). A frame without a known uncertainty (no precise stage: the flat and stereo models, or
-    its pose not kept) is judged by the other checks alone. 0: no such check. The defaults, 2 mm and
-    2 deg, are above every frame's in the lab's main jobs (C12 and R2: at most 1.49 mm and 1.51 deg,
-    0.53 mm and 0.43 deg on the frames servoed) and above all but the most oblique of the random
-    6-DoF run's (up to 0.92 mm and 2.33 deg; docs/trust.md): a wrong pose of 5 deg is then 2.5 sigma away.
-  */
-  double maxSigmaMm = 2;
-  double maxSigmaDeg = 2; //!< see maxSigmaMm
   /*!
     The arm that carries the rig when ClosedLoop is not given one: a pm::robot::SteppedArm of
     pm::robot::makeArmModel(arm) at its rest joints, stepped every robotDt ("pa10", "viper850", "afma6").
@@ -169,15 +133,9 @@ public:
   //! The photo-model tracker.
   const PhotoModelTracker &tracker() const { return m_tracker; }
   //! Whether the estimate is filtered (LoopParams::filter, Auto resolved for this tracker).
-  bool filtering() const
-  {
-    return m_lp.filter == LoopParams::Filter::On || (m_lp.filter == LoopParams::Filter::Auto && !m_tracker.hasPreciseStage());
-  }
+  bool filtering() const { return m_guard.filtering(); }
   //! False when \e u is known and over LoopParams::maxSigmaMm or maxSigmaDeg (each when positive).
-  bool certainEnough(const PoseUncertainty &u) const
-  {
-    return !u.known || ((m_lp.maxSigmaMm <= 0 || u.maxMm() <= m_lp.maxSigmaMm) && (m_lp.maxSigmaDeg <= 0 || u.maxDeg() <= m_lp.maxSigmaDeg));
-  }
+  bool certainEnough(const PoseUncertainty &u) const { return m_guard.certainEnough(u); }
   //! The arm that carries the rig.
   const robot::Arm &arm() const { return *m_arm; }
   //! The TC-robot that moves the target.
@@ -191,15 +149,12 @@ private:
   vpHomogeneousMatrix m_oMm, m_hdMo;
   LoopParams m_lp;
   PhotoModelTracker m_tracker;
-  PbvsServo m_servo;
   std::unique_ptr<robot::Arm> m_arm;
-  SafeCommand m_safe;            //!< after m_arm: made from its limits
+  hand::GuardedServo m_guard;    //!< after m_tracker and m_arm: made from them
   LoopFaults m_faults;
   std::unique_ptr<sim::TcRobot> m_tc;
   sim::StereoImages m_images;
   long m_frame = 0;
-  double m_qRef = 0;             //!< the recent best quality (see LoopParams::qualityDrop)
-  PoseFilter m_filter;           //!< the target's estimated pose in the base frame
 };
 
 } // namespace pm::lab

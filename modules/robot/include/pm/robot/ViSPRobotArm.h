@@ -8,8 +8,9 @@
   pass's inverse kinematics and the servo's Jacobian) come from an ArmModel that matches it.
 
   A robot that does not answer (an exception, joints of the wrong size or not finite, or joints
-  that do not move for ViSPRobotArmParams::stallS while a motion is commanded) stops the arm and
-  throws pm::Error: the loop that drives it ends with that error and the arm at rest.
+  that do not move for ViSPRobotArmParams::stallS while a motion is commanded: the error names a
+  joint on its limit when one is there) stops the arm and throws pm::Error: the loop that drives
+  it ends with that error and the arm at rest.
 */
 #include <visp3/robot/vpRobot.h>
 
@@ -69,6 +70,7 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string &what);
+  std::string stallReason(const vpColVector &q) const; //!< why the joints do not move: a joint on its limit, or no answer
   void setPosition(const vpColVector &goal);   //!< through vpRobot::setPosition()
   void driveTo(const vpColVector &goal);       //!< through joint velocities (moveByVelocity)
   vpRobot &m_robot;
