@@ -1,6 +1,7 @@
 #include "pm/program/ArmSessions.h"
 
 #include <atomic>
+#include <cstdio>
 #include <csignal>
 #include <cmath>
 #include <iostream>
@@ -67,6 +68,13 @@ public:
 private:
   void (*m_previous)(int);
 };
+
+std::string fixed(double v, int decimals)
+{
+  char s[48];
+  std::snprintf(s, sizeof s, "%.*f", decimals, v);
+  return s;
+}
 
 std::string poseText(const vpHomogeneousMatrix &M)
 {
@@ -145,11 +153,11 @@ void runServoSession(robot::Arm &arm, const CameraOptions &cameras, const ServoO
     if (f.tookDesired) {
       hMoTaken = hMoTrue;
       taken = true;
-      out << "t " << f.timeS << " s: the target found, kept at " << poseText(loop.desired()) << std::endl;
+      out << "t " << fixed(f.timeS, 2) << " s: the target found, kept at " << poseText(loop.desired()) << std::endl;
     }
     if (!servo.quiet && f.timeS >= nextReport) {
-      out << "t " << f.timeS << " s: " << (f.command.servoing ? "servoing" : "held") << ", estimate " << poseText(f.track.hMo)
-          << ", confidence " << f.track.confidence << std::endl;
+      out << "t " << fixed(f.timeS, 2) << " s: " << (f.command.servoing ? "servoing" : "held") << ", estimate "
+          << poseText(f.track.hMo) << ", confidence " << fixed(f.track.confidence, 3) << std::endl;
       nextReport += 1.0;
     }
   }
@@ -159,7 +167,8 @@ void runServoSession(robot::Arm &arm, const CameraOptions &cameras, const ServoO
   if (c.simulated && taken) {
     const vpHomogeneousMatrix e = hMoTaken.inverse() * c.simulated->hMo();
     out << "simulated: the target in the hand at the end against where it was kept (truth): "
-        << 1e3 * e.getTranslationVector().frobeniusNorm() << " mm, " << e.getThetaUVector().getTheta() * 180 / M_PI << " deg" << std::endl;
+        << fixed(1e3 * e.getTranslationVector().frobeniusNorm(), 2) << " mm, " << fixed(e.getThetaUVector().getTheta() * 180 / M_PI, 2)
+        << " deg" << std::endl;
   }
 }
 

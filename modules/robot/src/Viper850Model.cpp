@@ -25,6 +25,6 @@ vpColVector Viper850Model::jointMax() const
 
 vpColVector Viper850Model::speedLimits() const { return values({2, 2, 2, 3, 3, 5}); }
 
-vpColVector Viper850Model::restJoints() const { return degrees({0, -85, 210, 0, -75, 0}); }
+vpColVector Viper850Model::restJoints() const { return degrees({0, -85, 200, 0, -65, 0}); }
 
 } // namespace pm::robot
