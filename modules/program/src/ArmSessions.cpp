@@ -111,9 +111,15 @@ void runPassSession(robot::Arm &arm, const CameraOptions &cameras, const PassOpt
     std::string line;
     std::getline(std::cin, line);
   };
+  InterruptScope ctrlC; // Ctrl-C ends the pass at the next stop, the arm stopped and nothing written
   rec.progress = [&](std::size_t done, std::size_t total) {
     if (!pass.quiet)
       out << "\rpass: " << done << "/" << total << " pairs" << (done == total ? "\n" : "") << std::flush;
+    if (g_interrupted) {
+      arm.stop();
+      throw Error("the pass was interrupted (Ctrl-C) after " + std::to_string(done) + " of " + std::to_string(total) +
+                  " pairs: the arm is stopped where it was, nothing written");
+    }
   };
   const std::vector<PassView> views = hand::recordPass(arm, *c.source, plan, rec);
   io::saveViewsFolder(views, pass.views);

@@ -17,7 +17,8 @@ namespace pm::program {
 struct CameraOptions
 {
   std::string rig;             //!< the stereo rig file (pm-make-rig, pm-calibrate-rig)
-  std::string left, right;     //!< live cameras (OpenCV VideoCapture: index, device, file, pipeline)
+  std::string left;            //!< the left live camera (OpenCV VideoCapture: index, device, file, pipeline)
+  std::string right;           //!< the right one
   std::string simulate;        //!< or the lab's renderer, this target ahead of the hand
   double fps = 30;             //!< the cameras' rate
   double distanceMm = 500;     //!< the target's distance ahead of the hand at the start (the pass's pivot; --simulate places it there)
