@@ -5,7 +5,6 @@
 
 #include <CLI/CLI.hpp>
 #include <visp3/core/vpException.h>
-#include <visp3/robot/vpRobotWireFrameSimulator.h>
 
 #include "pm/core/Error.h"
 #include "pm/io/PoseFile.h"
@@ -32,26 +31,33 @@ void addCameraOptions(CLI::App &cmd, CameraOptions &o)
       ->check(CLI::Range(100.0, 5000.0))->capture_default_str();
 }
 
-int body(const CLI::App &app, const CLI::App &pass, const CLI::App &servo, vpRobot &robot, const std::string &armName,
-         const std::string &handEye, bool moveByVelocity, bool fromRest, const CameraOptions &cameras, const PassOptions &po,
-         const ServoOptions &so)
+//! Everything the command line sets.
+struct ProgramOptions
 {
-  const CameraOptions &c = cameras;
+  std::string handEye;        //!< eMh file (empty: the flange frame)
+  bool moveByVelocity = false; //!< ViSPRobotArmParams::moveByVelocity
+  bool fromRest = false;      //!< move to the model's rest joints first
+  CameraOptions passCameras, servoCameras;
+  PassOptions pass;
+  ServoOptions servo;
+};
+
+void runCommand(const std::string &program, bool pass, vpRobot &robot, const std::string &armName, const ProgramOptions &o)
+{
+  const CameraOptions &c = pass ? o.passCameras : o.servoCameras;
   if (c.simulate.empty() && c.left.empty())
     throw CLI::RequiredError("--left and --right (the cameras), or --simulate");
   robot::ViSPRobotArmParams params;
-  // ViSP's simulators' setPosition races their thread: our velocity loop instead (ViSPRobotArmParams::moveByVelocity).
-  params.moveByVelocity = moveByVelocity || dynamic_cast<vpRobotWireFrameSimulator *>(&robot) != nullptr;
-  const vpHomogeneousMatrix eMh = handEye.empty() ? vpHomogeneousMatrix() : io::readPoseYaml(handEye);
+  params.moveByVelocity = o.moveByVelocity;
+  const vpHomogeneousMatrix eMh = o.handEye.empty() ? vpHomogeneousMatrix() : io::readPoseYaml(o.handEye);
   robot::ViSPRobotArm arm(robot, robot::makeArmModel(armName), eMh, params);
-  std::cout << app.get_name() << ": " << arm.model().title() << " (" << arm.describe() << ")" << std::endl;
-  if (fromRest)
+  std::cout << program << ": " << arm.model().title() << " (" << arm.describe() << ")" << std::endl;
+  if (o.fromRest)
     arm.moveTo(arm.model().restJoints());
-  if (pass.parsed())
-    runPassSession(arm, c, po, std::cout);
-  else if (servo.parsed())
-    runServoSession(arm, c, so, std::cout);
-  return 0;
+  if (pass)
+    runPassSession(arm, c, o.pass, std::cout);
+  else
+    runServoSession(arm, c, o.servo, std::cout);
 }
 
 } // namespace
@@ -63,30 +69,26 @@ int runArmProgram(int argc, char **argv, vpRobot &robot, const std::string &armN
                "vpRobot with the kinematics of " + armName + "; it stops on any error, on Ctrl-C and when the cameras end.");
   app.name(argc > 0 ? std::filesystem::path(argv[0]).filename().string() : "arm");
   app.require_subcommand(1);
-  std::string handEye;
-  bool moveByVelocity = false, fromRest = false;
-  app.add_option("--hand-eye", handEye, "the rig's hand frame on the flange, eMh (vpPoseVector YAML; default: the flange frame)");
-  app.add_flag("--move-by-velocity", moveByVelocity, "reach the pass's poses through joint velocities instead of the robot's "
+  ProgramOptions o;
+  app.add_option("--hand-eye", o.handEye, "the rig's hand frame on the flange, eMh (vpPoseVector YAML; default: the flange frame)");
+  app.add_flag("--move-by-velocity", o.moveByVelocity, "reach the pass's poses through joint velocities instead of the robot's "
                                                      "setPosition() (ViSP's simulators always do)");
-  app.add_flag("--from-rest", fromRest, "first move the arm to its model's rest joints (where the lab starts; the target then "
+  app.add_flag("--from-rest", o.fromRest, "first move the arm to its model's rest joints (where the lab starts; the target then "
                                         "--distance-mm ahead of the hand), in position control");
-  CameraOptions cameras, servoCameras;
-  PassOptions po;
-  ServoOptions so;
   CLI::App *pass = app.add_subcommand("pass", "the pass: the arm moves the rig around the target view by view, and writes the views folder");
-  addCameraOptions(*pass, cameras);
-  pass->add_option("--views", po.views, "the views folder to write (created; nothing appears unless all of it is written)")->required();
-  pass->add_option("--pass-views", po.count, "hand poses of the pass")->check(CLI::Range(6, 200))->capture_default_str();
-  pass->add_option("--settle-pairs", po.settlePairs, "pairs dropped at each stop (the cameras' buffer, the arm settling)")
+  addCameraOptions(*pass, o.passCameras);
+  pass->add_option("--views", o.pass.views, "the views folder to write (created; nothing appears unless all of it is written)")->required();
+  pass->add_option("--pass-views", o.pass.count, "hand poses of the pass")->check(CLI::Range(6, 200))->capture_default_str();
+  pass->add_option("--settle-pairs", o.pass.settlePairs, "pairs dropped at each stop (the cameras' buffer, the arm settling)")
       ->check(CLI::Range(0, 100))->capture_default_str();
-  pass->add_flag("!--no-backgrounds", po.backgrounds, "no second round with the target removed (a plain backdrop: pm-make-model --backdrop-hue)");
-  pass->add_flag("--quiet", po.quiet, "no progress");
+  pass->add_flag("!--no-backgrounds", o.pass.backgrounds, "no second round with the target removed (a plain backdrop: pm-make-model --backdrop-hue)");
+  pass->add_flag("--quiet", o.pass.quiet, "no progress");
   CLI::App *servo = app.add_subcommand("servo", "the servo: the arm keeps the target where it is first found (or at --desired)");
-  addCameraOptions(*servo, servoCameras);
-  servo->add_option("--model", so.model, "the photo-model (pm-make-model's model.json)")->required();
-  servo->add_option("--desired", so.desired, "the pose of the target to keep in the hand frame (vpPoseVector YAML; default: where it is first found)");
-  servo->add_option("--duration-s", so.durationS, "stop after this long (s; 0: when the cameras end, or Ctrl-C)")->check(CLI::Range(0.0, 1e6));
-  servo->add_flag("--quiet", so.quiet, "no line per second");
+  addCameraOptions(*servo, o.servoCameras);
+  servo->add_option("--model", o.servo.model, "the photo-model (pm-make-model's model.json)")->required();
+  servo->add_option("--desired", o.servo.desired, "the pose of the target to keep in the hand frame (vpPoseVector YAML; default: where it is first found)");
+  servo->add_option("--duration-s", o.servo.durationS, "stop after this long (s; 0: when the cameras end, or Ctrl-C)")->check(CLI::Range(0.0, 1e6));
+  servo->add_flag("--quiet", o.servo.quiet, "no line per second");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp &e) {
@@ -96,7 +98,8 @@ int runArmProgram(int argc, char **argv, vpRobot &robot, const std::string &armN
     return 2;
   }
   try {
-    return body(app, *pass, *servo, robot, armName, handEye, moveByVelocity, fromRest, pass->parsed() ? cameras : servoCameras, po, so);
+    runCommand(app.get_name(), pass->parsed(), robot, armName, o);
+    return 0;
   } catch (const CLI::ParseError &e) {
     std::cerr << app.get_name() << ": usage error: " << e.what() << " (see --help)" << std::endl;
     return 2;

@@ -5,6 +5,7 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpTime.h>
+#include <visp3/robot/vpRobotWireFrameSimulator.h>
 
 #include "pm/core/Error.h"
 #include "pm/io/QuietStdout.h"
@@ -15,6 +16,8 @@ ViSPRobotArm::ViSPRobotArm(vpRobot &robot, std::unique_ptr<ArmModel> model, cons
                            const ViSPRobotArmParams &params)
     : Arm(std::move(model), eMh), m_robot(robot), m_params(params)
 {
+  // ViSP's simulators' setPosition() in joint space races their own thread: always our velocity loop.
+  m_params.moveByVelocity = params.moveByVelocity || dynamic_cast<vpRobotWireFrameSimulator *>(&robot) != nullptr;
   if (!(params.stallS > 0 && params.positionTolerance > 0))
     throw Error(m_model->title() + ": the stall time and the position tolerance must be positive");
   m_command.resize(m_model->dof(), true);

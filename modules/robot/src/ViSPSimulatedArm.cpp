@@ -45,18 +45,10 @@ detail::SimulatorHolder holder(const std::string &name)
   return detail::SimulatorHolder{makeSimulator(name, *makeArmModel(name))};
 }
 
-//! ViSP's simulators' setPosition() in joint space races their thread (it can wait for ever on one core): our velocity loop instead.
-ViSPRobotArmParams simulatorParams()
-{
-  ViSPRobotArmParams p;
-  p.moveByVelocity = true;
-  return p;
-}
-
 } // namespace
 
 ViSPSimulatedArm::ViSPSimulatedArm(const std::string &name, const vpHomogeneousMatrix &eMh)
-    : detail::SimulatorHolder(holder(name)), ViSPRobotArm(*simulator, makeArmModel(name), eMh, simulatorParams())
+    : detail::SimulatorHolder(holder(name)), ViSPRobotArm(*simulator, makeArmModel(name), eMh)
 {
   moveTo(model().restJoints());
 }

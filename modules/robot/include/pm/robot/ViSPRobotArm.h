@@ -26,8 +26,8 @@ struct ViSPRobotArmParams
   /*!
     moveTo() through joint velocities in our own loop (each joint at most at its model's speed
     limit, slowing down proportionally near its goal) instead of the robot's vpRobot::setPosition().
-    For ViSP's threaded simulators, whose setPosition() in joint space races their own thread:
-    on a loaded machine (or one core) it can wait for ever.
+    Always so for ViSP's threaded simulators (any vpRobotWireFrameSimulator), whose setPosition() in
+    joint space races their own thread: on a loaded machine (or one core) it can wait for ever.
   */
   bool moveByVelocity = false;
 };
