@@ -64,10 +64,10 @@ int main(int argc, char **argv)
     if (!simulate && leftImages.empty())
       throw CLI::ValidationError("--simulate or --left/--right", "one of them is needed");
     const std::unique_ptr<pm::calib::Pattern> pattern = pm::app::makePattern(patternKind, boardText);
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
     pm::calib::BaselineCheck check(rig, *pattern);
     // Simulation (also the hand-eye check's): the rig that takes the pictures, the pattern printed flat.
-    std::optional<pm::StereoRig> truthRig;
+    std::optional<pm::core::StereoRig> truthRig;
     std::optional<pm::sim::Scene> scene;
     if (simulate) {
       truthRig = pm::io::loadRig(trueRigPath.empty() ? pm::app::dataPath("rig/pa10_stereo.json") : trueRigPath);
@@ -79,8 +79,8 @@ int main(int argc, char **argv)
       std::uniform_real_distribution<double> u(-1, 1);
       pm::app::Progress progress("rendering and detecting", static_cast<std::size_t>(simulate), quiet);
       for (int k = 0; k < simulate; ++k) {
-        const pm::Phi p{20 * u(rng), 20 * u(rng), 500 + 40 * u(rng), 0.12 * u(rng), 0.12 * u(rng), 0.2 * u(rng)};
-        const auto im = scene->renderStereo(*truthRig, pm::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
+        const pm::core::Phi p{20 * u(rng), 20 * u(rng), 500 + 40 * u(rng), 0.12 * u(rng), 0.12 * u(rng), 0.2 * u(rng)};
+        const auto im = scene->renderStereo(*truthRig, pm::core::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
         check.add(pm::lab::defocused(im.left, blurPx), pm::lab::defocused(im.right, blurPx), "simulated pair " + std::to_string(k));
         progress.step();
       }
@@ -89,7 +89,7 @@ int main(int argc, char **argv)
     } else {
       const std::vector<std::string> lf = pm::app::imageFiles(leftImages, firstFrame), rf = pm::app::imageFiles(rightImages, firstFrame);
       if (lf.size() != rf.size())
-        throw pm::Error(std::to_string(lf.size()) + " left images but " + std::to_string(rf.size()) + " right ones (pairs are taken in order)");
+        throw pm::core::Error(std::to_string(lf.size()) + " left images but " + std::to_string(rf.size()) + " right ones (pairs are taken in order)");
       for (std::size_t i = 0; i < lf.size(); ++i)
         check.add(pm::io::readColorImage(lf[i]), pm::io::readColorImage(rf[i]),
                 "pair " + std::to_string(pm::app::isImagePattern(leftImages) ? static_cast<long>(i) + firstFrame : static_cast<long>(i)));

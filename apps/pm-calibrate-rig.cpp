@@ -70,7 +70,7 @@ int main(int argc, char **argv)
     const pm::calib::Pattern &board = *pattern;
 
     std::vector<pm::calib::StereoImagePair> pairs;
-    std::optional<pm::StereoRig> truth;
+    std::optional<pm::core::StereoRig> truth;
     std::string source;
     if (simulate) {
       truth = trueRigPath.empty() ? pm::lab::labRigWithLens(simParams.distortion) : pm::io::loadRig(trueRigPath);

@@ -95,14 +95,14 @@ int main(int argc, char **argv)
       ->check(CLI::Range(0.0, 45.0));
   app.add_option("--steady-variant", cp.steadyVariant, "ours-steady: ours with this fraction of the budget on steady frames "
                                                       "(see --steady-budget)")->check(CLI::Range(0.01, 1.0));
-  pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
+  pm::app::TrackerOptions trackerOptions(app, pm::tracker::TrackerParams());
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
     cp.tracker = trackerOptions.resolve();
     if (cp.trackers.empty())
       throw CLI::ValidationError("--trackers", "at least one tracker");
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
     pm::compare::Comparison comparison(rig, cp);
     pm::io::StagedFiles files(out);
     const std::string caoPath = files.stage("model.cao");
@@ -113,7 +113,7 @@ int main(int argc, char **argv)
     progress.finish();
     csv.close();
     if (!csv)
-      throw pm::Error("cannot write " + files.finalPath("frames.csv"));
+      throw pm::core::Error("cannot write " + files.finalPath("frames.csv"));
     const std::size_t nT = r.keys.size();
 
     nlohmann::json jt = nlohmann::json::array();

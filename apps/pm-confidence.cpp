@@ -59,7 +59,7 @@ int main(int argc, char **argv)
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::StereoRig defaultRig = pm::io::loadRig(rigPath);
+    const pm::core::StereoRig defaultRig = pm::io::loadRig(rigPath);
     pm::compare::ConfidenceStudyParams cs;
     cs.scenarios = scenarios;
     cs.trajectoryPath = trajectoryPath;
@@ -77,20 +77,20 @@ int main(int argc, char **argv)
     const pm::compare::ConfidenceStudy study = pm::compare::runConfidenceStudy(defaultRig, cs, [&] { progress.step(); });
     progress.finish();
     const std::vector<LabelledFrame> &set = study.frames;
-    const pm::compare::ConfidenceReport rep = pm::compare::reportConfidence(study, maxFalseAccept, pm::TrackerParams().confidence.threshold);
+    const pm::compare::ConfidenceReport rep = pm::compare::reportConfidence(study, maxFalseAccept, pm::tracker::TrackerParams().confidence.threshold);
     nlohmann::json fitJson;
     if (fit) {
-      const pm::ConfidenceKind kind = allAround ? pm::ConfidenceKind::AllAround : stereo ? pm::ConfidenceKind::Stereo : pm::ConfidenceKind::Flat;
+      const pm::tracker::ConfidenceKind kind = allAround ? pm::tracker::ConfidenceKind::AllAround : stereo ? pm::tracker::ConfidenceKind::Stereo : pm::tracker::ConfidenceKind::Flat;
       pm::compare::ConfidenceFit f;
       try {
         f = pm::compare::fitConfidence(study, kind, maxFalseAccept);
-      } catch (const pm::Error &e) {
-        throw pm::Error(std::string("--fit: ") + e.what());
+      } catch (const pm::core::Error &e) {
+        throw pm::core::Error(std::string("--fit: ") + e.what());
       }
-      fitJson = {{"kind", pm::toString(kind)}, {"auroc_cross_validated", f.aurocCrossValidated}, {"auroc", f.auroc},
+      fitJson = {{"kind", pm::tracker::toString(kind)}, {"auroc_cross_validated", f.aurocCrossValidated}, {"auroc", f.auroc},
                  {"weights", f.model.weights}, {"bias", f.model.bias}, {"threshold", f.model.threshold},
                  {"operating_threshold_unshifted", f.operatingThreshold}, {"trusted_right_frames", f.trustedRight},
-                 {"trusted_wrong_frames", f.trustedWrong}, {"features", pm::ConfidenceCues::featureNames()}, {"iterations", f.iterations}};
+                 {"trusted_wrong_frames", f.trustedWrong}, {"features", pm::tracker::ConfidenceCues::featureNames()}, {"iterations", f.iterations}};
     }
 
     std::ofstream csv(files.stage("frames.csv"));

@@ -54,7 +54,7 @@ int main(int argc, char **argv)
   pm::app::addLabModelOptions(app, lab);
   pm::app::addModelOptions(app, lab.photo);
   pm::app::addSceneOptions(app, sp);
-  pm::TrackerParams defaults;
+  pm::tracker::TrackerParams defaults;
   defaults.ga.population = 100;       // detection from scratch: a larger population ...
   defaults.ga.restartGenerations = 30; // ... restarted when stagnant ...
   defaults.ga.refineEvaluations = 200; // ... and the best refined (measured: README)
@@ -67,16 +67,16 @@ int main(int argc, char **argv)
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::TrackerParams tp = trackerOptions.resolve();
+    const pm::tracker::TrackerParams tp = trackerOptions.resolve();
     const auto v = pm::app::parseNumbers(pose, 6, "--pose");
-    const pm::Phi ref{v[0], v[1], v[2], v[3], v[4], v[5]};
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::core::Phi ref{v[0], v[1], v[2], v[3], v[4], v[5]};
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
 
     auto runOne = [&](const std::string &code, const std::string &dir) {
-      pm::PhotoModel model;
+      pm::core::PhotoModel model;
       vpImage<vpRGBa> IL, IR;
       bool haveTruth = true;
-      pm::Phi truth = ref;
+      pm::core::Phi truth = ref;
       std::string source;
       if (code.empty()) {
         IL = pm::io::readColorImage(left);
@@ -92,19 +92,19 @@ int main(int argc, char **argv)
         const pm::sim::Scene scene(pm::sim::makeTarget(code), sp);
         const auto sm = pm::app::makeLabModel(scene, rig, lab);
         model = sm.build.model;
-        const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(ref);
+        const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(ref);
         truth = sm.truth(hMo);
         const auto im = scene.renderStereo(rig, hMo, 0);
         IL = im.left;
         IR = im.right;
         source = "simulator, target " + scene.target().info.code + " (" + scene.target().info.name + ")";
       }
-      pm::PhotoModelTracker tracker(rig, model, tp);
+      pm::tracker::PhotoModelTracker tracker(rig, model, tp);
       tracker.initialize();
-      pm::DetectionParams dp;
+      pm::tracker::DetectionParams dp;
       dp.maxTimeS = maxTimeS;
       dp.patience = patience;
-      const pm::Detection d = pm::detectStatic(tracker, IL, IR, dp);
+      const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, IL, IR, dp);
       pm::report::DetectionOutputs o;
       o.source = source;
       o.detection = d;
@@ -113,7 +113,7 @@ int main(int argc, char **argv)
       o.haveTruth = haveTruth;
       if (haveTruth) {
         o.truth = truth;
-        o.peak = pm::nearestFitnessPeak(tracker.fitness(), truth, tp.space);
+        o.peak = pm::tracker::nearestFitnessPeak(tracker.fitness(), truth, tp.space);
         o.fitnessAtPeak = tracker.fitness().evaluate(o.peak);
       }
       const nlohmann::json s = nlohmann::json::parse(pm::report::writeDetection(dir, o, tracker.fitness(), IL, IR));
@@ -138,7 +138,7 @@ int main(int argc, char **argv)
       nlohmann::json s;
       try {
         s = runOne(info.code, files.dir() + "/" + info.code);
-      } catch (const pm::Error &err) {
+      } catch (const pm::core::Error &err) {
         // A target whose model cannot be made (a stereo model refused for want of texture) is a
         // row of the table, not the end of the run.
         md << "| " << info.code << " " << info.name << " | model refused: " << err.what() << " ||||||||||||\n";

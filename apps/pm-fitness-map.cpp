@@ -34,7 +34,7 @@ int main(int argc, char **argv)
   bool quiet = false;
   pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
-  pm::FitnessParams fp;
+  pm::core::FitnessParams fp;
   double posStep = 1, epsStep = 0.01, reliefScale = 1;
   app.add_option("--out", out, "output folder (created if missing)")->required();
   auto *optTarget = app.add_option("--target", target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
@@ -66,21 +66,21 @@ int main(int argc, char **argv)
 
   return pm::app::run(app, argc, argv, [&] {
     const auto v = pm::app::parseNumbers(pose, 6, "--pose");
-    const pm::Phi ref{v[0], v[1], v[2], v[3], v[4], v[5]};
-    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(ref);
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::core::Phi ref{v[0], v[1], v[2], v[3], v[4], v[5]};
+    const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(ref);
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
 
     // One experiment: the four maps of one stereo pair and model, into \e dir.
     auto runOne = [&](const std::string &code, const std::string &dir, bool silent) {
-      pm::PhotoModel model;
+      pm::core::PhotoModel model;
       vpImage<vpRGBa> IL, IR;
-      pm::Phi truth = ref;
+      pm::core::Phi truth = ref;
       std::string source;
       if (code.empty()) {
         IL = pm::io::readColorImage(left);
         IR = pm::io::readColorImage(right);
         if (IL.getWidth() != IR.getWidth() || IL.getHeight() != IR.getHeight())
-          throw pm::Error("the left image '" + left + "' and the right image '" + right + "' differ in size (" +
+          throw pm::core::Error("the left image '" + left + "' and the right image '" + right + "' differ in size (" +
                           std::to_string(IL.getWidth()) + "x" + std::to_string(IL.getHeight()) + " and " +
                           std::to_string(IR.getWidth()) + "x" + std::to_string(IR.getHeight()) + ")");
         model = pm::io::loadPhotoModel(modelPath);
@@ -98,15 +98,15 @@ int main(int argc, char **argv)
         IR = im.right;
         source = "simulator, target " + scene.target().info.code + " (" + scene.target().info.name + ")";
       }
-      pm::StereoFitness fit(rig, model, fp);
+      pm::core::StereoFitness fit(rig, model, fp);
       fit.setImages(IL, IR);
-      const std::vector<pm::FitnessMapSpec> specs = pm::paperFitnessMaps(posStep, epsStep);
+      const std::vector<pm::core::FitnessMapSpec> specs = pm::core::paperFitnessMaps(posStep, epsStep);
       pm::app::Progress progress("fitness maps", specs.size(), silent);
       const pm::report::FitnessMapsResult r =
           pm::report::writeFitnessMaps(dir, fit, model.size(), truth, specs, source, IL, IR, [&] { progress.step(); });
       progress.finish();
       if (profiles && model.hasContours()) { // beside the maps, in the same folder
-        pm::PreciseStage precise(rig, model);
+        pm::precise::PreciseStage precise(rig, model);
         precise.setImages(IL, IR);
         pm::io::StagedFiles more(dir);
         const pm::report::ProfileResult pr = pm::report::writeObjectiveProfiles(more, fit, precise, truth, 6.0, 0.25);
@@ -114,7 +114,7 @@ int main(int argc, char **argv)
         if (!silent)
           std::cout << "profiles along turns at the reference pose:\n" << pr.text;
       } else if (profiles) {
-        throw pm::Error("--profiles needs a model with outlines (an all-around model, version 5)");
+        throw pm::core::Error("--profiles needs a model with outlines (an all-around model, version 5)");
       }
       if (!silent)
         std::cout << "fitness maps of " << source << " (" << model.size() << " model points)\n"

@@ -44,11 +44,11 @@ int main(int argc, char **argv)
   std::string leftBg, rightBg, leftPhoto, rightPhoto, leftSource, rightSource;
   long backgroundFrame = 0, photoFrame = -1;
   bool stereo = false;
-  pm::StereoModelParams smp;
+  pm::model::StereoModelParams smp;
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   double distanceMm = 500, widthMm = 150, depthMm = 20;
   bool quiet = false;
-  pm::PhotoModelParams mp;
+  pm::model::PhotoModelParams mp;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)")->required();
   auto *optTarget = app.add_option("--target", target, "simulated target C01..C12 or R1..R3 (used when no photos are given)");
@@ -108,8 +108,8 @@ int main(int argc, char **argv)
   app.add_flag("--quiet", quiet, "print nothing on success");
   std::string viewsDir;
   bool allAround = false;
-  pm::PassPlan plan;
-  pm::AllAroundParams ap;
+  pm::model::PassPlan plan;
+  pm::model::AllAroundParams ap;
   auto *optViews = app.add_option("--views", viewsDir, "all-around: a pass of the hand around the target, as a views folder "
                                   "(left_%02d.png, right_%02d.png, background_left_%02d.png, background_right_%02d.png, "
                                   "pose_fPh_%02d.yaml for k = 0, 1, ...), taken by --rig");
@@ -135,12 +135,12 @@ int main(int argc, char **argv)
     allAround = allAround || (viewsDir.empty() && background.empty() && leftBg.empty() && leftSource.empty() && texture.empty() &&
                               !stereo && !flat);
     if (allAround || !viewsDir.empty()) {
-      const pm::StereoRig rig = pm::io::loadRig(rigPath);
+      const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
       std::string source;
       if (!viewsDir.empty()) {
-        const std::vector<pm::PassView> pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
+        const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
         source = "views " + viewsDir;
-        const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, ap);
+        const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, ap);
         pm::io::writeAllAroundModel(b, pass, rig, out, source, false);
         if (!quiet)
           std::cout << pm::report::describeAllAroundModel(b, source, out, false) << std::flush;
@@ -152,7 +152,7 @@ int main(int argc, char **argv)
       pm::robot::SteppedArm arm(pm::robot::makeArmModel(robotName));
       const pm::lab::LabPass lp = pm::lab::runLabPass(scene, rig, plan, arm, vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), ap.backdropHueDeg < 0);
       source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), " + arm.model().title() + " pass";
-      const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, lp.views, ap);
+      const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, lp.views, ap);
       const pm::lab::SurfaceTruth truth = pm::lab::checkSurface(scene, b, lp.fMo.inverse() * b.fMm, rig.left.cam);
       pm::io::writeAllAroundModel(b, lp.views, rig, out, source, true, pm::lab::surfaceTruthJson(truth));
       if (!quiet)
@@ -160,7 +160,7 @@ int main(int argc, char **argv)
       return 0;
     }
     if (!leftBg.empty() || !leftSource.empty()) {
-      const pm::StereoRig rig = pm::io::loadRig(rigPath);
+      const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
       pm::capture::ModelPairs pairs;
       if (!leftSource.empty()) {
         pm::capture::VideoCaptureSource src(leftSource, rightSource);
@@ -176,7 +176,7 @@ int main(int argc, char **argv)
       o = pm::lab::stereoModelFromPhotos(rig, pairs, smp, "stereo photos " + leftPhoto + " + " + rightPhoto);
     } else if (!background.empty()) {
       vpImage<vpRGBa> bg = pm::io::readColorImage(background), tg = pm::io::readColorImage(photo);
-      pm::RigCamera cam;
+      pm::core::RigCamera cam;
       if (intrinsics.empty()) {
         cam = pm::io::loadRig(rigPath).left;
       } else if (bg.getWidth() == tg.getWidth() && bg.getHeight() == tg.getHeight()) { // else flatModelFromPhotos says so
@@ -185,7 +185,7 @@ int main(int argc, char **argv)
       }
       o = pm::lab::flatModelFromPhotos(std::move(bg), std::move(tg), cam, distanceMm, mp, background, photo);
     } else {
-      const pm::StereoRig rig = pm::io::loadRig(rigPath);
+      const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
       const pm::sim::TargetShape shape =
           texture.empty() ? pm::sim::makeTarget(target) : pm::sim::targetFromImage(pm::io::readColorImage(texture), widthMm, depthMm, texture);
       const std::string source = texture.empty() ? "simulator, target " + shape.info.code + " (" + shape.info.name + ")"

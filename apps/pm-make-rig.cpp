@@ -43,11 +43,11 @@ int main(int argc, char **argv)
   return pm::app::run(app, argc, argv, [&] {
     vpCameraParameters cam;
     cam.initPersProjWithoutDistortion(px, py, u0, v0);
-    const double toe = std::isnan(toeInDeg) ? pm::StereoRig::toeInFor(baselineMm * 1e-3, convergeMm * 1e-3)
+    const double toe = std::isnan(toeInDeg) ? pm::core::StereoRig::toeInFor(baselineMm * 1e-3, convergeMm * 1e-3)
                                             : toeInDeg * M_PI / 180.0;
     if (std::isnan(toeInDeg) && !(convergeMm > 0))
-      throw pm::Error("--converge-mm must be positive");
-    pm::StereoRig rig = pm::StereoRig::symmetric(cam, width, height, baselineMm * 1e-3, toe);
+      throw pm::core::Error("--converge-mm must be positive");
+    pm::core::StereoRig rig = pm::core::StereoRig::symmetric(cam, width, height, baselineMm * 1e-3, toe);
     rig.left.distortion.coefficients = rig.right.distortion.coefficients = lens;
     rig.validate();
     pm::io::StagedFiles files(out); // creates the folder

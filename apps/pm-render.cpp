@@ -50,8 +50,8 @@ int main(int argc, char **argv)
 
   return pm::app::run(app, argc, argv, [&] {
     const auto v = pm::app::parseNumbers(pose, 6, "--pose");
-    const pm::Phi phi{v[0], v[1], v[2], v[3], v[4], v[5]};
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::core::Phi phi{v[0], v[1], v[2], v[3], v[4], v[5]};
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
 
     std::vector<std::string> codes;
     if (all)

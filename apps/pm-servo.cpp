@@ -58,7 +58,7 @@ int main(int argc, char **argv)
   int overlayEvery = 150, steps = 0;
   bool quiet = false, noVideo = false, freqSweep = false;
   pm::lab::LoopParams lp;
-  pm::ServoParams servo;
+  pm::servo::ServoParams servo;
   pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
   app.add_option("--out", out, "output folder (created if missing)");
@@ -103,20 +103,20 @@ int main(int argc, char **argv)
   pm::app::addSceneOptions(app, sp);
   pm::app::DistractorChoice distractor;
   pm::app::addDistractorOptions(app, distractor);
-  pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
+  pm::app::TrackerOptions trackerOptions(app, pm::tracker::TrackerParams());
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::TrackerParams tp = trackerOptions.resolve();
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::tracker::TrackerParams tp = trackerOptions.resolve();
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
     lp.fps = fps;
     lab.arm = lp.arm; // the same arm makes the pass and servos
     pm::sim::Scene scene(pm::sim::makeTarget(target), sp);
     distractor.apply(scene);
     const auto sm = pm::app::makeLabModel(scene, rig, lab);
     const int ax = axisIndex(axis);
-    const pm::Phi phi0{0, 0, 500, 0, 0, 0};
-    std::vector<pm::Phi> waypoints;
+    const pm::core::Phi phi0{0, 0, 500, 0, 0, 0};
+    std::vector<pm::core::Phi> waypoints;
     if (motion == "steps") {
       waypoints = pm::io::readWaypoints(stepsPath, steps);
     }
@@ -178,8 +178,8 @@ int main(int argc, char **argv)
     try {
       recorder = std::make_unique<pm::lab::RunRecorder>(noVideo ? "" : files.stage("servo.avi"), fps, rig.left.width, rig.left.height,
                                                         overlayEvery, lp.oracle);
-    } catch (const pm::Error &) {
-      throw pm::Error("cannot write the video '" + files.finalPath("servo.avi") + "' (OpenCV's MJPG writer failed)");
+    } catch (const pm::core::Error &) {
+      throw pm::core::Error("cannot write the video '" + files.finalPath("servo.avi") + "' (OpenCV's MJPG writer failed)");
     }
     for (long k = 0; k < nFrames; ++k) {
       if (k * 10 / nFrames >= static_cast<long>(memoryMb.size()))
@@ -196,7 +196,7 @@ int main(int argc, char **argv)
     recorder->finish();
     csv.close();
     if (!csv)
-      throw pm::Error("cannot write " + files.finalPath("frames.csv"));
+      throw pm::core::Error("cannot write " + files.finalPath("frames.csv"));
 
     // Figures (the plotted errors are the maxima over the frames each sample stands for).
     pm::io::writeImage(pm::lab::drawRunErrors(log, loop.arm().model().title() + " following " + scene.target().info.name +

@@ -82,15 +82,15 @@ int main(int argc, char **argv)
   pm::app::addLabModelOptions(app, labModel);
   pm::app::addModelOptions(app, labModel.photo);
   pm::app::addSceneOptions(app, sp);
-  pm::app::TrackerOptions trackerOptions(app, pm::TrackerParams());
+  pm::app::TrackerOptions trackerOptions(app, pm::tracker::TrackerParams());
   app.add_flag("--save-pairs", savePairs, "also write every stereo pair tracked, left_%04d.png and right_%04d.png (and, "
                                           "on the simulator, its truth in truth.csv): a recording that --left, --right and "
                                           "--truth replay");
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::TrackerParams tp = trackerOptions.resolve();
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::tracker::TrackerParams tp = trackerOptions.resolve();
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
     const bool live = !leftSource.empty();
     const bool recorded = !leftImages.empty() || live;
     if (pm::app::isImagePattern(leftImages)) // check both patterns before anything else
@@ -100,12 +100,12 @@ int main(int argc, char **argv)
     const long maxFrames = durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0;
 
     // The pairs: recorded, live or simulated, and the truth of each frame where it is known.
-    pm::PhotoModel model;
+    pm::core::PhotoModel model;
     std::unique_ptr<pm::sim::Scene> scene;
     std::unique_ptr<pm::sim::Trajectory> trajectory;
     std::unique_ptr<pm::capture::StereoSource> input;
     const pm::lab::LabSequence *lab = nullptr;
-    std::map<long, pm::Phi> truthByFrame;
+    std::map<long, pm::core::Phi> truthByFrame;
     long nFrames = 0;
     std::string source;
     if (recorded) {
@@ -142,7 +142,7 @@ int main(int argc, char **argv)
       source = input->describe() + ", trajectory " + std::filesystem::path(trajectoryPath).filename().string();
     }
 
-    pm::PhotoModelTracker tracker(rig, model, tp);
+    pm::tracker::PhotoModelTracker tracker(rig, model, tp);
     tracker.initialize(); // no initial pose: a random population
     pm::io::StagedFiles files(out);
     std::ofstream truthCsv;
@@ -167,7 +167,7 @@ int main(int argc, char **argv)
         progress.step();
       }
       if (sf.left.getWidth() != rig.left.width || sf.left.getHeight() != rig.left.height)
-        throw pm::Error("the cameras deliver " + std::to_string(sf.left.getWidth()) + "x" + std::to_string(sf.left.getHeight()) +
+        throw pm::core::Error("the cameras deliver " + std::to_string(sf.left.getWidth()) + "x" + std::to_string(sf.left.getHeight()) +
                         " images but the rig's are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
       pm::lab::TrackedFrame f;
       f.t = sf.timeS;
@@ -190,7 +190,7 @@ int main(int argc, char **argv)
       rec.push_back(f);
       if (display) {
         std::ostringstream status;
-        status << std::fixed << std::setprecision(2) << pm::toString(f.result.state) << ", q " << f.result.quality << ", "
+        status << std::fixed << std::setprecision(2) << pm::tracker::toString(f.result.state) << ", q " << f.result.quality << ", "
                << std::setprecision(1) << f.result.computeMs << " ms, frame " << k;
         view.show(sf.left, sf.right, tracker.pointScores(0), tracker.pointScores(1), status.str());
       }
@@ -204,11 +204,11 @@ int main(int argc, char **argv)
     progress.finish();
     const pm::capture::SourceStats &st = input->stats();
     if (rec.empty())
-      throw pm::Error("no frame of the sequence could be read (" + std::to_string(st.skipped) + " unreadable)");
+      throw pm::core::Error("no frame of the sequence could be read (" + std::to_string(st.skipped) + " unreadable)");
     const pm::lab::TrackingReport report = pm::lab::reportTracking(rec, fps, pm::lab::table2Goals());
 
     if (truthCsv.is_open() && !truthCsv.flush())
-      throw pm::Error("cannot write " + files.finalPath("truth.csv"));
+      throw pm::core::Error("cannot write " + files.finalPath("truth.csv"));
     truthCsv.close();
     {
       std::ofstream csv(files.stage("frames.csv"));
@@ -230,7 +230,7 @@ int main(int argc, char **argv)
     info.fps = fps;
     info.stats = st;
     info.live = live;
-    info.trackerJson = pm::trackerConfigToJson(tp);
+    info.trackerJson = pm::tracker::trackerConfigToJson(tp);
     info.budget = tp.budgetEvaluations > 0 ? std::to_string(tp.budgetEvaluations) + " evaluations" : std::to_string(tp.budgetMs) + " ms";
     pm::io::writeTextFile(files.stage("summary.json"), pm::lab::trackingSummaryJson(report, info));
     files.commit();

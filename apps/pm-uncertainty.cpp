@@ -27,7 +27,7 @@ pm::compare::UncertaintyRun parseRun(const std::string &s, long budget)
     if (colon != std::string::npos)
       r.seed = std::stoull(s.substr(colon + 1));
   } catch (const std::exception &) {
-    throw pm::Error("run '" + s + "': expected TOY:SEED (e.g. C12:1)");
+    throw pm::core::Error("run '" + s + "': expected TOY:SEED (e.g. C12:1)");
   }
   r.budget = budget;
   return r;
@@ -60,7 +60,7 @@ int main(int argc, char **argv)
   app.add_flag("--quiet", quiet, "no progress, no table on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
     std::vector<pm::compare::UncertaintyRun> runs;
     for (const auto &s : fitRuns)
       runs.push_back(parseRun(s, budget));
@@ -72,7 +72,7 @@ int main(int argc, char **argv)
     for (const auto &r : runs)
       samples.push_back(pm::compare::collectUncertaintySamples(rig, r, [&] { progress.step(); }));
     progress.finish();
-    pm::UncertaintyModel model;
+    pm::precise::UncertaintyModel model;
     if (fit)
       model = pm::compare::fitUncertainty({samples.begin(), samples.begin() + static_cast<long>(fitRuns.size())});
 
@@ -88,7 +88,7 @@ int main(int argc, char **argv)
       panels[a] = {kAxes[a], "% within", {}, 0, {1.0}};
     for (std::size_t i = 0; i < runs.size(); ++i) {
       for (const auto &s : samples[i]) {
-        const pm::PoseUncertainty u = model.uncertainty(s.lineSigma, s.residualPx);
+        const pm::precise::PoseUncertainty u = model.uncertainty(s.lineSigma, s.residualPx);
         csv << i << "," << runs[i].target << "," << runs[i].seed << "," << s.frame << "," << s.residualPx;
         for (std::size_t a = 0; a < 6; ++a)
           csv << "," << s.error[a] << "," << s.lineSigma[a] << "," << (a < 3 ? u.sigmaMm[a] : u.sigmaDeg[a - 3]);
@@ -115,7 +115,7 @@ int main(int argc, char **argv)
       p.series.push_back(gauss);
     csv.close();
     if (!csv)
-      throw pm::Error("cannot write samples.csv");
+      throw pm::core::Error("cannot write samples.csv");
     pm::io::writeImage(pm::report::drawTimePlots(panels, 3, "Share of true errors within m reported sigmas (black: a Gaussian, 68 % at m = 1)", "m (sigmas)", 560),
                        files.stage("calibration.png"));
     const nlohmann::json summary{{"model", {{"scale", model.scale}, {"floor", model.floor}, {"fitted", fit}}},

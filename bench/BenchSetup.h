@@ -15,18 +15,18 @@ namespace pm::bench {
 //! The C12 crab at the true pose, its photo-model and the stereo pair, made once.
 struct Setup
 {
-  pm::StereoRig rig;
-  pm::PhotoModel model, model1000, model1000Depth;
+  pm::core::StereoRig rig;
+  pm::core::PhotoModel model, model1000, model1000Depth;
   pm::sim::StereoImages images;
-  pm::Phi truth;        //!< the model's pose (what the tracker estimates) ...
+  pm::core::Phi truth;        //!< the model's pose (what the tracker estimates) ...
   vpHomogeneousMatrix hMo; //!< ... of the toy at this pose
 
-  Setup(); //!< builds everything (throws pm::Error)
+  Setup(); //!< builds everything (throws pm::core::Error)
 };
 
 //! The set-up, made on first use (pm-bench's main calls it before timing).
 const Setup &setup();
 //! Poses around the truth, as a GA population sees them.
-std::vector<pm::Phi> poses(std::size_t n);
+std::vector<pm::core::Phi> poses(std::size_t n);
 
 } // namespace pm::bench

@@ -27,10 +27,10 @@ using pm::bench::poses;
 using pm::bench::Setup;
 using pm::bench::setup;
 
-void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scalar, bool smooth = false)
+void runFitness(benchmark::State &state, const pm::core::PhotoModel &model, bool scalar, bool smooth = false)
 {
-  pm::StereoFitness::forceScalar(scalar);
-  pm::StereoFitness fit(setup().rig, model);
+  pm::core::StereoFitness::forceScalar(scalar);
+  pm::core::StereoFitness fit(setup().rig, model);
   fit.setImages(setup().images.left, setup().images.right);
   const auto ps = poses(256);
   std::size_t i = 0;
@@ -39,22 +39,22 @@ void runFitness(benchmark::State &state, const pm::PhotoModel &model, bool scala
     sink += smooth ? fit.evaluateSmooth(ps[i++ & 255]) : fit.evaluate(ps[i++ & 255]);
     benchmark::DoNotOptimize(sink);
   }
-  pm::StereoFitness::forceScalar(false);
+  pm::core::StereoFitness::forceScalar(false);
   state.SetItemsProcessed(state.iterations());
   state.counters["points"] = static_cast<double>(model.size());
   state.counters["stereo_evals_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["ns_per_point"] = benchmark::Counter(static_cast<double>(state.iterations() * model.size() * 2),
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(smooth ? "smooth (bilinear, scalar)" : scalar ? "scalar" : pm::StereoFitness::kernelName());
+  state.SetLabel(smooth ? "smooth (bilinear, scalar)" : scalar ? "scalar" : pm::core::StereoFitness::kernelName());
 }
 
 void Fitness_DefaultModel(benchmark::State &s) { runFitness(s, setup().model, false); }
 
 //! One RM-GA generation's batch (18 children) of the default model, on two cores through
-//! pm::BatchPool as the tracker runs it; wall time, to compare with 18 x Fitness_DefaultModel.
+//! pm::core::BatchPool as the tracker runs it; wall time, to compare with 18 x Fitness_DefaultModel.
 void Fitness_DefaultModel_GenerationBatch(benchmark::State &state)
 {
-  pm::StereoFitness fit(setup().rig, setup().model);
+  pm::core::StereoFitness fit(setup().rig, setup().model);
   fit.setImages(setup().images.left, setup().images.right);
   const auto ps = poses(18);
   std::vector<double> out(ps.size());
@@ -65,7 +65,7 @@ void Fitness_DefaultModel_GenerationBatch(benchmark::State &state)
   state.SetItemsProcessed(state.iterations() * static_cast<long>(ps.size()));
   state.counters["stereo_evals_per_s"] =
       benchmark::Counter(static_cast<double>(state.iterations() * static_cast<long>(ps.size())), benchmark::Counter::kIsRate);
-  state.SetLabel(pm::BatchPool::shared().hasHelper() ? "two cores" : "one core");
+  state.SetLabel(pm::core::BatchPool::shared().hasHelper() ? "two cores" : "one core");
 }
 /*!
   The same batch scored on the first quarter of the model's points only (StereoFitness::evaluate
@@ -74,7 +74,7 @@ void Fitness_DefaultModel_GenerationBatch(benchmark::State &state)
 */
 void Fitness_DefaultModel_GenerationBatch_Coarse(benchmark::State &state)
 {
-  pm::StereoFitness fit(setup().rig, setup().model);
+  pm::core::StereoFitness fit(setup().rig, setup().model);
   fit.setImages(setup().images.left, setup().images.right);
   const auto ps = poses(18);
   std::vector<double> out(ps.size()), cost(ps.size());
@@ -88,25 +88,25 @@ void Fitness_DefaultModel_GenerationBatch_Coarse(benchmark::State &state)
 //! RM-GA's own work per scored pose (selection, crossover, mutation, decoding, survival), on a fitness that costs nothing.
 void RmGa_OwnWork(benchmark::State &state)
 {
-  struct Free : pm::FitnessFunction
+  struct Free : pm::rmga::FitnessFunction
   {
-    void evaluate(const pm::Phi *p, std::size_t n, double *f) override
+    void evaluate(const pm::core::Phi *p, std::size_t n, double *f) override
     {
       for (std::size_t i = 0; i < n; ++i)
         f[i] = -std::fabs(p[i].x) - std::fabs(p[i].z - 500);
     }
   } f;
-  pm::RmGa ga{pm::SearchSpace(), pm::RmGaParams()};
+  pm::rmga::RmGa ga{pm::rmga::SearchSpace(), pm::rmga::RmGaParams()};
   long poses = 0;
   for (auto _ : state)
-    poses += ga.evolve(f, pm::FrameBudget::evals(1000)).candidates;
+    poses += ga.evolve(f, pm::rmga::FrameBudget::evals(1000)).candidates;
   state.SetItemsProcessed(poses);
   state.counters["ns_per_pose"] = benchmark::Counter(static_cast<double>(poses), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 //! The smooth ascent's evaluation of the default model: the smooth score and its gradient (two cores), with and without the metric.
 void smoothGradient(benchmark::State &state, bool metric)
 {
-  pm::StereoFitness fit(setup().rig, setup().model);
+  pm::core::StereoFitness fit(setup().rig, setup().model);
   fit.setImages(setup().images.left, setup().images.right);
   const auto ps = poses(256);
   std::size_t i = 0;
@@ -135,8 +135,8 @@ void Fitness_1000Points_Depth_Smooth(benchmark::State &s) { runFitness(s, setup(
 void Fitness_1000Points_ViSPTypes(benchmark::State &state)
 {
   const Setup &S = setup();
-  const pm::PhotoModel &m = S.model1000;
-  pm::StereoFitness fit(S.rig, m); // for its hue planes only
+  const pm::core::PhotoModel &m = S.model1000;
+  pm::core::StereoFitness fit(S.rig, m); // for its hue planes only
   fit.setImages(S.images.left, S.images.right);
   const vpHomogeneousMatrix cMh[2] = {S.rig.left.cMh(), S.rig.right.cMh()};
   const vpCameraParameters cams[2] = {S.rig.left.cam, S.rig.right.cam};
@@ -145,15 +145,15 @@ void Fitness_1000Points_ViSPTypes(benchmark::State &state)
   std::size_t i = 0;
   double sink = 0;
   for (auto _ : state) {
-    const pm::Phi &phi = ps[i++ & 255];
-    vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(phi);
+    const pm::core::Phi &phi = ps[i++ & 255];
+    vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(phi);
     double F = 0;
     for (int c = 0; c < 2; ++c) {
       const vpHomogeneousMatrix cMo = cMh[c] * hMo;
-      const pm::HuePlane &plane = fit.huePlane(c);
+      const pm::core::HuePlane &plane = fit.huePlane(c);
       double sum = 0;
       for (std::size_t k = 0; k < m.size(); ++k) {
-        const pm::ModelPoint &p = k < m.inner.size() ? m.inner[k] : m.outer[k - m.inner.size()];
+        const pm::core::ModelPoint &p = k < m.inner.size() ? m.inner[k] : m.outer[k - m.inner.size()];
         vpColVector X(4);
         X[0] = p.x * 1e-3;
         X[1] = p.y * 1e-3;
@@ -167,9 +167,9 @@ void Fitness_1000Points_ViSPTypes(benchmark::State &state)
           continue;
         const float h = plane.at(static_cast<unsigned>(ui), static_cast<unsigned>(vi)) / 10.f;
         if (k < m.inner.size())
-          sum += pm::hueDistance(h, p.hue) <= 30 ? 2.0 : (pm::hueDistance(h, hB) <= 30 ? -0.005 : 0.0);
+          sum += pm::core::hueDistance(h, p.hue) <= 30 ? 2.0 : (pm::core::hueDistance(h, hB) <= 30 ? -0.005 : 0.0);
         else
-          sum += pm::hueDistance(h, hB) <= 20 ? 0.1 : -0.5;
+          sum += pm::core::hueDistance(h, hB) <= 20 ? 0.1 : -0.5;
       }
       F += 0.5 * sum / static_cast<double>(m.size());
     }
@@ -185,12 +185,12 @@ void Fitness_1000Points_ViSPTypes(benchmark::State &state)
 //! The paper's four fitness maps (x-y, y-z, eps1-eps2, eps2-eps3) of the default model, on all cores.
 void FitnessMaps_FourGrids(benchmark::State &state)
 {
-  pm::StereoFitness fit(setup().rig, setup().model);
+  pm::core::StereoFitness fit(setup().rig, setup().model);
   fit.setImages(setup().images.left, setup().images.right);
   std::size_t evals = 0;
   for (auto _ : state)
-    for (const auto &spec : pm::paperFitnessMaps()) {
-      const pm::FitnessMap m = pm::computeFitnessMap(fit, setup().truth, spec);
+    for (const auto &spec : pm::core::paperFitnessMaps()) {
+      const pm::core::FitnessMap m = pm::core::computeFitnessMap(fit, setup().truth, spec);
       evals += m.values.size();
       benchmark::DoNotOptimize(m.maxFitness);
     }

@@ -30,7 +30,7 @@ using pm::bench::setup;
 //! Hue planes of a stereo pair: ours against ViSP's vpImageConvert::RGBaToHSV (double precision).
 void Hue_StereoPair_Ours(benchmark::State &state)
 {
-  pm::HuePlane a, b;
+  pm::core::HuePlane a, b;
   for (auto _ : state) {
     a.compute(setup().images.left);
     b.compute(setup().images.right);
@@ -62,14 +62,14 @@ void hueAsTracked(benchmark::State &state, bool windows, bool fromMemory = false
 {
   // fromMemory: a new frame each time, as a camera delivers them (40 copies, more than the caches hold).
   std::vector<pm::sim::StereoImages> frames(fromMemory ? 40 : 1, setup().images);
-  pm::StereoFitness fit(setup().rig, setup().model);
-  const int margin = pm::TrackerParams().steadyHueMarginPx;
-  std::array<pm::PixelRect, 2> w;
+  pm::core::StereoFitness fit(setup().rig, setup().model);
+  const int margin = pm::tracker::TrackerParams().steadyHueMarginPx;
+  std::array<pm::core::PixelRect, 2> w;
   long pixels = 0;
   for (int cam = 0; cam < 2; ++cam) {
-    const pm::StereoFitness::Camera &c = fit.camera(cam);
-    w[static_cast<std::size_t>(cam)] = windows ? fit.footprint(setup().truth, cam).grown(margin, c.width, c.height) : pm::PixelRect{0, 0, c.width, c.height};
-    const pm::PixelRect &r = w[static_cast<std::size_t>(cam)];
+    const pm::core::StereoFitness::Camera &c = fit.camera(cam);
+    w[static_cast<std::size_t>(cam)] = windows ? fit.footprint(setup().truth, cam).grown(margin, c.width, c.height) : pm::core::PixelRect{0, 0, c.width, c.height};
+    const pm::core::PixelRect &r = w[static_cast<std::size_t>(cam)];
     pixels += static_cast<long>(r.u1 - r.u0) * (r.v1 - r.v0);
   }
   std::size_t k = 0;
@@ -94,7 +94,7 @@ void Hue_PerSample(benchmark::State &state)
   unsigned acc = 0;
   for (auto _ : state) {
     for (int j = 0; j < 1000; ++j, ++k)
-      acc += pm::hueDeci(I.bitmap[(k * 2654435761u) % (640 * 480)], 0.f);
+      acc += pm::core::hueDeci(I.bitmap[(k * 2654435761u) % (640 * 480)], 0.f);
     benchmark::DoNotOptimize(acc);
   }
   state.SetItemsProcessed(state.iterations() * 1000);
@@ -103,9 +103,9 @@ void Hue_PerSample(benchmark::State &state)
 //! Hue planes of a stereo pair read through a lens: the raw planes, then one gather per pixel through the UndistortMap.
 void Hue_StereoPair_Lens(benchmark::State &state)
 {
-  const pm::StereoRig rig = pm::lab::labRigWithLens(pm::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
-  const pm::UndistortMap ml(rig.left), mr(rig.right);
-  pm::HuePlane a, b;
+  const pm::core::StereoRig rig = pm::lab::labRigWithLens(pm::core::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
+  const pm::core::UndistortMap ml(rig.left), mr(rig.right);
+  pm::core::HuePlane a, b;
   for (auto _ : state) {
     a.compute(setup().images.left, 0.f, ml);
     b.compute(setup().images.right, 0.f, mr);
@@ -123,10 +123,10 @@ void Hue_StereoPair_Lens(benchmark::State &state)
 template <bool kLens>
 void projectPoints(benchmark::State &state)
 {
-  const pm::PhotoModel &m = setup().model1000;
+  const pm::core::PhotoModel &m = setup().model1000;
   std::vector<float> x, y, z;
   for (const auto *set : {&m.inner, &m.outer})
-    for (const pm::ModelPoint &p : *set) {
+    for (const pm::core::ModelPoint &p : *set) {
       x.push_back(p.x);
       y.push_back(p.y);
       z.push_back(500.f + p.z);

@@ -20,7 +20,7 @@ struct AllAround
   pm::sim::SimulatedPhotoModel model = pm::lab::makeLabModel(scene, setup().rig, pm::lab::LabModelChoice());
   vpHomogeneousMatrix hMo = vpHomogeneousMatrix(0.01, -0.005, 0.51, vpMath::rad(15), vpMath::rad(-10), 0);
   pm::sim::StereoImages images = scene.renderStereo(setup().rig, hMo, 0);
-  pm::Phi truth = model.truth(hMo);
+  pm::core::Phi truth = model.truth(hMo);
 };
 const AllAround &allAround()
 {
@@ -35,16 +35,16 @@ const AllAround &allAround()
 void preciseRefine(benchmark::State &state, bool interior)
 {
   const AllAround &a = allAround();
-  pm::PreciseParams p;
+  pm::precise::PreciseParams p;
   if (!interior)
     p.interiorPoints = 0;
-  pm::PreciseStage precise(setup().rig, a.model.build.model, p);
+  pm::precise::PreciseStage precise(setup().rig, a.model.build.model, p);
   precise.setImages(a.images.left, a.images.right);
   const double twist[6] = {0.6, -0.5, 0.6, 0.01, -0.01, 0.008};
-  const pm::Phi start = pm::applyTwist(a.truth, twist);
+  const pm::core::Phi start = pm::core::applyTwist(a.truth, twist);
   std::size_t lines = 0;
   for (auto _ : state) {
-    const pm::PreciseResult r = precise.refine(start);
+    const pm::precise::PreciseResult r = precise.refine(start);
     lines = r.lines[0] + r.lines[1];
     benchmark::DoNotOptimize(r.phi);
   }
@@ -58,14 +58,14 @@ void Precise_Refine_OutlineOnly(benchmark::State &s) { preciseRefine(s, false); 
 void allAroundFrame(benchmark::State &state, bool precise)
 {
   const AllAround &a = allAround();
-  pm::TrackerParams p;
+  pm::tracker::TrackerParams p;
   p.preciseStage = precise;
-  pm::PhotoModelTracker tracker(setup().rig, a.model.build.model, p);
-  tracker.initFromPose(pm::toHomogeneousMatrix(a.truth));
+  pm::tracker::PhotoModelTracker tracker(setup().rig, a.model.build.model, p);
+  tracker.initFromPose(pm::core::toHomogeneousMatrix(a.truth));
   for (int k = 0; k < 5; ++k) // a few frames: steady
     tracker.track(a.images.left, a.images.right);
   for (auto _ : state) {
-    const pm::TrackResult r = tracker.track(a.images.left, a.images.right);
+    const pm::tracker::TrackResult r = tracker.track(a.images.left, a.images.right);
     benchmark::DoNotOptimize(r.fitness);
   }
 }

@@ -37,7 +37,7 @@ using pm::bench::setup;
 */
 void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying, int hueMarginPx = -1, bool before = false)
 {
-  pm::TrackerParams p = pm::TrackerParams();
+  pm::tracker::TrackerParams p = pm::tracker::TrackerParams();
   p.steadyBudgetFraction = steadyFraction;
   if (hueMarginPx >= 0)
     p.steadyHueMarginPx = hueMarginPx;
@@ -46,8 +46,8 @@ void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying
     p.ga.refineEvaluations = 100;
     p.verifyEvaluations = 6000;
   }
-  pm::PhotoModelTracker tracker(setup().rig, setup().model, p);
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(setup().truth);
+  pm::tracker::PhotoModelTracker tracker(setup().rig, setup().model, p);
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(setup().truth);
   long evaluations = 0, frames = 0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -58,7 +58,7 @@ void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying
       tracker.initFromPose(hMo); // a verified lock: the timed frames track
     }
     state.ResumeTiming();
-    const pm::TrackResult r = tracker.track(setup().images.left, setup().images.right);
+    const pm::tracker::TrackResult r = tracker.track(setup().images.left, setup().images.right);
     evaluations += r.evaluations;
     ++frames;
     benchmark::DoNotOptimize(r.fitness);
@@ -66,9 +66,9 @@ void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying
   state.counters["evaluations"] = static_cast<double>(evaluations) / static_cast<double>(std::max<long>(1, frames));
 }
 void Tracker_Frame_Whole(benchmark::State &s) { trackerFrame(s, 1.0, false); }
-void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::TrackerParams().steadyBudgetFraction, false); }
+void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steadyBudgetFraction, false); }
 //! Its peer: the same steady frame with the hue of the whole images (TrackerParams::steadyHueMarginPx 0).
-void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::TrackerParams().steadyBudgetFraction, false, 0); }
+void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steadyBudgetFraction, false, 0); }
 void Tracker_Frame_Verifying(benchmark::State &s) { trackerFrame(s, 1.0, true); }
 //! The whole frame's peer: the budget of before issue 18 (1,900 evaluations, refinement 100), the rest as now.
 void Tracker_Frame_Before_1900Evals(benchmark::State &s) { trackerFrame(s, 1.0, false, -1, true); }

@@ -3,7 +3,7 @@
   \file FuzzFile.h
   Our loaders read files, libFuzzer hands out bytes: each fuzz target writes its input into a
   scratch file of its own process and calls the loader on that path. A loader may refuse any
-  input, but only with pm::Error: anything else escaping (another exception type, a sanitizer
+  input, but only with pm::core::Error: anything else escaping (another exception type, a sanitizer
   report, a crash, an allocation over libFuzzer's limit) is a finding.
 */
 #include <cstddef>
@@ -45,13 +45,13 @@ inline std::string writeScratch(const std::string &name, const std::string &text
   return writeScratch(name, reinterpret_cast<const std::uint8_t *>(text.data()), text.size());
 }
 
-//! Runs \e load: a pm::Error is a refusal, which is fine; anything else escapes, a finding.
+//! Runs \e load: a pm::core::Error is a refusal, which is fine; anything else escapes, a finding.
 template <class Load>
 void loadOrRefuse(Load &&load)
 {
   try {
     load();
-  } catch (const pm::Error &) {
+  } catch (const pm::core::Error &) {
   }
 }
 

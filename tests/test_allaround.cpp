@@ -36,9 +36,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const pm::StereoRig &rig()
+const pm::core::StereoRig &rig()
 {
-  static const pm::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  static const pm::core::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   return r;
 }
 
@@ -53,8 +53,8 @@ struct CrabPass
 {
   pm::sim::Scene scene{pm::sim::makeTarget("C12")};
   pm::robot::SteppedArm pa10{pm::robot::makeArmModel("pa10")};
-  pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::PassPlan(), pa10);
-  pm::AllAroundBuild build = pm::buildAllAroundModel(rig(), pass.views);
+  pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::model::PassPlan(), pa10);
+  pm::model::AllAroundBuild build = pm::model::buildAllAroundModel(rig(), pass.views);
   vpHomogeneousMatrix oMm = pass.fMo.inverse() * build.fMm;
 };
 const CrabPass &crab()
@@ -103,9 +103,9 @@ TEST(PoseFile, RefusesWhatIsNotAVpPoseVectorNamingTheFile)
 
 TEST(PassPlan, EveryPoseLooksAtThePivotFromItsRingAngle)
 {
-  pm::PassPlan plan;
-  const std::vector<pm::PassDirection> dirs = pm::passDirections(plan);
-  const std::vector<vpHomogeneousMatrix> poses = pm::planPass(plan);
+  pm::model::PassPlan plan;
+  const std::vector<pm::model::PassDirection> dirs = pm::model::passDirections(plan);
+  const std::vector<vpHomogeneousMatrix> poses = pm::model::planPass(plan);
   ASSERT_EQ(poses.size(), 16u);
   int ring[3] = {0, 0, 0};
   for (std::size_t k = 0; k < poses.size(); ++k) {
@@ -121,9 +121,9 @@ TEST(PassPlan, EveryPoseLooksAtThePivotFromItsRingAngle)
   EXPECT_EQ(ring[0], 1);
   EXPECT_EQ(ring[1], 5);  // 15 views in proportion 20 : 40
   EXPECT_EQ(ring[2], 10);
-  pm::PassPlan bad;
+  pm::model::PassPlan bad;
   bad.ringsDeg = {95};
-  EXPECT_NE(pm::test::errorOf([&] { (void)pm::planPass(bad); }).find("ring"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::planPass(bad); }).find("ring"), std::string::npos);
 }
 
 TEST(RobotPA10, InverseKinematicsReachesPosesAndRefusesTheUnreachable)
@@ -164,9 +164,9 @@ TEST(Silhouette, KeepsTheReliefToysAndDropsTheirCastShadows)
     scene.render(r, rig().left, hMo, 3, 4, bg, false);
     scene.render(r, rig().left, hMo, 3, 6, photo, true);
     for (int plain = 0; plain < 2; ++plain) { // against the background image, then the backdrop's hue alone
-    pm::SilhouetteStats st;
-    const vpImage<unsigned char> mask = plain ? pm::silhouetteOnBackdrop(photo, 205, pm::SilhouetteParams(), &st)
-                                              : pm::silhouette(photo, bg, pm::SilhouetteParams(), &st);
+    pm::model::SilhouetteStats st;
+    const vpImage<unsigned char> mask = plain ? pm::model::silhouetteOnBackdrop(photo, 205, pm::model::SilhouetteParams(), &st)
+                                              : pm::model::silhouette(photo, bg, pm::model::SilhouetteParams(), &st);
     long tp = 0, fp = 0, fn = 0, shadow = 0, shadowKept = 0;
     for (unsigned v = 0; v < mask.getHeight(); ++v)
       for (unsigned u = 0; u < mask.getWidth(); ++u) {
@@ -197,7 +197,7 @@ TEST(Silhouette, KeepsTheReliefToysAndDropsTheirCastShadows)
 TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)
 {
   const CrabPass &c = crab();
-  const pm::AllAroundBuild &b = c.build;
+  const pm::model::AllAroundBuild &b = c.build;
   EXPECT_EQ(b.nViews, 16u);
   EXPECT_EQ(b.nViewsUsed, 16u);
   EXPECT_GT(b.model.views.size(), 150u);
@@ -206,7 +206,7 @@ TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)
   // The hull contains the toy: every pass view's silhouette is covered by the hull's outline.
   for (std::size_t k = 0; k < c.pass.views.size(); k += 5) {
     vpImage<unsigned char> hull;
-    pm::drawSurface(b.surface, b.fMm.inverse() * c.pass.views[k].fMh * rig().left.hMc, rig().left.cam, rig().left.width,
+    pm::model::drawSurface(b.surface, b.fMm.inverse() * c.pass.views[k].fMh * rig().left.hMc, rig().left.cam, rig().left.width,
                     rig().left.height, &hull);
     long in = 0, covered = 0;
     for (unsigned i = 0; i < hull.getSize(); ++i)
@@ -221,23 +221,23 @@ TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)
   for (const vpHomogeneousMatrix &hMo :
        {vpHomogeneousMatrix(0.02, -0.01, 0.52, 0.436, 0, 0), vpHomogeneousMatrix(-0.01, 0.01, 0.5, 0, -0.436, 0.2)}) {
     const pm::sim::StereoImages im = scene.renderStereo(rig(), hMo, 0);
-    pm::TrackerParams p;
+    pm::tracker::TrackerParams p;
     p.budgetEvaluations = 3000;
     p.ga.population = 100;
     p.ga.restartGenerations = 30;
     p.ga.refineEvaluations = 200;
-    pm::PhotoModelTracker t(rig(), b.model, p);
+    pm::tracker::PhotoModelTracker t(rig(), b.model, p);
     ASSERT_TRUE(b.model.isAllAround());
     EXPECT_EQ(&t.tiltFilter(), &t.params().tiltFilterAllAround); // the lighter smoothing of a model that sees its tilt
     t.initialize();
-    pm::TrackResult r;
+    pm::tracker::TrackResult r;
     for (int k = 0; k < 40; ++k)
       r = t.track(im.left, im.right);
-    const vpHomogeneousMatrix truth = hMo * c.oMm, got = pm::toHomogeneousMatrix(r.phi);
+    const vpHomogeneousMatrix truth = hMo * c.oMm, got = pm::core::toHomogeneousMatrix(r.phi);
     const double dp = 1e3 * std::sqrt((got.getTranslationVector() - truth.getTranslationVector()).sumSquare());
     const double da = angleDeg(got.getRotationMatrix() * truth.getRotationMatrix().t());
     std::cout << "crab tilted: " << dp << " mm, " << da << " deg\n";
-    EXPECT_EQ(r.state, pm::TrackState::Tracking);
+    EXPECT_EQ(r.state, pm::tracker::TrackState::Tracking);
     EXPECT_LT(dp, 2.0);
     EXPECT_LT(da, 1.0);
   }
@@ -250,43 +250,43 @@ TEST(AllAround, BothKernelsAgreeAndTheModelFileKeepsEveryView)
   pm::io::savePhotoModel(c.build.model, dir.file("m.json"));
   const std::string text = pm::test::readText(dir.file("m.json"));
   EXPECT_NE(text.find("\"version\":5"), std::string::npos); // the viewpoint model with its outlines and colours
-  const pm::PhotoModel m = pm::io::loadPhotoModel(dir.file("m.json"));
+  const pm::core::PhotoModel m = pm::io::loadPhotoModel(dir.file("m.json"));
   ASSERT_EQ(m.views.size(), c.build.model.views.size());
   EXPECT_EQ(pm::io::photoModelToJson(m), text); // read back, it writes the same file
   for (std::size_t k = 0; k < m.views.size(); k += 37) {
-    const pm::ModelView &a = m.views[k], &b = c.build.model.views[k];
+    const pm::core::ModelView &a = m.views[k], &b = c.build.model.views[k];
     ASSERT_EQ(a.inner.size(), b.inner.size());
     ASSERT_EQ(a.outer.size(), b.outer.size());
     for (std::size_t i = 0; i < a.inner.size(); ++i) {
       EXPECT_NEAR(a.inner[i].x, b.inner[i].x, 0.0051);
       EXPECT_NEAR(a.inner[i].z, b.inner[i].z, 0.0051);
-      EXPECT_LT(pm::hueDistance(a.inner[i].hue, b.inner[i].hue), 0.0051f);
+      EXPECT_LT(pm::core::hueDistance(a.inner[i].hue, b.inner[i].hue), 0.0051f);
     }
     for (std::size_t i = 0; i < a.outer.size(); ++i)
       EXPECT_NEAR(a.outer[i].y, b.outer[i].y, 0.0051);
   }
-  pm::StereoFitness f(rig(), m);
+  pm::core::StereoFitness f(rig(), m);
   const pm::sim::StereoImages im = c.scene.renderStereo(rig(), vpHomogeneousMatrix(0, 0, 0.5, 0.3, 0.2, 0), 0);
   f.setImages(im.left, im.right);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> t(-40, 40), e(-0.35, 0.35);
   std::vector<double> fast;
-  std::vector<pm::Phi> poses;
+  std::vector<pm::core::Phi> poses;
   for (int k = 0; k < 200; ++k) {
     poses.push_back({t(rng), t(rng), 500 + t(rng), e(rng), e(rng), e(rng)});
     fast.push_back(f.evaluate(poses.back()));
   }
-  pm::StereoFitness::forceScalar(true);
+  pm::core::StereoFitness::forceScalar(true);
   for (int k = 0; k < 200; ++k)
     EXPECT_EQ(f.evaluate(poses[static_cast<std::size_t>(k)]), fast[static_cast<std::size_t>(k)]);
-  pm::StereoFitness::forceScalar(false);
+  pm::core::StereoFitness::forceScalar(false);
 }
 
 TEST(AllAround, AViewWithAWrongPoseIsNamedAndLeftOut)
 {
-  std::vector<pm::PassView> views = crab().pass.views;
+  std::vector<pm::model::PassView> views = crab().pass.views;
   views[5].fMh = views[5].fMh * vpHomogeneousMatrix(0.04, -0.03, 0, 0, 0, 0.2); // 50 mm and 11 deg off
-  const pm::AllAroundBuild b = pm::buildAllAroundModel(rig(), views);
+  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), views);
   ASSERT_EQ(b.leftOut.size(), 1u);
   EXPECT_EQ(b.leftOut[0].rfind("view 05", 0), 0u) << b.leftOut[0];
   EXPECT_EQ(b.nViewsUsed, 15u);
@@ -294,28 +294,28 @@ TEST(AllAround, AViewWithAWrongPoseIsNamedAndLeftOut)
 
 TEST(AllAround, BadInputIsRefusedNamingTheView)
 {
-  const std::vector<pm::PassView> &good = crab().pass.views;
-  auto err = [](const std::vector<pm::PassView> &v) { return pm::test::errorOf([&] { (void)pm::buildAllAroundModel(rig(), v); }); };
+  const std::vector<pm::model::PassView> &good = crab().pass.views;
+  auto err = [](const std::vector<pm::model::PassView> &v) { return pm::test::errorOf([&] { (void)pm::model::buildAllAroundModel(rig(), v); }); };
   // Too few views: says how many.
-  std::vector<pm::PassView> few(good.begin(), good.begin() + 4);
+  std::vector<pm::model::PassView> few(good.begin(), good.begin() + 4);
   EXPECT_NE(err(few).find("holds 4 views; at least 6"), std::string::npos) << err(few);
   // The target cut by the border in one view.
-  std::vector<pm::PassView> cut = good;
+  std::vector<pm::model::PassView> cut = good;
   for (unsigned v = 200; v < 260; ++v)
     for (unsigned u = 0; u < 330; ++u)
       cut[3].left[v][u] = vpRGBa(230, 60, 30);
   EXPECT_NE(err(cut).find("view 03: the target is cut by the left image's border"), std::string::npos) << err(cut);
   // A background that does not match its photo (another view's).
-  std::vector<pm::PassView> wrongBg = good;
+  std::vector<pm::model::PassView> wrongBg = good;
   wrongBg[7].backgroundRight = good[12].backgroundRight;
   EXPECT_NE(err(wrongBg).find("view 07 (right)"), std::string::npos) << err(wrongBg);
   EXPECT_NE(err(wrongBg).find("background does not match"), std::string::npos) << err(wrongBg);
   // Images of another size than the rig's.
-  std::vector<pm::PassView> small = good;
+  std::vector<pm::model::PassView> small = good;
   small[2].right.resize(240, 320);
   EXPECT_NE(err(small).find("view 02"), std::string::npos) << err(small);
   // Poses that carve the hull to nothing: every view shifted its own way.
-  std::vector<pm::PassView> scattered = good;
+  std::vector<pm::model::PassView> scattered = good;
   for (std::size_t k = 0; k < scattered.size(); ++k)
     scattered[k].fMh = scattered[k].fMh * vpHomogeneousMatrix(0.15 * std::cos(k), 0.15 * std::sin(k), 0, 0, 0, 0);
   EXPECT_NE(err(scattered).find("views"), std::string::npos) << err(scattered);
@@ -327,9 +327,9 @@ TEST(AllAround, AViewsFolderGoesThroughTheSameBuildAndBadFilesNameTheView)
   pm::test::TempDir dir("aa_views");
   const std::string views = dir.file("views");
   pm::io::saveViewsFolder(c.pass.views, views);
-  const std::vector<pm::PassView> back = pm::io::loadViewsFolder(views, rig(), 6);
+  const std::vector<pm::model::PassView> back = pm::io::loadViewsFolder(views, rig(), 6);
   ASSERT_EQ(back.size(), c.pass.views.size());
-  const pm::AllAroundBuild b = pm::buildAllAroundModel(rig(), back);
+  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), back);
   // The same build up to the rounding of the poses through vpPoseVector (theta-u) and back.
   EXPECT_EQ(b.nViewsUsed, c.build.nViewsUsed);
   EXPECT_NEAR(b.hullVolumeCm3, c.build.hullVolumeCm3, 0.002 * c.build.hullVolumeCm3);
@@ -350,8 +350,8 @@ TEST(AllAround, AViewsFolderGoesThroughTheSameBuildAndBadFilesNameTheView)
   EXPECT_NE(pm::test::errorOf([&] { (void)pm::io::loadViewsFolder(dir.file("nothing"), rig()); }).find("does not exist"),
             std::string::npos);
   // A pass against a plain backdrop: no background files, none asked for.
-  std::vector<pm::PassView> plain = c.pass.views;
-  for (pm::PassView &v : plain) { // (not a = b = {}: ViSP 3.5 copies an empty vpImage with memcpy(nullptr))
+  std::vector<pm::model::PassView> plain = c.pass.views;
+  for (pm::model::PassView &v : plain) { // (not a = b = {}: ViSP 3.5 copies an empty vpImage with memcpy(nullptr))
     v.backgroundLeft = vpImage<vpRGBa>();
     v.backgroundRight = vpImage<vpRGBa>();
   }
@@ -371,7 +371,7 @@ TEST(AllAround, TheViewsStereoPairsBringTheBulgingHullBackToTheBoxsFaceAndBoundI
   // fusion), and the views' stereo pairs fused with the hull and bounded by the backdrop.
   const pm::sim::Scene scene(pm::sim::makeTarget("R1"));
   pm::robot::SteppedArm pa10(pm::robot::makeArmModel("pa10"));
-  const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::PassPlan(), pa10);
+  const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::model::PassPlan(), pa10);
   pm::sim::Rasterizer r;
   vpImage<vpRGBa> unused;
   const vpHomogeneousMatrix hMo = pass.views[0].fMh.inverse() * pass.fMo;
@@ -381,13 +381,13 @@ TEST(AllAround, TheViewsStereoPairsBringTheBulgingHullBackToTheBoxsFaceAndBoundI
     double medianMm, p90Mm, volumeCm3;
   };
   auto measure = [&](bool fusion, double refineMm) {
-    pm::AllAroundParams p;
+    pm::model::AllAroundParams p;
     p.fusion.enabled = fusion;
     p.refineDepthMm = refineMm;
-    const pm::AllAroundBuild b = pm::buildAllAroundModel(rig(), pass.views, p);
+    const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), pass.views, p);
     const vpHomogeneousMatrix cMm = (pass.views[0].fMh * rig().left.hMc).inverse() * b.fMm;
     std::vector<float> zbuf;
-    pm::hull::Pinhole cam(cMm.inverse(), rig().left.cam, rig().left.width, rig().left.height);
+    pm::model::hull::Pinhole cam(cMm.inverse(), rig().left.cam, rig().left.width, rig().left.height);
     b.mesh.depthMap(cam, zbuf);
     std::vector<double> e;
     for (unsigned v = 0; v < rig().left.height; ++v)

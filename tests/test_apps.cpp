@@ -209,7 +209,7 @@ TEST(Apps, MakeRigWritesALoadableRig)
 {
   TempDir d("apps");
   ASSERT_EQ(runProgram("pm-make-rig", "--quiet --toe-in-deg 0 --baseline-mm 200 --out " + d.path()).status, 0);
-  const pm::StereoRig rig = pm::io::loadRig(d.file("rig.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(d.file("rig.json"));
   EXPECT_NEAR(rig.baseline(), 0.2, 1e-9);
   EXPECT_NEAR(rig.left.hMc.getThetaUVector().getTheta(), 0.0, 1e-12);
 }
@@ -219,20 +219,20 @@ namespace {
 //! A recorded sequence of 4 stereo frames of C04 moving along x, its model and ground truth, in \e dir.
 void writeSequence(const TempDir &dir)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::Scene scene(pm::sim::makeTarget("C04", 0.5));
   const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
   pm::io::savePhotoModel(sm.build.model, dir.file("model.json"));
   std::string truth = "frame,x,y,z,e1,e2,e3\n";
   for (int k = 0; k < 4; ++k) {
-    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({2.0 * k, 0, 500, 0, 0, 0});
+    const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({2.0 * k, 0, 500, 0, 0, 0});
     const auto im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
     char name[32];
     std::snprintf(name, sizeof name, "L_%04d.png", k);
     pm::io::writeImage(im.left, dir.file(name));
     std::snprintf(name, sizeof name, "R_%04d.png", k);
     pm::io::writeImage(im.right, dir.file(name));
-    const pm::Phi t = sm.truth(hMo);
+    const pm::core::Phi t = sm.truth(hMo);
     truth += std::to_string(k) + "," + std::to_string(t.x) + "," + std::to_string(t.y) + "," + std::to_string(t.z) + ",0,0,0\n";
   }
   pm::test::writeText(dir.file("truth.csv"), truth);
@@ -280,7 +280,7 @@ TEST(Apps, DetectAndTrackOnTheSimulator)
   // One set of tracker defaults: the program's tracker, run on its defaults and on a configuration
   // file with no keys, is the library's TrackerParams().
   pm::test::writeText(d.file("empty.json"), R"({"format":"visp-photomodel-tracker","version":1})");
-  const auto library = nlohmann::json::parse(pm::trackerConfigToJson(pm::TrackerParams()));
+  const auto library = nlohmann::json::parse(pm::tracker::trackerConfigToJson(pm::tracker::TrackerParams()));
   for (const std::string &config : std::vector<std::string>{"", " --config " + d.file("empty.json")}) {
     const auto t = runProgram("pm-track", "--target C04 --quiet --steps 2 --hold-s 0.5 --move-s 0.5" + config + " --out " +
                                               d.file("track"));
@@ -299,7 +299,7 @@ TEST(Apps, AModelThatDoesNotFitTheRigIsRefused)
 {
   TempDir d("apps");
   writeSequence(d);
-  pm::PhotoModel m = pm::io::loadPhotoModel(d.file("model.json"));
+  pm::core::PhotoModel m = pm::io::loadPhotoModel(d.file("model.json"));
   for (auto *set : {&m.inner, &m.outer})
     for (auto &q : *set) {
       q.x *= 30;
@@ -370,7 +370,7 @@ TEST(Apps, MakeStereoModelFromAUsersFourPhotosAndRefuseBadOnes)
   // The rig's two cameras photograph the backdrop, then the crab on it, from one hand pose: the
   // four files a user of a real rig has. The model has depth, and pm-detect finds the crab with it.
   TempDir dir("stereo");
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
   const vpHomogeneousMatrix hMo(0, 0, 0.5, 0, 0, 0);
   pm::sim::Rasterizer r;

@@ -57,9 +57,9 @@ vpColVector twistBetween(const vpHomogeneousMatrix &A, const vpHomogeneousMatrix
   return v;
 }
 
-const pm::StereoRig &rig()
+const pm::core::StereoRig &rig()
 {
-  static const pm::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  static const pm::core::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   return r;
 }
 
@@ -226,7 +226,7 @@ TEST(Arm, TheHandJacobianMovesTheRigMountedOffTheFlangeAsCommanded)
 TEST(LabPass, EachArmReachesThePassAndItsViewsFolderMakesTheSameModel)
 {
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-  pm::PassPlan plan;
+  pm::model::PassPlan plan;
   plan.views = 8; // the rest view and a ring of 7
   plan.ringsDeg = {30};
   for (const std::string name : {"viper850", "afma6"}) {
@@ -236,7 +236,7 @@ TEST(LabPass, EachArmReachesThePassAndItsViewsFolderMakesTheSameModel)
     double tiltSum = 0;
     for (std::size_t k = 0; k < pass.views.size(); ++k) {
       // Each view where it was asked: the hand's pose from the arm's joints is the planned one.
-      const vpHomogeneousMatrix want = pass.fMh0 * pm::passPose(pass.directions[k], 500);
+      const vpHomogeneousMatrix want = pass.fMh0 * pm::model::passPose(pass.directions[k], 500);
       const vpHomogeneousMatrix got = arm.fMh(pass.joints[k]);
       EXPECT_LT((got.getTranslationVector() - want.getTranslationVector()).frobeniusNorm(), 1e-4) << name << " view " << k;
       // Tilted as planned, or less where out of reach, down to half (the Viper850 in the limits of ViSP's simulator).
@@ -254,8 +254,8 @@ TEST(LabPass, EachArmReachesThePassAndItsViewsFolderMakesTheSameModel)
     // The views folder the arm's pass writes makes the same model as the pass itself.
     pm::test::TempDir d(std::string("arm-views-") + name);
     pm::io::saveViewsFolder(pass.views, d.file("views"));
-    const std::vector<pm::PassView> back = pm::io::loadViewsFolder(d.file("views"), rig());
-    const pm::AllAroundBuild a = pm::buildAllAroundModel(rig(), pass.views), b = pm::buildAllAroundModel(rig(), back);
+    const std::vector<pm::model::PassView> back = pm::io::loadViewsFolder(d.file("views"), rig());
+    const pm::model::AllAroundBuild a = pm::model::buildAllAroundModel(rig(), pass.views), b = pm::model::buildAllAroundModel(rig(), back);
     ASSERT_EQ(a.model.inner.size(), b.model.inner.size()) << name;
     double worst = 0;
     for (std::size_t i = 0; i < a.model.inner.size(); ++i)
@@ -418,9 +418,9 @@ TEST(HandLoop, ARobotThatStopsAnsweringMidServoEndsTheLoopWithAClearErrorAndTheA
   robot.q = arm.model().restJoints();
   robot.clockedGain = 1;
   pm::lab::ArmCameraSource cameras(scene, rig(), arm, arm.fMh() * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), 30, 0);
-  pm::ServoParams sp;
+  pm::servo::ServoParams sp;
   sp.hdMo = sm.photoHMo * sm.oMm * vpHomogeneousMatrix(0, 0, -0.05, 0, 0, 0); // the model's frame, 50 mm nearer
-  pm::hand::HandLoop loop(rig(), sm.build.model, pm::TrackerParams(), sp, pm::hand::GuardParams(), cameras, arm);
+  pm::hand::HandLoop loop(rig(), sm.build.model, pm::tracker::TrackerParams(), sp, pm::hand::GuardParams(), cameras, arm);
   pm::hand::HandFrame f;
   long servoed = 0;
   for (int k = 0; k < 60; ++k) { // 2 s
@@ -516,7 +516,7 @@ TEST(LabPass, ThroughViSPsThreadedSimulatorAsThroughAnyVpRobotTheViewsAreTheStep
   // The pass made through vpRobot (ViSP's simulator of the Afma6, real time) lands on the views
   // the stepped model plans: one interface for the lab and a real arm.
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-  pm::PassPlan plan;
+  pm::model::PassPlan plan;
   plan.views = 4;
   plan.ringsDeg = {25};
   pm::robot::SteppedArm stepped(pm::robot::makeArmModel("afma6"));

@@ -12,7 +12,7 @@
 namespace {
 
 //! Runs \e batches batches of sizes 0..40 and checks that every item ran once.
-void runBatches(pm::BatchPool &pool, int batches)
+void runBatches(pm::core::BatchPool &pool, int batches)
 {
   std::vector<std::atomic<int>> hits(40);
   for (int b = 0; b < batches; ++b) {
@@ -29,21 +29,21 @@ void runBatches(pm::BatchPool &pool, int batches)
 
 TEST(BatchPool, EveryItemOnceWithTheHelper)
 {
-  pm::BatchPool pool(true);
+  pm::core::BatchPool pool(true);
   ASSERT_TRUE(pool.hasHelper());
   runBatches(pool, 20000);
 }
 
 TEST(BatchPool, EveryItemOnceWithoutTheHelper)
 {
-  pm::BatchPool pool(false);
+  pm::core::BatchPool pool(false);
   EXPECT_FALSE(pool.hasHelper());
   runBatches(pool, 2000);
 }
 
 TEST(BatchPool, TwoCallersAtOnce)
 {
-  pm::BatchPool pool(true);
+  pm::core::BatchPool pool(true);
   std::thread other([&] { runBatches(pool, 5000); });
   runBatches(pool, 5000);
   other.join();
@@ -52,7 +52,7 @@ TEST(BatchPool, TwoCallersAtOnce)
 TEST(BatchPool, TheHelperDoesShareTheWork)
 {
   // Items slow enough for the helper to wake: some must run on another thread.
-  pm::BatchPool pool(true);
+  pm::core::BatchPool pool(true);
   const std::thread::id me = std::this_thread::get_id();
   std::atomic<int> elsewhere{0};
   for (int b = 0; b < 200 && elsewhere.load() == 0; ++b)

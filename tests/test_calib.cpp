@@ -35,7 +35,7 @@ TEST(TagBoard, LayoutAndRendering)
   EXPECT_EQ(img[370][370 - 78].R, 0); // the black border of the centre tag, 0.5 mm inside its edge at x = -19.5 mm
   pm::calib::TagBoard bad;
   bad.pitchMm = 45; // tags would overlap
-  EXPECT_THROW(bad.validate(), pm::Error);
+  EXPECT_THROW(bad.validate(), pm::core::Error);
 }
 
 namespace {
@@ -58,7 +58,7 @@ std::pair<double, double> poseError(const vpHomogeneousMatrix &a, const vpHomoge
 //! normal and checks the pose found against the truth.
 void expectPoseFound(const pm::calib::Pattern &pattern, double turnDeg, double tolMm, double tolDeg)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::Scene scene = patternScene(pattern);
   const vpHomogeneousMatrix hMo = vpHomogeneousMatrix(0.01, -0.01, 0.5, 0.1, -0.15, 0) *
                                   vpHomogeneousMatrix(0, 0, 0, 0, 0, turnDeg * M_PI / 180);
@@ -211,7 +211,7 @@ TEST(StereoBaseline, ARigFileOffByFiveMillimetresOrOneDegreeIsFlagged)
 TEST(StereoBaseline, BadInputIsAClearError)
 {
   TempDir d("calib");
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::calib::TagBoard board;
   // A pair with the board in the left image only, a pair with no board, a pair of different sizes.
   const pm::sim::Scene scene = patternScene(board);
@@ -261,11 +261,11 @@ TEST(BaselineCheck, RenderedPairsGiveTheRigsBaselineAndBadPairsAreNamed)
 {
   // Four pairs of the tag board seen by the lab's rig: the check finds its 323 mm baseline and
   // keeps the first pair's corners; a pair of another size is refused by its name.
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::calib::TagBoard board;
   const pm::sim::Scene scene = patternScene(board);
   pm::calib::BaselineCheck check(rig, board);
-  EXPECT_THROW(check.result(), pm::Error); // no pair yet
+  EXPECT_THROW(check.result(), pm::core::Error); // no pair yet
   for (int k = 0; k < 4; ++k) {
     const vpHomogeneousMatrix hMo(0.01 * k, -0.01, 0.48 + 0.01 * k, 0.05 * k, -0.1, 0.1 * k);
     const pm::sim::StereoImages im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(k));

@@ -45,7 +45,7 @@ struct Recording
 
 Recording record(const TempDir &d, int n, int rightEvery = 1, int rightFrames = -1, int rightScale = 1)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
   sp.supersampling = 1;
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp);
@@ -242,7 +242,7 @@ TEST(PmMakeModel, MakesAStereoModelFromTwoVideoStreams)
 {
   // The rig films the backdrop alone (pairs 0-2), then the toy placed on it (pairs 3-5), from one hand pose.
   TempDir d("model-video");
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
   const int fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
   cv::VideoWriter wl(d.file("l.avi"), fourcc, 30.0, cv::Size(640, 480)), wr(d.file("r.avi"), fourcc, 30.0, cv::Size(640, 480));
@@ -306,7 +306,7 @@ TEST(VideoCapture, ALiveStreamThatStallsIsAnErrorAfterItsTimeout)
   std::unique_ptr<pm::capture::VideoCaptureSource> src;
   try {
     src = std::make_unique<pm::capture::VideoCaptureSource>(pipeline[0], pipeline[1], p);
-  } catch (const pm::Error &e) {
+  } catch (const pm::core::Error &e) {
     GTEST_SKIP() << "this OpenCV has no GStreamer pipelines: " << e.what();
   }
   pm::capture::StereoFrame f;

@@ -36,7 +36,7 @@ TEST(OutlineModel, ASquareRegionGivesItsFourCornersInTheModelFrameCounterClockwi
   for (unsigned i = 70; i < 130; ++i)
     for (unsigned j = 100; j < 200; ++j)
       region[i][j] = 255;
-  pm::PhotoModel m;
+  pm::core::PhotoModel m;
   m.distanceMm = 500;
   m.px = m.py = 1000;
   m.centroidU = 149.5;
@@ -62,7 +62,7 @@ TEST(OutlineModel, ASquareRegionGivesItsFourCornersInTheModelFrameCounterClockwi
   const std::string cao = pm::compare::caoText(poly, "test");
   EXPECT_EQ(cao.rfind("V1\n", 0), 0u);
   EXPECT_NE(cao.find("\n4 0 1 2 3\n"), std::string::npos);
-  EXPECT_THROW(pm::compare::outlinePolygon(vpImage<unsigned char>(10, 10, 0), m), pm::Error);
+  EXPECT_THROW(pm::compare::outlinePolygon(vpImage<unsigned char>(10, 10, 0), m), pm::core::Error);
 }
 
 TEST(Metrics, ErrorsSuccessRatesAndRecoveryFromKnownScores)
@@ -115,9 +115,9 @@ TEST(Roc, AreaAndCurveOfKnownScores)
   EXPECT_DOUBLE_EQ(auroc({4, 3, 2, 1}, {false, false, true, true}), 0.0);
   EXPECT_DOUBLE_EQ(auroc({1, 1, 1, 1}, {false, true, false, true}), 0.5);
   // Bad input.
-  EXPECT_THROW(auroc({1, 2}, {true}), pm::Error);
-  EXPECT_THROW(auroc({1, 2}, {true, true}), pm::Error);
-  EXPECT_THROW(auroc({1, NAN}, {true, false}), pm::Error);
+  EXPECT_THROW(auroc({1, 2}, {true}), pm::core::Error);
+  EXPECT_THROW(auroc({1, 2}, {true, true}), pm::core::Error);
+  EXPECT_THROW(auroc({1, NAN}, {true, false}), pm::core::Error);
 }
 
 TEST(ConfidenceStudy, TheReportCountsTheSetAsLabelledPerRunAndAmongTrackedFrames)
@@ -126,10 +126,10 @@ TEST(ConfidenceStudy, TheReportCountsTheSetAsLabelledPerRunAndAmongTrackedFrames
   // are the set's, the areas are auroc's over all frames and over the Tracking ones.
   pm::compare::ConfidenceStudy study;
   study.runNames = {"a", "b"};
-  struct F { double conf; bool right, trusted; pm::TrackState state; std::size_t run; };
-  const F fs[] = {{0.9, true, true, pm::TrackState::Tracking, 0},  {0.7, false, true, pm::TrackState::Tracking, 0},
-                  {0.8, true, false, pm::TrackState::Tracking, 1}, {0.1, false, false, pm::TrackState::Searching, 1},
-                  {0.4, true, false, pm::TrackState::Tracking, 1}};
+  struct F { double conf; bool right, trusted; pm::tracker::TrackState state; std::size_t run; };
+  const F fs[] = {{0.9, true, true, pm::tracker::TrackState::Tracking, 0},  {0.7, false, true, pm::tracker::TrackState::Tracking, 0},
+                  {0.8, true, false, pm::tracker::TrackState::Tracking, 1}, {0.1, false, false, pm::tracker::TrackState::Searching, 1},
+                  {0.4, true, false, pm::tracker::TrackState::Tracking, 1}};
   for (const F &f : fs) {
     pm::compare::LabelledFrame l;
     l.confidence = f.conf;
@@ -155,7 +155,7 @@ TEST(ConfidenceStudy, TheReportCountsTheSetAsLabelledPerRunAndAmongTrackedFrames
   ASSERT_EQ(r.perRun.size(), 2u);
   EXPECT_EQ(r.perRun[0], (std::array<std::size_t, 4>{2, 1, 1, 1}));
   EXPECT_EQ(r.perRun[1], (std::array<std::size_t, 4>{3, 1, 0, 0}));
-  EXPECT_THROW(pm::compare::reportConfidence(pm::compare::ConfidenceStudy(), 0.0, 0.5), pm::Error);
+  EXPECT_THROW(pm::compare::reportConfidence(pm::compare::ConfidenceStudy(), 0.0, 0.5), pm::core::Error);
 }
 
 TEST(Roc, TheLogisticFitRecoversTheModelItsLabelsWereDrawnFrom)
@@ -177,8 +177,8 @@ TEST(Roc, TheLogisticFitRecoversTheModelItsLabelsWereDrawnFrom)
   EXPECT_NEAR(fit.weights[0], w0, 0.12);
   EXPECT_NEAR(fit.weights[1], w1, 0.12);
   EXPECT_NEAR(fit.bias, b, 0.1);
-  EXPECT_THROW(pm::compare::fitLogistic({{1.0}, {1.0, 2.0}}, {true, false}), pm::Error);
-  EXPECT_THROW(pm::compare::fitLogistic({{1.0}, {2.0}}, {true, true}), pm::Error);
+  EXPECT_THROW(pm::compare::fitLogistic({{1.0}, {1.0, 2.0}}, {true, false}), pm::core::Error);
+  EXPECT_THROW(pm::compare::fitLogistic({{1.0}, {2.0}}, {true, true}), pm::core::Error);
 }
 
 TEST(Roc, CrossValidationScoresEachFoldWithAModelThatNeverSawIt)
@@ -216,11 +216,11 @@ TEST(Roc, CrossValidationScoresEachFoldWithAModelThatNeverSawIt)
   try {
     pm::compare::crossValidatedLogistic(x, skewed, fold, 4);
     ADD_FAILURE() << "no error";
-  } catch (const pm::Error &e) {
+  } catch (const pm::core::Error &e) {
     EXPECT_NE(std::string(e.what()).find("fold 1"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(pm::compare::crossValidatedLogistic(x, y, std::vector<int>(x.size(), 4), 4), pm::Error);
-  EXPECT_THROW(pm::compare::crossValidatedLogistic(x, y, fold, 1), pm::Error);
+  EXPECT_THROW(pm::compare::crossValidatedLogistic(x, y, std::vector<int>(x.size(), 4), 4), pm::core::Error);
+  EXPECT_THROW(pm::compare::crossValidatedLogistic(x, y, fold, 1), pm::core::Error);
 }
 
 TEST(Scenario, TheForcedLossBlanksTheFramesAndTheTargetJumps)
@@ -234,15 +234,15 @@ TEST(Scenario, TheForcedLossBlanksTheFramesAndTheTargetJumps)
   EXPECT_NEAR((a.getTranslationVector() - b.getTranslationVector()).frobeniusNorm(), 0.05, 1e-9);
   EXPECT_NEAR((a.inverse() * b).getThetaUVector().getTheta() * 180 / M_PI, 8.0, 1e-6);
   for (const auto &name : pm::compare::scenarioNames())
-    EXPECT_FALSE(pm::compare::makeScenario(name, {pm::Phi{0, 0, 500, 0, 0, 0}, pm::Phi{20, 0, 500, 0, 0, 0}}).frames.empty()) << name;
-  EXPECT_THROW(pm::compare::makeScenario("nope", {}), pm::Error);
+    EXPECT_FALSE(pm::compare::makeScenario(name, {pm::core::Phi{0, 0, 500, 0, 0, 0}, pm::core::Phi{20, 0, 500, 0, 0, 0}}).frames.empty()) << name;
+  EXPECT_THROW(pm::compare::makeScenario("nope", {}), pm::core::Error);
 }
 
 TEST(ComparedTrackers, ViSPsTrackersStartedAtTheTruthStayNearItOnSlowMotion)
 {
   // The .cao model and the template are right if ViSP's trackers, started at the true pose,
   // follow a slow move: KLT (stereo) and the SSD template within 10 mm and 3 deg.
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::Scene scene(pm::sim::makeTarget("C12"));
   const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, 500);
   const auto outline = pm::compare::outlinePolygon(sm.build.region, sm.build.model);
@@ -405,7 +405,7 @@ TEST(Comparison, OneRowPerFrameAndTrackerTheResultsShapeAndAClearErrorForAnUnkno
 {
   // The runner behind pm-compare, on the first step of Table 2 with ours and ViSP's KLT tracker.
   TempDir d("comparison");
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::compare::ComparisonParams p;
   p.scenarios = {"table2"};
   p.steps = 1;

@@ -16,9 +16,9 @@ namespace {
   A frame the tracker is sure of: tracked a second, verified, fitting in both cameras (q, the worse
   camera's q, S_in on the hue, S_out on the background), above its rivals by \e margin, still.
 */
-pm::ConfidenceCues goodFrame(double q = 0.8, double qMin = 0.75, double inMatch = 0.8, double outBackground = 0.9, double margin = 0.3)
+pm::tracker::ConfidenceCues goodFrame(double q = 0.8, double qMin = 0.75, double inMatch = 0.8, double outBackground = 0.9, double margin = 0.3)
 {
-  pm::ConfidenceCues c;
+  pm::tracker::ConfidenceCues c;
   c.quality = q;
   c.qualityMin = qMin;
   c.inMatchMin = inMatch;
@@ -38,15 +38,15 @@ pm::ConfidenceCues goodFrame(double q = 0.8, double qMin = 0.75, double inMatch 
 
 TEST(TrackConfidence, TheFeaturesAreTheCuesScaledAsDocumented)
 {
-  pm::ConfidenceCues c = goodFrame();
+  pm::tracker::ConfidenceCues c = goodFrame();
   c.tiltDeg = 25;
   c.jumpMm = std::exp(2.0) - 1;
   c.jumpDeg = -3;          // a negative jump counts as none
   c.qualityDrop = -0.1;    // as does a negative drop
   c.framesTracked = 90;    // capped at 30
   const auto x = c.features();
-  ASSERT_EQ(x.size(), pm::ConfidenceCues::kFeatures);
-  ASSERT_EQ(pm::ConfidenceCues::featureNames().size(), pm::ConfidenceCues::kFeatures);
+  ASSERT_EQ(x.size(), pm::tracker::ConfidenceCues::kFeatures);
+  ASSERT_EQ(pm::tracker::ConfidenceCues::featureNames().size(), pm::tracker::ConfidenceCues::kFeatures);
   EXPECT_DOUBLE_EQ(x[0], 0.8);
   EXPECT_DOUBLE_EQ(x[4], 2.5);            // tilt / 10
   EXPECT_DOUBLE_EQ(x[6], 0.0);            // max(0, drop)
@@ -55,15 +55,15 @@ TEST(TrackConfidence, TheFeaturesAreTheCuesScaledAsDocumented)
   EXPECT_DOUBLE_EQ(x[9], 1.0);            // min(frames, 30) / 30
   EXPECT_DOUBLE_EQ(x[10], 1.0);
   EXPECT_DOUBLE_EQ(x[11], 1.0);
-  EXPECT_STREQ(pm::ConfidenceCues::featureNames()[4], "tilt_deg_10");
+  EXPECT_STREQ(pm::tracker::ConfidenceCues::featureNames()[4], "tilt_deg_10");
 }
 
 TEST(TrackConfidence, IsTheLogisticOfTheWeightedFeatures)
 {
-  pm::ConfidenceModel m;
+  pm::tracker::ConfidenceModel m;
   m.weights.fill(0);
   m.bias = 0;
-  const pm::ConfidenceCues c = goodFrame();
+  const pm::tracker::ConfidenceCues c = goodFrame();
   EXPECT_DOUBLE_EQ(m.confidence(c), 0.5); // no evidence either way
   m.weights[0] = 2.0;
   m.bias = -1.0;
@@ -72,7 +72,7 @@ TEST(TrackConfidence, IsTheLogisticOfTheWeightedFeatures)
 
 TEST(TrackConfidence, TheShippedModelTrustsASureFrameAndDoubtsWhatShouldBeDoubted)
 {
-  const pm::ConfidenceModel m;
+  const pm::tracker::ConfidenceModel m;
   EXPECT_NO_THROW(m.validate());
   const double sure = m.confidence(goodFrame());
   EXPECT_GE(sure, m.threshold);
@@ -80,28 +80,28 @@ TEST(TrackConfidence, TheShippedModelTrustsASureFrameAndDoubtsWhatShouldBeDoubte
   struct Change
   {
     const char *what;
-    void (*apply)(pm::ConfidenceCues &);
+    void (*apply)(pm::tracker::ConfidenceCues &);
   };
   const Change doubts[] = {
-      {"a lower fitness", [](pm::ConfidenceCues &c) { c.quality = c.qualityMin = 0.4; }},
-      {"a pose that fits one camera only", [](pm::ConfidenceCues &c) { c.qualityMin = 0.2; }},
-      {"S_in off the model's hue", [](pm::ConfidenceCues &c) { c.inMatchMin = 0.3; }},
-      {"a competitor as good (a near-symmetric outline)", [](pm::ConfidenceCues &c) { c.competitorMargin = 0; }},
-      {"a steep tilt (the flat model's relief bias)", [](pm::ConfidenceCues &c) { c.tiltDeg = 40; }},
-      {"a fall of the fitness", [](pm::ConfidenceCues &c) { c.qualityDrop = 0.3; }},
-      {"a jump of 50 mm", [](pm::ConfidenceCues &c) { c.jumpMm = 50; }},
-      {"a jump of 20 deg", [](pm::ConfidenceCues &c) { c.jumpDeg = 20; }},
-      {"a lock not yet verified", [](pm::ConfidenceCues &c) { c.verified = false; }},
-      {"a lock of one frame", [](pm::ConfidenceCues &c) { c.framesTracked = 1; }},
-      {"no lock at all", [](pm::ConfidenceCues &c) { c.tracking = false; }},
+      {"a lower fitness", [](pm::tracker::ConfidenceCues &c) { c.quality = c.qualityMin = 0.4; }},
+      {"a pose that fits one camera only", [](pm::tracker::ConfidenceCues &c) { c.qualityMin = 0.2; }},
+      {"S_in off the model's hue", [](pm::tracker::ConfidenceCues &c) { c.inMatchMin = 0.3; }},
+      {"a competitor as good (a near-symmetric outline)", [](pm::tracker::ConfidenceCues &c) { c.competitorMargin = 0; }},
+      {"a steep tilt (the flat model's relief bias)", [](pm::tracker::ConfidenceCues &c) { c.tiltDeg = 40; }},
+      {"a fall of the fitness", [](pm::tracker::ConfidenceCues &c) { c.qualityDrop = 0.3; }},
+      {"a jump of 50 mm", [](pm::tracker::ConfidenceCues &c) { c.jumpMm = 50; }},
+      {"a jump of 20 deg", [](pm::tracker::ConfidenceCues &c) { c.jumpDeg = 20; }},
+      {"a lock not yet verified", [](pm::tracker::ConfidenceCues &c) { c.verified = false; }},
+      {"a lock of one frame", [](pm::tracker::ConfidenceCues &c) { c.framesTracked = 1; }},
+      {"no lock at all", [](pm::tracker::ConfidenceCues &c) { c.tracking = false; }},
   };
   for (const Change &d : doubts) {
-    pm::ConfidenceCues c = goodFrame();
+    pm::tracker::ConfidenceCues c = goodFrame();
     d.apply(c);
     EXPECT_LT(m.confidence(c), sure) << d.what;
   }
   // A frame with every doubt at once is far from trusted.
-  pm::ConfidenceCues bad = goodFrame();
+  pm::tracker::ConfidenceCues bad = goodFrame();
   for (const Change &d : doubts)
     d.apply(bad);
   EXPECT_LT(m.confidence(bad), 0.05);
@@ -109,16 +109,16 @@ TEST(TrackConfidence, TheShippedModelTrustsASureFrameAndDoubtsWhatShouldBeDoubte
 
 TEST(TrackConfidence, ACoefficientThatIsNotFiniteOrAThresholdOutsideTheOpenIntervalIsRefused)
 {
-  pm::ConfidenceModel m;
+  pm::tracker::ConfidenceModel m;
   m.weights[3] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(m.validate(), pm::Error);
-  m = pm::ConfidenceModel();
+  EXPECT_THROW(m.validate(), pm::core::Error);
+  m = pm::tracker::ConfidenceModel();
   m.bias = std::numeric_limits<double>::infinity();
-  EXPECT_THROW(m.validate(), pm::Error);
+  EXPECT_THROW(m.validate(), pm::core::Error);
   for (double t : {0.0, 1.0, -0.5, 2.0}) {
-    m = pm::ConfidenceModel();
+    m = pm::tracker::ConfidenceModel();
     m.threshold = t;
-    EXPECT_THROW(m.validate(), pm::Error) << t;
+    EXPECT_THROW(m.validate(), pm::core::Error) << t;
   }
 }
 
@@ -126,10 +126,10 @@ TEST(TrackConfidence, TheAllAroundModelTrustsASurePreciseFrameAndDoubtsWhatThePr
 {
   // The all-around model's coefficients weigh the precise stage's cues: a frame the stage pins well
   // and fits well is trusted; each doubt, alone, lowers its confidence; the tilt weighs nothing.
-  const pm::ConfidenceModel m = pm::ConfidenceModel::shipped(pm::ConfidenceKind::AllAround);
+  const pm::tracker::ConfidenceModel m = pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::AllAround);
   EXPECT_NO_THROW(m.validate());
   // The median cues of the crab's trusted frames in pm-confidence --all-around.
-  pm::ConfidenceCues sure = goodFrame(0.975, 0.97, 0.97, 1.0, 0.39);
+  pm::tracker::ConfidenceCues sure = goodFrame(0.975, 0.97, 0.97, 1.0, 0.39);
   sure.precise = true;
   sure.preciseResidualPx = 0.57;
   sure.preciseSigmaMm = 0.2;
@@ -141,22 +141,22 @@ TEST(TrackConfidence, TheAllAroundModelTrustsASurePreciseFrameAndDoubtsWhatThePr
   struct Change
   {
     const char *what;
-    void (*apply)(pm::ConfidenceCues &);
+    void (*apply)(pm::tracker::ConfidenceCues &);
   };
   const Change doubts[] = {
-      {"the outline found 3 px from the model's", [](pm::ConfidenceCues &x) { x.preciseResidualPx = 3; }},
-      {"lines that pin the position to 3 mm only", [](pm::ConfidenceCues &x) { x.preciseSigmaMm = 3; }},
-      {"colours that do not split along the lines", [](pm::ConfidenceCues &x) { x.separation = 0.3; }},
-      {"S_out off the background", [](pm::ConfidenceCues &x) { x.outBackgroundMin = 0.6; }},
-      {"a competitor as good", [](pm::ConfidenceCues &x) { x.competitorMargin = 0; }},
-      {"a lock not yet verified", [](pm::ConfidenceCues &x) { x.verified = false; }},
+      {"the outline found 3 px from the model's", [](pm::tracker::ConfidenceCues &x) { x.preciseResidualPx = 3; }},
+      {"lines that pin the position to 3 mm only", [](pm::tracker::ConfidenceCues &x) { x.preciseSigmaMm = 3; }},
+      {"colours that do not split along the lines", [](pm::tracker::ConfidenceCues &x) { x.separation = 0.3; }},
+      {"S_out off the background", [](pm::tracker::ConfidenceCues &x) { x.outBackgroundMin = 0.6; }},
+      {"a competitor as good", [](pm::tracker::ConfidenceCues &x) { x.competitorMargin = 0; }},
+      {"a lock not yet verified", [](pm::tracker::ConfidenceCues &x) { x.verified = false; }},
   };
   for (const Change &d : doubts) {
-    pm::ConfidenceCues x = sure;
+    pm::tracker::ConfidenceCues x = sure;
     d.apply(x);
     EXPECT_LT(m.confidence(x), c) << d.what;
   }
-  pm::ConfidenceCues tilted = sure;
+  pm::tracker::ConfidenceCues tilted = sure;
   tilted.tiltDeg = 60;
   EXPECT_DOUBLE_EQ(m.confidence(tilted), c); // a model that knows the relief is not doubted for a tilt
 }

@@ -45,7 +45,7 @@ vpCameraParameters labCam()
   return c;
 }
 
-const pm::LensDistortion kBarrel{{-0.25, 0.08, 0.001, -0.0005, 0.0}};
+const pm::core::LensDistortion kBarrel{{-0.25, 0.08, 0.001, -0.0005, 0.0}};
 
 } // namespace
 
@@ -65,7 +65,7 @@ TEST(LensDistortion, DistortAndUndistortAreInverseOverTheImage)
   }
   EXPECT_LT(worst, 1e-6);
   EXPECT_GT(moved, 20.0); // barrel: the corners' rays lie far outside where a pinhole puts them
-  const pm::LensDistortion none;
+  const pm::core::LensDistortion none;
   EXPECT_TRUE(none.isNone());
   EXPECT_EQ(vpImagePoint::distance(none.distort(cam, vpImagePoint(10, 20)), vpImagePoint(10, 20)), 0.0);
 }
@@ -77,7 +77,7 @@ TEST(LensDistortion, ViSPsModelIsK1)
   visp.initPersProjWithDistortion(754, 750, 322, 238, -0.21, 0.23);
   vpCameraParameters pin;
   pin.initPersProjWithoutDistortion(754, 750, 322, 238);
-  const pm::LensDistortion d{{-0.21, 0, 0, 0, 0}};
+  const pm::core::LensDistortion d{{-0.21, 0, 0, 0, 0}};
   EXPECT_TRUE(d.isVispModel());
   EXPECT_FALSE(kBarrel.isVispModel());
   for (double x : {-0.4, -0.1, 0.0, 0.25})
@@ -94,24 +94,24 @@ TEST(LensDistortion, ALensThatFoldsTheImageOrABadCountIsRefused)
 {
   const vpCameraParameters cam = labCam();
   // k1 = -0.6: the distorted radius peaks at r = 0.745 (0.497) before the corner (0.53): two rays per pixel.
-  EXPECT_NE(errorOf([&] { pm::LensDistortion{{-0.6, 0, 0, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("folds the image"),
+  EXPECT_NE(errorOf([&] { pm::core::LensDistortion{{-0.6, 0, 0, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("folds the image"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { pm::LensDistortion{{-0.1, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("3 distortion coefficients"),
+  EXPECT_NE(errorOf([&] { pm::core::LensDistortion{{-0.1, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("3 distortion coefficients"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { pm::LensDistortion{{NAN, 0, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("not finite"),
+  EXPECT_NE(errorOf([&] { pm::core::LensDistortion{{NAN, 0, 0, 0}}.validate(cam, 640, 480, "left camera"); }).find("not finite"),
             std::string::npos);
   vpCameraParameters small;
   small.initPersProjWithoutDistortion(754, 754, 100, 100);
-  EXPECT_EQ(errorOf([&] { pm::LensDistortion{{-0.6, 0, 0, 0, 0}}.validate(small, 200, 200, "small"); }), ""); // inside its fold
-  pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
-  rig.right.distortion = pm::LensDistortion{{-0.6, 0, 0, 0, 0}};
+  EXPECT_EQ(errorOf([&] { pm::core::LensDistortion{{-0.6, 0, 0, 0, 0}}.validate(small, 200, 200, "small"); }), ""); // inside its fold
+  pm::core::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  rig.right.distortion = pm::core::LensDistortion{{-0.6, 0, 0, 0, 0}};
   EXPECT_NE(errorOf([&] { rig.validate(); }).find("camera 'right'"), std::string::npos);
 }
 
 TEST(UndistortMap, EachIdealPixelLooksWhereTheLensPutsIt)
 {
-  pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
-  const pm::UndistortMap map(rig.left);
+  pm::core::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  const pm::core::UndistortMap map(rig.left);
   const auto &idx = map.nearest();
   for (unsigned v = 0; v < 480; v += 37)
     for (unsigned u = 0; u < 640; u += 41) {
@@ -122,8 +122,8 @@ TEST(UndistortMap, EachIdealPixelLooksWhereTheLensPutsIt)
       EXPECT_LE(std::fabs(static_cast<double>(i / 640) - raw.get_v()), 0.5 + 1e-3);
     }
   // A pinhole camera's map is the identity.
-  rig.right.distortion = pm::LensDistortion();
-  const pm::UndistortMap id(rig.right);
+  rig.right.distortion = pm::core::LensDistortion();
+  const pm::core::UndistortMap id(rig.right);
   for (std::size_t i = 0; i < id.nearest().size(); i += 997)
     EXPECT_EQ(id.nearest()[i], static_cast<std::int32_t>(i));
   EXPECT_DOUBLE_EQ(id.coverage(), 1.0);
@@ -133,7 +133,7 @@ TEST(UndistortMap, TheSimulatorRendersThroughTheLensWhereItProjects)
 {
   // A chessboard rendered by a distorted camera: its corners, found in the raw image and undistorted,
   // lie where the pinhole camera projects the board's true corners.
-  const pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  const pm::core::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
   pm::calib::ChessBoard board;
   board.squareMm = board.marginMm = 25;
   pm::sim::SceneParams sp;
@@ -177,12 +177,12 @@ TEST(UndistortMap, TheFitnessReadsThroughTheLens)
   pm::sim::SceneParams quiet;
   quiet.noiseSigma = 0; // the same noise at the same raw pixel would make the raw planes look alike
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"), quiet);
-  const pm::StereoRig pin = pm::lab::labRigWithLens(pm::LensDistortion());
-  const pm::StereoRig lens = pm::lab::labRigWithLens(pm::LensDistortion{{-0.3, 0.1, 0, 0, 0}});
+  const pm::core::StereoRig pin = pm::lab::labRigWithLens(pm::core::LensDistortion());
+  const pm::core::StereoRig lens = pm::lab::labRigWithLens(pm::core::LensDistortion{{-0.3, 0.1, 0, 0, 0}});
   const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, pin);
   const vpHomogeneousMatrix hMo(0.14, 0.08, 0.5, 0.1, 0.05, 0.3); // off-centre in both images, where the lens bends
-  const pm::Phi truth = sm.truth(hMo);
-  pm::StereoFitness fPin(pin, sm.build.model), fLens(lens, sm.build.model), fNaive(pin, sm.build.model);
+  const pm::core::Phi truth = sm.truth(hMo);
+  pm::core::StereoFitness fPin(pin, sm.build.model), fLens(lens, sm.build.model), fNaive(pin, sm.build.model);
   const auto imPin = scene.renderStereo(pin, hMo, 0), imLens = scene.renderStereo(lens, hMo, 0);
   fPin.setImages(imPin.left, imPin.right);
   fLens.setImages(imLens.left, imLens.right);
@@ -190,11 +190,11 @@ TEST(UndistortMap, TheFitnessReadsThroughTheLens)
   EXPECT_NEAR(fLens.evaluate(truth), fPin.evaluate(truth), 0.05 * fPin.evaluate(truth));
   // Where F peaks in x, y around the truth: through the lens, at the truth; reading the raw images as
   // a pinhole's, off by the lens's bend (barrel: toward the image centre).
-  auto peak = [&](const pm::StereoFitness &f) {
+  auto peak = [&](const pm::core::StereoFitness &f) {
     double best = -1e9, bx = 0, by = 0;
     for (int dx = -12; dx <= 12; ++dx)
       for (int dy = -12; dy <= 12; ++dy) {
-        pm::Phi p = truth;
+        pm::core::Phi p = truth;
         p.x += dx;
         p.y += dy;
         const double v = f.evaluate(p);
@@ -258,7 +258,7 @@ TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
   EXPECT_DOUBLE_EQ(cx.cam.get_py(), 537);
   EXPECT_EQ(cx.distortion.coefficients, (std::vector<double>{-0.2, 0.01, 0.001, 0.002}));
   // Written by us, read back.
-  pm::RigCamera cam{"left", r.cam, 640, 480, vpHomogeneousMatrix(), r.distortion};
+  pm::core::RigCamera cam{"left", r.cam, 640, 480, vpHomogeneousMatrix(), r.distortion};
   pm::io::writeOpenCvCameraFile(cam, d.file("back.yml"));
   const auto b = pm::io::readCameraFile(d.file("back.yml"), "left", 640, 480);
   EXPECT_EQ(b.distortion.coefficients, r.distortion.coefficients);
@@ -341,9 +341,9 @@ TEST(CameraFile, AKannalaBrandtModelIsRefusedBeforeViSPsParserReadsPastItsCoeffi
 TEST(RigFile, ALensSurvivesTheRoundTripInOpenCvAndViSPFiles)
 {
   TempDir d("rig-lens");
-  pm::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  pm::core::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
   pm::io::saveRig(rig, d.file("rig.json"), "cams.xml");
-  const pm::StereoRig back = pm::io::loadRig(d.file("rig.json"));
+  const pm::core::StereoRig back = pm::io::loadRig(d.file("rig.json"));
   EXPECT_EQ(back.left.distortion.coefficients, kBarrel.coefficients);
   EXPECT_EQ(back.right.distortion.coefficients, kBarrel.coefficients);
   EXPECT_TRUE(std::filesystem::exists(d.file("rig_left.yml")));
@@ -359,12 +359,12 @@ TEST(RigFile, ALensSurvivesTheRoundTripInOpenCvAndViSPFiles)
   EXPECT_LT(worst, 2.0);
   EXPECT_GT(worst, 0.0);
   // A lens ViSP's model holds exactly stays in the XML alone (version 1).
-  rig.left.distortion = rig.right.distortion = pm::LensDistortion{{-0.2, 0, 0, 0, 0}};
+  rig.left.distortion = rig.right.distortion = pm::core::LensDistortion{{-0.2, 0, 0, 0, 0}};
   pm::io::saveRig(rig, d.file("rig1.json"), "cams1.xml");
   EXPECT_EQ(nlohmann::json::parse(pm::test::readText(d.file("rig1.json")))["version"], 1);
   EXPECT_DOUBLE_EQ(pm::io::loadRig(d.file("rig1.json")).left.distortion.coefficients[0], -0.2);
   // A pinhole rig is written as before: no distortion.
-  const pm::StereoRig lab = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig lab = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   EXPECT_TRUE(lab.left.distortion.isNone());
 }
 
@@ -372,7 +372,7 @@ TEST(RigCalibration, ASimulatedRigWithALensIsRecovered)
 {
   pm::calib::ChessBoard board;
   board.squareMm = board.marginMm = 25;
-  const pm::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
+  const pm::core::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
   pm::lab::SimulatedCalibrationParams sp;
   const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 60, sp);
   const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
@@ -395,7 +395,7 @@ TEST(RigCalibration, ASimulatedRigWithALensIsRecovered)
 TEST(RigCalibration, TooFewUsableViewsSayWhichAndWhy)
 {
   pm::calib::ChessBoard board;
-  const pm::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
+  const pm::core::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
   pm::sim::SceneParams sp;
   sp.shadows = pm::sim::ShadowMode::Off;
   const pm::sim::Scene scene(pm::sim::flatPrint(board.render(8.0), board.widthMm(), "board"), sp);
@@ -492,15 +492,15 @@ TEST(RigCalibration, OpenCvsRealStereoPairsAsOpenCvCalibratesThem)
                            " --right " + d.file("R_%d.png") + " --quiet --out " + d.file("check");
   const auto ok = runProgram("pm-calib-baseline", "--rig " + d.file("rig.json") + args);
   EXPECT_EQ(ok.status, 0) << ok.err;
-  pm::StereoRig longer = c.rig;
+  pm::core::StereoRig longer = c.rig;
   longer.left.hMc = vpHomogeneousMatrix(longer.left.hMc.getTranslationVector() * 1.05, longer.left.hMc.getRotationMatrix());
   longer.right.hMc = vpHomogeneousMatrix(longer.right.hMc.getTranslationVector() * 1.05, longer.right.hMc.getRotationMatrix());
   pm::io::saveRig(longer, d.file("longer.json"), "longer.xml");
   const auto bad = runProgram("pm-calib-baseline", "--rig " + d.file("longer.json") + args);
   EXPECT_EQ(bad.status, 3) << bad.err;
   // The same rig read as a pinhole (the lens dropped) does not agree: the false alarm the lens removes.
-  pm::StereoRig pin = c.rig;
-  pin.left.distortion = pin.right.distortion = pm::LensDistortion();
+  pm::core::StereoRig pin = c.rig;
+  pin.left.distortion = pin.right.distortion = pm::core::LensDistortion();
   pm::io::saveRig(pin, d.file("pin.json"), "pin.xml");
   EXPECT_EQ(runProgram("pm-calib-baseline", "--rig " + d.file("pin.json") + args).status, 3);
 }
@@ -514,7 +514,7 @@ TEST(PmCalibrateRig, WritesTheRigItsReportAndRefusesBadInput)
     EXPECT_TRUE(std::filesystem::exists(d.file(std::string("o/") + f))) << f;
   const auto s = nlohmann::json::parse(pm::test::readText(d.file("o/summary.json")));
   EXPECT_LT(s["truth"]["rotation_error_deg"].get<double>(), 0.3);
-  const pm::StereoRig rig = pm::io::loadRig(d.file("o/rig.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(d.file("o/rig.json"));
   EXPECT_FALSE(rig.left.distortion.isNone());
   EXPECT_NEAR(rig.baseline() * 1e3, 323, 2);
   // Bad input: no images, unequal lists, a missing file, too few views; nothing written.
@@ -540,7 +540,7 @@ TEST(TagBoard, DetectNumbersCornersAsFindMatchesThem)
   pm::sim::SceneParams sp;
   sp.shadows = pm::sim::ShadowMode::Off;
   const pm::sim::Scene scene(pm::sim::flatPrint(b.render(8.0), b.widthMm(), "board"), sp);
-  const pm::StereoRig rig = pm::lab::labRigWithLens(pm::LensDistortion());
+  const pm::core::StereoRig rig = pm::lab::labRigWithLens(pm::core::LensDistortion());
   for (double turn : {0.0, 0.8, 2.0, -2.5}) {
     const vpHomogeneousMatrix hMb(0.01, 0.02, 0.5, 0.1, -0.1, turn);
     vpImage<vpRGBa> I;
@@ -566,7 +566,7 @@ TEST(RigCalibration, ATagBoardCalibratesTheRigToo)
   b.cols = 5;
   b.tagSizeMm = 30;
   b.pitchMm = 40;
-  const pm::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
+  const pm::core::StereoRig truth = pm::lab::labRigWithLens(kBarrel);
   const auto pairs = pm::lab::renderCalibrationPairs(truth, b, 40, pm::lab::SimulatedCalibrationParams());
   const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, b);
   const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, truth);

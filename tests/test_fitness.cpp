@@ -26,13 +26,13 @@
 
 namespace {
 
-pm::StereoRig labRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
+pm::core::StereoRig labRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
 
 //! A model of (2 half + 1)^2 S_in points of hue \e hue on a grid of \e stepMm and \e nOut S_out points
 //! on a circle of 50 mm around them; background hue 210. The default: 49 S_in on 10 mm, 20 S_out.
-pm::PhotoModel gridModel(float hue, int half = 3, double stepMm = 10, int nOut = 20)
+pm::core::PhotoModel gridModel(float hue, int half = 3, double stepMm = 10, int nOut = 20)
 {
-  pm::PhotoModel m;
+  pm::core::PhotoModel m;
   m.distanceMm = 500;
   m.px = m.py = 754;
   m.u0 = 320;
@@ -42,14 +42,14 @@ pm::PhotoModel gridModel(float hue, int half = 3, double stepMm = 10, int nOut =
   m.backgroundHue = 210;
   for (int j = -half; j <= half; ++j)
     for (int i = -half; i <= half; ++i) {
-      pm::ModelPoint p;
+      pm::core::ModelPoint p;
       p.x = static_cast<float>(stepMm * i);
       p.y = static_cast<float>(stepMm * j);
       p.hue = hue;
       m.inner.push_back(p);
     }
   for (int k = 0; k < nOut; ++k) {
-    pm::ModelPoint p;
+    pm::core::ModelPoint p;
     p.x = static_cast<float>(50 * std::cos(k * M_PI / (nOut / 2.0)));
     p.y = static_cast<float>(50 * std::sin(k * M_PI / (nOut / 2.0)));
     p.hue = 210;
@@ -60,19 +60,19 @@ pm::PhotoModel gridModel(float hue, int half = 3, double stepMm = 10, int nOut =
 
 vpImage<vpRGBa> uniform(unsigned char r, unsigned char g, unsigned char b) { return vpImage<vpRGBa>(480, 640, vpRGBa(r, g, b)); }
 
-const pm::Phi kAhead{0, 0, 500, 0, 0, 0};
+const pm::core::Phi kAhead{0, 0, 500, 0, 0, 0};
 
 } // namespace
 
 TEST(Fitness, ExactScoresOnUniformImages)
 {
-  const pm::StereoRig rig = labRig();
-  const pm::PhotoModel m = gridModel(0.f); // a red model: 49 S_in, 20 S_out
-  pm::StereoFitness fit(rig, m);
+  const pm::core::StereoRig rig = labRig();
+  const pm::core::PhotoModel m = gridModel(0.f); // a red model: 49 S_in, 20 S_out
+  pm::core::StereoFitness fit(rig, m);
   const double n = 69;
   // All of the image is background (hue 210): S_in -0.005 each, S_out +0.1 each.
   fit.setImages(uniform(0, 127, 255), uniform(0, 127, 255));
-  EXPECT_NEAR(pm::hueDeg(vpRGBa(0, 127, 255)), 210.1f, 0.1f);
+  EXPECT_NEAR(pm::core::hueDeg(vpRGBa(0, 127, 255)), 210.1f, 0.1f);
   EXPECT_DOUBLE_EQ(fit.evaluate(kAhead), (49 * -0.005 + 20 * 0.1) / n);
   // All of it is the target's red: S_in +2, S_out -0.5.
   fit.setImages(uniform(255, 0, 0), uniform(255, 0, 0));
@@ -80,13 +80,13 @@ TEST(Fitness, ExactScoresOnUniformImages)
   // Green is neither: S_in 0, S_out -0.5.
   fit.setImages(uniform(0, 255, 0), uniform(0, 255, 0));
   EXPECT_DOUBLE_EQ(fit.evaluate(kAhead), (20 * -0.5) / n);
-  const pm::FitnessDetail d = fit.evaluateDetail(kAhead);
+  const pm::core::FitnessDetail d = fit.evaluateDetail(kAhead);
   EXPECT_EQ(d.countsLeft.inOther, 49);
   EXPECT_EQ(d.countsRight.outOther, 20);
   // Scores and tolerances are parameters.
-  pm::FitnessParams p;
+  pm::core::FitnessParams p;
   p.outOther = -1.0;
-  pm::StereoFitness fit2(rig, m, p);
+  pm::core::StereoFitness fit2(rig, m, p);
   fit2.setImages(uniform(0, 255, 0), uniform(0, 255, 0));
   EXPECT_DOUBLE_EQ(fit2.evaluate(kAhead), -20.0 / n);
 }
@@ -95,27 +95,27 @@ TEST(Fitness, EachCameraIsScoredWithTheViewNearestItsDirectionOnOneScale)
 {
   // A stereo model of two views: the left camera's (49 red S_in, 20 S_out) and the right camera's
   // (25 green S_in, 10 S_out), each with its camera's centre in the model frame at kAhead.
-  const pm::StereoRig rig = labRig();
-  pm::PhotoModel m = gridModel(0.f);
-  for (pm::ModelPoint &p : m.inner)
+  const pm::core::StereoRig rig = labRig();
+  pm::core::PhotoModel m = gridModel(0.f);
+  for (pm::core::ModelPoint &p : m.inner)
     p.z = -2;
-  const vpHomogeneousMatrix hMm = pm::toHomogeneousMatrix(kAhead);
+  const vpHomogeneousMatrix hMm = pm::core::toHomogeneousMatrix(kAhead);
   const vpHomogeneousMatrix mMcL = hMm.inverse() * rig.left.hMc, mMcR = hMm.inverse() * rig.right.hMc;
-  pm::ModelView right;
+  pm::core::ModelView right;
   for (unsigned i = 0; i < 3; ++i) {
     m.cameraMm[i] = mMcL[i][3] * 1e3;
     right.cameraMm[i] = mMcR[i][3] * 1e3;
   }
-  const pm::PhotoModel green = gridModel(120.f, 2, 8, 10);
+  const pm::core::PhotoModel green = gridModel(120.f, 2, 8, 10);
   right.inner = green.inner;
   right.outer = green.outer;
-  for (pm::ModelPoint &p : right.inner)
+  for (pm::core::ModelPoint &p : right.inner)
     p.z = -1;
   m.views.push_back(right);
-  pm::StereoFitness fit(rig, m);
+  pm::core::StereoFitness fit(rig, m);
   // The left image is red (the left view's S_in all match), the right one green (the right view's do).
   fit.setImages(uniform(255, 0, 0), uniform(0, 255, 0));
-  const pm::FitnessDetail d = fit.evaluateDetail(kAhead);
+  const pm::core::FitnessDetail d = fit.evaluateDetail(kAhead);
   EXPECT_EQ(d.countsLeft.inMatch, 49);
   EXPECT_EQ(d.countsLeft.outOther, 20);
   EXPECT_EQ(d.countsRight.inMatch, 25);
@@ -128,50 +128,50 @@ TEST(Fitness, EachCameraIsScoredWithTheViewNearestItsDirectionOnOneScale)
   EXPECT_EQ(fit.pointScores(kAhead, 1).size(), 35u);
   // Turned by 90 deg about y, both cameras look from the model's side: the right view's camera
   // (at +x) is the nearer to both.
-  const pm::Phi side{0, 0, 500, 0, std::sin(M_PI / 4), 0};
+  const pm::core::Phi side{0, 0, 500, 0, std::sin(M_PI / 4), 0};
   EXPECT_EQ(fit.pointScores(side, 0).size(), 35u);
   EXPECT_EQ(fit.pointScores(side, 1).size(), 35u);
-  const pm::Phi otherSide{0, 0, 500, 0, -std::sin(M_PI / 4), 0};
+  const pm::core::Phi otherSide{0, 0, 500, 0, -std::sin(M_PI / 4), 0};
   EXPECT_EQ(fit.pointScores(otherSide, 0).size(), 69u);
   EXPECT_EQ(fit.pointScores(otherSide, 1).size(), 69u);
   // Views are for stereo models only, and each needs its camera.
-  pm::PhotoModel flat = gridModel(0.f);
+  pm::core::PhotoModel flat = gridModel(0.f);
   flat.cameraMm[2] = -500;
   flat.views.push_back(right);
-  EXPECT_THROW(pm::StereoFitness(rig, flat), pm::Error);
-  pm::PhotoModel noCamera = m;
+  EXPECT_THROW(pm::core::StereoFitness(rig, flat), pm::core::Error);
+  pm::core::PhotoModel noCamera = m;
   noCamera.views[0].cameraMm[0] = noCamera.views[0].cameraMm[1] = noCamera.views[0].cameraMm[2] = 0;
-  EXPECT_THROW(pm::StereoFitness(rig, noCamera), pm::Error);
+  EXPECT_THROW(pm::core::StereoFitness(rig, noCamera), pm::core::Error);
 }
 
 TEST(Fitness, HueDistancesWrapAround)
 {
-  const pm::StereoRig rig = labRig();
-  pm::StereoFitness fit(rig, gridModel(355.f));
+  const pm::core::StereoRig rig = labRig();
+  pm::core::StereoFitness fit(rig, gridModel(355.f));
   fit.setImages(uniform(255, 42, 0), uniform(255, 42, 0)); // hue 10 deg: 15 deg from 355
-  EXPECT_NEAR(pm::hueDeg(vpRGBa(255, 42, 0)), 9.9f, 0.1f);
+  EXPECT_NEAR(pm::core::hueDeg(vpRGBa(255, 42, 0)), 9.9f, 0.1f);
   EXPECT_EQ(fit.evaluateDetail(kAhead).countsLeft.inMatch, 49);
-  pm::FitnessParams tight;
+  pm::core::FitnessParams tight;
   tight.inTolDeg = 10;
-  pm::StereoFitness fit2(rig, gridModel(355.f), tight);
+  pm::core::StereoFitness fit2(rig, gridModel(355.f), tight);
   fit2.setImages(uniform(255, 42, 0), uniform(255, 42, 0));
   EXPECT_EQ(fit2.evaluateDetail(kAhead).countsLeft.inMatch, 0);
 }
 
 TEST(Fitness, OffTheImagesIsFiniteAndScoresOffImage)
 {
-  const pm::StereoRig rig = labRig();
-  pm::StereoFitness fit(rig, gridModel(0.f));
+  const pm::core::StereoRig rig = labRig();
+  pm::core::StereoFitness fit(rig, gridModel(0.f));
   fit.setImages(uniform(255, 0, 0), uniform(255, 0, 0));
-  for (const pm::Phi &far : {pm::Phi{5000, 0, 500, 0, 0, 0}, pm::Phi{0, 0, -500, 0, 0, 0}, pm::Phi{0, 0, 1e9, 0, 0, 0},
-                             pm::Phi{0, 0, 0, 0, 0, 0}, pm::Phi{1e30, -1e30, 1e-30, 0.5, 0.5, 0.5}}) {
+  for (const pm::core::Phi &far : {pm::core::Phi{5000, 0, 500, 0, 0, 0}, pm::core::Phi{0, 0, -500, 0, 0, 0}, pm::core::Phi{0, 0, 1e9, 0, 0, 0},
+                             pm::core::Phi{0, 0, 0, 0, 0, 0}, pm::core::Phi{1e30, -1e30, 1e-30, 0.5, 0.5, 0.5}}) {
     const double f = fit.evaluate(far);
     EXPECT_TRUE(std::isfinite(f)) << far.toString();
   }
   EXPECT_DOUBLE_EQ(fit.evaluate({5000, 0, 500, 0, 0, 0}), 0.0);
-  pm::FitnessParams p;
+  pm::core::FitnessParams p;
   p.offImage = -1;
-  pm::StereoFitness fit2(rig, gridModel(0.f), p);
+  pm::core::StereoFitness fit2(rig, gridModel(0.f), p);
   fit2.setImages(uniform(255, 0, 0), uniform(255, 0, 0));
   EXPECT_DOUBLE_EQ(fit2.evaluate({5000, 0, 500, 0, 0, 0}), -1.0);
   EXPECT_DOUBLE_EQ(fit2.evaluate({0, 0, -500, 0, 0, 0}), -1.0); // behind the cameras
@@ -179,24 +179,24 @@ TEST(Fitness, OffTheImagesIsFiniteAndScoresOffImage)
 
 TEST(Fitness, InvalidInputIsRefused)
 {
-  const pm::StereoRig rig = labRig();
-  pm::StereoFitness fit(rig, gridModel(0.f));
-  EXPECT_THROW(fit.evaluate(kAhead), pm::Error); // no images yet
-  EXPECT_THROW(fit.setImages(vpImage<vpRGBa>(240, 320), uniform(0, 0, 0)), pm::Error);
+  const pm::core::StereoRig rig = labRig();
+  pm::core::StereoFitness fit(rig, gridModel(0.f));
+  EXPECT_THROW(fit.evaluate(kAhead), pm::core::Error); // no images yet
+  EXPECT_THROW(fit.setImages(vpImage<vpRGBa>(240, 320), uniform(0, 0, 0)), pm::core::Error);
   fit.setImages(uniform(0, 0, 0), uniform(0, 0, 0));
-  EXPECT_THROW(fit.evaluate({0, 0, 500, 0.8, 0.8, 0}), pm::Error);
-  EXPECT_THROW(fit.evaluate({NAN, 0, 500, 0, 0, 0}), pm::Error);
+  EXPECT_THROW(fit.evaluate({0, 0, 500, 0.8, 0.8, 0}), pm::core::Error);
+  EXPECT_THROW(fit.evaluate({NAN, 0, 500, 0, 0, 0}), pm::core::Error);
   // One invalid pose in a batch: refused before any thread starts.
-  std::vector<pm::Phi> batch(20, kAhead);
+  std::vector<pm::core::Phi> batch(20, kAhead);
   batch[13] = {0, 0, 500, 0.8, 0.8, 0};
   std::vector<double> out(batch.size());
-  EXPECT_THROW(fit.evaluate(batch.data(), batch.size(), out.data()), pm::Error);
-  pm::PhotoModel empty = gridModel(0.f);
+  EXPECT_THROW(fit.evaluate(batch.data(), batch.size(), out.data()), pm::core::Error);
+  pm::core::PhotoModel empty = gridModel(0.f);
   empty.inner.clear();
-  EXPECT_THROW(pm::StereoFitness(rig, empty), pm::Error);
-  pm::FitnessParams bad;
+  EXPECT_THROW(pm::core::StereoFitness(rig, empty), pm::core::Error);
+  pm::core::FitnessParams bad;
   bad.inTolDeg = -1;
-  EXPECT_THROW(pm::StereoFitness(rig, gridModel(0.f), bad), pm::Error);
+  EXPECT_THROW(pm::core::StereoFitness(rig, gridModel(0.f), bad), pm::core::Error);
 }
 
 TEST(HuePlane, MatchesThePerPixelFormula)
@@ -207,23 +207,23 @@ TEST(HuePlane, MatchesThePerPixelFormula)
   std::uniform_int_distribution<int> c(0, 255);
   for (unsigned k = 0; k < J.getSize(); ++k)
     J.bitmap[k] = vpRGBa(static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)));
-  pm::HuePlane plane;
+  pm::core::HuePlane plane;
   for (float minSat : {0.f, 0.1f, 0.5f}) { // the vectorised plane and the per-pixel formula agree to the bit
     plane.compute(J, minSat);
     for (unsigned v = 0; v < J.getHeight(); ++v)
       for (unsigned u = 0; u < J.getWidth(); ++u)
-        ASSERT_EQ(plane.at(u, v), pm::hueDeci(J[v][u], minSat)) << u << "," << v << " min saturation " << minSat;
+        ASSERT_EQ(plane.at(u, v), pm::core::hueDeci(J[v][u], minSat)) << u << "," << v << " min saturation " << minSat;
   }
   plane.compute(J);
   for (unsigned v = 0; v < J.getHeight(); ++v)
     for (unsigned u = 0; u < J.getWidth(); ++u) {
-      const pm::Hsv h = pm::rgbToHsv(J[v][u]);
+      const pm::core::Hsv h = pm::core::rgbToHsv(J[v][u]);
       if (h.s > 0) {
-        EXPECT_LE(pm::hueDistance(plane.at(u, v) / 10.f, h.h), 0.05f + 1e-4f);
+        EXPECT_LE(pm::core::hueDistance(plane.at(u, v) / 10.f, h.h), 0.05f + 1e-4f);
       }
     }
   plane.compute(vpImage<vpRGBa>(2, 2, vpRGBa(128, 128, 128)), 0.1f);
-  EXPECT_EQ(plane.at(1, 1), pm::HuePlane::kNoHue); // grey has no hue when a minimum saturation is set
+  EXPECT_EQ(plane.at(1, 1), pm::core::HuePlane::kNoHue); // grey has no hue when a minimum saturation is set
 }
 
 TEST(HuePlane, AWindowHoldsTheHueInsideAndNoHueOutsideWhateverCameBefore)
@@ -233,23 +233,23 @@ TEST(HuePlane, AWindowHoldsTheHueInsideAndNoHueOutsideWhateverCameBefore)
   std::uniform_int_distribution<int> c(0, 255);
   for (unsigned k = 0; k < J.getSize(); ++k)
     J.bitmap[k] = vpRGBa(static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)), static_cast<unsigned char>(c(rng)));
-  pm::HuePlane full, plane;
+  pm::core::HuePlane full, plane;
   full.compute(J, 0.1f);
-  auto expectWindow = [&](const pm::PixelRect &w, const std::vector<std::int64_t> &extra, const char *what) {
+  auto expectWindow = [&](const pm::core::PixelRect &w, const std::vector<std::int64_t> &extra, const char *what) {
     for (int v = 0; v < 48; ++v)
       for (int u = 0; u < 64; ++u) {
         const bool in = (u >= w.u0 && u < w.u1 && v >= w.v0 && v < w.v1) ||
                         std::find(extra.begin(), extra.end(), static_cast<std::int64_t>(v * 64 + u)) != extra.end();
         ASSERT_EQ(plane.at(static_cast<unsigned>(u), static_cast<unsigned>(v)),
-                  in ? full.at(static_cast<unsigned>(u), static_cast<unsigned>(v)) : pm::HuePlane::kNoHue)
+                  in ? full.at(static_cast<unsigned>(u), static_cast<unsigned>(v)) : pm::core::HuePlane::kNoHue)
             << what << " pixel " << u << "," << v;
       }
   };
   plane.compute(J, 0.1f); // the whole image first, then windows that overlap, move, shrink, pass the edges
-  const std::vector<pm::PixelRect> windows = {{10, 5, 40, 30}, {20, 15, 60, 47}, {-5, -3, 12, 9}, {30, 20, 31, 21}, {50, 40, 90, 80}, {}};
-  for (const pm::PixelRect &w : windows) {
+  const std::vector<pm::core::PixelRect> windows = {{10, 5, 40, 30}, {20, 15, 60, 47}, {-5, -3, 12, 9}, {30, 20, 31, 21}, {50, 40, 90, 80}, {}};
+  for (const pm::core::PixelRect &w : windows) {
     plane.compute(J, 0.1f, w);
-    const pm::PixelRect clipped = w.grown(0, 64, 48);
+    const pm::core::PixelRect clipped = w.grown(0, 64, 48);
     expectWindow(clipped, {}, "window");
     EXPECT_TRUE(plane.window().u0 == clipped.u0 && plane.window().v0 == clipped.v0 && plane.window().u1 == clipped.u1 &&
                 plane.window().v1 == clipped.v1);
@@ -262,20 +262,20 @@ TEST(HuePlane, AWindowHoldsTheHueInsideAndNoHueOutsideWhateverCameBefore)
   plane.compute(J, 0.1f, {30, 30, 35, 35});
   expectWindow({30, 30, 35, 35}, {}, "after the added pixels");
   const std::int64_t bad = 64 * 48;
-  EXPECT_THROW(plane.addPixels(J, 0.1f, &bad, 1), pm::Error);
-  EXPECT_THROW(plane.addPixels(vpImage<vpRGBa>(4, 4), 0.1f, extra.data(), 1), pm::Error);
+  EXPECT_THROW(plane.addPixels(J, 0.1f, &bad, 1), pm::core::Error);
+  EXPECT_THROW(plane.addPixels(vpImage<vpRGBa>(4, 4), 0.1f, extra.data(), 1), pm::core::Error);
 }
 
 //! The AVX2 and the scalar kernels give exactly the same F for every pose of \e ps.
-static void expectKernelsAgree(const pm::StereoFitness &fit, const std::vector<pm::Phi> &ps)
+static void expectKernelsAgree(const pm::core::StereoFitness &fit, const std::vector<pm::core::Phi> &ps)
 {
   std::vector<double> a(ps.size()), b(ps.size());
   fit.evaluate(ps.data(), ps.size(), a.data());
-  pm::StereoFitness::forceScalar(true);
+  pm::core::StereoFitness::forceScalar(true);
   fit.evaluate(ps.data(), ps.size(), b.data());
-  pm::StereoFitness::forceScalar(false);
+  pm::core::StereoFitness::forceScalar(false);
   for (std::size_t i = 0; i < ps.size(); ++i)
-    ASSERT_EQ(a[i], b[i]) << ps[i].toString() << " kernel " << pm::StereoFitness::kernelName();
+    ASSERT_EQ(a[i], b[i]) << ps[i].toString() << " kernel " << pm::core::StereoFitness::kernelName();
 }
 
 class FitnessOnC12 : public ::testing::Test
@@ -283,12 +283,12 @@ class FitnessOnC12 : public ::testing::Test
 protected:
   static void SetUpTestSuite()
   {
-    rig = new pm::StereoRig(labRig());
+    rig = new pm::core::StereoRig(labRig());
     const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
-    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
+    const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
     const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig->left.cam, 640, 480, 500);
-    fit = new pm::StereoFitness(*rig, sm.build.model);
-    model = new pm::PhotoModel(sm.build.model);
+    fit = new pm::core::StereoFitness(*rig, sm.build.model);
+    model = new pm::core::PhotoModel(sm.build.model);
     ims = new pm::sim::StereoImages(scene.renderStereo(*rig, hMo, 0));
     fit->setImages(ims->left, ims->right);
     truth = sm.truth(hMo);
@@ -300,26 +300,26 @@ protected:
     delete model;
     delete ims;
   }
-  static std::vector<pm::Phi> randomPoses(std::size_t n)
+  static std::vector<pm::core::Phi> randomPoses(std::size_t n)
   {
     std::mt19937 rng(123);
     std::uniform_real_distribution<double> pos(-180, 180), z(320, 680), e(-0.37, 0.37);
-    std::vector<pm::Phi> v;
+    std::vector<pm::core::Phi> v;
     for (std::size_t i = 0; i < n; ++i)
       v.push_back({pos(rng), pos(rng), z(rng), e(rng), e(rng), e(rng)});
     return v;
   }
-  static pm::StereoRig *rig;
-  static pm::StereoFitness *fit;
-  static pm::PhotoModel *model;
+  static pm::core::StereoRig *rig;
+  static pm::core::StereoFitness *fit;
+  static pm::core::PhotoModel *model;
   static pm::sim::StereoImages *ims;
-  static pm::Phi truth;
+  static pm::core::Phi truth;
 };
-pm::PhotoModel *FitnessOnC12::model = nullptr;
+pm::core::PhotoModel *FitnessOnC12::model = nullptr;
 pm::sim::StereoImages *FitnessOnC12::ims = nullptr;
-pm::StereoRig *FitnessOnC12::rig = nullptr;
-pm::StereoFitness *FitnessOnC12::fit = nullptr;
-pm::Phi FitnessOnC12::truth;
+pm::core::StereoRig *FitnessOnC12::rig = nullptr;
+pm::core::StereoFitness *FitnessOnC12::fit = nullptr;
+pm::core::Phi FitnessOnC12::truth;
 
 TEST_F(FitnessOnC12, Avx2AndScalarKernelsAgreeExactly)
 {
@@ -328,27 +328,27 @@ TEST_F(FitnessOnC12, Avx2AndScalarKernelsAgreeExactly)
 
 TEST_F(FitnessOnC12, HueWindowsAroundAPoseGiveItsFitnessAndAddHueUnderGivesAnyOther)
 {
-  pm::StereoFitness windowed(*rig, *model);
-  std::array<pm::PixelRect, 2> w;
+  pm::core::StereoFitness windowed(*rig, *model);
+  std::array<pm::core::PixelRect, 2> w;
   for (int cam = 0; cam < 2; ++cam)
     w[static_cast<std::size_t>(cam)] = windowed.footprint(truth, cam).grown(4, 640, 480);
   windowed.setImages(ims->left, ims->right, w);
-  pm::StereoFitness whole(*rig, *model);
+  pm::core::StereoFitness whole(*rig, *model);
   whole.setImages(ims->left, ims->right);
   // At the pose and near it (within the 4-pixel margin): F as on the whole images.
   EXPECT_DOUBLE_EQ(windowed.evaluate(truth), whole.evaluate(truth));
-  const pm::Phi near{truth.x + 1, truth.y - 1, truth.z, truth.e1, truth.e2, truth.e3};
+  const pm::core::Phi near{truth.x + 1, truth.y - 1, truth.z, truth.e1, truth.e2, truth.e3};
   EXPECT_DOUBLE_EQ(windowed.evaluate(near), whole.evaluate(near));
   // Far from it, the window's outside matches nothing: F differs, until its hue is added.
-  const pm::Phi far{truth.x + 120, truth.y + 60, truth.z, truth.e1, truth.e2, truth.e3};
+  const pm::core::Phi far{truth.x + 120, truth.y + 60, truth.z, truth.e1, truth.e2, truth.e3};
   EXPECT_NE(windowed.evaluate(far), whole.evaluate(far));
   windowed.addHueUnder(ims->left, ims->right, &far, 1);
   EXPECT_DOUBLE_EQ(windowed.evaluate(far), whole.evaluate(far));
   EXPECT_DOUBLE_EQ(windowed.evaluate(truth), whole.evaluate(truth));
   // A footprint holds every point that falls on the image.
   for (int cam = 0; cam < 2; ++cam) {
-    const pm::PixelRect fp = whole.footprint(truth, cam);
-    for (const pm::PointScore &s : whole.pointScores(truth, cam))
+    const pm::core::PixelRect fp = whole.footprint(truth, cam);
+    for (const pm::core::PointScore &s : whole.pointScores(truth, cam))
       if (s.u >= -0.5 && s.v >= -0.5 && s.u < 639.5 && s.v < 479.5) {
         EXPECT_GE(std::lround(s.u), fp.u0);
         EXPECT_LT(std::lround(s.u), fp.u1);
@@ -356,7 +356,7 @@ TEST_F(FitnessOnC12, HueWindowsAroundAPoseGiveItsFitnessAndAddHueUnderGivesAnyOt
         EXPECT_LT(std::lround(s.v), fp.v1);
       }
   }
-  EXPECT_THROW(windowed.addHueUnder(vpImage<vpRGBa>(4, 4), vpImage<vpRGBa>(4, 4), &truth, 1), pm::Error);
+  EXPECT_THROW(windowed.addHueUnder(vpImage<vpRGBa>(4, 4), vpImage<vpRGBa>(4, 4), &truth, 1), pm::core::Error);
 }
 
 TEST_F(FitnessOnC12, ThreadSafeAndBatchEqualsSingle)
@@ -381,7 +381,7 @@ TEST_F(FitnessOnC12, TruthBeatsPosesThirtyMillimetresOrOneTenthAway)
   const double fTruth = fit->evaluate(truth);
   for (std::size_t k = 0; k < 6; ++k)
     for (double s : {-1.0, 1.0}) {
-      pm::Phi p = truth;
+      pm::core::Phi p = truth;
       p[k] += s * (k < 3 ? 30.0 : 0.1);
       EXPECT_GT(fTruth, fit->evaluate(p)) << "variable " << k << " moved by " << s;
     }
@@ -400,22 +400,22 @@ struct MapErrors
 
 MapErrors mapErrors(const std::string &code, double reliefScale)
 {
-  const pm::StereoRig rig = labRig();
+  const pm::core::StereoRig rig = labRig();
   pm::sim::TargetShape shape = pm::sim::makeTarget(code, 0.5);
   shape.scaleRelief(reliefScale);
   const pm::sim::Scene scene(shape);
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
   const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
-  pm::StereoFitness fit(rig, sm.build.model);
+  pm::core::StereoFitness fit(rig, sm.build.model);
   const auto im = scene.renderStereo(rig, hMo, 0);
   fit.setImages(im.left, im.right);
-  const pm::Phi t = sm.truth(hMo);
-  const auto specs = pm::paperFitnessMaps();
-  pm::FitnessMap m[4];
+  const pm::core::Phi t = sm.truth(hMo);
+  const auto specs = pm::core::paperFitnessMaps();
+  pm::core::FitnessMap m[4];
   for (int i = 0; i < 4; ++i)
-    m[i] = pm::computeFitnessMap(fit, t, specs[static_cast<std::size_t>(i)]);
-  auto reproj = [&](const pm::FitnessMap &mm) {
-    pm::Phi p = t;
+    m[i] = pm::core::computeFitnessMap(fit, t, specs[static_cast<std::size_t>(i)]);
+  auto reproj = [&](const pm::core::FitnessMap &mm) {
+    pm::core::Phi p = t;
     p[mm.spec.a] = mm.peakA;
     p[mm.spec.b] = mm.peakB;
     return fit.reprojectionRms(p, t);
@@ -424,7 +424,7 @@ MapErrors mapErrors(const std::string &code, double reliefScale)
   const double fTruth = fit.evaluate(t);
   for (std::size_t k = 0; k < 6; ++k)
     for (double s : {-1.0, 1.0}) {
-      pm::Phi p = t;
+      pm::core::Phi p = t;
       p[k] += s * (k < 3 ? 30.0 : 0.1);
       const double f = fit.evaluate(p);
       if (k < 3)
@@ -493,22 +493,22 @@ class FitnessOnC12Stereo : public ::testing::Test
 protected:
   static void SetUpTestSuite()
   {
-    rig = new pm::StereoRig(labRig());
+    rig = new pm::core::StereoRig(labRig());
     const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
-    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
-    pm::StereoModelParams twoViews; // the left and the right camera's views
+    const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
+    pm::model::StereoModelParams twoViews; // the left and the right camera's views
     twoViews.rightView = true;
     const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, *rig, 500, twoViews);
-    model = new pm::PhotoModel(sm.build.model);
-    fit = new pm::StereoFitness(*rig, *model);
+    model = new pm::core::PhotoModel(sm.build.model);
+    fit = new pm::core::StereoFitness(*rig, *model);
     const auto im = scene.renderStereo(*rig, hMo, 0);
     fit->setImages(im.left, im.right);
     truth = sm.truth(hMo);
     // The one-view model (the left photo's points for both cameras, one pair of photos).
-    pm::StereoModelParams leftOnly;
+    pm::model::StereoModelParams leftOnly;
     leftOnly.rightView = false;
     const auto mv = pm::sim::makeSimulatedStereoPhotoModel(scene, *rig, 500, leftOnly);
-    oneView = new pm::StereoFitness(*rig, mv.build.model);
+    oneView = new pm::core::StereoFitness(*rig, mv.build.model);
     oneView->setImages(im.left, im.right);
     truthOneView = mv.truth(hMo);
   }
@@ -519,24 +519,24 @@ protected:
     delete model;
     delete rig;
   }
-  static pm::StereoRig *rig;
-  static pm::PhotoModel *model;
-  static pm::StereoFitness *fit, *oneView;
-  static pm::Phi truth, truthOneView;
+  static pm::core::StereoRig *rig;
+  static pm::core::PhotoModel *model;
+  static pm::core::StereoFitness *fit, *oneView;
+  static pm::core::Phi truth, truthOneView;
 };
-pm::StereoRig *FitnessOnC12Stereo::rig = nullptr;
-pm::PhotoModel *FitnessOnC12Stereo::model = nullptr;
-pm::StereoFitness *FitnessOnC12Stereo::fit = nullptr;
-pm::StereoFitness *FitnessOnC12Stereo::oneView = nullptr;
-pm::Phi FitnessOnC12Stereo::truth;
-pm::Phi FitnessOnC12Stereo::truthOneView;
+pm::core::StereoRig *FitnessOnC12Stereo::rig = nullptr;
+pm::core::PhotoModel *FitnessOnC12Stereo::model = nullptr;
+pm::core::StereoFitness *FitnessOnC12Stereo::fit = nullptr;
+pm::core::StereoFitness *FitnessOnC12Stereo::oneView = nullptr;
+pm::core::Phi FitnessOnC12Stereo::truth;
+pm::core::Phi FitnessOnC12Stereo::truthOneView;
 
 TEST_F(FitnessOnC12Stereo, Avx2AndScalarKernelsAgreeExactlyWithDepth)
 {
   ASSERT_TRUE(fit->hasDepth());
   std::mt19937 rng(321);
   std::uniform_real_distribution<double> pos(-180, 180), z(320, 680), e(-0.37, 0.37);
-  std::vector<pm::Phi> ps;
+  std::vector<pm::core::Phi> ps;
   for (int i = 0; i < 2000; ++i)
     ps.push_back({pos(rng), pos(rng), z(rng), e(rng), e(rng), e(rng)});
   expectKernelsAgree(*fit, ps);
@@ -544,18 +544,18 @@ TEST_F(FitnessOnC12Stereo, Avx2AndScalarKernelsAgreeExactlyWithDepth)
 
 TEST_F(FitnessOnC12Stereo, PointsAreProjectedWithTheirDepthAsViSPDoes)
 {
-  const pm::Phi phi{5, -8, 520, 0.05, -0.1, 0.2};
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(phi);
+  const pm::core::Phi phi{5, -8, 520, 0.05, -0.1, 0.2};
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(phi);
   for (int cam = 0; cam < 2; ++cam) {
-    const pm::RigCamera &c = cam ? rig->right : rig->left;
+    const pm::core::RigCamera &c = cam ? rig->right : rig->left;
     // The left camera is scored with the left photo's points, the right one with the right's.
     ASSERT_EQ(model->views.size(), 1u);
-    const std::vector<pm::ModelPoint> &in = cam ? model->views[0].inner : model->inner;
-    const std::vector<pm::ModelPoint> &out = cam ? model->views[0].outer : model->outer;
+    const std::vector<pm::core::ModelPoint> &in = cam ? model->views[0].inner : model->inner;
+    const std::vector<pm::core::ModelPoint> &out = cam ? model->views[0].outer : model->outer;
     const auto scores = fit->pointScores(phi, cam);
     ASSERT_EQ(scores.size(), in.size() + out.size());
     for (std::size_t i = 0; i < scores.size(); ++i) {
-      const pm::ModelPoint &p = i < in.size() ? in[i] : out[i - in.size()];
+      const pm::core::ModelPoint &p = i < in.size() ? in[i] : out[i - in.size()];
       vpPoint P(p.x * 1e-3, p.y * 1e-3, p.z * 1e-3);
       P.track(c.cMh() * hMo);
       double u = 0, v = 0;
@@ -575,7 +575,7 @@ TEST_F(FitnessOnC12Stereo, PeakIsAtTheTruthInDepthAndTilt)
   auto argmax = [&](int k, double half, double step) {
     double best = -1e9, at = 0;
     for (double d = -half; d <= half + 1e-9; d += step) {
-      pm::Phi p = truthOneView;
+      pm::core::Phi p = truthOneView;
       p[static_cast<std::size_t>(k)] += d;
       const double f = oneView->evaluate(p);
       if (f > best) {
@@ -592,15 +592,15 @@ TEST_F(FitnessOnC12Stereo, PeakIsAtTheTruthInDepthAndTilt)
 
 TEST(SmoothFitness, EqualsTheFitnessWhereEveryPixelScoresAlike)
 {
-  const pm::StereoRig rig = labRig();
-  pm::StereoFitness fit(rig, gridModel(0.f));
+  const pm::core::StereoRig rig = labRig();
+  pm::core::StereoFitness fit(rig, gridModel(0.f));
   for (const vpImage<vpRGBa> &im : {uniform(0, 127, 255), uniform(255, 0, 0), uniform(0, 255, 0)}) {
     fit.setImages(im, im);
-    for (const pm::Phi &p : {kAhead, pm::Phi{3.3, -7.1, 480.2, 0.05, -0.02, 0.3}})
+    for (const pm::core::Phi &p : {kAhead, pm::core::Phi{3.3, -7.1, 480.2, 0.05, -0.02, 0.3}})
       EXPECT_NEAR(fit.evaluateSmooth(p), fit.evaluate(p), 1e-12);
   }
   EXPECT_DOUBLE_EQ(fit.evaluateSmooth({5000, 0, 500, 0, 0, 0}), 0.0); // off the images
-  EXPECT_THROW(fit.evaluateSmooth({0, 0, 500, 0.8, 0.8, 0}), pm::Error);
+  EXPECT_THROW(fit.evaluateSmooth({0, 0, 500, 0.8, 0.8, 0}), pm::core::Error);
 }
 
 TEST_F(FitnessOnC12, SmoothFitnessIsContinuousWhereTheFitnessIsAStaircase)
@@ -611,9 +611,9 @@ TEST_F(FitnessOnC12, SmoothFitnessIsContinuousWhereTheFitnessIsAStaircase)
   auto largestChange = [&](double h, bool smooth) {
     double m = 0;
     for (int i = 0; i < 300; ++i) {
-      pm::Phi a = truth;
+      pm::core::Phi a = truth;
       a.x += 0.02 * i; // 0.02 mm is about 1/30 px at 500 mm
-      pm::Phi b = a;
+      pm::core::Phi b = a;
       b.x += h;
       m = std::max(m, smooth ? std::fabs(fit->evaluateSmooth(b) - fit->evaluateSmooth(a)) : std::fabs(fit->evaluate(b) - fit->evaluate(a)));
     }
@@ -633,28 +633,28 @@ TEST(SmoothFitness, ItsLocalSearchFindsTheBoxFromTwoMillimetresAndADegreeAway)
   // The poster box's stereo model (its depth exact to a fraction of a millimetre): RM-GA's
   // staircase fitness is flat over about a degree of tilt; the simplex on the smooth score climbs
   // back to the truth from a pose 2 mm and 1 deg off.
-  const pm::StereoRig rig = labRig();
+  const pm::core::StereoRig rig = labRig();
   const pm::sim::Scene box(pm::sim::makeTarget("R1", 0.25));
-  pm::StereoModelParams leftOnly; // the one-view model (with the right camera's view: 0.7 mm, 0.35 deg)
+  pm::model::StereoModelParams leftOnly; // the one-view model (with the right camera's view: 0.7 mm, 0.35 deg)
   leftOnly.rightView = false;
   const auto sm = pm::sim::makeSimulatedStereoPhotoModel(box, rig, 500, leftOnly);
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({8, -6, 520, 0.03, -0.02, 0.04});
-  const pm::Phi truth = sm.truth(hMo);
-  pm::StereoFitness fit(rig, sm.build.model, pm::trackerFitnessDefaults());
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({8, -6, 520, 0.03, -0.02, 0.04});
+  const pm::core::Phi truth = sm.truth(hMo);
+  pm::core::StereoFitness fit(rig, sm.build.model, pm::tracker::trackerFitnessDefaults());
   const auto im = box.renderStereo(rig, hMo, 0);
   fit.setImages(im.left, im.right);
-  pm::StereoObjective smooth(fit, pm::StereoObjective::Score::Smooth);
-  auto rotationDeg = [](const pm::Phi &a, const pm::Phi &b) {
-    return (pm::toHomogeneousMatrix(a).inverse() * pm::toHomogeneousMatrix(b)).getThetaUVector().getTheta() * 180 / M_PI;
+  pm::rmga::StereoObjective smooth(fit, pm::rmga::StereoObjective::Score::Smooth);
+  auto rotationDeg = [](const pm::core::Phi &a, const pm::core::Phi &b) {
+    return (pm::core::toHomogeneousMatrix(a).inverse() * pm::core::toHomogeneousMatrix(b)).getThetaUVector().getTheta() * 180 / M_PI;
   };
-  pm::Phi start = truth;
+  pm::core::Phi start = truth;
   start.x += 1.2;
   start.z -= 1.6;
   start.e1 += 0.0087 * 0.8; // about 0.8 deg
   start.e2 -= 0.0087 * 0.6;
-  pm::LocalSimplexParams p;
+  pm::rmga::LocalSimplexParams p;
   p.maxEvaluations = 300;
-  const pm::LocalSimplexResult r = pm::refineLocalSimplex(smooth, start, p);
+  const pm::rmga::LocalSimplexResult r = pm::rmga::refineLocalSimplex(smooth, start, p);
   const double dPos = std::hypot(r.best.x - truth.x, r.best.y - truth.y, r.best.z - truth.z);
   EXPECT_NEAR(std::hypot(start.x - truth.x, start.z - truth.z), 2.0, 0.01);
   EXPECT_NEAR(rotationDeg(start, truth), 1.0, 0.05);
@@ -662,9 +662,9 @@ TEST(SmoothFitness, ItsLocalSearchFindsTheBoxFromTwoMillimetresAndADegreeAway)
   EXPECT_LT(rotationDeg(r.best, truth), 0.3);
   // The climb along the smooth score's gradient (the tracker's, climbSmooth) gets there in 24
   // evaluations instead of 300.
-  pm::SmoothAscentParams a;
+  pm::rmga::SmoothAscentParams a;
   a.maxEvaluations = 24;
-  const pm::SmoothAscentResult c = pm::climbSmooth(smooth, &start, 1, a);
+  const pm::rmga::SmoothAscentResult c = pm::rmga::climbSmooth(smooth, &start, 1, a);
   EXPECT_LE(c.evaluations, 24);
   EXPECT_GE(c.score, r.fitness);
   EXPECT_LT(std::hypot(c.best.x - truth.x, c.best.y - truth.y, c.best.z - truth.z), 0.5);
@@ -680,7 +680,7 @@ TEST_F(FitnessOnC12, SmoothGradientIsTheSmoothScoresSlopeAndItsValueTheSmoothSco
   std::normal_distribution<double> n01;
   int checked = 0;
   for (int trial = 0; trial < 12; ++trial) {
-    pm::Phi q = truth;
+    pm::core::Phi q = truth;
     q.x += 2 * n01(rng), q.y += 2 * n01(rng), q.z += 4 * n01(rng);
     q.e1 += 0.01 * n01(rng), q.e2 += 0.01 * n01(rng), q.e3 += 0.01 * n01(rng);
     double g[6], M[36];
@@ -696,8 +696,8 @@ TEST_F(FitnessOnC12, SmoothGradientIsTheSmoothScoresSlopeAndItsValueTheSmoothSco
     double plus[6], minus[6], unused[6];
     for (int k = 0; k < 6; ++k)
       plus[k] = h * d[k], minus[k] = -h * d[k];
-    const double fd = (fit->evaluateSmoothGradient(pm::applyTwist(q, plus), unused) -
-                       fit->evaluateSmoothGradient(pm::applyTwist(q, minus), unused)) / (2 * h);
+    const double fd = (fit->evaluateSmoothGradient(pm::core::applyTwist(q, plus), unused) -
+                       fit->evaluateSmoothGradient(pm::core::applyTwist(q, minus), unused)) / (2 * h);
     // Piecewise bilinear: a few points may cross a pixel edge within +-h.
     EXPECT_NEAR(fd, slope, 0.05 * std::fabs(slope) + 2e-4) << "trial " << trial;
     checked += std::fabs(slope) > 1e-3;
@@ -708,17 +708,17 @@ TEST_F(FitnessOnC12, SmoothGradientIsTheSmoothScoresSlopeAndItsValueTheSmoothSco
   EXPECT_DOUBLE_EQ(fit->evaluateSmoothGradient({5000, 0, 500, 0, 0, 0}, g), 0.0);
   for (double x : g)
     EXPECT_EQ(x, 0.0);
-  EXPECT_THROW(fit->evaluateSmoothGradient({0, 0, 500, 0.8, 0.8, 0}, g), pm::Error);
+  EXPECT_THROW(fit->evaluateSmoothGradient({0, 0, 500, 0.8, 0.8, 0}, g), pm::core::Error);
 }
 
 TEST_F(FitnessOnC12, SmoothGradientKernelsAgreeAndTheMetricIsTheMeanImageMotion)
 {
-  const pm::Phi q{truth.x + 1.5, truth.y - 1, truth.z + 3, truth.e1 + 0.004, truth.e2 - 0.006, truth.e3 + 0.003};
+  const pm::core::Phi q{truth.x + 1.5, truth.y - 1, truth.z + 3, truth.e1 + 0.004, truth.e2 - 0.006, truth.e3 + 0.003};
   double gv[6], Mv[36], gs[6], Ms[36];
   const double sv = fit->evaluateSmoothGradient(q, gv, Mv);
-  pm::StereoFitness::forceScalar(true);
+  pm::core::StereoFitness::forceScalar(true);
   const double ss = fit->evaluateSmoothGradient(q, gs, Ms);
-  pm::StereoFitness::forceScalar(false);
+  pm::core::StereoFitness::forceScalar(false);
   EXPECT_NEAR(sv, ss, 1e-5);
   for (int k = 0; k < 6; ++k)
     EXPECT_NEAR(gv[k], gs[k], 1e-4 * (std::fabs(gs[k]) + 1e-3)) << k;
@@ -733,13 +733,13 @@ TEST_F(FitnessOnC12, SmoothGradientKernelsAgreeAndTheMetricIsTheMeanImageMotion)
     for (int r = 0; r < 6; ++r)
       for (int c = 0; c < 6; ++c)
         predicted += d[r] * Mv[6 * r + c] * d[c];
-    const pm::Phi moved = pm::applyTwist(q, d);
+    const pm::core::Phi moved = pm::core::applyTwist(q, d);
     double sum = 0;
     int n = 0;
     for (int cam = 0; cam < 2; ++cam) {
       const auto a = fit->pointScores(q, cam), b = fit->pointScores(moved, cam);
       for (std::size_t i = 0; i < a.size(); ++i)
-        if (a[i].cls != pm::PointScore::Off) {
+        if (a[i].cls != pm::core::PointScore::Off) {
           sum += (a[i].u - b[i].u) * (a[i].u - b[i].u) + (a[i].v - b[i].v) * (a[i].v - b[i].v);
           ++n;
         }
@@ -762,15 +762,15 @@ TEST_F(FitnessOnC12, EarlyRejectionScoresHopelessPosesOnAQuarterAndTheOthersExac
       ++rejected;
       EXPECT_LT(early[i], threshold);
       EXPECT_EQ(early[i], coarse[i]);
-      EXPECT_NEAR(cost[i], 1.0 / pm::StereoFitness::kRejectStride, 0.01);
+      EXPECT_NEAR(cost[i], 1.0 / pm::core::StereoFitness::kRejectStride, 0.01);
     } else {
       EXPECT_EQ(early[i], exact[i]) << i; // not rejected: F itself
     }
-    EXPECT_NEAR(coarseCost[i], 1.0 / pm::StereoFitness::kRejectStride, 0.01);
+    EXPECT_NEAR(coarseCost[i], 1.0 / pm::core::StereoFitness::kRejectStride, 0.01);
   }
   EXPECT_GT(rejected, 150); // random poses: most are hopeless
   // The coarse score is an estimate of F: close to it where the model lies on the target.
-  const pm::Phi near[3] = {truth, {truth.x + 3, truth.y, truth.z, truth.e1, truth.e2, truth.e3}, {truth.x, truth.y - 4, truth.z + 8, truth.e1, truth.e2, truth.e3}};
+  const pm::core::Phi near[3] = {truth, {truth.x + 3, truth.y, truth.z, truth.e1, truth.e2, truth.e3}, {truth.x, truth.y - 4, truth.z + 8, truth.e1, truth.e2, truth.e3}};
   double f[3], c[3], k[3];
   fit->evaluate(near, 3, f);
   fit->evaluate(near, 3, c, 1e300, k);

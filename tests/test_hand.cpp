@@ -20,9 +20,9 @@ using pm::test::errorOf;
 
 namespace {
 
-const pm::StereoRig &rig()
+const pm::core::StereoRig &rig()
 {
-  static const pm::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  static const pm::core::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   return r;
 }
 
@@ -45,7 +45,7 @@ double deg(const vpHomogeneousMatrix &e) { return e.getThetaUVector().getTheta()
 TEST(HandPass, FromTheArmsOwnCamerasItStopsWhereTheLabsPassDoesTakesTheBackgroundsAndComesBack)
 {
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-  pm::PassPlan plan;
+  pm::model::PassPlan plan;
   plan.views = 8;
   plan.ringsDeg = {30};
   plan.distanceMm = 500;
@@ -58,7 +58,7 @@ TEST(HandPass, FromTheArmsOwnCamerasItStopsWhereTheLabsPassDoesTakesTheBackgroun
     ++asked;
     cameras.setTargetPresent(false);
   };
-  const std::vector<pm::PassView> views = pm::hand::recordPass(arm, cameras, plan, rec);
+  const std::vector<pm::model::PassView> views = pm::hand::recordPass(arm, cameras, plan, rec);
   const pm::lab::LabPass lab = pm::lab::runLabPass(scene, rig(), plan, labArm);
   ASSERT_EQ(views.size(), lab.views.size());
   EXPECT_EQ(asked, 1);
@@ -96,15 +96,15 @@ TEST(HandLoop, KeepsAMovingTargetWhereItWasFirstFoundAndHoldsTheArmUntilThen)
   // The Viper850's own all-around model of the crab, the crab then moving in front of the hand
   // (50 mm across, 40 mm up and 60 mm nearer, back), the arm servoed from its own cameras.
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-  const pm::sim::SimulatedPhotoModel sm = pm::lab::makeSimulatedAllAroundModel(scene, rig(), pm::PassPlan(), "viper850");
+  const pm::sim::SimulatedPhotoModel sm = pm::lab::makeSimulatedAllAroundModel(scene, rig(), pm::model::PassPlan(), "viper850");
   pm::robot::SteppedArm arm(pm::robot::makeArmModel("viper850"));
   const vpColVector q0 = arm.q();
   const vpHomogeneousMatrix fMh0 = arm.fMh();
   const pm::sim::Trajectory steps({{0, 0, 500, 0, 0, 0}, {50, 0, 500, 0, 0, 0}, {50, -40, 440, 0, 0, 0}, {0, 0, 500, 0, 0, 0}},
                                   1.5, 1.5);
-  pm::lab::ArmCameraSource cameras(scene, rig(), arm, [&](double t) { return fMh0 * pm::toHomogeneousMatrix(steps.at(t)); },
+  pm::lab::ArmCameraSource cameras(scene, rig(), arm, [&](double t) { return fMh0 * pm::core::toHomogeneousMatrix(steps.at(t)); },
                                    30, static_cast<long>(steps.duration() * 30) + 1);
-  pm::hand::HandLoop loop(rig(), sm.build.model, pm::TrackerParams(), pm::ServoParams(), pm::hand::GuardParams(), cameras, arm);
+  pm::hand::HandLoop loop(rig(), sm.build.model, pm::tracker::TrackerParams(), pm::servo::ServoParams(), pm::hand::GuardParams(), cameras, arm);
   loop.keepWhereFound();
   pm::hand::HandFrame f;
   long frames = 0, servoed = 0, found = -1;

@@ -19,9 +19,9 @@ TEST(Hue, AgreesWithViSPRGBaToHSV)
   std::vector<double> h(n), s(n), v(n);
   vpImageConvert::RGBaToHSV(reinterpret_cast<unsigned char *>(I.bitmap), h.data(), s.data(), v.data(), n);
   for (unsigned i = 0; i < n; ++i) {
-    const pm::Hsv o = pm::rgbToHsv(I.bitmap[i]);
+    const pm::core::Hsv o = pm::core::rgbToHsv(I.bitmap[i]);
     if (o.s > 0) { // ViSP's hue of a grey pixel is arbitrary; ours is 0
-      EXPECT_NEAR(pm::hueDistance(o.h, static_cast<float>(h[i] * 360.0)), 0.f, 1e-3f) << i;
+      EXPECT_NEAR(pm::core::hueDistance(o.h, static_cast<float>(h[i] * 360.0)), 0.f, 1e-3f) << i;
     }
     EXPECT_NEAR(o.s, s[i], 1e-5);
     EXPECT_NEAR(o.v, v[i], 1e-5);
@@ -30,33 +30,33 @@ TEST(Hue, AgreesWithViSPRGBaToHSV)
 
 TEST(Hue, PrimaryColours)
 {
-  EXPECT_FLOAT_EQ(pm::hueDeg(vpRGBa(255, 0, 0)), 0.f);
-  EXPECT_FLOAT_EQ(pm::hueDeg(vpRGBa(0, 255, 0)), 120.f);
-  EXPECT_FLOAT_EQ(pm::hueDeg(vpRGBa(0, 0, 255)), 240.f);
-  EXPECT_FLOAT_EQ(pm::hueDeg(vpRGBa(255, 0, 255)), 300.f);
-  EXPECT_FLOAT_EQ(pm::rgbToHsv(vpRGBa(128, 128, 128)).s, 0.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDeg(vpRGBa(255, 0, 0)), 0.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDeg(vpRGBa(0, 255, 0)), 120.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDeg(vpRGBa(0, 0, 255)), 240.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDeg(vpRGBa(255, 0, 255)), 300.f);
+  EXPECT_FLOAT_EQ(pm::core::rgbToHsv(vpRGBa(128, 128, 128)).s, 0.f);
 }
 
 TEST(Hue, DistanceWrapsAround)
 {
-  EXPECT_FLOAT_EQ(pm::hueDistance(0.f, 359.f), 1.f);
-  EXPECT_FLOAT_EQ(pm::hueDistance(359.f, 0.f), 1.f);
-  EXPECT_FLOAT_EQ(pm::hueDistance(10.f, 350.f), 20.f);
-  EXPECT_FLOAT_EQ(pm::hueDistance(0.f, 180.f), 180.f);
-  EXPECT_FLOAT_EQ(pm::hueDistance(90.f, 120.f), 30.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDistance(0.f, 359.f), 1.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDistance(359.f, 0.f), 1.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDistance(10.f, 350.f), 20.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDistance(0.f, 180.f), 180.f);
+  EXPECT_FLOAT_EQ(pm::core::hueDistance(90.f, 120.f), 30.f);
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(0.f, 360.f);
   for (int i = 0; i < 1000; ++i) {
     const float a = u(rng), b = u(rng);
-    EXPECT_FLOAT_EQ(pm::hueDistance(a, b), pm::hueDistance(b, a));
-    EXPECT_LE(pm::hueDistance(a, b), 180.f);
-    EXPECT_GE(pm::hueDistance(a, b), 0.f);
+    EXPECT_FLOAT_EQ(pm::core::hueDistance(a, b), pm::core::hueDistance(b, a));
+    EXPECT_LE(pm::core::hueDistance(a, b), 180.f);
+    EXPECT_GE(pm::core::hueDistance(a, b), 0.f);
   }
 }
 
 TEST(Hue, CircularMeanAcrossZero)
 {
-  EXPECT_NEAR(pm::hueDistance(pm::circularMeanHue({350.f, 10.f}), 0.f), 0.f, 1e-4f);
-  EXPECT_NEAR(pm::circularMeanHue({200.f, 220.f}), 210.f, 1e-4f);
-  EXPECT_FLOAT_EQ(pm::circularMeanHue({}), 0.f);
+  EXPECT_NEAR(pm::core::hueDistance(pm::core::circularMeanHue({350.f, 10.f}), 0.f), 0.f, 1e-4f);
+  EXPECT_NEAR(pm::core::circularMeanHue({200.f, 220.f}), 210.f, 1e-4f);
+  EXPECT_FLOAT_EQ(pm::core::circularMeanHue({}), 0.f);
 }

@@ -68,7 +68,7 @@ TEST(ImageFile, FuzzFindingsAreRefusedWithAnError)
       {"text", "hello"}};
   for (const auto &[what, bytes] : bad) {
     writeBytes(d.file("image"), bytes);
-    EXPECT_THROW(pm::io::readColorImage(d.file("image")), pm::Error) << what;
+    EXPECT_THROW(pm::io::readColorImage(d.file("image")), pm::core::Error) << what;
   }
   // ViSP's reader hung on this one; it is a valid 8 x 6 PPM of maximum value 8 (the bytes
   // "2\n255\n" are its first pixels), read as such, each byte scaled by 255 / 8.
@@ -141,5 +141,5 @@ TEST(StagedFiles, WriteTextFileReplacesAWholeFileOrNothing)
   pm::io::writeTextFile(d.file("t.txt"), "two");
   EXPECT_EQ(pm::test::readText(d.file("t.txt")), "two");
   EXPECT_EQ(namesIn(d.path()), (std::vector<std::string>{"t.txt"}));
-  EXPECT_THROW(pm::io::writeTextFile(d.file("no/such/folder/t.txt"), "x"), pm::Error);
+  EXPECT_THROW(pm::io::writeTextFile(d.file("no/such/folder/t.txt"), "x"), pm::core::Error);
 }

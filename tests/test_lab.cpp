@@ -31,18 +31,18 @@ using pm::test::TempDir;
 TEST(Statistics, PercentileIsTheNearestRank)
 {
   const std::vector<double> v{5, 1, 4, 2, 3};
-  EXPECT_EQ(pm::percentile(v, 0.99), 5);
-  EXPECT_EQ(pm::percentile(v, 1.0), 5);
-  EXPECT_EQ(pm::percentile(v, 0.5), 3); // ceil(2.5) = 3rd smallest
-  EXPECT_EQ(pm::percentile(v, 0.2), 1);
-  EXPECT_EQ(pm::percentile(v, 0.21), 2);
+  EXPECT_EQ(pm::core::percentile(v, 0.99), 5);
+  EXPECT_EQ(pm::core::percentile(v, 1.0), 5);
+  EXPECT_EQ(pm::core::percentile(v, 0.5), 3); // ceil(2.5) = 3rd smallest
+  EXPECT_EQ(pm::core::percentile(v, 0.2), 1);
+  EXPECT_EQ(pm::core::percentile(v, 0.21), 2);
   std::vector<double> hundred;
   for (int i = 100; i >= 1; --i)
     hundred.push_back(i);
-  EXPECT_EQ(pm::percentile(hundred, 0.99), 99); // the p99 of 1..100
-  EXPECT_EQ(pm::percentile({}, 0.99), 0);
-  EXPECT_NE(errorOf([] { pm::percentile({1.0}, 0.0); }).find("(0, 1]"), std::string::npos);
-  EXPECT_NE(errorOf([] { pm::percentile({1.0}, 1.5); }).find("(0, 1]"), std::string::npos);
+  EXPECT_EQ(pm::core::percentile(hundred, 0.99), 99); // the p99 of 1..100
+  EXPECT_EQ(pm::core::percentile({}, 0.99), 0);
+  EXPECT_NE(errorOf([] { pm::core::percentile({1.0}, 0.0); }).find("(0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf([] { pm::core::percentile({1.0}, 1.5); }).find("(0, 1]"), std::string::npos);
 }
 
 TEST(Convergence, TheFirstFrameOfAFullRunWithinTheBounds)
@@ -79,7 +79,7 @@ TEST(Convergence, TheFirstFrameOfAFullRunWithinTheBounds)
 
 namespace {
 
-pm::lab::TrackedFrame frameAt(double t, const pm::Phi &truth, const pm::Phi &estimate, bool moving)
+pm::lab::TrackedFrame frameAt(double t, const pm::core::Phi &truth, const pm::core::Phi &estimate, bool moving)
 {
   pm::lab::TrackedFrame f;
   f.t = t;
@@ -87,7 +87,7 @@ pm::lab::TrackedFrame frameAt(double t, const pm::Phi &truth, const pm::Phi &est
   f.truth = truth;
   f.moving = moving;
   f.result.phi = estimate;
-  f.result.state = pm::TrackState::Tracking;
+  f.result.state = pm::tracker::TrackState::Tracking;
   f.result.computeMs = 1.0;
   f.result.evaluations = 800;
   return f;
@@ -100,11 +100,11 @@ TEST(TrackingReport, FiguresAfterConvergenceAsComputedByHand)
   // 60 frames at 30 fps: 10 frames 100 mm off (searching), then x off by 1 mm at rest and 3 mm
   // while moving (frames 30..44), and one frame turned 3 deg (beyond 2 deg) before convergence.
   std::vector<pm::lab::TrackedFrame> frames;
-  const pm::Phi truth{0, 0, 500, 0, 0, 0};
+  const pm::core::Phi truth{0, 0, 500, 0, 0, 0};
   for (int k = 0; k < 60; ++k) {
     const double t = k / 30.0;
     const bool moving = k >= 30 && k < 45;
-    pm::Phi est = truth;
+    pm::core::Phi est = truth;
     if (k < 10)
       est.x = 100;
     else
@@ -113,7 +113,7 @@ TEST(TrackingReport, FiguresAfterConvergenceAsComputedByHand)
       est.e1 = std::sin(1.5 * M_PI / 180); // a 3 deg turn about x
     frames.push_back(frameAt(t, truth, est, moving));
     if (k < 10)
-      frames.back().result.state = pm::TrackState::Searching;
+      frames.back().result.state = pm::tracker::TrackState::Searching;
     frames.back().result.computeMs = k == 59 ? 9.0 : 1.0;
   }
   const pm::lab::TrackingReport r = pm::lab::reportTracking(frames, 30.0, pm::lab::table2Goals());
@@ -157,7 +157,7 @@ TEST(TrackingReport, FiguresAfterConvergenceAsComputedByHand)
 
 TEST(LabSequence, FramesAreTheSimulatorsAlongTheTrajectoryWithTheirTruth)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
   sp.supersampling = 1;
   const pm::sim::Scene scene(pm::sim::makeTarget("C05"), sp);
@@ -171,8 +171,8 @@ TEST(LabSequence, FramesAreTheSimulatorsAlongTheTrajectoryWithTheirTruth)
     ASSERT_TRUE(seq.next(f));
     EXPECT_EQ(f.index, k);
     EXPECT_DOUBLE_EQ(f.timeS, 0.1 * static_cast<double>(k));
-    const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(trajectory.at(f.timeS));
-    const pm::Phi expected = pm::fromHomogeneousMatrix(hMo * oMm);
+    const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(trajectory.at(f.timeS));
+    const pm::core::Phi expected = pm::core::fromHomogeneousMatrix(hMo * oMm);
     for (std::size_t i = 0; i < 6; ++i)
       EXPECT_NEAR(seq.truth(k)[i], expected[i], 1e-12) << k << " " << i;
     EXPECT_EQ(seq.moving(k), trajectory.moving(f.timeS));
@@ -255,8 +255,8 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
 
 TEST(TargetRendering, TheReliefTurnsTheTimeIsTheMeanAndTheGalleryHoldsEveryTarget)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
-  const pm::Phi phi{0, 0, 500, 0, 0, 0};
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::Phi phi{0, 0, 500, 0, 0, 0};
   std::vector<pm::lab::RenderedTarget> targets;
   std::size_t steps = 0;
   for (const char *code : {"R2", "C01", "C12", "R1", "C05"}) {
@@ -289,6 +289,6 @@ TEST(TargetRendering, TheReliefTurnsTheTimeIsTheMeanAndTheGalleryHoldsEveryTarge
   EXPECT_EQ(gallery.getHeight(), 2 * (rig.left.height / 2)); // five targets: two rows of four
   for (const char *f : {"R2_left.png", "C05_relief.png", "summary.json"})
     EXPECT_TRUE(std::filesystem::exists(d.file("r/") + f)) << f;
-  EXPECT_THROW(pm::lab::writeRenderedTargets(d.file("none"), {}, phi, pm::sim::SceneParams(), false), pm::Error);
+  EXPECT_THROW(pm::lab::writeRenderedTargets(d.file("none"), {}, phi, pm::sim::SceneParams(), false), pm::core::Error);
   EXPECT_FALSE(std::filesystem::exists(d.file("none")));
 }

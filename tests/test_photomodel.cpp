@@ -41,15 +41,15 @@ Disc redDisc()
 TEST(PhotoModel, DiscRegionCentroidAndSampling)
 {
   const Disc d = redDisc();
-  pm::PhotoModelParams p;
-  const pm::PhotoModelBuild b = pm::buildPhotoModel(d.bg, d.tg, kCam, 500, p);
-  const pm::PhotoModel &m = b.model;
+  pm::model::PhotoModelParams p;
+  const pm::model::PhotoModelBuild b = pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500, p);
+  const pm::core::PhotoModel &m = b.model;
   EXPECT_NEAR(m.centroidU, d.cu, 0.3);
   EXPECT_NEAR(m.centroidV, d.cv, 0.3);
   const double expectedIn = M_PI * d.r * d.r / (p.stepPx * p.stepPx);
   EXPECT_NEAR(static_cast<double>(m.inner.size()), expectedIn, 0.05 * expectedIn);
-  EXPECT_LT(pm::hueDistance(m.targetHue, pm::hueDeg(vpRGBa(200, 40, 30))), 1.f);
-  EXPECT_LT(pm::hueDistance(m.backgroundHue, pm::hueDeg(vpRGBa(30, 90, 170))), 2.f);
+  EXPECT_LT(pm::core::hueDistance(m.targetHue, pm::core::hueDeg(vpRGBa(200, 40, 30))), 1.f);
+  EXPECT_LT(pm::core::hueDistance(m.backgroundHue, pm::core::hueDeg(vpRGBa(30, 90, 170))), 2.f);
   for (const auto &q : m.inner) {
     EXPECT_LE(std::hypot(q.u - d.cu, q.v - d.cv), d.r + 0.5);
     // M_r = ((u - cu) d / px, (v - cv) d / py, 0)
@@ -69,12 +69,12 @@ TEST(PhotoModel, DiscRegionCentroidAndSampling)
 TEST(PhotoModel, DensityAndStripAreParameters)
 {
   const Disc d = redDisc();
-  pm::PhotoModelParams coarse, fine;
+  pm::model::PhotoModelParams coarse, fine;
   fine.stepPx = 4;
   fine.stripRows = 3;
   fine.stripGapPx = 10;
-  const auto a = pm::buildPhotoModel(d.bg, d.tg, kCam, 500, coarse).model;
-  const auto b = pm::buildPhotoModel(d.bg, d.tg, kCam, 500, fine).model;
+  const auto a = pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500, coarse).model;
+  const auto b = pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500, fine).model;
   EXPECT_NEAR(static_cast<double>(b.inner.size()) / static_cast<double>(a.inner.size()), 4.0, 0.3);
   EXPECT_GT(b.outer.size(), 2 * a.outer.size());
   for (const auto &q : b.outer)
@@ -86,31 +86,31 @@ TEST(PhotoModel, SmallHolesFilledLargeHolesKept)
   Disc d = redDisc();
   pm::test::paintDisc(d.tg, d.cu - 25, d.cv, 4, vpRGBa(30, 90, 170));  // a blue spot: part of the target
   pm::test::paintDisc(d.tg, d.cu + 25, d.cv, 20, vpRGBa(30, 90, 170)); // a big window onto the background
-  const auto b = pm::buildPhotoModel(d.bg, d.tg, kCam, 500);
+  const auto b = pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500);
   EXPECT_EQ(b.region[static_cast<unsigned>(d.cv)][static_cast<unsigned>(d.cu - 25)], 255);
   EXPECT_EQ(b.region[static_cast<unsigned>(d.cv)][static_cast<unsigned>(d.cu + 25)], 0);
 }
 
 TEST(PhotoModel, EveryCatalogTargetGivesAModel)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
   sp.supersampling = 1; // keeps the suite fast; the outline is what matters here
   for (const auto &info : pm::sim::targetCatalog()) {
     pm::sim::TargetShape shape = pm::sim::makeTarget(info.code, 0.5);
     vpImage<vpRGBa> bg, tg;
     pm::sim::Scene(shape, sp).renderPhotos(rig.left.cam, 640, 480, 500, bg, tg);
-    const pm::PhotoModel m = pm::buildPhotoModel(bg, tg, rig.left.cam, 500).model;
+    const pm::core::PhotoModel m = pm::model::buildPhotoModel(bg, tg, rig.left.cam, 500).model;
     EXPECT_GT(m.inner.size(), 20u) << info.code;
     EXPECT_GT(m.outer.size(), 20u) << info.code;
-    EXPECT_GT(pm::hueDistance(m.targetHue, m.backgroundHue), 60.f) << info.code;
+    EXPECT_GT(pm::core::hueDistance(m.targetHue, m.backgroundHue), 60.f) << info.code;
     // Made flat, the toy projects without parallax, so the model's origin (the region's centroid)
     // falls on the toy's own origin (its outline's centroid): the frames agree to within the photo's
     // resolution (1 mm = 1.5 px: tentacles and arm tips 2-4 px wide lose their blended edge pixels).
     shape.info.depthMm = 0;
     std::fill(shape.height.begin(), shape.height.end(), 0.f);
     pm::sim::Scene(shape, sp).renderPhotos(rig.left.cam, 640, 480, 500, bg, tg);
-    const pm::PhotoModel f = pm::buildPhotoModel(bg, tg, rig.left.cam, 500).model;
+    const pm::core::PhotoModel f = pm::model::buildPhotoModel(bg, tg, rig.left.cam, 500).model;
     EXPECT_LT(std::hypot((f.centroidU - 320) * 500 / 754, (f.centroidV - 240) * 500 / 754), 1.0) << info.code;
   }
 }
@@ -118,10 +118,10 @@ TEST(PhotoModel, EveryCatalogTargetGivesAModel)
 TEST(PhotoModel, FileRoundTrip)
 {
   const Disc d = redDisc();
-  const pm::PhotoModel m = pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model;
+  const pm::core::PhotoModel m = pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500).model;
   pm::test::TempDir dir("model");
   pm::io::savePhotoModel(m, dir.file("m.json"));
-  const pm::PhotoModel r = pm::io::loadPhotoModel(dir.file("m.json"));
+  const pm::core::PhotoModel r = pm::io::loadPhotoModel(dir.file("m.json"));
   ASSERT_EQ(r.inner.size(), m.inner.size());
   ASSERT_EQ(r.outer.size(), m.outer.size());
   for (std::size_t i = 0; i < m.inner.size(); ++i) {
@@ -140,7 +140,7 @@ TEST(PhotoModel, PhotosOfDifferentSizesAreRefused)
 {
   const Disc d = redDisc();
   vpImage<vpRGBa> small(240, 320);
-  EXPECT_NE(pm::test::errorOf([&] { pm::buildPhotoModel(d.bg, small, kCam, 500); }).find("320x240"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::model::buildPhotoModel(d.bg, small, kCam, 500); }).find("320x240"), std::string::npos);
 }
 
 TEST(PhotoModel, TargetOfTheBackgroundsHueGivesEmptySIn)
@@ -148,25 +148,25 @@ TEST(PhotoModel, TargetOfTheBackgroundsHueGivesEmptySIn)
   Disc d = redDisc();
   d.tg = pm::test::bluePhoto(640, 480, 3);
   pm::test::paintDisc(d.tg, d.cu, d.cv, d.r, vpRGBa(40, 100, 180)); // blue on blue
-  EXPECT_NE(pm::test::errorOf([&] { pm::buildPhotoModel(d.bg, d.tg, kCam, 500); }).find("S_in is empty"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500); }).find("S_in is empty"), std::string::npos);
 }
 
 TEST(PhotoModel, BadParametersAndDistanceAreRefused)
 {
   const Disc d = redDisc();
-  pm::PhotoModelParams p;
+  pm::model::PhotoModelParams p;
   p.stepPx = 0;
-  EXPECT_THROW(pm::buildPhotoModel(d.bg, d.tg, kCam, 500, p), pm::Error);
-  EXPECT_THROW(pm::buildPhotoModel(d.bg, d.tg, kCam, -1), pm::Error);
+  EXPECT_THROW(pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500, p), pm::core::Error);
+  EXPECT_THROW(pm::model::buildPhotoModel(d.bg, d.tg, kCam, -1), pm::core::Error);
   vpCameraParameters bad;
   bad.initPersProjWithoutDistortion(-754, 754, 320, 240);
-  EXPECT_THROW(pm::buildPhotoModel(d.bg, d.tg, bad, 500), pm::Error);
+  EXPECT_THROW(pm::model::buildPhotoModel(d.bg, d.tg, bad, 500), pm::core::Error);
 }
 
 TEST(PhotoModel, CorruptFilesAreClearErrors)
 {
   const Disc d = redDisc();
-  const pm::PhotoModel m = pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model;
+  const pm::core::PhotoModel m = pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500).model;
   pm::test::TempDir dir("model");
   const std::string good = pm::io::photoModelToJson(m);
   struct Case
@@ -200,7 +200,7 @@ TEST(PhotoModel, CorruptFilesAreClearErrors)
 
 namespace {
 
-pm::StereoRig stereoLabRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
+pm::core::StereoRig stereoLabRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
 
 //! A w x h picture of saturated patches of many hues (not the backdrop's blue) with fine detail.
 vpImage<vpRGBa> colourfulPicture(unsigned w, unsigned h, unsigned seed)
@@ -234,7 +234,7 @@ struct StereoPhotos
   vpImage<vpRGBa> bgL, bgR, L, R;
 };
 
-StereoPhotos stereoPhotos(const pm::sim::Scene &scene, const pm::StereoRig &rig, double distanceMm)
+StereoPhotos stereoPhotos(const pm::sim::Scene &scene, const pm::core::StereoRig &rig, double distanceMm)
 {
   StereoPhotos p;
   pm::sim::Rasterizer r;
@@ -252,11 +252,11 @@ TEST(StereoPhotoModel, ABoxTopLiesAtItsHeightAndTheOriginAtItsCentroid)
 {
   // A 120 x 90 mm picture on a block whose top is flat 30 mm in front of its base, beyond a
   // rounded edge 30 mm wide: the points of the flat top must lie at hand z = 500 - 30.
-  const pm::StereoRig rig = stereoLabRig();
+  const pm::core::StereoRig rig = stereoLabRig();
   const pm::sim::TargetShape box = pm::sim::targetFromImage(colourfulPicture(480, 360, 3), 120, 30, "box");
   const pm::sim::Scene scene(box);
   const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig, 500);
-  const pm::PhotoModel &m = sm.build.model;
+  const pm::core::PhotoModel &m = sm.build.model;
   ASSERT_TRUE(m.hasDepth());
   EXPECT_NEAR(sm.backdropMm, 500, 25); // the backdrop measured, not given (left camera's axis)
   EXPECT_LT(m.nInDropped, static_cast<int>(m.inner.size())); // most of a textured picture matches
@@ -297,18 +297,18 @@ TEST(StereoPhotoModel, ABoxTopLiesAtItsHeightAndTheOriginAtItsCentroid)
 
 TEST(StereoPhotoModel, FileVersionsTwoAndThreeKeepDepthAndViewsAndAFlatModelStaysVersionOne)
 {
-  const pm::StereoRig rig = stereoLabRig();
+  const pm::core::StereoRig rig = stereoLabRig();
   const pm::sim::Scene crab(pm::sim::makeTarget("C12", 0.5));
-  pm::StereoModelParams leftOnly;
+  pm::model::StereoModelParams leftOnly;
   leftOnly.rightView = false;
-  const pm::PhotoModel one = pm::sim::makeSimulatedStereoPhotoModel(crab, rig, 500, leftOnly).build.model;
-  pm::StereoModelParams twoViews;
+  const pm::core::PhotoModel one = pm::sim::makeSimulatedStereoPhotoModel(crab, rig, 500, leftOnly).build.model;
+  pm::model::StereoModelParams twoViews;
   twoViews.rightView = true;
-  const pm::PhotoModel two = pm::sim::makeSimulatedStereoPhotoModel(crab, rig, 500, twoViews).build.model;
+  const pm::core::PhotoModel two = pm::sim::makeSimulatedStereoPhotoModel(crab, rig, 500, twoViews).build.model;
   ASSERT_TRUE(one.views.empty());
   ASSERT_EQ(two.views.size(), 1u); // the right camera's own view
   pm::test::TempDir dir("model2");
-  auto same = [](const std::vector<pm::ModelPoint> &a, const std::vector<pm::ModelPoint> &b) {
+  auto same = [](const std::vector<pm::core::ModelPoint> &a, const std::vector<pm::core::ModelPoint> &b) {
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t i = 0; i < a.size(); ++i) {
       EXPECT_FLOAT_EQ(a[i].x, b[i].x);
@@ -317,11 +317,11 @@ TEST(StereoPhotoModel, FileVersionsTwoAndThreeKeepDepthAndViewsAndAFlatModelStay
       EXPECT_FLOAT_EQ(a[i].v, b[i].v);
     }
   };
-  for (const pm::PhotoModel *m : {&one, &two}) {
+  for (const pm::core::PhotoModel *m : {&one, &two}) {
     pm::io::savePhotoModel(*m, dir.file("m.json"));
     const std::string version = m->views.empty() ? "\"version\":2" : "\"version\":3";
     EXPECT_NE(pm::test::readText(dir.file("m.json")).find(version), std::string::npos) << version;
-    const pm::PhotoModel r = pm::io::loadPhotoModel(dir.file("m.json"));
+    const pm::core::PhotoModel r = pm::io::loadPhotoModel(dir.file("m.json"));
     same(r.inner, m->inner);
     same(r.outer, m->outer);
     for (int i = 0; i < 3; ++i) {
@@ -344,10 +344,10 @@ TEST(StereoPhotoModel, FileVersionsTwoAndThreeKeepDepthAndViewsAndAFlatModelStay
   }
   // A flat model is written as before: version 1, five numbers a point.
   const Disc d = redDisc();
-  const std::string flat = pm::io::photoModelToJson(pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
+  const std::string flat = pm::io::photoModelToJson(pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
   EXPECT_NE(flat.find("\"version\":1"), std::string::npos);
   EXPECT_EQ(flat.find("origin_in_hand_mm"), std::string::npos);
-  // Refused with pm::Error: a version 6; a version 3 file called version 4 (no shared surface);
+  // Refused with pm::core::Error: a version 6; a version 3 file called version 4 (no shared surface);
   // a version 3 without views or without a view's camera; a version 2 file with points of five numbers.
   const std::string v3 = pm::test::readText(dir.file("m.json"));
   auto refused = [&](std::string text, const std::string &from, const std::string &to) {
@@ -363,7 +363,7 @@ TEST(StereoPhotoModel, FileVersionsTwoAndThreeKeepDepthAndViewsAndAFlatModelStay
   EXPECT_NE(refused(v3, "\"version\":3", "\"version\":4").find("surface"), std::string::npos);
   EXPECT_NE(refused(v3, "\"views\":[", "\"viewz\":[").find("views"), std::string::npos);
   EXPECT_NE(refused(v3, "\"camera_mm\":[", "\"camera_mm\":[0,0,0],\"unused\":[").find("camera"), std::string::npos);
-  std::string v2five = pm::io::photoModelToJson(pm::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
+  std::string v2five = pm::io::photoModelToJson(pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
   v2five.replace(v2five.find("\"version\":1"), 11, "\"version\":2");
   pm::test::writeText(dir.file("bad2.json"), v2five);
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad2.json")); }), "");
@@ -374,12 +374,12 @@ TEST(StereoPhotoModel, FurtherPairsAddTheirViewsInTheModelFrame)
   // The poster box (whose depths the matching gets within 0.2 mm) photographed from five hand poses
   // (ahead, then turned by 15 deg about the hand's x and y axes around it): nine views, each the
   // same box in the same model frame.
-  const pm::StereoRig rig = stereoLabRig();
+  const pm::core::StereoRig rig = stereoLabRig();
   const pm::sim::Scene box(pm::sim::makeTarget("R1", 0.5));
-  pm::StereoModelParams twoViews;
+  pm::model::StereoModelParams twoViews;
   twoViews.rightView = true;
   const auto sm = pm::sim::makeSimulatedStereoPhotoModel(box, rig, 500, twoViews, 15);
-  const pm::PhotoModel &m = sm.build.model;
+  const pm::core::PhotoModel &m = sm.build.model;
   ASSERT_EQ(m.views.size(), 9u);
   auto unit = [](const double c[3]) {
     const double n = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
@@ -387,7 +387,7 @@ TEST(StereoPhotoModel, FurtherPairsAddTheirViewsInTheModelFrame)
   };
   const auto left0 = unit(m.cameraMm), right0 = unit(m.views[0].cameraMm);
   for (std::size_t k = 1; k < m.views.size(); ++k) {
-    const pm::ModelView &v = m.views[k];
+    const pm::core::ModelView &v = m.views[k];
     // Its camera: the first pair's left or right camera turned by 15 deg about the toy.
     const auto c = unit(v.cameraMm), c0 = k % 2 ? left0 : right0;
     const double angle = std::acos(std::min(1.0, c[0] * c0[0] + c[1] * c0[1] + c[2] * c0[2])) * 180 / M_PI;
@@ -396,11 +396,11 @@ TEST(StereoPhotoModel, FurtherPairsAddTheirViewsInTheModelFrame)
     // point of the same surface can be from a grid of the sampling step (step / sqrt 2; the step is
     // 8 px, 5 mm at 470 mm), with no offset in depth (a wrong motion would put them tens of
     // millimetres off).
-    const double stepMm = pm::PhotoModelParams().stepPx * 470 / rig.left.cam.get_px();
+    const double stepMm = pm::model::PhotoModelParams().stepPx * 470 / rig.left.cam.get_px();
     std::vector<double> dist, dz;
-    for (const pm::ModelPoint &p : v.inner) {
+    for (const pm::core::ModelPoint &p : v.inner) {
       double best = 1e30, z = 0;
-      for (const pm::ModelPoint &r : m.inner) {
+      for (const pm::core::ModelPoint &r : m.inner) {
         const double d2 = (p.x - r.x) * (p.x - r.x) + (p.y - r.y) * (p.y - r.y) + (p.z - r.z) * (p.z - r.z);
         if (d2 < best) {
           best = d2;
@@ -417,23 +417,23 @@ TEST(StereoPhotoModel, FurtherPairsAddTheirViewsInTheModelFrame)
   }
   // A further pair that cannot be built names itself; nothing is returned.
   const StereoPhotos p = stereoPhotos(pm::sim::Scene(pm::sim::makeTarget("C12", 0.5)), rig, 500);
-  std::vector<pm::StereoViewPair> more(2);
-  for (pm::StereoViewPair &q : more)
+  std::vector<pm::model::StereoViewPair> more(2);
+  for (pm::model::StereoViewPair &q : more)
     q = {p.bgL, p.bgR, p.L, p.R, vpHomogeneousMatrix()};
   more[1].right = p.bgR; // the toy missing from its right photo
-  const std::string e = pm::test::errorOf([&] { pm::buildStereoPhotoModel(rig, p.bgL, p.bgR, p.L, p.R, more); });
+  const std::string e = pm::test::errorOf([&] { pm::model::buildStereoPhotoModel(rig, p.bgL, p.bgR, p.L, p.R, more); });
   EXPECT_NE(e.find("view pair 3"), std::string::npos) << e;
   EXPECT_NE(e.find("right view"), std::string::npos) << e;
 }
 
 TEST(StereoPhotoModel, BadInputIsAClearError)
 {
-  const pm::StereoRig rig = stereoLabRig();
+  const pm::core::StereoRig rig = stereoLabRig();
   const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
   const StereoPhotos p = stereoPhotos(scene, rig, 500);
   auto build = [&](const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
                    const vpImage<vpRGBa> &R) {
-    return pm::test::errorOf([&] { pm::buildStereoPhotoModel(rig, bgL, bgR, L, R); });
+    return pm::test::errorOf([&] { pm::model::buildStereoPhotoModel(rig, bgL, bgR, L, R); });
   };
   // The target in the left view only.
   EXPECT_NE(build(p.bgL, p.bgR, p.L, p.bgR).find("not found in the right view"), std::string::npos);
@@ -465,9 +465,9 @@ TEST(StereoPhotoModel, BadInputIsAClearError)
     sp.specular = 0;
     const pm::sim::Scene plainScene(pm::sim::targetFromImage(plain, 120, 15, "plain"), sp);
     const StereoPhotos u = stereoPhotos(plainScene, rig, 500);
-    pm::StereoModelParams strict;
+    pm::model::StereoModelParams strict;
     strict.minMatchedFraction = 0.9;
-    const std::string e = pm::test::errorOf([&] { pm::buildStereoPhotoModel(rig, u.bgL, u.bgR, u.L, u.R, strict); });
+    const std::string e = pm::test::errorOf([&] { pm::model::buildStereoPhotoModel(rig, u.bgL, u.bgR, u.L, u.R, strict); });
     EXPECT_NE(e.find("too little texture"), std::string::npos) << e;
   }
 }

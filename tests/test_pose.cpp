@@ -11,7 +11,7 @@
 
 namespace {
 
-pm::Phi randomPhi(std::mt19937 &rng)
+pm::core::Phi randomPhi(std::mt19937 &rng)
 {
   std::uniform_real_distribution<double> pos(-180, 180), z(320, 680), axis(-1, 1), ang(0, M_PI);
   double a[3];
@@ -31,8 +31,8 @@ TEST(Pose, RoundTripPhiToMatrixToPhi)
 {
   std::mt19937 rng(42);
   for (int i = 0; i < 1000; ++i) {
-    const pm::Phi p = randomPhi(rng);
-    const pm::Phi q = pm::fromHomogeneousMatrix(pm::toHomogeneousMatrix(p));
+    const pm::core::Phi p = randomPhi(rng);
+    const pm::core::Phi q = pm::core::fromHomogeneousMatrix(pm::core::toHomogeneousMatrix(p));
     for (std::size_t k = 0; k < 6; ++k)
       EXPECT_NEAR(p[k], q[k], k < 3 ? 1e-9 : 1e-9) << "component " << k << " of " << p.toString();
   }
@@ -44,7 +44,7 @@ TEST(Pose, RoundTripMatrixToPhiToMatrix)
   std::uniform_real_distribution<double> u(-M_PI, M_PI);
   for (int i = 0; i < 500; ++i) {
     const vpHomogeneousMatrix M(0.1 * u(rng), 0.1 * u(rng), 0.5 + 0.05 * u(rng), u(rng) / 2, u(rng) / 2, u(rng) / 2);
-    const vpHomogeneousMatrix N = pm::toHomogeneousMatrix(pm::fromHomogeneousMatrix(M));
+    const vpHomogeneousMatrix N = pm::core::toHomogeneousMatrix(pm::core::fromHomogeneousMatrix(M));
     for (unsigned r = 0; r < 3; ++r)
       for (unsigned c = 0; c < 4; ++c)
         EXPECT_NEAR(M[r][c], N[r][c], 1e-9);
@@ -55,10 +55,10 @@ TEST(Pose, Equation7AgreesWithViSPQuaternion)
 {
   std::mt19937 rng(3);
   for (int i = 0; i < 500; ++i) {
-    const pm::Phi p = randomPhi(rng);
+    const pm::core::Phi p = randomPhi(rng);
     const vpRotationMatrix R(vpQuaternionVector(p.e1, p.e2, p.e3, p.eta()));
-    const pm::Rot3 r = pm::rotationOf(p);
-    const vpHomogeneousMatrix M = pm::toHomogeneousMatrix(p);
+    const pm::core::Rot3 r = pm::core::rotationOf(p);
+    const vpHomogeneousMatrix M = pm::core::toHomogeneousMatrix(p);
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b) {
         EXPECT_NEAR(r[3 * a + b], R[a][b], 1e-12);
@@ -76,7 +76,7 @@ TEST(Pose, EtaIsNonNegativeWhateverTheQuaternionSign)
   for (double s : {1.0, -1.0}) {
     vpHomogeneousMatrix M;
     M.insert(vpRotationMatrix(vpQuaternionVector(s * e[0], s * e[1], s * e[2], s * w)));
-    const pm::Phi p = pm::fromHomogeneousMatrix(M);
+    const pm::core::Phi p = pm::core::fromHomogeneousMatrix(M);
     EXPECT_NEAR(p.e1, e[0], 1e-12);
     EXPECT_NEAR(p.e2, e[1], 1e-12);
     EXPECT_NEAR(p.e3, e[2], 1e-12);
@@ -86,8 +86,8 @@ TEST(Pose, EtaIsNonNegativeWhateverTheQuaternionSign)
 
 TEST(Pose, IdentityIsTheDesiredPose)
 {
-  const pm::Phi p{0, 0, 500, 0, 0, 0};
-  const vpHomogeneousMatrix M = pm::toHomogeneousMatrix(p);
+  const pm::core::Phi p{0, 0, 500, 0, 0, 0};
+  const vpHomogeneousMatrix M = pm::core::toHomogeneousMatrix(p);
   EXPECT_TRUE(M.getRotationMatrix().isARotationMatrix());
   EXPECT_NEAR(M[2][3], 0.5, 1e-15);
   EXPECT_NEAR(M[0][0], 1.0, 1e-15);
@@ -96,47 +96,47 @@ TEST(Pose, IdentityIsTheDesiredPose)
 TEST(Pose, HalfTurnHasUnitEps)
 {
   vpHomogeneousMatrix M(0, 0, 0.5, 0, 0, M_PI); // 180 deg about z: eta = 0, |eps| = 1
-  const pm::Phi p = pm::fromHomogeneousMatrix(M);
+  const pm::core::Phi p = pm::core::fromHomogeneousMatrix(M);
   EXPECT_NEAR(std::fabs(p.e3), 1.0, 1e-9);
   EXPECT_TRUE(p.isValid());
-  const vpHomogeneousMatrix N = pm::toHomogeneousMatrix(p);
+  const vpHomogeneousMatrix N = pm::core::toHomogeneousMatrix(p);
   EXPECT_NEAR(N[0][0], -1.0, 1e-9);
 }
 
 TEST(Pose, EpsLongerThanOneIsRefusedWithAClearError)
 {
-  const pm::Phi p{0, 0, 500, 0.8, 0.7, 0.0}; // |eps| = 1.06
+  const pm::core::Phi p{0, 0, 500, 0.8, 0.7, 0.0}; // |eps| = 1.06
   EXPECT_FALSE(p.isValid());
   try {
-    pm::toHomogeneousMatrix(p);
+    pm::core::toHomogeneousMatrix(p);
     FAIL() << "no error for |eps| > 1";
-  } catch (const pm::Error &e) {
+  } catch (const pm::core::Error &e) {
     EXPECT_NE(std::string(e.what()).find("|eps| <= 1"), std::string::npos) << e.what();
   }
 }
 
 TEST(Pose, NonFiniteIsRefused)
 {
-  EXPECT_THROW(pm::toHomogeneousMatrix({NAN, 0, 500, 0, 0, 0}), pm::Error);
-  EXPECT_THROW(pm::toHomogeneousMatrix({0, 0, 500, INFINITY, 0, 0}), pm::Error);
+  EXPECT_THROW(pm::core::toHomogeneousMatrix({NAN, 0, 500, 0, 0, 0}), pm::core::Error);
+  EXPECT_THROW(pm::core::toHomogeneousMatrix({0, 0, 500, INFINITY, 0, 0}), pm::core::Error);
 }
 
 TEST(Pose, NonRigidMatrixIsRefused)
 {
   vpHomogeneousMatrix M;
   M[0][0] = 2.0; // a scale, not a rotation
-  EXPECT_THROW(pm::fromHomogeneousMatrix(M), pm::Error);
+  EXPECT_THROW(pm::core::fromHomogeneousMatrix(M), pm::core::Error);
 }
 
 TEST(Pose, ATwistMovesTheOriginAndTurnsAboutItInTheHandFrame)
 {
   // applyTwist(phi, [v, w]) is hMo' = [exp(w) R, t + v]: as ViSP composes it.
-  const pm::Phi phi{12, -30, 480, 0.1, -0.2, 0.3};
+  const pm::core::Phi phi{12, -30, 480, 0.1, -0.2, 0.3};
   const double twist[6] = {1.5, -2.0, 3.0, 0.02, -0.05, 0.03};
-  const pm::Phi moved = pm::applyTwist(phi, twist);
-  const vpHomogeneousMatrix M = pm::toHomogeneousMatrix(phi);
+  const pm::core::Phi moved = pm::core::applyTwist(phi, twist);
+  const vpHomogeneousMatrix M = pm::core::toHomogeneousMatrix(phi);
   const vpRotationMatrix R = vpRotationMatrix(vpThetaUVector(twist[3], twist[4], twist[5])) * M.getRotationMatrix();
-  const vpHomogeneousMatrix N = pm::toHomogeneousMatrix(moved);
+  const vpHomogeneousMatrix N = pm::core::toHomogeneousMatrix(moved);
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned j = 0; j < 3; ++j)
       EXPECT_NEAR(N[i][j], R[i][j], 1e-12) << i << j;
@@ -145,9 +145,9 @@ TEST(Pose, ATwistMovesTheOriginAndTurnsAboutItInTheHandFrame)
   EXPECT_GE(moved.eta(), 0.0);
   // No rotation: the orientation is untouched; a half turn keeps eta >= 0.
   const double shift[6] = {1, 2, 3, 0, 0, 0};
-  EXPECT_EQ(pm::applyTwist(phi, shift).e2, phi.e2);
+  EXPECT_EQ(pm::core::applyTwist(phi, shift).e2, phi.e2);
   const double halfTurn[6] = {0, 0, 0, M_PI, 0, 0};
-  const pm::Phi h = pm::applyTwist(phi, halfTurn);
+  const pm::core::Phi h = pm::core::applyTwist(phi, halfTurn);
   EXPECT_TRUE(h.isValid());
-  EXPECT_NEAR(pm::rotationDistanceDeg(h, phi), 180.0, 1e-6);
+  EXPECT_NEAR(pm::core::rotationDistanceDeg(h, phi), 180.0, 1e-6);
 }

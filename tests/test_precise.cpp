@@ -21,9 +21,9 @@
 
 namespace {
 
-const pm::StereoRig &rig()
+const pm::core::StereoRig &rig()
 {
-  static const pm::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  static const pm::core::StereoRig r = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   return r;
 }
 
@@ -49,7 +49,7 @@ const LabTarget &head()
 }
 
 //! Where contour point X (model frame) lies along line \e m's normal, at pose \e phi in camera \e cam (px): an independent projection.
-double lineCoordinate(const pm::LineCamera &cam, const pm::Phi &phi, const pm::LineMeasure &m)
+double lineCoordinate(const pm::precise::LineCamera &cam, const pm::core::Phi &phi, const pm::precise::LineMeasure &m)
 {
   vpHomogeneousMatrix cMh;
   for (unsigned r = 0; r < 3; ++r) {
@@ -57,7 +57,7 @@ double lineCoordinate(const pm::LineCamera &cam, const pm::Phi &phi, const pm::L
       cMh[r][c] = cam.R[3 * r + c];
     cMh[r][3] = 1e-3 * cam.t[r];
   }
-  const vpHomogeneousMatrix cMo = cMh * pm::toHomogeneousMatrix(phi);
+  const vpHomogeneousMatrix cMo = cMh * pm::core::toHomogeneousMatrix(phi);
   vpColVector X(4);
   X[0] = 1e-3 * m.X[0], X[1] = 1e-3 * m.X[1], X[2] = 1e-3 * m.X[2], X[3] = 1;
   const vpColVector Xc = cMo * X;
@@ -69,7 +69,7 @@ double lineCoordinate(const pm::LineCamera &cam, const pm::Phi &phi, const pm::L
 
 TEST(ColourHistograms, PosteriorsFollowTheCountsAndLearnAtTheirRate)
 {
-  pm::ColourHistograms h;
+  pm::precise::ColourHistograms h;
   EXPECT_FALSE(h.ready());
   for (int k = 0; k < 30; ++k) {
     h.addForeground(vpRGBa(200, 30, 30));
@@ -91,8 +91,8 @@ TEST(ColourHistograms, PosteriorsFollowTheCountsAndLearnAtTheirRate)
   for (int k = 0; k < 31; ++k)
     h.addBackground(vpRGBa(20, 200, 20));
   h.update(0.5, 0.5); // no foreground counted: the target's histogram stays
-  EXPECT_NEAR(h.background()[pm::ColourHistograms::bin(vpRGBa(30, 60, 200))], 0.5 * 30 / 31, 1e-6);
-  EXPECT_NEAR(h.foreground()[pm::ColourHistograms::bin(vpRGBa(200, 30, 30))], 30.0 / 31, 1e-6);
+  EXPECT_NEAR(h.background()[pm::precise::ColourHistograms::bin(vpRGBa(30, 60, 200))], 0.5 * 30 / 31, 1e-6);
+  EXPECT_NEAR(h.foreground()[pm::precise::ColourHistograms::bin(vpRGBa(200, 30, 30))], 30.0 / 31, 1e-6);
   EXPECT_GT(h.posterior(vpRGBa(120, 120, 120)), 0.5f); // now rarer in the background
   EXPECT_NE(pm::test::errorOf([&] { h.start(std::vector<float>(10, 0.1f), std::vector<float>(10, 0.1f)); }).find("bins"),
             std::string::npos);
@@ -105,25 +105,25 @@ TEST(PreciseStage, TheLinesGradientAndHessianAreTheObjectivesOnesAtAnyPose)
   const LabTarget &t = crab();
   const vpHomogeneousMatrix hMo(0.012, -0.008, 0.51, vpMath::rad(15), vpMath::rad(-10), vpMath::rad(5));
   const pm::sim::StereoImages im = t.scene.renderStereo(rig(), hMo, 0);
-  const pm::Phi truth = t.model.truth(hMo);
-  pm::PreciseStage precise(rig(), t.model.build.model);
+  const pm::core::Phi truth = t.model.truth(hMo);
+  pm::precise::PreciseStage precise(rig(), t.model.build.model);
   precise.setImages(im.left, im.right);
   ASSERT_TRUE(precise.colours().ready());
   const double tw[6] = {1.0, -0.5, 0.8, 0.01, -0.02, 0.015};
-  const pm::Phi at = pm::applyTwist(truth, tw); // measured and differentiated away from the truth
-  pm::PreciseParams shape;
+  const pm::core::Phi at = pm::core::applyTwist(truth, tw); // measured and differentiated away from the truth
+  pm::precise::PreciseParams shape;
   shape.shape.prepare();
   for (int cam = 0; cam < 2; ++cam) {
-    pm::CorrespondenceLines lines(150, shape.shape.segments(), 4);
+    pm::precise::CorrespondenceLines lines(150, shape.shape.segments(), 4);
     const std::size_t n = lines.measure(precise.camera(cam), precise.outlines(), at, shape.shape, precise.colours(), 2, 150, 3.0);
     ASSERT_GT(n, 60u) << cam;
     const double w = 0.7;
     double g[6] = {0}, H[36] = {0};
     lines.accumulate(precise.camera(cam), at, w, g, H, nullptr);
-    auto L = [&](const pm::Phi &p) {
+    auto L = [&](const pm::core::Phi &p) {
       double s = 0;
       for (std::size_t i = 0; i < n; ++i) {
-        const pm::LineMeasure &m = lines.line(i);
+        const pm::precise::LineMeasure &m = lines.line(i);
         const double r = m.mean - lineCoordinate(precise.camera(cam), p, m);
         s -= w * r * r / (2 * m.variance);
       }
@@ -134,9 +134,9 @@ TEST(PreciseStage, TheLinesGradientAndHessianAreTheObjectivesOnesAtAnyPose)
     for (int k = 0; k < 6; ++k) {
       double e[6] = {0, 0, 0, 0, 0, 0};
       e[k] = steps[k];
-      const pm::Phi plus = pm::applyTwist(at, e);
+      const pm::core::Phi plus = pm::core::applyTwist(at, e);
       e[k] = -steps[k];
-      const pm::Phi minus = pm::applyTwist(at, e);
+      const pm::core::Phi minus = pm::core::applyTwist(at, e);
       const double fd = (L(plus) - L(minus)) / (2 * steps[k]);
       EXPECT_NEAR(g[k], fd, 1e-4 * (std::fabs(fd) + 1)) << "camera " << cam << ", gradient " << k;
       for (std::size_t i = 0; i < n; ++i)
@@ -169,10 +169,10 @@ const std::vector<LandingCase> &landingCases()
 }
 
 //! Six starts 2 mm and 3 deg off \e truth in random directions (seeded).
-std::vector<pm::Phi> startsAround(const pm::Phi &truth, std::mt19937 &rng)
+std::vector<pm::core::Phi> startsAround(const pm::core::Phi &truth, std::mt19937 &rng)
 {
   std::normal_distribution<double> n01(0, 1);
-  std::vector<pm::Phi> starts;
+  std::vector<pm::core::Phi> starts;
   for (int k = 0; k < 6; ++k) {
     double v[6], tw[6];
     for (double &x : v)
@@ -180,7 +180,7 @@ std::vector<pm::Phi> startsAround(const pm::Phi &truth, std::mt19937 &rng)
     const double nt = std::hypot(v[0], v[1], v[2]), nr = std::hypot(v[3], v[4], v[5]);
     for (int i = 0; i < 3; ++i)
       tw[i] = 2.0 * v[i] / nt, tw[3 + i] = vpMath::rad(3.0) * v[3 + i] / nr;
-    starts.push_back(pm::applyTwist(truth, tw));
+    starts.push_back(pm::core::applyTwist(truth, tw));
   }
   return starts;
 }
@@ -192,15 +192,15 @@ struct Landing
   std::size_t fewestLines = ~std::size_t(0); //!< the fewest lines measured (both cameras)
   double worstMm = 0, worstDeg = 0; //!< the farthest end from the truth
 };
-Landing landFromStarts(pm::PreciseStage &precise, const pm::Phi &truth, std::mt19937 &rng)
+Landing landFromStarts(pm::precise::PreciseStage &precise, const pm::core::Phi &truth, std::mt19937 &rng)
 {
   Landing l;
-  for (const pm::Phi &start : startsAround(truth, rng)) {
-    const pm::PreciseResult r = precise.refine(start);
+  for (const pm::core::Phi &start : startsAround(truth, rng)) {
+    const pm::precise::PreciseResult r = precise.refine(start);
     l.allOk = l.allOk && r.ok;
     l.fewestLines = std::min(l.fewestLines, r.lines[0] + r.lines[1]);
-    l.worstMm = std::max(l.worstMm, pm::translationDistanceMm(r.phi, truth));
-    l.worstDeg = std::max(l.worstDeg, pm::rotationDistanceDeg(r.phi, truth));
+    l.worstMm = std::max(l.worstMm, pm::core::translationDistanceMm(r.phi, truth));
+    l.worstDeg = std::max(l.worstDeg, pm::core::rotationDistanceDeg(r.phi, truth));
   }
   return l;
 }
@@ -213,13 +213,13 @@ TEST(PreciseStage, ItsOutlineTermOnTheTrueOutlinesLandsOnTheTruthFromAFewDegrees
   // 3 deg off, the stage ends within the static goal (1 mm and 0.5 deg) of the truth.
   std::mt19937 rng(7);
   for (const LandingCase &c : landingCases()) {
-    pm::PhotoModel model = c.target->model.build.model;
+    pm::core::PhotoModel model = c.target->model.build.model;
     pm::test::useTrueOutlines(model, c.target->scene, c.target->model.oMm, rig().left.cam);
     const pm::sim::StereoImages im = c.target->scene.renderStereo(rig(), c.hMo, 0);
-    const pm::Phi truth = c.target->model.truth(c.hMo);
-    pm::PreciseParams outlineAlone;
+    const pm::core::Phi truth = c.target->model.truth(c.hMo);
+    pm::precise::PreciseParams outlineAlone;
     outlineAlone.interiorPoints = 0;
-    pm::PreciseStage precise(rig(), model, outlineAlone);
+    pm::precise::PreciseStage precise(rig(), model, outlineAlone);
     precise.setImages(im.left, im.right);
     const Landing l = landFromStarts(precise, truth, rng);
     std::cout << "true outlines, from 2 mm and 3 deg off: worst " << l.worstMm << " mm, " << l.worstDeg << " deg\n";
@@ -239,8 +239,8 @@ TEST(PreciseStage, OnTheBuiltModelLandsWithinAMillimetreAndADegreeFromAFewDegree
   std::mt19937 rng(7);
   for (const LandingCase &c : landingCases()) {
     const pm::sim::StereoImages im = c.target->scene.renderStereo(rig(), c.hMo, 0);
-    const pm::Phi truth = c.target->model.truth(c.hMo);
-    pm::PreciseStage precise(rig(), c.target->model.build.model);
+    const pm::core::Phi truth = c.target->model.truth(c.hMo);
+    pm::precise::PreciseStage precise(rig(), c.target->model.build.model);
     precise.setImages(im.left, im.right);
     const Landing l = landFromStarts(precise, truth, rng);
     std::cout << "built model, from 2 mm and 3 deg off: worst " << l.worstMm << " mm, " << l.worstDeg << " deg from the truth\n";
@@ -256,21 +256,21 @@ TEST(PoseUncertainty, ThePreciseStagesReportedSigmaCoversItsTrueErrorOnTheBuiltM
   // errors within it and 95 % within two; here, over 3 poses x 6 starts x 6 axes, at least 80 %
   // within two sigmas, and a sigma that says something (under 1.5 mm and 1.5 deg on every axis).
   std::mt19937 rng(7);
-  const pm::UncertaintyModel model;
+  const pm::precise::UncertaintyModel model;
   int within2 = 0, total = 0;
   for (const LandingCase &c : landingCases()) {
     const pm::sim::StereoImages im = c.target->scene.renderStereo(rig(), c.hMo, 0);
     const vpHomogeneousMatrix hMt = c.hMo * c.target->model.oMm;
-    pm::PreciseStage precise(rig(), c.target->model.build.model);
+    pm::precise::PreciseStage precise(rig(), c.target->model.build.model);
     precise.setImages(im.left, im.right);
-    for (const pm::Phi &start : startsAround(c.target->model.truth(c.hMo), rng)) {
-      const pm::PreciseResult r = precise.refine(start);
+    for (const pm::core::Phi &start : startsAround(c.target->model.truth(c.hMo), rng)) {
+      const pm::precise::PreciseResult r = precise.refine(start);
       ASSERT_TRUE(r.ok);
-      const pm::PoseUncertainty u = model.uncertainty(r.information, r.residualPx);
+      const pm::precise::PoseUncertainty u = model.uncertainty(r.information, r.residualPx);
       ASSERT_TRUE(u.known);
       EXPECT_LT(u.maxMm(), 1.5);
       EXPECT_LT(u.maxDeg(), 1.5);
-      const vpHomogeneousMatrix hMe = pm::toHomogeneousMatrix(r.phi);
+      const vpHomogeneousMatrix hMe = pm::core::toHomogeneousMatrix(r.phi);
       vpRotationMatrix Re, Rt;
       hMe.extract(Re);
       hMt.extract(Rt);
@@ -288,16 +288,16 @@ TEST(PoseUncertainty, ThePreciseStagesReportedSigmaCoversItsTrueErrorOnTheBuiltM
 
 TEST(PreciseStage, RefusesWhatItCannotUse)
 {
-  pm::PhotoModel flat;
+  pm::core::PhotoModel flat;
   flat.distanceMm = 500;
   flat.px = flat.py = 800;
   flat.inner.push_back({0.f, 0.f, 0.f, 10.f, 320.f, 240.f});
-  EXPECT_NE(pm::test::errorOf([&] { pm::PreciseStage s(rig(), flat); }).find("outlines"), std::string::npos);
-  pm::PreciseParams p;
+  EXPECT_NE(pm::test::errorOf([&] { pm::precise::PreciseStage s(rig(), flat); }).find("outlines"), std::string::npos);
+  pm::precise::PreciseParams p;
   p.sigmasPx.pop_back();
   EXPECT_NE(pm::test::errorOf([&] { p.validate(); }).find("sigma"), std::string::npos);
-  pm::PreciseStage s(rig(), crab().model.build.model);
-  EXPECT_NE(pm::test::errorOf([&] { s.refine(pm::Phi()); }).find("setImages"), std::string::npos);
+  pm::precise::PreciseStage s(rig(), crab().model.build.model);
+  EXPECT_NE(pm::test::errorOf([&] { s.refine(pm::core::Phi()); }).find("setImages"), std::string::npos);
   const vpImage<vpRGBa> small(100, 100);
   EXPECT_NE(pm::test::errorOf([&] { s.setImages(small, small); }).find("100x100"), std::string::npos);
 }
@@ -307,7 +307,7 @@ TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
   // A sphere of radius 30 mm sampled on 1 mm cells: the mesh's vertices within a tenth of a cell of
   // it, closed (every edge between two faces), its volume within 1 %; seen from 500 mm its outline
   // points project on the sphere's circle of silhouette, their normals pointing out.
-  pm::VisualHull g;
+  pm::model::VisualHull g;
   g.cell = 1;
   g.n = 80;
   g.origin = {-40, -40, -40};
@@ -316,38 +316,38 @@ TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
   for (int z = 0; z < g.n; ++z)
     for (int y = 0; y < g.n; ++y)
       for (int x = 0; x < g.n; ++x) {
-        const pm::hull::Vec3 c = g.centre(x, y, z);
-        g.occ[g.idx(x, y, z)] = std::sqrt(pm::hull::dot(c, c)) <= R ? 1 : 0;
+        const pm::model::hull::Vec3 c = g.centre(x, y, z);
+        g.occ[g.idx(x, y, z)] = std::sqrt(pm::model::hull::dot(c, c)) <= R ? 1 : 0;
       }
-  const pm::HullMesh mesh = pm::meshField(g, [&](int x, int y, int z) {
-    const pm::hull::Vec3 c = g.corner(x, y, z);
-    return R - std::sqrt(pm::hull::dot(c, c));
+  const pm::model::HullMesh mesh = pm::model::meshField(g, [&](int x, int y, int z) {
+    const pm::model::hull::Vec3 c = g.corner(x, y, z);
+    return R - std::sqrt(pm::model::hull::dot(c, c));
   });
   double worst = 0;
-  for (const pm::hull::Vec3 &v : mesh.vertices)
-    worst = std::max(worst, std::fabs(std::sqrt(pm::hull::dot(v, v)) - R));
+  for (const pm::model::hull::Vec3 &v : mesh.vertices)
+    worst = std::max(worst, std::fabs(std::sqrt(pm::model::hull::dot(v, v)) - R));
   EXPECT_LT(worst, 0.1);
-  for (const pm::MeshEdge &e : mesh.edges)
+  for (const pm::model::MeshEdge &e : mesh.edges)
     ASSERT_GE(e.f1, 0) << "an open edge";
   EXPECT_NEAR(mesh.volume(), 4.0 / 3.0 * M_PI * R * R * R, 0.01 * 4.0 / 3.0 * M_PI * R * R * R);
   const vpCameraParameters cam(754, 754, 320, 240);
-  const pm::hull::Pinhole pin = pm::hull::Pinhole::lookingAtOrigin({0, 0, -500}, cam, 640, 480);
+  const pm::model::hull::Pinhole pin = pm::model::hull::Pinhole::lookingAtOrigin({0, 0, -500}, cam, 640, 480);
   std::vector<float> zbuf;
   mesh.depthMap(pin, zbuf);
   std::vector<unsigned char> mask(zbuf.size());
   for (std::size_t i = 0; i < zbuf.size(); ++i)
     mask[i] = std::isfinite(zbuf[i]) ? 255 : 0;
-  const std::vector<pm::ContourPoint> outline = pm::meshOutline(pin, mesh, mask, 200);
+  const std::vector<pm::core::ContourPoint> outline = pm::model::meshOutline(pin, mesh, mask, 200);
   ASSERT_GT(outline.size(), 150u);
   // The silhouette of a sphere of radius R seen from distance D: a circle of angular radius asin(R / D).
   const double D = 500, rPx = 754 * std::tan(std::asin(R / D));
   double worstPx = 0, worstCos = 1;
-  for (const pm::ContourPoint &c : outline) {
+  for (const pm::core::ContourPoint &c : outline) {
     double u, v, z;
     ASSERT_TRUE(pin.project({c.x, c.y, c.z}, u, v, z));
     worstPx = std::max(worstPx, std::fabs(std::hypot(u - 320, v - 240) - rPx));
-    const pm::hull::Vec3 radial = pm::hull::unit({c.x, c.y, 0});
-    worstCos = std::min(worstCos, pm::hull::dot(radial, {c.nx, c.ny, c.nz}));
+    const pm::model::hull::Vec3 radial = pm::model::hull::unit({c.x, c.y, 0});
+    worstCos = std::min(worstCos, pm::model::hull::dot(radial, {c.nx, c.ny, c.nz}));
   }
   std::cout << "sphere outline: worst " << worstPx << " px off the circle of " << rPx << " px, normals within "
             << std::acos(worstCos) * 180 / M_PI << " deg of radial\n";
@@ -357,19 +357,19 @@ TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
 
 TEST(ModelFile, VersionFiveKeepsOutlinesColoursAndHistograms)
 {
-  const pm::PhotoModel &m = crab().model.build.model;
+  const pm::core::PhotoModel &m = crab().model.build.model;
   ASSERT_TRUE(m.hasContours() && m.hasColours);
   ASSERT_FALSE(m.foregroundHistogram.empty());
   pm::test::TempDir dir("v5");
   pm::io::savePhotoModel(m, dir.file("model.json"));
   EXPECT_NE(pm::test::readText(dir.file("model.json")).find("\"version\":5"), std::string::npos);
-  const pm::PhotoModel back = pm::io::loadPhotoModel(dir.file("model.json"));
+  const pm::core::PhotoModel back = pm::io::loadPhotoModel(dir.file("model.json"));
   ASSERT_EQ(back.views.size(), m.views.size());
   ASSERT_EQ(back.contour.size(), m.contour.size());
   for (std::size_t k = 0; k < m.views.size(); k += 37) {
     ASSERT_EQ(back.views[k].contour.size(), m.views[k].contour.size());
     for (std::size_t i = 0; i < m.views[k].contour.size(); ++i) {
-      const pm::ContourPoint &a = m.views[k].contour[i], &b = back.views[k].contour[i];
+      const pm::core::ContourPoint &a = m.views[k].contour[i], &b = back.views[k].contour[i];
       EXPECT_NEAR(a.x, b.x, 0.006);
       EXPECT_NEAR(a.nz, b.nz, 2e-4);
       EXPECT_NEAR(a.insideMm, b.insideMm, 0.006);

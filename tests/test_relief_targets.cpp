@@ -169,7 +169,7 @@ TEST(ReliefTargets, CatalogueOfTwelveUnchanged)
   EXPECT_TRUE(pm::sim::isReliefTarget("R3"));
   EXPECT_FALSE(pm::sim::isReliefTarget("C12"));
   EXPECT_TRUE(pm::sim::makeTarget("C12", 0.5).base.empty());
-  EXPECT_THROW(pm::sim::makeTarget("R4"), pm::Error);
+  EXPECT_THROW(pm::sim::makeTarget("R4"), pm::core::Error);
 }
 
 TEST(ReliefTargets, ShadowMapHidesWhatIsBehindTheMesh)
@@ -195,7 +195,7 @@ TEST(ReliefTargets, ShadowMapHidesWhatIsBehindTheMesh)
   EXPECT_FLOAT_EQ(lit(0, 0, z), 1.f);         // on it
   EXPECT_FLOAT_EQ(lit(0.015, 0, 0), 1.f);     // beside it
   EXPECT_FLOAT_EQ(lit(0.5, 0.5, 0), 1.f);     // off the map
-  EXPECT_THROW(pm::sim::ShadowMap(m, std::array<double, 3>{0, 0, 0}.data(), 1e-3), pm::Error);
+  EXPECT_THROW(pm::sim::ShadowMap(m, std::array<double, 3>{0, 0, 0}.data(), 1e-3), pm::core::Error);
 }
 
 TEST(ReliefTargets, BoxCastsAShadowOnTheBackdropAwayFromTheLight)
@@ -212,7 +212,7 @@ TEST(ReliefTargets, BoxCastsAShadowOnTheBackdropAwayFromTheLight)
   const pm::sim::Scene sOn(box, on), sOff(box, off);
   EXPECT_TRUE(sOn.sceneLit());
   EXPECT_FALSE(sOff.sceneLit());
-  const pm::RigCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::LensDistortion()};
+  const pm::core::RigCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::core::LensDistortion()};
   const double dist = 500;
   const vpHomogeneousMatrix hMo(0, 0, dist * 1e-3, 0, 0, 0);
   pm::sim::Rasterizer r;
@@ -240,7 +240,7 @@ TEST(ReliefTargets, HighlightsAreStrongerUnderTheSceneLight)
   pm::sim::SceneParams matte = p;
   matte.sceneSpecular = 0;
   const pm::sim::Scene glossy(head, p), dull(head, matte);
-  const pm::RigCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::LensDistortion()};
+  const pm::core::RigCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::core::LensDistortion()};
   const vpHomogeneousMatrix hMo(0, 0, 0.5, 0, 0, 0);
   pm::sim::Rasterizer r;
   vpImage<vpRGBa> a, b;
@@ -255,7 +255,7 @@ TEST(ReliefTargets, HighlightsAreStrongerUnderTheSceneLight)
 
 TEST(ReliefTargets, CreaturesRenderTheSameInAutoAndOffModes)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::TargetShape crab = pm::sim::makeTarget("C12");
   const vpHomogeneousMatrix hMo(0, 0, 0.5, 0, 0, 0);
   pm::sim::SceneParams autoMode, offMode;
@@ -274,19 +274,19 @@ TEST(ReliefTargets, BadSceneLightParametersAreRefused)
   pm::sim::SceneParams p;
   EXPECT_NO_THROW(p.validate());
   p.sceneLightDir[2] = 0.5; // from behind the backdrop
-  EXPECT_THROW(p.validate(), pm::Error);
+  EXPECT_THROW(p.validate(), pm::core::Error);
   p = pm::sim::SceneParams();
   p.sceneShininess = 0;
-  EXPECT_THROW(p.validate(), pm::Error);
+  EXPECT_THROW(p.validate(), pm::core::Error);
   p = pm::sim::SceneParams();
   p.sceneSpecular = -1;
-  EXPECT_THROW(p.validate(), pm::Error);
+  EXPECT_THROW(p.validate(), pm::core::Error);
   p = pm::sim::SceneParams();
   p.shadowTexelMm = 0;
-  EXPECT_THROW(p.validate(), pm::Error);
+  EXPECT_THROW(p.validate(), pm::core::Error);
   p = pm::sim::SceneParams();
   p.shadows = static_cast<pm::sim::ShadowMode>(7);
-  EXPECT_THROW(p.validate(), pm::Error);
+  EXPECT_THROW(p.validate(), pm::core::Error);
 }
 
 namespace {
@@ -310,7 +310,7 @@ TEST(ReliefTargets, TheRenderersDepthIsTheGroundTruthOfTheStereoModel)
 {
   // The poster box's flat front lies 30 mm in front of its base (hand z 470 at the photo pose):
   // the depth buffer read back says so, and the stereo model's points lie on it.
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::Scene box(pm::sim::makeTarget("R1", 0.25));
   const auto sm = pm::sim::makeSimulatedStereoPhotoModel(box, rig, 500);
   ASSERT_EQ(sm.trueDepth.getWidth(), rig.left.width);

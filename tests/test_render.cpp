@@ -43,7 +43,7 @@ pm::sim::Mesh square(double hw, bool white = false)
   return m;
 }
 
-pm::StereoRig labRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
+pm::core::StereoRig labRig() { return pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")); }
 
 //! Pixels (coverage > 0.5) of object \e id in the rasterizer's last image.
 std::vector<std::pair<unsigned, unsigned>> pixelsOf(const pm::sim::Rasterizer &r, std::uint8_t id)
@@ -157,7 +157,7 @@ std::vector<std::pair<std::string, pm::sim::StereoImages>> referenceScenes(pm::s
   struct Case
   {
     std::string code;
-    pm::Phi phi;
+    pm::core::Phi phi;
     bool occluder;
     std::string distractor;
     unsigned supersampling;
@@ -165,7 +165,7 @@ std::vector<std::pair<std::string, pm::sim::StereoImages>> referenceScenes(pm::s
   const std::vector<Case> cases = {{"C12", {0, 0, 500, 0, 0, 0}, false, "", 2},
                                    {"R1", {20, -10, 480, 0.05, -0.1, 0.02}, false, "", 2},
                                    {"C05", {-10, 15, 520, 0.02, 0.04, -0.1}, true, "C12", 1}};
-  const pm::StereoRig rig = labRig();
+  const pm::core::StereoRig rig = labRig();
   std::vector<std::pair<std::string, pm::sim::StereoImages>> out;
   for (const Case &c : cases) {
     pm::sim::SceneParams sp;
@@ -178,8 +178,8 @@ std::vector<std::pair<std::string, pm::sim::StereoImages>> referenceScenes(pm::s
       scene.params().distractor = true;
     }
     pm::sim::StereoImages im;
-    scene.render(raster, rig.left, pm::toHomogeneousMatrix(c.phi), 0, 0, im.left);
-    scene.render(raster, rig.right, pm::toHomogeneousMatrix(c.phi), 0, 1, im.right);
+    scene.render(raster, rig.left, pm::core::toHomogeneousMatrix(c.phi), 0, 0, im.left);
+    scene.render(raster, rig.right, pm::core::toHomogeneousMatrix(c.phi), 0, 1, im.right);
     out.emplace_back(c.code, std::move(im));
   }
   return out;
@@ -249,7 +249,7 @@ TEST(Rasterizer, BandedRenderGivesTheSameImageAsDrawThenResolve)
   const pm::sim::Mesh backdrop = pm::sim::makeBackdropMesh(pm::sim::makeSeaBottomTexture(sea), sea, 0.5);
   const double towardLight[3] = {0.3, -0.4, -0.866};
   const pm::sim::ShadowMap shadow(toy, towardLight, 0.5e-3);
-  const vpHomogeneousMatrix cMo = pm::toHomogeneousMatrix({15, -10, 480, 0.1, -0.15, 0.05});
+  const vpHomogeneousMatrix cMo = pm::core::toHomogeneousMatrix({15, -10, 480, 0.1, -0.15, 0.05});
   pm::sim::Lighting lit;
   for (unsigned i = 0; i < 3; ++i) {
     lit.dirCamera[i] = 0;
@@ -264,7 +264,7 @@ TEST(Rasterizer, BandedRenderGivesTheSameImageAsDrawThenResolve)
   pm::sim::Rasterizer::DrawCall calls[3];
   calls[0] = {&backdrop, cMo, lit, 1};
   calls[1] = {&toy, cMo, gloss, 2};
-  calls[2] = {&other, cMo * pm::toHomogeneousMatrix({-70, 40, -5, 0, 0, 0.7}), plain, 4};
+  calls[2] = {&other, cMo * pm::core::toHomogeneousMatrix({-70, 40, -5, 0, 0, 0.7}), plain, 4};
   const float tank[3] = {0.04f, 0.06f, 0.09f};
   for (unsigned ss = 1; ss <= 3; ++ss)
     for (unsigned h : {480u, 173u}) {
@@ -295,8 +295,8 @@ TEST(Rasterizer, BandedRenderGivesTheSameImageAsDrawThenResolve)
   r.reset(64, 48, 2);
   vpImage<vpRGBa> I;
   r.render(tank, calls, 1, kCam, I, 1.0, 0.0, 0);
-  EXPECT_THROW(r.resolve(I, 1.0, 0.0, 0), pm::Error);
-  EXPECT_THROW(r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 1), pm::Error);
+  EXPECT_THROW(r.resolve(I, 1.0, 0.0, 0), pm::core::Error);
+  EXPECT_THROW(r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 1), pm::core::Error);
   r.clear(0, 0, 0);
   r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 1);
   EXPECT_NO_THROW(r.resolve(I, 1.0, 0.0, 0));
@@ -304,7 +304,7 @@ TEST(Rasterizer, BandedRenderGivesTheSameImageAsDrawThenResolve)
   pm::sim::Rasterizer::DrawCall bad[2] = {calls[0], calls[1]};
   bad[1].id = 0;
   vpImage<vpRGBa> K(5, 7, vpRGBa(1, 2, 3, 4));
-  EXPECT_THROW(r.render(tank, bad, 2, kCam, K, 1.0, 0.0, 0), pm::Error);
+  EXPECT_THROW(r.render(tank, bad, 2, kCam, K, 1.0, 0.0, 0), pm::core::Error);
   EXPECT_EQ(K.getWidth(), 7u);
   EXPECT_EQ(K[0][0].B, 3);
 }
@@ -314,16 +314,16 @@ TEST(Rasterizer, ObjectIdZeroIsRefused)
   pm::sim::Rasterizer r;
   r.reset(64, 48, 1);
   r.clear(0, 0, 0);
-  EXPECT_THROW(r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 0), pm::Error);
+  EXPECT_THROW(r.draw(square(0.05), vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), kCam, pm::sim::Lighting(), 0), pm::core::Error);
 }
 
 TEST(Scene, TargetAtTheTruePoseSitsAtBothImageCentres)
 {
-  const pm::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const pm::core::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
   for (const char *code : {"C04", "C12"}) {
     const pm::sim::Scene scene(pm::sim::makeTarget(code, 0.5));
-    for (const pm::RigCamera *c : {&rig.left, &rig.right}) {
+    for (const pm::core::RigCamera *c : {&rig.left, &rig.right}) {
       pm::sim::Rasterizer r;
       vpImage<vpRGBa> I;
       scene.render(r, *c, hMo, 0, 0, I);
@@ -341,8 +341,8 @@ TEST(Scene, TargetAtTheTruePoseSitsAtBothImageCentres)
 
 TEST(Scene, SameSeedSameImageAndNoiseOfTheRequestedSigma)
 {
-  const pm::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 520, 0.05, 0, 0});
+  const pm::core::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({10, -5, 520, 0.05, 0, 0});
   pm::sim::SceneParams clean;
   clean.noiseSigma = 0;
   pm::sim::SceneParams noisy = clean;
@@ -379,8 +379,8 @@ TEST(Noise, ARunOfPixelsDrawsWhatEachPixelDraws)
 
 TEST(Scene, ExposureScalesBrightness)
 {
-  const pm::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const pm::core::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
   pm::sim::SceneParams p;
   p.noiseSigma = 0;
   pm::sim::SceneParams dim = p;
@@ -401,8 +401,8 @@ TEST(Scene, ExposureScalesBrightness)
 TEST(Scene, ReliefChangesTheViewAndHidesParts)
 {
   // The jellyfish (110 mm deep) turned by eps2 = 0.3: its outline differs from the same toy made flat.
-  const pm::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0.3, 0});
+  const pm::core::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0.3, 0});
   pm::sim::TargetShape deep = pm::sim::makeTarget("C06", 0.5);
   pm::sim::TargetShape flat = deep;
   flat.info.depthMm = 0;
@@ -429,8 +429,8 @@ TEST(Scene, ReliefChangesTheViewAndHidesParts)
 
 TEST(Scene, OccluderHidesPartOfTheTarget)
 {
-  const pm::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const pm::core::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
   const pm::sim::TargetShape shape = pm::sim::makeTarget("C12", 0.5);
   pm::sim::SceneParams p;
   pm::sim::Rasterizer r;
@@ -449,8 +449,8 @@ TEST(Scene, AStereoPairIsTheSameWhateverWasRenderedBefore)
   // The renderer keeps its sample buffers from frame to frame: whatever was rendered before
   // (another toy, no anti-aliasing, supersampling 3, a look-alike, an occluder), a pair is the
   // same, bit for bit, as each image rendered alone with a new rasterizer.
-  const pm::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({10, -5, 520, 0.05, 0, 0.1});
+  const pm::core::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({10, -5, 520, 0.05, 0, 0.1});
   std::vector<pm::sim::Scene> scenes;
   scenes.emplace_back(pm::sim::makeTarget("C12", 0.5));
   pm::sim::SceneParams p;
@@ -492,7 +492,7 @@ TEST(Targets, TwelveWithTheSizesOfFig8)
     EXPECT_NEAR(maxH, info.depthMm, 0.01 * info.depthMm) << info.code;
   }
   EXPECT_TRUE(pm::sim::isCatalogTarget("c12"));
-  EXPECT_THROW(pm::sim::makeTarget("C13"), pm::Error);
+  EXPECT_THROW(pm::sim::makeTarget("C13"), pm::core::Error);
 }
 
 TEST(Targets, GenerationIsDeterministic)
@@ -516,15 +516,15 @@ TEST(Targets, UserImageWithAlphaOutline)
   vpImage<vpRGBa> opaque(50, 100, vpRGBa(200, 150, 20, 255));
   pm::sim::targetFromImage(opaque, 100, 0, "flat").measuredExtent(w, h);
   EXPECT_NEAR(w, 100, 1.5);
-  EXPECT_THROW(pm::sim::targetFromImage(opaque, -1, 0, "bad"), pm::Error);
+  EXPECT_THROW(pm::sim::targetFromImage(opaque, -1, 0, "bad"), pm::core::Error);
 }
 
 TEST(Scene, BadParametersAreRefused)
 {
   pm::sim::SceneParams p;
   p.supersampling = 0;
-  EXPECT_THROW(p.validate(), pm::Error);
+  EXPECT_THROW(p.validate(), pm::core::Error);
   p = pm::sim::SceneParams();
   p.exposure = 0;
-  EXPECT_THROW(p.validate(), pm::Error);
+  EXPECT_THROW(p.validate(), pm::core::Error);
 }

@@ -27,8 +27,8 @@ namespace {
 pm::report::RigCalibrationOutputs calibrationOutputs()
 {
   pm::report::RigCalibrationOutputs o;
-  o.truth = pm::lab::labRigWithLens(pm::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
-  pm::StereoRig est = *o.truth;
+  o.truth = pm::lab::labRigWithLens(pm::core::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
+  pm::core::StereoRig est = *o.truth;
   vpHomogeneousMatrix hMcR = est.right.hMc;
   const vpTranslationVector t = est.right.hMc.getTranslationVector() - est.left.hMc.getTranslationVector();
   const vpTranslationVector longer = est.left.hMc.getTranslationVector() + t * ((t.frobeniusNorm() + 0.002) / t.frobeniusNorm());
@@ -66,7 +66,7 @@ TEST(RigCalibrationOutputs, TheRigItsErrorsToTheTruthAndTheLeftOutPairAreWritten
   EXPECT_EQ(s["pairs_rejected"], 1);
   EXPECT_EQ(s["pairs"][1]["reason"], "the board is blurred in the right image");
   // The rig written is the rig calibrated, lens and all.
-  const pm::StereoRig back = pm::io::loadRig(d.file("rig/rig.json"));
+  const pm::core::StereoRig back = pm::io::loadRig(d.file("rig/rig.json"));
   EXPECT_NEAR(pm::calib::compareRigs(back, o.calibration.rig).translationErrorMm, 0.0, 1e-6);
   EXPECT_EQ(back.right.distortion.coefficients, o.calibration.rig.right.distortion.coefficients);
   const std::string text = pm::report::describeRigCalibration(o, "rig");
@@ -75,7 +75,7 @@ TEST(RigCalibrationOutputs, TheRigItsErrorsToTheTruthAndTheLeftOutPairAreWritten
 
   // A folder that cannot be made: an error, and nothing left where it was asked for.
   pm::test::writeText(d.file("file"), "x");
-  EXPECT_THROW(pm::report::writeRigCalibration(d.file("file/rig"), o), pm::Error);
+  EXPECT_THROW(pm::report::writeRigCalibration(d.file("file/rig"), o), pm::core::Error);
   EXPECT_FALSE(std::filesystem::exists(d.file("file/rig")));
 }
 
@@ -113,11 +113,11 @@ TEST(ModelMaking, AFlatModelFromPhotosThroughALensIsTheIdealCamerasModel)
   // The lab's crab 100 mm right of the optical axis of a camera 500 mm away, photographed once by
   // the ideal camera, once through a strong barrel lens. Given with its lens, the bent pair gives
   // the ideal pair's outline; given without it, the outline's far edge is pulled inward.
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-  pm::RigCamera ideal{"photo", rig.left.cam, rig.left.width, rig.left.height, vpHomogeneousMatrix(), pm::LensDistortion()};
-  pm::RigCamera bent = ideal;
-  bent.distortion = pm::LensDistortion{{-0.4, 0.0, 0, 0, 0}};
+  pm::core::RigCamera ideal{"photo", rig.left.cam, rig.left.width, rig.left.height, vpHomogeneousMatrix(), pm::core::LensDistortion()};
+  pm::core::RigCamera bent = ideal;
+  bent.distortion = pm::core::LensDistortion{{-0.4, 0.0, 0, 0, 0}};
   const vpHomogeneousMatrix hMo(0.1, 0, 0.5, 0, 0, 0);
   pm::sim::Rasterizer r;
   vpImage<vpRGBa> bg[2], toy[2];
@@ -125,7 +125,7 @@ TEST(ModelMaking, AFlatModelFromPhotosThroughALensIsTheIdealCamerasModel)
     scene.render(r, k ? bent : ideal, hMo, 0, 2, bg[k], false);
     scene.render(r, k ? bent : ideal, hMo, 0, 3, toy[k], true);
   }
-  const pm::PhotoModelParams mp;
+  const pm::model::PhotoModelParams mp;
   const pm::report::ModelOutputs a = pm::lab::flatModelFromPhotos(bg[0], toy[0], ideal, 500, mp, "bg.png", "toy.png");
   EXPECT_EQ(a.source, "photos bg.png + toy.png");
   EXPECT_FALSE(a.writePhotos);

@@ -10,7 +10,7 @@
 
 namespace {
 
-vpImagePoint project(const pm::RigCamera &c, double X, double Y, double Z)
+vpImagePoint project(const pm::core::RigCamera &c, double X, double Y, double Z)
 {
   const vpHomogeneousMatrix cMh = c.cMh();
   const double x = cMh[0][0] * X + cMh[0][1] * Y + cMh[0][2] * Z + cMh[0][3];
@@ -25,9 +25,9 @@ vpImagePoint project(const pm::RigCamera &c, double X, double Y, double Z)
 
 TEST(Rig, ShippedLabRigMatchesTheHardware)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   EXPECT_NEAR(rig.baseline(), 0.323, 1e-9);
-  for (const pm::RigCamera *c : {&rig.left, &rig.right}) {
+  for (const pm::core::RigCamera *c : {&rig.left, &rig.right}) {
     EXPECT_EQ(c->width, 640u);
     EXPECT_EQ(c->height, 480u);
     EXPECT_DOUBLE_EQ(c->cam.get_px(), 754);
@@ -46,7 +46,7 @@ TEST(Rig, ShippedLabRigMatchesTheHardware)
 TEST(Rig, ParallelCamerasSeeTheTargetOffCentre)
 {
   vpCameraParameters cam(754, 754, 320, 240);
-  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, 0.323, 0.0);
+  const pm::core::StereoRig rig = pm::core::StereoRig::symmetric(cam, 640, 480, 0.323, 0.0);
   const double shift = 754 * 0.1615 / 0.5; // ~244 px, VISP_NOTES.md
   EXPECT_NEAR(project(rig.left, 0, 0, 0.5).get_u(), 320 + shift, 1e-6);
   EXPECT_NEAR(project(rig.right, 0, 0, 0.5).get_u(), 320 - shift, 1e-6);
@@ -55,8 +55,8 @@ TEST(Rig, ParallelCamerasSeeTheTargetOffCentre)
 TEST(Rig, ToeInIsAParameter)
 {
   vpCameraParameters cam(754, 754, 320, 240);
-  const double toe = pm::StereoRig::toeInFor(0.323, 0.8);
-  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, 0.323, toe);
+  const double toe = pm::core::StereoRig::toeInFor(0.323, 0.8);
+  const pm::core::StereoRig rig = pm::core::StereoRig::symmetric(cam, 640, 480, 0.323, toe);
   EXPECT_NEAR(project(rig.left, 0, 0, 0.8).get_u(), 320, 1e-6);
   EXPECT_NEAR(project(rig.right, 0, 0, 0.8).get_u(), 320, 1e-6);
   EXPECT_NEAR(toe * 180 / M_PI, std::atan(0.1615 / 0.8) * 180 / M_PI, 1e-12);
@@ -66,9 +66,9 @@ TEST(Rig, SaveLoadRoundTrip)
 {
   pm::test::TempDir dir("rig");
   vpCameraParameters cam(800, 790, 330.5, 245.25);
-  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 800, 600, 0.3, 0.2);
+  const pm::core::StereoRig rig = pm::core::StereoRig::symmetric(cam, 800, 600, 0.3, 0.2);
   pm::io::saveRig(rig, dir.file("r.json"), "r_cameras.xml");
-  const pm::StereoRig back = pm::io::loadRig(dir.file("r.json"));
+  const pm::core::StereoRig back = pm::io::loadRig(dir.file("r.json"));
   EXPECT_DOUBLE_EQ(back.left.cam.get_px(), 800);
   EXPECT_DOUBLE_EQ(back.right.cam.get_v0(), 245.25);
   EXPECT_EQ(back.left.width, 800u);
@@ -83,7 +83,7 @@ TEST(Rig, SaveLoadRoundTrip)
 TEST(Rig, NonPositiveFocalLengthIsAClearError)
 {
   pm::test::TempDir dir("rig");
-  pm::io::saveRig(pm::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, 0.3),
+  pm::io::saveRig(pm::core::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, 0.3),
                   dir.file("r.json"), "r_cameras.xml");
   std::string xml = pm::test::readText(dir.file("r_cameras.xml"));
   xml.replace(xml.find("<px>754</px>"), 12, "<px>-754</px>");
@@ -102,7 +102,7 @@ TEST(Rig, BrokenFilesAreClearErrors)
   pm::test::writeText(dir.file("noxml.json"),
                       R"({"format":"visp-photomodel-rig","version":1,"intrinsics_xml":"none.xml","cameras":[]})");
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadRig(dir.file("noxml.json")); }).find("none.xml"), std::string::npos);
-  pm::io::saveRig(pm::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, 0.3),
+  pm::io::saveRig(pm::core::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, 0.3),
                   dir.file("r.json"), "r_cameras.xml");
   std::string j = pm::test::readText(dir.file("r.json"));
   j.replace(j.find("\"right\""), 7, "\"middle\"");

@@ -15,12 +15,12 @@
 namespace {
 
 //! A smooth peak (F = 1 at the centre) that counts its evaluations.
-class Peak : public pm::FitnessFunction
+class Peak : public pm::rmga::FitnessFunction
 {
 public:
-  pm::Phi centre{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
+  pm::core::Phi centre{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
   long calls = 0;
-  void evaluate(const pm::Phi *p, std::size_t n, double *f) override
+  void evaluate(const pm::core::Phi *p, std::size_t n, double *f) override
   {
     const double scale[6] = {30, 30, 30, 0.05, 0.05, 0.05};
     for (std::size_t i = 0; i < n; ++i) {
@@ -35,18 +35,18 @@ public:
   }
 };
 
-double distance(const pm::Phi &a, const pm::Phi &b)
+double distance(const pm::core::Phi &a, const pm::core::Phi &b)
 {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
 }
 
 //! A GA whose whole population starts on the peak, with or without the motion prediction.
-pm::RmGa gaOnThePeak(const Peak &f, std::uint64_t seed, bool predict)
+pm::rmga::RmGa gaOnThePeak(const Peak &f, std::uint64_t seed, bool predict)
 {
-  pm::RmGaParams p;
+  pm::rmga::RmGaParams p;
   p.seed = seed;
   p.predictMotion = predict;
-  pm::RmGa ga(pm::SearchSpace(), p);
+  pm::rmga::RmGa ga(pm::rmga::SearchSpace(), p);
   ga.seedAround(f.centre, 0.0);
   return ga;
 }
@@ -55,34 +55,34 @@ pm::RmGa gaOnThePeak(const Peak &f, std::uint64_t seed, bool predict)
 
 TEST(Chromosome, DecodeEncodeAndRanges)
 {
-  const pm::SearchSpace s;
-  pm::Genome g;
-  EXPECT_DOUBLE_EQ(pm::decode(g, s).x, -180);
-  EXPECT_DOUBLE_EQ(pm::decode(g, s).z, 320);
-  g.gene.fill(pm::Genome::kMax);
-  EXPECT_DOUBLE_EQ(pm::decode(g, s).y, 180);
-  EXPECT_DOUBLE_EQ(pm::decode(g, s).e3, 0.37);
-  const pm::Phi p{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
-  const pm::Phi q = pm::decode(pm::encode(p, s), s);
+  const pm::rmga::SearchSpace s;
+  pm::rmga::Genome g;
+  EXPECT_DOUBLE_EQ(pm::rmga::decode(g, s).x, -180);
+  EXPECT_DOUBLE_EQ(pm::rmga::decode(g, s).z, 320);
+  g.gene.fill(pm::rmga::Genome::kMax);
+  EXPECT_DOUBLE_EQ(pm::rmga::decode(g, s).y, 180);
+  EXPECT_DOUBLE_EQ(pm::rmga::decode(g, s).e3, 0.37);
+  const pm::core::Phi p{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
+  const pm::core::Phi q = pm::rmga::decode(pm::rmga::encode(p, s), s);
   for (std::size_t i = 0; i < 6; ++i) // within half a gene step: range / 4095 / 2
     EXPECT_LE(std::fabs(p[i] - q[i]), (s.hi[i] - s.lo[i]) / 4095.0 / 2 + 1e-12);
-  EXPECT_EQ(pm::encode({1e9, -1e9, 0, 0, 0, NAN}, s).gene[0], pm::Genome::kMax); // clamped
-  EXPECT_EQ(pm::encode({1e9, -1e9, 0, 0, 0, NAN}, s).gene[1], 0);
+  EXPECT_EQ(pm::rmga::encode({1e9, -1e9, 0, 0, 0, NAN}, s).gene[0], pm::rmga::Genome::kMax); // clamped
+  EXPECT_EQ(pm::rmga::encode({1e9, -1e9, 0, 0, 0, NAN}, s).gene[1], 0);
 }
 
 TEST(Chromosome, SeventyTwoBitsCrossoverAndFlip)
 {
-  pm::Genome a, b;
-  a.gene.fill(pm::Genome::kMax); // all ones
+  pm::rmga::Genome a, b;
+  a.gene.fill(pm::rmga::Genome::kMax); // all ones
   EXPECT_TRUE(a.bit(0));
   EXPECT_TRUE(a.bit(71));
-  const pm::Genome c = pm::crossover(a, b, 12); // gene 0 from a, the rest from b
-  EXPECT_EQ(c.gene[0], pm::Genome::kMax);
+  const pm::rmga::Genome c = pm::rmga::crossover(a, b, 12); // gene 0 from a, the rest from b
+  EXPECT_EQ(c.gene[0], pm::rmga::Genome::kMax);
   EXPECT_EQ(c.gene[1], 0);
-  const pm::Genome d = pm::crossover(a, b, 17); // gene 1: 5 high bits from a, 7 low from b
+  const pm::rmga::Genome d = pm::rmga::crossover(a, b, 17); // gene 1: 5 high bits from a, 7 low from b
   EXPECT_EQ(d.gene[1], 0xF80);
   EXPECT_EQ(d.gene[2], 0);
-  pm::Genome e;
+  pm::rmga::Genome e;
   e.flip(0);
   EXPECT_EQ(e.gene[0], 0x800);
   e.flip(71);
@@ -91,12 +91,12 @@ TEST(Chromosome, SeventyTwoBitsCrossoverAndFlip)
 
 TEST(Chromosome, LongEpsIsRepairedNeverInvalid)
 {
-  pm::SearchSpace wide;
+  pm::rmga::SearchSpace wide;
   wide.lo = {-180, -180, 320, -1, -1, -1};
   wide.hi = {180, 180, 680, 1, 1, 1};
-  pm::Genome g;
-  g.gene.fill(pm::Genome::kMax); // eps = (1, 1, 1)
-  const pm::Phi p = pm::decode(g, wide);
+  pm::rmga::Genome g;
+  g.gene.fill(pm::rmga::Genome::kMax); // eps = (1, 1, 1)
+  const pm::core::Phi p = pm::rmga::decode(g, wide);
   EXPECT_TRUE(p.isValid());
   EXPECT_NEAR(std::sqrt(p.epsNorm2()), 0.999, 1e-12);
 }
@@ -104,13 +104,13 @@ TEST(Chromosome, LongEpsIsRepairedNeverInvalid)
 TEST(RmGa, FindsThePeakWithinAnEvaluationBudgetAndCountsThem)
 {
   Peak f;
-  pm::RmGaParams p;
+  pm::rmga::RmGaParams p;
   p.seed = 3;
-  pm::RmGa ga(pm::SearchSpace(), p);
-  pm::FrameResult r;
+  pm::rmga::RmGa ga(pm::rmga::SearchSpace(), p);
+  pm::rmga::FrameResult r;
   long total = 0;
   for (int frame = 0; frame < 60; ++frame) {
-    r = ga.evolve(f, pm::FrameBudget::evals(1000));
+    r = ga.evolve(f, pm::rmga::FrameBudget::evals(1000));
     EXPECT_LE(r.evaluations, 1000);
     total += r.evaluations;
   }
@@ -124,12 +124,12 @@ TEST(RmGa, SameSeedSameRunOtherSeedOtherRun)
 {
   auto run = [](std::uint64_t seed) {
     Peak f;
-    pm::RmGaParams p;
+    pm::rmga::RmGaParams p;
     p.seed = seed;
-    pm::RmGa ga(pm::SearchSpace(), p);
-    std::vector<pm::Phi> bests;
+    pm::rmga::RmGa ga(pm::rmga::SearchSpace(), p);
+    std::vector<pm::core::Phi> bests;
     for (int frame = 0; frame < 10; ++frame)
-      bests.push_back(ga.evolve(f, pm::FrameBudget::evals(500)).best);
+      bests.push_back(ga.evolve(f, pm::rmga::FrameBudget::evals(500)).best);
     return bests;
   };
   const auto a = run(7), b = run(7), c = run(8);
@@ -147,11 +147,11 @@ TEST(RmGa, PredictionFollowsAMovingPeakBetter)
   // The peak moves 2 mm per frame along x; with the motion predicted, the error is smaller.
   auto meanError = [](bool predict) {
     Peak f;
-    pm::RmGa ga = gaOnThePeak(f, 5, predict);
+    pm::rmga::RmGa ga = gaOnThePeak(f, 5, predict);
     double sum = 0;
     for (int frame = 0; frame < 80; ++frame) {
       f.centre.x = -80 + 2.0 * frame;
-      const pm::FrameResult r = ga.evolve(f, pm::FrameBudget::evals(120));
+      const pm::rmga::FrameResult r = ga.evolve(f, pm::rmga::FrameBudget::evals(120));
       if (frame >= 10)
         sum += std::fabs(r.best.x - f.centre.x);
     }
@@ -166,47 +166,47 @@ TEST(RmGa, PredictionKeepsTheLastBestWhereItWas)
   // The peak jumps 60 mm and stays there: the best's jump looks like a velocity, so the prediction
   // would carry everyone 60 mm past the peak. The last best, kept unmoved, is still on it.
   Peak f;
-  pm::RmGa ga = gaOnThePeak(f, 3, true);
+  pm::rmga::RmGa ga = gaOnThePeak(f, 3, true);
   for (int frame = 0; frame < 3; ++frame)
-    ga.evolve(f, pm::FrameBudget::evals(400));
+    ga.evolve(f, pm::rmga::FrameBudget::evals(400));
   f.centre.x += 60;
-  const pm::FrameResult jumped = ga.evolve(f, pm::FrameBudget::evals(20000));
+  const pm::rmga::FrameResult jumped = ga.evolve(f, pm::rmga::FrameBudget::evals(20000));
   ASSERT_LT(distance(jumped.best, f.centre), 5.0) << "the GA did not follow the jump: " << jumped.best.toString();
   // The next frame: only the population's evaluation (no generations).
-  const pm::FrameResult next = ga.evolve(f, pm::FrameBudget::evals(ga.params().population));
+  const pm::rmga::FrameResult next = ga.evolve(f, pm::rmga::FrameBudget::evals(ga.params().population));
   EXPECT_EQ(next.generations, 0);
   EXPECT_LT(distance(next.best, f.centre), distance(jumped.best, f.centre) + 1.0) << next.best.toString();
 }
 
 //! A GA of default parameters (seed \e seed) after 2,000 evaluations on the Peak: converged on it.
-pm::RmGa convergedOnPeak(std::uint64_t seed)
+pm::rmga::RmGa convergedOnPeak(std::uint64_t seed)
 {
   Peak f;
-  pm::RmGaParams p;
+  pm::rmga::RmGaParams p;
   p.seed = seed;
-  pm::RmGa ga(pm::SearchSpace(), p);
-  ga.evolve(f, pm::FrameBudget::evals(2000));
+  pm::rmga::RmGa ga(pm::rmga::SearchSpace(), p);
+  ga.evolve(f, pm::rmga::FrameBudget::evals(2000));
   return ga;
 }
 
 TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBestMirrorsAndLevelsItsTilt)
 {
-  pm::RmGa ga = convergedOnPeak(8);
-  const pm::Genome best = ga.population().front().genome; // sorted by the last generation
+  pm::rmga::RmGa ga = convergedOnPeak(8);
+  const pm::rmga::Genome best = ga.population().front().genome; // sorted by the last generation
   ga.restart(1, 10);
   const auto &pop = ga.population();
   ASSERT_EQ(static_cast<int>(pop.size()), ga.params().population);
   EXPECT_EQ(pop[0].genome, best);
-  const pm::Phi b = pop[0].phi;
+  const pm::core::Phi b = pop[0].phi;
   int positionOnly = 0, orientationOnly = 0, near = 0, mirrored = 0, facing = 0;
-  const double quantum = 2 * 0.37 / pm::Genome::kMax; // one gene step of e1, e2
+  const double quantum = 2 * 0.37 / pm::rmga::Genome::kMax; // one gene step of e1, e2
   for (std::size_t k = 1; k < pop.size(); ++k) {
     const auto &g = pop[k].genome.gene;
-    const pm::Phi &q = pop[k].phi;
+    const pm::core::Phi &q = pop[k].phi;
     auto same = [&](std::size_t from) { return g[from] == best.gene[from] && g[from + 1] == best.gene[from + 1] && g[from + 2] == best.gene[from + 2]; };
     bool close = true;
     for (std::size_t i = 0; i < 6; ++i)
-      close = close && std::abs(static_cast<int>(g[i]) - static_cast<int>(best.gene[i])) <= pm::Genome::kMax / 20;
+      close = close && std::abs(static_cast<int>(g[i]) - static_cast<int>(best.gene[i])) <= pm::rmga::Genome::kMax / 20;
     const bool turnKept = std::abs(q.e3 - b.e3) <= quantum;
     const bool isMirrored = same(0) && turnKept && std::abs(q.e1 + b.e1) <= quantum && std::abs(q.e2 + b.e2) <= quantum;
     const bool isFacing = same(0) && turnKept && std::abs(q.e1) <= quantum && std::abs(q.e2) <= quantum;
@@ -234,20 +234,20 @@ TEST(RmGa, RestartKeepsThePositionOrTheOrientationOfTheBestMirrorsAndLevelsItsTi
 
 TEST(RmGa, AnAnchorAddsItsOrientationAndItsNeighbourhoodToRestartsAndMovesWithThePopulation)
 {
-  pm::RmGa ga = convergedOnPeak(9);
-  const pm::Phi anchor{-100.0, 90.0, 600.0, -0.2, 0.15, -0.1}; // far from the best, on the peak
+  pm::rmga::RmGa ga = convergedOnPeak(9);
+  const pm::core::Phi anchor{-100.0, 90.0, 600.0, -0.2, 0.15, -0.1}; // far from the best, on the peak
   ga.setAnchor(anchor);
   ASSERT_TRUE(ga.hasAnchor());
   ga.restart(1, 10);
-  const pm::Genome a = pm::encode(anchor, pm::SearchSpace());
+  const pm::rmga::Genome a = pm::rmga::encode(anchor, pm::rmga::SearchSpace());
   int anchorOrientation = 0, nearAnchor = 0;
   for (std::size_t k = 1; k < ga.population().size(); ++k) {
     const auto &g = ga.population()[k].genome.gene;
     const bool orientation = g[3] == a.gene[3] && g[4] == a.gene[4] && g[5] == a.gene[5];
     bool posNear = true, rotNear = true;
     for (std::size_t i = 0; i < 3; ++i) {
-      posNear = posNear && std::abs(static_cast<int>(g[i]) - static_cast<int>(a.gene[i])) <= pm::Genome::kMax / 7;
-      rotNear = rotNear && std::abs(static_cast<int>(g[i + 3]) - static_cast<int>(a.gene[i + 3])) <= pm::Genome::kMax / 10;
+      posNear = posNear && std::abs(static_cast<int>(g[i]) - static_cast<int>(a.gene[i])) <= pm::rmga::Genome::kMax / 7;
+      rotNear = rotNear && std::abs(static_cast<int>(g[i + 3]) - static_cast<int>(a.gene[i + 3])) <= pm::rmga::Genome::kMax / 10;
     }
     anchorOrientation += orientation && !posNear;
     nearAnchor += posNear && rotNear && !orientation;
@@ -258,8 +258,8 @@ TEST(RmGa, AnAnchorAddsItsOrientationAndItsNeighbourhoodToRestartsAndMovesWithTh
   EXPECT_GE(nearAnchor, 2);
   EXPECT_LE(nearAnchor, 3);
   // The anchor moves with the population (e.g. with the hand).
-  ga.transform([](const pm::Phi &q) {
-    pm::Phi m = q;
+  ga.transform([](const pm::core::Phi &q) {
+    pm::core::Phi m = q;
     m.x += 25;
     return m;
   });
@@ -270,16 +270,16 @@ TEST(RmGa, AnAnchorAddsItsOrientationAndItsNeighbourhoodToRestartsAndMovesWithTh
 }
 
 //! A wide low hill (a wrong pose the search locks on) and a narrow high peak (the target, moved while unseen).
-class Decoy : public pm::FitnessFunction
+class Decoy : public pm::rmga::FitnessFunction
 {
 public:
-  pm::Phi decoy{100.0, -80.0, 620.0, 0.3, -0.3, 0.2}, target{40.0, 30.0, 500.0, 0.0, 0.0, 0.07};
-  void evaluate(const pm::Phi *p, std::size_t n, double *f) override
+  pm::core::Phi decoy{100.0, -80.0, 620.0, 0.3, -0.3, 0.2}, target{40.0, 30.0, 500.0, 0.0, 0.0, 0.07};
+  void evaluate(const pm::core::Phi *p, std::size_t n, double *f) override
   {
     for (std::size_t i = 0; i < n; ++i)
       f[i] = std::max(0.75 * bump(p[i], decoy, 60, 0.15), bump(p[i], target, 50, 0.1));
   }
-  static double bump(const pm::Phi &p, const pm::Phi &c, double mm, double e)
+  static double bump(const pm::core::Phi &p, const pm::core::Phi &c, double mm, double e)
   {
     double d2 = 0;
     for (std::size_t k = 0; k < 6; ++k) {
@@ -293,21 +293,21 @@ public:
 TEST(RmGa, AfterALockOnAWrongPoseTheAnchorLeadsRestartsToATargetThatMovedWhileUnseen)
 {
   // The last trusted pose: 50 mm and 8 deg from where the target is now (pm-compare's jump).
-  const pm::Phi lastSeen{0.0, 0.0, 495.0, 0.0, 0.0, 0.0};
+  const pm::core::Phi lastSeen{0.0, 0.0, 495.0, 0.0, 0.0, 0.0};
   auto found = [&](bool anchored) {
     int n = 0;
     for (std::uint64_t seed = 1; seed <= 24; ++seed) {
       Decoy f;
-      pm::RmGaParams p;
+      pm::rmga::RmGaParams p;
       p.seed = seed;
       p.restartGenerations = 30;
-      pm::RmGa ga(pm::SearchSpace(), p);
+      pm::rmga::RmGa ga(pm::rmga::SearchSpace(), p);
       ga.seedAround(f.decoy, 0.01); // locked on the decoy
       if (anchored)
         ga.setAnchor(lastSeen);
-      pm::FrameResult r; // the stagnant search restarts every 30 generations
+      pm::rmga::FrameResult r; // the stagnant search restarts every 30 generations
       for (int frame = 0; frame < 10 && !(r.fitness > 0.9); ++frame)
-        r = ga.evolve(f, pm::FrameBudget::evals(1900));
+        r = ga.evolve(f, pm::rmga::FrameBudget::evals(1900));
       n += r.fitness > 0.9;
     }
     return n;
@@ -324,13 +324,13 @@ TEST(RmGa, RefinementSharpensTheBest)
 {
   auto error = [](int refine) {
     Peak f;
-    pm::RmGaParams p;
+    pm::rmga::RmGaParams p;
     p.seed = 11;
     p.refineEvaluations = refine;
-    pm::RmGa ga(pm::SearchSpace(), p);
-    pm::FrameResult r;
+    pm::rmga::RmGa ga(pm::rmga::SearchSpace(), p);
+    pm::rmga::FrameResult r;
     for (int frame = 0; frame < 20; ++frame)
-      r = ga.evolve(f, pm::FrameBudget::evals(600));
+      r = ga.evolve(f, pm::rmga::FrameBudget::evals(600));
     return distance(r.best, f.centre);
   };
   EXPECT_LT(error(200), error(0));
@@ -339,33 +339,33 @@ TEST(RmGa, RefinementSharpensTheBest)
 TEST(RmGa, BadBudgetsAndParametersAreRefused)
 {
   Peak f;
-  pm::RmGa ga{pm::SearchSpace(), pm::RmGaParams()};
-  EXPECT_THROW(ga.evolve(f, pm::FrameBudget::evals(0)), pm::Error);
-  EXPECT_THROW(ga.evolve(f, pm::FrameBudget{}), pm::Error);
-  pm::RmGaParams p;
+  pm::rmga::RmGa ga{pm::rmga::SearchSpace(), pm::rmga::RmGaParams()};
+  EXPECT_THROW(ga.evolve(f, pm::rmga::FrameBudget::evals(0)), pm::core::Error);
+  EXPECT_THROW(ga.evolve(f, pm::rmga::FrameBudget{}), pm::core::Error);
+  pm::rmga::RmGaParams p;
   p.elite = 0;
-  EXPECT_THROW(pm::RmGa(pm::SearchSpace(), p), pm::Error);
-  p = pm::RmGaParams();
+  EXPECT_THROW(pm::rmga::RmGa(pm::rmga::SearchSpace(), p), pm::core::Error);
+  p = pm::rmga::RmGaParams();
   p.population = 1;
-  EXPECT_THROW(pm::RmGa(pm::SearchSpace(), p), pm::Error);
-  pm::SearchSpace s;
+  EXPECT_THROW(pm::rmga::RmGa(pm::rmga::SearchSpace(), p), pm::core::Error);
+  pm::rmga::SearchSpace s;
   s.hi[2] = s.lo[2];
-  EXPECT_THROW(pm::RmGa(s, pm::RmGaParams()), pm::Error);
+  EXPECT_THROW(pm::rmga::RmGa(s, pm::rmga::RmGaParams()), pm::core::Error);
 }
 
 TEST(LocalSimplex, ClimbsASmoothPeakFromAStartOffItWithinItsBudget)
 {
   Peak f;
-  pm::Phi start = f.centre;
+  pm::core::Phi start = f.centre;
   start.x += 4;
   start.y -= 3;
   start.z += 6;
   start.e1 += 0.02;
   start.e3 -= 0.015;
-  pm::LocalSimplexParams p;
+  pm::rmga::LocalSimplexParams p;
   p.maxEvaluations = 600;
   p.tolerance = 0.001;
-  const pm::LocalSimplexResult r = pm::refineLocalSimplex(f, start, p);
+  const pm::rmga::LocalSimplexResult r = pm::rmga::refineLocalSimplex(f, start, p);
   EXPECT_LE(r.evaluations, p.maxEvaluations);
   EXPECT_EQ(f.calls, r.evaluations); // every evaluation counted, none of an invalid pose hidden
   EXPECT_GT(r.fitness, r.startFitness);
@@ -375,7 +375,7 @@ TEST(LocalSimplex, ClimbsASmoothPeakFromAStartOffItWithinItsBudget)
   // A small budget stops early, never below the start, never past the budget.
   Peak g;
   p.maxEvaluations = 20;
-  const pm::LocalSimplexResult s = pm::refineLocalSimplex(g, start, p);
+  const pm::rmga::LocalSimplexResult s = pm::rmga::refineLocalSimplex(g, start, p);
   EXPECT_LE(s.evaluations, 20);
   EXPECT_GE(s.fitness, s.startFitness);
 }
@@ -385,31 +385,31 @@ TEST(LocalSimplex, NeverReturnsAnInvalidPoseAndRefusesBadInput)
   // The peak lies beyond |eps| = 1: the search may push against it but returns a valid pose.
   Peak f;
   f.centre = {0, 0, 500, 0.9, 0.5, 0.0};
-  const pm::LocalSimplexResult r = pm::refineLocalSimplex(f, {0, 0, 500, 0.8, 0.5, 0.0}, pm::LocalSimplexParams());
+  const pm::rmga::LocalSimplexResult r = pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0.8, 0.5, 0.0}, pm::rmga::LocalSimplexParams());
   EXPECT_TRUE(r.best.isValid());
   EXPECT_GE(r.fitness, r.startFitness);
-  pm::LocalSimplexParams bad;
+  pm::rmga::LocalSimplexParams bad;
   bad.step[4] = 0;
-  EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::Error);
-  bad = pm::LocalSimplexParams();
+  EXPECT_THROW(pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::core::Error);
+  bad = pm::rmga::LocalSimplexParams();
   bad.maxEvaluations = 6;
-  EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::Error);
-  EXPECT_THROW(pm::refineLocalSimplex(f, {0, 0, 500, 0.9, 0.9, 0}, pm::LocalSimplexParams()), pm::Error);
+  EXPECT_THROW(pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::core::Error);
+  EXPECT_THROW(pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0.9, 0.9, 0}, pm::rmga::LocalSimplexParams()), pm::core::Error);
 }
 
 namespace {
 
 //! A smooth bowl with its exact gradient for applyTwist's motion and a fixed metric: the score
 //! falls with the distance to the centre (mm) and the rotation angle to it (rad).
-class Bowl : public pm::SmoothFunction
+class Bowl : public pm::rmga::SmoothFunction
 {
 public:
-  pm::Phi centre{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
+  pm::core::Phi centre{12.3, -45.6, 512.0, 0.05, -0.08, 0.12};
   long calls = 0;
-  double valueAndGradient(const pm::Phi &p, double g[6], double *metric) override
+  double valueAndGradient(const pm::core::Phi &p, double g[6], double *metric) override
   {
     ++calls;
-    const vpThetaUVector r(pm::toHomogeneousMatrix(centre).getRotationMatrix() * pm::toHomogeneousMatrix(p).getRotationMatrix().t());
+    const vpThetaUVector r(pm::core::toHomogeneousMatrix(centre).getRotationMatrix() * pm::core::toHomogeneousMatrix(p).getRotationMatrix().t());
     double s = 0;
     for (int k = 0; k < 3; ++k) {
       const double dt = p[static_cast<std::size_t>(k)] - centre[static_cast<std::size_t>(k)];
@@ -426,20 +426,20 @@ public:
   }
 };
 
-double angleDeg(const pm::Phi &a, const pm::Phi &b) { return pm::rotationDistanceDeg(a, b); }
+double angleDeg(const pm::core::Phi &a, const pm::core::Phi &b) { return pm::core::rotationDistanceDeg(a, b); }
 
 } // namespace
 
 TEST(SmoothAscent, ClimbsToTheTopFromTheBestStartWithinItsBudget)
 {
   Bowl f;
-  pm::Phi near = f.centre, far = f.centre;
+  pm::core::Phi near = f.centre, far = f.centre;
   near.x += 3, near.y -= 2, near.z += 4, near.e1 += 0.01, near.e3 -= 0.008; // about 5 mm and 1.5 deg off
   far.x += 40, far.e2 += 0.1;
-  const pm::Phi starts[2] = {far, near};
-  pm::SmoothAscentParams p;
+  const pm::core::Phi starts[2] = {far, near};
+  pm::rmga::SmoothAscentParams p;
   p.maxEvaluations = 60;
-  const pm::SmoothAscentResult r = pm::climbSmooth(f, starts, 2, p);
+  const pm::rmga::SmoothAscentResult r = pm::rmga::climbSmooth(f, starts, 2, p);
   EXPECT_EQ(r.evaluations, f.calls); // every evaluation counted
   EXPECT_LE(r.evaluations, p.maxEvaluations);
   double unused[6];
@@ -450,7 +450,7 @@ TEST(SmoothAscent, ClimbsToTheTopFromTheBestStartWithinItsBudget)
   // A small budget stops early, never below the best start, never past the budget.
   Bowl g;
   p.maxEvaluations = 5;
-  const pm::SmoothAscentResult s = pm::climbSmooth(g, starts, 2, p);
+  const pm::rmga::SmoothAscentResult s = pm::rmga::climbSmooth(g, starts, 2, p);
   EXPECT_EQ(s.evaluations, 5);
   EXPECT_GE(s.score, s.startScore);
   EXPECT_LT(distance(s.best, f.centre), distance(near, f.centre));
@@ -459,22 +459,22 @@ TEST(SmoothAscent, ClimbsToTheTopFromTheBestStartWithinItsBudget)
 TEST(SmoothAscent, RefusesBadInput)
 {
   Bowl f;
-  const pm::Phi ok = f.centre, bad{0, 0, 500, 0.9, 0.9, 0};
-  pm::SmoothAscentParams p;
-  EXPECT_THROW(pm::climbSmooth(f, &bad, 1, p), pm::Error);
-  EXPECT_THROW(pm::climbSmooth(f, &ok, 0, p), pm::Error);
+  const pm::core::Phi ok = f.centre, bad{0, 0, 500, 0.9, 0.9, 0};
+  pm::rmga::SmoothAscentParams p;
+  EXPECT_THROW(pm::rmga::climbSmooth(f, &bad, 1, p), pm::core::Error);
+  EXPECT_THROW(pm::rmga::climbSmooth(f, &ok, 0, p), pm::core::Error);
   p.maxEvaluations = 1;
-  const pm::Phi two[2] = {ok, ok};
-  EXPECT_THROW(pm::climbSmooth(f, two, 2, p), pm::Error); // more starts than evaluations
-  p = pm::SmoothAscentParams();
+  const pm::core::Phi two[2] = {ok, ok};
+  EXPECT_THROW(pm::rmga::climbSmooth(f, two, 2, p), pm::core::Error); // more starts than evaluations
+  p = pm::rmga::SmoothAscentParams();
   p.minStepPx = 0;
-  EXPECT_THROW(pm::climbSmooth(f, &ok, 1, p), pm::Error);
-  p = pm::SmoothAscentParams();
+  EXPECT_THROW(pm::rmga::climbSmooth(f, &ok, 1, p), pm::core::Error);
+  p = pm::rmga::SmoothAscentParams();
   p.shrink = 1;
-  EXPECT_THROW(pm::climbSmooth(f, &ok, 1, p), pm::Error);
-  p = pm::SmoothAscentParams();
+  EXPECT_THROW(pm::rmga::climbSmooth(f, &ok, 1, p), pm::core::Error);
+  p = pm::rmga::SmoothAscentParams();
   p.firstStepPx = 3; // over the largest step
-  EXPECT_THROW(pm::climbSmooth(f, &ok, 1, p), pm::Error);
+  EXPECT_THROW(pm::rmga::climbSmooth(f, &ok, 1, p), pm::core::Error);
 }
 
 namespace {
@@ -484,7 +484,7 @@ class RejectingPeak : public Peak
 {
 public:
   long rejected = 0;
-  void evaluateOrReject(const pm::Phi *p, std::size_t n, double rejectBelow, double *f, double *cost) override
+  void evaluateOrReject(const pm::core::Phi *p, std::size_t n, double rejectBelow, double *f, double *cost) override
   {
     evaluate(p, n, f);
     for (std::size_t i = 0; i < n; ++i) {
@@ -503,8 +503,8 @@ public:
 TEST(RmGa, ChildrenUnderTheWorstParentMayBeRejectedEarlyAndCountTheirShareOfTheBudget)
 {
   RejectingPeak f;
-  pm::RmGa ga{pm::SearchSpace(), pm::RmGaParams()};
-  const pm::FrameResult r = ga.evolve(f, pm::FrameBudget::evals(1000));
+  pm::rmga::RmGa ga{pm::rmga::SearchSpace(), pm::rmga::RmGaParams()};
+  const pm::rmga::FrameResult r = ga.evolve(f, pm::rmga::FrameBudget::evals(1000));
   EXPECT_LE(r.evaluations, 1000);
   EXPECT_GT(f.rejected, 0);
   EXPECT_EQ(r.candidates, f.calls);
@@ -512,15 +512,15 @@ TEST(RmGa, ChildrenUnderTheWorstParentMayBeRejectedEarlyAndCountTheirShareOfTheB
   EXPECT_NEAR(static_cast<double>(r.evaluations), static_cast<double>(f.calls - f.rejected) + 0.25 * static_cast<double>(f.rejected), 1.0);
   // A rejected child never survives: every individual kept holds its exact fitness.
   Peak exact;
-  for (const pm::Individual &i : ga.population()) {
+  for (const pm::rmga::Individual &i : ga.population()) {
     double v = 0;
     exact.evaluate(&i.phi, 1, &v);
     EXPECT_DOUBLE_EQ(i.fitness, v);
   }
   // More poses for the same work than a GA that scores every one.
   Peak g;
-  pm::RmGa plain{pm::SearchSpace(), pm::RmGaParams()};
-  const pm::FrameResult q = plain.evolve(g, pm::FrameBudget::evals(1000));
+  pm::rmga::RmGa plain{pm::rmga::SearchSpace(), pm::rmga::RmGaParams()};
+  const pm::rmga::FrameResult q = plain.evolve(g, pm::rmga::FrameBudget::evals(1000));
   EXPECT_EQ(q.candidates, q.evaluations);
   EXPECT_GT(r.candidates, q.candidates);
 }

@@ -103,8 +103,8 @@ TEST(PA10, JointLimitsAndSpeedsAreNeverCrossed)
     EXPECT_GE(q[i], qmin[i] - 1e-12);
   }
   EXPECT_GT(robot.limitHits(), 0); // it was stopped on its limits, and counted
-  EXPECT_THROW(robot.setVelocity(vpRobot::JOINT_STATE, vpColVector(7, NAN)), pm::Error);
-  EXPECT_THROW(robot.setVelocity(vpRobot::JOINT_STATE, vpColVector(3, 0.0)), pm::Error);
+  EXPECT_THROW(robot.setVelocity(vpRobot::JOINT_STATE, vpColVector(7, NAN)), pm::core::Error);
+  EXPECT_THROW(robot.setVelocity(vpRobot::JOINT_STATE, vpColVector(3, 0.0)), pm::core::Error);
 }
 
 TEST(PA10, EndEffectorVelocityMovesTheFlangeAsCommanded)
@@ -132,50 +132,50 @@ TEST(TcRobot, StepsAndSinusoidWithinTheirLimits)
   const vpHomogeneousMatrix w = sine.wMo(2.5);
   const vpHomogeneousMatrix expect = wMh0 * vpHomogeneousMatrix(0.05, 0, 0.5, 0, 0, 0);
   EXPECT_NEAR(w[0][3], expect[0][3], 1e-12);
-  EXPECT_THROW(pm::sim::TcRobot(wMh0, {0, 0, 500, 0, 0, 0}, 0, 50, 2.0, 300, 1500), pm::Error); // too fast
-  EXPECT_THROW(pm::sim::TcRobot(wMh0, {0, 0, 500, 0, 0, 0}, 7, 50, 0.5, 300, 1500), pm::Error);
+  EXPECT_THROW(pm::sim::TcRobot(wMh0, {0, 0, 500, 0, 0, 0}, 0, 50, 2.0, 300, 1500), pm::core::Error); // too fast
+  EXPECT_THROW(pm::sim::TcRobot(wMh0, {0, 0, 500, 0, 0, 0}, 7, 50, 0.5, 300, 1500), pm::core::Error);
 }
 
 TEST(Servo, InvalidPosesNeverReachVpServo)
 {
-  pm::PbvsServo servo;
+  pm::servo::PbvsServo servo;
   RobotPA10 robot;
   robot.setPosition(vpRobot::JOINT_STATE, pm::robot::Pa10Model().restJoints());
   vpMatrix eJe;
   robot.get_eJe(eJe);
   vpHomogeneousMatrix bad;
   bad[0][3] = NAN;
-  EXPECT_THROW(servo.computeJointVelocity(bad, robot.fMe(), eJe, robot.q(), robot.jointMin(), robot.jointMax(), 0.033), pm::Error);
+  EXPECT_THROW(servo.computeJointVelocity(bad, robot.fMe(), eJe, robot.q(), robot.jointMin(), robot.jointMax(), 0.033), pm::core::Error);
   vpHomogeneousMatrix scaled;
   scaled[0][0] = 3;
-  EXPECT_THROW(servo.computeJointVelocity(scaled, robot.fMe(), eJe, robot.q(), robot.jointMin(), robot.jointMax(), 0.033), pm::Error);
+  EXPECT_THROW(servo.computeJointVelocity(scaled, robot.fMe(), eJe, robot.q(), robot.jointMin(), robot.jointMax(), 0.033), pm::core::Error);
   const vpColVector z = servo.stop(7);
   EXPECT_EQ(z.frobeniusNorm(), 0.0);
   // At the desired pose the command is (nearly) zero; off it, the hand's twist respects its limits.
   const vpColVector q0 = servo.computeJointVelocity(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), robot.fMe(), eJe, robot.q(),
                                                     robot.jointMin(), robot.jointMax(), 0.033);
   EXPECT_LT(q0.frobeniusNorm(), 1e-3);
-  pm::PbvsServo far;
+  pm::servo::PbvsServo far;
   const vpColVector q1 = far.computeJointVelocity(vpHomogeneousMatrix(0.3, 0.2, 0.9, 0.5, 0.2, 0), robot.fMe(), eJe, robot.q(),
                                                   robot.jointMin(), robot.jointMax(), 0.033);
   const vpColVector v = eJe * q1;
-  EXPECT_LE(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), pm::ServoParams().maxHandSpeed + 1e-6);
-  EXPECT_LE(std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]), pm::ServoParams().maxHandRotation + 1e-6);
+  EXPECT_LE(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), pm::servo::ServoParams().maxHandSpeed + 1e-6);
+  EXPECT_LE(std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]), pm::servo::ServoParams().maxHandRotation + 1e-6);
 }
 
 TEST(ClosedLoop, OracleFollowsAStepOfTheTarget)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
   sp.supersampling = 1;
   const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5), sp);
   const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
-  pm::TrackerParams tp;
+  pm::tracker::TrackerParams tp;
   tp.budgetEvaluations = 300;
   pm::lab::LoopParams lp;
   lp.oracle = true;
-  const std::vector<pm::Phi> steps = {{0, 0, 500, 0, 0, 0}, {-50, 0, 500, 0, 0, 0}};
-  pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::ServoParams(), lp, [&](const vpHomogeneousMatrix &wMh0) {
+  const std::vector<pm::core::Phi> steps = {{0, 0, 500, 0, 0, 0}, {-50, 0, 500, 0, 0, 0}};
+  pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::servo::ServoParams(), lp, [&](const vpHomogeneousMatrix &wMh0) {
     return std::make_unique<pm::sim::TcRobot>(wMh0, pm::sim::Trajectory(steps, 0.3, 1.0));
   });
   pm::lab::LoopFrame f;
@@ -198,7 +198,7 @@ TEST(SafeCommand, StopsAndStartsWithinTheLimits)
 {
   const RobotPA10 robot;
   const vpColVector vmax = robot.speedLimits(), amax = robot.accelerationLimits();
-  pm::SafeCommand safe(vmax, amax);
+  pm::servo::SafeCommand safe(vmax, amax);
   const double dt = 1.0 / 30;
   vpColVector wanted(7, 0.0);
   wanted[0] = 5; // over the speed limit of S1 (1 rad/s): scaled down as a whole
@@ -226,8 +226,8 @@ TEST(SafeCommand, StopsAndStartsWithinTheLimits)
     ++frames;
   }
   EXPECT_EQ(frames, 6);
-  EXPECT_THROW(safe.next(wanted, 0), pm::Error);
-  EXPECT_THROW(pm::SafeCommand(vmax, vpColVector(3, 1.0)), pm::Error);
+  EXPECT_THROW(safe.next(wanted, 0), pm::core::Error);
+  EXPECT_THROW(pm::servo::SafeCommand(vmax, vpColVector(3, 1.0)), pm::core::Error);
 }
 
 namespace {
@@ -246,7 +246,7 @@ struct FaultRun
 FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std::string &trackerTarget = "C12", long budget = 1900,
                        const std::string &lookAlike = "", bool issue17Search = false)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
   sp.supersampling = 1;
   pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp);
@@ -256,7 +256,7 @@ FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std:
   }
   const pm::sim::Scene other(pm::sim::makeTarget(trackerTarget), sp);
   const auto sm = pm::sim::makeSimulatedPhotoModel(other, rig.left.cam, 640, 480, 500);
-  pm::TrackerParams tp;
+  pm::tracker::TrackerParams tp;
   tp.budgetEvaluations = budget;
   tp.ga.predictMotion = true;
   tp.ga.refineEvaluations = 100;
@@ -265,8 +265,8 @@ FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std:
     tp.coarseSearch = false;
     tp.lockConfidence = 0;
   }
-  pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::ServoParams(), pm::lab::LoopParams(), [&](const vpHomogeneousMatrix &wMh0) {
-    return std::make_unique<pm::sim::TcRobot>(wMh0, pm::Phi{0, 0, 500, 0, 0, 0}, 0, 30.0, 0.2, 200.0, 500.0);
+  pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::servo::ServoParams(), pm::lab::LoopParams(), [&](const vpHomogeneousMatrix &wMh0) {
+    return std::make_unique<pm::sim::TcRobot>(wMh0, pm::core::Phi{0, 0, 500, 0, 0, 0}, 0, 30.0, 0.2, 200.0, 500.0);
   });
   loop.setFaults(faults);
   const vpColVector vmax = loop.arm().model().speedLimits(), amax = loop.arm().model().accelerationLimits();
@@ -339,7 +339,7 @@ TEST(ClosedLoop, AWrongFirstLockIsNeverServoedOn)
   // first lock is a wrong pose (issue 17's case; servoed on at once before the lock was verified). The arm holds until a challenger search has moved the tracker to the crab, then
   // servos (checked in runWithFaults: never on a wrong pose).
   const FaultRun r = runWithFaults(pm::lab::LoopFaults(), 120, "C12", 600, "", true);
-  ASSERT_TRUE(r.frames[0].track.state == pm::TrackState::Tracking && r.frames[0].wrongEstimate()) << "the case is gone";
+  ASSERT_TRUE(r.frames[0].track.state == pm::tracker::TrackState::Tracking && r.frames[0].wrongEstimate()) << "the case is gone";
   EXPECT_FALSE(r.frames[0].servoing);
   EXPECT_GE(resumedAt(r, 0, 20), 0) << "never servoed";
 }
@@ -361,7 +361,7 @@ TEST(ClosedLoop, ALookAlikeBesideTheTargetIsNeverServoedOn)
     bool onTarget = false;
     int crossings = 0;
     for (const auto &f : r.frames) {
-      if (f.track.state != pm::TrackState::Tracking)
+      if (f.track.state != pm::tracker::TrackState::Tracking)
         continue;
       onTarget = onTarget || f.estimateErrorMm < 50;
       crossings += onTarget && f.estimateErrorMm > 100 ? 1 : 0;

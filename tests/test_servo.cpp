@@ -44,7 +44,7 @@ TEST(PoseFilter, FollowsAConstantMotionWithoutLagAndMeasuresItsTwist)
   // Exact measurements of a body moving at 0.1 m/s and turning at 0.3 rad/s: a constant-velocity
   // filter ends on the pose itself (no lag, unlike a low-pass) and its twist is the motion's.
   const double v[3] = {0.1, -0.04, 0.02}, w[3] = {0.0, 0.1, 0.3}, dt = 1.0 / 30;
-  pm::PoseFilter f;
+  pm::servo::PoseFilter f;
   for (int k = 0; k <= 300; ++k)
     f.update(movingPose(k * dt, v, w), dt);
   const vpHomogeneousMatrix truth = movingPose(300 * dt, v, w);
@@ -64,7 +64,7 @@ TEST(PoseFilter, SmoothsTheNoiseOfAStillPose)
   const vpHomogeneousMatrix truth(0.02, 0.01, 0.5, 0.1, 0.2, -0.1);
   std::mt19937 rng(7);
   std::normal_distribution<double> mm(0.0, 0.002), rad(0.0, M_PI / 180);
-  pm::PoseFilter f;
+  pm::servo::PoseFilter f;
   double measured[2] = {0, 0}, filtered[2] = {0, 0};
   int n = 0;
   for (int k = 0; k < 600; ++k) {
@@ -90,7 +90,7 @@ TEST(PoseFilter, SmoothsTheNoiseOfAStillPose)
 
 TEST(PoseFilter, StartsOnItsFirstMeasurementAndAgainAfterAReset)
 {
-  pm::PoseFilter f;
+  pm::servo::PoseFilter f;
   EXPECT_FALSE(f.initialised());
   const vpHomogeneousMatrix a(0.1, 0.2, 0.7, 0.3, 0, 0), b(-0.2, 0.1, 0.4, 0, 0.5, 0);
   EXPECT_LT(distanceMm(f.update(a, 0.03), a), 1e-9);
@@ -104,13 +104,13 @@ TEST(PoseFilter, StartsOnItsFirstMeasurementAndAgainAfterAReset)
 
 TEST(PoseFilter, GainsOutOfRangeAreRefused)
 {
-  for (auto set : std::vector<void (*)(pm::PoseFilterParams &)>{[](pm::PoseFilterParams &p) { p.alphaT = 0; },
-                                                                [](pm::PoseFilterParams &p) { p.alphaR = 1.5; },
-                                                                [](pm::PoseFilterParams &p) { p.betaT = 2; },
-                                                                [](pm::PoseFilterParams &p) { p.betaR = -0.1; }}) {
-    pm::PoseFilterParams p;
+  for (auto set : std::vector<void (*)(pm::servo::PoseFilterParams &)>{[](pm::servo::PoseFilterParams &p) { p.alphaT = 0; },
+                                                                [](pm::servo::PoseFilterParams &p) { p.alphaR = 1.5; },
+                                                                [](pm::servo::PoseFilterParams &p) { p.betaT = 2; },
+                                                                [](pm::servo::PoseFilterParams &p) { p.betaR = -0.1; }}) {
+    pm::servo::PoseFilterParams p;
     set(p);
-    EXPECT_THROW(pm::PoseFilter{p}, pm::Error);
+    EXPECT_THROW(pm::servo::PoseFilter{p}, pm::core::Error);
   }
-  EXPECT_NO_THROW(pm::PoseFilter{pm::PoseFilterParams()});
+  EXPECT_NO_THROW(pm::servo::PoseFilter{pm::servo::PoseFilterParams()});
 }

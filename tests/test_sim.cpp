@@ -16,7 +16,7 @@ using pm::test::errorOf;
 
 TEST(Trajectory, HoldsThenMovesOnAQuinticWithZeroSpeedAndAccelerationAtTheEnds)
 {
-  const pm::Phi a{0, 0, 500, 0, 0, 0}, b{60, -30, 540, 0.1, 0, -0.05};
+  const pm::core::Phi a{0, 0, 500, 0, 0, 0}, b{60, -30, 540, 0.1, 0, -0.05};
   const pm::sim::Trajectory tr({a, b, a}, 1.5, 1.0);
   EXPECT_DOUBLE_EQ(tr.duration(), 3 * 1.5 + 2 * 1.0);
   // Holds: exactly the waypoint, not moving.
@@ -63,7 +63,7 @@ TEST(Trajectory, HoldsThenMovesOnAQuinticWithZeroSpeedAndAccelerationAtTheEnds)
 
 TEST(Trajectory, Table2HasTwentyValidStepsAndBadTrajectoriesAreRefused)
 {
-  const std::vector<pm::Phi> w = pm::io::readWaypoints(pm::test::dataPath("trajectories/table2.csv"));
+  const std::vector<pm::core::Phi> w = pm::io::readWaypoints(pm::test::dataPath("trajectories/table2.csv"));
   ASSERT_EQ(w.size(), 20u);
   EXPECT_EQ(pm::io::readWaypoints(pm::test::dataPath("trajectories/table2.csv"), 3).size(), 3u);
   const pm::sim::Trajectory tr(w, 1.5, 1.0);

@@ -19,12 +19,12 @@ namespace {
 
 struct C12Scene
 {
-  pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::Scene scene{pm::sim::makeTarget("C12", 0.5)};
   pm::sim::SimulatedPhotoModel sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
-  vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({20, -10, 520, 0.03, -0.02, 0.05});
+  vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({20, -10, 520, 0.03, -0.02, 0.05});
   pm::sim::StereoImages im = scene.renderStereo(rig, hMo, 0);
-  pm::Phi truth = sm.truth(hMo);
+  pm::core::Phi truth = sm.truth(hMo);
 };
 
 const C12Scene &c12()
@@ -33,9 +33,9 @@ const C12Scene &c12()
   return s;
 }
 
-pm::TrackerParams evalBudget(long evals)
+pm::tracker::TrackerParams evalBudget(long evals)
 {
-  pm::TrackerParams p;
+  pm::tracker::TrackerParams p;
   p.budgetEvaluations = evals;
   return p;
 }
@@ -45,17 +45,17 @@ pm::TrackerParams evalBudget(long evals)
 TEST(Tracker, DetectsFromScratch)
 {
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(3000);
+  pm::tracker::TrackerParams p = evalBudget(3000);
   p.ga.population = 100;
   p.ga.restartGenerations = 30;
   p.ga.refineEvaluations = 200;
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initialize();
-  EXPECT_EQ(t.getState(), pm::TrackState::Searching);
-  pm::TrackResult r;
+  EXPECT_EQ(t.getState(), pm::tracker::TrackState::Searching);
+  pm::tracker::TrackResult r;
   for (int k = 0; k < 40; ++k)
     r = t.track(S.im.left, S.im.right);
-  EXPECT_EQ(r.state, pm::TrackState::Tracking);
+  EXPECT_EQ(r.state, pm::tracker::TrackState::Tracking);
   EXPECT_NEAR(r.phi.x, S.truth.x, 2.0);
   EXPECT_NEAR(r.phi.y, S.truth.y, 2.0);
   EXPECT_NEAR(r.phi.e3, S.truth.e3, 0.02);
@@ -66,18 +66,18 @@ TEST(Tracker, DetectsFromScratch)
   EXPECT_GE(r.fitness, t.fitness().evaluate(S.truth)); // RM-GA finds at least what the truth scores
   EXPECT_GT(r.quality, 0.8);
   // The returned hMo is phi's matrix.
-  const pm::Phi back = pm::fromHomogeneousMatrix(r.hMo);
+  const pm::core::Phi back = pm::core::fromHomogeneousMatrix(r.hMo);
   EXPECT_NEAR(back.x, r.phi.x, 1e-9);
 }
 
 TEST(Tracker, InitFromPoseStaysOnTheTarget)
 {
   const C12Scene &S = c12();
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(1000));
-  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
-  EXPECT_EQ(t.getState(), pm::TrackState::Tracking);
-  const pm::TrackResult r = t.track(S.im.left, S.im.right);
-  EXPECT_EQ(r.state, pm::TrackState::Tracking);
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(1000));
+  t.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
+  EXPECT_EQ(t.getState(), pm::tracker::TrackState::Tracking);
+  const pm::tracker::TrackResult r = t.track(S.im.left, S.im.right);
+  EXPECT_EQ(r.state, pm::tracker::TrackState::Tracking);
   EXPECT_NEAR(r.phi.x, S.truth.x, 2.0);
   EXPECT_NEAR(r.phi.y, S.truth.y, 2.0);
   EXPECT_NEAR(r.phi.z, S.truth.z, 10.0);
@@ -86,21 +86,21 @@ TEST(Tracker, InitFromPoseStaysOnTheTarget)
 TEST(Tracker, BlankFramesAreLostThenTheTargetIsFoundAgain)
 {
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(2000);
+  pm::tracker::TrackerParams p = evalBudget(2000);
   p.ga.population = 60;
   p.ga.restartGenerations = 30;
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
-  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   t.track(S.im.left, S.im.right);
   const vpImage<vpRGBa> blank(480, 640, vpRGBa(90, 90, 90));
-  std::vector<pm::TrackState> states;
+  std::vector<pm::tracker::TrackState> states;
   for (int k = 0; k < p.lostFrames + 1; ++k)
     states.push_back(t.track(blank, blank).state);
-  EXPECT_EQ(states.front(), pm::TrackState::Tracking); // one bad frame is not yet a loss
-  EXPECT_EQ(states.back(), pm::TrackState::Lost);
+  EXPECT_EQ(states.front(), pm::tracker::TrackState::Tracking); // one bad frame is not yet a loss
+  EXPECT_EQ(states.back(), pm::tracker::TrackState::Lost);
   int found = -1;
   for (int k = 0; k < 60 && found < 0; ++k)
-    if (t.track(S.im.left, S.im.right).state == pm::TrackState::Tracking)
+    if (t.track(S.im.left, S.im.right).state == pm::tracker::TrackState::Tracking)
       found = k;
   ASSERT_GE(found, 0);
   for (int k = 0; k < 10; ++k) // let it settle
@@ -112,16 +112,16 @@ TEST(Tracker, BlankFramesAreLostThenTheTargetIsFoundAgain)
 TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
 {
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(1000);
+  pm::tracker::TrackerParams p = evalBudget(1000);
   p.steadyBudgetFraction = 0.3;
   p.steadyAfterFrames = 5;
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
-  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
-  std::vector<pm::TrackResult> r;
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
+  std::vector<pm::tracker::TrackResult> r;
   for (int k = 0; k < 10; ++k)
     r.push_back(t.track(S.im.left, S.im.right));
   for (int k = 0; k < 10; ++k) {
-    ASSERT_EQ(r[static_cast<std::size_t>(k)].state, pm::TrackState::Tracking) << "frame " << k;
+    ASSERT_EQ(r[static_cast<std::size_t>(k)].state, pm::tracker::TrackState::Tracking) << "frame " << k;
     // The first frames of a lock have the whole budget; from the sixth on, the steady one.
     EXPECT_EQ(r[static_cast<std::size_t>(k)].steady, k >= 5) << "frame " << k;
     if (k < 5)
@@ -134,30 +134,30 @@ TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
   // A blank frame: it starts with the steady budget (it was not known), q falls, so it gets the
   // rest of the whole budget at once (escalated), and the next frame has all of it.
   const vpImage<vpRGBa> blank(480, 640, vpRGBa(90, 90, 90));
-  const pm::TrackResult b = t.track(blank, blank);
+  const pm::tracker::TrackResult b = t.track(blank, blank);
   EXPECT_FALSE(b.steady);
   EXPECT_TRUE(b.escalated);
   EXPECT_GT(b.evaluations, 900);
   EXPECT_LE(b.evaluations, 1000 + p.ga.population); // the steady part, the rest, and the population scored again
   EXPECT_LT(b.quality, 0.2);
-  const pm::TrackResult next = t.track(S.im.left, S.im.right);
+  const pm::tracker::TrackResult next = t.track(S.im.left, S.im.right);
   EXPECT_FALSE(next.steady);
   EXPECT_FALSE(next.escalated);
   EXPECT_GT(next.evaluations, 900);
   // Without the escalation the blank frame keeps the steady budget.
-  pm::TrackerParams q = p;
+  pm::tracker::TrackerParams q = p;
   q.steadyEscalation = false;
-  pm::PhotoModelTracker u(S.rig, S.sm.build.model, q);
-  u.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  pm::tracker::PhotoModelTracker u(S.rig, S.sm.build.model, q);
+  u.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   for (int k = 0; k < 6; ++k)
     u.track(S.im.left, S.im.right);
-  const pm::TrackResult ub = u.track(blank, blank);
+  const pm::tracker::TrackResult ub = u.track(blank, blank);
   EXPECT_TRUE(ub.steady);
   EXPECT_FALSE(ub.escalated);
   EXPECT_LE(ub.evaluations, 300);
   // Out of range: refused.
   p.steadyBudgetFraction = 0;
-  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::Error);
+  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::core::Error);
 }
 
 TEST(Tracker, SteadyFramesSeeTheHueOnlyAroundTheTargetAndScoreTheSame)
@@ -166,16 +166,16 @@ TEST(Tracker, SteadyFramesSeeTheHueOnlyAroundTheTargetAndScoreTheSame)
   // images: the windows are smaller than the images and hold the model, and every frame's
   // fitness and cues are those of the whole images (the confidence's competitors included).
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(600);
+  pm::tracker::TrackerParams p = evalBudget(600);
   p.steadyAfterFrames = 3;
-  pm::TrackerParams whole = p;
+  pm::tracker::TrackerParams whole = p;
   whole.steadyHueMarginPx = 0;
-  pm::PhotoModelTracker a(S.rig, S.sm.build.model, p), b(S.rig, S.sm.build.model, whole);
-  a.initFromPose(pm::toHomogeneousMatrix(S.truth));
-  b.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  pm::tracker::PhotoModelTracker a(S.rig, S.sm.build.model, p), b(S.rig, S.sm.build.model, whole);
+  a.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
+  b.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   int steady = 0;
   for (int k = 0; k < 8; ++k) {
-    const pm::TrackResult ra = a.track(S.im.left, S.im.right), rb = b.track(S.im.left, S.im.right);
+    const pm::tracker::TrackResult ra = a.track(S.im.left, S.im.right), rb = b.track(S.im.left, S.im.right);
     ASSERT_EQ(ra.steady, rb.steady) << "frame " << k;
     steady += ra.steady;
     // The same search on the same fitness values: the same pose, fitness and confidence.
@@ -185,21 +185,21 @@ TEST(Tracker, SteadyFramesSeeTheHueOnlyAroundTheTargetAndScoreTheSame)
     EXPECT_DOUBLE_EQ(ra.confidence, rb.confidence) << "frame " << k;
     if (ra.steady)
       for (int cam = 0; cam < 2; ++cam) {
-        const pm::PixelRect w = a.fitness().huePlane(cam).window(), fp = a.fitness().footprint(ra.phi, cam);
+        const pm::core::PixelRect w = a.fitness().huePlane(cam).window(), fp = a.fitness().footprint(ra.phi, cam);
         EXPECT_LT((w.u1 - w.u0) * (w.v1 - w.v0), 640 * 480 / 2) << "frame " << k << " camera " << cam;
         EXPECT_TRUE(fp.u0 >= w.u0 && fp.v0 >= w.v0 && fp.u1 <= w.u1 && fp.v1 <= w.v1) << "frame " << k;
       }
   }
   EXPECT_GE(steady, 4);
   p.steadyHueMarginPx = -1;
-  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::Error);
+  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::core::Error);
 }
 
 TEST(Tracker, SameSeedSameEstimates)
 {
   const C12Scene &S = c12();
   auto run = [&] {
-    pm::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(800));
+    pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(800));
     std::vector<double> xs;
     for (int k = 0; k < 5; ++k)
       xs.push_back(t.track(S.im.left, S.im.right).phi.x);
@@ -211,13 +211,13 @@ TEST(Tracker, SameSeedSameEstimates)
 TEST(Tracker, SmoothRefinementRunsOnLockedFramesWithinItsBudgetAndKeepsTheFitness)
 {
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(1000);
+  pm::tracker::TrackerParams p = evalBudget(1000);
   p.smoothRefineEvaluations = 60;
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initialize(); // searching: q is low on the first frames, no refinement there
   int refined = 0;
   for (int k = 0; k < 30; ++k) {
-    const pm::TrackResult r = t.track(S.im.left, S.im.right);
+    const pm::tracker::TrackResult r = t.track(S.im.left, S.im.right);
     EXPECT_LE(r.smoothEvaluations, 60);
     if (r.quality < p.lockQuality - p.smoothRefineMaxDrop) {
       EXPECT_EQ(r.smoothEvaluations, 0);
@@ -226,11 +226,11 @@ TEST(Tracker, SmoothRefinementRunsOnLockedFramesWithinItsBudgetAndKeepsTheFitnes
     EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // the fitness reported is the pose's
   }
   EXPECT_GT(refined, 10);
-  pm::TrackerParams bad = p;
+  pm::tracker::TrackerParams bad = p;
   bad.smoothRefineEvaluations = 3; // fewer than the first simplex
-  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::Error);
+  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::core::Error);
   bad.smoothRefineEvaluations = -1;
-  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::Error);
+  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::core::Error);
 }
 
 namespace {
@@ -247,28 +247,28 @@ struct TrustRun
 
 TrustRun runStill(long verifyEvaluations, int frames, double threshold = 0.95, double lockConfidence = 0)
 {
-  const pm::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   pm::sim::SceneParams sp;
   sp.supersampling = 1;
   pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp);
   const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
-  const pm::Phi truth = sm.truth(hMo);
-  pm::TrackerParams p = evalBudget(600);
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const pm::core::Phi truth = sm.truth(hMo);
+  pm::tracker::TrackerParams p = evalBudget(600);
   p.ga.predictMotion = true;
   p.ga.refineEvaluations = 100;
   p.ga.restartGenerations = 30;
   p.lockConfidence = lockConfidence; // 0: the wrong first lock of this case is taken, for the verification to undo
   p.verifyEvaluations = verifyEvaluations;
   p.confidence.threshold = threshold;
-  pm::PhotoModelTracker t(rig, sm.build.model, p);
+  pm::tracker::PhotoModelTracker t(rig, sm.build.model, p);
   TrustRun run;
   for (int k = 0; k < frames; ++k) {
     const pm::sim::StereoImages im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
-    const pm::TrackResult r = t.track(im.left, im.right);
+    const pm::tracker::TrackResult r = t.track(im.left, im.right);
     run.trusted.push_back(r.trusted);
-    run.tracking.push_back(r.state == pm::TrackState::Tracking);
-    run.right.push_back(pm::translationDistanceMm(r.phi, truth) <= 20 && pm::rotationDistanceDeg(r.phi, truth) <= 5);
+    run.tracking.push_back(r.state == pm::tracker::TrackState::Tracking);
+    run.right.push_back(pm::core::translationDistanceMm(r.phi, truth) <= 20 && pm::core::rotationDistanceDeg(r.phi, truth) <= 5);
     run.confidence.push_back(r.confidence);
     if (r.trusted && run.firstTrusted < 0)
       run.firstTrusted = k;
@@ -320,65 +320,65 @@ TEST(Tracker, APlainlyWrongPoseIsNotLockedTheSearchGoesOn)
 TEST(Tracker, BadInputIsRefused)
 {
   const C12Scene &S = c12();
-  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, evalBudget(5)), pm::Error); // under the population
-  pm::TrackerParams zero;
+  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, evalBudget(5)), pm::core::Error); // under the population
+  pm::tracker::TrackerParams zero;
   zero.budgetMs = 0;
-  EXPECT_THROW(pm::PhotoModelTracker(S.rig, S.sm.build.model, zero), pm::Error);
+  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, zero), pm::core::Error);
   // A model twenty times too large does not fit the rig.
-  pm::PhotoModel huge = S.sm.build.model;
+  pm::core::PhotoModel huge = S.sm.build.model;
   for (auto *set : {&huge.inner, &huge.outer})
     for (auto &q : *set) {
       q.x *= 20;
       q.y *= 20;
     }
-  EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, huge); }).find("does not fit the rig"), std::string::npos);
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(100));
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, huge); }).find("does not fit the rig"), std::string::npos);
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(100));
   EXPECT_EQ(&t.tiltFilter(), &t.params().tiltFilter); // a one-view model: the one-view tilt filter
-  EXPECT_THROW(t.track(vpImage<vpRGBa>(240, 320), S.im.right), pm::Error);
-  pm::TrackerParams v = evalBudget(100);
+  EXPECT_THROW(t.track(vpImage<vpRGBa>(240, 320), S.im.right), pm::core::Error);
+  pm::tracker::TrackerParams v = evalBudget(100);
   v.verifyBudgetFraction = 1.0;
-  EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, S.sm.build.model, v); }).find("verification"), std::string::npos);
-  pm::TrackerParams c = evalBudget(100);
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, v); }).find("verification"), std::string::npos);
+  pm::tracker::TrackerParams c = evalBudget(100);
   c.confidence.threshold = 1.5;
-  EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, S.sm.build.model, c); }).find("threshold"), std::string::npos);
-  pm::TrackerParams u = evalBudget(100);
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, c); }).find("threshold"), std::string::npos);
+  pm::tracker::TrackerParams u = evalBudget(100);
   u.uncertainty.floor[1] = -1;
-  EXPECT_NE(pm::test::errorOf([&] { pm::PhotoModelTracker(S.rig, S.sm.build.model, u); }).find("uncertainty"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, u); }).find("uncertainty"), std::string::npos);
 }
 
 TEST(Tracker, WeighsTheCuesWithTheCoefficientsOfItsModelsKindUnlessGivenItsOwn)
 {
   const C12Scene &S = c12(); // a flat model
-  pm::TrackerParams p = evalBudget(100);
+  pm::tracker::TrackerParams p = evalBudget(100);
   p.confidence.threshold = 0.9;
-  const pm::PhotoModelTracker flat(S.rig, S.sm.build.model, p);
-  EXPECT_EQ(flat.params().confidence.kind, pm::ConfidenceKind::Flat);
-  EXPECT_EQ(flat.params().confidence.weights, pm::ConfidenceModel::shipped(pm::ConfidenceKind::Flat).weights);
+  const pm::tracker::PhotoModelTracker flat(S.rig, S.sm.build.model, p);
+  EXPECT_EQ(flat.params().confidence.kind, pm::tracker::ConfidenceKind::Flat);
+  EXPECT_EQ(flat.params().confidence.weights, pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Flat).weights);
   EXPECT_NE(flat.params().confidence.weights[4], 0.0); // the flat model weighs the tilt
   EXPECT_DOUBLE_EQ(flat.params().confidence.threshold, 0.9); // the threshold as given
-  p.confidence.kind = pm::ConfidenceKind::Custom;
+  p.confidence.kind = pm::tracker::ConfidenceKind::Custom;
   p.confidence.weights.fill(0.25);
-  const pm::PhotoModelTracker custom(S.rig, S.sm.build.model, p);
+  const pm::tracker::PhotoModelTracker custom(S.rig, S.sm.build.model, p);
   EXPECT_EQ(custom.params().confidence.weights[4], 0.25);
   // The kinds that see the relief do not weigh the tilt; only the all-around one weighs the precise stage's cues.
-  for (pm::ConfidenceKind k : {pm::ConfidenceKind::Stereo, pm::ConfidenceKind::AllAround}) {
-    const pm::ConfidenceModel m = pm::ConfidenceModel::shipped(k);
-    EXPECT_EQ(m.weights[4], 0.0) << pm::toString(k);
-    EXPECT_FALSE(pm::ConfidenceModel::featuresUsed(k)[4]);
+  for (pm::tracker::ConfidenceKind k : {pm::tracker::ConfidenceKind::Stereo, pm::tracker::ConfidenceKind::AllAround}) {
+    const pm::tracker::ConfidenceModel m = pm::tracker::ConfidenceModel::shipped(k);
+    EXPECT_EQ(m.weights[4], 0.0) << pm::tracker::toString(k);
+    EXPECT_FALSE(pm::tracker::ConfidenceModel::featuresUsed(k)[4]);
   }
-  for (std::size_t i = 12; i < pm::ConfidenceCues::kFeatures; ++i) {
-    EXPECT_EQ(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Stereo).weights[i], 0.0) << i;
-    EXPECT_EQ(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Flat).weights[i], 0.0) << i;
-    EXPECT_TRUE(pm::ConfidenceModel::featuresUsed(pm::ConfidenceKind::AllAround)[i]) << i;
+  for (std::size_t i = 12; i < pm::tracker::ConfidenceCues::kFeatures; ++i) {
+    EXPECT_EQ(pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Stereo).weights[i], 0.0) << i;
+    EXPECT_EQ(pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Flat).weights[i], 0.0) << i;
+    EXPECT_TRUE(pm::tracker::ConfidenceModel::featuresUsed(pm::tracker::ConfidenceKind::AllAround)[i]) << i;
   }
-  EXPECT_THROW(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Auto), pm::Error);
-  EXPECT_THROW(pm::ConfidenceModel::shipped(pm::ConfidenceKind::Custom), pm::Error);
+  EXPECT_THROW(pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Auto), pm::core::Error);
+  EXPECT_THROW(pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Custom), pm::core::Error);
 }
 
 TEST(TrackerConfig, FileRoundTripAndErrors)
 {
   pm::test::TempDir d("config");
-  pm::TrackerParams p;
+  pm::tracker::TrackerParams p;
   p.budgetEvaluations = 1234;
   p.ga.population = 33;
   p.ga.predictMotion = true;
@@ -399,11 +399,11 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   p.rejectMarginQ = 0.25;
   p.coarseSearch = false;
   p.steadyEscalation = false;
-  p.confidence.kind = pm::ConfidenceKind::Custom;
+  p.confidence.kind = pm::tracker::ConfidenceKind::Custom;
   p.uncertainty.scale[3] = 2.5;
   p.uncertainty.floor[0] = 0.125;
-  pm::test::writeText(d.file("t.json"), pm::trackerConfigToJson(p));
-  const pm::TrackerParams q = pm::loadTrackerConfig(d.file("t.json"));
+  pm::test::writeText(d.file("t.json"), pm::tracker::trackerConfigToJson(p));
+  const pm::tracker::TrackerParams q = pm::tracker::loadTrackerConfig(d.file("t.json"));
   EXPECT_EQ(q.budgetEvaluations, 1234);
   EXPECT_EQ(q.ga.population, 33);
   EXPECT_TRUE(q.ga.predictMotion);
@@ -415,7 +415,7 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_DOUBLE_EQ(q.verifySameObjectMm, 45);
   EXPECT_DOUBLE_EQ(q.confidence.weights[2], -3.25);
   EXPECT_DOUBLE_EQ(q.confidence.threshold, 0.7);
-  EXPECT_EQ(q.confidence.kind, pm::ConfidenceKind::Custom);
+  EXPECT_EQ(q.confidence.kind, pm::tracker::ConfidenceKind::Custom);
   EXPECT_DOUBLE_EQ(q.uncertainty.scale[3], 2.5);
   EXPECT_DOUBLE_EQ(q.uncertainty.floor[0], 0.125);
   EXPECT_EQ(q.smoothAscent.maxEvaluations, 31);
@@ -424,23 +424,23 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
   EXPECT_DOUBLE_EQ(q.tiltFilter.alpha, 0.35);
   EXPECT_DOUBLE_EQ(q.tiltFilter.gateDeg, 7);
   EXPECT_DOUBLE_EQ(q.tiltFilterAllAround.beta, 0.03);
-  EXPECT_DOUBLE_EQ(q.tiltFilterAllAround.alpha, pm::TrackerParams().tiltFilterAllAround.alpha);
+  EXPECT_DOUBLE_EQ(q.tiltFilterAllAround.alpha, pm::tracker::TrackerParams().tiltFilterAllAround.alpha);
   EXPECT_DOUBLE_EQ(q.rejectMarginQ, 0.25);
   EXPECT_FALSE(q.coarseSearch);
   EXPECT_FALSE(q.steadyEscalation);
   // A file with no keys gives the library's defaults, or the caller's.
   pm::test::writeText(d.file("empty.json"), R"({"format":"visp-photomodel-tracker","version":1})");
-  EXPECT_EQ(pm::trackerConfigToJson(pm::loadTrackerConfig(d.file("empty.json"))), pm::trackerConfigToJson(pm::TrackerParams()));
-  EXPECT_EQ(pm::loadTrackerConfig(d.file("empty.json"), evalBudget(1234)).budgetEvaluations, 1234);
+  EXPECT_EQ(pm::tracker::trackerConfigToJson(pm::tracker::loadTrackerConfig(d.file("empty.json"))), pm::tracker::trackerConfigToJson(pm::tracker::TrackerParams()));
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("empty.json"), evalBudget(1234)).budgetEvaluations, 1234);
   // Partial files keep the defaults.
   pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
-  EXPECT_EQ(pm::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
-  EXPECT_EQ(pm::loadTrackerConfig(d.file("partial.json")).ga.population, 20);
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("partial.json")).ga.population, 20);
   // Weights written without a kind are meant to be used: the kind is then custom.
   pm::test::writeText(d.file("weights.json"), R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"weights":[1,1,1,1,1,1,1,1,1,1,1,1,0,0,0,0,0,0]}})");
-  EXPECT_EQ(pm::loadTrackerConfig(d.file("weights.json")).confidence.kind, pm::ConfidenceKind::Custom);
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("weights.json")).confidence.kind, pm::tracker::ConfidenceKind::Custom);
   pm::test::writeText(d.file("kind.json"), R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"kind":"all-around"}})");
-  EXPECT_EQ(pm::loadTrackerConfig(d.file("kind.json")).confidence.kind, pm::ConfidenceKind::AllAround);
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("kind.json")).confidence.kind, pm::tracker::ConfidenceKind::AllAround);
   const std::vector<std::pair<std::string, std::string>> bad = {
       {R"({"format":"visp-photomodel-tracker","version":1,"budget_ms":0})", "budget"},
       {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"populaton":10}})", "populaton"},
@@ -461,87 +461,87 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
       {R"({"format":"x"})", "format"}};
   for (const auto &[text, expect] : bad) {
     pm::test::writeText(d.file("bad.json"), text);
-    const std::string e = pm::test::errorOf([&] { pm::loadTrackerConfig(d.file("bad.json")); });
+    const std::string e = pm::test::errorOf([&] { pm::tracker::loadTrackerConfig(d.file("bad.json")); });
     EXPECT_NE(e.find(expect), std::string::npos) << text << " -> " << e;
   }
 }
 
 TEST(TiltFilter, SmoothsTheTiltOnlyFollowsASteadyTurnAndRestartsOnAJump)
 {
-  pm::TiltFilter f; // alpha 0.2, beta 0.02, gate 5 deg
-  const pm::Phi truth{10, -20, 500, 0.03, -0.02, 0.1};
+  pm::tracker::TiltFilter f; // alpha 0.2, beta 0.02, gate 5 deg
+  const pm::core::Phi truth{10, -20, 500, 0.03, -0.02, 0.1};
   // Measurements whose tilt alternates +-1 deg about the truth, whose position and turn about z
   // (e3) jitter too: the tilt comes out much steadier, the rest exactly as measured.
   std::vector<double> tiltErr;
   for (int k = 0; k < 60; ++k) {
     const double s = k % 2 ? 1.0 : -1.0;
     const double d[6] = {0.5 * s, -0.3 * s, 1.0 * s, s * 0.0175, -s * 0.0175, 0.01 * s};
-    const pm::Phi z = pm::applyTwist(truth, d);
-    const pm::Phi out = f.update(z);
+    const pm::core::Phi z = pm::core::applyTwist(truth, d);
+    const pm::core::Phi out = f.update(z);
     EXPECT_EQ(out.x, z.x);
     EXPECT_EQ(out.y, z.y);
     EXPECT_EQ(out.z, z.z);
     if (k >= 30)
-      tiltErr.push_back(pm::rotationDistanceDeg(pm::Phi{0, 0, 0, out.e1, out.e2, 0}, pm::Phi{0, 0, 0, truth.e1, truth.e2, 0}));
+      tiltErr.push_back(pm::core::rotationDistanceDeg(pm::core::Phi{0, 0, 0, out.e1, out.e2, 0}, pm::core::Phi{0, 0, 0, truth.e1, truth.e2, 0}));
     // The turn about the hand's z axis passes: the rotation from the output to the measurement has no z part.
-    const vpThetaUVector r(pm::toHomogeneousMatrix(z).getRotationMatrix() * pm::toHomogeneousMatrix(out).getRotationMatrix().t());
+    const vpThetaUVector r(pm::core::toHomogeneousMatrix(z).getRotationMatrix() * pm::core::toHomogeneousMatrix(out).getRotationMatrix().t());
     EXPECT_NEAR(r[2], 0.0, 1e-3) << k;
   }
   for (double e : tiltErr)
     EXPECT_LT(e, 0.6); // the measurements are 1.4 deg off (1 deg about x and y)
   // A steady tilting (0.5 deg per frame about x) is followed without a lasting lag.
-  pm::TiltFilter g;
-  pm::Phi p = truth, out;
+  pm::tracker::TiltFilter g;
+  pm::core::Phi p = truth, out;
   for (int k = 0; k < 80; ++k) {
     const double turn[6] = {0, 0, 0, 0.5 * M_PI / 180, 0, 0};
-    p = pm::applyTwist(p, turn);
+    p = pm::core::applyTwist(p, turn);
     out = g.update(p);
   }
-  EXPECT_LT(pm::rotationDistanceDeg(out, p), 0.1);
+  EXPECT_LT(pm::core::rotationDistanceDeg(out, p), 0.1);
   // A jump past the gate: taken as measured, and the filter starts from it.
   const double jump[6] = {0, 0, 0, 0.2, 0, 0}; // 11 deg
-  const pm::Phi j = pm::applyTwist(p, jump), gj = g.update(j);
+  const pm::core::Phi j = pm::core::applyTwist(p, jump), gj = g.update(j);
   EXPECT_EQ(gj.e1, j.e1);
   EXPECT_EQ(gj.e2, j.e2);
   EXPECT_EQ(gj.e3, j.e3);
   // The hand moves: the filtered pose moves with it, so a still target stays still.
-  pm::TiltFilter h;
+  pm::tracker::TiltFilter h;
   for (int k = 0; k < 5; ++k)
     h.update(truth);
   vpHomogeneousMatrix hNowMhPrev(0.01, 0, 0, 0, vpMath::rad(2), 0);
   h.transform(hNowMhPrev);
-  const pm::Phi seen = pm::fromHomogeneousMatrix(hNowMhPrev * pm::toHomogeneousMatrix(truth));
-  EXPECT_LT(pm::rotationDistanceDeg(h.update(seen), seen), 1e-6);
+  const pm::core::Phi seen = pm::core::fromHomogeneousMatrix(hNowMhPrev * pm::core::toHomogeneousMatrix(truth));
+  EXPECT_LT(pm::core::rotationDistanceDeg(h.update(seen), seen), 1e-6);
   // Off (alpha 1, beta 0): every pose passes unchanged; bad gains are refused.
-  pm::TiltFilterParams off;
+  pm::tracker::TiltFilterParams off;
   off.alpha = 1;
   off.beta = 0;
-  pm::TiltFilter o(off);
+  pm::tracker::TiltFilter o(off);
   EXPECT_EQ(o.update(truth).e1, truth.e1);
-  EXPECT_THROW(o.update({0, 0, 500, 0.9, 0.9, 0}), pm::Error);
-  pm::TiltFilterParams bad;
+  EXPECT_THROW(o.update({0, 0, 500, 0.9, 0.9, 0}), pm::core::Error);
+  pm::tracker::TiltFilterParams bad;
   bad.alpha = 0;
-  EXPECT_THROW(pm::TiltFilter{bad}, pm::Error);
-  bad = pm::TiltFilterParams();
+  EXPECT_THROW(pm::tracker::TiltFilter{bad}, pm::core::Error);
+  bad = pm::tracker::TiltFilterParams();
   bad.gateDeg = -1;
-  EXPECT_THROW(pm::TiltFilter{bad}, pm::Error);
+  EXPECT_THROW(pm::tracker::TiltFilter{bad}, pm::core::Error);
 }
 
 TEST(Tracker, SearchingFramesScoreManyPosesCoarselyAndReportTheExactFitness)
 {
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(800);
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  pm::tracker::TrackerParams p = evalBudget(800);
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initialize();
-  const pm::TrackResult r = t.track(S.im.left, S.im.right); // searching: every candidate on a quarter of the points
+  const pm::tracker::TrackResult r = t.track(S.im.left, S.im.right); // searching: every candidate on a quarter of the points
   EXPECT_LE(r.evaluations, 801); // the work within the budget (and the best scored exactly)
   EXPECT_GT(r.candidates, 3 * r.evaluations);
   EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // F itself, not the estimate
   // Without the coarse search (only the early rejection of hopeless children) it scores under half as many.
   p.coarseSearch = false;
-  pm::PhotoModelTracker u(S.rig, S.sm.build.model, p);
+  pm::tracker::PhotoModelTracker u(S.rig, S.sm.build.model, p);
   u.initialize();
-  const pm::TrackResult q = u.track(S.im.left, S.im.right);
+  const pm::tracker::TrackResult q = u.track(S.im.left, S.im.right);
   EXPECT_LE(q.evaluations, 800);
   EXPECT_LT(2 * q.candidates, r.candidates);
 }
@@ -549,15 +549,15 @@ TEST(Tracker, SearchingFramesScoreManyPosesCoarselyAndReportTheExactFitness)
 TEST(Tracker, TheSmoothAscentRunsOnLockedFramesWithinItsBudgetAndTheFrameTimeIsAccountedFor)
 {
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(400);
+  pm::tracker::TrackerParams p = evalBudget(400);
   p.smoothAscent.maxEvaluations = 10;
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
-  t.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  t.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   int climbed = 0;
   for (int k = 0; k < 20; ++k) {
-    const pm::TrackResult r = t.track(S.im.left, S.im.right);
+    const pm::tracker::TrackResult r = t.track(S.im.left, S.im.right);
     EXPECT_LE(r.ascentEvaluations, 10);
-    if (r.state == pm::TrackState::Tracking && r.quality >= p.lockQuality) {
+    if (r.state == pm::tracker::TrackState::Tracking && r.quality >= p.lockQuality) {
       ++climbed;
       EXPECT_GT(r.ascentEvaluations, 0);
     }
@@ -572,8 +572,8 @@ TEST(Tracker, TheSmoothAscentRunsOnLockedFramesWithinItsBudgetAndTheFrameTimeIsA
   EXPECT_GT(climbed, 15);
   // Off: no climb.
   p.smoothAscent.maxEvaluations = 0;
-  pm::PhotoModelTracker u(S.rig, S.sm.build.model, p);
-  u.initFromPose(pm::toHomogeneousMatrix(S.truth));
+  pm::tracker::PhotoModelTracker u(S.rig, S.sm.build.model, p);
+  u.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   EXPECT_EQ(u.track(S.im.left, S.im.right).ascentEvaluations, 0);
 }
 
@@ -583,16 +583,16 @@ TEST(StaticDetection, FindsTheStillTargetStopsByItsRulesAndTheNearestPeakScoresA
   // has not improved for `patience` frames; the fitness peak nearest the truth is where a perfect
   // detector would land.
   const C12Scene &S = c12();
-  pm::TrackerParams p = evalBudget(3000);
+  pm::tracker::TrackerParams p = evalBudget(3000);
   p.ga.population = 100;
   p.ga.restartGenerations = 30;
-  pm::PhotoModelTracker t(S.rig, S.sm.build.model, p);
+  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initialize();
-  pm::DetectionParams dp;
+  pm::tracker::DetectionParams dp;
   dp.patience = 15;
   dp.maxTimeS = 600; // never reached: the patience stops it
-  const pm::Detection d = pm::detectStatic(t, S.im.left, S.im.right, dp);
-  EXPECT_EQ(d.best.state, pm::TrackState::Tracking);
+  const pm::tracker::Detection d = pm::tracker::detectStatic(t, S.im.left, S.im.right, dp);
+  EXPECT_EQ(d.best.state, pm::tracker::TrackState::Tracking);
   EXPECT_NEAR(d.best.phi.x, S.truth.x, 2.0);
   EXPECT_NEAR(d.best.phi.y, S.truth.y, 2.0);
   EXPECT_NEAR(d.best.phi.e3, S.truth.e3, 0.02);
@@ -603,17 +603,17 @@ TEST(StaticDetection, FindsTheStillTargetStopsByItsRulesAndTheNearestPeakScoresA
   const double fTruth = t.fitness().evaluate(S.truth);
   EXPECT_GE(d.best.fitness, fTruth);
 
-  const pm::Phi peak = pm::nearestFitnessPeak(t.fitness(), S.truth, p.space);
+  const pm::core::Phi peak = pm::tracker::nearestFitnessPeak(t.fitness(), S.truth, p.space);
   EXPECT_GE(t.fitness().evaluate(peak), fTruth);
-  EXPECT_LT(pm::translationDistanceMm(peak, S.truth), 8.0); // the flat model's own bias on a 40 mm deep toy
-  EXPECT_LT(pm::translationDistanceMm(peak, d.best.phi), 4.0); // the detection lands on the peak rather than on the truth
+  EXPECT_LT(pm::core::translationDistanceMm(peak, S.truth), 8.0); // the flat model's own bias on a 40 mm deep toy
+  EXPECT_LT(pm::core::translationDistanceMm(peak, d.best.phi), 4.0); // the detection lands on the peak rather than on the truth
 
   // Without patience, the time limit stops it.
-  pm::PhotoModelTracker t2(S.rig, S.sm.build.model, p);
+  pm::tracker::PhotoModelTracker t2(S.rig, S.sm.build.model, p);
   t2.initialize();
   dp.patience = 1000000;
   dp.maxTimeS = 0.3;
-  const pm::Detection d2 = pm::detectStatic(t2, S.im.left, S.im.right, dp);
+  const pm::tracker::Detection d2 = pm::tracker::detectStatic(t2, S.im.left, S.im.right, dp);
   EXPECT_GE(d2.totalS, 0.3);
   EXPECT_LT(d2.frames, 1000000);
 }

@@ -44,7 +44,7 @@ std::vector<pm::compare::UncertaintySample> gaussianSamples(double trueScale, st
 
 TEST(PoseUncertainty, TheLinesSigmasAreTheRootsOfTheInverseInformationsDiagonalInMmAndDeg)
 {
-  const std::array<double, 6> s = pm::lineSigmas(diagonalInformation({0.5, 0.25, 2.0, 0.01, 0.002, 0.004}));
+  const std::array<double, 6> s = pm::precise::lineSigmas(diagonalInformation({0.5, 0.25, 2.0, 0.01, 0.002, 0.004}));
   EXPECT_NEAR(s[0], 0.5, 1e-9);
   EXPECT_NEAR(s[1], 0.25, 1e-9);
   EXPECT_NEAR(s[2], 2.0, 1e-9);
@@ -53,16 +53,16 @@ TEST(PoseUncertainty, TheLinesSigmasAreTheRootsOfTheInverseInformationsDiagonalI
   // A correlated pair: the marginal sigma is that of the inverse, not 1 / sqrt of the diagonal.
   std::array<double, 36> I = diagonalInformation({1, 1, 1, 1, 1, 1});
   I[1] = I[6] = 0.5; // x and y information coupled
-  EXPECT_NEAR(pm::lineSigmas(I)[0], std::sqrt(1.0 / 0.75), 1e-9);
+  EXPECT_NEAR(pm::precise::lineSigmas(I)[0], std::sqrt(1.0 / 0.75), 1e-9);
 }
 
 TEST(PoseUncertainty, IsUnknownWhenTheLinesDoNotPinEveryDegreeOfFreedom)
 {
   std::array<double, 36> I = diagonalInformation({1, 1, 1, 0.01, 0.01, 0.01});
   I[35] = 0; // nothing about the rotation about z (a circle seen face-on)
-  const pm::UncertaintyModel m;
+  const pm::precise::UncertaintyModel m;
   EXPECT_FALSE(m.uncertainty(I, 1.0).known);
-  EXPECT_TRUE(std::isinf(pm::lineSigmas(I)[5]));
+  EXPECT_TRUE(std::isinf(pm::precise::lineSigmas(I)[5]));
   I[35] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(m.uncertainty(I, 1.0).known);
   EXPECT_FALSE(m.uncertainty(diagonalInformation({1, 1, 1, 1, 1, 1}), -1.0).known); // no residual
@@ -70,10 +70,10 @@ TEST(PoseUncertainty, IsUnknownWhenTheLinesDoNotPinEveryDegreeOfFreedom)
 
 TEST(PoseUncertainty, ScalesTheLinesSigmaByTheResidualAndAddsTheFloorInQuadrature)
 {
-  pm::UncertaintyModel m;
+  pm::precise::UncertaintyModel m;
   m.scale = {2, 2, 2, 3, 3, 3};
   m.floor = {0.3, 0, 0, 0, 0.4, 0};
-  const pm::PoseUncertainty u = m.uncertainty(diagonalInformation({0.2, 0.2, 0.2, 0.001, 0.001, 0.001}), 1.5);
+  const pm::precise::PoseUncertainty u = m.uncertainty(diagonalInformation({0.2, 0.2, 0.2, 0.001, 0.001, 0.001}), 1.5);
   ASSERT_TRUE(u.known);
   EXPECT_NEAR(u.sigmaMm[0], std::hypot(2 * 1.5 * 0.2, 0.3), 1e-9);
   EXPECT_NEAR(u.sigmaMm[1], 2 * 1.5 * 0.2, 1e-9);
@@ -84,22 +84,22 @@ TEST(PoseUncertainty, ScalesTheLinesSigmaByTheResidualAndAddsTheFloorInQuadratur
 
 TEST(PoseUncertainty, AScaleThatIsNotPositiveOrAFloorThatIsNegativeIsRefused)
 {
-  EXPECT_NO_THROW(pm::UncertaintyModel().validate());
-  pm::UncertaintyModel m;
+  EXPECT_NO_THROW(pm::precise::UncertaintyModel().validate());
+  pm::precise::UncertaintyModel m;
   m.scale[2] = 0;
-  EXPECT_THROW(m.validate(), pm::Error);
-  m = pm::UncertaintyModel();
+  EXPECT_THROW(m.validate(), pm::core::Error);
+  m = pm::precise::UncertaintyModel();
   m.floor[4] = -0.1;
-  EXPECT_THROW(m.validate(), pm::Error);
-  m = pm::UncertaintyModel();
+  EXPECT_THROW(m.validate(), pm::core::Error);
+  m = pm::precise::UncertaintyModel();
   m.scale[0] = std::numeric_limits<double>::infinity();
-  EXPECT_THROW(m.validate(), pm::Error);
+  EXPECT_THROW(m.validate(), pm::core::Error);
 }
 
 TEST(UncertaintyCalibration, TheFitFindsTheTrueScaleOfGaussianErrorsAndPuts68PercentWithinOneSigma)
 {
   const auto a = gaussianSamples(2.5, 3000, 1), b = gaussianSamples(2.5, 3000, 2), held = gaussianSamples(2.5, 3000, 3);
-  const pm::UncertaintyModel m = pm::compare::fitUncertainty({a, b});
+  const pm::precise::UncertaintyModel m = pm::compare::fitUncertainty({a, b});
   for (std::size_t axis = 0; axis < 6; ++axis) {
     // Scale and floor trade off a little on a finite sample (the fit matches shares, not the
     // parameters); the sigmas it gives are the true ones within 10 % on the median frame.
@@ -115,9 +115,9 @@ TEST(UncertaintyCalibration, TheFitFindsTheTrueScaleOfGaussianErrorsAndPuts68Per
     EXPECT_NEAR(w2[axis], 0.954, 0.02) << axis;
   }
   // The lines' own sigma (scale 1) is over-confident here: far fewer errors within it.
-  pm::UncertaintyModel raw;
+  pm::precise::UncertaintyModel raw;
   raw.scale.fill(1.0);
   raw.floor.fill(0.0);
   EXPECT_LT(pm::compare::shareWithin(held, raw, 1.0)[0], 0.4);
-  EXPECT_THROW(pm::compare::fitUncertainty({a, {}}), pm::Error);
+  EXPECT_THROW(pm::compare::fitUncertainty({a, {}}), pm::core::Error);
 }

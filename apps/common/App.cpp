@@ -75,7 +75,7 @@ int run(CLI::App &app, int argc, char **argv, const std::function<int()> &body, 
   } catch (const CLI::ParseError &e) {
     std::cerr << app.get_name() << ": usage error: " << e.what() << " (see --help)" << std::endl;
     return 2;
-  } catch (const pm::Error &e) {
+  } catch (const pm::core::Error &e) {
     std::cerr << "error: " << e.what() << std::endl;
   } catch (const vpException &e) {
     std::cerr << "error: " << e.getStringMessage() << std::endl;
@@ -113,7 +113,7 @@ std::vector<std::string> imageFiles(const std::vector<std::string> &values, int 
   for (long k = firstFrame; std::filesystem::exists(frameFileName(values.front(), k)); ++k)
     files.push_back(frameFileName(values.front(), k));
   if (files.empty())
-    throw pm::Error("no image " + frameFileName(values.front(), firstFrame) + " (the pattern " + values.front() + " from frame " +
+    throw pm::core::Error("no image " + frameFileName(values.front(), firstFrame) + " (the pattern " + values.front() + " from frame " +
                     std::to_string(firstFrame) + ")");
   return files;
 }

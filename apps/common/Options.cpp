@@ -5,7 +5,7 @@
 
 namespace pm::app {
 
-void addModelOptions(CLI::App &app, PhotoModelParams &p)
+void addModelOptions(CLI::App &app, model::PhotoModelParams &p)
 {
   const char *g = "Photo-model";
   app.add_option("--step-px", p.stepPx, "sampling step of S_in (grid) and along S_out (px)")->check(CLI::Range(1.0, 200.0))->group(g);
@@ -77,7 +77,7 @@ void addDistractorOptions(CLI::App &app, DistractorChoice &c)
       ->group(g);
 }
 
-void addFitnessOptions(CLI::App &app, FitnessParams &p)
+void addFitnessOptions(CLI::App &app, core::FitnessParams &p)
 {
   const char *g = "Fitness";
   app.add_option("--in-tol-deg", p.inTolDeg, "S_in: |H_I - H_M| tolerance (deg)")->check(CLI::Range(0.0, 180.0))->group(g);
@@ -85,78 +85,78 @@ void addFitnessOptions(CLI::App &app, FitnessParams &p)
   app.add_option("--out-bg-tol-deg", p.outBgTolDeg, "S_out: |H_B - H_I| tolerance (deg)")->check(CLI::Range(0.0, 180.0))->group(g);
 }
 
-TrackerOptions::TrackerOptions(CLI::App &app, const TrackerParams &defaults) : m_defaults(defaults), m_cli(defaults)
+TrackerOptions::TrackerOptions(CLI::App &app, const tracker::TrackerParams &defaults) : m_defaults(defaults), m_cli(defaults)
 {
   const char *g = "Tracker";
   app.add_option("--config", m_config, "tracker configuration file (JSON); command-line options override it")
       ->check(CLI::ExistingFile)
       ->group(g);
-  auto add = [&](CLI::Option *o, std::function<void(TrackerParams &, const TrackerParams &)> f) {
+  auto add = [&](CLI::Option *o, std::function<void(tracker::TrackerParams &, const tracker::TrackerParams &)> f) {
     o->group(g);
     m_set.emplace_back(o, std::move(f));
   };
-  TrackerParams &p = m_cli;
+  tracker::TrackerParams &p = m_cli;
   add(app.add_option("--budget-ms", p.budgetMs, "compute budget per frame, wall time (ms)")->check(CLI::Range(0.0, 1e6)),
-      [](TrackerParams &t, const TrackerParams &c) { t.budgetMs = c.budgetMs; t.budgetEvaluations = 0; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.budgetMs = c.budgetMs; t.budgetEvaluations = 0; });
   add(app.add_option("--budget-evals", p.budgetEvaluations, "compute budget per frame, fitness evaluations "
                                                             "(deterministic; overrides --budget-ms)")->check(CLI::Range(0L, 100000000L)),
-      [](TrackerParams &t, const TrackerParams &c) { t.budgetEvaluations = c.budgetEvaluations; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.budgetEvaluations = c.budgetEvaluations; });
   add(app.add_option("--steady-budget", p.steadyBudgetFraction, "fraction of the budget for a steady frame (tracked "
                                                                 "for a while, q near its recent best; 1: all frames alike)")
           ->check(CLI::Range(0.01, 1.0)),
-      [](TrackerParams &t, const TrackerParams &c) { t.steadyBudgetFraction = c.steadyBudgetFraction; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.steadyBudgetFraction = c.steadyBudgetFraction; });
   add(app.add_option("--steady-hue-margin", p.steadyHueMarginPx, "steady frames: hue only within this many pixels of "
                                                                  "where the model can land (0: the whole images)")
           ->check(CLI::Range(0, 10000)),
-      [](TrackerParams &t, const TrackerParams &c) { t.steadyHueMarginPx = c.steadyHueMarginPx; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.steadyHueMarginPx = c.steadyHueMarginPx; });
   add(app.add_option("--population", p.ga.population, "RM-GA individuals")->check(CLI::Range(2, 100000)),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.population = c.ga.population; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.population = c.ga.population; });
   add(app.add_option("--elite", p.ga.elite, "RM-GA individuals always kept"),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.elite = c.ga.elite; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.elite = c.ga.elite; });
   add(app.add_option("--tournament", p.ga.tournament, "RM-GA tournament size"),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.tournament = c.ga.tournament; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.tournament = c.ga.tournament; });
   add(app.add_option("--crossover-rate", p.ga.crossoverRate, "RM-GA crossover probability")->check(CLI::Range(0.0, 1.0)),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.crossoverRate = c.ga.crossoverRate; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.crossoverRate = c.ga.crossoverRate; });
   add(app.add_option("--mutation-per-bit", p.ga.mutationPerBit, "RM-GA probability to flip each of the 72 bits")
           ->check(CLI::Range(0.0, 1.0)),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.mutationPerBit = c.ga.mutationPerBit; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.mutationPerBit = c.ga.mutationPerBit; });
   add(app.add_flag("--predict,!--no-predict", p.ga.predictMotion, "option: move the population by the predicted motion"),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.predictMotion = c.ga.predictMotion; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.predictMotion = c.ga.predictMotion; });
   add(app.add_option("--refine-evals", p.ga.refineEvaluations, "option: local refinement of the best, evaluations per frame")
           ->check(CLI::Range(0, 1000000)),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.refineEvaluations = c.ga.refineEvaluations; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.refineEvaluations = c.ga.refineEvaluations; });
   add(app.add_option("--smooth-refine", p.smoothRefineEvaluations,
                      "option: after RM-GA, a local continuous search of the smooth score from the best, this many "
                      "evaluations per frame (each costs about 13 of F; on top of the frame budget; 0: off)")
           ->check(CLI::Range(0, 1000000)),
-      [](TrackerParams &t, const TrackerParams &c) { t.smoothRefineEvaluations = c.smoothRefineEvaluations; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.smoothRefineEvaluations = c.smoothRefineEvaluations; });
   add(app.add_option("--restart-generations", p.ga.restartGenerations,
                      "option: restart all but the best after this many generations without gain (0: never)")
           ->check(CLI::Range(0, 1000000)),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.restartGenerations = c.ga.restartGenerations; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.restartGenerations = c.ga.restartGenerations; });
   add(app.add_option("--ga-seed", p.ga.seed, "RM-GA random seed"),
-      [](TrackerParams &t, const TrackerParams &c) { t.ga.seed = c.ga.seed; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.seed = c.ga.seed; });
   add(app.add_option("--lock-quality", p.lockQuality, "normalised fitness q from which the target is tracked"),
-      [](TrackerParams &t, const TrackerParams &c) { t.lockQuality = c.lockQuality; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.lockQuality = c.lockQuality; });
   add(app.add_option("--lost-quality", p.lostQuality, "normalised fitness q below which it is lost"),
-      [](TrackerParams &t, const TrackerParams &c) { t.lostQuality = c.lostQuality; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.lostQuality = c.lostQuality; });
   add(app.add_option("--verify-evals", p.verifyEvaluations, "evaluations of the challenger search that verifies a new lock "
                                                         "before it is trusted (0: every lock trusted at once)")
           ->check(CLI::Range(0L, 100000000L)),
-      [](TrackerParams &t, const TrackerParams &c) { t.verifyEvaluations = c.verifyEvaluations; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.verifyEvaluations = c.verifyEvaluations; });
   add(app.add_flag("--precise,!--no-precise", p.preciseStage,
                    "the precise last stage after RM-GA (outline and interior, Gauss-Newton; needs an all-around model)"),
-      [](TrackerParams &t, const TrackerParams &c) { t.preciseStage = c.preciseStage; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.preciseStage = c.preciseStage; });
   add(app.add_option("--trust-threshold", p.confidence.threshold, "confidence from which an estimate is trusted")
           ->check(CLI::Range(0.001, 0.999)),
-      [](TrackerParams &t, const TrackerParams &c) { t.confidence.threshold = c.confidence.threshold; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.confidence.threshold = c.confidence.threshold; });
 }
 
-TrackerParams TrackerOptions::resolve() const
+tracker::TrackerParams TrackerOptions::resolve() const
 {
   // The options given, applied in order over the defaults or the file: --budget-ms switches to a
   // wall-time budget (the defaults' is in evaluations), --budget-evals after it wins.
-  TrackerParams p = m_config.empty() ? m_defaults : loadTrackerConfig(m_config, m_defaults);
+  tracker::TrackerParams p = m_config.empty() ? m_defaults : tracker::loadTrackerConfig(m_config, m_defaults);
   for (const auto &[opt, set] : m_set)
     if (opt->count() > 0)
       set(p, m_cli);

@@ -21,12 +21,12 @@ int main(int argc, char **argv)
   }
   try {
     // 1. The rig (both cameras and the hand frame) and the photo-model, as pm-make-model wrote it.
-    const pm::StereoRig rig = pm::io::loadRig(argv[1]);
-    const pm::PhotoModel model = pm::io::loadPhotoModel(argv[2]);
+    const pm::core::StereoRig rig = pm::io::loadRig(argv[1]);
+    const pm::core::PhotoModel model = pm::io::loadPhotoModel(argv[2]);
 
     // 2. The tracker, with the defaults every pm-* program uses (800 evaluations per frame).
     //    It keeps its own copies of the rig and the model.
-    pm::PhotoModelTracker tracker(rig, model, pm::TrackerParams());
+    pm::tracker::PhotoModelTracker tracker(rig, model, pm::tracker::TrackerParams());
     tracker.initialize(); // no initial pose: RM-GA starts from a random population
 
     // 3. The stereo pairs: image files named by printf patterns, from frame 0, at 30 fps.
@@ -34,7 +34,7 @@ int main(int argc, char **argv)
     pm::capture::StereoFrame frame;
     int trusted = 0;
     while (source.next(frame)) {
-      const pm::TrackResult r = tracker.track(frame.left, frame.right);
+      const pm::tracker::TrackResult r = tracker.track(frame.left, frame.right);
       // 4. hMo: the model's pose in the hand frame (metres). Act on it only when it is trusted.
       if (r.trusted) {
         const vpPoseVector p(r.hMo);
@@ -42,13 +42,13 @@ int main(int argc, char **argv)
                     frame.index, p[0] * 1e3, p[1] * 1e3, p[2] * 1e3, p[3], p[4], p[5], r.confidence);
         ++trusted;
       } else {
-        std::printf("frame %ld: %s, not trusted yet (confidence %.2f)\n", frame.index, pm::toString(r.state),
+        std::printf("frame %ld: %s, not trusted yet (confidence %.2f)\n", frame.index, pm::tracker::toString(r.state),
                     r.confidence);
       }
     }
     std::printf("%d of %ld frames trusted; %s\n", trusted, source.stats().pairs, source.stats().describe().c_str());
     return trusted > 0 ? 0 : 1;
-  } catch (const pm::Error &e) {
+  } catch (const pm::core::Error &e) {
     std::cerr << "error: " << e.what() << std::endl;
     return 1;
   }

@@ -64,7 +64,7 @@ std::string errorOf(const std::function<void()> &f)
 {
   try {
     f();
-  } catch (const pm::Error &e) {
+  } catch (const pm::core::Error &e) {
     return e.what();
   }
   return "";

@@ -40,7 +40,7 @@ void writeText(const std::string &path, const std::string &text);
 //! Files of a folder, sorted by name.
 std::vector<std::string> listFiles(const std::string &dir);
 
-//! The message of the pm::Error that \e f throws ("" if none).
+//! The message of the pm::core::Error that \e f throws ("" if none).
 std::string errorOf(const std::function<void()> &f);
 
 //! A w x h photo of a textured blue background (hue ~210), with noise from \e seed.

@@ -23,7 +23,7 @@ V3 unit(const V3 &a)
 V3 cross(const V3 &a, const V3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 
 //! The toy's outline seen from camera centre \e C (model frame, mm) looking at the model's origin.
-std::vector<ContourPoint> trueContour(const sim::Mesh &toy, const vpHomogeneousMatrix &mMo, const double C[3], const vpCameraParameters &cam)
+std::vector<core::ContourPoint> trueContour(const sim::Mesh &toy, const vpHomogeneousMatrix &mMo, const double C[3], const vpCameraParameters &cam)
 {
   const V3 zc = unit({-C[0], -C[1], -C[2]});
   const V3 up = std::fabs(zc[1]) < 0.9 ? V3{0, 1, 0} : V3{1, 0, 0};
@@ -55,7 +55,7 @@ std::vector<ContourPoint> trueContour(const sim::Mesh &toy, const vpHomogeneousM
   double total = 0;
   for (const auto &c : contours)
     total += static_cast<double>(c.size());
-  std::vector<ContourPoint> out;
+  std::vector<core::ContourPoint> out;
   for (const auto &c : contours) {
     const int n = static_cast<int>(c.size());
     if (n < 8)
@@ -95,7 +95,7 @@ std::vector<ContourPoint> trueContour(const sim::Mesh &toy, const vpHomogeneousM
         return k;
       };
       const double x = (P.x + at * nu - cam.get_u0()) / cam.get_px() * depth, y = (P.y + at * nv - cam.get_v0()) / cam.get_py() * depth;
-      ContourPoint cp;
+      core::ContourPoint cp;
       cp.x = static_cast<float>(xc[0] * x + yc[0] * y + zc[0] * depth + C[0]);
       cp.y = static_cast<float>(xc[1] * x + yc[1] * y + zc[1] * depth + C[1]);
       cp.z = static_cast<float>(xc[2] * x + yc[2] * y + zc[2] * depth + C[2]);
@@ -111,14 +111,14 @@ std::vector<ContourPoint> trueContour(const sim::Mesh &toy, const vpHomogeneousM
 
 } // namespace
 
-void useTrueOutlines(PhotoModel &model, const sim::Scene &scene, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
+void useTrueOutlines(core::PhotoModel &model, const sim::Scene &scene, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
                      double withinDeg)
 {
   const sim::Mesh toy = sim::buildTargetMesh(scene.target(), 0.5);
   const vpHomogeneousMatrix mMo = oMm.inverse();
   const V3 front = unit({model.cameraMm[0], model.cameraMm[1], model.cameraMm[2]});
   model.contour = trueContour(toy, mMo, model.cameraMm, cam);
-  for (ModelView &v : model.views) {
+  for (core::ModelView &v : model.views) {
     const V3 d = unit({v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]});
     if (d[0] * front[0] + d[1] * front[1] + d[2] * front[2] >= std::cos(withinDeg * M_PI / 180))
       v.contour = trueContour(toy, mMo, v.cameraMm, cam);

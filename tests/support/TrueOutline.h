@@ -16,7 +16,7 @@ namespace pm::test {
   outline's normal and the toy's depth just inside. The other viewpoints keep the built outlines (a
   test's poses stay well inside \e withinDeg; rendering all 240 would cost the suite a minute).
 */
-void useTrueOutlines(PhotoModel &model, const sim::Scene &scene, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
+void useTrueOutlines(core::PhotoModel &model, const sim::Scene &scene, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
                      double withinDeg = 55);
 
 } // namespace pm::test

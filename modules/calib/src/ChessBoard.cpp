@@ -22,12 +22,12 @@ std::string ChessBoard::describe() const
 void ChessBoard::validate() const
 {
   if (innerRows < 3 || innerCols < 3 || innerRows > 50 || innerCols > 50)
-    throw Error("chessboard: 3 to 50 inner corners a side");
+    throw core::Error("chessboard: 3 to 50 inner corners a side");
   if ((innerRows + innerCols) % 2 == 0)
-    throw Error("chessboard: " + std::to_string(innerRows) + "x" + std::to_string(innerCols) +
+    throw core::Error("chessboard: " + std::to_string(innerRows) + "x" + std::to_string(innerCols) +
                 " inner corners look the same turned by 180 degrees; one count must be odd and the other even (e.g. 6x9)");
   if (!(squareMm > 0) || !(marginMm >= 0))
-    throw Error("chessboard: the squares need a size and the margin cannot be negative");
+    throw core::Error("chessboard: the squares need a size and the margin cannot be negative");
 }
 
 vpPoint ChessBoard::corner(int r, int c) const
@@ -61,7 +61,7 @@ std::vector<vpImagePoint> ChessBoard::findCorners(const vpImage<vpRGBa> &I, cons
   const bool found = cv::findChessboardCorners(g, cv::Size(innerCols, innerRows), pts,
                                                cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE);
   if (!found || pts.size() != static_cast<std::size_t>(innerRows * innerCols))
-    throw Error("chessboard: its " + std::to_string(innerRows) + "x" + std::to_string(innerCols) +
+    throw core::Error("chessboard: its " + std::to_string(innerRows) + "x" + std::to_string(innerCols) +
                 " inner corners were not all found in the " + name + " image (is the whole board in view, sharp, and the size right?)");
   // Sub-pixel refinement in a window of about a third of a square.
   double spacing = 0;
@@ -95,10 +95,10 @@ PatternDetection ChessBoard::detect(const vpImage<vpRGBa> &I, const std::string 
 
 BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name, bool whole) const
 {
-  return find(I, cam, LensDistortion(), name, whole);
+  return find(I, cam, core::LensDistortion(), name, whole);
 }
 
-BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+BoardView ChessBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const core::LensDistortion &distortion,
                            const std::string &name, bool) const
 {
   const std::vector<vpImagePoint> raw = findCorners(I, name);

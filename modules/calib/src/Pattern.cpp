@@ -21,13 +21,13 @@ void CornerMatches::add(vpPoint model, const vpImagePoint &ip, const vpCameraPar
   pixels.push_back(ip);
 }
 
-BoardView Pattern::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+BoardView Pattern::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const core::LensDistortion &distortion,
                         const std::string &name, bool whole) const
 {
   if (distortion.isNone())
     return find(I, cam, name, whole);
-  RigCamera camera{name, cam, I.getWidth(), I.getHeight(), vpHomogeneousMatrix(), distortion};
-  const UndistortMap map(camera);
+  core::RigCamera camera{name, cam, I.getWidth(), I.getHeight(), vpHomogeneousMatrix(), distortion};
+  const core::UndistortMap map(camera);
   vpImage<vpRGBa> ideal;
   map.undistort(I, ideal);
   BoardView view = find(ideal, cam, name, whole);
@@ -40,7 +40,7 @@ void solveBoardPose(const CornerMatches &matches, const vpCameraParameters &cam,
 {
   const std::vector<vpPoint> &matched = matches.points;
   if (matched.size() < 4)
-    throw Error("calibration pattern: " + std::to_string(matched.size()) + " points matched, at least 4 needed for a pose");
+    throw core::Error("calibration pattern: " + std::to_string(matched.size()) + " points matched, at least 4 needed for a pose");
   view.corners = matches.pixels;
   vpPose pose;
   for (const vpPoint &P : matched)

@@ -40,7 +40,7 @@ template <class F> bool errorFree(F &&f)
   try {
     f();
     return true;
-  } catch (const Error &) {
+  } catch (const core::Error &) {
     return false;
   }
 }
@@ -50,9 +50,9 @@ template <class F> bool errorFree(F &&f)
 void RigCalibrationParams::validate() const
 {
   if (minPairs < 3)
-    throw Error("rig calibration: at least 3 pairs are needed (minPairs = " + std::to_string(minPairs) + ")");
+    throw core::Error("rig calibration: at least 3 pairs are needed (minPairs = " + std::to_string(minPairs) + ")");
   if (!(maxEdgeWidthPx > 0) || !std::isfinite(maxEdgeWidthPx))
-    throw Error("rig calibration: the blur limit must be a positive number of pixels");
+    throw core::Error("rig calibration: the blur limit must be a positive number of pixels");
 }
 
 void handFrameOf(const vpHomogeneousMatrix &cLMcR, vpHomogeneousMatrix &hMcL, vpHomogeneousMatrix &hMcR)
@@ -92,11 +92,11 @@ PatternDetection detectInCamera(const StereoImagePair &p, int k, const Pattern &
   const char *side = k ? "right" : "left";
   try {
     if (im.getWidth() != w || im.getHeight() != h)
-      throw Error(std::string(side) + " image is " + std::to_string(im.getWidth()) + "x" + std::to_string(im.getHeight()) +
+      throw core::Error(std::string(side) + " image is " + std::to_string(im.getWidth()) + "x" + std::to_string(im.getHeight()) +
                   ", the first pair's are " + std::to_string(w) + "x" + std::to_string(h));
     PatternDetection det = board.detect(im, side);
     if (det.pixels.size() < 6)
-      throw Error(std::string("only ") + std::to_string(det.pixels.size()) + " features in the " + side + " image (6 needed)");
+      throw core::Error(std::string("only ") + std::to_string(det.pixels.size()) + " features in the " + side + " image (6 needed)");
     if (const ChessBoard *chess = dynamic_cast<const ChessBoard *>(&board)) {
       vpImage<unsigned char> g;
       const cv::Scalar sh = cv::estimateChessboardSharpness(grey(im, g), cv::Size(chess->innerCols, chess->innerRows), toCv(det.pixels));
@@ -105,12 +105,12 @@ PatternDetection detectInCamera(const StereoImagePair &p, int k, const Pattern &
         std::ostringstream os;
         os.precision(2);
         os << std::fixed << "blurred: the " << side << " board's edges are " << sh[0] << " px wide (limit " << params.maxEdgeWidthPx << ")";
-        throw Error(os.str());
+        throw core::Error(os.str());
       }
     }
     rep.usedBy[k] = true;
     return det;
-  } catch (const Error &e) {
+  } catch (const core::Error &e) {
     why = e.what();
     return PatternDetection();
   }
@@ -164,7 +164,7 @@ void addPair(const StereoImagePair &p, const Pattern &board, const RigCalibratio
   result.pairs.push_back(std::move(rep));
 }
 
-//! Throws pm::Error naming every pair left out when too few pairs or views remain.
+//! Throws pm::core::Error naming every pair left out when too few pairs or views remain.
 void requireEnoughPairs(const RigCalibration &result, std::size_t given, const RigCalibrationParams &params)
 {
   if (result.pairsUsed >= params.minPairs && result.viewsUsed[0] >= params.minPairs && result.viewsUsed[1] >= params.minPairs)
@@ -175,7 +175,7 @@ void requireEnoughPairs(const RigCalibration &result, std::size_t given, const R
   for (const PairReport &r : result.pairs)
     if (!r.used)
       os << "\n  " << r.name << ": " << r.reason;
-  throw Error(os.str());
+  throw core::Error(os.str());
 }
 
 //! One camera's intrinsics and its board poses (OpenCV), k3 fixed at 0 when it bends the lens model back on itself.
@@ -185,7 +185,7 @@ double calibrateOneCamera(const CalibrationViews &v, int k, const cv::Size &size
   double rms = cv::calibrateCamera(v.monoObject[k], v.monoImage[k], size, K, D, rvecs, tvecs);
   // Too few views at the image's edges can leave k3 free to bend the lens model back on itself
   // there; the usual remedy is to fix k3 at 0.
-  const LensDistortion lens{std::vector<double>(D.begin<double>(), D.end<double>())};
+  const core::LensDistortion lens{std::vector<double>(D.begin<double>(), D.end<double>())};
   if (!errorFree([&] { lens.validate(vispCamera(K), static_cast<unsigned>(size.width), static_cast<unsigned>(size.height), "camera"); })) {
     rms = cv::calibrateCamera(v.monoObject[k], v.monoImage[k], size, K, D, rvecs, tvecs, cv::CALIB_FIX_K3);
     k3Fixed = true;
@@ -204,7 +204,7 @@ void setRig(const cv::Mat &R, const cv::Mat &T, const cv::Mat K[2], const cv::Ma
     cRMcL[i][3] = T.at<double>(static_cast<int>(i)) * 1e-3;
   }
   const vpHomogeneousMatrix cLMcR = cRMcL.inverse();
-  RigCamera *cams[2] = {&result.rig.left, &result.rig.right};
+  core::RigCamera *cams[2] = {&result.rig.left, &result.rig.right};
   vpHomogeneousMatrix hMc[2];
   handFrameOf(cLMcR, hMc[0], hMc[1]);
   for (int k = 0; k < 2; ++k) {
@@ -256,7 +256,7 @@ RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pat
   board.validate();
   params.validate();
   if (pairs.empty())
-    throw Error("rig calibration: no image pair was given");
+    throw core::Error("rig calibration: no image pair was given");
   RigCalibration result;
   const unsigned w = pairs.front().left.getWidth(), h = pairs.front().left.getHeight();
   CalibrationViews v;

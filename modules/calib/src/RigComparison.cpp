@@ -7,7 +7,7 @@
 namespace pm::calib {
 
 namespace {
-double cameraMapRms(const RigCamera &est, const RigCamera &truth)
+double cameraMapRms(const core::RigCamera &est, const core::RigCamera &truth)
 {
   std::vector<vpImagePoint> raw;
   for (unsigned v = 0; v <= truth.height; v += truth.height / 12)
@@ -27,7 +27,7 @@ double cameraMapRms(const RigCamera &est, const RigCamera &truth)
 }
 } // namespace
 
-CalibrationErrors compareRigs(const StereoRig &estimated, const StereoRig &truth)
+CalibrationErrors compareRigs(const core::StereoRig &estimated, const core::StereoRig &truth)
 {
   CalibrationErrors e;
   const vpHomogeneousMatrix a = estimated.cLMcR(), b = truth.cLMcR();

@@ -18,10 +18,10 @@ double median(std::vector<double> v)
 } // namespace
 
 BaselineResult aggregateBaseline(const std::vector<vpHomogeneousMatrix> &perPair, const std::vector<double> &rmsPx,
-                                 const StereoRig &rig)
+                                 const core::StereoRig &rig)
 {
   if (perPair.empty())
-    throw Error("stereo check: no pair showed the board in both images");
+    throw core::Error("stereo check: no pair showed the board in both images");
   // Each pair as (t, theta-u relative to the first pair's rotation).
   const vpRotationMatrix R0 = perPair.front().getRotationMatrix();
   std::vector<std::array<double, 6>> x;

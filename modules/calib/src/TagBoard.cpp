@@ -28,12 +28,12 @@ std::string TagBoard::describe() const
 void TagBoard::validate() const
 {
   if (rows < 1 || cols < 1 || rows * cols > 100 || firstId < 0 || firstId + rows * cols > 587)
-    throw Error("tag board: 1 to 100 tags with ids in the 36h11 family (0..586)");
+    throw core::Error("tag board: 1 to 100 tags with ids in the 36h11 family (0..586)");
   // The black square is 8 of the tag's 10 cells: the white border takes tagSize / 8 on each side.
   if (!(tagSizeMm > 0) || !(pitchMm >= tagSizeMm * 10.0 / 8.0) || !(marginMm >= 0))
-    throw Error("tag board: the pitch must leave the tags' white borders (pitch >= 1.25 x tag size)");
+    throw core::Error("tag board: the pitch must leave the tags' white borders (pitch >= 1.25 x tag size)");
   if (minTags < 1)
-    throw Error("tag board: at least one tag is needed for a pose");
+    throw core::Error("tag board: at least one tag is needed for a pose");
 }
 
 vpPoint TagBoard::centre(int id) const
@@ -118,7 +118,7 @@ BoardView TagBoard::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam
   }
   const int needed = whole ? rows * cols : std::min(minTags, rows * cols);
   if (view.features < needed)
-    throw Error("tag board: " + std::to_string(view.features) + " of its tags found in the " + name + " image (at least " +
+    throw core::Error("tag board: " + std::to_string(view.features) + " of its tags found in the " + name + " image (at least " +
                 std::to_string(needed) + " needed: is the board in view, sharp, and the layout right?)");
   solveBoardPose(matches, cam, view);
   return view;
@@ -152,7 +152,7 @@ PatternDetection TagBoard::detect(const vpImage<vpRGBa> &I, const std::string &n
   }
   const int needed = std::min(minTags, rows * cols);
   if (tags < needed)
-    throw Error("tag board: " + std::to_string(tags) + " of its tags found in the " + name + " image (at least " +
+    throw core::Error("tag board: " + std::to_string(tags) + " of its tags found in the " + name + " image (at least " +
                 std::to_string(needed) + " needed: is the board in view, sharp, and the layout right?)");
   return d;
 }

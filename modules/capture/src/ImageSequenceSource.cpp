@@ -32,7 +32,7 @@ std::string frameFileName(const std::string &pattern, long index)
     while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
       width = width * 10 + (pattern[j++] - '0');
     if (j >= pattern.size() || pattern[j] != 'd' || ++fields > 1)
-      throw Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
+      throw core::Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
     std::string num = std::to_string(index);
     if (static_cast<int>(num.size()) < width)
       num.insert(0, static_cast<std::size_t>(width) - num.size(), zero ? '0' : ' ');
@@ -40,7 +40,7 @@ std::string frameFileName(const std::string &pattern, long index)
     i = j;
   }
   if (fields != 1)
-    throw Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
+    throw core::Error("the image pattern '" + pattern + "' must hold exactly one frame-number field, %d or %0Nd (e.g. L_%04d.png)");
   return out;
 }
 
@@ -49,7 +49,7 @@ ImageSequenceSource::ImageSequenceSource(const std::string &leftPattern, const s
     : m_left(leftPattern), m_right(rightPattern), m_first(firstFrame), m_fps(fps), m_w(width), m_h(height)
 {
   if (!(fps > 0))
-    throw Error("image sequence: the frame rate must be positive");
+    throw core::Error("image sequence: the frame rate must be positive");
   auto exists = [](const std::string &f) { return std::filesystem::exists(f); };
   while ((maxFrames <= 0 || m_length < maxFrames) &&
          (exists(frameFileName(m_left, m_first + m_length)) || exists(frameFileName(m_right, m_first + m_length)))) {
@@ -58,7 +58,7 @@ ImageSequenceSource::ImageSequenceSource(const std::string &leftPattern, const s
     ++m_length;
   }
   if (m_length == 0)
-    throw Error("the sequence is empty: no frame " + frameFileName(m_left, m_first) + " nor " + frameFileName(m_right, m_first));
+    throw core::Error("the sequence is empty: no frame " + frameFileName(m_left, m_first) + " nor " + frameFileName(m_right, m_first));
 }
 
 ImageSequenceSource::ImageSequenceSource(std::vector<std::string> leftFiles, std::vector<std::string> rightFiles, double fps,
@@ -66,9 +66,9 @@ ImageSequenceSource::ImageSequenceSource(std::vector<std::string> leftFiles, std
     : m_fps(fps), m_w(width), m_h(height)
 {
   if (!(fps > 0))
-    throw Error("image sequence: the frame rate must be positive");
+    throw core::Error("image sequence: the frame rate must be positive");
   if (leftFiles.empty() || leftFiles.size() != rightFiles.size())
-    throw Error("image sequence: " + std::to_string(leftFiles.size()) + " left images but " +
+    throw core::Error("image sequence: " + std::to_string(leftFiles.size()) + " left images but " +
                 std::to_string(rightFiles.size()) + " right ones (pairs are taken in order; both lists must be as long, and not empty)");
   if (maxFrames > 0 && static_cast<long>(leftFiles.size()) > maxFrames) {
     leftFiles.resize(static_cast<std::size_t>(maxFrames));
@@ -94,8 +94,8 @@ bool ImageSequenceSource::next(StereoFrame &f)
       f.right = io::readColorImage(m_files[1][static_cast<std::size_t>(m_pos - 1)]);
       if (m_w && m_h &&
           (f.left.getWidth() != m_w || f.left.getHeight() != m_h || f.right.getWidth() != m_w || f.right.getHeight() != m_h))
-        throw Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");
-    } catch (const Error &e) {
+        throw core::Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");
+    } catch (const core::Error &e) {
       ++m_stats.skipped;
       m_stats.problems.push_back(e.what());
       continue;

@@ -28,7 +28,7 @@ void readUntil(StereoSource &source, long index, StereoFrame &f, const char *wha
 {
   do {
     if (!source.next(f))
-      throw Error("the source ended at pair " + std::to_string(source.stats().pairs) + ", before the " + what + " pair (" +
+      throw core::Error("the source ended at pair " + std::to_string(source.stats().pairs) + ", before the " + what + " pair (" +
                   std::to_string(index) + ")");
   } while (f.index < index);
 }
@@ -39,14 +39,14 @@ ModelPairs grabModelPairs(StereoSource &source, long backgroundIndex, long photo
   ModelPairs p;
   if (photoIndex >= 0) {
     if (photoIndex <= backgroundIndex)
-      throw Error("the photo pair (" + std::to_string(photoIndex) + ") must come after the background pair (" +
+      throw core::Error("the photo pair (" + std::to_string(photoIndex) + ") must come after the background pair (" +
                   std::to_string(backgroundIndex) + ")");
     readUntil(source, backgroundIndex, p.background, "background");
     readUntil(source, photoIndex, p.photo, "photo");
     return p;
   }
   if (!::isatty(STDIN_FILENO))
-    throw Error("no --photo-frame given and no terminal to ask on: give --background-frame and --photo-frame");
+    throw core::Error("no --photo-frame given and no terminal to ask on: give --background-frame and --photo-frame");
   const auto ask = [&](const char *prompt, StereoFrame &f) {
     std::cerr << prompt << std::flush;
     std::string line;

@@ -55,7 +55,7 @@ struct VideoCaptureSource::Stream
   bool readLive(double timeoutS)
   {
     if (stalled)
-      throw Error("the " + side + " source '" + spec + "' stalled earlier");
+      throw core::Error("the " + side + " source '" + spec + "' stalled earlier");
     auto pending = std::make_shared<PendingRead>();
     std::shared_ptr<cv::VideoCapture> c = capture;
     std::thread([pending, c] {
@@ -75,7 +75,7 @@ struct VideoCaptureSource::Stream
     std::unique_lock<std::mutex> lock(pending->mutex);
     if (!pending->done.wait_for(lock, std::chrono::duration<double>(timeoutS), [&] { return pending->finished; })) {
       stalled = true;
-      throw Error("the " + side + " source '" + spec + "' stalled: no frame for " + std::to_string(timeoutS) + " s");
+      throw core::Error("the " + side + " source '" + spec + "' stalled: no frame for " + std::to_string(timeoutS) + " s");
     }
     frame = pending->frame;
     return pending->ok;
@@ -103,9 +103,9 @@ struct VideoCaptureSource::Stream
 void VideoCaptureParams::validate() const
 {
   if (!(maxSkewMs >= 0) || !std::isfinite(maxSkewMs))
-    throw Error("video capture: the largest skew must be a non-negative number of milliseconds");
+    throw core::Error("video capture: the largest skew must be a non-negative number of milliseconds");
   if (!(stallTimeoutS > 0))
-    throw Error("video capture: the stall timeout must be positive");
+    throw core::Error("video capture: the stall timeout must be positive");
 }
 
 VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::string &right, const VideoCaptureParams &params)
@@ -121,7 +121,7 @@ VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::strin
     s.live = allDigits(s.spec) || s.spec.rfind("/dev/", 0) == 0 || s.spec.find('!') != std::string::npos;
     const bool pipeline = s.spec.find('!') != std::string::npos;
     if (!allDigits(s.spec) && !pipeline && !std::filesystem::exists(s.spec))
-      throw Error("cannot open the " + s.side + " source '" + s.spec + "': no such file or device");
+      throw core::Error("cannot open the " + s.side + " source '" + s.spec + "': no such file or device");
     bool opened = false;
     try {
       if (allDigits(s.spec))
@@ -136,7 +136,7 @@ VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::strin
       opened = false;
     }
     if (!opened || !s.cap.isOpened())
-      throw Error("cannot open the " + s.side + " source '" + s.spec +
+      throw core::Error("cannot open the " + s.side + " source '" + s.spec +
                   "' (a device index such as 0, a V4L2 path such as /dev/video0, a video file, or a GStreamer pipeline "
                   "ending in appsink)");
   }
@@ -168,7 +168,7 @@ bool VideoCaptureSource::next(StereoFrame &f)
     std::ostringstream os;
     os << "the two streams differ in size: left '" << L.spec << "' is " << L.frame.cols << "x" << L.frame.rows
        << ", right '" << R.spec << "' is " << R.frame.cols << "x" << R.frame.rows;
-    throw Error(os.str());
+    throw core::Error(os.str());
   }
   vpImage<vpRGBa> *dst[2] = {&f.left, &f.right};
   for (int k = 0; k < 2; ++k) {

@@ -4,11 +4,11 @@
 
 namespace pm::compare {
 
-std::string meshCaoText(const HullMesh &mesh, const std::string &comment)
+std::string meshCaoText(const model::HullMesh &mesh, const std::string &comment)
 {
   std::vector<std::array<double, 3>> pointsM;
   pointsM.reserve(mesh.vertices.size());
-  for (const hull::Vec3 &v : mesh.vertices)
+  for (const model::hull::Vec3 &v : mesh.vertices)
     pointsM.push_back({1e-3 * v[0], 1e-3 * v[1], 1e-3 * v[2]});
   std::vector<std::vector<std::size_t>> faces;
   faces.reserve(mesh.triangles.size());

@@ -28,7 +28,7 @@ const vpRGBa kColors[] = {vpRGBa(220, 50, 40), vpRGBa(240, 120, 150), vpRGBa(40,
                           vpRGBa(230, 150, 20), vpRGBa(90, 90, 90)};
 
 //! The outline at \e hMm drawn on the left image.
-void drawOutline(vpImage<vpRGBa> &I, const std::vector<vpPoint> &outline, const vpHomogeneousMatrix &hMm, const RigCamera &cam,
+void drawOutline(vpImage<vpRGBa> &I, const std::vector<vpPoint> &outline, const vpHomogeneousMatrix &hMm, const core::RigCamera &cam,
                  const vpRGBa &color)
 {
   const auto px = projectPolygon(outline, cam.cMh() * hMm, cam.cam);
@@ -72,8 +72,8 @@ struct Comparison::Setup
 {
   sim::Scene scene;
   sim::SimulatedPhotoModel flat, stereo, allAround;
-  AllAroundBuild allAroundBuild;      //!< its build (the surface's mesh for ViSP's trackers)
-  HullMesh cad;                        //!< ViSP's trackers' CAD model (empty: the flat outline)
+  model::AllAroundBuild allAroundBuild;      //!< its build (the surface's mesh for ViSP's trackers)
+  model::HullMesh cad;                        //!< ViSP's trackers' CAD model (empty: the flat outline)
   std::vector<vpPoint> outline;
   std::vector<Scenario> scenarios;
   Setup(const sim::TargetShape &target, const sim::SceneParams &params) : scene(target, params) {}
@@ -86,27 +86,27 @@ struct Comparison::Setup
   }
 };
 
-Comparison::Comparison(const StereoRig &rig, const ComparisonParams &params) : m_rig(rig), m_p(params)
+Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &params) : m_rig(rig), m_p(params)
 {
   if (m_p.trackers.empty())
-    throw Error("compare: at least one tracker");
+    throw core::Error("compare: at least one tracker");
   for (const std::string &k : m_p.trackers)
     if (!has(comparedTrackerKeys(), k))
-      throw Error("compare: unknown tracker '" + k + "'");
+      throw core::Error("compare: unknown tracker '" + k + "'");
   if (!std::ifstream(m_p.mbtXml))
-    throw Error("cannot read the MBT settings " + m_p.mbtXml);
+    throw core::Error("cannot read the MBT settings " + m_p.mbtXml);
   m_s = std::make_unique<Setup>(sim::makeTarget(m_p.target), m_p.scene);
   m_s->scenarios = makeScenarios(m_p.scenarios, m_p.trajectoryPath, m_p.steps);
   m_s->flat = sim::makeSimulatedPhotoModel(m_s->scene, rig.left.cam, rig.left.width, rig.left.height, m_p.distanceMm);
   m_s->outline = outlinePolygon(m_s->flat.build.region, m_s->flat.build.model, m_p.outlineTolPx);
   if (has(m_p.trackers, "ours-3d"))
-    m_s->stereo = sim::makeSimulatedStereoPhotoModel(m_s->scene, rig, m_p.distanceMm, StereoModelParams(), m_p.viewTurnDeg);
+    m_s->stereo = sim::makeSimulatedStereoPhotoModel(m_s->scene, rig, m_p.distanceMm, model::StereoModelParams(), m_p.viewTurnDeg);
   bool mbt = false;
   for (const std::string &k : m_p.trackers)
     mbt = mbt || k.rfind("mbt", 0) == 0;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || (mbt && m_p.mbtMeshCellMm > 0))
-    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, PassPlan(), "pa10", m_p.distanceMm,
-                                                      AllAroundParams(), &m_s->allAroundBuild);
+    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, model::PassPlan(), "pa10", m_p.distanceMm,
+                                                      model::AllAroundParams(), &m_s->allAroundBuild);
   if (mbt && m_p.mbtMeshCellMm > 0)
     m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);
 }
@@ -132,7 +132,7 @@ std::size_t Comparison::totalFrames() const
 
 ComparisonResult Comparison::run(const std::string &caoPath, std::ostream &csv, const std::function<void()> &onFrame)
 {
-  const StereoRig &rig = m_rig;
+  const core::StereoRig &rig = m_rig;
   Setup &s = *m_s;
   auto makeTracker = [&](const std::string &key) -> std::unique_ptr<ComparedTracker> {
     if (key == "ours")
@@ -142,12 +142,12 @@ ComparisonResult Comparison::run(const std::string &caoPath, std::ostream &csv, 
     if (key == "ours-aa")
       return makeOurTracker(rig, s.allAround.build.model, m_p.tracker, "all-around photo-model (ours, PA-10 pass)");
     if (key == "ours-aa-rmga") {
-      TrackerParams rmga = m_p.tracker;
+      tracker::TrackerParams rmga = m_p.tracker;
       rmga.preciseStage = false;
       return makeOurTracker(rig, s.allAround.build.model, rmga, "all-around photo-model, RM-GA alone (ours, no precise stage)");
     }
     if (key == "ours-steady") {
-      TrackerParams fast = m_p.tracker;
+      tracker::TrackerParams fast = m_p.tracker;
       fast.steadyBudgetFraction = m_p.steadyVariant;
       return makeOurTracker(rig, s.flat.build.model, fast,
                             "photo-model (ours, steady frames " + std::to_string(std::lround(100 * m_p.steadyVariant)) + " %)");
@@ -216,7 +216,7 @@ ComparisonResult Comparison::run(const std::string &caoPath, std::ostream &csv, 
       r.perScenario[si][ti] = summarize(r.scores[si][ti], seq.lossEnds);
   }
   if (!csv)
-    throw Error("cannot write the frames' table");
+    throw core::Error("cannot write the frames' table");
 
   r.overall.resize(nT);
   for (std::size_t ti = 0; ti < nT; ++ti) {

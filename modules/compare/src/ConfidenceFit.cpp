@@ -13,7 +13,7 @@ namespace pm::compare {
 namespace {
 
 //! The features of \e f that \e used selects.
-std::vector<double> usedFeatures(const LabelledFrame &f, const std::array<bool, ConfidenceCues::kFeatures> &used)
+std::vector<double> usedFeatures(const LabelledFrame &f, const std::array<bool, tracker::ConfidenceCues::kFeatures> &used)
 {
   const auto x = f.cues.features();
   std::vector<double> row;
@@ -27,14 +27,14 @@ double logit(double p) { return std::log(p / (1.0 - p)); }
 
 } // namespace
 
-ConfidenceFit fitConfidence(const ConfidenceStudy &study, ConfidenceKind kind, double maxFalseAccept)
+ConfidenceFit fitConfidence(const ConfidenceStudy &study, tracker::ConfidenceKind kind, double maxFalseAccept)
 {
-  if (kind == ConfidenceKind::Auto || kind == ConfidenceKind::Custom)
-    throw Error("fitConfidence: fit a kind of model (flat, stereo or all-around)");
+  if (kind == tracker::ConfidenceKind::Auto || kind == tracker::ConfidenceKind::Custom)
+    throw core::Error("fitConfidence: fit a kind of model (flat, stereo or all-around)");
   const std::vector<LabelledFrame> &set = study.frames;
   if (set.empty())
-    throw Error("fitConfidence: no frame");
-  const auto used = ConfidenceModel::featuresUsed(kind);
+    throw core::Error("fitConfidence: no frame");
+  const auto used = tracker::ConfidenceModel::featuresUsed(kind);
   std::vector<std::vector<double>> rows;
   std::vector<bool> right;
   std::vector<int> fold;
@@ -46,8 +46,8 @@ ConfidenceFit fitConfidence(const ConfidenceStudy &study, ConfidenceKind kind, d
   ConfidenceFit out;
   try {
     out.aurocCrossValidated = auroc(crossValidatedLogistic(rows, right, fold, 2), right);
-  } catch (const Error &e) {
-    throw Error(std::string("fitConfidence (folds: runs of even and odd index): ") + e.what());
+  } catch (const core::Error &e) {
+    throw core::Error(std::string("fitConfidence (folds: runs of even and odd index): ") + e.what());
   }
   const LogisticFit fit = fitLogistic(rows, right);
   out.iterations = fit.iterations;
@@ -59,7 +59,7 @@ ConfidenceFit fitConfidence(const ConfidenceStudy &study, ConfidenceKind kind, d
   }
   const RocPoint op = thresholdFor(rocCurve(gated, right), maxFalseAccept);
   out.operatingThreshold = std::clamp(op.threshold, 1e-9, 1.0 - 1e-9);
-  ConfidenceModel &m = out.model;
+  tracker::ConfidenceModel &m = out.model;
   m.kind = kind;
   m.threshold = 0.95;
   m.weights.fill(0.0);

@@ -32,12 +32,12 @@ std::vector<ConfidencePass> confidencePasses(bool quick)
           {"R2 behind a strand of seaweed", "R2", 2, {{"R2", 1900, 22}}, "", "", true}};
 }
 
-ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const ConfidenceStudyParams &params, const std::function<void()> &onFrame)
+ConfidenceStudy runConfidenceStudy(const core::StereoRig &defaultRig, const ConfidenceStudyParams &params, const std::function<void()> &onFrame)
 {
   const std::vector<Scenario> seqs = makeScenarios(params.scenarios, params.trajectoryPath, params.steps);
   ConfidenceStudy study;
   for (const ConfidencePass &pass : confidencePasses(params.quick)) {
-    const StereoRig rig = pass.rig.empty() ? defaultRig : io::loadRig(params.dataDir + "/" + pass.rig);
+    const core::StereoRig rig = pass.rig.empty() ? defaultRig : io::loadRig(params.dataDir + "/" + pass.rig);
     sim::SceneParams sp;
     sp.supersampling = pass.supersampling;
     if (!pass.strand)
@@ -65,7 +65,7 @@ ConfidenceStudy runConfidenceStudy(const StereoRig &defaultRig, const Confidence
       c.model = &models[i].build.model;
       c.oMm = models[i].oMm;
       c.otherToy = r.model != pass.target;
-      c.params = TrackerParams();
+      c.params = tracker::TrackerParams();
       c.params.budgetEvaluations = r.budget;
       c.params.ga.seed = r.seed;
       c.params.steadyBudgetFraction = r.steady;
@@ -98,7 +98,7 @@ ConfidenceReport reportConfidence(const ConfidenceStudy &study, double maxFalseA
 {
   const std::vector<LabelledFrame> &set = study.frames;
   if (set.empty())
-    throw Error("reportConfidence: no frame");
+    throw core::Error("reportConfidence: no frame");
   ConfidenceReport r;
   r.frames = set.size();
   r.threshold = threshold;
@@ -108,10 +108,10 @@ ConfidenceReport reportConfidence(const ConfidenceStudy &study, double maxFalseA
     conf.push_back(f.confidence);
     right.push_back(f.right);
     r.wrong += f.right ? 0 : 1;
-    r.trackingWrong += !f.right && f.state == TrackState::Tracking ? 1 : 0;
+    r.trackingWrong += !f.right && f.state == tracker::TrackState::Tracking ? 1 : 0;
     r.trustedWrong += !f.right && f.trusted ? 1 : 0;
     r.trustedRight += f.right && f.trusted ? 1 : 0;
-    if (f.state == TrackState::Tracking) { // the hard part: the frames the tracker claims
+    if (f.state == tracker::TrackState::Tracking) { // the hard part: the frames the tracker claims
       confT.push_back(f.confidence);
       rightT.push_back(f.right);
     }
@@ -135,7 +135,7 @@ ConfidenceReport reportConfidence(const ConfidenceStudy &study, double maxFalseA
 void writeConfidenceCsv(std::ostream &csv, const ConfidenceStudy &study)
 {
   csv << "run,scenario,frame,state";
-  for (const char *n : ConfidenceCues::featureNames())
+  for (const char *n : tracker::ConfidenceCues::featureNames())
     csv << "," << n;
   csv << ",confidence,trusted,error_mm,error_deg,right\n" << std::setprecision(6);
   for (std::size_t k = 0; k < study.frames.size(); ++k) {
@@ -146,7 +146,7 @@ void writeConfidenceCsv(std::ostream &csv, const ConfidenceStudy &study)
     csv << "," << f.confidence << "," << (f.trusted ? 1 : 0) << "," << f.errorMm << "," << f.errorDeg << "," << (f.right ? 1 : 0) << "\n";
   }
   if (!csv)
-    throw Error("cannot write the labelled frames' table");
+    throw core::Error("cannot write the labelled frames' table");
 }
 
 } // namespace pm::compare

@@ -64,7 +64,7 @@ Summary summarize(const std::vector<FrameScore> &frames, const std::vector<int> 
   s.success5cm5deg = n5 / n;
   s.success1cm2deg = n1 / n;
   s.validFraction = nv / n;
-  s.p99Ms = percentile(ms, 0.99);
+  s.p99Ms = core::percentile(ms, 0.99);
   for (std::size_t e = 0; e < lossEnds.size(); ++e) {
     const std::size_t from = static_cast<std::size_t>(std::max(0, lossEnds[e]));
     const std::size_t to = e + 1 < lossEnds.size() ? static_cast<std::size_t>(lossEnds[e + 1]) : frames.size();

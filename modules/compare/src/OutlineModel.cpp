@@ -13,23 +13,23 @@
 
 namespace pm::compare {
 
-std::vector<vpPoint> outlinePolygon(const vpImage<unsigned char> &region, const PhotoModel &model, double tolerancePx)
+std::vector<vpPoint> outlinePolygon(const vpImage<unsigned char> &region, const core::PhotoModel &model, double tolerancePx)
 {
   if (region.getSize() == 0)
-    throw Error("outline: the photo-model's region is empty");
+    throw core::Error("outline: the photo-model's region is empty");
   const cv::Mat mask(static_cast<int>(region.getHeight()), static_cast<int>(region.getWidth()), CV_8UC1,
                      const_cast<unsigned char *>(region.bitmap));
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(mask.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
   if (contours.empty())
-    throw Error("outline: the photo-model's region is empty");
+    throw core::Error("outline: the photo-model's region is empty");
   const auto largest = std::max_element(contours.begin(), contours.end(), [](const auto &a, const auto &b) {
     return cv::contourArea(a) < cv::contourArea(b);
   });
   std::vector<cv::Point> poly;
   cv::approxPolyDP(*largest, poly, tolerancePx, true);
   if (poly.size() < 3)
-    throw Error("outline: the photo-model's region has no area");
+    throw core::Error("outline: the photo-model's region has no area");
   // Image y points down: a contour that turns clockwise on the screen has a positive signed area
   // here. ViSP wants the vertices counter-clockwise as the camera sees them.
   if (cv::contourArea(poly, true) > 0)

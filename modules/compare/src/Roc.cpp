@@ -17,16 +17,16 @@ void needBoth(const std::vector<bool> &right, const char *what)
 {
   const auto nRight = std::count(right.begin(), right.end(), true);
   if (nRight == 0 || nRight == static_cast<long>(right.size()))
-    throw Error(std::string(what) + ": needs both right and wrong frames");
+    throw core::Error(std::string(what) + ": needs both right and wrong frames");
 }
 
 void checkLabelled(const std::vector<double> &scores, const std::vector<bool> &right)
 {
   if (scores.size() != right.size())
-    throw Error("ROC: " + std::to_string(scores.size()) + " scores but " + std::to_string(right.size()) + " labels");
+    throw core::Error("ROC: " + std::to_string(scores.size()) + " scores but " + std::to_string(right.size()) + " labels");
   for (double s : scores)
     if (!std::isfinite(s))
-      throw Error("ROC: a score is not finite");
+      throw core::Error("ROC: a score is not finite");
   needBoth(right, "ROC");
 }
 
@@ -71,14 +71,14 @@ RocPoint thresholdFor(const std::vector<RocPoint> &curve, double maxFalseAcceptR
 LogisticFit fitLogistic(const std::vector<std::vector<double>> &x, const std::vector<bool> &right, double l2, int maxIterations)
 {
   if (x.empty() || x.size() != right.size())
-    throw Error("logistic fit: needs as many labels as rows, and at least one row");
+    throw core::Error("logistic fit: needs as many labels as rows, and at least one row");
   const std::size_t d = x.front().size();
   for (const auto &row : x) {
     if (row.size() != d)
-      throw Error("logistic fit: the rows differ in size");
+      throw core::Error("logistic fit: the rows differ in size");
     for (double v : row)
       if (!std::isfinite(v))
-        throw Error("logistic fit: a feature is not finite");
+        throw core::Error("logistic fit: a feature is not finite");
   }
   needBoth(right, "logistic fit");
   // Newton's method on the parameters (w, b): H = X^T S X + ridge, g = X^T (y - p) - ridge w.
@@ -124,7 +124,7 @@ LogisticFit fitLogistic(const std::vector<std::vector<double>> &x, const std::ve
 double LogisticFit::probability(const std::vector<double> &x) const
 {
   if (x.size() != weights.size())
-    throw Error("logistic model: a row of " + std::to_string(x.size()) + " features for a model of " + std::to_string(weights.size()));
+    throw core::Error("logistic model: a row of " + std::to_string(x.size()) + " features for a model of " + std::to_string(weights.size()));
   double s = bias;
   for (std::size_t i = 0; i < x.size(); ++i)
     s += weights[i] * x[i];
@@ -135,10 +135,10 @@ std::vector<double> crossValidatedLogistic(const std::vector<std::vector<double>
                                            const std::vector<int> &fold, int folds, double l2)
 {
   if (fold.size() != x.size() || right.size() != x.size() || folds < 2)
-    throw Error("cross-validation: needs a fold and a label per row, and at least two folds");
+    throw core::Error("cross-validation: needs a fold and a label per row, and at least two folds");
   for (int f : fold)
     if (f < 0 || f >= folds)
-      throw Error("cross-validation: a fold index out of 0.." + std::to_string(folds - 1));
+      throw core::Error("cross-validation: a fold index out of 0.." + std::to_string(folds - 1));
   std::vector<double> held(x.size());
   for (int k = 0; k < folds; ++k) {
     std::vector<std::vector<double>> train;
@@ -149,7 +149,7 @@ std::vector<double> crossValidatedLogistic(const std::vector<std::vector<double>
         y.push_back(right[r]);
       }
     if (std::count(y.begin(), y.end(), true) == 0 || std::count(y.begin(), y.end(), false) == 0)
-      throw Error("cross-validation: the rows outside fold " + std::to_string(k) +
+      throw core::Error("cross-validation: the rows outside fold " + std::to_string(k) +
                   " hold only right or only wrong ones; each fold's training set needs both");
     const LogisticFit lf = fitLogistic(train, y, l2);
     for (std::size_t r = 0; r < x.size(); ++r)

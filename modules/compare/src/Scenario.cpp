@@ -31,7 +31,7 @@ Scenario fromTrajectory(const pm::sim::Trajectory &traj, double fps)
   const int n = static_cast<int>(std::floor(traj.duration() * fps)) + 1;
   for (int k = 0; k < n; ++k) {
     ScenarioFrame f;
-    f.hMo = toHomogeneousMatrix(traj.at(k / fps));
+    f.hMo = core::toHomogeneousMatrix(traj.at(k / fps));
     f.moving = traj.moving(k / fps);
     s.frames.push_back(f);
   }
@@ -53,7 +53,7 @@ Scenario timed(double seconds, double fps, F frameAt)
 }
 
 //! A slow sway about the rest pose, for the scenarios that test something else than motion.
-Phi sway(double t)
+core::Phi sway(double t)
 {
   return {30 * std::sin(2 * M_PI * 0.2 * t), 15 * std::sin(2 * M_PI * 0.13 * t), 500, 0, 0, 0.03 * std::sin(2 * M_PI * 0.2 * t)};
 }
@@ -68,35 +68,35 @@ double ramp(double t, double t0, double t1, double a, double b)
 }
 } // namespace
 
-Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, int steps)
+Scenario makeScenario(const std::string &name, const std::vector<core::Phi> &table2, int steps)
 {
   const double fps = 30;
   Scenario s;
   if (name == "table2") {
-    std::vector<Phi> w = table2;
+    std::vector<core::Phi> w = table2;
     if (steps > 0 && steps < static_cast<int>(w.size()))
       w.resize(static_cast<std::size_t>(steps));
     if (w.empty())
-      throw Error("scenario table2: no waypoint");
+      throw core::Error("scenario table2: no waypoint");
     s = fromTrajectory(pm::sim::Trajectory(w, 1.5, 1.0), fps);
     s.description = "Table 2's " + std::to_string(w.size()) + " steps, hold 1.5 s, move 1 s";
   } else if (name == "sinusoid") {
     s = timed(10, fps, [](double t) {
       ScenarioFrame f;
-      f.hMo = toHomogeneousMatrix(Phi{60 * std::sin(2 * M_PI * 0.5 * t), 30 * std::sin(2 * M_PI * 0.25 * t), 500, 0, 0,
+      f.hMo = core::toHomogeneousMatrix(core::Phi{60 * std::sin(2 * M_PI * 0.5 * t), 30 * std::sin(2 * M_PI * 0.25 * t), 500, 0, 0,
                                       0.1 * std::sin(2 * M_PI * 0.5 * t)});
       return f;
     });
     s.description = "x 60 mm at 0.5 Hz, y 30 mm at 0.25 Hz, 11 deg about z at 0.5 Hz, 10 s";
   } else if (name == "fast") {
-    const std::vector<Phi> w{{0, 0, 500, 0, 0, 0},    {80, 0, 500, 0, 0, 0},  {80, 60, 500, 0, 0, 0.05},
+    const std::vector<core::Phi> w{{0, 0, 500, 0, 0, 0},    {80, 0, 500, 0, 0, 0},  {80, 60, 500, 0, 0, 0.05},
                              {0, 60, 520, 0, 0, 0.05}, {-60, 0, 480, 0, 0, 0}, {0, 0, 500, 0, 0, 0}};
     s = fromTrajectory(pm::sim::Trajectory(w, 0.5, 0.25), fps);
     s.description = "moves of 60 to 100 mm in 0.25 s (up to 600 mm/s), held 0.5 s";
   } else if (name == "occlusion") {
     s = timed(8, fps, [](double t) {
       ScenarioFrame f;
-      f.hMo = toHomogeneousMatrix(sway(t));
+      f.hMo = core::toHomogeneousMatrix(sway(t));
       f.occluded = t >= 2 && t < 6;
       return f;
     });
@@ -104,7 +104,7 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
   } else if (name == "lighting") {
     s = timed(8, fps, [](double t) {
       ScenarioFrame f;
-      f.hMo = toHomogeneousMatrix(sway(t));
+      f.hMo = core::toHomogeneousMatrix(sway(t));
       f.exposure = t < 4 ? ramp(t, 1, 2.5, 1.0, 0.4) : ramp(t, 4, 5.5, 0.4, 1.5);
       f.lightX = ramp(t, 1, 7, -0.35, 0.8);
       return f;
@@ -136,14 +136,14 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
     const int blank0 = static_cast<int>(2 * fps), blank1 = blank0 + static_cast<int>(0.5 * fps), jump = static_cast<int>(5 * fps);
     for (int k = 0; k < static_cast<int>(8 * fps); ++k) {
       ScenarioFrame f;
-      Phi p{0, 0, 500, 0, 0, 0};
+      core::Phi p{0, 0, 500, 0, 0, 0};
       p[0] = ramp(k, blank0, blank1, 0, 60); // moves while the frames are blank
       if (k >= jump) {                       // the jump: 50 mm and 8 degrees about z at once
         p[0] = 60 - 40;
         p[1] = 30;
         p[5] = std::sin(4 * M_PI / 180);
       }
-      f.hMo = toHomogeneousMatrix(p);
+      f.hMo = core::toHomogeneousMatrix(p);
       f.blank = k >= blank0 && k < blank1;
       f.moving = f.blank;
       s.frames.push_back(f);
@@ -151,7 +151,7 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
     s.lossEnds = {blank1, jump};
     s.description = "blank for 0.5 s while the target moves 60 mm (at 2 s); jumps 50 mm and 8 deg (at 5 s)";
   } else {
-    throw Error("unknown scenario '" + name + "'");
+    throw core::Error("unknown scenario '" + name + "'");
   }
   s.name = name;
   return s;
@@ -159,7 +159,7 @@ Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, i
 
 std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const std::string &table2Path, int steps)
 {
-  std::vector<Phi> table2;
+  std::vector<core::Phi> table2;
   for (const auto &row : io::readPoseTable(table2Path, "step"))
     table2.push_back(row.second);
   std::vector<Scenario> seqs;
@@ -168,7 +168,7 @@ std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const
   return seqs;
 }
 
-sim::StereoImages renderScenarioFrame(sim::Scene &scene, const StereoRig &rig, const Scenario &s, std::size_t k)
+sim::StereoImages renderScenarioFrame(sim::Scene &scene, const core::StereoRig &rig, const Scenario &s, std::size_t k)
 {
   const ScenarioFrame &f = s.frames.at(k);
   scene.params().exposure = f.exposure;

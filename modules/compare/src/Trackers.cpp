@@ -45,7 +45,7 @@ private:
 class OurTracker : public ComparedTracker
 {
 public:
-  OurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params, std::string name)
+  OurTracker(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params, std::string name)
     : m_tracker(rig, model, params), m_name(std::move(name))
   {
   }
@@ -54,12 +54,12 @@ public:
   void start(const vpImage<vpRGBa> &, const vpImage<vpRGBa> &, const vpHomogeneousMatrix &) override { m_tracker.initialize(); }
   Estimate track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) override
   {
-    const TrackResult r = m_tracker.track(left, right);
-    return {r.hMo, r.state == TrackState::Tracking};
+    const tracker::TrackResult r = m_tracker.track(left, right);
+    return {r.hMo, r.state == tracker::TrackState::Tracking};
   }
 
 private:
-  PhotoModelTracker m_tracker;
+  tracker::PhotoModelTracker m_tracker;
   std::string m_name;
 };
 
@@ -67,7 +67,7 @@ private:
 class MbtTracker : public ComparedTracker
 {
 public:
-  MbtTracker(const StereoRig &rig, MbtFeatures features, const std::string &caoPath, const std::string &xmlPath)
+  MbtTracker(const core::StereoRig &rig, MbtFeatures features, const std::string &caoPath, const std::string &xmlPath)
     : m_rig(rig), m_features(features)
   {
     const int type = features == MbtFeatures::Edge  ? vpMbGenericTracker::EDGE_TRACKER
@@ -83,7 +83,7 @@ public:
       m_mbt->loadModel(caoPath, caoPath, false);
       m_mbt->setDisplayFeatures(false);
     } catch (const vpException &e) {
-      throw Error("vpMbGenericTracker: cannot load " + xmlPath + " or " + caoPath + ": " + e.getStringMessage());
+      throw core::Error("vpMbGenericTracker: cannot load " + xmlPath + " or " + caoPath + ": " + e.getStringMessage());
     }
   }
   std::string name() const override
@@ -118,7 +118,7 @@ public:
   }
 
 private:
-  StereoRig m_rig;
+  core::StereoRig m_rig;
   MbtFeatures m_features;
   std::unique_ptr<vpMbGenericTracker> m_mbt;
   vpImage<unsigned char> m_gl, m_gr;
@@ -129,7 +129,7 @@ private:
 class TemplateTracker : public ComparedTracker
 {
 public:
-  TemplateTracker(const StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
+  TemplateTracker(const core::StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
     : m_rig(rig), m_cost(cost), m_polygon(polygon)
   {
     if (cost == TemplateCost::Ssd)
@@ -166,7 +166,7 @@ public:
         }
       }
     if (zone.getNbTriangle() == 0)
-      throw Error("template tracker: the target is too small in the left image");
+      throw core::Error("template tracker: the target is too small in the left image");
     m_tt->resetTracker();
     m_tt->initFromZone(m_gl, zone);
     // The points whose warp gives the pose: the outline's vertices, on the plane z = 0 of the model.
@@ -208,7 +208,7 @@ public:
   }
 
 private:
-  StereoRig m_rig;
+  core::StereoRig m_rig;
   TemplateCost m_cost;
   std::vector<vpPoint> m_polygon;
   vpTemplateTrackerWarpHomography m_warp;
@@ -220,19 +220,19 @@ private:
 
 } // namespace
 
-std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params,
+std::unique_ptr<ComparedTracker> makeOurTracker(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params,
                                                 const std::string &name)
 {
   return std::make_unique<OurTracker>(rig, model, params, name);
 }
 
-std::unique_ptr<ComparedTracker> makeMbtTracker(const StereoRig &rig, MbtFeatures features, const std::string &caoPath,
+std::unique_ptr<ComparedTracker> makeMbtTracker(const core::StereoRig &rig, MbtFeatures features, const std::string &caoPath,
                                                 const std::string &xmlPath)
 {
   return std::make_unique<MbtTracker>(rig, features, caoPath, xmlPath);
 }
 
-std::unique_ptr<ComparedTracker> makeTemplateTracker(const StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
+std::unique_ptr<ComparedTracker> makeTemplateTracker(const core::StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
 {
   return std::make_unique<TemplateTracker>(rig, cost, polygon);
 }

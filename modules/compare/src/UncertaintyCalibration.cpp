@@ -16,7 +16,7 @@ namespace {
 constexpr int kFirstLockFrames = 10; //!< left out: the first lock
 
 //! The share of \e samples within \e multiple times \e model's sigma on \e axis.
-double within(const std::vector<UncertaintySample> &samples, const UncertaintyModel &model, std::size_t axis, double multiple)
+double within(const std::vector<UncertaintySample> &samples, const precise::UncertaintyModel &model, std::size_t axis, double multiple)
 {
   if (samples.empty())
     return 0;
@@ -28,26 +28,26 @@ double within(const std::vector<UncertaintySample> &samples, const UncertaintyMo
 
 } // namespace
 
-std::vector<UncertaintySample> collectUncertaintySamples(const StereoRig &rig, const UncertaintyRun &run, const std::function<void()> &onFrame)
+std::vector<UncertaintySample> collectUncertaintySamples(const core::StereoRig &rig, const UncertaintyRun &run, const std::function<void()> &onFrame)
 {
   sim::Scene scene(sim::makeTarget(run.target));
   const sim::SimulatedPhotoModel m = lab::makeLabModel(scene, rig, lab::LabModelChoice());
   const Scenario s = makeScenario("random6dof", {});
-  TrackerParams p;
+  tracker::TrackerParams p;
   p.ga.seed = run.seed;
   p.budgetEvaluations = run.budget;
-  PhotoModelTracker tracker(rig, m.build.model, p);
+  tracker::PhotoModelTracker tracker(rig, m.build.model, p);
   if (!tracker.hasPreciseStage())
-    throw Error("uncertainty calibration: the model of " + run.target + " has no outlines for the precise stage");
+    throw core::Error("uncertainty calibration: the model of " + run.target + " has no outlines for the precise stage");
   std::vector<UncertaintySample> out;
   for (std::size_t k = 0; k < s.frames.size(); ++k) {
     const sim::StereoImages im = renderScenarioFrame(scene, rig, s, k);
-    const TrackResult r = tracker.track(im.left, im.right);
+    const tracker::TrackResult r = tracker.track(im.left, im.right);
     if (onFrame)
       onFrame();
     if (static_cast<int>(k) < kFirstLockFrames || !r.precise)
       continue;
-    const vpHomogeneousMatrix hMt = s.frames[k].hMo * m.oMm, hMe = toHomogeneousMatrix(r.phi);
+    const vpHomogeneousMatrix hMt = s.frames[k].hMo * m.oMm, hMe = core::toHomogeneousMatrix(r.phi);
     UncertaintySample u;
     u.frame = static_cast<int>(k);
     vpRotationMatrix Re, Rt;
@@ -58,7 +58,7 @@ std::vector<UncertaintySample> collectUncertaintySamples(const StereoRig &rig, c
       u.error[i] = 1e3 * (hMe[i][3] - hMt[i][3]);
       u.error[3 + i] = tu[i] * 180.0 / M_PI;
     }
-    u.lineSigma = lineSigmas(r.preciseResult.information);
+    u.lineSigma = precise::lineSigmas(r.preciseResult.information);
     u.residualPx = r.preciseResult.residualPx;
     if (std::all_of(u.lineSigma.begin(), u.lineSigma.end(), [](double v) { return std::isfinite(v); }))
       out.push_back(u);
@@ -66,11 +66,11 @@ std::vector<UncertaintySample> collectUncertaintySamples(const StereoRig &rig, c
   return out;
 }
 
-UncertaintyModel fitUncertainty(const std::vector<std::vector<UncertaintySample>> &runs)
+precise::UncertaintyModel fitUncertainty(const std::vector<std::vector<UncertaintySample>> &runs)
 {
   if (runs.empty() || std::any_of(runs.begin(), runs.end(), [](const auto &r) { return r.empty(); }))
-    throw Error("fitUncertainty: every run needs samples");
-  UncertaintyModel m, trial;
+    throw core::Error("fitUncertainty: every run needs samples");
+  precise::UncertaintyModel m, trial;
   for (std::size_t axis = 0; axis < 6; ++axis) {
     double largest = 0; // the floor's grid spans up to the largest median |error| of the runs
     for (const auto &r : runs) {
@@ -102,7 +102,7 @@ UncertaintyModel fitUncertainty(const std::vector<std::vector<UncertaintySample>
   return m;
 }
 
-std::array<double, 6> shareWithin(const std::vector<UncertaintySample> &samples, const UncertaintyModel &model, double multiple)
+std::array<double, 6> shareWithin(const std::vector<UncertaintySample> &samples, const precise::UncertaintyModel &model, double multiple)
 {
   std::array<double, 6> w{};
   for (std::size_t axis = 0; axis < 6; ++axis)

@@ -6,7 +6,7 @@
 #include <immintrin.h>
 #endif
 
-namespace pm {
+namespace pm::core {
 
 namespace {
 //! How long the helper looks for the next batch before it sleeps: longer than the gap between
@@ -135,4 +135,4 @@ void BatchPool::helperLoop()
   }
 }
 
-} // namespace pm
+} // namespace pm::core

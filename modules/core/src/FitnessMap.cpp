@@ -6,7 +6,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 FitnessMap computeFitnessMap(const StereoFitness &fitness, const Phi &reference, const FitnessMapSpec &spec,
                              double topFraction)
@@ -64,4 +64,4 @@ std::vector<FitnessMapSpec> paperFitnessMaps(double posStep, double epsStep)
           {4, 5, -0.37, 0.37, -0.37, 0.37, epsStep}};
 }
 
-} // namespace pm
+} // namespace pm::core

@@ -11,7 +11,7 @@
 #define PM_HAVE_X86 1
 #endif
 
-namespace pm {
+namespace pm::core {
 
 namespace {
 // Branch-free hue in tenths of a degree; the compiler vectorises the loop that calls it.
@@ -194,4 +194,4 @@ void HuePlane::compute(const vpImage<vpRGBa> &I, float minSaturation, const Undi
     dst[i] = idx[i] >= 0 ? src[idx[i]] : kNoHue;
 }
 
-} // namespace pm
+} // namespace pm::core

@@ -7,7 +7,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 namespace {
 cv::Matx33d cameraMatrix(const vpCameraParameters &cam)
@@ -117,4 +117,4 @@ std::string LensDistortion::describe() const
   return os.str();
 }
 
-} // namespace pm
+} // namespace pm::core

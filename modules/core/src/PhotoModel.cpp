@@ -4,7 +4,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 namespace {
 bool finite(float a) { return std::isfinite(a); }
@@ -108,4 +108,4 @@ void PhotoModel::validate(const std::string &source) const
   }
 }
 
-} // namespace pm
+} // namespace pm::core

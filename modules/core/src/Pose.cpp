@@ -8,7 +8,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 bool Phi::isValid() const
 {
@@ -98,4 +98,4 @@ double rotationDistanceDeg(const Phi &a, const Phi &b)
   return 2.0 * std::acos(std::min(1.0, d)) * 180.0 / M_PI;
 }
 
-} // namespace pm
+} // namespace pm::core

@@ -5,7 +5,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 double percentile(std::vector<double> values, double fraction)
 {
@@ -19,4 +19,4 @@ double percentile(std::vector<double> values, double fraction)
   return values[k];
 }
 
-} // namespace pm
+} // namespace pm::core

@@ -13,7 +13,7 @@
 #include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 void FitnessParams::validate() const
 {
@@ -1030,4 +1030,4 @@ FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const
   return d;
 }
 
-} // namespace pm
+} // namespace pm::core

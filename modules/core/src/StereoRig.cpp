@@ -4,7 +4,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 StereoRig StereoRig::symmetric(const vpCameraParameters &cam, unsigned w, unsigned h, double baselineM,
                                double toeInRad)
@@ -38,4 +38,4 @@ void StereoRig::validate() const
   }
 }
 
-} // namespace pm
+} // namespace pm::core

@@ -7,7 +7,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::core {
 
 UndistortMap::UndistortMap(const RigCamera &camera) : m_w(camera.width), m_h(camera.height)
 {
@@ -61,4 +61,4 @@ double UndistortMap::coverage() const
   return m_nearest.empty() ? 0.0 : static_cast<double>(in) / static_cast<double>(m_nearest.size());
 }
 
-} // namespace pm
+} // namespace pm::core

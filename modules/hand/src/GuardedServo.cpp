@@ -6,37 +6,37 @@
 
 namespace pm::hand {
 
-GuardedServo::GuardedServo(const ServoParams &sp, const GuardParams &gp, const PhotoModelTracker &tracker, const robot::ArmModel &arm)
-    : m_sp(sp), m_servo(std::make_unique<PbvsServo>(sp)), m_gp(gp), m_lostQuality(tracker.params().lostQuality), m_space(tracker.params().space),
+GuardedServo::GuardedServo(const servo::ServoParams &sp, const GuardParams &gp, const tracker::PhotoModelTracker &tracker, const robot::ArmModel &arm)
+    : m_sp(sp), m_servo(std::make_unique<servo::PbvsServo>(sp)), m_gp(gp), m_lostQuality(tracker.params().lostQuality), m_space(tracker.params().space),
       m_filtering(gp.filter == GuardParams::Filter::On || (gp.filter == GuardParams::Filter::Auto && !tracker.hasPreciseStage())),
       m_arm(arm), m_safe(arm.speedLimits(), arm.accelerationLimits()), m_filter(gp.filterParams)
 {
   if (!(gp.qualityDrop > 0 && gp.qualityMemoryPerS >= 0))
-    throw Error("servo: the quality drop must be positive and its memory rate non-negative");
+    throw core::Error("servo: the quality drop must be positive and its memory rate non-negative");
   if (!(gp.maxSigmaMm >= 0 && gp.maxSigmaDeg >= 0))
-    throw Error("servo: the largest uncertainty allowed must be non-negative (0: no check)");
+    throw core::Error("servo: the largest uncertainty allowed must be non-negative (0: no check)");
 }
 
 void GuardedServo::setDesired(const vpHomogeneousMatrix &hdMo)
 {
-  ServoParams sp = m_sp;
+  servo::ServoParams sp = m_sp;
   sp.hdMo = hdMo;
-  m_servo = std::make_unique<PbvsServo>(sp); // validates it
+  m_servo = std::make_unique<servo::PbvsServo>(sp); // validates it
   m_sp = sp;
 }
 
-bool GuardedServo::certainEnough(const PoseUncertainty &u) const
+bool GuardedServo::certainEnough(const precise::PoseUncertainty &u) const
 {
   return !u.known || ((m_gp.maxSigmaMm <= 0 || u.maxMm() <= m_gp.maxSigmaMm) && (m_gp.maxSigmaDeg <= 0 || u.maxDeg() <= m_gp.maxSigmaDeg));
 }
 
-bool GuardedServo::usable(const TrackResult &track, bool frozen) const
+bool GuardedServo::usable(const tracker::TrackResult &track, bool frozen) const
 {
   return track.trusted && !frozen && track.quality >= m_lostQuality && track.quality >= m_qRef - m_gp.qualityDrop &&
          track.phi.isValid() && certainEnough(track.uncertainty) && m_space.contains(track.phi);
 }
 
-GuardedCommand GuardedServo::step(const TrackResult &track, bool frozen, const vpColVector &q, const vpHomogeneousMatrix &fMh,
+GuardedCommand GuardedServo::step(const tracker::TrackResult &track, bool frozen, const vpColVector &q, const vpHomogeneousMatrix &fMh,
                                   const vpMatrix &hJe, double dt, const vpHomogeneousMatrix *oracle)
 {
   GuardedCommand c;
@@ -62,7 +62,7 @@ GuardedCommand GuardedServo::step(const TrackResult &track, bool frozen, const v
     try {
       wanted = m_servo->computeJointVelocity(c.hMoUsed, fMh, hJe, q, m_arm.jointMin(), m_arm.jointMax(), dt,
                                             twist.size() == 6 ? &twist : nullptr);
-    } catch (const Error &) { // a pose vpServo must not see
+    } catch (const core::Error &) { // a pose vpServo must not see
       c.servoing = false;
     }
   }

@@ -4,12 +4,12 @@
 
 namespace pm::hand {
 
-HandLoop::HandLoop(const StereoRig &rig, const PhotoModel &model, const TrackerParams &tp, const ServoParams &sp,
+HandLoop::HandLoop(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &tp, const servo::ServoParams &sp,
                    const GuardParams &gp, capture::StereoSource &source, robot::Arm &arm, double fps)
     : m_source(source), m_arm(arm), m_dt(fps > 0 ? 1.0 / fps : 0), m_tracker(rig, model, tp), m_guard(sp, gp, m_tracker, arm.model())
 {
   if (!(fps > 0))
-    throw Error("servo: the frame rate must be positive");
+    throw core::Error("servo: the frame rate must be positive");
   m_tracker.initialize(); // no initial pose
 }
 

@@ -13,28 +13,28 @@ capture::StereoFrame pairAtStop(capture::StereoSource &source, int settlePairs, 
   capture::StereoFrame f;
   for (int k = 0; k <= settlePairs; ++k)
     if (!source.next(f))
-      throw Error("pass: the cameras (" + source.describe() + ") ended at " + view);
+      throw core::Error("pass: the cameras (" + source.describe() + ") ended at " + view);
   return f;
 }
 
 } // namespace
 
-std::vector<PassView> recordPass(robot::Arm &arm, capture::StereoSource &source, const PassPlan &plan,
+std::vector<model::PassView> recordPass(robot::Arm &arm, capture::StereoSource &source, const model::PassPlan &plan,
                                  const PassRecording &recording)
 {
   if (recording.settlePairs < 0)
-    throw Error("pass: the pairs dropped at each stop cannot be negative");
+    throw core::Error("pass: the pairs dropped at each stop cannot be negative");
   if (recording.backgrounds && !recording.ask)
-    throw Error("pass: the backgrounds need someone to remove the target (PassRecording::ask)");
+    throw core::Error("pass: the backgrounds need someone to remove the target (PassRecording::ask)");
   const vpColVector q0 = arm.q();
   const std::vector<robot::ArmPassView> planned = robot::planArmPass(arm.model(), q0, arm.eMh(), plan, plan.distanceMm);
   const std::size_t total = planned.size() * (recording.backgrounds ? 2 : 1);
-  std::vector<PassView> views(planned.size());
+  std::vector<model::PassView> views(planned.size());
   std::size_t done = 0;
   auto take = [&](std::size_t k, bool background) {
     arm.moveTo(planned[k].q);
     capture::StereoFrame f = pairAtStop(source, recording.settlePairs, planned[k].name);
-    PassView &v = views[k];
+    model::PassView &v = views[k];
     v.name = planned[k].name;
     const vpHomogeneousMatrix fMh = arm.fMh(arm.q()); // where the arm is, as it reports
     if (background) {

@@ -38,14 +38,14 @@ void outline(vpImage<vpRGBa> &I, const vpImage<unsigned char> &mask, const cv::S
 }
 
 //! The left camera of view \e k in the model frame, and its photo in the ideal image.
-vpHomogeneousMatrix leftInModel(const AllAroundBuild &b, const PassView &v, const StereoRig &rig)
+vpHomogeneousMatrix leftInModel(const model::AllAroundBuild &b, const model::PassView &v, const core::StereoRig &rig)
 {
   return b.fMm.inverse() * v.fMh * rig.left.hMc;
 }
 
 } // namespace
 
-std::string plyText(const std::vector<SurfacePoint> &surface, const HullMesh *mesh)
+std::string plyText(const std::vector<model::SurfacePoint> &surface, const model::HullMesh *mesh)
 {
   const bool faces = mesh && mesh->vertices.size() == surface.size();
   std::ostringstream s;
@@ -55,7 +55,7 @@ std::string plyText(const std::vector<SurfacePoint> &surface, const HullMesh *me
   if (faces)
     s << "element face " << mesh->triangles.size() << "\nproperty list uchar int vertex_indices\n";
   s << "end_header\n";
-  for (const SurfacePoint &p : surface)
+  for (const model::SurfacePoint &p : surface)
     s << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.nx << ' ' << p.ny << ' ' << p.nz << ' ' << int(p.r) << ' ' << int(p.g)
       << ' ' << int(p.b) << '\n';
   if (faces)
@@ -64,21 +64,21 @@ std::string plyText(const std::vector<SurfacePoint> &surface, const HullMesh *me
   return s.str();
 }
 
-void writeAllAroundPictures(const AllAroundBuild &b, const std::vector<PassView> &pass, const StereoRig &rig, StagedFiles &out)
+void writeAllAroundPictures(const model::AllAroundBuild &b, const std::vector<model::PassView> &pass, const core::StereoRig &rig, StagedFiles &out)
 {
   writeTextFile(out.stage("model.ply"), plyText(b.surface, &b.mesh));
   const unsigned w = rig.left.width, h = rig.left.height;
   const int tw = 320, th = static_cast<int>(320.0 * h / w);
-  std::unique_ptr<UndistortMap> und;
+  std::unique_ptr<core::UndistortMap> und;
   if (!rig.left.distortion.isNone())
-    und = std::make_unique<UndistortMap>(rig.left);
+    und = std::make_unique<core::UndistortMap>(rig.left);
   // Contact sheet: 8 views (evenly over the pass), photo | model.
   const std::size_t n = std::min<std::size_t>(8, pass.size());
   vpImage<vpRGBa> sheet(static_cast<unsigned>(th * ((n + 1) / 2)), static_cast<unsigned>(4 * tw), vpRGBa(40, 40, 40));
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t k = j * pass.size() / n;
     vpImage<vpRGBa> photo = und ? und->undistorted(pass[k].left) : pass[k].left;
-    vpImage<vpRGBa> model = drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h);
+    vpImage<vpRGBa> model = model::drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h);
     cv::putText(asMat(photo), pass[k].name, cv::Point(10, 30), cv::FONT_HERSHEY_SIMPLEX, 1.0, cv::Scalar(255, 255, 255, 255), 2);
     cv::putText(asMat(model), "model", cv::Point(10, 30), cv::FONT_HERSHEY_SIMPLEX, 1.0, cv::Scalar(255, 255, 255, 255), 2);
     const int x = static_cast<int>(j % 2) * 2 * tw, y = static_cast<int>(j / 2) * th;
@@ -92,7 +92,7 @@ void writeAllAroundPictures(const AllAroundBuild &b, const std::vector<PassView>
   for (std::size_t k = 0; k < pass.size(); ++k) {
     vpImage<vpRGBa> photo = und ? und->undistorted(pass[k].left) : pass[k].left;
     vpImage<unsigned char> hull;
-    drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h, &hull);
+    model::drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h, &hull);
     if (2 * k < b.silhouettes.size())
       outline(photo, b.silhouettes[2 * k], cv::Scalar(0, 255, 0, 255));
     outline(photo, hull, cv::Scalar(255, 0, 0, 255));
@@ -102,7 +102,7 @@ void writeAllAroundPictures(const AllAroundBuild &b, const std::vector<PassView>
   writeImage(sil, out.stage("silhouettes.png"));
 }
 
-std::string writeAllAroundModel(const AllAroundBuild &b, const std::vector<PassView> &pass, const StereoRig &rig,
+std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vector<model::PassView> &pass, const core::StereoRig &rig,
                                 const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson)
 {
   StagedFiles out(dir);
@@ -112,7 +112,7 @@ std::string writeAllAroundModel(const AllAroundBuild &b, const std::vector<PassV
   for (unsigned r = 0; r < 4; ++r)
     fMo.push_back({b.fMm[r][0], b.fMm[r][1], b.fMm[r][2], b.fMm[r][3]});
   std::size_t nPoints = b.model.size();
-  for (const ModelView &v : b.model.views)
+  for (const core::ModelView &v : b.model.views)
     nPoints += v.inner.size() + v.outer.size();
   nlohmann::json summary{{"source", source},
                                {"kind", "all-around"},

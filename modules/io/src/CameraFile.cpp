@@ -24,7 +24,7 @@ std::string readAll(const std::string &path)
 {
   std::ifstream f(path, std::ios::binary);
   if (!f)
-    throw Error("the intrinsics file '" + path + "' does not exist or cannot be read");
+    throw core::Error("the intrinsics file '" + path + "' does not exist or cannot be read");
   std::ostringstream ss;
   ss << f.rdbuf();
   return ss.str();
@@ -47,9 +47,9 @@ struct Fields
 void checkShape(const Fields::Matrix &m, const std::string &key)
 {
   if (m.rows < 1 || m.cols < 1 || m.rows > 1000 || m.cols > 1000)
-    throw Error("\"" + key + "\" says " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + ": not a matrix of this kind");
+    throw core::Error("\"" + key + "\" says " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + ": not a matrix of this kind");
   if (m.rows * m.cols != static_cast<long long>(m.values.size()))
-    throw Error("\"" + key + "\" says " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + " but holds " +
+    throw core::Error("\"" + key + "\" says " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + " but holds " +
                 std::to_string(m.values.size()) + " values");
 }
 
@@ -63,7 +63,7 @@ Fields yamlFields(std::string text)
   try {
     const YAML::Node root = YAML::Load(text);
     if (!root.IsMap())
-      throw Error("it is not a map of fields");
+      throw core::Error("it is not a map of fields");
     const auto matrix = [&](const char *key, Fields::Matrix &m) {
       const YAML::Node n = root[key];
       if (!n)
@@ -80,7 +80,7 @@ Fields yamlFields(std::string text)
         for (const YAML::Node &x : n["data"])
           m.values.push_back(x.as<double>());
       } else {
-        throw Error(std::string("\"") + key + "\" is not a matrix (rows, cols, data)");
+        throw core::Error(std::string("\"") + key + "\" is not a matrix (rows, cols, data)");
       }
       checkShape(m, key);
     };
@@ -92,7 +92,7 @@ Fields yamlFields(std::string text)
     if (root["distortion_model"])
       f.distortionModel = root["distortion_model"].as<std::string>();
   } catch (const YAML::Exception &e) {
-    throw Error("it cannot be read: " + e.msg);
+    throw core::Error("it cannot be read: " + e.msg);
   }
   return f;
 }
@@ -104,7 +104,7 @@ Fields xmlFields(const std::string &text)
   try {
     cv::FileStorage fs(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
     if (!fs.isOpened())
-      throw Error("it cannot be parsed");
+      throw core::Error("it cannot be parsed");
     const auto matrix = [&](const char *key, Fields::Matrix &m) {
       const cv::FileNode n = fs[key];
       if (n.empty() || n.isNone())
@@ -112,7 +112,7 @@ Fields xmlFields(const std::string &text)
       m.present = true;
       const cv::FileNode nr = n["rows"], nc = n["cols"], d = n["data"];
       if (!nr.isInt() || !nc.isInt() || d.empty())
-        throw Error(std::string("\"") + key + "\" is not a matrix (rows, cols, data)");
+        throw core::Error(std::string("\"") + key + "\" is not a matrix (rows, cols, data)");
       m.rows = static_cast<int>(nr);
       m.cols = static_cast<int>(nc);
       if (m.rows < 1 || m.cols < 1 || m.rows > 1000 || m.cols > 1000) // checked before OpenCV allocates (fuzzing found 17 GB asked for)
@@ -120,7 +120,7 @@ Fields xmlFields(const std::string &text)
       cv::Mat mat;
       n >> mat;
       if (mat.empty())
-        throw Error(std::string("\"") + key + "\" is not a matrix");
+        throw core::Error(std::string("\"") + key + "\" is not a matrix");
       mat.convertTo(mat, CV_64F);
       m.values.assign(mat.begin<double>(), mat.end<double>());
       checkShape(m, key);
@@ -132,15 +132,15 @@ Fields xmlFields(const std::string &text)
       if (n.empty() || n.isNone())
         continue;
       if (!n.isInt())
-        throw Error(std::string("\"") + key + "\" must be a positive integer");
+        throw core::Error(std::string("\"") + key + "\" must be a positive integer");
       (key[6] == 'w' ? f.width : f.height) = static_cast<int>(n);
     }
   } catch (const cv::Exception &e) {
-    throw Error(std::string("it cannot be read: ") + e.err);
-  } catch (const Error &) {
+    throw core::Error(std::string("it cannot be read: ") + e.err);
+  } catch (const core::Error &) {
     throw;
   } catch (const std::exception &e) { // OpenCV's parser lets some standard exceptions out
-    throw Error(std::string("it cannot be read (") + e.what() + ")");
+    throw core::Error(std::string("it cannot be read (") + e.what() + ")");
   }
   return f;
 }
@@ -150,33 +150,33 @@ CameraIntrinsics fromFields(const Fields &f, bool ros)
   CameraIntrinsics c;
   c.format = ros ? "ros" : "opencv";
   if (!f.K.present)
-    throw Error("no \"camera_matrix\"");
+    throw core::Error("no \"camera_matrix\"");
   if (f.K.rows != 3 || f.K.cols != 3)
-    throw Error("\"camera_matrix\" must be 3x3, it is " + std::to_string(f.K.rows) + "x" + std::to_string(f.K.cols));
+    throw core::Error("\"camera_matrix\" must be 3x3, it is " + std::to_string(f.K.rows) + "x" + std::to_string(f.K.cols));
   const std::vector<double> &K = f.K.values;
   for (double x : K)
     if (!std::isfinite(x))
-      throw Error("\"camera_matrix\" holds a value that is not finite");
+      throw core::Error("\"camera_matrix\" holds a value that is not finite");
   if (!(K[0] > 0 && K[4] > 0))
-    throw Error("\"camera_matrix\": focal lengths must be positive (fx = " + std::to_string(K[0]) + ", fy = " +
+    throw core::Error("\"camera_matrix\": focal lengths must be positive (fx = " + std::to_string(K[0]) + ", fy = " +
                 std::to_string(K[4]) + ")");
   if (K[1] != 0 || K[3] != 0 || K[6] != 0 || K[7] != 0 || K[8] != 1)
-    throw Error("\"camera_matrix\" is not a camera matrix [fx 0 cx; 0 fy cy; 0 0 1] (a skew is not supported)");
+    throw core::Error("\"camera_matrix\" is not a camera matrix [fx 0 cx; 0 fy cy; 0 0 1] (a skew is not supported)");
   try {
     c.cam.initPersProjWithoutDistortion(K[0], K[4], K[2], K[5]);
   } catch (const vpException &e) { // ViSP takes a focal length under 1e-6 for 0 (fuzzing found it)
-    throw Error("\"camera_matrix\": " + e.getStringMessage() + " (focal lengths must be positive)");
+    throw core::Error("\"camera_matrix\": " + e.getStringMessage() + " (focal lengths must be positive)");
   }
   if (f.D.present)
     c.distortion.coefficients = f.D.values;
   if (ros) {
     const std::string model = f.distortionModel.empty() ? "plumb_bob" : f.distortionModel;
     if (model != "plumb_bob" && model != "rational_polynomial")
-      throw Error("distortion_model \"" + model + "\" is not supported (plumb_bob or rational_polynomial)");
+      throw core::Error("distortion_model \"" + model + "\" is not supported (plumb_bob or rational_polynomial)");
   }
   for (const long long *v : {&f.width, &f.height})
     if (*v < 0 || *v > 1000000)
-      throw Error(std::string("\"") + (v == &f.width ? "image_width" : "image_height") + "\" must be a positive integer");
+      throw core::Error(std::string("\"") + (v == &f.width ? "image_width" : "image_height") + "\" must be a positive integer");
   c.width = static_cast<unsigned>(f.width);
   c.height = static_cast<unsigned>(f.height);
   return c;
@@ -199,7 +199,7 @@ CameraIntrinsics fromVispXml(const std::string &path, const std::string &name, u
     requireValidIntrinsics(c.cam, path, name);
     const double kud = c.cam.get_kud();
     if (!std::isfinite(kud))
-      throw Error("camera '" + name + "' in '" + path + "': kud is not finite");
+      throw core::Error("camera '" + name + "' in '" + path + "': kud is not finite");
     c.distortion.coefficients = {kud, 0, 0, 0, 0};
     c.cam.initPersProjWithoutDistortion(c.cam.get_px(), c.cam.get_py(), c.cam.get_u0(), c.cam.get_v0());
   } else {
@@ -215,16 +215,16 @@ CameraIntrinsics fromVispXml(const std::string &path, const std::string &name, u
 CameraIntrinsics readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h)
 {
   if (!std::filesystem::is_regular_file(path))
-    throw Error("the intrinsics file '" + path + "' does not exist");
+    throw core::Error("the intrinsics file '" + path + "' does not exist");
   const std::string text = readAll(path);
   CameraIntrinsics c;
   try {
     // Text only: OpenCV's XML parser crashes on a NUL byte (fuzzing found it), and no camera file holds control characters.
     if (text.size() > 1000000)
-      throw Error("it is " + std::to_string(text.size()) + " bytes long: not a camera file");
+      throw core::Error("it is " + std::to_string(text.size()) + " bytes long: not a camera file");
     for (unsigned char ch : text)
       if (ch < 0x20 && ch != '\t' && ch != '\n' && ch != '\r')
-        throw Error("it holds a control character (byte " + std::to_string(static_cast<int>(ch)) + "): not a text file");
+        throw core::Error("it holds a control character (byte " + std::to_string(static_cast<int>(ch)) + "): not a text file");
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     const bool xml = first != std::string::npos && text[first] == '<';
     if (xml)
@@ -238,10 +238,10 @@ CameraIntrinsics readCameraFile(const std::string &path, const std::string &name
     else if (text.find("camera_matrix") != std::string::npos)
       c = fromFields(yamlFields(text), true); // ROS's camera_info
     else
-      throw Error("not a camera file this program knows (ViSP camera XML, OpenCV FileStorage with camera_matrix, "
+      throw core::Error("not a camera file this program knows (ViSP camera XML, OpenCV FileStorage with camera_matrix, "
                   "ROS camera_info YAML)");
     if (w && h && c.width && c.height && (c.width != w || c.height != h))
-      throw Error("it is for " + std::to_string(c.width) + "x" + std::to_string(c.height) + " images, the camera's are " +
+      throw core::Error("it is for " + std::to_string(c.width) + "x" + std::to_string(c.height) + " images, the camera's are " +
                   std::to_string(w) + "x" + std::to_string(h));
     if (w && h) {
       c.width = w;
@@ -251,16 +251,16 @@ CameraIntrinsics readCameraFile(const std::string &path, const std::string &name
       c.distortion.validate(c.cam, c.width, c.height, "camera '" + name + "'");
     else
       c.distortion.validate(c.cam, 1, 1, "camera '" + name + "'"); // counts and values at least
-  } catch (const Error &e) {
+  } catch (const core::Error &e) {
     const std::string what = e.what();
     if (what.find(path) != std::string::npos)
       throw;
-    throw Error("intrinsics file '" + path + "': " + what);
+    throw core::Error("intrinsics file '" + path + "': " + what);
   }
   return c;
 }
 
-void writeOpenCvCameraFile(const RigCamera &camera, const std::string &path)
+void writeOpenCvCameraFile(const core::RigCamera &camera, const std::string &path)
 {
   try {
     cv::FileStorage fs(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
@@ -274,7 +274,7 @@ void writeOpenCvCameraFile(const RigCamera &camera, const std::string &path)
     fs << "distortion_coefficients" << cv::Mat(d, true).reshape(1, 1);
     writeTextFile(path, fs.releaseAndGetString());
   } catch (const cv::Exception &e) {
-    throw Error("cannot write the camera file '" + path + "': " + e.err);
+    throw core::Error("cannot write the camera file '" + path + "': " + e.err);
   }
 }
 

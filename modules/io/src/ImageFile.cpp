@@ -47,16 +47,16 @@ vpImage<vpRGBa> readPng(const std::string &path)
   std::memset(&img, 0, sizeof img);
   img.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&img, path.c_str()))
-    throw Error("cannot read image '" + path + "': not a valid PNG (" + img.message + ")");
+    throw core::Error("cannot read image '" + path + "': not a valid PNG (" + img.message + ")");
   img.format = PNG_FORMAT_RGBA;
   if (img.width == 0 || img.height == 0 || static_cast<double>(img.width) * img.height > kMaxPixels) {
     png_image_free(&img);
-    throw Error("cannot read image '" + path + "': unreasonable size " + std::to_string(img.width) + "x" +
+    throw core::Error("cannot read image '" + path + "': unreasonable size " + std::to_string(img.width) + "x" +
                 std::to_string(img.height));
   }
   vpImage<vpRGBa> I(img.height, img.width);
   if (!png_image_finish_read(&img, nullptr, I.bitmap, 0, nullptr))
-    throw Error("cannot read image '" + path + "': corrupt or truncated PNG (" + img.message + ")");
+    throw core::Error("cannot read image '" + path + "': corrupt or truncated PNG (" + img.message + ")");
   return I;
 }
 
@@ -86,7 +86,7 @@ vpImage<vpRGBa> readJpeg(const std::string &path)
 {
   std::unique_ptr<FILE, int (*)(FILE *)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f)
-    throw Error("cannot open image '" + path + "'");
+    throw core::Error("cannot open image '" + path + "'");
   jpeg_decompress_struct cinfo;
   JpegError err;
   err.message[0] = 0;
@@ -97,21 +97,21 @@ vpImage<vpRGBa> readJpeg(const std::string &path)
   vpImage<vpRGBa> I;
   if (setjmp(err.jump)) {
     jpeg_destroy_decompress(&cinfo);
-    throw Error("cannot read image '" + path + "': not a valid JPEG (" + err.message + ")");
+    throw core::Error("cannot read image '" + path + "': not a valid JPEG (" + err.message + ")");
   }
   jpeg_create_decompress(&cinfo);
   jpeg_stdio_src(&cinfo, f.get());
   jpeg_read_header(&cinfo, TRUE);
   if (static_cast<double>(cinfo.image_width) * cinfo.image_height > kMaxPixels) {
     jpeg_destroy_decompress(&cinfo);
-    throw Error("cannot read image '" + path + "': unreasonable size " + std::to_string(cinfo.image_width) + "x" +
+    throw core::Error("cannot read image '" + path + "': unreasonable size " + std::to_string(cinfo.image_width) + "x" +
                 std::to_string(cinfo.image_height));
   }
   cinfo.out_color_space = JCS_RGB;
   jpeg_start_decompress(&cinfo);
   if (static_cast<double>(cinfo.output_width) * cinfo.output_height > kMaxPixels || cinfo.output_components != 3) {
     jpeg_destroy_decompress(&cinfo);
-    throw Error("cannot read image '" + path + "': unsupported JPEG");
+    throw core::Error("cannot read image '" + path + "': unsupported JPEG");
   }
   I.resize(cinfo.output_height, cinfo.output_width);
   row.resize(3 * static_cast<std::size_t>(cinfo.output_width));
@@ -126,7 +126,7 @@ vpImage<vpRGBa> readJpeg(const std::string &path)
   const long warnings = cinfo.err->num_warnings;
   jpeg_destroy_decompress(&cinfo);
   if (warnings > 0)
-    throw Error("cannot read image '" + path + "': corrupt or truncated JPEG (" + err.message + ")");
+    throw core::Error("cannot read image '" + path + "': corrupt or truncated JPEG (" + err.message + ")");
   return I;
 }
 
@@ -141,27 +141,27 @@ vpImage<vpRGBa> readPnm(const std::string &path)
   std::string magic;
   f >> magic;
   if (magic != "P5" && magic != "P6")
-    throw Error("cannot read image '" + path + "': not a PNG, JPEG or binary PGM/PPM image");
+    throw core::Error("cannot read image '" + path + "': not a PNG, JPEG or binary PGM/PPM image");
   long header[3] = {0, 0, 0}; // width, height, maximum value
   for (long &v : header) {
     while (f >> std::ws && f.peek() == '#') // comments
       f.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
     if (!(f >> v))
-      throw Error("cannot read image '" + path + "': truncated " + magic + " header");
+      throw core::Error("cannot read image '" + path + "': truncated " + magic + " header");
   }
   const long w = header[0], h = header[1];
   if (w <= 0 || h <= 0 || static_cast<double>(w) * static_cast<double>(h) > kMaxPixels)
-    throw Error("cannot read image '" + path + "': bad or unreasonable size " + std::to_string(w) + "x" + std::to_string(h));
+    throw core::Error("cannot read image '" + path + "': bad or unreasonable size " + std::to_string(w) + "x" + std::to_string(h));
   if (header[2] < 1 || header[2] > 255)
-    throw Error("cannot read image '" + path + "': only 8-bit PGM/PPM are read (maximum value " + std::to_string(header[2]) + ")");
+    throw core::Error("cannot read image '" + path + "': only 8-bit PGM/PPM are read (maximum value " + std::to_string(header[2]) + ")");
   if (!std::isspace(f.get())) // one whitespace, then the pixels
-    throw Error("cannot read image '" + path + "': malformed " + magic + " header");
+    throw core::Error("cannot read image '" + path + "': malformed " + magic + " header");
   const std::size_t channels = magic == "P6" ? 3 : 1;
   std::vector<unsigned char> row(channels * static_cast<std::size_t>(w));
   vpImage<vpRGBa> I(static_cast<unsigned>(h), static_cast<unsigned>(w));
   for (unsigned v = 0; v < I.getHeight(); ++v) {
     if (!f.read(reinterpret_cast<char *>(row.data()), static_cast<std::streamsize>(row.size())))
-      throw Error("cannot read image '" + path + "': truncated " + magic + " pixels");
+      throw core::Error("cannot read image '" + path + "': truncated " + magic + " pixels");
     for (auto &c : row) // onto 0..255, whatever the maximum value
       c = static_cast<unsigned char>(std::min<long>(255, (255 * static_cast<long>(c) + header[2] / 2) / header[2]));
     for (unsigned u = 0; u < I.getWidth(); ++u) {
@@ -178,7 +178,7 @@ vpImage<vpRGBa> readColorImage(const std::string &path)
 {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
-    throw Error("image '" + path + "' does not exist or is not a file");
+    throw core::Error("image '" + path + "' does not exist or is not a file");
   static const unsigned char pngMagic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   static const unsigned char jpegMagic[3] = {0xff, 0xd8, 0xff};
   const std::string ext = lowerExtension(path);
@@ -195,7 +195,7 @@ template <typename T> void writeAny(const vpImage<T> &I, const std::string &path
   try {
     vpImageIo::write(I, path);
   } catch (const vpException &e) {
-    throw Error("cannot write image '" + path + "': " + e.getStringMessage());
+    throw core::Error("cannot write image '" + path + "': " + e.getStringMessage());
   }
 }
 } // namespace

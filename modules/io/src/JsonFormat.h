@@ -9,16 +9,16 @@
 namespace pm::io::detail {
 
 /*!
-  Throws pm::Error unless \e j is an object with "format" = \e format and a "version" from 1 to
+  Throws pm::core::Error unless \e j is an object with "format" = \e format and a "version" from 1 to
   \e maxVersion; returns the version.
 */
 inline int checkFormat(const nlohmann::json &j, const char *format, int maxVersion = 1)
 {
   if (!j.is_object() || j.value("format", "") != format)
-    throw Error(std::string("\"format\" must be \"") + format + "\"");
+    throw core::Error(std::string("\"format\" must be \"") + format + "\"");
   const nlohmann::json v = j.value("version", nlohmann::json());
   if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > maxVersion)
-    throw Error("unsupported \"version\" (this program reads versions 1 to " + std::to_string(maxVersion) + ")");
+    throw core::Error("unsupported \"version\" (this program reads versions 1 to " + std::to_string(maxVersion) + ")");
   return static_cast<int>(v.get<long long>());
 }
 

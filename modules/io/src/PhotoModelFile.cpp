@@ -20,7 +20,7 @@ namespace {
 constexpr const char *kFormat = "visp-photomodel-model";
 constexpr std::size_t kViewpointViews = 16; //!< from this many views a model is written as version 4
 
-json pointsToJson(const std::vector<ModelPoint> &pts, bool withZ)
+json pointsToJson(const std::vector<core::ModelPoint> &pts, bool withZ)
 {
   json a = json::array();
   for (const auto &p : pts)
@@ -28,18 +28,18 @@ json pointsToJson(const std::vector<ModelPoint> &pts, bool withZ)
   return a;
 }
 
-std::vector<ModelPoint> pointsFromJson(const json &a, const char *name, bool withZ)
+std::vector<core::ModelPoint> pointsFromJson(const json &a, const char *name, bool withZ)
 {
   const std::string shape = withZ ? "[x_mm, y_mm, z_mm, hue_deg, u_px, v_px]" : "[x_mm, y_mm, hue_deg, u_px, v_px]";
   if (!a.is_array())
-    throw Error(std::string("\"") + name + "\" must be an array of " + shape);
-  std::vector<ModelPoint> pts;
+    throw core::Error(std::string("\"") + name + "\" must be an array of " + shape);
+  std::vector<core::ModelPoint> pts;
   pts.reserve(a.size());
   const std::size_t n = withZ ? 6 : 5, k = withZ ? 1 : 0;
   for (const auto &e : a) {
     if (!e.is_array() || e.size() != n)
-      throw Error(std::string("every point of \"") + name + "\" must be " + shape);
-    ModelPoint p;
+      throw core::Error(std::string("every point of \"") + name + "\" must be " + shape);
+    core::ModelPoint p;
     p.x = e[0].get<float>();
     p.y = e[1].get<float>();
     p.z = withZ ? e[2].get<float>() : 0.f;
@@ -55,25 +55,25 @@ std::vector<ModelPoint> pointsFromJson(const json &a, const char *name, bool wit
 double rounded(float x) { return std::round(static_cast<double>(x) * 100.0) / 100.0; }
 
 //! A contour's points as [x, y, z, nx, ny, nz, inside_mm, outside_mm] (positions to 0.01 mm, normals to 0.0001).
-json contourToJson(const std::vector<ContourPoint> &c)
+json contourToJson(const std::vector<core::ContourPoint> &c)
 {
   json a = json::array();
   auto n4 = [](float x) { return std::round(static_cast<double>(x) * 1e4) / 1e4; };
-  for (const ContourPoint &p : c)
+  for (const core::ContourPoint &p : c)
     a.push_back({rounded(p.x), rounded(p.y), rounded(p.z), n4(p.nx), n4(p.ny), n4(p.nz), rounded(p.insideMm), rounded(p.outsideMm)});
   return a;
 }
 
-std::vector<ContourPoint> contourFromJson(const json &a)
+std::vector<core::ContourPoint> contourFromJson(const json &a)
 {
   if (!a.is_array())
-    throw Error("\"contour\" must be an array of [x_mm, y_mm, z_mm, nx, ny, nz, inside_mm, outside_mm]");
-  std::vector<ContourPoint> c;
+    throw core::Error("\"contour\" must be an array of [x_mm, y_mm, z_mm, nx, ny, nz, inside_mm, outside_mm]");
+  std::vector<core::ContourPoint> c;
   c.reserve(a.size());
   for (const json &e : a) {
     if (!e.is_array() || e.size() != 8)
-      throw Error("every point of \"contour\" must be [x_mm, y_mm, z_mm, nx, ny, nz, inside_mm, outside_mm]");
-    ContourPoint p;
+      throw core::Error("every point of \"contour\" must be [x_mm, y_mm, z_mm, nx, ny, nz, inside_mm, outside_mm]");
+    core::ContourPoint p;
     p.x = e[0].get<float>(), p.y = e[1].get<float>(), p.z = e[2].get<float>();
     p.nx = e[3].get<float>(), p.ny = e[4].get<float>(), p.nz = e[5].get<float>();
     p.insideMm = e[6].get<float>(), p.outsideMm = e[7].get<float>();
@@ -95,24 +95,24 @@ json histogramToJson(const std::vector<float> &h)
 std::vector<float> histogramFromJson(const json &a, std::size_t bins, const char *name)
 {
   if (!a.is_array())
-    throw Error(std::string("\"") + name + "\" must be an array of [bin, value]");
+    throw core::Error(std::string("\"") + name + "\" must be an array of [bin, value]");
   std::vector<float> h(bins, 0.f);
   for (const json &e : a) {
     if (!e.is_array() || e.size() != 2 || !e[0].is_number_unsigned() || e[0].get<std::size_t>() >= bins)
-      throw Error(std::string("every entry of \"") + name + "\" must be [bin, value] with a bin under " + std::to_string(bins));
+      throw core::Error(std::string("every entry of \"") + name + "\" must be [bin, value] with a bin under " + std::to_string(bins));
     h[e[0].get<std::size_t>()] = e[1].get<float>();
   }
   return h;
 }
 
 //! Version 4: the S_in points of every view in one cloud, each view by index; S_out as positions. Version 5 adds each surface point's colour, the outlines and the colour histograms.
-void writeViewpointModel(const PhotoModel &m, json &j, bool v5)
+void writeViewpointModel(const core::PhotoModel &m, json &j, bool v5)
 {
   std::map<std::array<double, 7>, std::size_t> index;
   json surface = json::array();
-  auto indices = [&](const std::vector<ModelPoint> &pts) {
+  auto indices = [&](const std::vector<core::ModelPoint> &pts) {
     json a = json::array();
-    for (const ModelPoint &p : pts) {
+    for (const core::ModelPoint &p : pts) {
       const double hue = rounded(p.hue) >= 360.0 ? 0.0 : rounded(p.hue); // 359.996 rounds to 360: the same as 0
       const std::array<double, 7> key{rounded(p.x), rounded(p.y), rounded(p.z), hue, v5 ? p.r : 0.0, v5 ? p.g : 0.0, v5 ? p.b : 0.0};
       auto it = index.find(key);
@@ -127,9 +127,9 @@ void writeViewpointModel(const PhotoModel &m, json &j, bool v5)
     }
     return a;
   };
-  auto positions = [](const std::vector<ModelPoint> &pts) {
+  auto positions = [](const std::vector<core::ModelPoint> &pts) {
     json a = json::array();
-    for (const ModelPoint &p : pts)
+    for (const core::ModelPoint &p : pts)
       a.push_back({rounded(p.x), rounded(p.y), rounded(p.z)});
     return a;
   };
@@ -138,7 +138,7 @@ void writeViewpointModel(const PhotoModel &m, json &j, bool v5)
   if (v5)
     j["contour"] = contourToJson(m.contour);
   json views = json::array();
-  for (const ModelView &v : m.views) {
+  for (const core::ModelView &v : m.views) {
     json e{{"camera_mm", {v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]}}, {"s_in", indices(v.inner)}, {"s_out", positions(v.outer)}};
     if (v5)
       e["contour"] = contourToJson(v.contour);
@@ -147,35 +147,35 @@ void writeViewpointModel(const PhotoModel &m, json &j, bool v5)
   j["views"] = views;
   j["surface"] = surface;
   if (v5 && !m.foregroundHistogram.empty())
-    j["colour_histograms"] = {{"bins_per_channel", PhotoModel::kColourBins},
+    j["colour_histograms"] = {{"bins_per_channel", core::PhotoModel::kColourBins},
                               {"foreground", histogramToJson(m.foregroundHistogram)},
                               {"background", histogramToJson(m.backgroundHistogram)}};
 }
 
-std::vector<ModelPoint> indexedPoints(const json &a, const std::vector<ModelPoint> &surface, const char *name)
+std::vector<core::ModelPoint> indexedPoints(const json &a, const std::vector<core::ModelPoint> &surface, const char *name)
 {
   if (!a.is_array())
-    throw Error(std::string("\"") + name + "\" must be an array of indices into \"surface\"");
-  std::vector<ModelPoint> pts;
+    throw core::Error(std::string("\"") + name + "\" must be an array of indices into \"surface\"");
+  std::vector<core::ModelPoint> pts;
   pts.reserve(a.size());
   for (const json &e : a) {
     if (!e.is_number_unsigned() || e.get<std::size_t>() >= surface.size())
-      throw Error(std::string("\"") + name + "\" holds an index outside \"surface\" (" + std::to_string(surface.size()) + " points)");
+      throw core::Error(std::string("\"") + name + "\" holds an index outside \"surface\" (" + std::to_string(surface.size()) + " points)");
     pts.push_back(surface[e.get<std::size_t>()]);
   }
   return pts;
 }
 
-std::vector<ModelPoint> positionPoints(const json &a, float hue, const char *name)
+std::vector<core::ModelPoint> positionPoints(const json &a, float hue, const char *name)
 {
   if (!a.is_array())
-    throw Error(std::string("\"") + name + "\" must be an array of [x_mm, y_mm, z_mm]");
-  std::vector<ModelPoint> pts;
+    throw core::Error(std::string("\"") + name + "\" must be an array of [x_mm, y_mm, z_mm]");
+  std::vector<core::ModelPoint> pts;
   pts.reserve(a.size());
   for (const json &e : a) {
     if (!e.is_array() || e.size() != 3)
-      throw Error(std::string("every point of \"") + name + "\" must be [x_mm, y_mm, z_mm]");
-    ModelPoint p;
+      throw core::Error(std::string("every point of \"") + name + "\" must be [x_mm, y_mm, z_mm]");
+    core::ModelPoint p;
     p.x = e[0].get<float>();
     p.y = e[1].get<float>();
     p.z = e[2].get<float>();
@@ -187,7 +187,7 @@ std::vector<ModelPoint> positionPoints(const json &a, float hue, const char *nam
 
 } // namespace
 
-std::string photoModelToJson(const PhotoModel &m)
+std::string photoModelToJson(const core::PhotoModel &m)
 {
   const bool depth = m.hasDepth();
   const bool v5 = m.views.size() >= kViewpointViews && m.hasContours() && m.hasColours;
@@ -211,7 +211,7 @@ std::string photoModelToJson(const PhotoModel &m)
   } else if (!m.views.empty()) {
     j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
     json views = json::array();
-    for (const ModelView &v : m.views)
+    for (const core::ModelView &v : m.views)
       views.push_back({{"camera_mm", {v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]}},
                        {"s_in", pointsToJson(v.inner, true)},
                        {"s_out", pointsToJson(v.outer, true)}});
@@ -220,14 +220,14 @@ std::string photoModelToJson(const PhotoModel &m)
   return j.dump() + "\n";
 }
 
-void savePhotoModel(const PhotoModel &m, const std::string &path) { writeTextFile(path, photoModelToJson(m)); }
+void savePhotoModel(const core::PhotoModel &m, const std::string &path) { writeTextFile(path, photoModelToJson(m)); }
 
-PhotoModel loadPhotoModel(const std::string &path)
+core::PhotoModel loadPhotoModel(const std::string &path)
 {
   std::ifstream f(path);
   if (!f)
-    throw Error("photo-model file '" + path + "' does not exist or cannot be read");
-  PhotoModel m;
+    throw core::Error("photo-model file '" + path + "' does not exist or cannot be read");
+  core::PhotoModel m;
   try {
     const json j = json::parse(f);
     const int version = detail::checkFormat(j, kFormat, 5);
@@ -241,26 +241,26 @@ PhotoModel loadPhotoModel(const std::string &path)
     m.photoHeight = c.at("height").get<unsigned>();
     const auto cen = j.at("centroid_px").get<std::vector<double>>();
     if (cen.size() != 2)
-      throw Error("\"centroid_px\" must be [u, v]");
+      throw core::Error("\"centroid_px\" must be [u, v]");
     m.centroidU = cen[0];
     m.centroidV = cen[1];
     m.backgroundHue = j.at("background_hue_deg").get<float>();
     m.targetHue = j.value("target_hue_deg", 0.f);
-    std::vector<ModelPoint> surface;
+    std::vector<core::ModelPoint> surface;
     if (version >= 4) {
       const json &s = j.at("surface");
       const char *shape = version == 4 ? "[x_mm, y_mm, z_mm, hue_deg]" : "[x_mm, y_mm, z_mm, hue_deg, r, g, b]";
       if (!s.is_array() || s.empty())
-        throw Error(std::string("\"surface\" must be a non-empty array of ") + shape);
+        throw core::Error(std::string("\"surface\" must be a non-empty array of ") + shape);
       for (const json &e : s) {
         if (!e.is_array() || e.size() != (version == 4 ? 4u : 7u))
-          throw Error(std::string("every point of \"surface\" must be ") + shape);
-        ModelPoint p;
+          throw core::Error(std::string("every point of \"surface\" must be ") + shape);
+        core::ModelPoint p;
         p.x = e[0].get<float>(), p.y = e[1].get<float>(), p.z = e[2].get<float>(), p.hue = e[3].get<float>();
         if (version >= 5) {
           for (std::size_t k = 4; k < 7; ++k)
             if (!e[k].is_number_unsigned() || e[k].get<unsigned>() > 255)
-              throw Error("a surface point's colour must be three integers in [0, 255]");
+              throw core::Error("a surface point's colour must be three integers in [0, 255]");
           p.r = static_cast<unsigned char>(e[4].get<unsigned>());
           p.g = static_cast<unsigned char>(e[5].get<unsigned>());
           p.b = static_cast<unsigned char>(e[6].get<unsigned>());
@@ -277,7 +277,7 @@ PhotoModel loadPhotoModel(const std::string &path)
       const auto o = j.at("origin_in_hand_mm").get<std::vector<double>>();
       const auto r = j.at("depth_range_mm").get<std::vector<double>>();
       if (o.size() != 3 || r.size() != 2)
-        throw Error("\"origin_in_hand_mm\" must be [x, y, z] and \"depth_range_mm\" [near, far]");
+        throw core::Error("\"origin_in_hand_mm\" must be [x, y, z] and \"depth_range_mm\" [near, far]");
       for (int i = 0; i < 3; ++i)
         m.originInHandMm[i] = o[static_cast<std::size_t>(i)];
       m.depthRangeMm[0] = r[0];
@@ -288,16 +288,16 @@ PhotoModel loadPhotoModel(const std::string &path)
       auto camera = [](const json &entry, double out[3]) {
         const auto v = entry.get<std::vector<double>>();
         if (v.size() != 3)
-          throw Error("\"camera_mm\" must be [x, y, z]");
+          throw core::Error("\"camera_mm\" must be [x, y, z]");
         for (int i = 0; i < 3; ++i)
           out[i] = v[static_cast<std::size_t>(i)];
       };
       camera(j.at("camera_mm"), m.cameraMm);
       const json &views = j.at("views");
       if (!views.is_array() || views.empty())
-        throw Error("\"views\" must be a non-empty array of {camera_mm, s_in, s_out}");
+        throw core::Error("\"views\" must be a non-empty array of {camera_mm, s_in, s_out}");
       for (const json &v : views) {
-        ModelView mv;
+        core::ModelView mv;
         camera(v.at("camera_mm"), mv.cameraMm);
         if (version >= 4) {
           mv.inner = indexedPoints(v.at("s_in"), surface, "s_in");
@@ -316,17 +316,17 @@ PhotoModel loadPhotoModel(const std::string &path)
       m.contour = contourFromJson(j.at("contour"));
       if (j.contains("colour_histograms")) {
         const json &h = j.at("colour_histograms");
-        if (h.at("bins_per_channel").get<int>() != PhotoModel::kColourBins)
-          throw Error("\"colour_histograms\" must have " + std::to_string(PhotoModel::kColourBins) + " bins per channel");
-        const std::size_t bins = static_cast<std::size_t>(PhotoModel::kColourBins) * PhotoModel::kColourBins * PhotoModel::kColourBins;
+        if (h.at("bins_per_channel").get<int>() != core::PhotoModel::kColourBins)
+          throw core::Error("\"colour_histograms\" must have " + std::to_string(core::PhotoModel::kColourBins) + " bins per channel");
+        const std::size_t bins = static_cast<std::size_t>(core::PhotoModel::kColourBins) * core::PhotoModel::kColourBins * core::PhotoModel::kColourBins;
         m.foregroundHistogram = histogramFromJson(h.at("foreground"), bins, "foreground");
         m.backgroundHistogram = histogramFromJson(h.at("background"), bins, "background");
       }
     }
-  } catch (const Error &e) {
-    throw Error("photo-model file '" + path + "' is corrupt: " + e.what());
+  } catch (const core::Error &e) {
+    throw core::Error("photo-model file '" + path + "' is corrupt: " + e.what());
   } catch (const json::exception &e) {
-    throw Error("photo-model file '" + path + "' is corrupt: " + e.what());
+    throw core::Error("photo-model file '" + path + "' is corrupt: " + e.what());
   }
   m.validate("'" + path + "'");
   return m;

@@ -19,34 +19,34 @@ vpHomogeneousMatrix parsePoseYaml(const std::string &text, const std::string &so
   try {
     const YAML::Node root = YAML::Load(text);
     if (!root.IsMap())
-      throw Error(what + "is not a vpPoseVector in YAML (rows: 6, cols: 1, data: 6 values)");
+      throw core::Error(what + "is not a vpPoseVector in YAML (rows: 6, cols: 1, data: 6 values)");
     if (!root["rows"] || !root["cols"] || !root["data"])
-      throw Error(what + "lacks rows, cols or data: not a vpPoseVector in YAML");
+      throw core::Error(what + "lacks rows, cols or data: not a vpPoseVector in YAML");
     const long rows = root["rows"].as<long>(), cols = root["cols"].as<long>();
     if (rows != 6 || cols != 1)
-      throw Error(what + "holds a " + std::to_string(rows) + "x" + std::to_string(cols) +
+      throw core::Error(what + "holds a " + std::to_string(rows) + "x" + std::to_string(cols) +
                   " array: a vpPoseVector is 6x1 (x, y, z in metres, theta-u in radians)");
     const YAML::Node data = root["data"];
     if (!data.IsSequence() || data.size() != 6)
-      throw Error(what + "must list 6 values under data");
+      throw core::Error(what + "must list 6 values under data");
     for (std::size_t i = 0; i < 6; ++i) {
       const YAML::Node row = data[i];
       const YAML::Node x = row.IsSequence() ? (row.size() == 1 ? row[0] : YAML::Node()) : row;
       if (!x.IsDefined() || !x.IsScalar())
-        throw Error(what + "row " + std::to_string(i) + " of data is not one number");
+        throw core::Error(what + "row " + std::to_string(i) + " of data is not one number");
       v[i] = x.as<double>();
     }
   } catch (const YAML::Exception &e) {
-    throw Error(what + "is not valid YAML: " + e.what());
+    throw core::Error(what + "is not valid YAML: " + e.what());
   }
   for (int i = 0; i < 6; ++i)
     if (!std::isfinite(v[i]))
-      throw Error(what + "holds a value that is not finite");
+      throw core::Error(what + "holds a value that is not finite");
   for (int i = 0; i < 3; ++i)
     if (std::fabs(v[i]) > 100)
-      throw Error(what + "puts the hand " + std::to_string(v[i]) + " m away: the translation is in metres");
+      throw core::Error(what + "puts the hand " + std::to_string(v[i]) + " m away: the translation is in metres");
   if (std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]) > 2 * M_PI + 1e-6)
-    throw Error(what + "holds a theta-u rotation over 2 pi: the rotation is in radians");
+    throw core::Error(what + "holds a theta-u rotation over 2 pi: the rotation is in radians");
   return vpHomogeneousMatrix(vpPoseVector(v[0], v[1], v[2], v[3], v[4], v[5]));
 }
 
@@ -54,11 +54,11 @@ vpHomogeneousMatrix readPoseYaml(const std::string &path)
 {
   std::ifstream f(path, std::ios::binary);
   if (!f)
-    throw Error("the pose file '" + path + "' does not exist or cannot be read");
+    throw core::Error("the pose file '" + path + "' does not exist or cannot be read");
   std::ostringstream ss;
   ss << f.rdbuf();
   if (ss.str().size() > (1u << 20))
-    throw Error("the pose file '" + path + "' is over 1 MB: not a vpPoseVector");
+    throw core::Error("the pose file '" + path + "' is over 1 MB: not a vpPoseVector");
   return parsePoseYaml(ss.str(), path);
 }
 

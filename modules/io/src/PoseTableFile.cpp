@@ -8,13 +8,13 @@
 
 namespace pm::io {
 
-std::vector<std::pair<int, Phi>> readPoseTable(const std::string &path, const std::string &key)
+std::vector<std::pair<int, core::Phi>> readPoseTable(const std::string &path, const std::string &key)
 {
   std::ifstream f(path);
   if (!f)
-    throw Error("pose table '" + path + "' does not exist or cannot be read");
+    throw core::Error("pose table '" + path + "' does not exist or cannot be read");
   const std::string header = key + ",x,y,z,e1,e2,e3";
-  std::vector<std::pair<int, Phi>> rows;
+  std::vector<std::pair<int, core::Phi>> rows;
   std::string line;
   int lineNo = 0;
   bool haveHeader = false;
@@ -27,7 +27,7 @@ std::vector<std::pair<int, Phi>> readPoseTable(const std::string &path, const st
     const std::string where = "pose table '" + path + "', line " + std::to_string(lineNo) + ": ";
     if (!haveHeader) {
       if (line.rfind(header, 0) != 0)
-        throw Error(where + "the header must be " + header);
+        throw core::Error(where + "the header must be " + header);
       haveHeader = true;
       continue;
     }
@@ -41,26 +41,26 @@ std::vector<std::pair<int, Phi>> readPoseTable(const std::string &path, const st
         if (cell.find_first_not_of(" \t", used) != std::string::npos)
           throw std::invalid_argument(cell);
       } catch (const std::exception &) {
-        throw Error(where + "'" + cell + "' is not a number");
+        throw core::Error(where + "'" + cell + "' is not a number");
       }
     }
     if (c.size() != 7)
-      throw Error(where + "7 values expected (" + header + ")");
+      throw core::Error(where + "7 values expected (" + header + ")");
     if (!(std::fabs(c[0]) < 1e9) || c[0] != std::floor(c[0]))
-      throw Error(where + "the " + key + " must be a whole number");
-    const Phi p{c[1], c[2], c[3], c[4], c[5], c[6]};
+      throw core::Error(where + "the " + key + " must be a whole number");
+    const core::Phi p{c[1], c[2], c[3], c[4], c[5], c[6]};
     if (!p.isValid())
-      throw Error(where + "invalid pose " + p.toString() + " (|eps| > 1?)");
+      throw core::Error(where + "invalid pose " + p.toString() + " (|eps| > 1?)");
     rows.emplace_back(static_cast<int>(c[0]), p);
   }
   if (rows.empty())
-    throw Error("pose table '" + path + "' has no row");
+    throw core::Error("pose table '" + path + "' has no row");
   return rows;
 }
 
-std::vector<Phi> readWaypoints(const std::string &path, int maxSteps)
+std::vector<core::Phi> readWaypoints(const std::string &path, int maxSteps)
 {
-  std::vector<Phi> w;
+  std::vector<core::Phi> w;
   for (const auto &row : readPoseTable(path, "step"))
     w.push_back(row.second);
   if (maxSteps > 0 && maxSteps < static_cast<int>(w.size()))

@@ -27,7 +27,7 @@ vpHomogeneousMatrix poseFromJson(const json &j)
   const auto t = j.at("translation_mm").get<std::vector<double>>();
   const auto r = j.at("thetau_deg").get<std::vector<double>>();
   if (t.size() != 3 || r.size() != 3)
-    throw Error("hMc needs translation_mm and thetau_deg of 3 numbers each");
+    throw core::Error("hMc needs translation_mm and thetau_deg of 3 numbers each");
   const double d2r = M_PI / 180.0;
   return vpHomogeneousMatrix(t[0] * 1e-3, t[1] * 1e-3, t[2] * 1e-3, r[0] * d2r, r[1] * d2r, r[2] * d2r);
 }
@@ -43,7 +43,7 @@ json poseToJson(const vpHomogeneousMatrix &M)
 
 } // namespace
 
-vpCameraParameters vispDistortionModel(const RigCamera &camera)
+vpCameraParameters vispDistortionModel(const core::RigCamera &camera)
 {
   const vpCameraParameters &cam = camera.cam;
   vpCameraParameters out;
@@ -80,52 +80,52 @@ vpCameraParameters vispDistortionModel(const RigCamera &camera)
   return out;
 }
 
-StereoRig loadRig(const std::string &path)
+core::StereoRig loadRig(const std::string &path)
 {
   std::ifstream f(path);
   if (!f)
-    throw Error("rig file '" + path + "' does not exist or cannot be read");
-  StereoRig rig;
+    throw core::Error("rig file '" + path + "' does not exist or cannot be read");
+  core::StereoRig rig;
   try {
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat, 2);
     const fs::path dir = fs::path(path).parent_path();
     const fs::path xml = j.contains("intrinsics_xml") ? dir / j.at("intrinsics_xml").get<std::string>() : fs::path();
     if (!xml.empty() && !fs::is_regular_file(xml))
-      throw Error("the intrinsics file '" + xml.string() + "' does not exist");
+      throw core::Error("the intrinsics file '" + xml.string() + "' does not exist");
     const json &cams = j.at("cameras");
     if (!cams.is_array() || cams.size() != 2)
-      throw Error("\"cameras\" must list exactly two cameras, left then right");
-    RigCamera *dst[2] = {&rig.left, &rig.right};
+      throw core::Error("\"cameras\" must list exactly two cameras, left then right");
+    core::RigCamera *dst[2] = {&rig.left, &rig.right};
     for (std::size_t i = 0; i < 2; ++i) {
-      RigCamera &c = *dst[i];
+      core::RigCamera &c = *dst[i];
       c.name = cams[i].at("name").get<std::string>();
       const int w = cams[i].at("image_width").get<int>(), h = cams[i].at("image_height").get<int>();
       if (w <= 0 || h <= 0)
-        throw Error("camera '" + c.name + "': image size must be positive");
+        throw core::Error("camera '" + c.name + "': image size must be positive");
       c.width = static_cast<unsigned>(w);
       c.height = static_cast<unsigned>(h);
       c.hMc = poseFromJson(cams[i].at("hMc"));
       // The camera's own intrinsics file (any format readCameraFile knows), else the rig's ViSP XML.
       const fs::path file = cams[i].contains("intrinsics") ? dir / cams[i].at("intrinsics").get<std::string>() : xml;
       if (file.empty())
-        throw Error("camera '" + c.name + "' has no \"intrinsics\" file and the rig no \"intrinsics_xml\"");
+        throw core::Error("camera '" + c.name + "' has no \"intrinsics\" file and the rig no \"intrinsics_xml\"");
       const CameraIntrinsics in = readCameraFile(file.string(), c.name, c.width, c.height);
       c.cam = in.cam;
       c.distortion = in.distortion;
     }
     rig.validate();
-  } catch (const Error &e) {
-    throw Error("rig file '" + path + "': " + e.what());
+  } catch (const core::Error &e) {
+    throw core::Error("rig file '" + path + "': " + e.what());
   } catch (const json::exception &e) {
-    throw Error("rig file '" + path + "' is not a valid rig: " + e.what());
+    throw core::Error("rig file '" + path + "' is not a valid rig: " + e.what());
   } catch (const vpException &e) {
-    throw Error("rig file '" + path + "': cannot read its intrinsics: " + e.getStringMessage());
+    throw core::Error("rig file '" + path + "': cannot read its intrinsics: " + e.getStringMessage());
   }
   return rig;
 }
 
-void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
+void saveRig(const core::StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
              const std::string &description)
 {
   rig.validate();
@@ -142,7 +142,7 @@ void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::st
     for (const auto &w : written)
       fs::remove(w.first, ec);
   };
-  for (const RigCamera *c : {&rig.left, &rig.right}) {
+  for (const core::RigCamera *c : {&rig.left, &rig.right}) {
     json cj{{"name", c->name}, {"image_width", c->width}, {"image_height", c->height}, {"hMc", poseToJson(c->hMc)}};
     try {
       // ViSP's XML: the pinhole model, or ViSP's one-coefficient model of the lens (exact when
@@ -157,7 +157,7 @@ void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::st
         cj["intrinsics"] = name;
         exactFiles = true;
       }
-    } catch (const Error &) {
+    } catch (const core::Error &) {
       cleanUp();
       throw;
     }
@@ -169,11 +169,11 @@ void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::st
   for (const auto &w : written) {
     fs::rename(w.first, w.second, ec);
     if (ec)
-      throw Error("cannot write the intrinsics file '" + w.second.string() + "': " + ec.message());
+      throw core::Error("cannot write the intrinsics file '" + w.second.string() + "': " + ec.message());
   }
   fs::rename(xmlTmp, xml, ec);
   if (ec)
-    throw Error("cannot write the intrinsics file '" + xml.string() + "': " + ec.message());
+    throw core::Error("cannot write the intrinsics file '" + xml.string() + "': " + ec.message());
   writeTextFile(rigJsonPath, j.dump(2) + "\n");
 }
 

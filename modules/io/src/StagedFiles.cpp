@@ -18,7 +18,7 @@ StagedFiles::StagedFiles(const std::string &dir) : m_dir(dir)
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw Error("cannot create the output folder '" + dir + "': " + (ec ? ec.message() : "not a folder"));
+    throw core::Error("cannot create the output folder '" + dir + "': " + (ec ? ec.message() : "not a folder"));
 }
 
 StagedFiles::~StagedFiles()
@@ -44,13 +44,13 @@ void StagedFiles::commit()
   for (const auto &n : m_names) {
     std::error_code ec;
     if (!fs::is_regular_file(fs::path(m_dir) / tempName(n), ec))
-      throw Error("cannot write '" + finalPath(n) + "': it was never written");
+      throw core::Error("cannot write '" + finalPath(n) + "': it was never written");
   }
   for (const auto &n : m_names) {
     std::error_code ec;
     fs::rename(fs::path(m_dir) / tempName(n), fs::path(m_dir) / n, ec);
     if (ec)
-      throw Error("cannot write '" + finalPath(n) + "': " + ec.message());
+      throw core::Error("cannot write '" + finalPath(n) + "': " + ec.message());
   }
   m_committed = true;
 }
@@ -66,14 +66,14 @@ void writeTextFile(const std::string &path, const std::string &text)
     if (!f) {
       std::error_code ec;
       fs::remove(tmp, ec);
-      throw Error("cannot write '" + path + "' (is the folder writable, is the disk full?)");
+      throw core::Error("cannot write '" + path + "' (is the folder writable, is the disk full?)");
     }
   }
   std::error_code ec;
   fs::rename(tmp, p, ec);
   if (ec) {
     fs::remove(tmp, ec);
-    throw Error("cannot write '" + path + "': " + ec.message());
+    throw core::Error("cannot write '" + path + "': " + ec.message());
   }
 }
 

@@ -30,12 +30,12 @@ std::string viewFileName(const std::string &stem, std::size_t k)
   return stem + b + (stem == "pose_fPh" ? ".yaml" : ".png");
 }
 
-std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &rig, std::size_t minViews, bool backgrounds)
+std::vector<model::PassView> loadViewsFolder(const std::string &dir, const core::StereoRig &rig, std::size_t minViews, bool backgrounds)
 {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw Error("the views folder '" + dir + "' does not exist");
-  std::vector<PassView> views;
+    throw core::Error("the views folder '" + dir + "' does not exist");
+  std::vector<model::PassView> views;
   // Room for every view first: a view without backgrounds must not be copied by a reallocation
   // (ViSP 3.5 copies an empty vpImage with memcpy(nullptr)).
   std::size_t count = 0;
@@ -60,21 +60,21 @@ std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &r
       break;
     const std::string name = viewName(k);
     if (!all)
-      throw Error(name + " of '" + dir + "' lacks " + missing + " (each view needs " + viewFileName("left", k) + ", " +
+      throw core::Error(name + " of '" + dir + "' lacks " + missing + " (each view needs " + viewFileName("left", k) + ", " +
                   viewFileName("right", k) + ", " +
                   (backgrounds ? viewFileName("background_left", k) + ", " + viewFileName("background_right", k) + " " : std::string()) +
                   "and " + viewFileName("pose_fPh", k) + ")");
-    PassView v;
+    model::PassView v;
     v.name = name;
-    auto image = [&](const char *stem, const RigCamera &cam, vpImage<vpRGBa> &out) {
+    auto image = [&](const char *stem, const core::RigCamera &cam, vpImage<vpRGBa> &out) {
       const std::string path = (fs::path(dir) / viewFileName(stem, k)).string();
       try {
         out = readColorImage(path);
-      } catch (const Error &e) {
-        throw Error(name + ": " + e.what());
+      } catch (const core::Error &e) {
+        throw core::Error(name + ": " + e.what());
       }
       if (out.getWidth() != cam.width || out.getHeight() != cam.height)
-        throw Error(name + ": " + viewFileName(stem, k) + " is " + std::to_string(out.getWidth()) + "x" +
+        throw core::Error(name + ": " + viewFileName(stem, k) + " is " + std::to_string(out.getWidth()) + "x" +
                     std::to_string(out.getHeight()) + " but the rig's camera is " + std::to_string(cam.width) + "x" +
                     std::to_string(cam.height));
     };
@@ -86,25 +86,25 @@ std::vector<PassView> loadViewsFolder(const std::string &dir, const StereoRig &r
     }
     try {
       v.fMh = readPoseYaml((fs::path(dir) / viewFileName("pose_fPh", k)).string());
-    } catch (const Error &e) {
-      throw Error(name + ": " + e.what());
+    } catch (const core::Error &e) {
+      throw core::Error(name + ": " + e.what());
     }
     views.push_back(std::move(v));
   }
   if (views.empty())
-    throw Error("the views folder '" + dir + "' holds no view (" + viewFileName("left", 0) + ", " +
+    throw core::Error("the views folder '" + dir + "' holds no view (" + viewFileName("left", 0) + ", " +
                 viewFileName("right", 0) + ", ... expected)");
   if (views.size() < minViews)
-    throw Error("the views folder '" + dir + "' holds " + std::to_string(views.size()) + " views; at least " +
+    throw core::Error("the views folder '" + dir + "' holds " + std::to_string(views.size()) + " views; at least " +
                 std::to_string(minViews) + " are needed");
   return views;
 }
 
-void saveViewsFolder(const std::vector<PassView> &views, const std::string &dir)
+void saveViewsFolder(const std::vector<model::PassView> &views, const std::string &dir)
 {
   StagedFiles out(dir);
   for (std::size_t k = 0; k < views.size(); ++k) {
-    const PassView &v = views[k];
+    const model::PassView &v = views[k];
     writeImage(v.left, out.stage(viewFileName("left", k)));
     writeImage(v.right, out.stage(viewFileName("right", k)));
     if (v.backgroundLeft.getSize() > 0) // a pass against a plain backdrop has none

@@ -17,7 +17,7 @@ void quiet(void *, const char *, ...) {}
 void requireWellFormedXml(const std::string &text)
 {
   if (text.size() > static_cast<std::size_t>(INT_MAX))
-    throw Error("it is too long to be an XML file");
+    throw core::Error("it is too long to be an XML file");
   xmlSetGenericErrorFunc(nullptr, quiet);
   xmlResetLastError();
   xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()), "noname.xml", nullptr,
@@ -30,7 +30,7 @@ void requireWellFormedXml(const std::string &text)
   std::string what = e && e->message ? e->message : "unknown error";
   while (!what.empty() && (what.back() == '\n' || what.back() == ' '))
     what.pop_back();
-  throw Error("it is not well-formed XML (line " + std::to_string(e ? e->line : 0) + ": " + what + ")");
+  throw core::Error("it is not well-formed XML (line " + std::to_string(e ? e->line : 0) + ": " + what + ")");
 }
 
 } // namespace pm::io

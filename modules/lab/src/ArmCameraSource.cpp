@@ -7,18 +7,18 @@
 
 namespace pm::lab {
 
-ArmCameraSource::ArmCameraSource(const sim::Scene &scene, const StereoRig &rig, robot::Arm &arm, const vpHomogeneousMatrix &fMo,
+ArmCameraSource::ArmCameraSource(const sim::Scene &scene, const core::StereoRig &rig, robot::Arm &arm, const vpHomogeneousMatrix &fMo,
                                  double fps, long maxPairs)
     : ArmCameraSource(scene, rig, arm, [fMo](double) { return fMo; }, fps, maxPairs)
 {
 }
 
-ArmCameraSource::ArmCameraSource(const sim::Scene &scene, const StereoRig &rig, robot::Arm &arm,
+ArmCameraSource::ArmCameraSource(const sim::Scene &scene, const core::StereoRig &rig, robot::Arm &arm,
                                  std::function<vpHomogeneousMatrix(double)> fMoAt, double fps, long maxPairs)
     : m_scene(scene), m_rig(rig), m_arm(arm), m_fMoAt(std::move(fMoAt)), m_fps(fps), m_maxPairs(maxPairs)
 {
   if (!(fps > 0) || maxPairs < 0)
-    throw Error("the lab's cameras: the frame rate must be positive and the number of pairs not negative");
+    throw core::Error("the lab's cameras: the frame rate must be positive and the number of pairs not negative");
 }
 
 bool ArmCameraSource::next(capture::StereoFrame &f)

@@ -20,19 +20,19 @@ std::unique_ptr<robot::Arm> makeArm(const LoopParams &lp)
 }
 } // namespace
 
-ClosedLoop::ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
-                       const TrackerParams &tp, const ServoParams &sp, const LoopParams &lp,
+ClosedLoop::ClosedLoop(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
+                       const tracker::TrackerParams &tp, const servo::ServoParams &sp, const LoopParams &lp,
                        const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &)> &makeTc,
                        std::unique_ptr<robot::Arm> arm)
     : m_rig(rig), m_scene(scene), m_oMm(model.oMm), m_hdMo(sp.hdMo), m_lp(lp), m_tracker(rig, model.build.model, tp),
       m_arm(arm ? std::move(arm) : makeArm(lp)), m_guard(sp, lp, m_tracker, m_arm->model())
 {
   if (!(lp.fps > 0 && lp.robotDt > 0 && lp.robotDt <= 1.0 / lp.fps))
-    throw Error("closed loop: the frame rate must be positive and the robot step at most a frame");
+    throw core::Error("closed loop: the frame rate must be positive and the robot step at most a frame");
   // The target starts at the desired pose in front of the hand.
   m_tc = makeTc(m_arm->fMh());
   if (!m_tc)
-    throw Error("closed loop: no TC-robot");
+    throw core::Error("closed loop: no TC-robot");
   m_tracker.initialize(); // no initial pose
 }
 
@@ -76,11 +76,11 @@ LoopFrame ClosedLoop::step()
   const vpHomogeneousMatrix e = m_hdMo.inverse() * f.hMmTrue;
   f.translationErrorMm = e.getTranslationVector().frobeniusNorm() * 1e3;
   f.rotationErrorDeg = e.getThetaUVector().getTheta() * 180 / M_PI;
-  const Phi truth = fromHomogeneousMatrix(f.hMmTrue), used = fromHomogeneousMatrix(f.hMmUsed);
-  f.estimateErrorMm = translationDistanceMm(f.track.phi, truth);
-  f.estimateErrorDeg = rotationDistanceDeg(f.track.phi, truth);
-  f.usedErrorMm = translationDistanceMm(used, truth);
-  f.usedErrorDeg = rotationDistanceDeg(used, truth);
+  const core::Phi truth = core::fromHomogeneousMatrix(f.hMmTrue), used = core::fromHomogeneousMatrix(f.hMmUsed);
+  f.estimateErrorMm = core::translationDistanceMm(f.track.phi, truth);
+  f.estimateErrorDeg = core::rotationDistanceDeg(f.track.phi, truth);
+  f.usedErrorMm = core::translationDistanceMm(used, truth);
+  f.usedErrorDeg = core::rotationDistanceDeg(used, truth);
   ++m_frame;
   return f;
 }

@@ -7,7 +7,7 @@ namespace pm::lab {
 Convergence::Convergence(long windowFrames) : m_window(windowFrames)
 {
   if (windowFrames < 1)
-    throw Error("Convergence: the window must hold at least one frame");
+    throw core::Error("Convergence: the window must hold at least one frame");
 }
 
 bool Convergence::add(long frame, double t, bool within)

@@ -32,18 +32,18 @@ std::pair<double, double> sinusoidFit(const std::vector<double> &t, const std::v
   return {std::hypot(x[0], x[1]), std::atan2(x[1], x[0])};
 }
 
-std::vector<BodePoint> frequencyResponse(const StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
-                                         const TrackerParams &tp, const ServoParams &servo, const LoopParams &lp,
+std::vector<BodePoint> frequencyResponse(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
+                                         const tracker::TrackerParams &tp, const servo::ServoParams &servo, const LoopParams &lp,
                                          const SweepParams &sweep, const std::function<void()> &onFrequency)
 {
   if (sweep.axis < 0 || sweep.axis > 5 || !(sweep.maxVelocity > 0) || !(sweep.maxAcceleration > 0) || !(sweep.amplitude > 0))
-    throw Error("frequency response: the axis must be 0..5 and the amplitude and the TC-robot's limits positive");
-  const Phi phi0{0, 0, 500, 0, 0, 0};
+    throw core::Error("frequency response: the axis must be 0..5 and the amplitude and the TC-robot's limits positive");
+  const core::Phi phi0{0, 0, 500, 0, 0, 0};
   const std::size_t ax = static_cast<std::size_t>(sweep.axis);
   std::vector<BodePoint> points;
   for (double f : sweep.frequenciesHz) {
     if (!(f > 0))
-      throw Error("frequency response: the frequencies must be positive");
+      throw core::Error("frequency response: the frequencies must be positive");
     const double seconds = 1.0 / f + 3.0 / f; // the fade-in period, then three periods
     // The amplitude, reduced where the TC-robot's velocity or acceleration limit requires it.
     const double w = 2 * M_PI * f;
@@ -59,7 +59,7 @@ std::vector<BodePoint> frequencyResponse(const StereoRig &rig, const sim::Scene 
       const LoopFrame fr = loop.step();
       if (fr.t < 1.0 / f)
         continue;
-      const Phi rel = fromHomogeneousMatrix(fr.hMmTrue);
+      const core::Phi rel = core::fromHomogeneousMatrix(fr.hMmTrue);
       const double targetMotion = amp * std::sin(2 * M_PI * f * fr.t);
       t.push_back(fr.t);
       yt.push_back(targetMotion);

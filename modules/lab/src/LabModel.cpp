@@ -6,16 +6,16 @@
 
 namespace pm::lab {
 
-sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c)
+sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::StereoRig &rig, const LabModelChoice &c)
 {
   if (!c.flat && !c.stereo) {
-    PassPlan plan;
+    model::PassPlan plan;
     plan.views = c.passViews;
     plan.ringsDeg = c.passRingsDeg;
     return makeSimulatedAllAroundModel(scene, rig, plan, c.arm, c.distanceMm, c.allAroundParams);
   }
   if (c.stereo) {
-    StereoModelParams sp;
+    model::StereoModelParams sp;
     sp.photo = c.photo;
     sp.rightView = c.rightView;
     return sim::makeSimulatedStereoPhotoModel(scene, rig, c.distanceMm, sp, c.viewTurnDeg);

@@ -7,12 +7,12 @@
 
 namespace pm::lab {
 
-LabPass runLabPass(const sim::Scene &inScene, const StereoRig &rig, const PassPlan &inPlan, robot::Arm &arm,
+LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const model::PassPlan &inPlan, robot::Arm &arm,
                    const vpHomogeneousMatrix &h0Mo, bool backgrounds)
 {
   sim::Scene scene = inScene;
   scene.params().distractor = false; // the target alone, as a user would make the pass
-  PassPlan plan = inPlan;
+  model::PassPlan plan = inPlan;
   plan.distanceMm = 1e3 * h0Mo[2][3];
   LabPass out;
   const vpColVector q0 = arm.q();
@@ -28,7 +28,7 @@ LabPass runLabPass(const sim::Scene &inScene, const StereoRig &rig, const PassPl
     out.directions.push_back(pv.direction);
     arm.moveTo(pv.q);
     const vpColVector q = arm.q();
-    PassView v;
+    model::PassView v;
     v.name = pv.name;
     v.fMh = arm.fMh(q); // where the arm is, as it reports
     const vpHomogeneousMatrix hMo = v.fMh.inverse() * out.fMo;
@@ -45,13 +45,13 @@ LabPass runLabPass(const sim::Scene &inScene, const StereoRig &rig, const PassPl
   return out;
 }
 
-sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const StereoRig &rig, const PassPlan &plan,
-                                                     const std::string &armName, double distanceMm, const AllAroundParams &params,
-                                                     AllAroundBuild *build)
+sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan,
+                                                     const std::string &armName, double distanceMm, const model::AllAroundParams &params,
+                                                     model::AllAroundBuild *build)
 {
   robot::SteppedArm arm(robot::makeArmModel(armName));
   const LabPass pass = runLabPass(scene, rig, plan, arm, vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0), params.backdropHueDeg < 0);
-  AllAroundBuild b = buildAllAroundModel(rig, pass.views, params);
+  model::AllAroundBuild b = model::buildAllAroundModel(rig, pass.views, params);
   sim::SimulatedPhotoModel s;
   s.stereo = true;
   s.oMm = pass.fMo.inverse() * b.fMm;

@@ -7,12 +7,12 @@
 
 namespace pm::lab {
 
-LabSequence::LabSequence(const sim::Scene &scene, const StereoRig &rig, const sim::Trajectory &trajectory,
+LabSequence::LabSequence(const sim::Scene &scene, const core::StereoRig &rig, const sim::Trajectory &trajectory,
                          const vpHomogeneousMatrix &oMm, double fps, long frames)
   : m_scene(scene), m_rig(rig), m_trajectory(trajectory), m_oMm(oMm), m_fps(fps), m_frames(frames)
 {
   if (!(fps > 0) || frames < 1)
-    throw Error("LabSequence: the frame rate must be positive and the sequence hold a frame");
+    throw core::Error("LabSequence: the frame rate must be positive and the sequence hold a frame");
 }
 
 bool LabSequence::next(capture::StereoFrame &f)
@@ -23,7 +23,7 @@ bool LabSequence::next(capture::StereoFrame &f)
   f.index = k;
   f.timeS = static_cast<double>(k) / m_fps;
   f.skewMs = 0;
-  sim::StereoImages im = m_scene.renderStereo(m_rig, toHomogeneousMatrix(m_trajectory.at(f.timeS)), static_cast<std::uint64_t>(k));
+  sim::StereoImages im = m_scene.renderStereo(m_rig, core::toHomogeneousMatrix(m_trajectory.at(f.timeS)), static_cast<std::uint64_t>(k));
   f.left = std::move(im.left);
   f.right = std::move(im.right);
   ++m_stats.pairs;
@@ -37,9 +37,9 @@ std::string LabSequence::describe() const
   return "simulator, target " + m_scene.target().info.code + " (" + m_scene.target().info.name + ")";
 }
 
-Phi LabSequence::truth(long k) const
+core::Phi LabSequence::truth(long k) const
 {
-  return fromHomogeneousMatrix(toHomogeneousMatrix(m_trajectory.at(static_cast<double>(k) / m_fps)) * m_oMm);
+  return core::fromHomogeneousMatrix(core::toHomogeneousMatrix(m_trajectory.at(static_cast<double>(k) / m_fps)) * m_oMm);
 }
 
 bool LabSequence::moving(long k) const { return m_trajectory.moving(static_cast<double>(k) / m_fps); }

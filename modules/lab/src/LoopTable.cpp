@@ -22,7 +22,7 @@ void writeLoopCsvHeader(std::ostream &csv, unsigned dof)
 
 void writeLoopCsvRow(std::ostream &csv, const LoopFrame &f, bool oracle)
 {
-  const Phi a = fromHomogeneousMatrix(f.hMmTrue), b = fromHomogeneousMatrix(f.hMmUsed);
+  const core::Phi a = core::fromHomogeneousMatrix(f.hMmTrue), b = core::fromHomogeneousMatrix(f.hMmUsed);
   csv << f.t << "," << (f.moving ? 1 : 0);
   for (std::size_t i = 0; i < 6; ++i)
     csv << "," << a[i];

@@ -9,22 +9,22 @@
 
 namespace pm::lab {
 
-report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const RigCamera &camera,
-                                         double distanceMm, const PhotoModelParams &params,
+report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const core::RigCamera &camera,
+                                         double distanceMm, const model::PhotoModelParams &params,
                                          const std::string &backgroundName, const std::string &photoName)
 {
   if (background.getWidth() != photo.getWidth() || background.getHeight() != photo.getHeight())
-    throw Error("the background photo '" + backgroundName + "' is " + std::to_string(background.getWidth()) + "x" +
+    throw core::Error("the background photo '" + backgroundName + "' is " + std::to_string(background.getWidth()) + "x" +
                 std::to_string(background.getHeight()) + " but the target photo '" + photoName + "' is " +
                 std::to_string(photo.getWidth()) + "x" + std::to_string(photo.getHeight()) +
                 "; take both with the same camera at the same size");
   if (!camera.distortion.isNone()) { // the lens corrected first: the model is the ideal camera's
-    const UndistortMap map(camera);
+    const core::UndistortMap map(camera);
     background = map.undistorted(background);
     photo = map.undistorted(photo);
   }
   report::ModelOutputs o;
-  o.build = buildPhotoModel(background, photo, camera.cam, distanceMm, params);
+  o.build = model::buildPhotoModel(background, photo, camera.cam, distanceMm, params);
   o.source = "photos " + backgroundName + " + " + photoName;
   o.photo = std::move(photo);
   o.background = std::move(background);
@@ -33,10 +33,10 @@ report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpR
   return o;
 }
 
-report::ModelOutputs stereoModelFromPhotos(const StereoRig &rig, const capture::ModelPairs &pairs,
-                                           const StereoModelParams &params, const std::string &source)
+report::ModelOutputs stereoModelFromPhotos(const core::StereoRig &rig, const capture::ModelPairs &pairs,
+                                           const model::StereoModelParams &params, const std::string &source)
 {
-  StereoPhotoModelBuild b = buildStereoPhotoModel(rig, pairs.background.left, pairs.background.right, pairs.photo.left,
+  model::StereoPhotoModelBuild b = model::buildStereoPhotoModel(rig, pairs.background.left, pairs.background.right, pairs.photo.left,
                                                   pairs.photo.right, params);
   report::ModelOutputs o;
   o.source = source;
@@ -47,13 +47,13 @@ report::ModelOutputs stereoModelFromPhotos(const StereoRig &rig, const capture::
   o.backdropMm = b.backdropMm;
   o.background = pairs.background.left;
   // The region and depths are the ideal image's: draw on it.
-  o.photo = rig.left.distortion.isNone() ? pairs.photo.left : UndistortMap(rig.left).undistorted(pairs.photo.left);
+  o.photo = rig.left.distortion.isNone() ? pairs.photo.left : core::UndistortMap(rig.left).undistorted(pairs.photo.left);
   o.stepPx = params.photo.stepPx;
   return o;
 }
 
-report::ModelOutputs simulatedModel(const sim::Scene &scene, const StereoRig &rig, double distanceMm, bool stereo,
-                                    const StereoModelParams &params, double viewTurnDeg, const std::string &source)
+report::ModelOutputs simulatedModel(const sim::Scene &scene, const core::StereoRig &rig, double distanceMm, bool stereo,
+                                    const model::StereoModelParams &params, double viewTurnDeg, const std::string &source)
 {
   sim::SimulatedPhotoModel sm =
       stereo ? sim::makeSimulatedStereoPhotoModel(scene, rig, distanceMm, params, viewTurnDeg)
@@ -62,7 +62,7 @@ report::ModelOutputs simulatedModel(const sim::Scene &scene, const StereoRig &ri
   o.source = stereo ? source + ", stereo" : source;
   o.build = std::move(sm.build);
   o.background = std::move(sm.background);
-  o.photo = stereo && !rig.left.distortion.isNone() ? UndistortMap(rig.left).undistorted(sm.photo) : std::move(sm.photo);
+  o.photo = stereo && !rig.left.distortion.isNone() ? core::UndistortMap(rig.left).undistorted(sm.photo) : std::move(sm.photo);
   o.depth = std::move(sm.depth);
   o.dropped = std::move(sm.dropped);
   o.backdropMm = sm.backdropMm;

@@ -49,7 +49,7 @@ vpImage<vpRGBa> drawTrackingTrajectory(const std::vector<TrackedFrame> &frames, 
 vpImage<vpRGBa> drawTrackingErrors(const std::vector<TrackedFrame> &frames, const TrackingReport &report)
 {
   if (!report.haveTruth)
-    throw Error("drawTrackingErrors: the run has no truth");
+    throw core::Error("drawTrackingErrors: the run has no truth");
   const auto &names = TrackingReport::names();
   const double tConverged = convergedTime(frames, report);
   std::vector<report::Panel> panels;

@@ -35,7 +35,7 @@ RunLog::RunLog(long expectedFrames, double fps, const robot::ArmModel &arm, std:
     m_conv(std::max(1L, std::lround(fps > 0 ? fps : 1.0)))
 {
   if (expectedFrames < 1 || maxSamples < 1 || !(fps > 0))
-    throw Error("RunLog: the run needs at least one frame, one plot sample and a positive frame rate");
+    throw core::Error("RunLog: the run needs at least one frame, one plot sample and a positive frame rate");
   const long ms = static_cast<long>(maxSamples);
   m_bucket = (expectedFrames + ms - 1) / ms;
   m_samples.reserve(2 * maxSamples);
@@ -69,7 +69,7 @@ void RunLog::add(const LoopFrame &f)
   m_servoedOnWrong += f.servoing && f.wrongUsed() ? 1 : 0;
   m_servoedOnWrongRaw += f.servoing && f.wrongEstimate() ? 1 : 0;
   m_precise += f.track.precise ? 1 : 0;
-  if (converged() && f.track.state == TrackState::Tracking)
+  if (converged() && f.track.state == tracker::TrackState::Tracking)
     m_estimate.add(f.estimateErrorMm, f.estimateErrorDeg);
   m_held += f.servoing ? 0 : 1;
   m_servoed += f.servoing ? 1 : 0;
@@ -77,8 +77,8 @@ void RunLog::add(const LoopFrame &f)
   if (m_inBucket == 0) {
     m_open = RunSample{};
     m_open.t = f.t;
-    m_open.truth = fromHomogeneousMatrix(f.hMmTrue);
-    m_open.used = fromHomogeneousMatrix(f.hMmUsed);
+    m_open.truth = core::fromHomogeneousMatrix(f.hMmTrue);
+    m_open.used = core::fromHomogeneousMatrix(f.hMmUsed);
     for (unsigned i = 0; i < 7 && i < f.q.size(); ++i)
       m_open.q[i] = f.q[i];
   }

@@ -28,7 +28,7 @@ RunRecorder::RunRecorder(const std::string &videoPath, double fps, unsigned widt
   // Half size and half rate (15 fps for 30 fps cameras): a minute of servoing in ~30 MB.
   if (!m_video->writer.open(videoPath, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), fps / 2,
                             cv::Size(static_cast<int>(width), static_cast<int>(height / 2))))
-    throw Error("cannot write the video '" + videoPath + "' (OpenCV's MJPG writer failed)");
+    throw core::Error("cannot write the video '" + videoPath + "' (OpenCV's MJPG writer failed)");
 }
 
 RunRecorder::~RunRecorder() = default;
@@ -39,7 +39,7 @@ void RunRecorder::record(long k, const LoopFrame &f, const ClosedLoop &loop, con
   const bool wantVideo = m_video && k % 2 == 0;
   if (!wantVideo && !wantOverlay)
     return;
-  const Phi used = fromHomogeneousMatrix(f.hMmUsed);
+  const core::Phi used = core::fromHomogeneousMatrix(f.hMmUsed);
   std::ostringstream label;
   label << std::fixed << std::setprecision(1) << "t " << f.t << " s  " << (m_oracle ? "oracle" : toString(f.track.state))
         << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg";

@@ -10,23 +10,23 @@
 
 namespace pm::lab {
 
-StereoRig labRigWithLens(const LensDistortion &lens)
+core::StereoRig labRigWithLens(const core::LensDistortion &lens)
 {
   vpCameraParameters cam;
   cam.initPersProjWithoutDistortion(754, 754, 320, 240);
-  StereoRig rig = StereoRig::symmetric(cam, 640, 480, 0.323, StereoRig::toeInFor(0.323, 0.5));
+  core::StereoRig rig = core::StereoRig::symmetric(cam, 640, 480, 0.323, core::StereoRig::toeInFor(0.323, 0.5));
   rig.left.distortion = lens;
   rig.right.distortion = lens;
   rig.validate();
   return rig;
 }
 
-std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::Pattern &board, int n,
+std::vector<calib::StereoImagePair> renderCalibrationPairs(const core::StereoRig &rig, const calib::Pattern &board, int n,
                                                            const SimulatedCalibrationParams &params,
                                                            const std::function<void()> &step)
 {
   if (n < 1)
-    throw Error("simulated calibration: at least one pair");
+    throw core::Error("simulated calibration: at least one pair");
   rig.validate();
   board.validate();
   sim::SceneParams sp;
@@ -43,8 +43,8 @@ std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig,
     // the others off-centre and tilted, so that one camera's corners reach its image's edges, where
     // the lens bends most (its intrinsics).
     const double spread = k % 2 ? 1.0 : 0.3;
-    const Phi p{160 * spread * u(rng), 120 * spread * u(rng), 450 + 60 * u(rng), 0.2 * u(rng), 0.2 * u(rng), 0.3 * u(rng)};
-    const sim::StereoImages im = scene.renderStereo(rig, toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
+    const core::Phi p{160 * spread * u(rng), 120 * spread * u(rng), 450 + 60 * u(rng), 0.2 * u(rng), 0.2 * u(rng), 0.3 * u(rng)};
+    const sim::StereoImages im = scene.renderStereo(rig, core::toHomogeneousMatrix(p), static_cast<std::uint64_t>(k));
     calib::StereoImagePair pair;
     pair.name = "simulated pair " + std::to_string(k);
     pair.left = im.left;

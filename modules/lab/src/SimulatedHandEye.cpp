@@ -28,7 +28,7 @@ vpImage<vpRGBa> defocused(const vpImage<vpRGBa> &I, double px)
   return out;
 }
 
-HandEyeResult simulatedHandEye(const sim::Scene &scene, const StereoRig &truthRig, const StereoRig &rig, const calib::Pattern &pattern,
+HandEyeResult simulatedHandEye(const sim::Scene &scene, const core::StereoRig &truthRig, const core::StereoRig &rig, const calib::Pattern &pattern,
                                int poses, std::uint64_t seed, double blurPx)
 {
   const vpColVector q0 = robot::Pa10Model().restJoints();
@@ -46,7 +46,7 @@ HandEyeResult simulatedHandEye(const sim::Scene &scene, const StereoRig &truthRi
     bool seen = true;
     vpHomogeneousMatrix views[2];
     for (int c = 0; c < 2 && seen; ++c) {
-      const RigCamera &cam = c ? truthRig.right : truthRig.left;
+      const core::RigCamera &cam = c ? truthRig.right : truthRig.left;
       vpImage<vpRGBa> I;
       scene.render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
       I = defocused(I, blurPx);
@@ -54,9 +54,9 @@ HandEyeResult simulatedHandEye(const sim::Scene &scene, const StereoRig &truthRi
         const calib::BoardView view = pattern.find(I, (c ? rig.right : rig.left).cam, (c ? rig.right : rig.left).distortion,
                                                    "hand-eye pose " + std::to_string(m), true);
         if (view.reprojectionRmsPx > 0.5) // a doubtful pose (partly hidden board) would spoil the calibration
-          throw Error("reprojection " + std::to_string(view.reprojectionRmsPx) + " px");
+          throw core::Error("reprojection " + std::to_string(view.reprojectionRmsPx) + " px");
         views[c] = view.cMb;
-      } catch (const Error &) {
+      } catch (const core::Error &) {
         seen = false; // the board left the view at this pose: skip it
       }
     }
@@ -67,7 +67,7 @@ HandEyeResult simulatedHandEye(const sim::Scene &scene, const StereoRig &truthRi
     cMb[1].push_back(views[1]);
   }
   if (fMe.size() < 3)
-    throw Error("hand-eye: the board was seen from only " + std::to_string(fMe.size()) + " poses (3 needed)");
+    throw core::Error("hand-eye: the board was seen from only " + std::to_string(fMe.size()) + " poses (3 needed)");
   HandEyeResult r;
   r.poses = fMe.size();
   for (int c = 0; c < 2; ++c) {
@@ -78,7 +78,7 @@ HandEyeResult simulatedHandEye(const sim::Scene &scene, const StereoRig &truthRi
       status = vpHandEyeCalibration::calibrate(cMb[c], fMe, eMc);
     }
     if (status != 0)
-      throw Error("hand-eye: vpHandEyeCalibration failed (poses too alike?)");
+      throw core::Error("hand-eye: vpHandEyeCalibration failed (poses too alike?)");
     const vpHomogeneousMatrix ref = (c ? rig.right : rig.left).hMc;
     HandEyeCamera &h = c ? r.right : r.left;
     h.hMc = eMc;

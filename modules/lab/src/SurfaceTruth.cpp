@@ -19,7 +19,7 @@ namespace {
 constexpr int kW = 640, kH = 480;
 
 //! cMm of a camera looking at the model's origin from \e C (mm; Pinhole::lookingAtOrigin), metres.
-vpHomogeneousMatrix cMmOf(const hull::Pinhole &pin)
+vpHomogeneousMatrix cMmOf(const model::hull::Pinhole &pin)
 {
   vpHomogeneousMatrix cMm;
   for (unsigned r = 0; r < 3; ++r) {
@@ -40,24 +40,24 @@ void drawToy(sim::Rasterizer &r, const sim::Mesh &toy, const vpHomogeneousMatrix
 
 } // namespace
 
-SurfaceTruth checkSurface(const sim::Scene &scene, const AllAroundBuild &b, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
+SurfaceTruth checkSurface(const sim::Scene &scene, const model::AllAroundBuild &b, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
                           int stride)
 {
   if (b.mesh.triangles.empty())
-    throw Error("surface check: the build has no mesh");
+    throw core::Error("surface check: the build has no mesh");
   SurfaceTruth t;
   t.volumeCm3 = b.surfaceVolumeCm3;
   const sim::Mesh toy = sim::buildTargetMesh(scene.target(), 0.5);
   const vpHomogeneousMatrix mMo = oMm.inverse();
-  const hull::Vec3 rest{b.model.cameraMm[0], b.model.cameraMm[1], b.model.cameraMm[2]};
+  const model::hull::Vec3 rest{b.model.cameraMm[0], b.model.cameraMm[1], b.model.cameraMm[2]};
   sim::Rasterizer r;
   // The surface from the rest direction and turned about the model's x axis.
   for (std::size_t k = 0; k < t.views.size(); ++k) {
     DepthCheck &d = t.views[k];
     d.turnDeg = 20.0 * static_cast<double>(k);
     const double a = d.turnDeg * M_PI / 180;
-    const hull::Vec3 C{rest[0], rest[1] * std::cos(a) - rest[2] * std::sin(a), rest[1] * std::sin(a) + rest[2] * std::cos(a)};
-    const hull::Pinhole pin = hull::Pinhole::lookingAtOrigin(C, cam, kW, kH);
+    const model::hull::Vec3 C{rest[0], rest[1] * std::cos(a) - rest[2] * std::sin(a), rest[1] * std::sin(a) + rest[2] * std::cos(a)};
+    const model::hull::Pinhole pin = model::hull::Pinhole::lookingAtOrigin(C, cam, kW, kH);
     std::vector<float> zb;
     b.mesh.depthMap(pin, zb);
     drawToy(r, toy, cMmOf(pin) * mMo, cam, 2);
@@ -80,19 +80,19 @@ SurfaceTruth checkSurface(const sim::Scene &scene, const AllAroundBuild &b, cons
   }
   // The outlines of every stride-th viewpoint, against the toy's coverage there.
   std::vector<const double *> centres{b.model.cameraMm};
-  std::vector<const std::vector<ContourPoint> *> contours{&b.model.contour};
-  for (const ModelView &v : b.model.views)
+  std::vector<const std::vector<core::ContourPoint> *> contours{&b.model.contour};
+  for (const core::ModelView &v : b.model.views)
     centres.push_back(v.cameraMm), contours.push_back(&v.contour);
   const double bands[5] = {0, 15, 30, 45, 75};
   std::array<double, 4> sum{}, sum2{};
   std::array<long, 4> far{};
   for (std::size_t v = 0; v < centres.size(); v += static_cast<std::size_t>(std::max(1, stride))) {
-    const hull::Vec3 C{centres[v][0], centres[v][1], centres[v][2]};
-    const double ang = std::acos(std::clamp(hull::dot(hull::unit(C), hull::unit(rest)), -1.0, 1.0)) * 180 / M_PI;
+    const model::hull::Vec3 C{centres[v][0], centres[v][1], centres[v][2]};
+    const double ang = std::acos(std::clamp(model::hull::dot(model::hull::unit(C), model::hull::unit(rest)), -1.0, 1.0)) * 180 / M_PI;
     std::size_t band = 0;
     while (band < 3 && ang >= bands[band + 1])
       ++band;
-    const hull::Pinhole pin = hull::Pinhole::lookingAtOrigin(C, cam, kW, kH);
+    const model::hull::Pinhole pin = model::hull::Pinhole::lookingAtOrigin(C, cam, kW, kH);
     drawToy(r, toy, cMmOf(pin) * mMo, cam, 4);
     auto cov = [&](double u, double vv) {
       const int x = static_cast<int>(std::floor(u)), y = static_cast<int>(std::floor(vv));
@@ -102,11 +102,11 @@ SurfaceTruth checkSurface(const sim::Scene &scene, const AllAroundBuild &b, cons
       auto c = [&](int xx, int yy) { return r.coverage(static_cast<unsigned>(xx), static_cast<unsigned>(yy), 2); };
       return (1 - fv) * ((1 - fu) * c(x, y) + fu * c(x + 1, y)) + fv * ((1 - fu) * c(x, y + 1) + fu * c(x + 1, y + 1));
     };
-    for (const ContourPoint &p : *contours[v]) {
+    for (const core::ContourPoint &p : *contours[v]) {
       double u, vv, z;
       if (!pin.project({p.x, p.y, p.z}, u, vv, z))
         continue;
-      const hull::Vec3 Xc = pin.toCam({p.x, p.y, p.z}), Nc = pin.toCam({p.x + p.nx, p.y + p.ny, p.z + p.nz});
+      const model::hull::Vec3 Xc = pin.toCam({p.x, p.y, p.z}), Nc = pin.toCam({p.x + p.nx, p.y + p.ny, p.z + p.nz});
       double nu = Nc[0] - Xc[0], nv = Nc[1] - Xc[1];
       const double nn = std::hypot(nu, nv);
       if (!(nn > 0))

@@ -36,15 +36,15 @@ const vpRGBa white(255, 255, 255);
 
 } // namespace
 
-RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &shape, const StereoRig &rig, const Phi &phi,
+RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &shape, const core::StereoRig &rig, const core::Phi &phi,
                             int repeat, const std::function<void(std::size_t)> &step)
 {
   if (repeat < 1)
-    throw Error("renderTarget: repeat must be at least 1, not " + std::to_string(repeat));
+    throw core::Error("renderTarget: repeat must be at least 1, not " + std::to_string(repeat));
   RenderedTarget t;
   t.code = shape.info.code;
   t.name = shape.info.name;
-  const vpHomogeneousMatrix hMo = toHomogeneousMatrix(phi);
+  const vpHomogeneousMatrix hMo = core::toHomogeneousMatrix(phi);
   double ms = 0;
   for (int r = 0; r < repeat; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -57,9 +57,9 @@ RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &sha
   // The relief seen from three sides: turned about y by -0.3, 0, +0.3 (quaternion vector).
   sim::Rasterizer raster;
   for (int k = 0; k < 3; ++k) {
-    Phi p = phi;
+    core::Phi p = phi;
     p.e2 = (k - 1) * 0.3;
-    scene.render(raster, rig.left, toHomogeneousMatrix(p), 0, 0, t.turned[k]);
+    scene.render(raster, rig.left, core::toHomogeneousMatrix(p), 0, 0, t.turned[k]);
   }
   if (step)
     step(2);
@@ -71,11 +71,11 @@ RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &sha
   return t;
 }
 
-double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTarget> &targets, const Phi &phi,
+double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTarget> &targets, const core::Phi &phi,
                             const sim::SceneParams &sp, bool gallery)
 {
   if (targets.empty())
-    throw Error("writeRenderedTargets: no target");
+    throw core::Error("writeRenderedTargets: no target");
   io::StagedFiles files(dir);
   nlohmann::json list = nlohmann::json::array();
   std::vector<vpImage<vpRGBa>> thumbs;

@@ -25,14 +25,14 @@ std::array<double, 6> table2Goals() { return {5, 5, 8, 0.02, 0.02, 0.02}; }
 TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fps, const std::array<double, 6> &goals)
 {
   if (frames.empty())
-    throw Error("reportTracking: no frame");
+    throw core::Error("reportTracking: no frame");
   TrackingReport r;
   Convergence conv(std::max(1L, std::lround(fps)));
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const TrackedFrame &f = frames[k];
-    const bool within = f.haveTruth ? translationDistanceMm(f.result.phi, f.truth) <= kConvergedMm &&
-                                          rotationDistanceDeg(f.result.phi, f.truth) <= kConvergedDeg
-                                    : f.result.state == TrackState::Tracking;
+    const bool within = f.haveTruth ? core::translationDistanceMm(f.result.phi, f.truth) <= kConvergedMm &&
+                                          core::rotationDistanceDeg(f.result.phi, f.truth) <= kConvergedDeg
+                                    : f.result.state == tracker::TrackState::Tracking;
     conv.add(static_cast<long>(k), f.t, within);
   }
   conv.finish();
@@ -65,7 +65,7 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
   std::size_t nTruth = 0;
   for (std::size_t k = from; k < frames.size(); ++k)
     if (frames[k].haveTruth) {
-      const double mm = translationDistanceMm(frames[k].result.phi, frames[k].truth), deg = rotationDistanceDeg(frames[k].result.phi, frames[k].truth);
+      const double mm = core::translationDistanceMm(frames[k].result.phi, frames[k].truth), deg = core::rotationDistanceDeg(frames[k].result.phi, frames[k].truth);
       mm2 += mm * mm, deg2 += deg * deg, ++nTruth;
       r.positionMaxMm = std::max(r.positionMaxMm, mm);
       r.rotationMaxDeg = std::max(r.rotationMaxDeg, deg);
@@ -87,7 +87,7 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
   for (double v : ms)
     sum += v;
   r.meanMs = sum / static_cast<double>(ms.size());
-  r.p99Ms = percentile(ms, 0.99);
+  r.p99Ms = core::percentile(ms, 0.99);
   r.meanEvaluations = evals / static_cast<double>(frames.size());
   return r;
 }
@@ -113,12 +113,12 @@ void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
     out << "\n";
   }
   if (!out)
-    throw Error("cannot write the frames' table");
+    throw core::Error("cannot write the frames' table");
 }
 
 const char *uncertaintyCsvHeader() { return ",sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg"; }
 
-void writeUncertaintyCells(std::ostream &out, const PoseUncertainty &u)
+void writeUncertaintyCells(std::ostream &out, const precise::PoseUncertainty &u)
 {
   for (std::size_t i = 0; i < 6; ++i) {
     out << ",";

@@ -19,7 +19,7 @@
 #include "pm/model/ViewpointModel.h"
 #include "pm/model/VisualHull.h"
 
-namespace pm {
+namespace pm::model {
 
 void AllAroundParams::validate() const
 {
@@ -27,7 +27,7 @@ void AllAroundParams::validate() const
   fusion.validate();
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("all-around model parameter ") + what);
+      throw core::Error(std::string("all-around model parameter ") + what);
   };
   check(minViews >= 2 && minViews <= 1000, "minimum views must lie in [2, 1000]");
   check(finestMm > 0.1 && finestMm <= 20, "finest cell must lie in (0.1, 20] mm");
@@ -71,7 +71,7 @@ float medoidHue(const std::vector<float> &h, float &spread)
   for (float a : h) {
     double s = 0;
     for (float b : h)
-      s += hueDistance(a, b);
+      s += core::hueDistance(a, b);
     if (s < bestSum) {
       bestSum = s;
       best = a;
@@ -80,7 +80,7 @@ float medoidHue(const std::vector<float> &h, float &spread)
   std::vector<float> d;
   d.reserve(h.size());
   for (float b : h)
-    d.push_back(hueDistance(best, b));
+    d.push_back(core::hueDistance(best, b));
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
   spread = d[d.size() / 2];
   return best;
@@ -207,7 +207,7 @@ std::vector<bool> hueEdges(const std::vector<SurfacePoint> &s, double radiusMm, 
             continue;
           for (std::size_t j : it->second) {
             const double ex = s[j].x - s[i].x, ey = s[j].y - s[i].y, ez = s[j].z - s[i].z;
-            if (ex * ex + ey * ey + ez * ez <= r2 && hueDistance(s[i].hue, s[j].hue) > hueDeg) {
+            if (ex * ex + ey * ey + ez * ez <= r2 && core::hueDistance(s[i].hue, s[j].hue) > hueDeg) {
               edge[i] = true;
               break;
             }
@@ -260,7 +260,7 @@ void colourPoint(std::vector<ColourSample> &sm, float bgHue, const AllAroundPara
     ++out.nHighlight;
     return;
   }
-  s.hasHue = hueDistance(s.hue, bgHue) > p.minHueFromBackgroundDeg;
+  s.hasHue = core::hueDistance(s.hue, bgHue) > p.minHueFromBackgroundDeg;
 }
 
 //! About \e n directions within \e capDeg of \e pole (a Fibonacci lattice about it), the pole first.
@@ -291,8 +291,8 @@ std::vector<Vec3> capDirections(const Vec3 &pole, double capDeg, int n)
 */
 void colourHistograms(const std::vector<const HullCamera *> &cams, std::vector<float> &fg, std::vector<float> &bg)
 {
-  const int B = PhotoModel::kColourBins, shift = 8 - 4; // 16 bins: the top 4 bits
-  static_assert(PhotoModel::kColourBins == 16, "the shift assumes 16 bins per channel");
+  const int B = core::PhotoModel::kColourBins, shift = 8 - 4; // 16 bins: the top 4 bits
+  static_assert(core::PhotoModel::kColourBins == 16, "the shift assumes 16 bins per channel");
   fg.assign(static_cast<std::size_t>(B) * B * B, 0.f);
   bg.assign(fg.size(), 0.f);
   double nf = 0, nb = 0;
@@ -332,18 +332,18 @@ struct PassImages
   std::vector<std::string> names;              //!< each view's name
 };
 
-//! Stage 1: the silhouettes in the ideal images (out: silhouettes, shadowPx). Throws pm::Error.
-PassImages silhouettesOfPass(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p, AllAroundBuild &out)
+//! Stage 1: the silhouettes in the ideal images (out: silhouettes, shadowPx). Throws pm::core::Error.
+PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p, AllAroundBuild &out)
 {
   PassImages images;
   std::vector<HullCamera> &cams = images.cams;
   std::vector<vpImage<vpRGBa>> &backgrounds = images.backgrounds;
   std::vector<std::string> &names = images.names;
-  const RigCamera *rc[2] = {&rig.left, &rig.right};
-  std::unique_ptr<UndistortMap> und[2];
+  const core::RigCamera *rc[2] = {&rig.left, &rig.right};
+  std::unique_ptr<core::UndistortMap> und[2];
   for (int c = 0; c < 2; ++c)
     if (!rc[c]->distortion.isNone())
-      und[c] = std::make_unique<UndistortMap>(*rc[c]);
+      und[c] = std::make_unique<core::UndistortMap>(*rc[c]);
   for (std::size_t k = 0; k < pass.size(); ++k) {
     const PassView &v = pass[k];
     const std::string name = v.name.empty() ? "view " + std::to_string(k) : v.name;
@@ -354,7 +354,7 @@ PassImages silhouettesOfPass(const StereoRig &rig, const std::vector<PassView> &
       const bool plain = p.backdropHueDeg >= 0; // a plain backdrop: the photo alone
       for (const vpImage<vpRGBa> *im : {ph[c], bg[c]})
         if ((im == ph[c] || !plain) && (im->getWidth() != rc[c]->width || im->getHeight() != rc[c]->height))
-          throw Error(name + ": a " + side + " image is " + std::to_string(im->getWidth()) + "x" +
+          throw core::Error(name + ": a " + side + " image is " + std::to_string(im->getWidth()) + "x" +
                       std::to_string(im->getHeight()) + " but the rig's " + side + " camera is " +
                       std::to_string(rc[c]->width) + "x" + std::to_string(rc[c]->height));
       vpImage<vpRGBa> photo = und[c] ? und[c]->undistorted(*ph[c]) : *ph[c];
@@ -364,7 +364,7 @@ PassImages silhouettesOfPass(const StereoRig &rig, const std::vector<PassView> &
       vpImage<unsigned char> mask = plain ? silhouetteOnBackdrop(photo, p.backdropHueDeg, p.silhouette, &st, name + " (" + side + ")")
                                           : silhouette(photo, back, p.silhouette, &st, name + " (" + side + ")");
       if (st.touchesBorder)
-        throw Error(name + ": the target is cut by the " + std::string(side) +
+        throw core::Error(name + ": the target is cut by the " + std::string(side) +
                     " image's border: every view must see the whole target");
       out.shadowPx += st.shadowPx;
       HullCamera vc;
@@ -444,7 +444,7 @@ std::vector<std::vector<ColourSample>> colourSamples(const std::vector<const Hul
       if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
         continue;
       const vpRGBa px = vc->photo[static_cast<unsigned>(vi)][static_cast<unsigned>(ui)];
-      const Hsv hsv = rgbToHsv(px);
+      const core::Hsv hsv = core::rgbToHsv(px);
       samples[i].push_back({hsv.h, hsv.s, hsv.v, px.R, px.G, px.B});
     }
   return samples;
@@ -463,21 +463,21 @@ float backgroundHueAround(const PassImages &im, const std::vector<vpImage<unsign
       for (unsigned x = 0; x < silhouettes[i].getWidth(); x += 3) {
         const float d = cams[i].signedDist.at<float>(static_cast<int>(y), static_cast<int>(x));
         if (d < -3 && d > -40)
-          bgHues.push_back(hueDeg(backgrounds[i][y][x]));
+          bgHues.push_back(core::hueDeg(backgrounds[i][y][x]));
       }
   }
-  return bgHues.empty() ? 0.f : circularMeanHue(bgHues);
+  return bgHues.empty() ? 0.f : core::circularMeanHue(bgHues);
 
 }
 
 //! Stage 7: the model's viewpoints along \e dirs at \e D mm (the first is the model's own view; out: M's points).
-void sampleViewpoints(const StereoRig &rig, const std::vector<Vec3> &dirs, double D, const vpHomogeneousMatrix &mMh0,
+void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs, double D, const vpHomogeneousMatrix &mMh0,
                       const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
                       std::vector<float> &zbuf, AllAroundBuild &out)
 {
   const std::vector<Vec3> &mpts = mesh.vertices;
   const vpCameraParameters &ci = rig.left.cam;
-  PhotoModel &M = out.model;
+  core::PhotoModel &M = out.model;
   M.distanceMm = D;
   M.px = ci.get_px(), M.py = ci.get_py(), M.u0 = ci.get_u0(), M.v0 = ci.get_v0();
   M.photoWidth = rig.left.width, M.photoHeight = rig.left.height;
@@ -490,10 +490,10 @@ void sampleViewpoints(const StereoRig &rig, const std::vector<Vec3> &dirs, doubl
   for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
     const Vec3 C = hull::scaled(dirs[vi], D);
     const hull::Pinhole cam = hull::Pinhole::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
-    ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, zbuf);
+    core::ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, zbuf);
     if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
       if (vi == 0)
-        throw Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +
+        throw core::Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +
                     std::to_string(view.inner.size()) + "): the target's colours are too close to the background's");
       continue; // a direction from which too little is seen: its neighbours serve it
     }
@@ -505,11 +505,11 @@ void sampleViewpoints(const StereoRig &rig, const std::vector<Vec3> &dirs, doubl
         M.cameraMm[k] = view.cameraMm[k];
       std::vector<float> hs;
       const vpHomogeneousMatrix hM0m = mMh0.inverse();
-      for (const ModelPoint &q : M.inner) {
+      for (const core::ModelPoint &q : M.inner) {
         hs.push_back(q.hue);
         vz.push_back(static_cast<float>(hM0m[2][0] * q.x + hM0m[2][1] * q.y + hM0m[2][2] * q.z + 1e3 * hM0m[2][3]));
       }
-      M.targetHue = circularMeanHue(hs);
+      M.targetHue = core::circularMeanHue(hs);
     } else
       M.views.push_back(std::move(view));
   }
@@ -521,13 +521,13 @@ void sampleViewpoints(const StereoRig &rig, const std::vector<Vec3> &dirs, doubl
 
 } // namespace
 
-AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
+AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
 {
   const auto t0 = std::chrono::steady_clock::now();
   p.validate();
   rig.validate();
   if (pass.size() < p.minViews)
-    throw Error("all-around model: the pass holds " + std::to_string(pass.size()) + " views; at least " +
+    throw core::Error("all-around model: the pass holds " + std::to_string(pass.size()) + " views; at least " +
                 std::to_string(p.minViews) + " are needed");
   AllAroundBuild out;
   out.nViews = pass.size();
@@ -549,7 +549,7 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
       agreeingViews(cams, pass.size(), g.origin, (g.n + coarse - 1) / coarse, coarse * g.cell, p.outlierCarveFraction, names, out.leftOut);
   out.nViewsUsed = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
   if (out.nViewsUsed < p.minViews)
-    throw Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
+    throw core::Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
                 std::to_string(p.minViews) + " are needed (" + (out.leftOut.empty() ? "" : out.leftOut[0]) + ")");
   std::vector<const HullCamera *> usedCams;
   for (const HullCamera &vc : cams)
@@ -561,13 +561,13 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   out.hullVolumeCm3 = g.volumeCm3();
   DepthEvidence evidence;
   if (p.fusion.enabled) {
-    StereoRig ideal = rig; // the photos are ideal already
-    ideal.left.distortion = ideal.right.distortion = LensDistortion();
+    core::StereoRig ideal = rig; // the photos are ideal already
+    ideal.left.distortion = ideal.right.distortion = core::LensDistortion();
     evidence = measureStereo(ideal, cams, out.silhouettes, backgrounds, used, p.backdropHueDeg >= 0, g, p.fusion);
     out.fusionCarvedCells = evidence.carve(g, usedCams);
     evidence.counts(out.matchedTargetPx, out.matchedBackdropPx);
     if (g.occupied() < 8)
-      throw Error("all-around model: the views' depths carve the hull to nothing (the rig's calibration or the poses are off)");
+      throw core::Error("all-around model: the views' depths carve the hull to nothing (the rig's calibration or the poses are off)");
   }
   // One field in mm: the silhouettes' (px, at the pass's distance) and the depths'.
   double mmPerPx = 1;
@@ -630,7 +630,7 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
   const double D = std::sqrt(dot(rest, rest));
   const std::vector<Vec3> dirs = capDirections(unit(rest), p.capDeg, p.viewpoints);
   sampleViewpoints(rig, dirs, D, mMh0, mesh, edge, bgHue, p, zbuf, out);
-  PhotoModel &M = out.model;
+  core::PhotoModel &M = out.model;
   // 8. The colours of the target and around it, for the precise stage's posteriors.
   colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);
   out.mesh = std::move(mesh);
@@ -678,4 +678,4 @@ vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHo
   return out;
 }
 
-} // namespace pm
+} // namespace pm::model

@@ -4,7 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace pm::hull {
+namespace pm::model::hull {
 
 Pinhole::Pinhole(const vpHomogeneousMatrix &wMc, const vpCameraParameters &cam, unsigned width, unsigned height)
     : px(cam.get_px()), py(cam.get_py()), u0(cam.get_u0()), v0(cam.get_v0()), w(static_cast<int>(width)), h(static_cast<int>(height))
@@ -52,4 +52,4 @@ cv::Mat signedDistance(const vpImage<unsigned char> &mask)
   return inside - outside;
 }
 
-} // namespace pm::hull
+} // namespace pm::model::hull

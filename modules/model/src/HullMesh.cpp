@@ -5,7 +5,7 @@
 #include <limits>
 #include <unordered_map>
 
-namespace pm {
+namespace pm::model {
 
 using hull::Vec3;
 
@@ -166,4 +166,4 @@ HullMesh meshVisualHull(const VisualHull &g, const std::vector<const hull::HullC
   return meshField(g, [&](int x, int y, int z) { return hull::field(cams, g.corner(x, y, z)); });
 }
 
-} // namespace pm
+} // namespace pm::model

@@ -7,19 +7,19 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::model {
 
 void PassPlan::validate() const
 {
   if (views < 2 || views > 200)
-    throw Error("pass plan: views must lie in [2, 200]");
+    throw core::Error("pass plan: views must lie in [2, 200]");
   if (ringsDeg.empty() || static_cast<int>(ringsDeg.size()) > views - 1)
-    throw Error("pass plan: between 1 ring and one ring per view besides the rest view");
+    throw core::Error("pass plan: between 1 ring and one ring per view besides the rest view");
   for (double r : ringsDeg)
     if (!(r > 0 && r < 90))
-      throw Error("pass plan: ring angles must lie in (0, 90) deg");
+      throw core::Error("pass plan: ring angles must lie in (0, 90) deg");
   if (!(distanceMm > 10 && distanceMm < 1e5))
-    throw Error("pass plan: distance must lie in (10, 100000) mm");
+    throw core::Error("pass plan: distance must lie in (10, 100000) mm");
 }
 
 std::vector<PassDirection> passDirections(const PassPlan &plan)
@@ -58,4 +58,4 @@ std::vector<vpHomogeneousMatrix> planPass(const PassPlan &plan)
   return out;
 }
 
-} // namespace pm
+} // namespace pm::model

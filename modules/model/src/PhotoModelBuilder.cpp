@@ -7,13 +7,13 @@
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 
-namespace pm {
+namespace pm::model {
 
 void PhotoModelParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("photo-model parameter ") + what);
+      throw core::Error(std::string("photo-model parameter ") + what);
   };
   check(regionHueTolDeg > 0 && regionHueTolDeg < 180, "region hue tolerance must lie in (0, 180) degrees");
   check(regionSatTol > 0 && regionSatTol <= 1, "region saturation tolerance must lie in (0, 1]");
@@ -37,9 +37,9 @@ cv::Mat regionMask(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &tg, const P
   cv::Mat m(h, w, CV_8U, cv::Scalar(0));
   for (int v = 0; v < h; ++v)
     for (int u = 0; u < w; ++u) {
-      const Hsv a = rgbToHsv(bg[v][u]), b = rgbToHsv(tg[v][u]);
+      const core::Hsv a = core::rgbToHsv(bg[v][u]), b = core::rgbToHsv(tg[v][u]);
       const bool hues = b.s >= p.minSaturation && b.v >= p.minValue && a.s >= p.minSaturation && a.v >= p.minValue;
-      const bool differs = (hues && hueDistance(a.h, b.h) > p.regionHueTolDeg) ||
+      const bool differs = (hues && core::hueDistance(a.h, b.h) > p.regionHueTolDeg) ||
                            std::fabs(a.s - b.s) > p.regionSatTol || std::fabs(a.v - b.v) > p.regionValTol;
       if (differs)
         m.at<unsigned char>(v, u) = 255;
@@ -85,20 +85,20 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
 {
   params.validate();
   if (background.getSize() == 0 || withTarget.getSize() == 0)
-    throw Error("photo-model: a photo is empty");
+    throw core::Error("photo-model: a photo is empty");
   if (background.getWidth() != withTarget.getWidth() || background.getHeight() != withTarget.getHeight())
-    throw Error("photo-model: the background photo is " + std::to_string(background.getWidth()) + "x" +
+    throw core::Error("photo-model: the background photo is " + std::to_string(background.getWidth()) + "x" +
                 std::to_string(background.getHeight()) + " but the target photo is " +
                 std::to_string(withTarget.getWidth()) + "x" + std::to_string(withTarget.getHeight()) +
                 "; both must come from the same camera at the same size");
   if (!(distanceMm > 0) || !std::isfinite(distanceMm))
-    throw Error("photo-model: the photo distance must be positive, got " + std::to_string(distanceMm) + " mm");
+    throw core::Error("photo-model: the photo distance must be positive, got " + std::to_string(distanceMm) + " mm");
   if (!(cam.get_px() > 0 && cam.get_py() > 0))
-    throw Error("photo-model: the camera focal lengths px, py must be positive");
+    throw core::Error("photo-model: the camera focal lengths px, py must be positive");
 
   const int h = static_cast<int>(withTarget.getHeight()), w = static_cast<int>(withTarget.getWidth());
   PhotoModelBuild out;
-  PhotoModel &m = out.model;
+  core::PhotoModel &m = out.model;
   m.distanceMm = distanceMm;
   m.px = cam.get_px();
   m.py = cam.get_py();
@@ -110,20 +110,20 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
   std::vector<float> hues;
   hues.reserve(background.getSize());
   for (unsigned i = 0; i < background.getSize(); ++i)
-    hues.push_back(hueDeg(background.bitmap[i]));
-  m.backgroundHue = circularMeanHue(hues);
+    hues.push_back(core::hueDeg(background.bitmap[i]));
+  m.backgroundHue = core::circularMeanHue(hues);
 
   const cv::Mat region = regionMask(background, withTarget, params);
   const cv::Moments mo = cv::moments(region, true);
   if (mo.m00 < 1)
-    throw Error("photo-model: no pixel of the target photo differs in colour from the background photo (hue by more "
+    throw core::Error("photo-model: no pixel of the target photo differs in colour from the background photo (hue by more "
                 "than " + std::to_string(static_cast<int>(params.regionHueTolDeg)) + " deg): S_in would be empty (is the "
                 "target in the photo, and of another colour than the background?)");
   m.centroidU = mo.m10 / mo.m00;
   m.centroidV = mo.m01 / mo.m00;
   const double sx = distanceMm / m.px, sy = distanceMm / m.py;
   auto toModel = [&](double u, double v, float hue) {
-    ModelPoint p;
+    core::ModelPoint p;
     p.x = static_cast<float>((u - m.centroidU) * sx);
     p.y = static_cast<float>((v - m.centroidV) * sy);
     p.z = 0.f;
@@ -143,19 +143,19 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
       const int iu = static_cast<int>(std::lround(u)), iv = static_cast<int>(std::lround(v));
       if (iu < 0 || iv < 0 || iu >= w || iv >= h || !region.at<unsigned char>(iv, iu))
         continue;
-      const Hsv c = rgbToHsv(withTarget[static_cast<unsigned>(iv)][static_cast<unsigned>(iu)]);
+      const core::Hsv c = core::rgbToHsv(withTarget[static_cast<unsigned>(iv)][static_cast<unsigned>(iu)]);
       if (c.s < params.minSaturation || c.v < params.minValue ||
-          hueDistance(c.h, m.backgroundHue) <= params.minHueFromBackgroundDeg)
+          core::hueDistance(c.h, m.backgroundHue) <= params.minHueFromBackgroundDeg)
         continue;
       m.inner.push_back(toModel(iu, iv, c.h));
       inHues.push_back(c.h);
     }
   if (m.inner.empty())
-    throw Error("photo-model: S_in is empty: no saturated point of the target region differs in hue from the "
+    throw core::Error("photo-model: S_in is empty: no saturated point of the target region differs in hue from the "
                 "background (" + std::to_string(static_cast<int>(m.backgroundHue)) + " deg) by more than " +
                 std::to_string(static_cast<int>(params.minHueFromBackgroundDeg)) +
                 " deg (a target of the background's colour cannot be told from it by hue)");
-  m.targetHue = circularMeanHue(inHues);
+  m.targetHue = core::circularMeanHue(inHues);
 
   // S_out: offset outlines of the region, sampled along their length.
   cv::Mat outside, dist;
@@ -174,7 +174,7 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
         if (run >= step) {
           run = 0;
           if (a.x >= 0 && a.y >= 0 && a.x < w && a.y < h)
-            m.outer.push_back(toModel(a.x, a.y, hueDeg(background[static_cast<unsigned>(a.y)][static_cast<unsigned>(a.x)])));
+            m.outer.push_back(toModel(a.x, a.y, core::hueDeg(background[static_cast<unsigned>(a.y)][static_cast<unsigned>(a.x)])));
         }
         run += std::hypot(b.x - a.x, b.y - a.y);
       }
@@ -188,4 +188,4 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
   return out;
 }
 
-} // namespace pm
+} // namespace pm::model

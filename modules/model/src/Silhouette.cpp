@@ -9,13 +9,13 @@
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 
-namespace pm {
+namespace pm::model {
 
 void SilhouetteParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("silhouette parameter ") + what);
+      throw core::Error(std::string("silhouette parameter ") + what);
   };
   check(chromaTol > 0 && chromaTol < 1, "chroma tolerance must lie in (0, 1)");
   check(darkRatio > 0 && darkRatio < 1, "dark ratio must lie in (0, 1)");
@@ -50,7 +50,7 @@ vpImage<unsigned char> cleaned(cv::Mat &mask, const SilhouetteParams &p, Silhoue
           changedFrame += mask.at<unsigned char>(v, u) != 0;
         }
     if (changedFrame > frame / 3)
-      throw Error(name + ": " + std::to_string(100 * changedFrame / frame) +
+      throw core::Error(name + ": " + std::to_string(100 * changedFrame / frame) +
                   " % of the image's border differs from its background: the background does not match its photo");
   }
   if (p.cleanRadiusPx > 0) {
@@ -70,9 +70,9 @@ vpImage<unsigned char> cleaned(cv::Mat &mask, const SilhouetteParams &p, Silhoue
       cv::drawContours(out, contours, static_cast<int>(i), cv::Scalar(255), cv::FILLED);
   const int n = cv::countNonZero(out);
   if (n == 0)
-    throw Error(name + ": no target found (the photo does not differ from its background)");
+    throw core::Error(name + ": no target found (the photo does not differ from its background)");
   if (n > p.maxImageFraction * w * h)
-    throw Error(name + ": " + std::to_string(static_cast<int>(100.0 * n / (w * h))) +
+    throw core::Error(name + ": " + std::to_string(static_cast<int>(100.0 * n / (w * h))) +
                 " % of the image differs from its background: the background does not match its photo");
   bool border = false;
   for (int u = 0; u < w && !border; ++u)
@@ -95,7 +95,7 @@ vpImage<unsigned char> silhouette(const vpImage<vpRGBa> &photo, const vpImage<vp
 {
   p.validate();
   if (photo.getWidth() != background.getWidth() || photo.getHeight() != background.getHeight() || photo.getSize() == 0)
-    throw Error(name + " and its background differ in size");
+    throw core::Error(name + " and its background differ in size");
   const int h = static_cast<int>(photo.getHeight()), w = static_cast<int>(photo.getWidth());
   // Both images as float RGBA, not smoothed: a blur widens the silhouette by a pixel all around (on R2 a
   // 393 px halo for 4 px without it); the opening removes the specks of sensor noise.
@@ -140,19 +140,19 @@ vpImage<unsigned char> silhouetteOnBackdrop(const vpImage<vpRGBa> &photo, double
 {
   p.validate();
   if (!(backdropHueDeg >= 0 && backdropHueDeg < 360))
-    throw Error("the backdrop's hue must lie in [0, 360) degrees");
+    throw core::Error("the backdrop's hue must lie in [0, 360) degrees");
   if (photo.getSize() == 0)
-    throw Error(name + " is empty");
+    throw core::Error(name + " is empty");
   const int h = static_cast<int>(photo.getHeight()), w = static_cast<int>(photo.getWidth());
   cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
   for (int v = 0; v < h; ++v) {
     unsigned char *m = mask.ptr<unsigned char>(v);
     for (int u = 0; u < w; ++u) {
-      const Hsv c = rgbToHsv(photo[static_cast<unsigned>(v)][static_cast<unsigned>(u)]);
+      const core::Hsv c = core::rgbToHsv(photo[static_cast<unsigned>(v)][static_cast<unsigned>(u)]);
       // Too pale or too dark for a hue: not the backdrop's colour, so the target (a missed target
       // pixel would carve the hull, a wrong one only widens it). A shadow keeps the backdrop's hue.
       const bool hasHue = c.s >= p.backdropMinSaturation && c.v >= p.backdropMinValue;
-      if (!hasHue || hueDistance(c.h, static_cast<float>(backdropHueDeg)) > p.backdropHueTolDeg)
+      if (!hasHue || core::hueDistance(c.h, static_cast<float>(backdropHueDeg)) > p.backdropHueTolDeg)
         m[u] = 255;
     }
   }
@@ -179,4 +179,4 @@ vpImage<unsigned char> silhouetteOnBackdrop(const vpImage<vpRGBa> &photo, double
   return cleaned(mask, p, stats, name);
 }
 
-} // namespace pm
+} // namespace pm::model

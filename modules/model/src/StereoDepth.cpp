@@ -8,7 +8,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm::stereo {
+namespace pm::model::stereo {
 
 cv::Mat toBgr(const vpImage<vpRGBa> &im)
 {
@@ -71,7 +71,7 @@ cv::Mat leftDepth(const Rectification &rect, const vpImage<vpRGBa> &L, const vpI
   const int w = rect.size.width, h = rect.size.height;
   for (const vpImage<vpRGBa> *im : {&L, &R})
     if (static_cast<int>(im->getWidth()) != w || static_cast<int>(im->getHeight()) != h)
-      throw Error("stereo depth: an image of " + std::to_string(im->getWidth()) + "x" + std::to_string(im->getHeight()) +
+      throw core::Error("stereo depth: an image of " + std::to_string(im->getWidth()) + "x" + std::to_string(im->getHeight()) +
                   " for a rig of " + std::to_string(w) + "x" + std::to_string(h));
   const double dA = rect.disparityAt(std::max(1.0, zNear)), dB = rect.disparityAt(std::max(zNear + 1, zFar));
   const int dMin = static_cast<int>(std::floor(std::min(dA, dB))) - 1;
@@ -126,4 +126,4 @@ cv::Mat leftDepth(const Rectification &rect, const vpImage<vpRGBa> &L, const vpI
   return z;
 }
 
-} // namespace pm::stereo
+} // namespace pm::model::stereo

@@ -12,14 +12,14 @@
 #include "pm/core/Hue.h"
 #include "pm/model/StereoDepth.h"
 
-namespace pm {
+namespace pm::model {
 
 void StereoModelParams::validate() const
 {
   photo.validate();
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("stereo photo-model parameter ") + what);
+      throw core::Error(std::string("stereo photo-model parameter ") + what);
   };
   check(backdropMm >= 0 && std::isfinite(backdropMm), "backdrop distance must be 0 (measured) or positive");
   check(maxReliefMm > 0 && maxReliefMm <= 2000, "maximum relief must lie in (0, 2000] mm");
@@ -62,10 +62,10 @@ double localMedian(const cv::Mat &z, const cv::Point2f &p, double radius)
   return median(v);
 }
 
-void checkSize(const vpImage<vpRGBa> &im, const RigCamera &cam, const char *what)
+void checkSize(const vpImage<vpRGBa> &im, const core::RigCamera &cam, const char *what)
 {
   if (im.getWidth() != cam.width || im.getHeight() != cam.height)
-    throw Error(std::string("stereo photo-model: the ") + what + " is " + std::to_string(im.getWidth()) + "x" +
+    throw core::Error(std::string("stereo photo-model: the ") + what + " is " + std::to_string(im.getWidth()) + "x" +
                 std::to_string(im.getHeight()) + " but the rig's " + cam.name + " camera is " +
                 std::to_string(cam.width) + "x" + std::to_string(cam.height) +
                 " (take the photos with the rig's cameras at their calibrated size)");
@@ -74,19 +74,19 @@ void checkSize(const vpImage<vpRGBa> &im, const RigCamera &cam, const char *what
 //! A view's points placed in the hand frame (mm; x, y, z of each ModelPoint), before the origin is chosen.
 struct PlacedView
 {
-  std::vector<ModelPoint> inner, outer, dropped;
+  std::vector<core::ModelPoint> inner, outer, dropped;
   int nOutFallback = 0;
 };
 
 //! \e p placed in the hand frame (mm) on its pixel's ray of \e cam, at the camera's depth \e z (mm).
-ModelPoint onRay(const RigCamera &cam, const ModelPoint &p, double z)
+core::ModelPoint onRay(const core::RigCamera &cam, const core::ModelPoint &p, double z)
 {
   const vpCameraParameters &c = cam.cam;
   const double X = (p.u - c.get_u0()) / c.get_px() * z, Y = (p.v - c.get_v0()) / c.get_py() * z;
   float h[3];
   for (unsigned i = 0; i < 3; ++i)
     h[i] = static_cast<float>(cam.hMc[i][0] * X + cam.hMc[i][1] * Y + cam.hMc[i][2] * z + cam.hMc[i][3] * 1e3);
-  ModelPoint q = p;
+  core::ModelPoint q = p;
   q.x = h[0];
   q.y = h[1];
   q.z = h[2];
@@ -98,11 +98,11 @@ ModelPoint onRay(const RigCamera &cam, const ModelPoint &p, double z)
   at its region pixels (NaN where unmatched). S_in: at its pixel's depth, dropped when unmatched or off
   the median of the matched pixels around it; S_out: at the depth of the silhouette next to it.
 */
-PlacedView placeView(const PhotoModel &sampled, const cv::Mat &camZ, const RigCamera &cam, const StereoModelParams &params,
+PlacedView placeView(const core::PhotoModel &sampled, const cv::Mat &camZ, const core::RigCamera &cam, const StereoModelParams &params,
                      double fallbackZ)
 {
   PlacedView pv;
-  for (const ModelPoint &p : sampled.inner) {
+  for (const core::ModelPoint &p : sampled.inner) {
     const int u = static_cast<int>(std::lround(p.u)), v = static_cast<int>(std::lround(p.v));
     const double z = (u >= 0 && v >= 0 && u < camZ.cols && v < camZ.rows) ? camZ.at<float>(v, u) : std::nan("");
     // A match off the relief around it (a wrong match on a thin part or an edge) is no match.
@@ -116,7 +116,7 @@ PlacedView placeView(const PhotoModel &sampled, const cv::Mat &camZ, const RigCa
   const int w = camZ.cols, h = camZ.rows;
   const int rad = static_cast<int>(std::ceil(params.silhouetteRadiusPx + params.photo.stripGapPx + params.photo.stripWidthPx));
   std::vector<double> outZ, allZ;
-  for (const ModelPoint &p : sampled.outer) {
+  for (const core::ModelPoint &p : sampled.outer) {
     std::vector<double> zs;
     const int u0 = static_cast<int>(std::lround(p.u)), v0 = static_cast<int>(std::lround(p.v));
     for (int v = std::max(0, v0 - rad); v <= std::min(h - 1, v0 + rad); ++v)
@@ -137,7 +137,7 @@ PlacedView placeView(const PhotoModel &sampled, const cv::Mat &camZ, const RigCa
   }
   const double fallback = allZ.empty() ? fallbackZ : median(allZ);
   for (std::size_t i = 0; i < sampled.outer.size(); ++i) {
-    const ModelPoint &p = sampled.outer[i];
+    const core::ModelPoint &p = sampled.outer[i];
     double z = outZ[i];
     if (!std::isfinite(z)) {
       z = fallback;
@@ -149,9 +149,9 @@ PlacedView placeView(const PhotoModel &sampled, const cv::Mat &camZ, const RigCa
 }
 
 //! \e pts moved by -o (hand frame to model frame).
-std::vector<ModelPoint> shifted(std::vector<ModelPoint> pts, const cv::Vec3d &o)
+std::vector<core::ModelPoint> shifted(std::vector<core::ModelPoint> pts, const cv::Vec3d &o)
 {
-  for (ModelPoint &p : pts) {
+  for (core::ModelPoint &p : pts) {
     p.x = static_cast<float>(p.x - o[0]);
     p.y = static_cast<float>(p.y - o[1]);
     p.z = static_cast<float>(p.z - o[2]);
@@ -163,7 +163,7 @@ std::vector<ModelPoint> shifted(std::vector<ModelPoint> pts, const cv::Vec3d &o)
   Camera \e to's depth (mm) at its \e region pixels from camera \e from's depth map: each matched pixel's
   3-D point projected into \e to, splatted on the four pixels around it, the nearest surface kept.
 */
-cv::Mat warpedDepth(const cv::Mat &fromZ, const RigCamera &from, const RigCamera &to, const vpImage<unsigned char> &region)
+cv::Mat warpedDepth(const cv::Mat &fromZ, const core::RigCamera &from, const core::RigCamera &to, const vpImage<unsigned char> &region)
 {
   cv::Mat z(fromZ.size(), CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
   const vpHomogeneousMatrix cMc = to.hMc.inverse() * from.hMc;
@@ -195,14 +195,14 @@ cv::Mat warpedDepth(const cv::Mat &fromZ, const RigCamera &from, const RigCamera
 }
 
 //! The flat build of one view, with an error that names the view.
-PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im, const RigCamera &cam,
+PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im, const core::RigCamera &cam,
                            const StereoModelParams &p)
 {
   PhotoModelBuild b;
   try {
     b = buildPhotoModel(bg, im, cam.cam, 500, p.photo);
-  } catch (const Error &e) {
-    throw Error("stereo photo-model: the target is not found in the " + cam.name + " view (" + e.what() +
+  } catch (const core::Error &e) {
+    throw core::Error("stereo photo-model: the target is not found in the " + cam.name + " view (" + e.what() +
                 "); it must be whole in both views");
   }
   const unsigned w = b.region.getWidth(), h = b.region.getHeight();
@@ -214,7 +214,7 @@ PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im,
         border += (u == 0 || v == 0 || u + 1 == w || v + 1 == h) ? 1 : 0;
       }
   if (static_cast<double>(area) > p.maxRegionFraction * w * h)
-    throw Error("stereo photo-model: " + std::to_string(static_cast<int>(100.0 * static_cast<double>(area) / (w * h))) + " % of the " +
+    throw core::Error("stereo photo-model: " + std::to_string(static_cast<int>(100.0 * static_cast<double>(area) / (w * h))) + " % of the " +
                 cam.name + " photo differs from its background photo: the background pair does not match the photo "
                 "pair (take both pairs from the same hand pose, the backdrop alone first)");
   // Outside the target the photo shows what the background photo shows (up to noise): else the
@@ -231,18 +231,18 @@ PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im,
       }
   const double mad = median(diffs);
   if (!(mad <= p.maxBackgroundChange))
-    throw Error("stereo photo-model: outside the target the " + cam.name + " photo differs from its background photo by " +
+    throw core::Error("stereo photo-model: outside the target the " + cam.name + " photo differs from its background photo by " +
                 std::to_string(static_cast<int>(std::lround(mad))) + " grey levels (median): the background pair does "
                 "not match the photo pair (take both pairs from the same hand pose, the backdrop alone first, under the "
                 "same light)");
   if (border > 0)
-    throw Error("stereo photo-model: the target touches the border of the " + cam.name +
+    throw core::Error("stereo photo-model: the target touches the border of the " + cam.name +
                 " view; it must be whole in both views (move the rig back or centre the target)");
   return b;
 }
 
 //! The backdrop's depth (rectified left z, mm), matched on the background pair at a quarter of the
-//! resolution over a wide range, the median over the target's region \e rRegionL (rectified). Throws pm::Error.
+//! resolution over a wide range, the median over the target's region \e rRegionL (rectified). Throws pm::core::Error.
 double measuredBackdropMm(const Rectification &rect, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR, const cv::Mat &rRegionL,
                           const StereoModelParams &params)
 {
@@ -267,12 +267,12 @@ double measuredBackdropMm(const Rectification &rect, const vpImage<vpRGBa> &bgL,
         ds.push_back(4.0 * d.at<float>(v, u));
   std::size_t maskArea = static_cast<std::size_t>(cv::countNonZero(mask));
   if (ds.size() < 20 || static_cast<double>(ds.size()) < 0.2 * static_cast<double>(maskArea))
-    throw Error("stereo photo-model: the backdrop behind the target cannot be matched in the background pair (" +
+    throw core::Error("stereo photo-model: the backdrop behind the target cannot be matched in the background pair (" +
                 std::to_string(ds.size()) + " of " + std::to_string(maskArea) +
                 " pixels matched; a plain backdrop has no texture): give its distance (--backdrop-mm)");
   const double backdrop = rect.depthAt(median(ds));
   if (!(backdrop > 0) || !std::isfinite(backdrop))
-    throw Error("stereo photo-model: the backdrop's depth came out invalid; give its distance (--backdrop-mm)");
+    throw core::Error("stereo photo-model: the backdrop's depth came out invalid; give its distance (--backdrop-mm)");
   return backdrop;
 }
 
@@ -280,7 +280,7 @@ double measuredBackdropMm(const Rectification &rect, const vpImage<vpRGBa> &bgL,
   Dense depth of the left region from the rectified disparities \e disp: the left camera's z (returned,
   NaN elsewhere; for S_out) and the hand's z (\e depthLeft, for depth.png).
 */
-cv::Mat leftRegionDepth(const StereoRig &rig, const Rectification &rect, const cv::Mat &disp, const vpImage<unsigned char> &region,
+cv::Mat leftRegionDepth(const core::StereoRig &rig, const Rectification &rect, const cv::Mat &disp, const vpImage<unsigned char> &region,
                         const StereoModelParams &params, vpImage<float> &depthLeft)
 {
   // A left pixel's position in the hand frame (mm) from its rectified disparity.
@@ -325,23 +325,23 @@ cv::Mat leftRegionDepth(const StereoRig &rig, const Rectification &rect, const c
 
 } // namespace
 
-StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR,
+StereoPhotoModelBuild buildStereoPhotoModel(const core::StereoRig &rig, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR,
                                             const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R,
                                             const StereoModelParams &params)
 {
   params.validate();
   rig.validate();
   if (rig.left.width != rig.right.width || rig.left.height != rig.right.height)
-    throw Error("stereo photo-model: both cameras of the rig must have the same image size");
+    throw core::Error("stereo photo-model: both cameras of the rig must have the same image size");
   checkSize(bgL, rig.left, "left background photo");
   checkSize(bgR, rig.right, "right background photo");
   checkSize(L, rig.left, "left photo");
   checkSize(R, rig.right, "right photo");
   if (!rig.left.distortion.isNone() || !rig.right.distortion.isNone()) {
     // A lens: the four photos undistorted once (bilinear), then built as a pinhole rig's.
-    StereoRig ideal = rig;
-    ideal.left.distortion = ideal.right.distortion = LensDistortion();
-    const UndistortMap mapL(rig.left), mapR(rig.right);
+    core::StereoRig ideal = rig;
+    ideal.left.distortion = ideal.right.distortion = core::LensDistortion();
+    const core::UndistortMap mapL(rig.left), mapR(rig.right);
     return buildStereoPhotoModel(ideal, mapL.undistorted(bgL), mapR.undistorted(bgR), mapL.undistorted(L), mapR.undistorted(R), params);
   }
 
@@ -354,7 +354,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
     areaR += right.region.bitmap[i] ? 1u : 0u;
   }
   if (static_cast<double>(std::min(areaL, areaR)) < 0.5 * static_cast<double>(std::max(areaL, areaR)))
-    throw Error("stereo photo-model: the target covers " + std::to_string(areaL) + " px in the left view but " +
+    throw core::Error("stereo photo-model: the target covers " + std::to_string(areaL) + " px in the left view but " +
                 std::to_string(areaR) + " px in the right: it is hidden or cut in one view (both must see it whole)");
 
   const Rectification rect(rig);
@@ -381,7 +381,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   const cv::Mat camZ = leftRegionDepth(rig, rect, disp, left.region, params, out.depthLeft);
 
   // S_in and S_out of the left view placed on their rays.
-  PhotoModel &m = out.model;
+  core::PhotoModel &m = out.model;
   m = left.model;
   PlacedView pl = placeView(left.model, camZ, rig.left, params, backdrop);
   const std::size_t nSampled = left.model.inner.size();
@@ -390,7 +390,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   out.nOutFallback = pl.nOutFallback;
   const double matched = nSampled == 0 ? 0.0 : static_cast<double>(pl.inner.size()) / static_cast<double>(nSampled);
   if (pl.inner.empty() || matched < params.minMatchedFraction)
-    throw Error("stereo photo-model: too little texture to match the two views: " + std::to_string(pl.inner.size()) +
+    throw core::Error("stereo photo-model: too little texture to match the two views: " + std::to_string(pl.inner.size()) +
                 " of " + std::to_string(nSampled) + " S_in points matched (at least " +
                 std::to_string(static_cast<int>(100 * params.minMatchedFraction)) +
                 " % needed); refused rather than guessed: use the flat model (one photo pair, --background --photo --distance-mm) if you know the "
@@ -398,20 +398,20 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
 
   // The model frame: origin at the 3-D centroid of S_in, axes of the hand frame.
   cv::Vec3d o(0, 0, 0);
-  for (const ModelPoint &p : pl.inner)
+  for (const core::ModelPoint &p : pl.inner)
     o += cv::Vec3d(p.x, p.y, p.z);
   o *= 1.0 / static_cast<double>(pl.inner.size());
   double zNear = 1e300, zFar = -1e300;
-  for (const ModelPoint &p : pl.inner) {
+  for (const core::ModelPoint &p : pl.inner) {
     zNear = std::min(zNear, static_cast<double>(p.z));
     zFar = std::max(zFar, static_cast<double>(p.z));
   }
   std::vector<float> inHues;
-  for (const ModelPoint &p : pl.inner)
+  for (const core::ModelPoint &p : pl.inner)
     inHues.push_back(p.hue);
   m.inner = shifted(pl.inner, o);
   m.outer = shifted(pl.outer, o);
-  m.targetHue = circularMeanHue(inHues);
+  m.targetHue = core::circularMeanHue(inHues);
   m.distanceMm = o[2];
   for (int i = 0; i < 3; ++i) {
     m.originInHandMm[i] = o[i];
@@ -426,7 +426,7 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
     const cv::Mat camZR = warpedDepth(camZ, rig.left, rig.right, right.region);
     PlacedView pr = placeView(right.model, camZR, rig.right, params, backdrop);
     if (!pr.inner.empty()) {
-      ModelView v;
+      core::ModelView v;
       v.inner = shifted(pr.inner, o);
       v.outer = shifted(pr.outer, o);
       for (int i = 0; i < 3; ++i)
@@ -441,23 +441,23 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   return out;
 }
 
-StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR,
+StereoPhotoModelBuild buildStereoPhotoModel(const core::StereoRig &rig, const vpImage<vpRGBa> &bgL, const vpImage<vpRGBa> &bgR,
                                             const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R,
                                             const std::vector<StereoViewPair> &more, const StereoModelParams &params)
 {
   StereoPhotoModelBuild out = buildStereoPhotoModel(rig, bgL, bgR, L, R, params);
-  PhotoModel &m = out.model;
+  core::PhotoModel &m = out.model;
   for (std::size_t k = 0; k < more.size(); ++k) {
     const StereoViewPair &pair = more[k];
     StereoPhotoModelBuild b;
     try {
       b = buildStereoPhotoModel(rig, pair.backgroundLeft, pair.backgroundRight, pair.left, pair.right, params);
-    } catch (const Error &e) {
-      throw Error("view pair " + std::to_string(k + 2) + ": " + e.what());
+    } catch (const core::Error &e) {
+      throw core::Error("view pair " + std::to_string(k + 2) + ": " + e.what());
     }
     // Model frame of pair k (origin ok, hand axes) -> its hand frame -> the first pair's hand frame -> the model frame.
     const vpHomogeneousMatrix h0Mh = pair.hMh0.inverse();
-    const PhotoModel &mk = b.model;
+    const core::PhotoModel &mk = b.model;
     auto move = [&](const double p[3], double q[3]) {
       double hk[3];
       for (int i = 0; i < 3; ++i)
@@ -465,8 +465,8 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
       for (unsigned i = 0; i < 3; ++i)
         q[i] = 1e3 * (h0Mh[i][0] * hk[0] + h0Mh[i][1] * hk[1] + h0Mh[i][2] * hk[2] + h0Mh[i][3]) - m.originInHandMm[i];
     };
-    auto movePoints = [&](std::vector<ModelPoint> pts) {
-      for (ModelPoint &pt : pts) {
+    auto movePoints = [&](std::vector<core::ModelPoint> pts) {
+      for (core::ModelPoint &pt : pts) {
         const double a[3] = {pt.x, pt.y, pt.z};
         double q[3];
         move(a, q);
@@ -476,13 +476,13 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
       }
       return pts;
     };
-    ModelView own;
+    core::ModelView own;
     move(mk.cameraMm, own.cameraMm);
     own.inner = movePoints(mk.inner);
     own.outer = movePoints(mk.outer);
     m.views.push_back(std::move(own));
-    for (const ModelView &v : mk.views) {
-      ModelView mv;
+    for (const core::ModelView &v : mk.views) {
+      core::ModelView mv;
       move(v.cameraMm, mv.cameraMm);
       mv.inner = movePoints(v.inner);
       mv.outer = movePoints(v.outer);
@@ -493,4 +493,4 @@ StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<
   return out;
 }
 
-} // namespace pm
+} // namespace pm::model

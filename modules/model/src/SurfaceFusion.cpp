@@ -9,7 +9,7 @@
 #include "pm/core/Error.h"
 #include "pm/model/StereoDepth.h"
 
-namespace pm {
+namespace pm::model {
 
 using hull::Vec3;
 
@@ -17,7 +17,7 @@ void FusionParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("all-around model's surface fusion: ") + what);
+      throw core::Error(std::string("all-around model's surface fusion: ") + what);
   };
   check(truncationMm > 0 && truncationMm <= 100, "the truncation must lie in (0, 100] mm");
   check(backdropMarginMm >= 0 && backdropMarginMm <= 100, "the backdrop margin must lie in [0, 100] mm");
@@ -111,7 +111,7 @@ void DepthEvidence::counts(long &target, long &backdrop) const
   }
 }
 
-DepthEvidence measureStereo(const StereoRig &rig, const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks,
+DepthEvidence measureStereo(const core::StereoRig &rig, const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks,
                             const std::vector<vpImage<vpRGBa>> &backgrounds, const std::vector<bool> &used, bool plainBackdrop,
                             const VisualHull &hull, const FusionParams &p)
 {
@@ -185,4 +185,4 @@ DepthEvidence measureStereo(const StereoRig &rig, const std::vector<hull::HullCa
   return ev;
 }
 
-} // namespace pm
+} // namespace pm::model

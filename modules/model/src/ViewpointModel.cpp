@@ -7,7 +7,7 @@
 
 #include "pm/model/AllAroundModelBuilder.h"
 
-namespace pm {
+namespace pm::model {
 
 using hull::Vec3;
 
@@ -30,7 +30,7 @@ void depthBuffer(const hull::Pinhole &cam, const std::vector<Vec3> &pts, int rad
   }
 }
 
-std::vector<ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n)
+std::vector<core::ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n)
 {
   auto inMask = [&](double u, double v) {
     const int x = static_cast<int>(std::lround(u)), y = static_cast<int>(std::lround(v));
@@ -74,7 +74,7 @@ std::vector<ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &
     segs.push_back(s);
     total += s.len;
   }
-  std::vector<ContourPoint> out;
+  std::vector<core::ContourPoint> out;
   if (segs.empty() || n <= 0)
     return out;
   // The outline's normal from the coverage, blurred: a contour edge of the mesh zigzags across its
@@ -114,7 +114,7 @@ std::vector<ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &
       gu /= gn, gv /= gn;
       const Vec3 ax = cam.axis(0), ay = cam.axis(1);
       const Vec3 n3 = hull::unit({gu * ax[0] + gv * ay[0], gu * ax[1] + gv * ay[1], gu * ax[2] + gv * ay[2]});
-      ContourPoint c;
+      core::ContourPoint c;
       c.x = static_cast<float>(X[0]), c.y = static_cast<float>(X[1]), c.z = static_cast<float>(X[2]);
       c.nx = static_cast<float>(n3[0]), c.ny = static_cast<float>(n3[1]), c.nz = static_cast<float>(n3[2]);
       const double mmPerPx = z / cam.px;
@@ -127,7 +127,7 @@ std::vector<ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &
   return out;
 }
 
-ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
+core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
                           const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
                           std::vector<float> &zbuf)
 {
@@ -173,22 +173,22 @@ ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoi
                      static_cast<float>(v)});
   }
   std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
-  ModelView view;
+  core::ModelView view;
   for (int k = 0; k < 3; ++k)
     view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
   // One point per cell of each kind (on a hue edge, elsewhere); edgeShare of nIn from the edges,
   // the rest elsewhere, each thinned evenly.
-  std::vector<ModelPoint> onEdge, plain;
+  std::vector<core::ModelPoint> onEdge, plain;
   for (std::size_t j = 0; j < picks.size(); ++j) {
     if (j > 0 && picks[j].key == picks[j - 1].key)
       continue;
     const SurfacePoint &s = surface[picks[j].i];
     (picks[j].key >= kEdgeKey ? onEdge : plain).push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v, s.r, s.g, s.b});
   }
-  auto thin = [](std::vector<ModelPoint> &v, std::size_t n) {
+  auto thin = [](std::vector<core::ModelPoint> &v, std::size_t n) {
     if (v.size() <= n)
       return;
-    std::vector<ModelPoint> t;
+    std::vector<core::ModelPoint> t;
     const double r = static_cast<double>(v.size()) / static_cast<double>(n);
     for (std::size_t j = 0; j < n; ++j)
       t.push_back(v[static_cast<std::size_t>(static_cast<double>(j) * r)]);
@@ -252,4 +252,4 @@ ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoi
   return view;
 }
 
-} // namespace pm
+} // namespace pm::model

@@ -7,7 +7,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::model {
 
 using hull::Vec3;
 
@@ -37,7 +37,7 @@ Vec3 silhouettesMeet(const std::vector<HullCamera> &cams, const std::vector<vpIm
   }
   cv::Mat Am(3, 3, CV_64F, A), bm(3, 1, CV_64F, b), x;
   if (!cv::solve(Am, bm, x, cv::DECOMP_SVD))
-    throw Error("all-around model: the views' rays do not meet (are the poses right?)");
+    throw core::Error("all-around model: the views' rays do not meet (are the poses right?)");
   return {x.at<double>(0), x.at<double>(1), x.at<double>(2)};
 }
 
@@ -115,7 +115,7 @@ void hullBox(const std::vector<hull::HullCamera> &cams, const std::vector<vpImag
   for (std::size_t i = 0; i < cams.size(); ++i) {
     double u, v, z;
     if (!cams[i].cam.project(centre, u, v, z))
-      throw Error("all-around model: the target's centre is behind a camera of view " + std::to_string(cams[i].view) +
+      throw core::Error("all-around model: the target's centre is behind a camera of view " + std::to_string(cams[i].view) +
                   " (are the poses right?)");
     double far2 = 0;
     const vpImage<unsigned char> &m = masks[i];
@@ -211,8 +211,8 @@ void carveVisualHull(const std::vector<const hull::HullCamera *> &cams, VisualHu
       for (int x = 0; x < g.n; x += start)
         carve(cams, g, x, y, z, start);
   if (g.occupied() < 8)
-    throw Error("all-around model: the views carve the hull to nothing (the poses, the rig's calibration or the "
+    throw core::Error("all-around model: the views carve the hull to nothing (the poses, the rig's calibration or the "
                 "silhouettes disagree)");
 }
 
-} // namespace pm
+} // namespace pm::model

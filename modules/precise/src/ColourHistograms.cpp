@@ -5,7 +5,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::precise {
 
 ColourHistograms::ColourHistograms()
     : m_f(kSize, 0.f), m_b(kSize, 0.f), m_countF(kSize, 0.f), m_countB(kSize, 0.f), m_posterior(kSize, 0.5f)
@@ -29,7 +29,7 @@ void ColourHistograms::start(const std::vector<float> &foreground, const std::ve
   if (foreground.empty() && background.empty())
     return;
   if (foreground.size() != kSize || background.size() != kSize)
-    throw Error("colour histograms: " + std::to_string(kSize) + " bins each are needed, got " +
+    throw core::Error("colour histograms: " + std::to_string(kSize) + " bins each are needed, got " +
                 std::to_string(foreground.size()) + " and " + std::to_string(background.size()));
   m_f = foreground;
   m_b = background;
@@ -76,4 +76,4 @@ double ColourHistograms::separation() const
   return 0.5 * s;
 }
 
-} // namespace pm
+} // namespace pm::precise

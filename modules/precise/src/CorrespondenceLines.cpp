@@ -9,16 +9,16 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::precise {
 
 void LineShape::prepare()
 {
   if (functionLength < 2 || functionLength > kMaxFunction || functionLength % 2 != 0)
-    throw Error("precise stage: the smoothed step must span an even number of segments in [2, " + std::to_string(kMaxFunction) + "]");
+    throw core::Error("precise stage: the smoothed step must span an even number of segments in [2, " + std::to_string(kMaxFunction) + "]");
   if (distributionLength < 3 || distributionLength > kMaxDistribution)
-    throw Error("precise stage: the distribution's length must lie in [3, " + std::to_string(kMaxDistribution) + "] segments");
+    throw core::Error("precise stage: the distribution's length must lie in [3, " + std::to_string(kMaxDistribution) + "] segments");
   if (!(amplitude > 0 && amplitude < 0.5) || !(slope >= 0 && slope <= 10))
-    throw Error("precise stage: the step's amplitude must lie in (0, 0.5) and its slope in [0, 10] segments");
+    throw core::Error("precise stage: the step's amplitude must lie in (0, 0.5) and its slope in [0, 10] segments");
   for (int i = 0; i < functionLength; ++i) {
     const double x = i - 0.5 * (functionLength - 1);
     const double f = slope > 0 ? 0.5 - amplitude * std::tanh(x / (2 * slope)) : 0.5 - amplitude * ((x > 0) - (x < 0));
@@ -38,10 +38,10 @@ struct Composed
   double R[9], t[3], hRo[9];
 };
 
-Composed compose(const LineCamera &cam, const Phi &phi)
+Composed compose(const LineCamera &cam, const core::Phi &phi)
 {
   Composed c;
-  const Rot3 h = rotationOf(phi);
+  const core::Rot3 h = core::rotationOf(phi);
   std::copy(h.begin(), h.end(), c.hRo);
   const double th[3] = {phi.x, phi.y, phi.z};
   for (int r = 0; r < 3; ++r) {
@@ -98,7 +98,7 @@ struct Projected
 };
 
 //! Projects contour point \e q through cMo \e c of camera \e cam; false behind the camera or when the normal is along the view.
-inline bool projectContour(const LineCamera &cam, const Composed &c, const ContourPoint &q, Projected &p)
+inline bool projectContour(const LineCamera &cam, const Composed &c, const core::ContourPoint &q, Projected &p)
 {
   const float X[3] = {q.x, q.y, q.z};
   double Xc[3];
@@ -132,13 +132,13 @@ Selection select(const OutlineViews &outlines, std::size_t view, std::size_t max
 
 } // namespace
 
-void cameraInModel(const LineCamera &cam, const Phi &phi, double out[3])
+void cameraInModel(const LineCamera &cam, const core::Phi &phi, double out[3])
 {
   // The camera centre in the hand frame, -R^T t, then into the model frame: hRo^T (c - t_o).
   double c[3];
   for (int k = 0; k < 3; ++k)
     c[k] = -(cam.R[k] * cam.t[0] + cam.R[3 + k] * cam.t[1] + cam.R[6 + k] * cam.t[2]);
-  const Rot3 h = rotationOf(phi);
+  const core::Rot3 h = core::rotationOf(phi);
   const double d[3] = {c[0] - phi.x, c[1] - phi.y, c[2] - phi.z};
   for (int k = 0; k < 3; ++k)
     out[k] = h[static_cast<std::size_t>(k)] * d[0] + h[static_cast<std::size_t>(3 + k)] * d[1] + h[static_cast<std::size_t>(6 + k)] * d[2];
@@ -150,13 +150,13 @@ CorrespondenceLines::CorrespondenceLines(std::size_t maxLines, int maxSegments, 
 {
 }
 
-std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineViews &outlines, const Phi &phi, const LineShape &shape,
+std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineViews &outlines, const core::Phi &phi, const LineShape &shape,
                                          const ColourHistograms &colours, int scale, std::size_t maxLines, double minContinuous)
 {
   m_n = 0;
   const int L = shape.segments();
   if (L > m_maxSegments || scale > m_maxScale || scale < 1)
-    throw Error("precise stage: a line of " + std::to_string(L) + " segments of " + std::to_string(scale) +
+    throw core::Error("precise stage: a line of " + std::to_string(L) + " segments of " + std::to_string(scale) +
                 " px exceeds the buffers");
   const Composed c = compose(cam, phi);
   double cm[3];
@@ -166,7 +166,7 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
   const int P = L * scale;
   const int D = shape.distributionLength, F = shape.functionLength;
   for (std::size_t k = 0; k < sel.count; ++k) {
-    const ContourPoint &q = outlines.point(sel.at(k));
+    const core::ContourPoint &q = outlines.point(sel.at(k));
     Projected pr;
     if (!projectContour(cam, c, q, pr))
       continue;
@@ -249,7 +249,7 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
   return m_n;
 }
 
-std::size_t CorrespondenceLines::accumulate(const LineCamera &cam, const Phi &phi, double weight, double g[6], double H[36],
+std::size_t CorrespondenceLines::accumulate(const LineCamera &cam, const core::Phi &phi, double weight, double g[6], double H[36],
                                             double *residual2) const
 {
   const Composed c = compose(cam, phi);
@@ -292,7 +292,7 @@ std::size_t CorrespondenceLines::accumulate(const LineCamera &cam, const Phi &ph
   return n;
 }
 
-void CorrespondenceLines::collectColours(const LineCamera &cam, const OutlineViews &outlines, const Phi &phi, ColourHistograms &colours,
+void CorrespondenceLines::collectColours(const LineCamera &cam, const OutlineViews &outlines, const core::Phi &phi, ColourHistograms &colours,
                                          std::size_t maxLines, double skipPx, double maxPx) const
 {
   const Composed c = compose(cam, phi);
@@ -300,7 +300,7 @@ void CorrespondenceLines::collectColours(const LineCamera &cam, const OutlineVie
   cameraInModel(cam, phi, cm);
   const Selection sel = select(outlines, outlines.nearest(cm), maxLines);
   for (std::size_t k = 0; k < sel.count; ++k) {
-    const ContourPoint &q = outlines.point(sel.at(k));
+    const core::ContourPoint &q = outlines.point(sel.at(k));
     Projected pr;
     if (!projectContour(cam, c, q, pr))
       continue;
@@ -321,4 +321,4 @@ void CorrespondenceLines::collectColours(const LineCamera &cam, const OutlineVie
   }
 }
 
-} // namespace pm
+} // namespace pm::precise

@@ -5,18 +5,18 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::precise {
 
-InteriorTerm::InteriorTerm(const PhotoModel &model, std::size_t maxPoints)
+InteriorTerm::InteriorTerm(const core::PhotoModel &model, std::size_t maxPoints)
 {
   if (!model.hasColours)
-    throw Error("the precise stage's interior term needs a model whose points carry the surface's colour (version 5)");
-  auto add = [&](const std::vector<ModelPoint> &pts) {
+    throw core::Error("the precise stage's interior term needs a model whose points carry the surface's colour (version 5)");
+  auto add = [&](const std::vector<core::ModelPoint> &pts) {
     View v;
     v.begin = m_points.size();
     const std::size_t n = pts.size(), count = std::min(n, maxPoints);
     for (std::size_t k = 0; k < count; ++k) {
-      const ModelPoint &q = pts[k * n / count];
+      const core::ModelPoint &q = pts[k * n / count];
       Point p;
       p.X[0] = q.x, p.X[1] = q.y, p.X[2] = q.z;
       double c[2];
@@ -29,7 +29,7 @@ InteriorTerm::InteriorTerm(const PhotoModel &model, std::size_t maxPoints)
     m_views.push_back(v);
   };
   add(model.inner);
-  for (const ModelView &mv : model.views)
+  for (const core::ModelView &mv : model.views)
     add(mv.inner);
 }
 
@@ -82,9 +82,9 @@ inline bool chromaAndGradient(const LineCamera &cam, double u, double v, double 
 namespace {
 
 //! cMo of \e cam at \e phi (R row-major, t in mm) and hRo.
-void composeCamera(const LineCamera &cam, const Phi &phi, double R[9], double t[3], Rot3 &hRo)
+void composeCamera(const LineCamera &cam, const core::Phi &phi, double R[9], double t[3], core::Rot3 &hRo)
 {
-  hRo = rotationOf(phi);
+  hRo = core::rotationOf(phi);
   const double th[3] = {phi.x, phi.y, phi.z};
   for (int r = 0; r < 3; ++r) {
     for (int k = 0; k < 3; ++k)
@@ -96,13 +96,13 @@ void composeCamera(const LineCamera &cam, const Phi &phi, double R[9], double t[
 
 } // namespace
 
-std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const Phi &phi, double h, InteriorSamples &s) const
+std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double h, InteriorSamples &s) const
 {
   s.n = 0;
   if (view >= m_views.size())
     return 0;
   double R[9], t[3];
-  Rot3 hRo;
+  core::Rot3 hRo;
   composeCamera(cam, phi, R, t, hRo);
   for (std::size_t i = m_views[view].begin; i < m_views[view].end && s.n < s.samples.size(); ++i) {
     const Point &p = m_points[i];
@@ -129,11 +129,11 @@ std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const
   return s.n;
 }
 
-std::size_t InteriorTerm::accumulate(const LineCamera &cam, const Phi &phi, const InteriorSamples &s, double sigma, double weight,
+std::size_t InteriorTerm::accumulate(const LineCamera &cam, const core::Phi &phi, const InteriorSamples &s, double sigma, double weight,
                                      double g[6], double H[36], double *residual2)
 {
   double R[9], t[3];
-  Rot3 hRo;
+  core::Rot3 hRo;
   composeCamera(cam, phi, R, t, hRo);
   const double inv2 = weight / (sigma * sigma), huber = 2.0 * sigma;
   double Hl[21] = {0};
@@ -187,4 +187,4 @@ std::size_t InteriorTerm::accumulate(const LineCamera &cam, const Phi &phi, cons
   return used;
 }
 
-} // namespace pm
+} // namespace pm::precise

@@ -4,14 +4,14 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::precise {
 
-OutlineViews::OutlineViews(const PhotoModel &model)
+OutlineViews::OutlineViews(const core::PhotoModel &model)
 {
   if (!model.hasContours())
-    throw Error("the precise stage needs a model with outlines (an all-around model of version 5; remake older models "
+    throw core::Error("the precise stage needs a model with outlines (an all-around model of version 5; remake older models "
                 "with pm-make-model)");
-  auto add = [&](const double c[3], const std::vector<ContourPoint> &pts) {
+  auto add = [&](const double c[3], const std::vector<core::ContourPoint> &pts) {
     View v;
     const double n = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     for (int k = 0; k < 3; ++k)
@@ -23,7 +23,7 @@ OutlineViews::OutlineViews(const PhotoModel &model)
     m_views.push_back(v);
   };
   add(model.cameraMm, model.contour);
-  for (const ModelView &mv : model.views)
+  for (const core::ModelView &mv : model.views)
     add(mv.cameraMm, mv.contour);
 }
 
@@ -41,4 +41,4 @@ std::size_t OutlineViews::nearest(const double c[3]) const
   return best;
 }
 
-} // namespace pm
+} // namespace pm::precise

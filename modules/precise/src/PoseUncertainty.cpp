@@ -8,7 +8,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::precise {
 
 double PoseUncertainty::maxMm() const { return *std::max_element(sigmaMm.begin(), sigmaMm.end()); }
 
@@ -62,7 +62,7 @@ void UncertaintyModel::validate() const
 {
   for (std::size_t i = 0; i < 6; ++i)
     if (!(std::isfinite(scale[i]) && scale[i] > 0 && std::isfinite(floor[i]) && floor[i] >= 0))
-      throw Error("uncertainty model: every scale must be positive and every floor non-negative (and finite)");
+      throw core::Error("uncertainty model: every scale must be positive and every floor non-negative (and finite)");
 }
 
-} // namespace pm
+} // namespace pm::precise

@@ -9,13 +9,13 @@
 #include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::precise {
 
 void PreciseParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("precise stage: ") + what);
+      throw core::Error(std::string("precise stage: ") + what);
   };
   check(lines >= 8 && lines <= 10000, "the lines per camera must lie in [8, 10000]");
   for (const auto *sc : {&scales, &nearScales}) {
@@ -44,12 +44,12 @@ void PreciseParams::validate() const
   s.prepare();
 }
 
-PreciseStage::PreciseStage(const StereoRig &rig, const PhotoModel &model, const PreciseParams &params)
+PreciseStage::PreciseStage(const core::StereoRig &rig, const core::PhotoModel &model, const PreciseParams &params)
     : m_params((params.validate(), params)), m_outlines(model)
 {
   rig.validate();
   m_params.shape.prepare();
-  const RigCamera *rc[2] = {&rig.left, &rig.right};
+  const core::RigCamera *rc[2] = {&rig.left, &rig.right};
   int maxScale = 1;
   for (int s : m_params.scales)
     maxScale = std::max(maxScale, s);
@@ -66,7 +66,7 @@ PreciseStage::PreciseStage(const StereoRig &rig, const PhotoModel &model, const 
     c.px = rc[k]->cam.get_px(), c.py = rc[k]->cam.get_py(), c.u0 = rc[k]->cam.get_u0(), c.v0 = rc[k]->cam.get_v0();
     c.w = static_cast<int>(rc[k]->width), c.h = static_cast<int>(rc[k]->height);
     if (!rc[k]->distortion.isNone()) {
-      m_undistort[k] = std::make_shared<UndistortMap>(*rc[k]);
+      m_undistort[k] = std::make_shared<core::UndistortMap>(*rc[k]);
       c.nearest = m_undistort[k]->nearest().data();
     }
     m_lines[k] = std::make_unique<CorrespondenceLines>(m_params.lines, m_params.shape.segments(), maxScale);
@@ -89,7 +89,7 @@ void PreciseStage::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> 
   const vpImage<vpRGBa> *im[2] = {&left, &right};
   for (std::size_t k = 0; k < 2; ++k) {
     if (static_cast<int>(im[k]->getWidth()) != m_cams[k].w || static_cast<int>(im[k]->getHeight()) != m_cams[k].h)
-      throw Error(std::string("precise stage: the ") + (k ? "right" : "left") + " image is " + std::to_string(im[k]->getWidth()) +
+      throw core::Error(std::string("precise stage: the ") + (k ? "right" : "left") + " image is " + std::to_string(im[k]->getWidth()) +
                   "x" + std::to_string(im[k]->getHeight()) + " but its camera is " + std::to_string(m_cams[k].w) + "x" +
                   std::to_string(m_cams[k].h));
     m_cams[k].image = im[k]->bitmap;
@@ -97,25 +97,25 @@ void PreciseStage::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> 
   m_hasImages = true;
 }
 
-PreciseResult PreciseStage::refine(const Phi &start, bool near)
+PreciseResult PreciseStage::refine(const core::Phi &start, bool near)
 {
   if (!m_hasImages)
-    throw Error("precise stage: refine() before setImages()");
+    throw core::Error("precise stage: refine() before setImages()");
   if (!start.isValid())
-    throw Error("precise stage: an invalid start pose " + start.toString());
+    throw core::Error("precise stage: an invalid start pose " + start.toString());
   PreciseResult res;
   res.phi = start;
   if (!m_colours.ready()) // nothing to tell target from background with yet
     return res;
   const PreciseParams &p = m_params;
-  Phi phi = start;
+  core::Phi phi = start;
   std::size_t n[2] = {0, 0};
   const std::vector<int> &scales = near ? p.nearScales : p.scales;
   const std::vector<double> &sigmas = near ? p.nearSigmasPx : p.sigmasPx;
   for (std::size_t si = 0; si < scales.size(); ++si) {
     const int scale = scales[si];
     const bool interior = m_interior && scale <= p.interiorMaxScale;
-    BatchPool::shared().run(2, [&](std::size_t k) {
+    core::BatchPool::shared().run(2, [&](std::size_t k) {
       n[k] = m_lines[k]->measure(m_cams[k], m_outlines, phi, p.shape, m_colours, scale, p.lines, p.minContinuous);
     });
     if (n[0] + n[1] < p.minLines)
@@ -127,7 +127,7 @@ PreciseResult PreciseStage::refine(const Phi &start, bool near)
       // once per scale instead, the stage ended 1.3-2.0 deg off where it ends 0.5-0.8 deg off now, in
       // test_precise; counted only along the outline's weak directions, it helped one case and hurt two).
       double g[2][6] = {{0}}, H[2][36] = {{0}};
-      BatchPool::shared().run(2, [&](std::size_t k) {
+      core::BatchPool::shared().run(2, [&](std::size_t k) {
         m_lines[k]->accumulate(m_cams[k], phi, weight, g[k], H[k], nullptr);
         if (interior && m_interior->measure(m_cams[k], m_lines[k]->viewpoint(), phi, scale, m_samples[k]) > 0)
           InteriorTerm::accumulate(m_cams[k], phi, m_samples[k], p.interiorSigma, p.interiorWeight, g[k], H[k], nullptr);
@@ -147,7 +147,7 @@ PreciseResult PreciseStage::refine(const Phi &start, bool near)
       double twist[6];
       for (int k = 0; k < 6; ++k)
         twist[k] = step(k);
-      const Phi next = applyTwist(phi, twist);
+      const core::Phi next = core::applyTwist(phi, twist);
       if (!next.isValid())
         return res;
       phi = next;
@@ -175,12 +175,12 @@ PreciseResult PreciseStage::refine(const Phi &start, bool near)
   return res;
 }
 
-double PreciseStage::objective(const Phi &phi)
+double PreciseStage::objective(const core::Phi &phi)
 {
   if (!m_hasImages)
-    throw Error("precise stage: objective() before setImages()");
+    throw core::Error("precise stage: objective() before setImages()");
   if (!phi.isValid())
-    throw Error("precise stage: an invalid pose " + phi.toString());
+    throw core::Error("precise stage: an invalid pose " + phi.toString());
   const int scale = m_params.scales.back();
   double sum = 0;
   std::size_t n = 0;
@@ -208,7 +208,7 @@ double PreciseStage::objective(const Phi &phi)
   return value;
 }
 
-void PreciseStage::learnColours(const Phi &phi)
+void PreciseStage::learnColours(const core::Phi &phi)
 {
   if (!m_hasImages || !phi.isValid())
     return;
@@ -217,4 +217,4 @@ void PreciseStage::learnColours(const Phi &phi)
   m_colours.update(m_params.learningRate, m_params.learningRate);
 }
 
-} // namespace pm
+} // namespace pm::precise

@@ -103,7 +103,7 @@ int runArmProgram(int argc, char **argv, vpRobot &robot, const std::string &armN
   } catch (const CLI::ParseError &e) {
     std::cerr << app.get_name() << ": usage error: " << e.what() << " (see --help)" << std::endl;
     return 2;
-  } catch (const Error &e) {
+  } catch (const core::Error &e) {
     std::cerr << "error: " << e.what() << std::endl;
   } catch (const vpException &e) {
     std::cerr << "error: ViSP: " << e.getStringMessage() << std::endl;

@@ -32,7 +32,7 @@ struct Cameras
   lab::ArmCameraSource *simulated = nullptr; //!< source, when it is the lab's
 };
 
-Cameras openCameras(const CameraOptions &o, const StereoRig &rig, robot::Arm &arm,
+Cameras openCameras(const CameraOptions &o, const core::StereoRig &rig, robot::Arm &arm,
                     std::function<vpHomogeneousMatrix(double)> h0MoAt, long maxPairs)
 {
   Cameras c;
@@ -89,13 +89,13 @@ std::string poseText(const vpHomogeneousMatrix &M)
 
 void runPassSession(robot::Arm &arm, const CameraOptions &cameras, const PassOptions &pass, std::ostream &out)
 {
-  const StereoRig rig = io::loadRig(cameras.rig);
+  const core::StereoRig rig = io::loadRig(cameras.rig);
   const bool live = cameras.simulate.empty();
   if (live && pass.backgrounds && !isatty(STDIN_FILENO))
-    throw Error("the pass's backgrounds need someone at a terminal to remove the target (or --no-backgrounds)");
+    throw core::Error("the pass's backgrounds need someone at a terminal to remove the target (or --no-backgrounds)");
   const vpHomogeneousMatrix h0Mo(0, 0, 1e-3 * cameras.distanceMm, 0, 0, 0);
   Cameras c = openCameras(cameras, rig, arm, [h0Mo](double) { return h0Mo; }, 0);
-  PassPlan plan;
+  model::PassPlan plan;
   plan.views = pass.count;
   plan.distanceMm = cameras.distanceMm;
   hand::PassRecording rec;
@@ -117,11 +117,11 @@ void runPassSession(robot::Arm &arm, const CameraOptions &cameras, const PassOpt
       out << "\rpass: " << done << "/" << total << " pairs" << (done == total ? "\n" : "") << std::flush;
     if (g_interrupted) {
       arm.stop();
-      throw Error("the pass was interrupted (Ctrl-C) after " + std::to_string(done) + " of " + std::to_string(total) +
+      throw core::Error("the pass was interrupted (Ctrl-C) after " + std::to_string(done) + " of " + std::to_string(total) +
                   " pairs: the arm is stopped where it was, nothing written");
     }
   };
-  const std::vector<PassView> views = hand::recordPass(arm, *c.source, plan, rec);
+  const std::vector<model::PassView> views = hand::recordPass(arm, *c.source, plan, rec);
   io::saveViewsFolder(views, pass.views);
   out << "wrote " << views.size() << " views of the " << arm.model().title() << "'s pass to " << pass.views << " ("
       << c.source->describe() << "); next: pm-make-model --views " << pass.views << " --rig " << cameras.rig << " --out MODEL"
@@ -130,17 +130,17 @@ void runPassSession(robot::Arm &arm, const CameraOptions &cameras, const PassOpt
 
 void runServoSession(robot::Arm &arm, const CameraOptions &cameras, const ServoOptions &servo, std::ostream &out)
 {
-  const StereoRig rig = io::loadRig(cameras.rig);
-  const PhotoModel model = io::loadPhotoModel(servo.model);
-  ServoParams sp;
+  const core::StereoRig rig = io::loadRig(cameras.rig);
+  const core::PhotoModel model = io::loadPhotoModel(servo.model);
+  servo::ServoParams sp;
   if (!servo.desired.empty())
     sp.hdMo = io::readPoseYaml(servo.desired);
   // --simulate: the target moves in front of the hand (50 mm across, 40 mm up and 60 mm nearer, back).
   const double d = cameras.distanceMm;
   const sim::Trajectory steps({{0, 0, d, 0, 0, 0}, {50, 0, d, 0, 0, 0}, {50, -40, d - 60, 0, 0, 0}, {0, 0, d, 0, 0, 0}}, 1.5, 1.5);
   const long maxPairs = servo.durationS > 0 ? static_cast<long>(std::floor(servo.durationS * cameras.fps)) + 1 : 0;
-  Cameras c = openCameras(cameras, rig, arm, [&steps](double t) { return toHomogeneousMatrix(steps.at(t)); }, maxPairs);
-  hand::HandLoop loop(rig, model, TrackerParams(), sp, hand::GuardParams(), *c.source, arm, cameras.fps);
+  Cameras c = openCameras(cameras, rig, arm, [&steps](double t) { return core::toHomogeneousMatrix(steps.at(t)); }, maxPairs);
+  hand::HandLoop loop(rig, model, tracker::TrackerParams(), sp, hand::GuardParams(), *c.source, arm, cameras.fps);
   if (servo.desired.empty())
     loop.keepWhereFound();
   InterruptScope ctrlC;

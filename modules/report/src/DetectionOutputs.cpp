@@ -14,23 +14,23 @@
 namespace pm::report {
 
 namespace {
-nlohmann::json phiJson(const Phi &p) { return {p.x, p.y, p.z, p.e1, p.e2, p.e3}; }
+nlohmann::json phiJson(const core::Phi &p) { return {p.x, p.y, p.z, p.e1, p.e2, p.e3}; }
 } // namespace
 
-PoseErrors poseErrors(const Phi &a, const Phi &b)
+PoseErrors poseErrors(const core::Phi &a, const core::Phi &b)
 {
   PoseErrors e;
-  e.positionMm = translationDistanceMm(a, b);
+  e.positionMm = core::translationDistanceMm(a, b);
   e.orientation = std::max({std::fabs(a.e1 - b.e1), std::fabs(a.e2 - b.e2), std::fabs(a.e3 - b.e3)});
-  e.rotationDeg = rotationDistanceDeg(a, b);
+  e.rotationDeg = core::rotationDistanceDeg(a, b);
   return e;
 }
 
-std::string writeDetection(const std::string &dir, const DetectionOutputs &o, const StereoFitness &fitness,
+std::string writeDetection(const std::string &dir, const DetectionOutputs &o, const core::StereoFitness &fitness,
                            const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR)
 {
-  const Detection &d = o.detection;
-  const TrackResult &best = d.best;
+  const tracker::Detection &d = o.detection;
+  const tracker::TrackResult &best = d.best;
   io::StagedFiles files(dir);
   io::writeImage(sideBySide(drawPointScores(IL, fitness.pointScores(best.phi, 0), "detection, left"),
                             drawPointScores(IR, fitness.pointScores(best.phi, 1), "right")),
@@ -48,7 +48,7 @@ std::string writeDetection(const std::string &dir, const DetectionOutputs &o, co
                    {"budget", o.budget}};
   if (o.haveTruth) {
     const PoseErrors e = poseErrors(best.phi, o.truth), ep = poseErrors(best.phi, o.peak);
-    const Phi &t = o.truth;
+    const core::Phi &t = o.truth;
     s["truth"] = phiJson(t);
     s["position_error_mm"] = e.positionMm;
     s["orientation_error"] = e.orientation;
@@ -67,7 +67,7 @@ std::string writeDetection(const std::string &dir, const DetectionOutputs &o, co
 
 std::string describeDetection(const DetectionOutputs &o, const std::string &dir)
 {
-  const TrackResult &b = o.detection.best;
+  const tracker::TrackResult &b = o.detection.best;
   std::ostringstream out;
   out << std::fixed << std::setprecision(2) << "detected in " << o.source << "\n  pose [" << b.phi.x << ", " << b.phi.y << ", " << b.phi.z
       << ", " << std::setprecision(4) << b.phi.e1 << ", " << b.phi.e2 << ", " << b.phi.e3 << "], F = " << b.fitness << " ("

@@ -19,7 +19,7 @@ namespace {
 const char *kVarNames[6] = {"x [mm]", "y [mm]", "z [mm]", "eps1", "eps2", "eps3"};
 const char *kVarShort[6] = {"x", "y", "z", "e1", "e2", "e3"};
 
-Grid2D toGrid(const FitnessMap &m)
+Grid2D toGrid(const core::FitnessMap &m)
 {
   Grid2D g;
   g.xName = kVarNames[m.spec.a];
@@ -33,7 +33,7 @@ Grid2D toGrid(const FitnessMap &m)
   return g;
 }
 
-nlohmann::json countsJson(const FitnessCounts &c)
+nlohmann::json countsJson(const core::FitnessCounts &c)
 {
   return nlohmann::json{{"in_match", c.inMatch},   {"in_background", c.inBackground},   {"in_other", c.inOther}, {"in_off", c.inOff},
                         {"out_background", c.outBackground}, {"out_other", c.outOther}, {"out_off", c.outOff}};
@@ -46,11 +46,11 @@ const GridResult &FitnessMapsResult::grid(const std::string &name) const
   for (const GridResult &g : grids)
     if (g.name == name)
       return g;
-  throw Error("no fitness map '" + name + "'");
+  throw core::Error("no fitness map '" + name + "'");
 }
 
-FitnessMapsResult writeFitnessMaps(const std::string &dir, const StereoFitness &fit, std::size_t modelPoints, const Phi &truth,
-                                   const std::vector<FitnessMapSpec> &specs, const std::string &source, const vpImage<vpRGBa> &IL,
+FitnessMapsResult writeFitnessMaps(const std::string &dir, const core::StereoFitness &fit, std::size_t modelPoints, const core::Phi &truth,
+                                   const std::vector<core::FitnessMapSpec> &specs, const std::string &source, const vpImage<vpRGBa> &IL,
                                    const vpImage<vpRGBa> &IR, const std::function<void()> &onMap)
 {
   io::StagedFiles files(dir);
@@ -60,11 +60,11 @@ FitnessMapsResult writeFitnessMaps(const std::string &dir, const StereoFitness &
   std::ostringstream report;
   for (const auto &s : specs) {
     // The variables not on the grid are held at the truth (the model's true pose).
-    const FitnessMap m = computeFitnessMap(fit, truth, s);
+    const core::FitnessMap m = core::computeFitnessMap(fit, truth, s);
     r.seconds += m.seconds;
     const std::string name = std::string(kVarShort[s.a]) + kVarShort[s.b];
     const double ta = truth[s.a], tb = truth[s.b], ea = m.peakA - ta, eb = m.peakB - tb;
-    Phi peak = truth;
+    core::Phi peak = truth;
     peak[s.a] = m.peakA;
     peak[s.b] = m.peakB;
     const double reproj = fit.reprojectionRms(peak, truth);
@@ -85,7 +85,7 @@ FitnessMapsResult writeFitnessMaps(const std::string &dir, const StereoFitness &
       for (int i = 0; i < m.nA; ++i)
         csv << m.coordA(i) << "," << m.coordB(j) << "," << m.at(i, j) << "\n";
     if (!csv)
-      throw Error("cannot write " + files.finalPath("map_" + name + ".csv"));
+      throw core::Error("cannot write " + files.finalPath("map_" + name + ".csv"));
     std::ostringstream title;
     title << std::setprecision(3) << "F over " << kVarShort[s.a] << "-" << kVarShort[s.b] << ", max " << m.maxFitness;
     io::writeImage(drawHeatMap(toGrid(m), title.str(),
@@ -98,7 +98,7 @@ FitnessMapsResult writeFitnessMaps(const std::string &dir, const StereoFitness &
     if (onMap)
       onMap();
   }
-  const FitnessDetail atTruth = fit.evaluateDetail(truth);
+  const core::FitnessDetail atTruth = fit.evaluateDetail(truth);
   r.fitnessAtTruth = atTruth.fitness;
   io::writeImage(sideBySide(drawPointScores(IL, fit.pointScores(truth, 0), "model at the truth, left"),
                             drawPointScores(IR, fit.pointScores(truth, 1), "right")),
@@ -108,7 +108,7 @@ FitnessMapsResult writeFitnessMaps(const std::string &dir, const StereoFitness &
                                {"model_points", modelPoints},
                                {"fitness_at_truth", atTruth.fitness},
                                {"counts_at_truth", {{"left", countsJson(atTruth.countsLeft)}, {"right", countsJson(atTruth.countsRight)}}},
-                               {"kernel", StereoFitness::kernelName()},
+                               {"kernel", core::StereoFitness::kernelName()},
                                {"grids", grids},
                                {"time_s", r.seconds}};
   r.summaryJson = summary.dump(2) + "\n";

@@ -33,8 +33,8 @@ bool LiveView::open(const std::string &title)
 #endif
 }
 
-void LiveView::show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::vector<PointScore> &scoresLeft,
-                    const std::vector<PointScore> &scoresRight, const std::string &status)
+void LiveView::show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::vector<core::PointScore> &scoresLeft,
+                    const std::vector<core::PointScore> &scoresRight, const std::string &status)
 {
   if (!m_wanted)
     return;
@@ -63,7 +63,7 @@ void LiveView::show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, c
 void LiveView::capture(const std::string &pngPath)
 {
   if (!m_display)
-    throw Error("no window to capture");
+    throw core::Error("no window to capture");
   vpImage<vpRGBa> shot;
   vpDisplay::getImage(m_frame, shot);
   io::writeImage(shot, pngPath);

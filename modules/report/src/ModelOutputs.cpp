@@ -15,7 +15,7 @@ namespace pm::report {
 
 ModelFigures writeModelOutputs(const std::string &dir, const ModelOutputs &o, double seconds)
 {
-  const PhotoModel &m = o.build.model;
+  const core::PhotoModel &m = o.build.model;
   const bool hasDepth = m.hasDepth();
   io::StagedFiles files(dir);
   io::savePhotoModel(m, files.stage("model.json"));
@@ -57,7 +57,7 @@ ModelFigures writeModelOutputs(const std::string &dir, const ModelOutputs &o, do
 
 std::string describeModel(const ModelOutputs &o, const ModelFigures &figures, const std::string &dir, double seconds)
 {
-  const PhotoModel &m = o.build.model;
+  const core::PhotoModel &m = o.build.model;
   const bool hasDepth = m.hasDepth();
   std::ostringstream out;
   out << std::fixed << std::setprecision(1) << "photo-model of " << o.source << "\n"
@@ -74,7 +74,7 @@ std::string describeModel(const ModelOutputs &o, const ModelFigures &figures, co
   return out.str();
 }
 
-std::string describeAllAroundModel(const AllAroundBuild &b, const std::string &source, const std::string &dir, bool withViews)
+std::string describeAllAroundModel(const model::AllAroundBuild &b, const std::string &source, const std::string &dir, bool withViews)
 {
   std::ostringstream out;
   out << std::fixed << std::setprecision(1) << "all-around photo-model of " << source << "\n"

@@ -10,7 +10,7 @@
 
 namespace pm::report {
 
-ProfileResult writeObjectiveProfiles(io::StagedFiles &files, const StereoFitness &fitness, PreciseStage &precise, const Phi &truth,
+ProfileResult writeObjectiveProfiles(io::StagedFiles &files, const core::StereoFitness &fitness, precise::PreciseStage &precise, const core::Phi &truth,
                                      double rangeDeg, double stepDeg)
 {
   ProfileResult res;
@@ -33,7 +33,7 @@ ProfileResult writeObjectiveProfiles(io::StagedFiles &files, const StereoFitness
       const double deg = k * stepDeg;
       double tw[6] = {0, 0, 0, 0, 0, 0};
       tw[3 + axis] = deg * M_PI / 180;
-      const Phi p = applyTwist(truth, tw);
+      const core::Phi p = core::applyTwist(truth, tw);
       const double F = fitness.evaluate(p), J = precise.objective(p);
       csv << names[axis] << "," << deg << "," << F << "," << J << "\n";
       f.t.push_back(deg), f.y.push_back(F);

@@ -32,8 +32,8 @@ vpRGBa depthColor(double t)
 }
 } // namespace
 
-vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &depthMm, const PhotoModel &m,
-                          const std::vector<ModelPoint> &dropped, double nearMm, double farMm)
+vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &depthMm, const core::PhotoModel &m,
+                          const std::vector<core::ModelPoint> &dropped, double nearMm, double farMm)
 {
   const unsigned h = photo.getHeight(), w = photo.getWidth(), bar = 40;
   vpImage<vpRGBa> I(h + bar, w, vpRGBa(255, 255, 255));
@@ -65,7 +65,7 @@ vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &de
   return I;
 }
 
-vpImage<vpRGBa> drawModelOnPhoto(const vpImage<vpRGBa> &photo, const vpImage<unsigned char> &region, const PhotoModel &m)
+vpImage<vpRGBa> drawModelOnPhoto(const vpImage<vpRGBa> &photo, const vpImage<unsigned char> &region, const core::PhotoModel &m)
 {
   vpImage<vpRGBa> I = photo;
   const unsigned h = I.getHeight(), w = I.getWidth();
@@ -84,7 +84,7 @@ vpImage<vpRGBa> drawModelOnPhoto(const vpImage<vpRGBa> &photo, const vpImage<uns
   return I;
 }
 
-vpImage<vpRGBa> drawModel(const PhotoModel &m)
+vpImage<vpRGBa> drawModel(const core::PhotoModel &m)
 {
   vpImage<vpRGBa> I(m.photoHeight, m.photoWidth, vpRGBa(40, 40, 40));
   for (const auto &p : m.inner)
@@ -95,21 +95,21 @@ vpImage<vpRGBa> drawModel(const PhotoModel &m)
   return I;
 }
 
-vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<PointScore> &scores,
+vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<core::PointScore> &scores,
                                 const std::string &label)
 {
   vpImage<vpRGBa> I = image;
   for (const auto &s : scores) {
-    if (s.cls == PointScore::Off)
+    if (s.cls == core::PointScore::Off)
       continue;
     vpColor c = vpColor::gray;
     switch (s.cls) {
-    case PointScore::InMatch: c = vpColor::green; break;
-    case PointScore::InBackground: c = vpColor::yellow; break;
-    case PointScore::InOther: c = vpColor::lightGray; break;
-    case PointScore::OutBackground: c = vpColor(60, 160, 255); break;
-    case PointScore::OutOther: c = vpColor::red; break;
-    case PointScore::Off: break;
+    case core::PointScore::InMatch: c = vpColor::green; break;
+    case core::PointScore::InBackground: c = vpColor::yellow; break;
+    case core::PointScore::InOther: c = vpColor::lightGray; break;
+    case core::PointScore::OutBackground: c = vpColor(60, 160, 255); break;
+    case core::PointScore::OutOther: c = vpColor::red; break;
+    case core::PointScore::Off: break;
     }
     vpImageDraw::drawPoint(I, vpImagePoint(s.v, s.u), c, 3);
   }

@@ -7,28 +7,28 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::rmga {
 
 void LocalSimplexParams::validate() const
 {
   for (double s : step)
     if (!(s > 0 && std::isfinite(s)))
-      throw Error("local simplex: every first step must be positive and finite");
+      throw core::Error("local simplex: every first step must be positive and finite");
   if (maxEvaluations < 7)
-    throw Error("local simplex: at least 7 evaluations are needed (the first simplex)");
+    throw core::Error("local simplex: at least 7 evaluations are needed (the first simplex)");
   if (!(tolerance >= 0 && tolerance < 1))
-    throw Error("local simplex: the tolerance must lie in [0, 1)");
+    throw core::Error("local simplex: the tolerance must lie in [0, 1)");
 }
 
-LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, const LocalSimplexParams &params)
+LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const core::Phi &start, const LocalSimplexParams &params)
 {
   params.validate();
   if (!start.isValid())
-    throw Error("local simplex: invalid start pose " + start.toString());
+    throw core::Error("local simplex: invalid start pose " + start.toString());
   constexpr int kN = 6, kV = kN + 1;
   LocalSimplexResult r;
   // Minimises the negated score; an invalid pose is worse than any.
-  auto cost = [&](const Phi &p) {
+  auto cost = [&](const core::Phi &p) {
     ++r.evaluations;
     if (!p.isValid())
       return std::numeric_limits<double>::infinity();
@@ -36,7 +36,7 @@ LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, cons
     f.evaluate(&p, 1, &v);
     return -v;
   };
-  std::array<Phi, kV> x;
+  std::array<core::Phi, kV> x;
   std::array<double, kV> c;
   x.fill(start);
   c[0] = cost(start);
@@ -50,7 +50,7 @@ LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, cons
     for (int i = 0; i < kV; ++i)
       order[static_cast<std::size_t>(i)] = i;
     std::sort(order.begin(), order.end(), [&](int a, int b) { return c[static_cast<std::size_t>(a)] < c[static_cast<std::size_t>(b)]; });
-    std::array<Phi, kV> xs;
+    std::array<core::Phi, kV> xs;
     std::array<double, kV> cs;
     for (std::size_t i = 0; i < kV; ++i) {
       xs[i] = x[static_cast<std::size_t>(order[i])];
@@ -67,7 +67,7 @@ LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, cons
         spread = std::max(spread, std::fabs(x[v][d] - x[0][d]) / params.step[d]);
     if (spread <= params.tolerance)
       break;
-    Phi centroid;
+    core::Phi centroid;
     for (std::size_t d = 0; d < kN; ++d) {
       double s = 0;
       for (std::size_t v = 0; v < kN; ++v)
@@ -75,15 +75,15 @@ LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, cons
       centroid[d] = s / kN;
     }
     auto along = [&](double t) { // centroid + t (worst - centroid)
-      Phi p;
+      core::Phi p;
       for (std::size_t d = 0; d < kN; ++d)
         p[d] = centroid[d] + t * (x[kN][d] - centroid[d]);
       return p;
     };
-    const Phi reflected = along(-1);
+    const core::Phi reflected = along(-1);
     const double cr = cost(reflected);
     if (cr < c[0]) {
-      const Phi expanded = along(-2);
+      const core::Phi expanded = along(-2);
       const double ce = r.evaluations < params.maxEvaluations ? cost(expanded) : std::numeric_limits<double>::infinity();
       x[kN] = ce < cr ? expanded : reflected;
       c[kN] = std::min(ce, cr);
@@ -98,7 +98,7 @@ LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, cons
         }
         break;
       }
-      const Phi contracted = along(cr < c[kN] ? -0.5 : 0.5);
+      const core::Phi contracted = along(cr < c[kN] ? -0.5 : 0.5);
       const double cc = cost(contracted);
       if (cc < std::min(cr, c[kN])) {
         x[kN] = contracted;
@@ -118,4 +118,4 @@ LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, cons
   return r;
 }
 
-} // namespace pm
+} // namespace pm::rmga

@@ -6,7 +6,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::rmga {
 
 namespace {
 bool lessFit(const Individual &a, const Individual &b) { return a.fitness < b.fitness; }
@@ -25,7 +25,7 @@ void RmGaParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("RM-GA parameter ") + what);
+      throw core::Error(std::string("RM-GA parameter ") + what);
   };
   check(population >= 2 && population <= 100000, "population must lie in [2, 100000]");
   check(elite >= 1 && elite < population, "elite must lie in [1, population)");
@@ -68,13 +68,13 @@ void RmGa::randomize()
   m_havePrev = m_havePrev2 = false;
 }
 
-void RmGa::seedAround(const Phi &p, double spread)
+void RmGa::seedAround(const core::Phi &p, double spread)
 {
   m_pop.clear();
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   m_pop.push_back(make(encode(m_space.clamp(p), m_space)));
   for (int k = 1; k < m_params.population; ++k) {
-    Phi q = p;
+    core::Phi q = p;
     for (std::size_t i = 0; i < 6; ++i)
       q[i] += spread * (m_space.hi[i] - m_space.lo[i]) * u(m_rng);
     m_pop.push_back(make(encode(m_space.clamp(q), m_space)));
@@ -82,7 +82,7 @@ void RmGa::seedAround(const Phi &p, double spread)
   m_havePrev = m_havePrev2 = false;
 }
 
-void RmGa::setAnchor(const Phi &p)
+void RmGa::setAnchor(const core::Phi &p)
 {
   m_anchor = m_space.clamp(p);
   m_hasAnchor = true;
@@ -90,7 +90,7 @@ void RmGa::setAnchor(const Phi &p)
 
 void RmGa::restart(int keep, int isolate)
 {
-  const Phi *anchor = m_hasAnchor ? &m_anchor : nullptr;
+  const core::Phi *anchor = m_hasAnchor ? &m_anchor : nullptr;
   std::uniform_int_distribution<int> gene(0, Genome::kMax);
   std::uniform_int_distribution<int> near(-Genome::kMax / 20, Genome::kMax / 20);
   // Near the anchor is wider: the target may have moved while it was not seen (measured on
@@ -110,7 +110,7 @@ void RmGa::restart(int keep, int isolate)
     const std::size_t block = first > 0 ? (k - first) % blocks : (anchor ? (k % 2 == 0 ? 0 : 6 + (k / 2) % 2) : 0);
     Genome g = block >= 6 ? anchorGenome : m_pop[0].genome;
     if (block == 4 || block == 5) {
-      Phi q = m_pop[0].phi;
+      core::Phi q = m_pop[0].phi;
       q.e1 = block == 4 ? -q.e1 : 0.0;
       q.e2 = block == 4 ? -q.e2 : 0.0;
       g = encode(m_space.clamp(q), m_space);
@@ -139,7 +139,7 @@ void RmGa::scatter(int keep, int isolate)
     m_isolated = m_pop[0].genome;
 }
 
-void RmGa::transform(const std::function<Phi(const Phi &)> &f)
+void RmGa::transform(const std::function<core::Phi(const core::Phi &)> &f)
 {
   for (auto &ind : m_pop) {
     const double fit = ind.fitness;
@@ -154,7 +154,7 @@ void RmGa::transform(const std::function<Phi(const Phi &)> &f)
     m_prev2 = f(m_prev2);
 }
 
-void RmGa::inject(const Phi &p, double fitness)
+void RmGa::inject(const core::Phi &p, double fitness)
 {
   if (m_pop.empty() || !p.isValid())
     return;
@@ -249,14 +249,14 @@ void RmGa::refine(FitnessFunction &f, double maxEvals, double &cost, long &candi
 FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sameFrame)
 {
   if (!(budget.evaluations > 0) && !(budget.milliseconds > 0))
-    throw Error("RM-GA: the frame budget must be a positive number of evaluations or milliseconds");
+    throw core::Error("RM-GA: the frame budget must be a positive number of evaluations or milliseconds");
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsedMs = [&] { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); };
   FrameResult r;
 
   // 2. Prediction: constant velocity of the best pose over the last two frames.
   if (m_params.predictMotion && m_havePrev && m_havePrev2 && !sameFrame) {
-    Phi v;
+    core::Phi v;
     for (std::size_t i = 0; i < 6; ++i)
       v[i] = m_prev[i] - m_prev2[i];
     // The prediction is a guess: the best of the last frame also stays where it was, in place of
@@ -264,7 +264,7 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sam
     const Individual stay = *std::max_element(m_pop.begin(), m_pop.end(), lessFit);
     const auto worst = std::min_element(m_pop.begin(), m_pop.end(), lessFit) - m_pop.begin();
     for (auto &ind : m_pop) {
-      Phi q = ind.phi;
+      core::Phi q = ind.phi;
       for (std::size_t i = 0; i < 6; ++i)
         q[i] += v[i];
       ind = make(encode(m_space.clamp(q), m_space));
@@ -345,4 +345,4 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sam
   return r;
 }
 
-} // namespace pm
+} // namespace pm::rmga

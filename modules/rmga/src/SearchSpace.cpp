@@ -5,27 +5,27 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::rmga {
 
 void SearchSpace::validate() const
 {
   for (std::size_t i = 0; i < 6; ++i)
     if (!std::isfinite(lo[i]) || !std::isfinite(hi[i]) || !(hi[i] > lo[i]))
-      throw Error("search space: the range of variable " + std::to_string(i) + " must be finite and increasing");
+      throw core::Error("search space: the range of variable " + std::to_string(i) + " must be finite and increasing");
   for (std::size_t i = 3; i < 6; ++i)
     if (lo[i] < -1 || hi[i] > 1)
-      throw Error("search space: the ranges of eps must lie in [-1, 1]");
+      throw core::Error("search space: the ranges of eps must lie in [-1, 1]");
 }
 
-Phi SearchSpace::clamp(const Phi &p) const
+core::Phi SearchSpace::clamp(const core::Phi &p) const
 {
-  Phi q = p;
+  core::Phi q = p;
   for (std::size_t i = 0; i < 6; ++i)
     q[i] = std::min(hi[i], std::max(lo[i], p[i]));
   return q;
 }
 
-bool SearchSpace::contains(const Phi &p) const
+bool SearchSpace::contains(const core::Phi &p) const
 {
   for (std::size_t i = 0; i < 6; ++i)
     if (!(p[i] >= lo[i] && p[i] <= hi[i]))
@@ -33,9 +33,9 @@ bool SearchSpace::contains(const Phi &p) const
   return true;
 }
 
-Phi decode(const Genome &g, const SearchSpace &s)
+core::Phi decode(const Genome &g, const SearchSpace &s)
 {
-  Phi p;
+  core::Phi p;
   for (std::size_t i = 0; i < 6; ++i)
     p[i] = s.lo[i] + (s.hi[i] - s.lo[i]) * g.gene[i] / static_cast<double>(Genome::kMax);
   const double n2 = p.epsNorm2();
@@ -48,7 +48,7 @@ Phi decode(const Genome &g, const SearchSpace &s)
   return p;
 }
 
-Genome encode(const Phi &p, const SearchSpace &s)
+Genome encode(const core::Phi &p, const SearchSpace &s)
 {
   Genome g;
   for (std::size_t i = 0; i < 6; ++i) {
@@ -77,4 +77,4 @@ Genome crossover(const Genome &a, const Genome &b, int cut)
   return c;
 }
 
-} // namespace pm
+} // namespace pm::rmga

@@ -9,23 +9,23 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::rmga {
 
 void SmoothAscentParams::validate() const
 {
   if (maxEvaluations < 1 || maxEvaluations > 1000000)
-    throw Error("smooth ascent: the evaluations must lie in [1, 1000000]");
+    throw core::Error("smooth ascent: the evaluations must lie in [1, 1000000]");
   if (!(minStepPx > 0) || !(firstStepPx >= minStepPx) || !(maxStepPx >= firstStepPx) || !std::isfinite(maxStepPx))
-    throw Error("smooth ascent: the steps must satisfy 0 < minimum <= first <= maximum (finite), in px");
+    throw core::Error("smooth ascent: the steps must satisfy 0 < minimum <= first <= maximum (finite), in px");
   if (!(grow >= 1 && grow <= 10) || !(shrink > 0 && shrink < 1))
-    throw Error("smooth ascent: the step must grow by a factor in [1, 10] and shrink by one in (0, 1)");
+    throw core::Error("smooth ascent: the step must grow by a factor in [1, 10] and shrink by one in (0, 1)");
 }
 
-SmoothAscentResult climbSmooth(SmoothFunction &f, const Phi *starts, std::size_t n, const SmoothAscentParams &params)
+SmoothAscentResult climbSmooth(SmoothFunction &f, const core::Phi *starts, std::size_t n, const SmoothAscentParams &params)
 {
   params.validate();
   if (n == 0 || static_cast<long>(n) > params.maxEvaluations)
-    throw Error("smooth ascent: between 1 and maxEvaluations (" + std::to_string(params.maxEvaluations) + ") starts are needed, got " +
+    throw core::Error("smooth ascent: between 1 and maxEvaluations (" + std::to_string(params.maxEvaluations) + ") starts are needed, got " +
                 std::to_string(n));
   using Vec6 = Eigen::Matrix<double, 6, 1>;
   using Mat6 = Eigen::Matrix<double, 6, 6, Eigen::RowMajor>;
@@ -34,7 +34,7 @@ SmoothAscentResult climbSmooth(SmoothFunction &f, const Phi *starts, std::size_t
   Mat6 M;
   for (std::size_t k = 0; k < n; ++k) {
     if (!starts[k].isValid())
-      throw Error("smooth ascent from an invalid pose " + starts[k].toString());
+      throw core::Error("smooth ascent from an invalid pose " + starts[k].toString());
     Vec6 gk;
     Mat6 Mk;
     const double s = f.valueAndGradient(starts[k], gk.data(), Mk.data());
@@ -57,7 +57,7 @@ SmoothAscentResult climbSmooth(SmoothFunction &f, const Phi *starts, std::size_t
     if (!(motion > 0) || !std::isfinite(motion))
       break; // a flat spot: no direction to climb
     const Vec6 step = d * (stepPx / motion);
-    const Phi trial = applyTwist(r.best, step.data());
+    const core::Phi trial = core::applyTwist(r.best, step.data());
     if (!trial.isValid()) {
       stepPx *= params.shrink;
       continue;
@@ -76,4 +76,4 @@ SmoothAscentResult climbSmooth(SmoothFunction &f, const Phi *starts, std::size_t
   return r;
 }
 
-} // namespace pm
+} // namespace pm::rmga

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-namespace pm {
+namespace pm::rmga {
 
-void StereoObjective::evaluate(const Phi *poses, std::size_t n, double *fitness)
+void StereoObjective::evaluate(const core::Phi *poses, std::size_t n, double *fitness)
 {
   if (m_score == Score::Fitness) {
     m_f.evaluate(poses, n, fitness);
@@ -20,7 +20,7 @@ void StereoObjective::evaluate(const Phi *poses, std::size_t n, double *fitness)
     fitness[i] = m_f.evaluateSmooth(poses[i]);
 }
 
-void StereoObjective::evaluateOrReject(const Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost)
+void StereoObjective::evaluateOrReject(const core::Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost)
 {
   if (m_score == Score::Coarse)
     m_f.evaluate(poses, n, fitness, 1e300, cost); // every pose on the first share of points
@@ -30,4 +30,4 @@ void StereoObjective::evaluateOrReject(const Phi *poses, std::size_t n, double r
     m_f.evaluate(poses, n, fitness, rejectBelow - m_rejectMargin, cost);
 }
 
-} // namespace pm
+} // namespace pm::rmga

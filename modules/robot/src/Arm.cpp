@@ -9,9 +9,9 @@ namespace pm::robot {
 Arm::Arm(std::unique_ptr<ArmModel> model, const vpHomogeneousMatrix &eMh) : m_model(std::move(model)), m_eMh(eMh)
 {
   if (!m_model)
-    throw Error("an arm needs its model");
+    throw core::Error("an arm needs its model");
   if (!eMh.isAnHomogeneousMatrix())
-    throw Error(m_model->title() + ": the rig's mounting eMh is not a rigid transformation");
+    throw core::Error(m_model->title() + ": the rig's mounting eMh is not a rigid transformation");
 }
 
 vpMatrix Arm::hJe(const vpColVector &q) const

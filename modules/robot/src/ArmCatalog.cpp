@@ -17,7 +17,7 @@ std::unique_ptr<ArmModel> makeArmModel(const std::string &name)
     return std::make_unique<Viper850Model>();
   if (name == "afma6")
     return std::make_unique<Afma6Model>();
-  throw Error("unknown robot '" + name + "' (one of: pa10, viper850, afma6)");
+  throw core::Error("unknown robot '" + name + "' (one of: pa10, viper850, afma6)");
 }
 
 } // namespace pm::robot

@@ -44,10 +44,10 @@ vpColVector ArmModel::degrees(std::initializer_list<double> deg)
 void ArmModel::requireJoints(const vpColVector &q, const std::string &what) const
 {
   if (q.size() != dof())
-    throw Error(title() + ": " + std::to_string(dof()) + " " + what + " expected, got " + std::to_string(q.size()));
+    throw core::Error(title() + ": " + std::to_string(dof()) + " " + what + " expected, got " + std::to_string(q.size()));
   for (unsigned i = 0; i < q.size(); ++i)
     if (!std::isfinite(q[i]))
-      throw Error(title() + ": " + what + ": joint " + std::to_string(i + 1) + " is not finite");
+      throw core::Error(title() + ": " + what + ": joint " + std::to_string(i + 1) + " is not finite");
 }
 
 std::string ArmModel::describeJoint(unsigned i, const vpColVector &q) const

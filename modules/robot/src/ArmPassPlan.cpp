@@ -8,19 +8,19 @@
 namespace pm::robot {
 
 std::vector<ArmPassView> planArmPass(const ArmModel &arm, const vpColVector &q0, const vpHomogeneousMatrix &eMh,
-                                     const PassPlan &plan, double distanceMm)
+                                     const model::PassPlan &plan, double distanceMm)
 {
   arm.requireJoints(q0, "rest joint values");
-  const std::vector<PassDirection> dirs = passDirections(plan);
+  const std::vector<model::PassDirection> dirs = model::passDirections(plan);
   const vpHomogeneousMatrix fMh0 = arm.fMe(q0) * eMh, hMe = eMh.inverse();
-  const auto flangeGoal = [&](const PassDirection &d) { return fMh0 * passPose(d, distanceMm) * hMe; };
+  const auto flangeGoal = [&](const model::PassDirection &d) { return fMh0 * model::passPose(d, distanceMm) * hMe; };
   std::vector<ArmPassView> out;
   vpColVector q = q0;
   for (std::size_t k = 0; k < dirs.size(); ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "view %02zu", k);
     // From the rest joints first (the arm stays near its rest shape), else from the last view's.
-    PassDirection d = dirs[k];
+    model::PassDirection d = dirs[k];
     IkResult ik;
     for (double roll : {0, 30, -30, 60, -60, 90, -90}) {
       d.rollDeg = roll;
@@ -36,7 +36,7 @@ std::vector<ArmPassView> planArmPass(const ArmModel &arm, const vpColVector &q0,
     }
     if (!ik.reached) {
       ik = inverseKinematics(arm, flangeGoal(dirs[k]), q); // to name the joint in the way
-      throw Error(std::string(name) + " of the pass (" + std::to_string(static_cast<int>(dirs[k].tiltDeg)) + " deg toward " +
+      throw core::Error(std::string(name) + " of the pass (" + std::to_string(static_cast<int>(dirs[k].tiltDeg)) + " deg toward " +
                   std::to_string(static_cast<int>(dirs[k].azimuthDeg)) + " deg) is out of the " + arm.title() +
                   "'s reach within its joint limits, also turned and tilted down to half" +
                   (ik.blockingJoint >= 0 ? ": " + arm.describeJoint(static_cast<unsigned>(ik.blockingJoint), ik.q) + " is in the way"

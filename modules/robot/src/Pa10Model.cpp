@@ -37,7 +37,7 @@ vpColVector perJoint(const double (&v)[7], double num, double den)
 vpHomogeneousMatrix Pa10Model::forward(const vpColVector &q)
 {
   if (q.size() != kDof)
-    throw Error("PA-10: 7 joint values expected, got " + std::to_string(q.size()));
+    throw core::Error("PA-10: 7 joint values expected, got " + std::to_string(q.size()));
   vpHomogeneousMatrix T;
   for (unsigned i = 0; i < kDof; ++i)
     T = T * dh(q[i], kD[i], kAlphaDeg[i] * M_PI / 180);
@@ -49,7 +49,7 @@ vpHomogeneousMatrix Pa10Model::fMe(const vpColVector &q) const { return forward(
 vpMatrix Pa10Model::jacobianBase(const vpColVector &q)
 {
   if (q.size() != kDof)
-    throw Error("PA-10: 7 joint values expected");
+    throw core::Error("PA-10: 7 joint values expected");
   // Joint i turns about z_{i-1} through p_{i-1} (frames of the DH chain).
   std::array<vpHomogeneousMatrix, kDof + 1> T;
   for (unsigned i = 0; i < kDof; ++i)

@@ -11,7 +11,7 @@ SteppedArm::SteppedArm(std::unique_ptr<ArmModel> model, const vpHomogeneousMatri
     : Arm(std::move(model), eMh), m_cycle(cycle)
 {
   if (!(cycle > 0))
-    throw Error(m_model->title() + ": the servo cycle must be positive");
+    throw core::Error(m_model->title() + ": the servo cycle must be positive");
   m_qmin = m_model->jointMin();
   m_qmax = m_model->jointMax();
   m_speed = m_model->speedLimits();
@@ -23,14 +23,14 @@ void SteppedArm::setJointVelocity(const vpColVector &qd)
 {
   if (qd.size() != m_model->dof()) {
     stop();
-    throw Error(m_model->title() + ": " + std::to_string(m_model->dof()) + " joint velocities expected, got " + std::to_string(qd.size()));
+    throw core::Error(m_model->title() + ": " + std::to_string(m_model->dof()) + " joint velocities expected, got " + std::to_string(qd.size()));
   }
   // Over a joint's speed limit, the whole command is scaled down: the motion keeps its direction.
   double scale = 1.0;
   for (unsigned i = 0; i < qd.size(); ++i) {
     if (!std::isfinite(qd[i])) {
       stop();
-      throw Error(m_model->title() + ": the commanded velocity of joint " + std::to_string(i + 1) + " is not finite");
+      throw core::Error(m_model->title() + ": the commanded velocity of joint " + std::to_string(i + 1) + " is not finite");
     }
     scale = std::min(scale, m_speed[i] / std::max(std::fabs(qd[i]), 1e-12));
   }
@@ -53,7 +53,7 @@ void SteppedArm::integrate(double dt)
 void SteppedArm::advance(double dt)
 {
   if (!(dt >= 0))
-    throw Error(m_model->title() + ": time runs forward only");
+    throw core::Error(m_model->title() + ": time runs forward only");
   const int n = std::max(1, static_cast<int>(std::lround(dt / m_cycle)));
   for (int i = 0; i < n; ++i)
     integrate(dt / n);
@@ -64,7 +64,7 @@ void SteppedArm::moveTo(const vpColVector &q)
   m_model->requireJoints(q, "joint values to move to");
   for (unsigned i = 0; i < q.size(); ++i)
     if (q[i] < m_qmin[i] || q[i] > m_qmax[i])
-      throw Error(m_model->title() + ": cannot move to " + m_model->describeJoint(i, q) + ": out of its limits");
+      throw core::Error(m_model->title() + ": cannot move to " + m_model->describeJoint(i, q) + ": out of its limits");
   m_q = q;
   m_qdot = 0;
 }

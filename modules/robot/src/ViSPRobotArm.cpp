@@ -19,7 +19,7 @@ ViSPRobotArm::ViSPRobotArm(vpRobot &robot, std::unique_ptr<ArmModel> model, cons
   // ViSP's simulators' setPosition() in joint space races their own thread: always our velocity loop.
   m_params.moveByVelocity = params.moveByVelocity || dynamic_cast<vpRobotWireFrameSimulator *>(&robot) != nullptr;
   if (!(params.stallS > 0 && params.positionTolerance > 0))
-    throw Error(m_model->title() + ": the stall time and the position tolerance must be positive");
+    throw core::Error(m_model->title() + ": the stall time and the position tolerance must be positive");
   m_command.resize(m_model->dof(), true);
 }
 
@@ -37,7 +37,7 @@ void ViSPRobotArm::fail(const std::string &what)
     stop();
   } catch (...) {
   }
-  throw Error(m_model->title() + " (" + describe() + "): " + what + "; the arm was told to stop");
+  throw core::Error(m_model->title() + " (" + describe() + "): " + what + "; the arm was told to stop");
 }
 
 vpColVector ViSPRobotArm::q()
@@ -118,7 +118,7 @@ void ViSPRobotArm::moveTo(const vpColVector &goal)
   const vpColVector lo = m_model->jointMin(), hi = m_model->jointMax();
   for (unsigned i = 0; i < goal.size(); ++i)
     if (goal[i] < lo[i] || goal[i] > hi[i])
-      throw Error(m_model->title() + ": cannot move to " + m_model->describeJoint(i, goal) + ": out of its limits");
+      throw core::Error(m_model->title() + ": cannot move to " + m_model->describeJoint(i, goal) + ": out of its limits");
   if (m_params.moveByVelocity)
     driveTo(goal);
   else
@@ -180,7 +180,7 @@ void ViSPRobotArm::stop()
     io::QuietStdout quiet;
     m_robot.setRobotState(vpRobot::STATE_STOP);
   } catch (const vpException &e) {
-    throw Error(m_model->title() + ": the robot did not take the stop (" + e.getStringMessage() + ")");
+    throw core::Error(m_model->title() + ": the robot did not take the stop (" + e.getStringMessage() + ")");
   }
 }
 

@@ -26,7 +26,7 @@ std::unique_ptr<vpRobot> makeSimulator(const std::string &name, const ArmModel &
     sim->init(vpAfma6::TOOL_CCMOP, vpCameraParameters::perspectiveProjWithoutDistortion);
     robot = std::move(sim);
   } else {
-    throw Error("robot '" + name + "' has no ViSP simulator running in real time (viper850 or afma6; the PA-10's runs are stepped)");
+    throw core::Error("robot '" + name + "' has no ViSP simulator running in real time (viper850 or afma6; the PA-10's runs are stepped)");
   }
   robot->setVerbose(false);
   // ViSP scales a joint velocity command as a whole to these (0.7 rad/s and 0.2 m/s by default): the model's limits instead.

@@ -8,18 +8,18 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::servo {
 
 void ServoParams::validate() const
 {
   if (!hdMo.isAnHomogeneousMatrix())
-    throw Error("servo: the desired pose is not a rigid transformation");
+    throw core::Error("servo: the desired pose is not a rigid transformation");
   if (!(gainAtZero > 0 && gainAtInfinity > 0 && gainSlopeAtZero > 0) || gainAtInfinity > gainAtZero)
-    throw Error("servo: the adaptive gain needs 0 < gain at infinity <= gain at zero and a positive slope");
+    throw core::Error("servo: the adaptive gain needs 0 < gain at infinity <= gain at zero and a positive slope");
   if (!(maxHandSpeed > 0 && maxHandRotation > 0))
-    throw Error("servo: the hand's speed limits must be positive");
+    throw core::Error("servo: the hand's speed limits must be positive");
   if (!(feedForwardSmoothing >= 0 && feedForwardSmoothing < 1))
-    throw Error("servo: the feed-forward smoothing must lie in [0, 1)");
+    throw core::Error("servo: the feed-forward smoothing must lie in [0, 1)");
 }
 
 PbvsServo::PbvsServo(const ServoParams &params) : m_params(params), m_vObj(6, 0.0)
@@ -48,9 +48,9 @@ vpColVector PbvsServo::computeJointVelocity(const vpHomogeneousMatrix &hMo, cons
   for (unsigned r = 0; r < 3; ++r)
     for (unsigned c = 0; c < 4; ++c)
       if (!std::isfinite(hMo[r][c]))
-        throw Error("servo: the estimated pose is not finite");
+        throw core::Error("servo: the estimated pose is not finite");
   if (!hMo.isAnHomogeneousMatrix())
-    throw Error("servo: the estimated pose is not a rigid transformation");
+    throw core::Error("servo: the estimated pose is not a rigid transformation");
   const vpHomogeneousMatrix cdMc = m_params.hdMo * hMo.inverse();
   m_t.buildFrom(cdMc);
   m_tu.buildFrom(cdMc);
@@ -66,7 +66,7 @@ vpColVector PbvsServo::computeJointVelocity(const vpHomogeneousMatrix &hMo, cons
     double lin[3], ang[3];
     if (targetTwist) {
       if (targetTwist->size() != 6)
-        throw Error("servo: the target's twist needs 6 components");
+        throw core::Error("servo: the target's twist needs 6 components");
       for (unsigned i = 0; i < 3; ++i) {
         lin[i] = (*targetTwist)[i];
         ang[i] = m_params.feedForwardRotation ? (*targetTwist)[3 + i] : 0.0;
@@ -107,7 +107,7 @@ vpColVector PbvsServo::computeJointVelocity(const vpHomogeneousMatrix &hMo, cons
     qdot += m_task.secondaryTaskJointLimitAvoidance(q, qdot, qmin, qmax);
   for (unsigned i = 0; i < qdot.size(); ++i)
     if (!std::isfinite(qdot[i]))
-      throw Error("servo: the control law gave a non-finite velocity");
+      throw core::Error("servo: the control law gave a non-finite velocity");
   // Safety: the hand's twist within its limits (the whole command scaled, so its direction is kept).
   const vpColVector v = eJe * qdot;
   const double lin = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -116,4 +116,4 @@ vpColVector PbvsServo::computeJointVelocity(const vpHomogeneousMatrix &hMo, cons
   return qdot * k;
 }
 
-} // namespace pm
+} // namespace pm::servo

@@ -2,16 +2,16 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::servo {
 
 void PoseFilterParams::validate() const
 {
   for (double a : {alphaT, alphaR})
     if (!(a > 0 && a <= 1))
-      throw Error("pose filter: alpha must lie in (0, 1]");
+      throw core::Error("pose filter: alpha must lie in (0, 1]");
   for (double b : {betaT, betaR})
     if (!(b >= 0 && b < 2))
-      throw Error("pose filter: beta must lie in [0, 2)");
+      throw core::Error("pose filter: beta must lie in [0, 2)");
 }
 
 PoseFilter::PoseFilter(const PoseFilterParams &p) : m_p(p) { p.validate(); }
@@ -54,4 +54,4 @@ vpColVector PoseFilter::twist() const
   return v;
 }
 
-} // namespace pm
+} // namespace pm::servo

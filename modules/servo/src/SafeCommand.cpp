@@ -5,22 +5,22 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::servo {
 
 SafeCommand::SafeCommand(const vpColVector &speedLimits, const vpColVector &accelerationLimits)
     : m_vmax(speedLimits), m_amax(accelerationLimits), m_cmd(speedLimits.size(), 0.0)
 {
   if (speedLimits.size() == 0 || speedLimits.size() != accelerationLimits.size())
-    throw Error("safe command: one speed and one acceleration limit per joint are needed");
+    throw core::Error("safe command: one speed and one acceleration limit per joint are needed");
   for (unsigned i = 0; i < speedLimits.size(); ++i)
     if (!(speedLimits[i] > 0 && std::isfinite(speedLimits[i]) && accelerationLimits[i] > 0 && std::isfinite(accelerationLimits[i])))
-      throw Error("safe command: the speed and acceleration limits must be positive and finite");
+      throw core::Error("safe command: the speed and acceleration limits must be positive and finite");
 }
 
 const vpColVector &SafeCommand::next(const vpColVector &wanted, double dt)
 {
   if (!(dt > 0) || !std::isfinite(dt))
-    throw Error("safe command: the cycle time must be positive");
+    throw core::Error("safe command: the cycle time must be positive");
   const unsigned n = m_cmd.size();
   vpColVector target(n, 0.0);
   bool finite = wanted.size() == n;
@@ -50,4 +50,4 @@ bool SafeCommand::stopped() const
   return true;
 }
 
-} // namespace pm
+} // namespace pm::servo

@@ -310,7 +310,7 @@ bool Rasterizer::simdAvailable()
 void Rasterizer::reset(unsigned width, unsigned height, unsigned supersampling)
 {
   if (width == 0 || height == 0 || supersampling < 1 || supersampling > 4)
-    throw Error("renderer: image size must be positive and supersampling in [1, 4]");
+    throw core::Error("renderer: image size must be positive and supersampling in [1, 4]");
   m_w = width;
   m_h = height;
   m_ss = supersampling;
@@ -340,9 +340,9 @@ namespace {
 void checkDrawable(const Mesh &mesh, std::uint8_t id)
 {
   if (!mesh.texture || mesh.texture->width <= 0 || mesh.texture->height <= 0)
-    throw Error("renderer: mesh without texture");
+    throw core::Error("renderer: mesh without texture");
   if (id == 0)
-    throw Error("renderer: object id 0 means nothing drawn; use 1..255");
+    throw core::Error("renderer: object id 0 means nothing drawn; use 1..255");
 }
 } // namespace
 
@@ -351,9 +351,9 @@ void Rasterizer::draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vp
 {
   checkDrawable(mesh, id);
   if (m_W == 0)
-    throw Error("renderer: reset() the image size before drawing");
+    throw core::Error("renderer: reset() the image size before drawing");
   if (!m_colorValid)
-    throw Error("renderer: clear() after render() before drawing on (render() keeps no whole-frame colours)");
+    throw core::Error("renderer: clear() after render() before drawing on (render() keeps no whole-frame colours)");
   if (m_color.size() != kStride * m_invDepth.size())
     m_color.assign(kStride * m_invDepth.size(), 0.f);
   if (m_scratch.empty())
@@ -370,7 +370,7 @@ void Rasterizer::render(const float clearColor[3], const DrawCall *calls, std::s
                         vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed)
 {
   if (m_W == 0)
-    throw Error("renderer: reset() the image size before rendering");
+    throw core::Error("renderer: reset() the image size before rendering");
   for (std::size_t c = 0; c < n; ++c)
     checkDrawable(*calls[c].mesh, calls[c].id);
   for (int k = 0; k < 3; ++k)
@@ -465,7 +465,7 @@ void Rasterizer::project(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const
   if (shadow) {
     const double *t = shadow->towardLight();
     if (std::fabs(t[0] - Lo[0]) + std::fabs(t[1] - Lo[1]) + std::fabs(t[2] - Lo[2]) > 1e-6)
-      throw Error("renderer: the shadow map was made for another light direction");
+      throw core::Error("renderer: the shadow map was made for another light direction");
   }
   const double specK = light.specular >= 0 ? light.specular : static_cast<double>(mesh.specular);
   const double shin = light.shininess >= 0 ? light.shininess : static_cast<double>(mesh.shininess);
@@ -681,7 +681,7 @@ inline unsigned char toByte(double val)
 void Rasterizer::resolve(vpImage<vpRGBa> &out, double exposure, double noiseSigma, std::uint64_t noiseSeed) const
 {
   if (!m_colorValid)
-    throw Error("renderer: render() resolved its own frame; clear() and draw() before resolve()");
+    throw core::Error("renderer: render() resolved its own frame; clear() and draw() before resolve()");
   out.resize(m_h, m_w);
   resolveRows(out, 0, m_h, m_color.data(), 0, exposure, noiseSigma, noiseSeed);
 }

@@ -71,13 +71,13 @@ void RobotPA10::getPosition(const vpRobot::vpControlFrameType frame, vpColVector
 void RobotPA10::setPosition(const vpRobot::vpControlFrameType frame, const vpColVector &q)
 {
   if (frame != vpRobot::JOINT_STATE)
-    throw Error("PA-10: setPosition takes joint values (JOINT_STATE)");
+    throw core::Error("PA-10: setPosition takes joint values (JOINT_STATE)");
   if (q.size() != kDof)
-    throw Error("PA-10: 7 joint values expected");
+    throw core::Error("PA-10: 7 joint values expected");
   vpColVector clamped(kDof);
   for (unsigned i = 0; i < kDof; ++i) {
     if (!std::isfinite(q[i]))
-      throw Error("PA-10: joint value not finite");
+      throw core::Error("PA-10: joint value not finite");
     clamped[i] = std::min(qmax[i], std::max(qmin[i], q[i]));
   }
   m_arm->moveTo(clamped);
@@ -89,16 +89,16 @@ void RobotPA10::setVelocity(const vpRobot::vpControlFrameType frame, const vpCol
   vpColVector qd;
   if (frame == vpRobot::JOINT_STATE) {
     if (vel.size() != kDof)
-      throw Error("PA-10: 7 joint velocities expected");
+      throw core::Error("PA-10: 7 joint velocities expected");
     qd = vel;
   } else if (frame == vpRobot::END_EFFECTOR_FRAME || frame == vpRobot::CAMERA_FRAME) {
     if (vel.size() != 6)
-      throw Error("PA-10: a 6-component twist expected");
+      throw core::Error("PA-10: a 6-component twist expected");
     vpMatrix J;
     get_eJe(J);
     qd = J.pseudoInverse() * vel;
   } else {
-    throw Error("PA-10: velocity in joint space or in the end-effector frame only");
+    throw core::Error("PA-10: velocity in joint space or in the end-effector frame only");
   }
   m_arm->setJointVelocity(qd); // scaled down as a whole to the speed limits
 }
@@ -108,7 +108,7 @@ void RobotPA10::step(double dt) { m_arm->advance(dt); }
 void RobotPA10::getDisplacement(const vpRobot::vpControlFrameType frame, vpColVector &d)
 {
   if (frame != vpRobot::JOINT_STATE)
-    throw Error("PA-10: displacement in joint space only");
+    throw core::Error("PA-10: displacement in joint space only");
   d = q() - m_prevQ;
   m_prevQ = q();
 }

@@ -18,7 +18,7 @@ void SceneParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
     if (!ok)
-      throw Error(std::string("scene parameter ") + what);
+      throw core::Error(std::string("scene parameter ") + what);
   };
   check(supersampling >= 1 && supersampling <= 4, "supersampling must lie in [1, 4]");
   check(noiseSigma >= 0 && noiseSigma <= 100, "noise sigma must lie in [0, 100] grey levels");
@@ -36,7 +36,7 @@ void SceneParams::validate() const
   check(sceneSpecular >= 0 && sceneSpecular <= 10, "scene specular must lie in [0, 10]");
   check(sceneShininess >= 1 && sceneShininess <= 1000, "scene shininess must lie in [1, 1000]");
   check(shadowTexelMm >= 0.05 && shadowTexelMm <= 5, "shadow texel must lie in [0.05, 5] mm");
-  Phi d{distractorPose[0], distractorPose[1], distractorPose[2], distractorPose[3], distractorPose[4], distractorPose[5]};
+  core::Phi d{distractorPose[0], distractorPose[1], distractorPose[2], distractorPose[3], distractorPose[4], distractorPose[5]};
   check(d.isValid() && std::fabs(d.x) < 1e4 && std::fabs(d.y) < 1e4 && std::fabs(d.z) < 1e4,
         "distractor pose must be finite, within 10 m, with |eps| <= 1");
 }
@@ -88,7 +88,7 @@ struct Scene::LensCache
 {
   std::mutex mutex;
   std::vector<std::shared_ptr<const LensWarp>> warps;
-  std::shared_ptr<const LensWarp> get(const RigCamera &camera)
+  std::shared_ptr<const LensWarp> get(const core::RigCamera &camera)
   {
     std::vector<double> key{camera.cam.get_px(), camera.cam.get_py(), camera.cam.get_u0(), camera.cam.get_v0(),
                             static_cast<double>(camera.width), static_cast<double>(camera.height)};
@@ -119,7 +119,7 @@ struct Scene::LensCache
     w->canvasW = static_cast<unsigned>(std::ceil(umax - umin) + 3);
     w->canvasH = static_cast<unsigned>(std::ceil(vmax - vmin) + 3);
     if (w->canvasW > 4 * camera.width || w->canvasH > 4 * camera.height)
-      throw Error(camera.name + " camera: its lens (" + camera.distortion.describe() +
+      throw core::Error(camera.name + " camera: its lens (" + camera.distortion.describe() +
                   ") spreads the image over more than four times its size; the simulator does not render it");
     w->canvasCam.initPersProjWithoutDistortion(camera.cam.get_px(), camera.cam.get_py(), camera.cam.get_u0() - umin,
                                                camera.cam.get_v0() - vmin);
@@ -173,7 +173,7 @@ void Scene::setDistractor(const TargetShape &shape)
   m_distractor = buildTargetMesh(shape, m_params.meshStepMm, static_cast<float>(m_params.specular));
 }
 
-void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+void Scene::render(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget) const
 {
   if (camera.distortion.isNone()) {
@@ -181,11 +181,11 @@ void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogene
     return;
   }
   const std::shared_ptr<const LensWarp> warp = m_lensCache->get(camera);
-  RigCamera ideal = camera;
+  core::RigCamera ideal = camera;
   ideal.cam = warp->canvasCam;
   ideal.width = warp->canvasW;
   ideal.height = warp->canvasH;
-  ideal.distortion = LensDistortion();
+  ideal.distortion = core::LensDistortion();
   vpImage<vpRGBa> canvas;
   renderIdeal(raster, ideal, hMo, frame, stream, canvas, withTarget, 0.0);
   out.resize(camera.height, camera.width);
@@ -195,7 +195,7 @@ void Scene::render(Rasterizer &raster, const RigCamera &camera, const vpHomogene
   Rasterizer::addNoise(out, m_params.noiseSigma, hash64(m_params.seed ^ hash64(frame * 8 + stream)));
 }
 
-void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+void Scene::renderIdeal(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                         unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const
 {
   if (raster.width() != camera.width || raster.height() != camera.height || raster.supersampling() != m_params.supersampling)
@@ -250,7 +250,7 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
     const double *d = m_params.distractorPose;
     Lighting look = toyLight;
     look.shadow = nullptr; // the toy's shadow map does not hold it
-    add(m_distractor, cMo * toHomogeneousMatrix(Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), look, 4);
+    add(m_distractor, cMo * core::toHomogeneousMatrix(core::Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), look, 4);
   }
   add(m_backdrop, cMo, light, 1);
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
@@ -258,16 +258,16 @@ void Scene::renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHom
   raster.render(tank, calls, n, camera.cam, out, m_params.exposure, noiseSigma, noiseSeed);
 }
 
-StereoImages Scene::renderStereo(const StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const
+StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const
 {
   StereoImages im;
-  const RigCamera *cams[2] = {&rig.left, &rig.right};
+  const core::RigCamera *cams[2] = {&rig.left, &rig.right};
   vpImage<vpRGBa> *outs[2] = {&im.left, &im.right};
   // The two cameras on two cores, through the pool the fitness uses: an OpenMP region here left
   // libgomp's worker spinning after it, on the core the tracker's helper needs (1,900 evaluations
   // took 5.0 ms with it, 3.2 ms with OMP_WAIT_POLICY=passive).
   std::exception_ptr error[2];
-  BatchPool::shared().run(2, [&](std::size_t i) {
+  core::BatchPool::shared().run(2, [&](std::size_t i) {
     try {
       // Each thread keeps its sample buffers from frame to frame (21 MB at 640 x 480 with
       // supersampling 2) instead of allocating and zeroing them anew (pm-bench
@@ -289,8 +289,8 @@ void Scene::renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, 
                          vpImage<vpRGBa> &background, vpImage<vpRGBa> &withTarget) const
 {
   if (!(distanceMm > 0))
-    throw Error("photo distance must be positive");
-  const RigCamera photo{"photo", cam, w, h, vpHomogeneousMatrix(), LensDistortion()};
+    throw core::Error("photo distance must be positive");
+  const core::RigCamera photo{"photo", cam, w, h, vpHomogeneousMatrix(), core::LensDistortion()};
   const vpHomogeneousMatrix hMo(0, 0, distanceMm * 1e-3, 0, 0, 0);
   Rasterizer r;
   render(r, photo, hMo, 0, 2, background, false);

@@ -83,7 +83,7 @@ std::shared_ptr<const Texture> generate(const SeaBottomParams &p)
 std::shared_ptr<const Texture> makeSeaBottomTexture(const SeaBottomParams &p)
 {
   if (!(p.widthMm > 0 && p.heightMm > 0 && p.texelMm > 0.05) || p.widthMm / p.texelMm * p.heightMm / p.texelMm > 4e7)
-    throw Error("sea bottom: size and texel must be positive, and the texture at most 40 million texels");
+    throw core::Error("sea bottom: size and texel must be positive, and the texture at most 40 million texels");
   // One texture per parameter set is shared by every scene of the process (it is immutable).
   static std::mutex mutex;
   static std::map<std::tuple<double, double, double, std::uint64_t>, std::weak_ptr<const Texture>> cache;

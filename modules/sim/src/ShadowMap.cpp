@@ -12,11 +12,11 @@ ShadowMap::ShadowMap(const Mesh &mesh, const double towardLight[3], double texel
 {
   const double n = std::sqrt(towardLight[0] * towardLight[0] + towardLight[1] * towardLight[1] + towardLight[2] * towardLight[2]);
   if (!(n > 0) || !std::isfinite(n))
-    throw Error("shadow map: the light direction must be a non-zero vector");
+    throw core::Error("shadow map: the light direction must be a non-zero vector");
   if (!(texelM > 0) || !(marginM >= 0))
-    throw Error("shadow map: the texel must be positive and the margin non-negative");
+    throw core::Error("shadow map: the texel must be positive and the margin non-negative");
   if (mesh.vertices.empty() || mesh.triangles.empty())
-    throw Error("shadow map: empty mesh");
+    throw core::Error("shadow map: empty mesh");
   for (int i = 0; i < 3; ++i) {
     m_toward[i] = towardLight[i] / n;
     m_ed[i] = -m_toward[i];

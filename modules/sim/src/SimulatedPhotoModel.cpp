@@ -20,26 +20,26 @@ Scene alone(const Scene &scene)
 } // namespace
 
 SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &inScene, const vpCameraParameters &cam, unsigned w, unsigned h,
-                                            double distanceMm, const PhotoModelParams &params)
+                                            double distanceMm, const model::PhotoModelParams &params)
 {
   const Scene scene = alone(inScene);
   SimulatedPhotoModel s;
   scene.renderPhotos(cam, w, h, distanceMm, s.background, s.photo);
-  s.build = buildPhotoModel(s.background, s.photo, cam, distanceMm, params);
-  const PhotoModel &m = s.build.model;
+  s.build = model::buildPhotoModel(s.background, s.photo, cam, distanceMm, params);
+  const core::PhotoModel &m = s.build.model;
   s.oMm = vpHomogeneousMatrix((m.centroidU - m.u0) * m.distanceMm / m.px * 1e-3,
                               (m.centroidV - m.v0) * m.distanceMm / m.py * 1e-3, 0, 0, 0, 0);
   return s;
 }
 
-SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const StereoRig &rig, double distanceMm,
-                                                  const StereoModelParams &params, double viewTurnDeg)
+SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const core::StereoRig &rig, double distanceMm,
+                                                  const model::StereoModelParams &params, double viewTurnDeg)
 {
   const Scene scene = alone(inScene);
   if (!(distanceMm > 0) || !std::isfinite(distanceMm))
-    throw Error("photo distance must be positive");
+    throw core::Error("photo distance must be positive");
   if (!(viewTurnDeg >= 0 && viewTurnDeg <= 45))
-    throw Error("the further views' turn must lie in [0, 45] deg");
+    throw core::Error("the further views' turn must lie in [0, 45] deg");
   SimulatedPhotoModel s;
   s.stereo = true;
   s.photoHMo = vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0);
@@ -51,8 +51,8 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const St
   scene.render(r, rig.left, hMo, 0, 6, s.photo, true);
   if (!rig.left.distortion.isNone()) {
     // The model's pixels are the ideal image's: the true depth of that image (a pinhole render).
-    RigCamera ideal = rig.left;
-    ideal.distortion = LensDistortion();
+    core::RigCamera ideal = rig.left;
+    ideal.distortion = core::LensDistortion();
     vpImage<vpRGBa> unused;
     scene.render(r, ideal, hMo, 0, 6, unused, true);
   }
@@ -71,7 +71,7 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const St
   scene.render(r, rig.right, hMo, 0, 7, s.photoRight, true);
   // Further views: the hand moved around the scene (toy, backdrop and light turned together about
   // the toy's origin) by +-viewTurnDeg about the hand's x and y axes.
-  std::vector<StereoViewPair> more;
+  std::vector<model::StereoViewPair> more;
   if (viewTurnDeg > 0) {
     const double a = viewTurnDeg * M_PI / 180.0;
     const double axes[4][3] = {{a, 0, 0}, {-a, 0, 0}, {0, a, 0}, {0, -a, 0}};
@@ -79,7 +79,7 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const St
       const vpHomogeneousMatrix turn(vpTranslationVector(0, 0, 0), vpThetaUVector(axes[k][0], axes[k][1], axes[k][2]));
       const vpHomogeneousMatrix hMoK = turn * hMo; // turned about the hand's axes through the toy's origin
       const vpHomogeneousMatrix hMoT(hMo.getTranslationVector(), hMoK.getRotationMatrix());
-      StereoViewPair pr;
+      model::StereoViewPair pr;
       const std::uint64_t frame = static_cast<std::uint64_t>(k + 1);
       scene.render(r, rig.left, hMoT, frame, 4, pr.backgroundLeft, false);
       scene.render(r, rig.right, hMoT, frame, 5, pr.backgroundRight, false);
@@ -89,7 +89,7 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const St
       more.push_back(std::move(pr));
     }
   }
-  StereoPhotoModelBuild b = buildStereoPhotoModel(rig, s.background, s.backgroundRight, s.photo, s.photoRight, more, params);
+  model::StereoPhotoModelBuild b = model::buildStereoPhotoModel(rig, s.background, s.backgroundRight, s.photo, s.photoRight, more, params);
   s.build.model = std::move(b.model);
   s.build.region = std::move(b.regionLeft);
   s.depth = std::move(b.depthLeft);
@@ -105,9 +105,9 @@ std::vector<double> SimulatedPhotoModel::inDepthErrorsMm() const
   std::vector<double> e;
   if (!stereo)
     return e;
-  const PhotoModel &m = build.model;
+  const core::PhotoModel &m = build.model;
   const vpHomogeneousMatrix hMm = photoHMo * oMm;
-  for (const ModelPoint &p : m.inner) {
+  for (const core::ModelPoint &p : m.inner) {
     const long u = std::lround(p.u), v = std::lround(p.v);
     float t = std::numeric_limits<float>::quiet_NaN();
     if (u >= 0 && v >= 0 && u < static_cast<long>(trueDepth.getWidth()) && v < static_cast<long>(trueDepth.getHeight()))

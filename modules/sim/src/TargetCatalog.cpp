@@ -922,9 +922,9 @@ TargetShape makeTarget(const std::string &code, double texelMm)
 {
   const int i = indexOf(code), ri = reliefIndexOf(code);
   if (i < 0 && ri < 0)
-    throw Error("unknown target '" + code + "': the catalogue has C01..C12 and R1..R3");
+    throw core::Error("unknown target '" + code + "': the catalogue has C01..C12 and R1..R3");
   if (!(texelMm > 0.02 && texelMm <= 5))
-    throw Error("target texel size must lie in (0.02, 5] mm");
+    throw core::Error("target texel size must lie in (0.02, 5] mm");
   if (ri >= 0)
     return reliefBuilders()[static_cast<std::size_t>(ri)](texelMm);
   return rasterise(builders()[static_cast<std::size_t>(i)](), texelMm);

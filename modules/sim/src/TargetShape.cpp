@@ -66,7 +66,7 @@ void TargetShape::centreOnOutline()
 void TargetShape::scaleRelief(double s)
 {
   if (!(s >= 0) || !std::isfinite(s))
-    throw Error("relief scale must be a non-negative number");
+    throw core::Error("relief scale must be a non-negative number");
   info.depthMm *= s;
   for (float &h : height)
     h *= static_cast<float>(s);
@@ -77,11 +77,11 @@ void TargetShape::scaleRelief(double s)
 Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
 {
   if (shape.cols < 2 || shape.rows < 2)
-    throw Error("target '" + shape.info.code + "': empty shape grid");
+    throw core::Error("target '" + shape.info.code + "': empty shape grid");
   const std::size_t cells = static_cast<std::size_t>(shape.cols) * static_cast<std::size_t>(shape.rows);
   if (shape.sdf.size() != cells || shape.height.size() != cells || shape.rgb.size() != 3 * cells ||
       (!shape.base.empty() && shape.base.size() != cells))
-    throw Error("target '" + shape.info.code + "': its grids do not match its size");
+    throw core::Error("target '" + shape.info.code + "': its grids do not match its size");
   const double x0 = -shape.originCol * shape.texelMm, y0 = -shape.originRow * shape.texelMm;
   const double x1 = (shape.cols - 1 - shape.originCol) * shape.texelMm;
   const double y1 = (shape.rows - 1 - shape.originRow) * shape.texelMm;
@@ -159,9 +159,9 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm, float specular)
 TargetShape targetFromImage(const vpImage<vpRGBa> &image, double widthMm, double depthMm, const std::string &name)
 {
   if (image.getSize() == 0)
-    throw Error("target image '" + name + "' is empty");
+    throw core::Error("target image '" + name + "' is empty");
   if (!(widthMm > 0) || !(depthMm >= 0))
-    throw Error("target image '" + name + "': width must be positive and depth non-negative");
+    throw core::Error("target image '" + name + "': width must be positive and depth non-negative");
   TargetShape s;
   const int iw = static_cast<int>(image.getWidth()), ih = static_cast<int>(image.getHeight());
   const double mmPerPx = widthMm / iw;
@@ -194,7 +194,7 @@ TargetShape targetFromImage(const vpImage<vpRGBa> &image, double widthMm, double
   double maxIn = 0;
   cv::minMaxLoc(dIn, nullptr, &maxIn);
   if (maxIn <= 0)
-    throw Error("target image '" + name + "': its alpha channel leaves nothing opaque");
+    throw core::Error("target image '" + name + "': its alpha channel leaves nothing opaque");
   const double rho = std::max(1e-6, std::min(depthMm, maxIn * mmPerPx));
   s.sdf.resize(n);
   s.height.resize(n);

@@ -7,7 +7,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::tracker {
 
 const char *toString(TrackState s)
 {
@@ -25,61 +25,61 @@ void TrackerParams::validate() const
   ga.validate();
   fitness.validate();
   if (budgetEvaluations < 0 || !(budgetMs > 0)) // the wall-time budget must make sense even while the evaluations rule
-    throw Error("tracker: the frame budget must be a positive number of evaluations or milliseconds (got " +
+    throw core::Error("tracker: the frame budget must be a positive number of evaluations or milliseconds (got " +
                 std::to_string(budgetEvaluations) + " evaluations, " + std::to_string(budgetMs) + " ms)");
   if (budgetEvaluations > 0 && budgetEvaluations < ga.population)
-    throw Error("tracker: a frame budget of " + std::to_string(budgetEvaluations) +
+    throw core::Error("tracker: a frame budget of " + std::to_string(budgetEvaluations) +
                 " evaluations cannot even evaluate the population of " + std::to_string(ga.population));
   if (!(lockQuality > lostQuality) || !(lostQuality > -1) || !(lockQuality < 1))
-    throw Error("tracker: the qualities must satisfy -1 < lost < lock < 1");
+    throw core::Error("tracker: the qualities must satisfy -1 < lost < lock < 1");
   if (lostFrames < 1)
-    throw Error("tracker: lost frames must be at least 1");
+    throw core::Error("tracker: lost frames must be at least 1");
   if (smoothRefineEvaluations < 0 || smoothRefineEvaluations > 1000000 || !(smoothRefineMaxDrop >= 0))
-    throw Error("tracker: the smooth refinement's evaluations must lie in [0, 1000000] and its fitness drop be non-negative");
+    throw core::Error("tracker: the smooth refinement's evaluations must lie in [0, 1000000] and its fitness drop be non-negative");
   if (smoothRefineEvaluations > 0) {
-    LocalSimplexParams sp = smoothRefine;
+    rmga::LocalSimplexParams sp = smoothRefine;
     sp.maxEvaluations = smoothRefineEvaluations;
     sp.validate();
   }
   if (smoothAscent.maxEvaluations != 0) // 0: off
     smoothAscent.validate();
   if (!(smoothAscentMaxDrop >= 0))
-    throw Error("tracker: the smooth ascent's fitness drop must be non-negative");
+    throw core::Error("tracker: the smooth ascent's fitness drop must be non-negative");
   tiltFilter.validate();
   tiltFilterAllAround.validate();
   if (!(lockConfidence >= 0 && lockConfidence < 1))
-    throw Error("tracker: the lock confidence must lie in [0, 1)");
+    throw core::Error("tracker: the lock confidence must lie in [0, 1)");
   if (!(rejectMarginQ <= 1))
-    throw Error("tracker: the early rejection margin must be at most 1 (negative: off)");
+    throw core::Error("tracker: the early rejection margin must be at most 1 (negative: off)");
   if (!(initSpread >= 0 && initSpread <= 1))
-    throw Error("tracker: the initial spread must lie in [0, 1]");
+    throw core::Error("tracker: the initial spread must lie in [0, 1]");
   if (reverifyAfterFrames < 0 || !(reverifyBelowConfidence >= 0 && reverifyBelowConfidence <= 1) || verifyEvaluations < 0 || verifyEvaluations > 100000000 || !(verifyBudgetFraction > 0 && verifyBudgetFraction < 1) || !(verifyMargin >= 0) ||
       !(verifySwitchMargin >= 0) || !(verifyFarMm > 0) || !(verifyFarDeg > 0) || !(verifySameObjectMm >= 0))
-    throw Error("tracker: the re-verification frames must be non-negative and its confidence lie in [0, 1], the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
+    throw core::Error("tracker: the re-verification frames must be non-negative and its confidence lie in [0, 1], the verification's evaluations lie in [0, 100000000], its budget fraction in (0, 1), its margins and "
                 "same-object distance be non-negative and its far distances positive");
   confidence.validate();
   uncertainty.validate();
   precise.validate();
   if (!(preciseMaxDropQ >= 0) || !(preciseRestartMm > 0) || !(preciseRestartDeg > 0) || !(preciseMaxMoveMm > 0) || !(preciseMaxMoveDeg > 0))
-    throw Error("tracker: the precise stage's fitness drop must be non-negative and its restart and move distances positive");
+    throw core::Error("tracker: the precise stage's fitness drop must be non-negative and its restart and move distances positive");
   if (!(steadyBudgetFraction > 0 && steadyBudgetFraction <= 1) || steadyAfterFrames < 1 || !(steadyQualityDrop >= 0 && steadyQualityDrop < 1) ||
       steadyHueMarginPx < 0 || steadyHueMarginPx > 10000)
-    throw Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1, the steady "
+    throw core::Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1, the steady "
                 "quality drop lie in [0, 1) and the steady hue margin in [0, 10000] px");
 }
 
 namespace {
 
 //! The part \e fraction of \e b; never under one population's evaluations.
-FrameBudget part(const FrameBudget &b, double fraction, int population)
+rmga::FrameBudget part(const rmga::FrameBudget &b, double fraction, int population)
 {
   if (b.evaluations > 0)
-    return FrameBudget::evals(std::max<long>(population, std::lround(fraction * static_cast<double>(b.evaluations))));
-  return FrameBudget::ms(fraction * b.milliseconds);
+    return rmga::FrameBudget::evals(std::max<long>(population, std::lround(fraction * static_cast<double>(b.evaluations))));
+  return rmga::FrameBudget::ms(fraction * b.milliseconds);
 }
 
 //! The challenger's RM-GA: the tracker's, with another seed, no motion prediction and no refinement.
-RmGaParams challengerParams(RmGaParams p)
+rmga::RmGaParams challengerParams(rmga::RmGaParams p)
 {
   p.seed = p.seed * 0x9E3779B97F4A7C15ULL + 0x632BE59BD9B4E019ULL;
   p.predictMotion = false;
@@ -89,36 +89,36 @@ RmGaParams challengerParams(RmGaParams p)
 
 } // namespace
 
-FrameBudget TrackerParams::steadyBudget() const
+rmga::FrameBudget TrackerParams::steadyBudget() const
 {
   return part(budget(), steadyBudgetFraction, ga.population);
 }
 
-PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params)
+PhotoModelTracker::PhotoModelTracker(const core::StereoRig &rig, const core::PhotoModel &model, const TrackerParams &params)
     : m_params((params.validate(), params)), m_fitness(rig, model, params.fitness), m_ga(params.space, params.ga),
       m_challenger(params.space, challengerParams(params.ga)), m_tilt(model.isAllAround() ? params.tiltFilterAllAround : params.tiltFilter),
       m_allAround(model.isAllAround())
 {
-  const FitnessParams &f = params.fitness;
+  const core::FitnessParams &f = params.fitness;
   const double n = static_cast<double>(model.size());
   const double nIn = static_cast<double>(model.inner.size()), nOut = static_cast<double>(model.outer.size());
   m_fBackground = (f.inBackground * nIn + f.outBackground * nOut) / n;
   m_fMax = (f.inMatch * nIn + f.outBackground * nOut) / n;
   if (!(m_fMax > m_fBackground))
-    throw Error("tracker: with these scores a perfect match does not score above the background");
+    throw core::Error("tracker: with these scores a perfect match does not score above the background");
   // The model must fit the rig: at the centre of the search space most of it is in both images.
-  Phi centre;
+  core::Phi centre;
   for (std::size_t i = 0; i < 6; ++i)
     centre[i] = 0.5 * (params.space.lo[i] + params.space.hi[i]);
   for (int cam = 0; cam < 2; ++cam) {
     const double visible = m_fitness.visibleFraction(centre, cam);
     if (visible < 0.5)
-      throw Error("the photo-model does not fit the rig: at the centre of the search space " + centre.toString() +
+      throw core::Error("the photo-model does not fit the rig: at the centre of the search space " + centre.toString() +
                   " only " + std::to_string(static_cast<int>(100 * visible)) + " % of its points fall in the " +
                   (cam ? "right" : "left") + " image (a model too large for the cameras, or made at another scale?)");
   }
   if (params.preciseStage && model.hasContours())
-    m_precise = std::make_unique<PreciseStage>(rig, model, params.precise);
+    m_precise = std::make_unique<precise::PreciseStage>(rig, model, params.precise);
   if (params.confidence.kind == ConfidenceKind::Auto) { // the coefficients of the model's kind, the threshold as given
     const ConfidenceKind kind = model.isAllAround() ? ConfidenceKind::AllAround : model.hasDepth() ? ConfidenceKind::Stereo : ConfidenceKind::Flat;
     const double threshold = m_params.confidence.threshold;
@@ -128,23 +128,23 @@ PhotoModelTracker::PhotoModelTracker(const StereoRig &rig, const PhotoModel &mod
   initialize();
 }
 
-std::array<Phi, 8> PhotoModelTracker::competitors(const Phi &b)
+std::array<core::Phi, 8> PhotoModelTracker::competitors(const core::Phi &b)
 {
-  const vpHomogeneousMatrix hMb = toHomogeneousMatrix(b);
-  std::array<Phi, 8> alt;
+  const vpHomogeneousMatrix hMb = core::toHomogeneousMatrix(b);
+  std::array<core::Phi, 8> alt;
   for (std::size_t k = 0; k < 7; ++k) {
     const double a = (static_cast<double>(k) - 3.0) * M_PI / 4.0 + (k >= 3 ? M_PI / 4.0 : 0.0); // -135..-45, 45..180 deg
-    alt[k] = fromHomogeneousMatrix(hMb * vpHomogeneousMatrix(0, 0, 0, 0, 0, a));
+    alt[k] = core::fromHomogeneousMatrix(hMb * vpHomogeneousMatrix(0, 0, 0, 0, 0, a));
   }
-  alt[7] = Phi{b.x, b.y, b.z, -b.e1, -b.e2, b.e3};
+  alt[7] = core::Phi{b.x, b.y, b.z, -b.e1, -b.e2, b.e3};
   return alt;
 }
 
-std::array<PixelRect, 2> PhotoModelTracker::steadyWindows() const
+std::array<core::PixelRect, 2> PhotoModelTracker::steadyWindows() const
 {
-  std::array<PixelRect, 2> w;
-  const Phi &last = m_last.phi;
-  Phi next = last; // constant velocity from the two last frames (else the last pose again)
+  std::array<core::PixelRect, 2> w;
+  const core::Phi &last = m_last.phi;
+  core::Phi next = last; // constant velocity from the two last frames (else the last pose again)
   if (m_haveBeforeLast)
     for (std::size_t i = 0; i < 6; ++i)
       next[i] = 2 * last[i] - m_beforeLast[i];
@@ -152,19 +152,19 @@ std::array<PixelRect, 2> PhotoModelTracker::steadyWindows() const
     next = last;
   for (int cam = 0; cam < 2; ++cam) {
     w[static_cast<std::size_t>(cam)] = m_fitness.footprint(last, cam).united(m_fitness.footprint(next, cam));
-    const StereoFitness::Camera &c = m_fitness.camera(cam);
+    const core::StereoFitness::Camera &c = m_fitness.camera(cam);
     w[static_cast<std::size_t>(cam)] = w[static_cast<std::size_t>(cam)].grown(m_params.steadyHueMarginPx, c.width, c.height);
   }
   return w;
 }
 
-ConfidenceCues PhotoModelTracker::cuesAt(const Phi &phi, double q, const Phi *last) const
+ConfidenceCues PhotoModelTracker::cuesAt(const core::Phi &phi, double q, const core::Phi *last) const
 {
   ConfidenceCues c;
-  const FitnessDetail d = m_fitness.evaluateDetail(phi);
+  const core::FitnessDetail d = m_fitness.evaluateDetail(phi);
   c.quality = q;
   c.qualityMin = std::min(quality(d.left), quality(d.right));
-  auto shares = [](const FitnessCounts &n, double &in, double &out) {
+  auto shares = [](const core::FitnessCounts &n, double &in, double &out) {
     const int nIn = n.inMatch + n.inBackground + n.inOther + n.inOff, nOut = n.outBackground + n.outOther + n.outOff;
     in = nIn > 0 ? static_cast<double>(n.inMatch) / nIn : 0.0;
     out = nOut > 0 ? static_cast<double>(n.outBackground) / nOut : 0.0;
@@ -177,11 +177,11 @@ ConfidenceCues PhotoModelTracker::cuesAt(const Phi &phi, double q, const Phi *la
   const double r22 = 1.0 - 2.0 * (phi.e1 * phi.e1 + phi.e2 * phi.e2); // the model's z axis . the hand's
   c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;
   // Competing poses of the same object: turned about the model's z axis, or the tilt mirrored.
-  std::array<Phi, 8> rivals;
+  std::array<core::Phi, 8> rivals;
   std::array<double, 8> rivalF{};
   std::size_t nRivals = 0;
-  for (const Phi &p : competitors(phi))
-    if (p.isValid() && rotationDistanceDeg(p, phi) > m_params.verifyFarDeg) // a mirrored small tilt is the same pose
+  for (const core::Phi &p : competitors(phi))
+    if (p.isValid() && core::rotationDistanceDeg(p, phi) > m_params.verifyFarDeg) // a mirrored small tilt is the same pose
       rivals[nRivals++] = p;
   m_fitness.evaluate(rivals.data(), nRivals, rivalF.data()); // one batch, on two cores
   double qAlt = -1e9;
@@ -189,8 +189,8 @@ ConfidenceCues PhotoModelTracker::cuesAt(const Phi &phi, double q, const Phi *la
     qAlt = std::max(qAlt, quality(rivalF[k]));
   c.competitorMargin = q - qAlt;
   c.qualityDrop = std::max(0.0, m_recentBestQ - q);
-  c.jumpMm = last ? translationDistanceMm(phi, *last) : 0.0;
-  c.jumpDeg = last ? rotationDistanceDeg(phi, *last) : 0.0;
+  c.jumpMm = last ? core::translationDistanceMm(phi, *last) : 0.0;
+  c.jumpDeg = last ? core::rotationDistanceDeg(phi, *last) : 0.0;
   return c;
 }
 
@@ -207,7 +207,7 @@ void PhotoModelTracker::resetCounters()
   m_tilt.reset();
 }
 
-void PhotoModelTracker::startVerification(const Phi &lock)
+void PhotoModelTracker::startVerification(const core::Phi &lock)
 {
   m_verified = m_params.verifyEvaluations == 0;
   m_verifyLeft = m_params.verifyEvaluations;
@@ -225,9 +225,9 @@ void PhotoModelTracker::startVerification(const Phi &lock)
   m_challenger.restart(1, 1000000);
 }
 
-void PhotoModelTracker::verify(StereoObjective &objective, const FrameBudget &budget, TrackResult &r)
+void PhotoModelTracker::verify(rmga::StereoObjective &objective, const rmga::FrameBudget &budget, TrackResult &r)
 {
-  FrameResult c = m_challenger.evolve(objective, budget);
+  rmga::FrameResult c = m_challenger.evolve(objective, budget);
   if (m_params.coarseSearch) { // its best on every point, to compare with the tracker's F
     c.fitness = m_fitness.evaluate(c.best);
     ++c.evaluations;
@@ -236,8 +236,8 @@ void PhotoModelTracker::verify(StereoObjective &objective, const FrameBudget &bu
   r.evaluations += c.evaluations;
   r.candidates += c.candidates;
   r.generations += c.generations;
-  const double apartMm = translationDistanceMm(c.best, r.phi);
-  const bool far = apartMm > m_params.verifyFarMm || rotationDistanceDeg(c.best, r.phi) > m_params.verifyFarDeg;
+  const double apartMm = core::translationDistanceMm(c.best, r.phi);
+  const bool far = apartMm > m_params.verifyFarMm || core::rotationDistanceDeg(c.best, r.phi) > m_params.verifyFarDeg;
   if (far && quality(c.fitness) > quality(r.fitness) + m_params.verifySwitchMargin) {
     // A clearly better pose elsewhere: the tracker moves there, and that lock is verified in turn.
     m_ga.seedAround(c.best, m_params.initSpread);
@@ -264,7 +264,7 @@ void PhotoModelTracker::initialize()
 
 void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
 {
-  const Phi p = fromHomogeneousMatrix(hMo);
+  const core::Phi p = core::fromHomogeneousMatrix(hMo);
   m_ga.seedAround(p, m_params.initSpread);
   m_last = TrackResult();
   m_last.hMo = hMo;
@@ -279,25 +279,25 @@ void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
 void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
 {
   if (!hNowMhPrev.isAnHomogeneousMatrix())
-    throw Error("tracker: the hand motion is not a rigid transformation");
-  const auto moved = [&](const Phi &p) {
-    const Phi q = fromHomogeneousMatrix(hNowMhPrev * toHomogeneousMatrix(p));
+    throw core::Error("tracker: the hand motion is not a rigid transformation");
+  const auto moved = [&](const core::Phi &p) {
+    const core::Phi q = core::fromHomogeneousMatrix(hNowMhPrev * core::toHomogeneousMatrix(p));
     return q.isValid() ? q : p;
   };
   m_ga.transform(moved);
   if (m_verifyLeft > 0) // an idle challenger is started afresh from the next lock
     m_challenger.transform(moved);
   m_last.hMo = hNowMhPrev * m_last.hMo;
-  m_last.phi = fromHomogeneousMatrix(m_last.hMo);
+  m_last.phi = core::fromHomogeneousMatrix(m_last.hMo);
   m_tilt.transform(hNowMhPrev);
   if (m_haveBeforeLast)
     m_beforeLast = moved(m_beforeLast);
 }
 
-FrameResult PhotoModelTracker::search(const Frame &f, StereoObjective &objective, StereoObjective &coarseObjective)
+rmga::FrameResult PhotoModelTracker::search(const Frame &f, rmga::StereoObjective &objective, rmga::StereoObjective &coarseObjective)
 {
   const bool coarse = m_params.coarseSearch && m_last.state != TrackState::Tracking;
-  FrameResult fr = m_ga.evolve(coarse ? coarseObjective : objective, f.budget);
+  rmga::FrameResult fr = m_ga.evolve(coarse ? coarseObjective : objective, f.budget);
   if (coarse) { // the estimate of the best, then F itself
     fr.fitness = m_fitness.evaluate(fr.best);
     ++fr.evaluations;
@@ -310,12 +310,12 @@ FrameResult PhotoModelTracker::search(const Frame &f, StereoObjective &objective
       m_fitness.setImages(*f.left, *f.right);
       f.windowed = false;
     }
-    FrameBudget rest = f.mainWhole;
+    rmga::FrameBudget rest = f.mainWhole;
     if (rest.evaluations > 0)
       rest.evaluations = std::max<long>(m_params.ga.population, rest.evaluations - fr.evaluations);
     else
       rest.milliseconds = std::max(0.05, rest.milliseconds - (f.msSinceStart() - f.hueMs));
-    const FrameResult more = m_ga.evolve(objective, rest, true);
+    const rmga::FrameResult more = m_ga.evolve(objective, rest, true);
     fr.best = more.best;
     fr.fitness = more.fitness;
     fr.evaluations += more.evaluations;
@@ -333,27 +333,27 @@ bool PhotoModelTracker::refinePrecise(TrackResult &r, const Frame &f)
   // outline's peak lies on F's plateau, a divergence (colours that do not separate, a wrong start)
   // leaves it.
   const double minF = r.fitness - m_params.preciseMaxDropQ * (m_fMax - m_fBackground);
-  auto acceptable = [&](const PreciseResult &p, const Phi &start, double &F) {
-    if (!p.ok || translationDistanceMm(p.phi, start) > m_params.preciseMaxMoveMm || rotationDistanceDeg(p.phi, start) > m_params.preciseMaxMoveDeg)
+  auto acceptable = [&](const precise::PreciseResult &p, const core::Phi &start, double &F) {
+    if (!p.ok || core::translationDistanceMm(p.phi, start) > m_params.preciseMaxMoveMm || core::rotationDistanceDeg(p.phi, start) > m_params.preciseMaxMoveDeg)
       return false;
     F = m_fitness.evaluate(p.phi);
     return F >= minF;
   };
   const bool haveLast = m_last.state == TrackState::Tracking && m_last.precise && m_last.phi.isValid();
-  const bool near = haveLast && translationDistanceMm(r.phi, m_last.phi) <= m_params.preciseRestartMm &&
-                    rotationDistanceDeg(r.phi, m_last.phi) <= m_params.preciseRestartDeg;
-  PreciseResult best;
+  const bool near = haveLast && core::translationDistanceMm(r.phi, m_last.phi) <= m_params.preciseRestartMm &&
+                    core::rotationDistanceDeg(r.phi, m_last.phi) <= m_params.preciseRestartDeg;
+  precise::PreciseResult best;
   double bestF = 0;
   bool found = false;
   if (haveLast) {
-    const PreciseResult fromLast = m_precise->refine(m_last.phi, true); // the target moves little between frames
+    const precise::PreciseResult fromLast = m_precise->refine(m_last.phi, true); // the target moves little between frames
     r.preciseResult = fromLast;
     found = acceptable(fromLast, m_last.phi, bestF);
     if (found)
       best = fromLast;
   }
   if (!near || !found) {
-    const PreciseResult fromSearch = m_precise->refine(r.phi);
+    const precise::PreciseResult fromSearch = m_precise->refine(r.phi);
     double F = 0;
     if (acceptable(fromSearch, r.phi, F) && (!found || fromSearch.residualPx < best.residualPx)) {
       best = fromSearch;
@@ -372,14 +372,14 @@ bool PhotoModelTracker::refinePrecise(TrackResult &r, const Frame &f)
   return true;
 }
 
-void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective, const Frame &f)
+void PhotoModelTracker::refine(TrackResult &r, rmga::StereoObjective &objective, const Frame &f)
 {
   if (m_params.smoothRefineEvaluations > 0 && quality(r.fitness) >= m_params.lockQuality) {
     // The top of F's plateau: a continuous search of the smooth score from RM-GA's best.
-    StereoObjective smooth(m_fitness, StereoObjective::Score::Smooth);
-    LocalSimplexParams sp = m_params.smoothRefine;
+    rmga::StereoObjective smooth(m_fitness, rmga::StereoObjective::Score::Smooth);
+    rmga::LocalSimplexParams sp = m_params.smoothRefine;
     sp.maxEvaluations = m_params.smoothRefineEvaluations;
-    const LocalSimplexResult lr = refineLocalSimplex(smooth, r.phi, sp);
+    const rmga::LocalSimplexResult lr = rmga::refineLocalSimplex(smooth, r.phi, sp);
     r.smoothEvaluations = lr.evaluations;
     const double F = m_fitness.evaluate(lr.best);
     if (F >= r.fitness - m_params.smoothRefineMaxDrop) {
@@ -398,9 +398,9 @@ void PhotoModelTracker::refine(TrackResult &r, StereoObjective &objective, const
   if (m_params.smoothAscent.maxEvaluations > 0 && locked) {
     // The top of the smooth score near RM-GA's best, or near the last frame's pose if that scores higher
     // (the GA's best wanders over F's plateau from frame to frame).
-    const Phi starts[2] = {r.phi, m_last.phi};
+    const core::Phi starts[2] = {r.phi, m_last.phi};
     const std::size_t n = m_last.state == TrackState::Tracking && m_last.phi.isValid() && m_params.smoothAscent.maxEvaluations > 1 ? 2 : 1;
-    const SmoothAscentResult a = climbSmooth(objective, starts, n, m_params.smoothAscent);
+    const rmga::SmoothAscentResult a = rmga::climbSmooth(objective, starts, n, m_params.smoothAscent);
     r.ascentEvaluations = a.evaluations;
     const double F = m_fitness.evaluate(a.best);
     if (F >= r.fitness - m_params.smoothAscentMaxDrop) {
@@ -426,7 +426,7 @@ void PhotoModelTracker::updateState(TrackResult &r)
     // A new lock: only if it would not be plainly wrong (its confidence as a first, unverified lock).
     ConfidenceCues lock = cuesAt(r.phi, r.quality, nullptr);
     if (r.precise)
-      addPreciseCues(lock, r, lineSigmas(r.preciseResult.information));
+      addPreciseCues(lock, r, precise::lineSigmas(r.preciseResult.information));
     lock.framesTracked = 1;
     lock.verified = m_params.verifyEvaluations == 0;
     lock.tracking = true;
@@ -463,7 +463,7 @@ void PhotoModelTracker::addPreciseCues(ConfidenceCues &c, const TrackResult &r, 
   if (!r.precise)
     return;
   // How well the precise stage's lines pin the pose (s: their sigmas), and how well they fit.
-  const PreciseResult &p = r.preciseResult;
+  const precise::PreciseResult &p = r.preciseResult;
   c.precise = true;
   c.preciseResidualPx = p.residualPx;
   c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
@@ -477,10 +477,10 @@ void PhotoModelTracker::scoreConfidence(TrackResult &r, const Frame &f)
   // The cues are scored on the whole images: the hue under the poses they look at is added where
   // a steady frame's windows left it out.
   if (f.windowed) {
-    std::array<Phi, 9> seen;
+    std::array<core::Phi, 9> seen;
     std::size_t n = 0;
     seen[n++] = r.phi;
-    for (const Phi &p : competitors(r.phi))
+    for (const core::Phi &p : competitors(r.phi))
       if (p.isValid())
         seen[n++] = p;
     m_fitness.addHueUnder(*f.left, *f.right, seen.data(), n);
@@ -491,7 +491,7 @@ void PhotoModelTracker::scoreConfidence(TrackResult &r, const Frame &f)
   c.verified = m_verified;
   c.tracking = r.state == TrackState::Tracking;
   if (r.precise) { // the lines' sigmas once: for the cues and for the uncertainty
-    const std::array<double, 6> s = lineSigmas(r.preciseResult.information);
+    const std::array<double, 6> s = precise::lineSigmas(r.preciseResult.information);
     addPreciseCues(c, r, s);
     r.uncertainty = m_params.uncertainty.uncertainty(s, r.preciseResult.residualPx);
   }
@@ -523,16 +523,16 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   else
     m_fitness.setImages(left, right);
   f.hueMs = f.msSinceStart();
-  StereoObjective objective(m_fitness, StereoObjective::Score::Fitness,
+  rmga::StereoObjective objective(m_fitness, rmga::StereoObjective::Score::Fitness,
                             m_params.rejectMarginQ < 0 ? -1.0 : m_params.rejectMarginQ * (m_fMax - m_fBackground));
-  StereoObjective coarseObjective(m_fitness, StereoObjective::Score::Coarse);
-  FrameBudget whole = m_params.budget();
+  rmga::StereoObjective coarseObjective(m_fitness, rmga::StereoObjective::Score::Coarse);
+  rmga::FrameBudget whole = m_params.budget();
   if (whole.milliseconds > 0) // the hue planes are part of the frame's time
     whole.milliseconds = std::max(0.05, whole.milliseconds - f.hueMs);
   f.mainWhole = verifying ? part(whole, 1.0 - m_params.verifyBudgetFraction, m_params.ga.population) : whole;
   f.budget = f.steady ? m_params.steadyBudget() : f.mainWhole;
 
-  const FrameResult fr = search(f, objective, coarseObjective);
+  const rmga::FrameResult fr = search(f, objective, coarseObjective);
   TrackResult r;
   r.phi = fr.best;
   r.fitness = fr.fitness;
@@ -544,7 +544,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   const double searchMs = f.msSinceStart() - f.hueMs;
   refine(r, objective, f);
   const double refinedMs = f.msSinceStart();
-  r.hMo = toHomogeneousMatrix(r.phi);
+  r.hMo = core::toHomogeneousMatrix(r.phi);
   r.quality = quality(r.fitness);
   const TrackState prev = m_last.state;
   updateState(r);
@@ -561,4 +561,4 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   return r;
 }
 
-} // namespace pm
+} // namespace pm::tracker

@@ -5,7 +5,7 @@
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/StereoObjective.h"
 
-namespace pm {
+namespace pm::tracker {
 
 Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right,
                        const DetectionParams &params)
@@ -39,16 +39,16 @@ Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, 
   return d;
 }
 
-Phi nearestFitnessPeak(const StereoFitness &fitness, const Phi &start, const SearchSpace &space)
+core::Phi nearestFitnessPeak(const core::StereoFitness &fitness, const core::Phi &start, const rmga::SearchSpace &space)
 {
-  StereoObjective obj(fitness);
-  RmGaParams gp;
+  rmga::StereoObjective obj(fitness);
+  rmga::RmGaParams gp;
   gp.population = 2;
   gp.elite = 1;
   gp.refineEvaluations = 5000;
-  RmGa ga(space, gp);
+  rmga::RmGa ga(space, gp);
   ga.seedAround(start, 0.0);
-  return ga.evolve(obj, FrameBudget::evals(2 + gp.refineEvaluations)).best;
+  return ga.evolve(obj, rmga::FrameBudget::evals(2 + gp.refineEvaluations)).best;
 }
 
-} // namespace pm
+} // namespace pm::tracker

@@ -4,19 +4,19 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::tracker {
 
 void TiltFilterParams::validate() const
 {
   if (!(alpha > 0 && alpha <= 1) || !(beta >= 0 && beta < 1) || !(gateDeg > 0 && std::isfinite(gateDeg)))
-    throw Error("tilt filter: alpha must lie in (0, 1], beta in [0, 1) and the gate be a positive angle");
+    throw core::Error("tilt filter: alpha must lie in (0, 1], beta in [0, 1) and the gate be a positive angle");
 }
 
 TiltFilter::TiltFilter(const TiltFilterParams &params) : m_p(params) { params.validate(); }
 
 namespace {
 //! The rotation vector (rad, hand frame) r with R(a) = exp(r) R(b).
-void rotationFromTo(const Phi &b, const Phi &a, double r[3])
+void rotationFromTo(const core::Phi &b, const core::Phi &a, double r[3])
 {
   // q = q_a (x) conj(q_b): its vector part and scalar part.
   const double wa = a.eta(), wb = b.eta();
@@ -30,20 +30,20 @@ void rotationFromTo(const Phi &b, const Phi &a, double r[3])
 }
 } // namespace
 
-Phi TiltFilter::update(const Phi &measured)
+core::Phi TiltFilter::update(const core::Phi &measured)
 {
   if (!measured.isValid())
-    throw Error("tilt filter: invalid pose " + measured.toString());
+    throw core::Error("tilt filter: invalid pose " + measured.toString());
   if (m_p.passesThrough())
     return measured;
   if (m_has) {
     const double turn[6] = {0, 0, 0, m_w[0], m_w[1], 0};
-    const Phi predicted = applyTwist(m_pose, turn);
+    const core::Phi predicted = core::applyTwist(m_pose, turn);
     double r[3];
     rotationFromTo(predicted, measured, r);
     if (std::sqrt(r[0] * r[0] + r[1] * r[1]) * 180.0 / M_PI <= m_p.gateDeg) { // the tilt's residual
       const double correction[6] = {0, 0, 0, m_p.alpha * r[0], m_p.alpha * r[1], r[2]};
-      Phi out = applyTwist(predicted, correction);
+      core::Phi out = core::applyTwist(predicted, correction);
       out.x = measured.x;
       out.y = measured.y;
       out.z = measured.z;
@@ -63,7 +63,7 @@ void TiltFilter::transform(const vpHomogeneousMatrix &hNowMhPrev)
 {
   if (!m_has)
     return;
-  const Phi moved = fromHomogeneousMatrix(hNowMhPrev * toHomogeneousMatrix(m_pose));
+  const core::Phi moved = core::fromHomogeneousMatrix(hNowMhPrev * core::toHomogeneousMatrix(m_pose));
   if (!moved.isValid()) {
     reset();
     return;
@@ -76,4 +76,4 @@ void TiltFilter::transform(const vpHomogeneousMatrix &hNowMhPrev)
   m_w[1] = R[1][0] * w0 + R[1][1] * w1;
 }
 
-} // namespace pm
+} // namespace pm::tracker

@@ -5,7 +5,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::tracker {
 
 std::array<double, ConfidenceCues::kFeatures> ConfidenceCues::features() const
 {
@@ -61,7 +61,7 @@ ConfidenceKind confidenceKindFromString(const std::string &s)
   for (ConfidenceKind k : {ConfidenceKind::Auto, ConfidenceKind::Flat, ConfidenceKind::Stereo, ConfidenceKind::AllAround, ConfidenceKind::Custom})
     if (s == toString(k))
       return k;
-  throw Error("confidence model: unknown kind '" + s + "' (auto, flat, stereo, all-around or custom)");
+  throw core::Error("confidence model: unknown kind '" + s + "' (auto, flat, stereo, all-around or custom)");
 }
 
 ConfidenceModel::ConfidenceModel() : ConfidenceModel(shipped(ConfidenceKind::Flat)) { kind = ConfidenceKind::Auto; }
@@ -108,7 +108,7 @@ ConfidenceModel ConfidenceModel::shipped(ConfidenceKind kind)
   case ConfidenceKind::Custom:
     break;
   }
-  throw Error(std::string("confidence model: no shipped coefficients for the kind '") + toString(kind) + "'");
+  throw core::Error(std::string("confidence model: no shipped coefficients for the kind '") + toString(kind) + "'");
 }
 
 double ConfidenceModel::confidence(const ConfidenceCues &c) const
@@ -126,9 +126,9 @@ void ConfidenceModel::validate() const
   for (double w : weights)
     finite = finite && std::isfinite(w);
   if (!finite)
-    throw Error("confidence model: every weight and the bias must be finite");
+    throw core::Error("confidence model: every weight and the bias must be finite");
   if (!(threshold > 0 && threshold < 1))
-    throw Error("confidence model: the threshold must lie in (0, 1)");
+    throw core::Error("confidence model: the threshold must lie in (0, 1)");
 }
 
-} // namespace pm
+} // namespace pm::tracker

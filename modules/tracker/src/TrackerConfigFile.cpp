@@ -10,7 +10,7 @@
 
 using nlohmann::json;
 
-namespace pm {
+namespace pm::tracker {
 
 // The confidence model's kind as its name ("auto", "flat", ..., see toString(ConfidenceKind)).
 void to_json(json &j, const ConfidenceKind &k) { j = toString(k); }
@@ -133,7 +133,7 @@ public:
   Reader(const json &j, std::string where) : m_j(j), m_where(std::move(where))
   {
     if (!m_j.is_object())
-      throw Error("expected an object" + m_where);
+      throw core::Error("expected an object" + m_where);
   }
   template <typename T> Reader &value(const char *key, T &v)
   {
@@ -161,7 +161,7 @@ public:
   {
     for (auto it = m_j.begin(); it != m_j.end(); ++it)
       if (std::find(m_known.begin(), m_known.end(), it.key()) == m_known.end())
-        throw Error("unknown key \"" + it.key() + "\"" + m_where);
+        throw core::Error("unknown key \"" + it.key() + "\"" + m_where);
   }
 
 private:
@@ -194,15 +194,15 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
 {
   std::ifstream f(path);
   if (!f)
-    throw Error("tracker configuration '" + path + "' does not exist or cannot be read");
+    throw core::Error("tracker configuration '" + path + "' does not exist or cannot be read");
   TrackerParams p = defaults;
   try {
     const json j = json::parse(f);
     if (!j.is_object() || j.value("format", "") != kFormat)
-      throw Error(std::string("\"format\" must be \"") + kFormat + "\"");
+      throw core::Error(std::string("\"format\" must be \"") + kFormat + "\"");
     const json version = j.value("version", json());
     if (!version.is_number_integer() || version.get<long long>() != 1)
-      throw Error("unsupported \"version\" (this program reads version 1)");
+      throw core::Error("unsupported \"version\" (this program reads version 1)");
     Reader top(j, "");
     top.known("format").known("version");
     eachKey(top, p);
@@ -212,10 +212,10 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
       p.confidence.kind = ConfidenceKind::Custom; // weights written by hand are meant to be used
 
     p.validate();
-  } catch (const Error &e) {
-    throw Error("tracker configuration '" + path + "': " + e.what());
+  } catch (const core::Error &e) {
+    throw core::Error("tracker configuration '" + path + "': " + e.what());
   } catch (const json::exception &e) {
-    throw Error("tracker configuration '" + path + "' is not valid: " + e.what());
+    throw core::Error("tracker configuration '" + path + "' is not valid: " + e.what());
   }
   return p;
 }
@@ -229,4 +229,4 @@ std::string trackerConfigToJson(const TrackerParams &params)
   return w.j.dump(2) + "\n";
 }
 
-} // namespace pm
+} // namespace pm::tracker

@@ -44,7 +44,7 @@ using capture::frameFileName;
 /*!
   The image files of a --left or --right option: one printf pattern (e.g. "L_%04d.png": frames
   \e firstFrame, firstFrame + 1, ... while the file exists), one file, or several files in pair
-  order. Throws pm::Error when a pattern matches no file.
+  order. Throws pm::core::Error when a pattern matches no file.
 */
 std::vector<std::string> imageFiles(const std::vector<std::string> &values, int firstFrame = 0);
 //! True when \e values is one printf pattern (one value holding a '%').

@@ -17,7 +17,7 @@
 namespace pm::app {
 
 //! --step-px, --strip-gap-px, --strip-width-px, --strip-rows, --region-hue-tol-deg, --min-saturation
-void addModelOptions(CLI::App &app, PhotoModelParams &p);
+void addModelOptions(CLI::App &app, model::PhotoModelParams &p);
 //! --noise, --exposure, --occluder, --supersampling, --seed
 void addSceneOptions(CLI::App &app, sim::SceneParams &p);
 //! --distractor CODE, --distractor-at X,Y: a look-alike toy beside the target (lab::DistractorChoice).
@@ -32,7 +32,7 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c);
 void addRobotOption(CLI::App &app, std::string &arm);
 
 //! --in-tol-deg, --in-bg-tol-deg, --out-bg-tol-deg
-void addFitnessOptions(CLI::App &app, FitnessParams &p);
+void addFitnessOptions(CLI::App &app, core::FitnessParams &p);
 
 
 /*!
@@ -44,14 +44,14 @@ void addFitnessOptions(CLI::App &app, FitnessParams &p);
 class TrackerOptions
 {
 public:
-  explicit TrackerOptions(CLI::App &app, const TrackerParams &defaults = TrackerParams());
-  //! The parameters: defaults, then the file, then the command line. Throws pm::Error.
-  TrackerParams resolve() const;
+  explicit TrackerOptions(CLI::App &app, const tracker::TrackerParams &defaults = tracker::TrackerParams());
+  //! The parameters: defaults, then the file, then the command line. Throws pm::core::Error.
+  tracker::TrackerParams resolve() const;
 
 private:
-  TrackerParams m_defaults, m_cli;
+  tracker::TrackerParams m_defaults, m_cli;
   std::string m_config;
-  std::vector<std::pair<CLI::Option *, std::function<void(TrackerParams &, const TrackerParams &)>>> m_set;
+  std::vector<std::pair<CLI::Option *, std::function<void(tracker::TrackerParams &, const tracker::TrackerParams &)>>> m_set;
 };
 
 } // namespace pm::app

@@ -16,7 +16,7 @@ namespace pm::app {
 /*!
   \e kind "chessboard" (layout inner_rows,inner_cols,square_mm) or "tags" (rows,cols,tag_mm,pitch_mm);
   \e layout empty: the pattern's default. Throws CLI::ValidationError for a layout that is not
-  numbers or not whole counts, pm::Error for one that cannot be used.
+  numbers or not whole counts, pm::core::Error for one that cannot be used.
 */
 std::unique_ptr<calib::Pattern> makePattern(const std::string &kind, const std::string &layout);
 

@@ -6,7 +6,7 @@
   estimate with the rig. The first pair and the corners found in it are kept for a picture.
 
   \code
-    const pm::StereoRig rig = pm::io::loadRig("rig.json");
+    const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
     const pm::calib::TagBoard board;
     pm::calib::BaselineCheck check(rig, board);
     for (int k = 0; k < 10; ++k)
@@ -29,17 +29,17 @@ class BaselineCheck
 {
 public:
   //! Checks \e rig with \e pattern, which must outlive this object.
-  BaselineCheck(const StereoRig &rig, const Pattern &pattern);
+  BaselineCheck(const core::StereoRig &rig, const Pattern &pattern);
 
   /*!
     Finds the pattern in \e left and \e right (raw images of the rig's cameras, their lenses
     corrected by the pattern's finder) and keeps the pair's cLMcR and reprojection RMS. Throws
-    pm::Error, naming \e name, if the images differ in size from each other or from the rig's
+    pm::core::Error, naming \e name, if the images differ in size from each other or from the rig's
     cameras, or the pattern is not found.
   */
   void add(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::string &name);
 
-  //! The pairs aggregated and compared with the rig (aggregateBaseline()). Throws pm::Error before any pair.
+  //! The pairs aggregated and compared with the rig (aggregateBaseline()). Throws pm::core::Error before any pair.
   BaselineResult result() const;
 
   //! \name The first pair, for a picture
@@ -51,7 +51,7 @@ public:
   //! @}
 
 private:
-  StereoRig m_rig;
+  core::StereoRig m_rig;
   const Pattern *m_pattern;
   std::vector<vpHomogeneousMatrix> m_perPair;
   std::vector<double> m_rms;

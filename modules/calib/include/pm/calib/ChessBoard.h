@@ -33,7 +33,7 @@ int main()
   board.validate();
   pm::io::writeImage(board.render(10.0), "chessboard.png"); // 10 px per mm: print it at 254 dpi
 
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
   const vpImage<vpRGBa> I = pm::io::readColorImage("left01.png");
   const pm::calib::BoardView view = board.find(I, rig.left.cam, rig.left.distortion, "left01.png");
   std::cout << "cMb:\n" << view.cMb << "\n" << view.reprojectionRmsPx << " px rms" << std::endl;
@@ -50,7 +50,7 @@ struct ChessBoard : Pattern
 
   //! One line, e.g. "chessboard of 6x9 inner corners, 20 mm squares".
   std::string describe() const override;
-  //! Throws pm::Error unless each side has 3 to 50 inner corners, one count odd and the other even,
+  //! Throws pm::core::Error unless each side has 3 to 50 inner corners, one count odd and the other even,
   //! the squares a size and the margin no negative width.
   void validate() const override;
   double widthMm() const override { return (innerCols + 1) * squareMm + 2 * marginMm; }
@@ -58,15 +58,15 @@ struct ChessBoard : Pattern
   //! Inner corner (\e r, \e c) in the board frame (metres).
   vpPoint corner(int r, int c) const;
   vpImage<vpRGBa> render(double pixelsPerMm) const override;
-  //! Throws pm::Error unless all the inner corners are found (\e whole changes nothing).
+  //! Throws pm::core::Error unless all the inner corners are found (\e whole changes nothing).
   BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
                  bool whole = false) const override;
   //! Finds the corners in the raw image and undistorts them before the pose (more exact than undistorting the image).
-  BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+  BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const core::LensDistortion &distortion,
                  const std::string &name, bool whole = false) const override;
   /*!
     The inner corners found in \e I (row by row, the first next to the black corner square),
-    refined to sub-pixel. Throws pm::Error naming \e name unless all are found.
+    refined to sub-pixel. Throws pm::core::Error naming \e name unless all are found.
   */
   std::vector<vpImagePoint> findCorners(const vpImage<vpRGBa> &I, const std::string &name) const;
   PatternDetection detect(const vpImage<vpRGBa> &I, const std::string &name) const override;

@@ -46,7 +46,7 @@ public:
   virtual ~Pattern() = default;
   //! One line for people, e.g. "3x3 AprilTag 36h11 board, 40 mm tags".
   virtual std::string describe() const = 0;
-  //! Throws pm::Error for a layout that cannot be used.
+  //! Throws pm::core::Error for a layout that cannot be used.
   virtual void validate() const = 0;
   //! Width of the printed pattern, white margin included (mm).
   virtual double widthMm() const = 0;
@@ -55,7 +55,7 @@ public:
   //! The printed pattern at \e pixelsPerMm, white margin included.
   virtual vpImage<vpRGBa> render(double pixelsPerMm) const = 0;
   /*!
-    Finds the pattern in \e I seen by a camera of intrinsics \e cam. Throws pm::Error naming the
+    Finds the pattern in \e I seen by a camera of intrinsics \e cam. Throws pm::core::Error naming the
     image (\e name) when it is not found, or when \e whole is set and part of it is missing.
   */
   virtual BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
@@ -65,11 +65,11 @@ public:
     view's corners are raw pixels, its reprojection RMS in ideal pixels. Without distortion, the
     call above. This default undistorts the image (UndistortMap) and finds the pattern in it.
   */
-  virtual BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const LensDistortion &distortion,
+  virtual BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const core::LensDistortion &distortion,
                          const std::string &name, bool whole = false) const;
   /*!
     The pattern's features in \e I, numbered and placed on the board, with no camera model.
-    Throws pm::Error naming the image (\e name) when too little of it is found (a chessboard: not
+    Throws pm::core::Error naming the image (\e name) when too little of it is found (a chessboard: not
     whole; tags: fewer than the board's minimum).
   */
   virtual PatternDetection detect(const vpImage<vpRGBa> &I, const std::string &name) const = 0;
@@ -89,7 +89,7 @@ struct CornerMatches
 /*!
   The pattern's pose from its matched corners: vpPose (Dementhon then virtual visual servoing)
   gives cMb; the reprojection RMS is in pixels of \e cam; the pixels become the view's corners.
-  Throws pm::Error with fewer than 4 matches.
+  Throws pm::core::Error with fewer than 4 matches.
 */
 void solveBoardPose(const CornerMatches &matches, const vpCameraParameters &cam, BoardView &view);
 

@@ -48,7 +48,7 @@ struct RigCalibrationParams
 {
   int minPairs = 5;             //!< usable pairs needed, and usable views of each camera (at least 3)
   double maxEdgeWidthPx = 5.0;  //!< chessboard blur limit (px): mean width of the board's edges (estimateChessboardSharpness)
-  void validate() const;        //!< throws pm::Error for a value out of range
+  void validate() const;        //!< throws pm::core::Error for a value out of range
 };
 
 //! One pair's fate and, when used, its residuals. Arrays of two: [0] the left camera, [1] the right one.
@@ -70,7 +70,7 @@ struct PairReport
 */
 struct RigCalibration
 {
-  StereoRig rig;                  //!< intrinsics with distortion, poses hMc in the hand frame (metres)
+  core::StereoRig rig;                  //!< intrinsics with distortion, poses hMc in the hand frame (metres)
   //! \var rmsLeftPx
   //! RMS reprojection error of cv::calibrateCamera for the left camera (px).
   double rmsLeftPx = 0, rmsRightPx = 0; //!< the same for the right camera (px)
@@ -84,7 +84,7 @@ struct RigCalibration
 };
 
 /*!
-  Calibrates the rig from \e pairs of images of \e board (see RigCalibration.h). Throws pm::Error
+  Calibrates the rig from \e pairs of images of \e board (see RigCalibration.h). Throws pm::core::Error
   for an invalid board or parameters, an empty list, or fewer than params.minPairs usable pairs
   or views of a camera (the message lists the rejected pairs and why).
 

@@ -23,6 +23,6 @@ struct CalibrationErrors
 };
 
 //! How far \e estimated is from \e truth (frame-free: cLMcR, and each camera's pixel-to-ray map).
-CalibrationErrors compareRigs(const StereoRig &estimated, const StereoRig &truth);
+CalibrationErrors compareRigs(const core::StereoRig &estimated, const core::StereoRig &truth);
 
 } // namespace pm::calib

@@ -41,7 +41,7 @@ struct BaselineResult
 /*!
   Aggregates the per-pair estimates \e perPair (each pair's cLMcR, metres) and compares the result
   with \e rig's cLMcR. \e rmsPx is each pair's reprojection RMS (px), in the same order, used only
-  for the result's reprojectionRmsPx. Throws pm::Error if there is no pair.
+  for the result's reprojectionRmsPx. Throws pm::core::Error if there is no pair.
 
   \code
 #include <cmath>
@@ -53,7 +53,7 @@ struct BaselineResult
 
 int main()
 {
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
   const pm::calib::TagBoard board; // 3 x 3 tags of 40 mm, 55 mm apart
   std::vector<vpHomogeneousMatrix> perPair;
   std::vector<double> rms;
@@ -71,6 +71,6 @@ int main()
   \endcode
 */
 BaselineResult aggregateBaseline(const std::vector<vpHomogeneousMatrix> &perPair, const std::vector<double> &rmsPx,
-                                 const StereoRig &rig);
+                                 const core::StereoRig &rig);
 
 } // namespace pm::calib

@@ -61,7 +61,7 @@ struct TagBoard : Pattern
 
   //! One line, e.g. "3x3 AprilTag 36h11 board (ids 0..8), 40 mm tags, 55 mm apart".
   std::string describe() const override;
-  //! Throws pm::Error for a layout whose tags overlap or have no size (pitch under 1.25 x tag size),
+  //! Throws pm::core::Error for a layout whose tags overlap or have no size (pitch under 1.25 x tag size),
   //! over 100 tags, ids outside 36h11's 0..586, a negative margin, or minTags under 1.
   void validate() const override;
   double widthMm() const override { return cols * pitchMm + 2 * marginMm; }
@@ -75,7 +75,7 @@ struct TagBoard : Pattern
   vpPoint centre(int id) const;
   //! The printed board at \e pixelsPerMm (white background).
   vpImage<vpRGBa> render(double pixelsPerMm) const override;
-  //! Throws pm::Error if fewer than minTags (all with \e whole) of its tags are found.
+  //! Throws pm::core::Error if fewer than minTags (all with \e whole) of its tags are found.
   BoardView find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam, const std::string &name,
                  bool whole = false) const override;
   using Pattern::find; // the raw image of a lens with distortion: undistorted first

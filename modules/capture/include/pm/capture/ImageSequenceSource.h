@@ -35,13 +35,13 @@ public:
     Frames \e firstFrame, firstFrame + 1 ... of the patterns (see frameFileName()) while the left or
     the right file exists, at \e fps frames per second (\> 0). \e width, \e height: the size both
     images must have (pixels; checked when both are not 0). \e maxFrames: stop after that many (0:
-    all). Throws pm::Error if the sequence is empty, for fps \<= 0 or for a bad pattern.
+    all). Throws pm::core::Error if the sequence is empty, for fps \<= 0 or for a bad pattern.
   */
   ImageSequenceSource(const std::string &leftPattern, const std::string &rightPattern, int firstFrame, double fps,
                       unsigned width = 0, unsigned height = 0, long maxFrames = 0);
   /*!
     The pairs (\e leftFiles[k], \e rightFiles[k]) in order, numbered from 0, at \e fps frames per
-    second; \e width, \e height and \e maxFrames as above. Throws pm::Error if the lists are empty or
+    second; \e width, \e height and \e maxFrames as above. Throws pm::core::Error if the lists are empty or
     of different lengths, or for fps \<= 0.
   */
   ImageSequenceSource(std::vector<std::string> leftFiles, std::vector<std::string> rightFiles, double fps,
@@ -69,7 +69,7 @@ private:
 /*!
   \e pattern with \e index substituted, e.g. ("L_%04d.png", 7) -> "L_0007.png". The pattern must hold
   exactly one field, "%d" or "%Nd" / "%0Nd" (padded with spaces / zeros to N characters); "%%" is a
-  literal %. Parsed here, never passed to printf; throws pm::Error for any other pattern.
+  literal %. Parsed here, never passed to printf; throws pm::core::Error for any other pattern.
 */
 std::string frameFileName(const std::string &pattern, long index);
 

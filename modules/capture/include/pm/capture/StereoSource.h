@@ -65,7 +65,7 @@ class StereoSource
 {
 public:
   virtual ~StereoSource() = default;
-  //! The next pair into \e f; false when the source has no more. Throws pm::Error on failure (see each source).
+  //! The next pair into \e f; false when the source has no more. Throws pm::core::Error on failure (see each source).
   virtual bool next(StereoFrame &f) = 0;
   //! What the source reads, in words (for logs), e.g. "video sources 0 + 1".
   virtual std::string describe() const = 0;
@@ -75,7 +75,7 @@ protected:
   SourceStats m_stats; //!< the counts, kept up to date by next()
 };
 
-//! The two pairs a stereo photo-model is made of (pm::buildStereoPhotoModel).
+//! The two pairs a stereo photo-model is made of (pm::model::buildStereoPhotoModel).
 struct ModelPairs
 {
   //! The backdrop pair: the backdrop alone in view.
@@ -89,7 +89,7 @@ struct ModelPairs
   for an image sequence). With photoIndex < 0 it asks on the terminal instead: Enter with the
   backdrop alone in view, then Enter with the target placed; after each Enter it reads on until the
   index reaches the number of pairs handed out before it plus 4 (for a live source: the fifth pair,
-  past what the cameras buffered while waiting). Throws pm::Error when the source ends first, when
+  past what the cameras buffered while waiting). Throws pm::core::Error when the source ends first, when
   photoIndex \<= backgroundIndex, or when the frames are not given and stdin is not a terminal.
 */
 ModelPairs grabModelPairs(StereoSource &source, long backgroundIndex, long photoIndex);

@@ -29,7 +29,7 @@ struct VideoCaptureParams
   double maxSkewMs = 10;      //!< largest left-right time difference of a pair (ms)
   double stallTimeoutS = 5;   //!< a live stream silent this long (s) is an error
   long maxPairs = 0;          //!< stop after this many pairs (0: until a stream ends)
-  //! Throws pm::Error unless maxSkewMs \>= 0 (finite) and stallTimeoutS \> 0.
+  //! Throws pm::core::Error unless maxSkewMs \>= 0 (finite) and stallTimeoutS \> 0.
   void validate() const;
 };
 
@@ -53,7 +53,7 @@ class VideoCaptureSource : public StereoSource
 public:
   /*!
     Opens both sources (\e left, \e right: a device index, a /dev path, a video file or a GStreamer
-    pipeline). Throws pm::Error for invalid \e params or naming the source that does not open.
+    pipeline). Throws pm::core::Error for invalid \e params or naming the source that does not open.
   */
   VideoCaptureSource(const std::string &left, const std::string &right, const VideoCaptureParams &params = VideoCaptureParams());
   //! Releases both captures (a read still stuck in a driver keeps its own until it returns).
@@ -61,7 +61,7 @@ public:
   /*!
     The next pair: StereoFrame::index counts the pairs from 0, timeS is the left frame's time since
     the first pair's (s), skewMs left minus right (ms). False when a stream ends or maxPairs is
-    reached. Throws pm::Error if a live stream stalls (stallTimeoutS; the source cannot be read
+    reached. Throws pm::core::Error if a live stream stalls (stallTimeoutS; the source cannot be read
     again) or the two streams' images differ in size.
   */
   bool next(StereoFrame &f) override;

@@ -22,6 +22,6 @@ namespace pm::compare {
   std::ofstream("model.cao") << pm::compare::meshCaoText(build.mesh.decimated(6.0), "all-around surface");
   \endcode
 */
-std::string meshCaoText(const HullMesh &mesh, const std::string &comment);
+std::string meshCaoText(const model::HullMesh &mesh, const std::string &comment);
 
 } // namespace pm::compare

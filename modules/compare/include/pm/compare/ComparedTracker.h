@@ -26,7 +26,7 @@ struct Estimate
   makeOurTracker(), makeMbtTracker() or makeTemplateTracker(); the caller owns it.
 
   \code
-    std::unique_ptr<pm::compare::ComparedTracker> t = pm::compare::makeOurTracker(rig, model, pm::TrackerParams());
+    std::unique_ptr<pm::compare::ComparedTracker> t = pm::compare::makeOurTracker(rig, model, pm::tracker::TrackerParams());
     t->start(left0, right0, hMmTrue0); // hMmTrue0 is ignored here: ours needs no initial pose
     const pm::compare::Estimate e = t->track(left0, right0);
   \endcode

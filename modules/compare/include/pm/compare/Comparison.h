@@ -49,7 +49,7 @@ struct ComparisonParams
   double viewTurnDeg = 0;                     //!< ours-3d: the stereo model's further pairs (deg; 0: one pair)
   double steadyVariant = 0.25;                //!< ours-steady: the fraction of the budget on steady frames
   sim::SceneParams scene;                     //!< the lab's scene
-  TrackerParams tracker;                      //!< our tracker's settings
+  tracker::TrackerParams tracker;                      //!< our tracker's settings
 };
 
 //! What a comparison measured.
@@ -93,8 +93,8 @@ vpRGBa trackerColor(std::size_t index);
 class Comparison
 {
 public:
-  //! Builds the scene and the models; throws pm::Error for an unknown tracker or scenario, or an unreadable file.
-  Comparison(const StereoRig &rig, const ComparisonParams &params);
+  //! Builds the scene and the models; throws pm::core::Error for an unknown tracker or scenario, or an unreadable file.
+  Comparison(const core::StereoRig &rig, const ComparisonParams &params);
   ~Comparison();
   //! The one-face .cao model of the target's outline (metres, model frame) that ViSP's MBT trackers read.
   std::string caoText() const;
@@ -104,13 +104,13 @@ public:
     Runs every scenario through every tracker (ours from nothing, ViSP's from the truth), with the
     .cao model at \e caoPath, writing one row per frame and tracker to \e framesCsv (scenario,
     frame, t, tracker, translation_error_mm, rotation_error_deg, frame_ms, valid) and calling
-    \e onFrame after each frame. Throws pm::Error when \e framesCsv fails.
+    \e onFrame after each frame. Throws pm::core::Error when \e framesCsv fails.
   */
   ComparisonResult run(const std::string &caoPath, std::ostream &framesCsv, const std::function<void()> &onFrame = {});
 
 private:
   struct Setup;
-  const StereoRig &m_rig;
+  const core::StereoRig &m_rig;
   ComparisonParams m_p;
   std::unique_ptr<Setup> m_s;
 };

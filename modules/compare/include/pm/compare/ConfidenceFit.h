@@ -9,9 +9,9 @@
 
   \code
     const pm::compare::ConfidenceStudy s = pm::compare::runConfidenceStudy(rig, params);
-    const pm::compare::ConfidenceFit f = pm::compare::fitConfidence(s, pm::ConfidenceKind::AllAround, 0.001);
+    const pm::compare::ConfidenceFit f = pm::compare::fitConfidence(s, pm::tracker::ConfidenceKind::AllAround, 0.001);
     std::cout << "cross-validated AUROC " << f.aurocCrossValidated << "\n";
-    pm::TrackerParams p;
+    pm::tracker::TrackerParams p;
     p.confidence = f.model; // kind Custom: used as it is
   \endcode
 */
@@ -25,7 +25,7 @@ namespace pm::compare {
 //! What fitConfidence() found.
 struct ConfidenceFit
 {
-  ConfidenceModel model;            //!< the fitted coefficients (kind: the one asked), threshold 0.95 at the operating point
+  tracker::ConfidenceModel model;            //!< the fitted coefficients (kind: the one asked), threshold 0.95 at the operating point
   double aurocCrossValidated = 0;   //!< AUROC of the frames each scored by the model fitted on the other fold of runs
   double auroc = 0;                 //!< AUROC of the frames scored by \e model
   double operatingThreshold = 0;    //!< the threshold of the unshifted fit at the operating point
@@ -39,8 +39,8 @@ struct ConfidenceFit
   lowest threshold at which at most \e maxFalseAccept of the wrong frames are trusted. The figures
   are those of the frames as the runs tracked them (the fitted confidence, had it been the
   tracker's, might have changed its re-verifications: run the study again with it to know).
-  Throws pm::Error for an empty set, a set of one class, or the kind Auto or Custom.
+  Throws pm::core::Error for an empty set, a set of one class, or the kind Auto or Custom.
 */
-ConfidenceFit fitConfidence(const ConfidenceStudy &study, ConfidenceKind kind, double maxFalseAccept);
+ConfidenceFit fitConfidence(const ConfidenceStudy &study, tracker::ConfidenceKind kind, double maxFalseAccept);
 
 } // namespace pm::compare

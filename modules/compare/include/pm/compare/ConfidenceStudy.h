@@ -68,7 +68,7 @@ struct ConfidenceStudy
 
 /*!
   Renders and tracks the study (each pass's scene once per scenario frame, tracked by each of its
-  runs; \e onFrame after each). \e rig: the default rig. Throws pm::Error.
+  runs; \e onFrame after each). \e rig: the default rig. Throws pm::core::Error.
 
   \code
     pm::compare::ConfidenceStudyParams p;
@@ -80,7 +80,7 @@ struct ConfidenceStudy
     std::cout << "AUROC " << r.auroc << "\n";
   \endcode
 */
-ConfidenceStudy runConfidenceStudy(const StereoRig &rig, const ConfidenceStudyParams &params, const std::function<void()> &onFrame = {});
+ConfidenceStudy runConfidenceStudy(const core::StereoRig &rig, const ConfidenceStudyParams &params, const std::function<void()> &onFrame = {});
 
 //! The study's figures (see ConfidenceStudy.h).
 struct ConfidenceReport

@@ -50,9 +50,9 @@ namespace pm::compare {
 struct ConfidenceRun
 {
   std::string name;              //!< the run's name (in reports, and in the error for a missing model)
-  const PhotoModel *model = nullptr; //!< the tracker's model (not owned; it must outlive collectLabelledFrames())
+  const core::PhotoModel *model = nullptr; //!< the tracker's model (not owned; it must outlive collectLabelledFrames())
   vpHomogeneousMatrix oMm;       //!< the model's frame in the toy's frame (the truth is hMo * oMm)
-  TrackerParams params;          //!< the tracker's parameters
+  tracker::TrackerParams params;          //!< the tracker's parameters
   bool otherToy = false;         //!< the model is of another toy: every frame is wrong
 };
 
@@ -62,8 +62,8 @@ struct LabelledFrame
   std::size_t run = 0;           //!< index in the runs
   std::string scenario;          //!< the Scenario's name
   int frame = 0;                 //!< the frame's index in the scenario
-  TrackState state = TrackState::Searching; //!< the tracker's state after the frame
-  ConfidenceCues cues;           //!< the cues the confidence is computed from (TrackResult::cues)
+  tracker::TrackState state = tracker::TrackState::Searching; //!< the tracker's state after the frame
+  tracker::ConfidenceCues cues;           //!< the cues the confidence is computed from (TrackResult::cues)
   double confidence = 0;         //!< the tracker's confidence (TrackResult::confidence)
   bool trusted = false;          //!< the tracker trusted its estimate (TrackResult::trusted)
   //! Translation error of the estimate against the truth hMo * oMm (mm).
@@ -78,9 +78,9 @@ constexpr double kRightMm = 20, kRightDeg = 5; //!< ... and its rotation error a
   Renders every frame of \e s once, gives it to a fresh tracker per run (started with no pose) and
   appends one LabelledFrame per frame and run to \e out; \e sceneAt (if any) sets the scene for
   the frame's time before it is rendered (e.g. moves a look-alike), \e onFrame is called after each
-  frame. Throws pm::Error if a run has no model.
+  frame. Throws pm::core::Error if a run has no model.
 */
-void collectLabelledFrames(const StereoRig &rig, sim::Scene &scene, const Scenario &s, const std::vector<ConfidenceRun> &runs,
+void collectLabelledFrames(const core::StereoRig &rig, sim::Scene &scene, const Scenario &s, const std::vector<ConfidenceRun> &runs,
                            std::vector<LabelledFrame> &out, const std::function<void()> &onFrame = {},
                            const std::function<void(sim::Scene &, double t)> &sceneAt = {});
 

@@ -22,9 +22,9 @@ namespace pm::compare {
   The outer contour of \e region (255 inside, the photo-model's region) simplified to within
   \e tolerancePx (OpenCV's findContours and approxPolyDP), in the model frame of \e model
   (metres, z = 0), in the order in which a camera in front of the model sees it turn
-  counter-clockwise (ViSP's rule for a face's visible side). Throws pm::Error for an empty region.
+  counter-clockwise (ViSP's rule for a face's visible side). Throws pm::core::Error for an empty region.
 */
-std::vector<vpPoint> outlinePolygon(const vpImage<unsigned char> &region, const PhotoModel &model, double tolerancePx = 1.5);
+std::vector<vpPoint> outlinePolygon(const vpImage<unsigned char> &region, const core::PhotoModel &model, double tolerancePx = 1.5);
 
 //! The .cao text (ViSP's model format, version 1) of one planar face bounded by \e polygon.
 std::string caoText(const std::vector<vpPoint> &polygon, const std::string &comment);

@@ -27,7 +27,7 @@ struct RocPoint
 
 /*!
   The ROC of \e scores against \e right (same sizes), one point per distinct score, from the
-  highest threshold down, starting at (0, 0). Throws pm::Error if the sizes differ, a score is not
+  highest threshold down, starting at (0, 0). Throws pm::core::Error if the sizes differ, a score is not
   finite, or either class is empty.
 */
 std::vector<RocPoint> rocCurve(const std::vector<double> &scores, const std::vector<bool> &right);
@@ -45,13 +45,13 @@ struct LogisticFit
   std::vector<double> weights; //!< one per feature
   double bias = 0;             //!< b, the intercept (not under the ridge)
   int iterations = 0;          //!< Newton steps taken (at most the maxIterations given)
-  //! P(right | x) for a row \e x of the fitted size. Throws pm::Error for a row of another size.
+  //! P(right | x) for a row \e x of the fitted size. Throws pm::core::Error for a row of another size.
   double probability(const std::vector<double> &x) const;
 };
 
 /*!
   Fits P(right | x) = 1 / (1 + exp(-(w . x + b))) to the rows of \e x (each of the same size)
-  by Newton's method on the log-likelihood with a ridge \e l2 on w. Throws pm::Error if the rows
+  by Newton's method on the log-likelihood with a ridge \e l2 on w. Throws pm::core::Error if the rows
   are empty, ragged or not finite, the labels' count differs, or either class is empty.
 */
 LogisticFit fitLogistic(const std::vector<std::vector<double>> &x, const std::vector<bool> &right, double l2 = 1e-3,
@@ -60,7 +60,7 @@ LogisticFit fitLogistic(const std::vector<std::vector<double>> &x, const std::ve
 /*!
   Cross-validation: each row scored by the logistic model fitted on the rows of the other folds
   (\e fold: each row's fold, 0..folds-1; e.g. its run's index modulo folds, so that no run is
-  scored by a model that saw it). Throws pm::Error (naming the fold) if the rows of the other
+  scored by a model that saw it). Throws pm::core::Error (naming the fold) if the rows of the other
   folds hold one class only, and as fitLogistic().
   \code
     const std::vector<double> held = pm::compare::crossValidatedLogistic(features, right, runIndexMod2, 2);

@@ -65,17 +65,17 @@ const std::vector<std::string> &allScenarioNames();
 
 /*!
   The scenario \e name (one of allScenarioNames()); \e table2 are the waypoints of Table 2;
-  \e steps > 0 keeps only the first steps of table2. Throws pm::Error for an unknown name.
+  \e steps > 0 keeps only the first steps of table2. Throws pm::core::Error for an unknown name.
 */
-Scenario makeScenario(const std::string &name, const std::vector<Phi> &table2, int steps = 0);
-//! The scenarios \e names, Table 2's waypoints read from \e table2Path (step,x,y,z,e1,e2,e3). Throws pm::Error.
+Scenario makeScenario(const std::string &name, const std::vector<core::Phi> &table2, int steps = 0);
+//! The scenarios \e names, Table 2's waypoints read from \e table2Path (step,x,y,z,e1,e2,e3). Throws pm::core::Error.
 std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const std::string &table2Path, int steps = 0);
 
 /*!
   The images of frame \e k of \e s: the scene set as the frame says (exposure, light, occluder),
   rendered (frame \e k's noise), or black for a blank frame. The scene's parameters stay as set.
 */
-sim::StereoImages renderScenarioFrame(sim::Scene &scene, const StereoRig &rig, const Scenario &s, std::size_t k);
+sim::StereoImages renderScenarioFrame(sim::Scene &scene, const core::StereoRig &rig, const Scenario &s, std::size_t k);
 
 
 } // namespace pm::compare

@@ -27,7 +27,7 @@ namespace pm::compare {
   Our PhotoModelTracker on \e rig and \e model, named \e name: start() searches from scratch
   (initialize(), no pose needed); an estimate is valid when the tracker's state is tracking.
 */
-std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params,
+std::unique_ptr<ComparedTracker> makeOurTracker(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params,
                                                 const std::string &name = "photo-model (ours)");
 
 /*!
@@ -37,10 +37,10 @@ std::unique_ptr<ComparedTracker> makeOurTracker(const StereoRig &rig, const Phot
 enum class MbtFeatures { Edge, Klt, EdgeKlt };
 /*!
   \e caoPath: the model file; \e xmlPath: vpMbGenericTracker's settings (moving edges, KLT,
-  visibility), the same for both cameras; the intrinsics come from the rig. Throws pm::Error if
+  visibility), the same for both cameras; the intrinsics come from the rig. Throws pm::core::Error if
   either file cannot be loaded.
 */
-std::unique_ptr<ComparedTracker> makeMbtTracker(const StereoRig &rig, MbtFeatures features, const std::string &caoPath,
+std::unique_ptr<ComparedTracker> makeMbtTracker(const core::StereoRig &rig, MbtFeatures features, const std::string &caoPath,
                                                 const std::string &xmlPath);
 
 /*!
@@ -50,9 +50,9 @@ std::unique_ptr<ComparedTracker> makeMbtTracker(const StereoRig &rig, MbtFeature
 */
 enum class TemplateCost { Ssd, Zncc };
 /*!
-  \e polygon: the outline in the model frame (outlinePolygon()). Its start() throws pm::Error
+  \e polygon: the outline in the model frame (outlinePolygon()). Its start() throws pm::core::Error
   if no template cell fits inside the outline in the left image.
 */
-std::unique_ptr<ComparedTracker> makeTemplateTracker(const StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon);
+std::unique_ptr<ComparedTracker> makeTemplateTracker(const core::StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon);
 
 } // namespace pm::compare

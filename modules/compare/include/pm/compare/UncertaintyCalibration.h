@@ -13,7 +13,7 @@
   \code
     const auto c12 = pm::compare::collectUncertaintySamples(rig, {"C12", 1});
     const auto r2 = pm::compare::collectUncertaintySamples(rig, {"R2", 1});
-    const pm::UncertaintyModel m = pm::compare::fitUncertainty({c12, r2});
+    const pm::precise::UncertaintyModel m = pm::compare::fitUncertainty({c12, r2});
     const std::array<double, 6> within = pm::compare::shareWithin(c12, m, 1.0); // about 0.68 each
   \endcode
 */
@@ -45,18 +45,18 @@ struct UncertaintyRun
   long budget = 1900;           //!< evaluations per frame
 };
 
-//! The run's samples (see UncertaintyCalibration.h); \e onFrame after each frame. Throws pm::Error.
-std::vector<UncertaintySample> collectUncertaintySamples(const StereoRig &rig, const UncertaintyRun &run,
+//! The run's samples (see UncertaintyCalibration.h); \e onFrame after each frame. Throws pm::core::Error.
+std::vector<UncertaintySample> collectUncertaintySamples(const core::StereoRig &rig, const UncertaintyRun &run,
                                                          const std::function<void()> &onFrame = {});
 
 /*!
   Per axis, the scale and floor (on a grid) whose share of errors within 1 sigma is nearest 68 % on
   the worst of \e runs, a quarter of the worst distance of the share within 2 sigma from 95 %
-  added (it settles the trade between scale and floor). Throws pm::Error if a run has no sample.
+  added (it settles the trade between scale and floor). Throws pm::core::Error if a run has no sample.
 */
-UncertaintyModel fitUncertainty(const std::vector<std::vector<UncertaintySample>> &runs);
+precise::UncertaintyModel fitUncertainty(const std::vector<std::vector<UncertaintySample>> &runs);
 
 //! Per axis, the share of \e samples whose |error| is within \e multiple times \e model's sigma (0 for no sample).
-std::array<double, 6> shareWithin(const std::vector<UncertaintySample> &samples, const UncertaintyModel &model, double multiple);
+std::array<double, 6> shareWithin(const std::vector<UncertaintySample> &samples, const precise::UncertaintyModel &model, double multiple);
 
 } // namespace pm::compare

@@ -20,7 +20,7 @@
 #include <mutex>
 #include <thread>
 
-namespace pm {
+namespace pm::core {
 
 /*!
   Runs the items of a small batch on the calling thread and one helper thread (see BatchPool.h).
@@ -28,7 +28,7 @@ namespace pm {
 
   \code
   std::vector<double> out(20);
-  pm::BatchPool::shared().run(out.size(), [&](std::size_t i) { out[i] = std::sqrt(static_cast<double>(i)); });
+  pm::core::BatchPool::shared().run(out.size(), [&](std::size_t i) { out[i] = std::sqrt(static_cast<double>(i)); });
   // every out[i] is set here, whichever thread computed it
   \endcode
 */
@@ -78,4 +78,4 @@ private:
   std::thread m_thread;
 };
 
-} // namespace pm
+} // namespace pm::core

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace pm {
+namespace pm::core {
 
 /*!
   The exception visp-photomodel throws (see Error.h); what() is the message for the user.
@@ -19,4 +19,4 @@ public:
   explicit Error(const std::string &what) : std::runtime_error(what) {}
 };
 
-} // namespace pm
+} // namespace pm::core

@@ -14,7 +14,7 @@
 
 #include "pm/core/StereoFitness.h"
 
-namespace pm {
+namespace pm::core {
 
 /*!
   The grid of a fitness map: which two variables of phi vary, over which ranges, in which step.
@@ -70,12 +70,12 @@ struct FitnessMap
   Computes the map around \e reference (cells whose pose is invalid, |eps| > 1, get 0). Uses the
   OpenMP threads available. \e fitness must have its images (StereoFitness::setImages()).
   \e topFraction: the top level set's depth, as a fraction of the map's range of F, in [0, 1).
-  Throws pm::Error for a bad spec (a, b not two different indices 0..5, an empty range, a step
+  Throws pm::core::Error for a bad spec (a, b not two different indices 0..5, an empty range, a step
   that is not positive or gives more than 1e5 cells along an axis) or a bad \e topFraction.
   \code
-  // fitness: a pm::StereoFitness given its images; truth: the pm::Phi to map around
-  const std::vector<pm::FitnessMapSpec> specs = pm::paperFitnessMaps();
-  const pm::FitnessMap map = pm::computeFitnessMap(fitness, truth, specs[0]); // F over x-y, 1 mm steps
+  // fitness: a pm::core::StereoFitness given its images; truth: the pm::core::Phi to map around
+  const std::vector<pm::core::FitnessMapSpec> specs = pm::core::paperFitnessMaps();
+  const pm::core::FitnessMap map = pm::core::computeFitnessMap(fitness, truth, specs[0]); // F over x-y, 1 mm steps
   std::cout << "peak at x = " << map.peakA << " mm, y = " << map.peakB << " mm\n";
   \endcode
 */
@@ -88,4 +88,4 @@ FitnessMap computeFitnessMap(const StereoFitness &fitness, const Phi &reference,
 */
 std::vector<FitnessMapSpec> paperFitnessMaps(double posStep = 1.0, double epsStep = 0.01);
 
-} // namespace pm
+} // namespace pm::core

@@ -10,13 +10,13 @@
 
 #include <visp3/core/vpRGBa.h>
 
-namespace pm {
+namespace pm::core {
 
 /*!
   A colour in the HSV model (see Hue.h): hue in degrees, saturation and value in [0, 1].
   \code
-  const pm::Hsv c = pm::rgbToHsv(255, 128, 0);                  // orange: h = 30.1 deg, s = 1, v = 1
-  const float d = pm::hueDistance(c.h, pm::hueDeg(vpRGBa(255, 0, 0))); // 30.1 deg from red
+  const pm::core::Hsv c = pm::core::rgbToHsv(255, 128, 0);                  // orange: h = 30.1 deg, s = 1, v = 1
+  const float d = pm::core::hueDistance(c.h, pm::core::hueDeg(vpRGBa(255, 0, 0))); // 30.1 deg from red
   \endcode
 */
 struct Hsv
@@ -83,4 +83,4 @@ inline float circularMeanHue(const std::vector<float> &hues)
   return static_cast<float>(m >= 360.0 ? 0.0 : m);
 }
 
-} // namespace pm
+} // namespace pm::core

@@ -18,7 +18,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
-namespace pm {
+namespace pm::core {
 
 class UndistortMap;
 
@@ -51,12 +51,12 @@ struct PixelRect
   \code
   vpImage<vpRGBa> I;
   vpImageIo::read(I, "left.png");
-  pm::HuePlane plane;
+  pm::core::HuePlane plane;
   plane.compute(I, 0.1f);                        // pixels of saturation < 0.1 get kNoHue
   const std::uint16_t h = plane.at(320, 240);    // tenths of a degree
-  if (h != pm::HuePlane::kNoHue)
+  if (h != pm::core::HuePlane::kNoHue)
     std::cout << "hue " << h / 10.0 << " deg\n";
-  plane.compute(I, 0.1f, pm::PixelRect{100, 80, 300, 240}); // only columns [100, 300), rows [80, 240)
+  plane.compute(I, 0.1f, pm::core::PixelRect{100, 80, 300, 240}); // only columns [100, 300), rows [80, 240)
   \endcode
 */
 class HuePlane
@@ -67,7 +67,7 @@ public:
 
   //! Fills the plane from \e I; pixels with saturation < \e minSaturation get kNoHue.
   void compute(const vpImage<vpRGBa> &I, float minSaturation = 0.f);
-  //! The same in the ideal image of \e map's camera (\e I is the raw image). Throws pm::Error if \e I is not of the map's size.
+  //! The same in the ideal image of \e map's camera (\e I is the raw image). Throws pm::core::Error if \e I is not of the map's size.
   void compute(const vpImage<vpRGBa> &I, float minSaturation, const UndistortMap &map);
   /*!
     The hue inside \e roi only (clipped to the image), kNoHue everywhere else: a point outside
@@ -79,7 +79,7 @@ public:
   /*!
     After a compute with a window: the hue of these pixels too (indices v * width + u of \e I, which
     must be the image of that compute), where the window left them out (see window()); the next
-    compute resets them. Throws pm::Error for a pixel off the image or an image of another size.
+    compute resets them. Throws pm::core::Error for a pixel off the image or an image of another size.
   */
   void addPixels(const vpImage<vpRGBa> &I, float minSaturation, const std::int64_t *pixels, std::size_t n);
 
@@ -105,4 +105,4 @@ private:
 //! Hue of one colour in tenths of a degree (same formula as rgbToHsv, rounded), or kNoHue.
 std::uint16_t hueDeci(const vpRGBa &c, float minSaturation);
 
-} // namespace pm
+} // namespace pm::core

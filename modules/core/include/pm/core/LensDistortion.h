@@ -12,7 +12,7 @@
   calibration check undistorts its corners. The raw image is what the camera delivers. With no
   coefficients (or all zero) nothing is resampled: a pinhole rig keeps its results bit for bit.
 
-      pm::LensDistortion d{{-0.27, 0.05, 0.001, 0.0, 0.0}};
+      pm::core::LensDistortion d{{-0.27, 0.05, 0.001, 0.0, 0.0}};
       d.validate(cam, 640, 480, "left camera");            // throws if it folds the image
       const vpImagePoint raw = d.distort(cam, ideal);     // where an ideal pixel lands in the raw image
       const vpImagePoint back = d.undistort(cam, raw);    // and back
@@ -22,7 +22,7 @@
 #include <visp3/core/vpCameraParameters.h>
 #include <visp3/core/vpImagePoint.h>
 
-namespace pm {
+namespace pm::core {
 
 /*!
   A camera's lens distortion in OpenCV's model, acting on the normalized coordinates of the camera's
@@ -37,7 +37,7 @@ struct LensDistortion
   //! True when there is nothing to correct (no coefficient, or all zero).
   bool isNone() const;
   /*!
-    Throws pm::Error naming \e who when the count is not 4, 5, 8, 12 or 14, a value is not finite,
+    Throws pm::core::Error naming \e who when the count is not 4, 5, 8, 12 or 14, a value is not finite,
     or the distortion folds the image of size w x h: the radial map must grow with the radius out
     to the image's farthest corner, or two rays would land on one pixel.
   */
@@ -54,4 +54,4 @@ struct LensDistortion
   std::string describe() const;
 };
 
-} // namespace pm
+} // namespace pm::core

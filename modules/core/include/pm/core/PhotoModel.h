@@ -20,13 +20,13 @@
   camera's projection with the view taken from the direction nearest to that camera's (the toy's
   outline and sides as that camera sees them), like the view-based models of DLR's trackers.
 
-      pm::PhotoModel m = pm::io::loadPhotoModel("model.json");   // version 1 (flat), 2 or 3 (depth)
+      pm::core::PhotoModel m = pm::io::loadPhotoModel("model.json");   // version 1 (flat), 2 or 3 (depth)
       if (m.hasDepth()) std::cout << "relief " << m.depthRangeMm[0] << " to " << m.depthRangeMm[1] << " mm\n";
 */
 #include <string>
 #include <vector>
 
-namespace pm {
+namespace pm::core {
 
 /*!
   One point of a photo-model: its position in the model frame M, its hue, and where it was sampled.
@@ -88,13 +88,13 @@ struct ModelView
   A photo-model: the target as the fitness looks for it (see PhotoModel.h). StereoFitness copies
   the points it needs, so a model may go once the fitness is built.
   \code
-  pm::PhotoModel m;                         // by hand: one red point, one point of background
+  pm::core::PhotoModel m;                         // by hand: one red point, one point of background
   m.distanceMm = 500;
   m.px = m.py = 800;
   m.backgroundHue = 200;
   m.inner.push_back({0.f, 0.f, 0.f, 0.f, 320.f, 240.f});   // x, y, z (mm), hue (deg), u, v (px)
   m.outer.push_back({50.f, 0.f, 0.f, 200.f, 400.f, 240.f});
-  m.validate("hand-made model");            // throws pm::Error if it cannot be used
+  m.validate("hand-made model");            // throws pm::core::Error if it cannot be used
   std::cout << m.size() << " points, " << (m.hasDepth() ? "3-D" : "flat") << "\n";
   \endcode
 */
@@ -146,11 +146,11 @@ struct PhotoModel
   //! True when some point lies off the plane z = 0 (a stereo model).
   bool hasDepth() const;
   /*!
-    Throws pm::Error if the model cannot be used: S_in empty, a non-finite coordinate or
+    Throws pm::core::Error if the model cannot be used: S_in empty, a non-finite coordinate or
     hue outside [0, 360), a non-positive distance or focal length, views on a flat model or a view
     without S_in or camera centre. \e source names the file or the origin for the message.
   */
   void validate(const std::string &source) const;
 };
 
-} // namespace pm
+} // namespace pm::core

@@ -14,21 +14,21 @@
 
 #include <visp3/core/vpHomogeneousMatrix.h>
 
-namespace pm {
+namespace pm::core {
 
 /*!
   The pose phi = [x, y, z, eps1, eps2, eps3] of the model frame M in the hand frame H, hMo (see
   Pose.h): position in mm, orientation as the vector part of a unit quaternion (eta >= 0). The
   default is the identity at the hand's origin.
   \code
-  pm::Phi phi;
+  pm::core::Phi phi;
   phi.z = 500;                                       // 500 mm ahead of the hand
   phi.e3 = std::sin(0.5 * vpMath::rad(30));          // turned 30 deg about the hand's z axis
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(phi); // translation in metres
-  const pm::StereoRig rig = pm::StereoRig::symmetric(vpCameraParameters(800, 800, 320, 240), 640, 480, 0.1, 0.0);
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(phi); // translation in metres
+  const pm::core::StereoRig rig = pm::core::StereoRig::symmetric(vpCameraParameters(800, 800, 320, 240), 640, 480, 0.1, 0.0);
   const vpHomogeneousMatrix cMo = rig.left.cMh() * hMo;         // the model in the left camera
-  const pm::Phi back = pm::fromHomogeneousMatrix(hMo);
-  std::cout << back.toString() << ", " << pm::rotationDistanceDeg(phi, back) << " deg apart\n";
+  const pm::core::Phi back = pm::core::fromHomogeneousMatrix(hMo);
+  std::cout << back.toString() << ", " << pm::core::rotationDistanceDeg(phi, back) << " deg apart\n";
   \endcode
 */
 struct Phi
@@ -75,7 +75,7 @@ inline Rot3 rotationOf(const Phi &p)
           2 * (e1 * e3 - n * e2),       2 * (e2 * e3 + n * e1),       1 - 2 * (e1 * e1 + e2 * e2)};
 }
 
-//! phi -> hMo (metres). Throws pm::Error if phi is not valid (|eps| > 1 or not finite).
+//! phi -> hMo (metres). Throws pm::core::Error if phi is not valid (|eps| > 1 or not finite).
 vpHomogeneousMatrix toHomogeneousMatrix(const Phi &phi);
 /*!
   \e phi moved by a small motion \e twist of the model about its own origin, expressed in the hand
@@ -88,7 +88,7 @@ double translationDistanceMm(const Phi &a, const Phi &b);
 //! Angle of the rotation between the orientations of \e a and \e b (deg, in [0, 180]).
 double rotationDistanceDeg(const Phi &a, const Phi &b);
 
-//! hMo (metres) -> phi with eta >= 0. Throws pm::Error if hMo is not a rigid transformation.
+//! hMo (metres) -> phi with eta >= 0. Throws pm::core::Error if hMo is not a rigid transformation.
 Phi fromHomogeneousMatrix(const vpHomogeneousMatrix &hMo);
 
-} // namespace pm
+} // namespace pm::core

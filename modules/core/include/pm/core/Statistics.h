@@ -6,18 +6,18 @@
 */
 #include <vector>
 
-namespace pm {
+namespace pm::core {
 
 /*!
   The \e fraction percentile of \e values by the nearest-rank rule: the smallest value with at
   least fraction x n values at or below it (fraction in (0, 1]; 0.99 gives the p99 that every
-  program reports). 0 for no values. Throws pm::Error for a fraction outside (0, 1].
+  program reports). 0 for no values. Throws pm::core::Error for a fraction outside (0, 1].
 
   \code
-    const double p99 = pm::percentile({1.0, 2.0, 3.0, 4.0}, 0.99); // 4
-    const double median = pm::percentile({1.0, 2.0, 3.0, 4.0}, 0.5); // 2
+    const double p99 = pm::core::percentile({1.0, 2.0, 3.0, 4.0}, 0.99); // 4
+    const double median = pm::core::percentile({1.0, 2.0, 3.0, 4.0}, 0.5); // 2
   \endcode
 */
 double percentile(std::vector<double> values, double fraction);
 
-} // namespace pm
+} // namespace pm::core

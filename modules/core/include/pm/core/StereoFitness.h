@@ -24,7 +24,7 @@
   runs exactly as before. (The other way, distorting each projected point in the kernels, would
   cost per point and per evaluation: see pm-bench Distortion_*.)
   evaluate() is const and thread-safe, allocates nothing, and refuses an invalid phi
-  (|eps| > 1 or not finite) with pm::Error: it never returns NaN.
+  (|eps| > 1 or not finite) with pm::core::Error: it never returns NaN.
 */
 #include <array>
 #include <cstdint>
@@ -40,7 +40,7 @@
 #include "pm/core/StereoRig.h"
 #include "pm/core/UndistortMap.h"
 
-namespace pm {
+namespace pm::core {
 
 /*!
   The tolerances and scores of the fitness (Eqs. 8, 9; see StereoFitness.h), with the paper's
@@ -59,7 +59,7 @@ struct FitnessParams
   double offImage = 0.0;     //!< score of a point projected off the image (or behind the camera)
   float minSaturation = 0.f; //!< image pixels less saturated have no hue (0: the paper, every pixel has one)
 
-  void validate() const; //!< throws pm::Error naming the parameter out of range
+  void validate() const; //!< throws pm::core::Error naming the parameter out of range
 };
 
 /*!
@@ -131,17 +131,17 @@ struct FitnessDetail
   from several threads at once; setImages() and addHueUnder() change the planes and must not.
   Cameras are numbered 0 (left) and 1 (right).
   \code
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");              // pm/io/RigFile.h
-  const pm::PhotoModel model = pm::io::loadPhotoModel("model.json");  // pm/io/PhotoModelFile.h
-  pm::StereoFitness fitness(rig, model);       // the paper's parameters
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");              // pm/io/RigFile.h
+  const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json");  // pm/io/PhotoModelFile.h
+  pm::core::StereoFitness fitness(rig, model);       // the paper's parameters
   vpImage<vpRGBa> IL, IR;
   vpImageIo::read(IL, "left.png");
   vpImageIo::read(IR, "right.png");
   fitness.setImages(IL, IR);                   // a new pair: the hue planes
-  pm::Phi phi;                                 // hMo: the model 500 mm ahead of the hand,
+  pm::core::Phi phi;                                 // hMo: the model 500 mm ahead of the hand,
   phi.z = 500;                                 // its axes those of the hand
   const double F = fitness.evaluate(phi);      // the higher, the better phi fits the pair
-  const pm::FitnessDetail d = fitness.evaluateDetail(phi);
+  const pm::core::FitnessDetail d = fitness.evaluateDetail(phi);
   std::cout << "F = " << F << " (left " << d.left << ", right " << d.right << ")\n";
   \endcode
 */
@@ -149,14 +149,14 @@ class StereoFitness
 {
 public:
   /*!
-    Prepares the model for \e rig (copies both). Throws pm::Error for an invalid rig, model or
+    Prepares the model for \e rig (copies both). Throws pm::core::Error for an invalid rig, model or
     parameters, or a model of more than 65,535 views.
   */
   StereoFitness(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params = FitnessParams());
 
   /*!
     Takes a new stereo pair: computes both hue planes (no allocation once the size is set).
-    Throws pm::Error if an image's size differs from its rig camera's.
+    Throws pm::core::Error if an image's size differs from its rig camera's.
   */
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   /*!
@@ -168,18 +168,18 @@ public:
   /*!
     Where the model lands in camera \e camera at \e phi: the bounding box of its points in front of
     the camera (of the view scored there), clipped to the image; empty if none falls in it.
-    Needs no images. Throws pm::Error for an invalid pose.
+    Needs no images. Throws pm::core::Error for an invalid pose.
   */
   PixelRect footprint(const Phi &phi, int camera) const;
   /*!
     After setImages with windows: the hue under every model point at each of the \e n \e poses too
     (the pixels a pose outside the windows reads), so that F there is what the whole images give.
-    \e left and \e right must be the images of the last setImages. Throws pm::Error for an invalid
+    \e left and \e right must be the images of the last setImages. Throws pm::core::Error for an invalid
     pose, no images or images of another size.
   */
   void addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses, std::size_t n);
 
-  //! F(phi). Throws pm::Error if phi is invalid or no images were set.
+  //! F(phi). Throws pm::core::Error if phi is invalid or no images were set.
   double evaluate(const Phi &phi) const;
   //! F for the \e n poses \e phis into \e out, on two cores (BatchPool); the same values as evaluate(). Same contract.
   void evaluate(const Phi *phis, std::size_t n, double *out) const;
@@ -227,13 +227,13 @@ public:
 
   /*!
     RMS distance (px) between the model's points projected at \e a and at \e b, over both cameras
-    (points in front of both): how far apart two poses look. Throws pm::Error for an invalid pose.
+    (points in front of both): how far apart two poses look. Throws pm::core::Error for an invalid pose.
   */
   double reprojectionRms(const Phi &a, const Phi &b) const;
 
   /*!
     Fraction of the model's points (of the view scored there) that project inside camera \e camera's
-    image at \e phi. Needs no images; throws pm::Error for an invalid pose.
+    image at \e phi. Needs no images; throws pm::core::Error for an invalid pose.
   */
   double visibleFraction(const Phi &phi, int camera) const;
 
@@ -330,4 +330,4 @@ private:
   bool m_hasDepth = false; //!< some point has z != 0 (the 3-D model); else the flat model's exact kernel
 };
 
-} // namespace pm
+} // namespace pm::core

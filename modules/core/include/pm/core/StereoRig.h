@@ -15,7 +15,7 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include "pm/core/LensDistortion.h"
 
-namespace pm {
+namespace pm::core {
 
 /*!
   One camera of the rig: its intrinsics, image size, pose on the hand (hMc) and lens.
@@ -38,9 +38,9 @@ struct RigCamera
   \code
   const vpCameraParameters cam(800, 800, 320, 240);            // px, py, u0, v0 (pixels)
   const double baseline = 0.1;                                 // metres
-  pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, baseline, pm::StereoRig::toeInFor(baseline, 0.5));
+  pm::core::StereoRig rig = pm::core::StereoRig::symmetric(cam, 640, 480, baseline, pm::core::StereoRig::toeInFor(baseline, 0.5));
   rig.left.distortion.coefficients = {-0.27, 0.05, 0.001, 0.0, 0.0}; // the left lens (OpenCV's order)
-  rig.validate();                                              // throws pm::Error naming what is wrong
+  rig.validate();                                              // throws pm::core::Error naming what is wrong
   const vpHomogeneousMatrix cLMcR = rig.cLMcR();               // the right camera in the left one
   \endcode
 */
@@ -68,11 +68,11 @@ public:
   vpHomogeneousMatrix cLMcR() const { return left.hMc.inverse() * right.hMc; }
 
   /*!
-    Throws pm::Error naming the camera and the value if a focal length px, py is not positive, a
+    Throws pm::core::Error naming the camera and the value if a focal length px, py is not positive, a
     principal point u0, v0 is negative, an intrinsic is not finite, an image size is zero, a pose
     is not rigid, or a lens distortion is invalid (LensDistortion::validate()).
   */
   void validate() const;
 };
 
-} // namespace pm
+} // namespace pm::core

@@ -10,7 +10,7 @@
     and the calibration check, which work on whole photos once.
   With barrel distortion the raw image's corners fall outside the ideal image and are not used.
 
-      const pm::UndistortMap map(rig.left);           // once
+      const pm::core::UndistortMap map(rig.left);           // once
       vpImage<vpRGBa> ideal;
       map.undistort(rawLeft, ideal);                  // a photo for the builder
       plane.compute(rawLeft, 0.1f, map);              // the hue plane in the ideal image
@@ -21,7 +21,7 @@
 #include <visp3/core/vpRGBa.h>
 #include "pm/core/StereoRig.h"
 
-namespace pm {
+namespace pm::core {
 
 /*!
   Where each pixel of a camera's ideal (pinhole) image is seen in its raw image (see UndistortMap.h
@@ -31,7 +31,7 @@ namespace pm {
 class UndistortMap
 {
 public:
-  //! Throws pm::Error if the camera's distortion is invalid (LensDistortion::validate).
+  //! Throws pm::core::Error if the camera's distortion is invalid (LensDistortion::validate).
   explicit UndistortMap(const RigCamera &camera);
   //! Width of both images, the camera's (pixels).
   unsigned width() const { return m_w; }
@@ -41,7 +41,7 @@ public:
   const std::vector<std::int32_t> &nearest() const { return m_nearest; }
   /*!
     The raw image \e raw resampled into the ideal image \e ideal (bilinear; black where the ideal
-    pixel falls off the raw image). Throws pm::Error if \e raw's size is not the camera's.
+    pixel falls off the raw image). Throws pm::core::Error if \e raw's size is not the camera's.
   */
   void undistort(const vpImage<vpRGBa> &raw, vpImage<vpRGBa> &ideal) const;
   //! The same, returned.
@@ -60,4 +60,4 @@ private:
   std::vector<std::int32_t> m_nearest;
 };
 
-} // namespace pm
+} // namespace pm::core

@@ -3,7 +3,7 @@
   \file GuardedServo.h
   From the tracker's estimate to a joint velocity an arm can take, in the lab's closed loop and on
   a real arm alike: the servo runs only on an estimate that is usable, and every command goes
-  through pm::SafeCommand.
+  through pm::servo::SafeCommand.
 
   Usable: the tracker trusts it (TrackResult::trusted: tracking, its lock verified, its confidence
   over the threshold), its quality is not under the tracker's lost threshold nor far under its
@@ -38,7 +38,7 @@ struct GuardParams
   */
   enum class Filter { Auto, On, Off };
   Filter filter = Filter::Auto;  //!< see Filter
-  PoseFilterParams filterParams; //!< the gains of that filter
+  servo::PoseFilterParams filterParams; //!< the gains of that filter
   /*!
     Fail-safe on the quality q: the servo also stops when q falls more than this under its recent
     best (the best q of the servoed frames, forgotten at qualityMemoryPerS per second): after a
@@ -72,7 +72,7 @@ struct GuardedCommand
   The fail-safe servo of an arm carrying the rig (see GuardedServo.h): one step() per camera frame.
   \code
     pm::hand::GuardedServo guard(servoParams, pm::hand::GuardParams(), tracker, arm.model());
-    const pm::TrackResult r = tracker.track(left, right);
+    const pm::tracker::TrackResult r = tracker.track(left, right);
     const vpColVector q = arm.q();
     const pm::hand::GuardedCommand c = guard.step(r, false, q, arm.fMh(q), arm.hJe(q), 1.0 / 30);
     arm.setJointVelocity(c.qdot);
@@ -84,15 +84,15 @@ public:
   /*!
     For the estimates of \e tracker (its lost threshold, search space and whether it has the precise
     stage are read here) and the joints of \e arm (its limits; the model must outlive this). Throws
-    pm::Error for a quality drop that is not positive, a negative memory rate or sigma bound.
+    pm::core::Error for a quality drop that is not positive, a negative memory rate or sigma bound.
   */
-  GuardedServo(const ServoParams &sp, const GuardParams &gp, const PhotoModelTracker &tracker, const robot::ArmModel &arm);
+  GuardedServo(const servo::ServoParams &sp, const GuardParams &gp, const tracker::PhotoModelTracker &tracker, const robot::ArmModel &arm);
   /*!
     The command for the next \e dt seconds from the estimate \e track of a frame (\e frozen: its
     images are the very same as the last ones) taken at joints \e q, hand pose \e fMh and hand
     Jacobian \e hJe. With \e oracle (the lab's), the servo uses that pose instead and always runs.
   */
-  GuardedCommand step(const TrackResult &track, bool frozen, const vpColVector &q, const vpHomogeneousMatrix &fMh,
+  GuardedCommand step(const tracker::TrackResult &track, bool frozen, const vpColVector &q, const vpHomogeneousMatrix &fMh,
                       const vpMatrix &hJe, double dt, const vpHomogeneousMatrix *oracle = nullptr);
   //! From now on, keep the target at \e hdMo in the hand frame (ServoParams::hdMo; the servo starts afresh).
   void setDesired(const vpHomogeneousMatrix &hdMo);
@@ -101,20 +101,20 @@ public:
   //! Whether the estimate is filtered (GuardParams::filter, Auto resolved for the tracker).
   bool filtering() const { return m_filtering; }
   //! False when \e u is known and over GuardParams::maxSigmaMm or maxSigmaDeg (each when positive).
-  bool certainEnough(const PoseUncertainty &u) const;
+  bool certainEnough(const precise::PoseUncertainty &u) const;
   //! Whether \e track is usable (see GuardedServo.h) against the recent best quality as it stands.
-  bool usable(const TrackResult &track, bool frozen) const;
+  bool usable(const tracker::TrackResult &track, bool frozen) const;
 
 private:
-  ServoParams m_sp;
-  std::unique_ptr<PbvsServo> m_servo; //!< not movable (vpServo keeps pointers into it)
+  servo::ServoParams m_sp;
+  std::unique_ptr<servo::PbvsServo> m_servo; //!< not movable (vpServo keeps pointers into it)
   GuardParams m_gp;
   double m_lostQuality;
-  SearchSpace m_space;
+  rmga::SearchSpace m_space;
   bool m_filtering;
   const robot::ArmModel &m_arm;
-  SafeCommand m_safe;
-  PoseFilter m_filter;  //!< the target's estimated pose in the base frame
+  servo::SafeCommand m_safe;
+  servo::PoseFilter m_filter;  //!< the target's estimated pose in the base frame
   double m_qRef = 0;    //!< the recent best quality (see GuardParams::qualityDrop)
 };
 

@@ -8,7 +8,7 @@
   motion between two pairs is told to the tracker (its odometry).
 
   The arm stops when the estimate is not usable (a ramp at its acceleration limits), when the
-  cameras end, when the loop is destroyed, and when the arm fails (it throws pm::Error, after
+  cameras end, when the loop is destroyed, and when the arm fails (it throws pm::core::Error, after
   stopping).
 */
 #include <memory>
@@ -26,7 +26,7 @@ struct HandFrame
 {
   long index = 0;          //!< the pair's number in the source
   double timeS = 0;        //!< its time (s)
-  TrackResult track;       //!< the tracker's result
+  tracker::TrackResult track;       //!< the tracker's result
   bool frozen = false;     //!< the pair was the very same as the last one
   GuardedCommand command;  //!< what the servo decided (GuardedCommand::servoing, the joint velocity)
   vpColVector q;           //!< the joints when the pair was taken
@@ -39,9 +39,9 @@ struct HandFrame
   \code
     pm::robot::ViSPRobotArm arm(myRobot, pm::robot::makeArmModel("viper850"), eMh);
     pm::capture::VideoCaptureSource cameras("0", "1");
-    pm::ServoParams sp;
+    pm::servo::ServoParams sp;
     sp.hdMo = vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0); // keep the target 500 mm ahead
-    pm::hand::HandLoop loop(rig, model, pm::TrackerParams(), sp, pm::hand::GuardParams(), cameras, arm);
+    pm::hand::HandLoop loop(rig, model, pm::tracker::TrackerParams(), sp, pm::hand::GuardParams(), cameras, arm);
     pm::hand::HandFrame f;
     while (loop.step(f))
       std::cout << f.index << (f.command.servoing ? " servoing" : " held") << std::endl;
@@ -50,8 +50,8 @@ struct HandFrame
 class HandLoop
 {
 public:
-  //! Throws pm::Error for invalid parameters (see GuardedServo) or a non-positive \e fps.
-  HandLoop(const StereoRig &rig, const PhotoModel &model, const TrackerParams &tp, const ServoParams &sp,
+  //! Throws pm::core::Error for invalid parameters (see GuardedServo) or a non-positive \e fps.
+  HandLoop(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &tp, const servo::ServoParams &sp,
            const GuardParams &gp, capture::StereoSource &source, robot::Arm &arm, double fps = 30);
   //! Stops the arm.
   ~HandLoop();
@@ -59,7 +59,7 @@ public:
   HandLoop &operator=(const HandLoop &) = delete;
   /*!
     Takes the next pair, tracks it and commands the arm until the next one. False (and the arm
-    stopped) when the source has ended. Throws pm::Error when the arm or the source fails (the arm
+    stopped) when the source has ended. Throws pm::core::Error when the arm or the source fails (the arm
     stopped).
   */
   bool step(HandFrame &f);
@@ -71,13 +71,13 @@ public:
   //! The pose of the target in the hand frame the servo keeps.
   const vpHomogeneousMatrix &desired() const { return m_guard.desired(); }
   //! The photo-model tracker.
-  const PhotoModelTracker &tracker() const { return m_tracker; }
+  const tracker::PhotoModelTracker &tracker() const { return m_tracker; }
 
 private:
   capture::StereoSource &m_source;
   robot::Arm &m_arm;
   double m_dt;
-  PhotoModelTracker m_tracker;
+  tracker::PhotoModelTracker m_tracker;
   GuardedServo m_guard;
   capture::StereoFrame m_last;
   vpHomogeneousMatrix m_fMhLast;

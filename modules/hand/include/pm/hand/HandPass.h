@@ -29,7 +29,7 @@ struct PassRecording
   bool backgrounds = true; //!< a second round with the target removed (not needed on a plain backdrop of known hue)
   /*!
     Called once between the two rounds with what to do ("remove the target ..."); it returns when
-    that is done (a program waits for Enter). Empty with backgrounds: pm::Error before the arm moves.
+    that is done (a program waits for Enter). Empty with backgrounds: pm::core::Error before the arm moves.
   */
   std::function<void(const std::string &)> ask;
   std::function<void(std::size_t done, std::size_t total)> progress; //!< after each pair kept (may be empty)
@@ -37,20 +37,20 @@ struct PassRecording
 
 /*!
   Makes the pass of \e plan with \e arm from where it is, the plan's pivot \e plan.distanceMm ahead
-  of the hand, and takes the pairs from \e source (see HandPass.h). Throws pm::Error naming the first
+  of the hand, and takes the pairs from \e source (see HandPass.h). Throws pm::core::Error naming the first
   view out of reach and the joint in the way (before any motion), when the source ends, or when
   the arm fails (the arm is then stopped).
   \code
     pm::robot::ViSPRobotArm arm(myRobot, pm::robot::makeArmModel("viper850"), eMh);
     pm::capture::VideoCaptureSource cameras("0", "1");
-    pm::PassPlan plan;
+    pm::model::PassPlan plan;
     plan.distanceMm = 500;   // the target this far ahead of the hand, on its z axis
     pm::hand::PassRecording rec;
     rec.ask = [](const std::string &what) { std::cout << what << std::endl; std::cin.get(); };
     pm::io::saveViewsFolder(pm::hand::recordPass(arm, cameras, plan, rec), "views");
   \endcode
 */
-std::vector<PassView> recordPass(robot::Arm &arm, capture::StereoSource &source, const PassPlan &plan,
+std::vector<model::PassView> recordPass(robot::Arm &arm, capture::StereoSource &source, const model::PassPlan &plan,
                                  const PassRecording &recording = PassRecording());
 
 } // namespace pm::hand

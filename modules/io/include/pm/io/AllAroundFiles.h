@@ -25,9 +25,9 @@
 namespace pm::io {
 
 //! The ASCII PLY of \e surface (x y z nx ny nz red green blue), with \e mesh's triangles when it is the surface's (a vertex per point).
-std::string plyText(const std::vector<SurfacePoint> &surface, const HullMesh *mesh = nullptr);
+std::string plyText(const std::vector<model::SurfacePoint> &surface, const model::HullMesh *mesh = nullptr);
 //! Stages model.ply, contact.png and silhouettes.png into \e out.
-void writeAllAroundPictures(const AllAroundBuild &build, const std::vector<PassView> &pass, const StereoRig &rig,
+void writeAllAroundPictures(const model::AllAroundBuild &build, const std::vector<model::PassView> &pass, const core::StereoRig &rig,
                             StagedFiles &out);
 
 /*!
@@ -39,7 +39,7 @@ void writeAllAroundPictures(const AllAroundBuild &build, const std::vector<PassV
   came from (summary.json); \e truthJson (a JSON object, when not empty: the lab's check against the
   toy) goes into the summary as "truth". Returns the summary's text.
 */
-std::string writeAllAroundModel(const AllAroundBuild &build, const std::vector<PassView> &pass, const StereoRig &rig,
+std::string writeAllAroundModel(const model::AllAroundBuild &build, const std::vector<model::PassView> &pass, const core::StereoRig &rig,
                                 const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson = "");
 
 } // namespace pm::io

@@ -24,7 +24,7 @@ namespace pm::io {
 struct CameraIntrinsics
 {
   vpCameraParameters cam;     //!< px, py, u0, v0 (pinhole part)
-  LensDistortion distortion;  //!< OpenCV's model; none for a pinhole
+  core::LensDistortion distortion;  //!< OpenCV's model; none for a pinhole
   //! \var width
   //! Image width (px): the \e w asked for, else the file's (0 if it gives none).
   unsigned width = 0, height = 0; //!< image height (px): the \e h asked for, else the file's (0 if it gives none)
@@ -33,7 +33,7 @@ struct CameraIntrinsics
 
 /*!
   Reads \e path. \e name selects the camera in a ViSP XML (ignored otherwise); \e w, \e h the
-  image size the camera must have (0: any). Throws pm::Error naming the file and what is wrong:
+  image size the camera must have (0: any). Throws pm::core::Error naming the file and what is wrong:
   missing, unknown format, no such camera, a matrix of the wrong shape, a focal length not
   positive, an image size that differs, a distortion that folds the image.
 
@@ -52,7 +52,7 @@ int main()
 */
 CameraIntrinsics readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h);
 
-//! Writes \e camera's intrinsics and distortion as an OpenCV YAML file (cv::FileStorage). Throws pm::Error.
-void writeOpenCvCameraFile(const RigCamera &camera, const std::string &path);
+//! Writes \e camera's intrinsics and distortion as an OpenCV YAML file (cv::FileStorage). Throws pm::core::Error.
+void writeOpenCvCameraFile(const core::RigCamera &camera, const std::string &path);
 
 } // namespace pm::io

@@ -74,7 +74,7 @@
 namespace pm::io {
 
 /*!
-  Reads and validates a model (any version above); throws pm::Error naming the file and what is wrong.
+  Reads and validates a model (any version above); throws pm::core::Error naming the file and what is wrong.
 
   \code
 #include <iostream>
@@ -83,17 +83,17 @@ namespace pm::io {
 
 int main()
 {
-  const pm::PhotoModel m = pm::io::loadPhotoModel("model.json");
+  const pm::core::PhotoModel m = pm::io::loadPhotoModel("model.json");
   std::cout << m.inner.size() << " S_in and " << m.outer.size() << " S_out points, " << m.views.size()
             << " further views, photo distance " << m.distanceMm << " mm" << std::endl;
   pm::io::savePhotoModel(m, "copy.json");
 }
   \endcode
 */
-PhotoModel loadPhotoModel(const std::string &path);
+core::PhotoModel loadPhotoModel(const std::string &path);
 //! Serialises a model to the JSON text above.
-std::string photoModelToJson(const PhotoModel &m);
-//! Writes a model (through a temporary file). Throws pm::Error.
-void savePhotoModel(const PhotoModel &m, const std::string &path);
+std::string photoModelToJson(const core::PhotoModel &m);
+//! Writes a model (through a temporary file). Throws pm::core::Error.
+void savePhotoModel(const core::PhotoModel &m, const std::string &path);
 
 } // namespace pm::io

@@ -27,13 +27,13 @@
 
 namespace pm::io {
 
-//! Reads a vpPoseVector YAML file. Throws pm::Error for a missing file or anything that is not a finite 6x1 pose.
+//! Reads a vpPoseVector YAML file. Throws pm::core::Error for a missing file or anything that is not a finite 6x1 pose.
 vpHomogeneousMatrix readPoseYaml(const std::string &path);
 //! The same from the file's text (\e source names it in messages).
 vpHomogeneousMatrix parsePoseYaml(const std::string &text, const std::string &source);
 //! The text vpPoseVector::saveYAML writes for \e M (full double precision).
 std::string poseYamlText(const vpHomogeneousMatrix &M);
-//! Writes \e M through a temporary file and a rename. Throws pm::Error.
+//! Writes \e M through a temporary file and a rename. Throws pm::core::Error.
 void writePoseYaml(const vpHomogeneousMatrix &M, const std::string &path);
 
 } // namespace pm::io

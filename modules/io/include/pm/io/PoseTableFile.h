@@ -14,16 +14,16 @@
 namespace pm::io {
 
 /*!
-  Reads the rows in file order; \e key is the header's first column ("step", "frame"). Throws pm::Error naming the file and the line for a missing or
+  Reads the rows in file order; \e key is the header's first column ("step", "frame"). Throws pm::core::Error naming the file and the line for a missing or
   wrong header, a cell that is not a number, a row without 7 values, an invalid pose (|eps| > 1),
   or a table with no row.
 */
-std::vector<std::pair<int, Phi>> readPoseTable(const std::string &path, const std::string &key);
+std::vector<std::pair<int, core::Phi>> readPoseTable(const std::string &path, const std::string &key);
 
 /*!
   The waypoints of a trajectory file (key "step", e.g. data/trajectories/table2.csv), in file
-  order; only the first \e maxSteps when it is positive. Throws pm::Error as readPoseTable().
+  order; only the first \e maxSteps when it is positive. Throws pm::core::Error as readPoseTable().
 */
-std::vector<Phi> readWaypoints(const std::string &path, int maxSteps = 0);
+std::vector<core::Phi> readWaypoints(const std::string &path, int maxSteps = 0);
 
 } // namespace pm::io

@@ -29,7 +29,7 @@
 namespace pm::io {
 
 /*!
-  Reads a rig (version 1 or 2; hMc comes out in metres); throws pm::Error naming the file and the
+  Reads a rig (version 1 or 2; hMc comes out in metres); throws pm::core::Error naming the file and the
   field that is missing or wrong.
 
   \code
@@ -39,24 +39,24 @@ namespace pm::io {
 
 int main()
 {
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
   std::cout << "baseline " << rig.baseline() * 1e3 << " mm, cLMcR:\n" << rig.cLMcR() << std::endl;
   const vpHomogeneousMatrix cLMh = rig.left.cMh(); // the hand frame in the left camera
   std::cout << rig.left.name << " " << rig.left.width << "x" << rig.left.height << ", cMh:\n" << cLMh << std::endl;
 }
   \endcode
 */
-StereoRig loadRig(const std::string &rigJsonPath);
+core::StereoRig loadRig(const std::string &rigJsonPath);
 /*!
   Writes the rig JSON and its intrinsics XML (name relative to the JSON's folder). A camera with
   a lens ViSP's model cannot hold exactly (more than k1) also gets an OpenCV YAML file
   (\<rig stem\>_\<camera\>.yml), which the JSON names (version 2); the XML then holds ViSP's model
-  fitted to the lens, for ViSP programs. Throws pm::Error; nothing is left half-written.
+  fitted to the lens, for ViSP programs. Throws pm::core::Error; nothing is left half-written.
 */
-void saveRig(const StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
+void saveRig(const core::StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
              const std::string &description = "");
 
 //! ViSP's one-coefficient model (kud, kdu) of \e camera's lens: exact for k1 alone, else a least-squares fit over the image.
-vpCameraParameters vispDistortionModel(const RigCamera &camera);
+vpCameraParameters vispDistortionModel(const core::RigCamera &camera);
 
 } // namespace pm::io

@@ -30,7 +30,7 @@ int main()
 class StagedFiles
 {
 public:
-  //! Creates \e dir (and parents) if missing. Throws pm::Error if it cannot.
+  //! Creates \e dir (and parents) if missing. Throws pm::core::Error if it cannot.
   explicit StagedFiles(const std::string &dir);
   //! Deletes the staged files unless commit() succeeded.
   ~StagedFiles();
@@ -41,7 +41,7 @@ public:
   std::string stage(const std::string &name);
   //! The final path of \e name in the folder.
   std::string finalPath(const std::string &name) const;
-  //! Renames every staged file to its final name; if one was never written, none (throws pm::Error naming it).
+  //! Renames every staged file to its final name; if one was never written, none (throws pm::core::Error naming it).
   void commit();
   //! The output folder, as given to the constructor.
   const std::string &dir() const { return m_dir; }
@@ -52,7 +52,7 @@ private:
   bool m_committed = false;
 };
 
-//! Writes \e text to \e path through a temporary file and a rename. Throws pm::Error.
+//! Writes \e text to \e path through a temporary file and a rename. Throws pm::core::Error.
 void writeTextFile(const std::string &path, const std::string &text);
 
 } // namespace pm::io

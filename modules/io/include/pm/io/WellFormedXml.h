@@ -9,7 +9,7 @@
 namespace pm::io {
 
 /*!
-  Throws pm::Error ("it is not well-formed XML (line N: what libxml2 says)") unless \e text is a
+  Throws pm::core::Error ("it is not well-formed XML (line N: what libxml2 says)") unless \e text is a
   well-formed XML document. No network access, no external entity is loaded, no entity expanded.
   \code
     pm::io::requireWellFormedXml("<opencv_storage><a>1</a></opencv_storage>"); // fine

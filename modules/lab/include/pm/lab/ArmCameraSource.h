@@ -33,11 +33,11 @@ namespace pm::lab {
 class ArmCameraSource : public capture::StereoSource
 {
 public:
-  //! Throws pm::Error for fps \<= 0 or a negative \e maxPairs.
-  ArmCameraSource(const sim::Scene &scene, const StereoRig &rig, robot::Arm &arm, const vpHomogeneousMatrix &fMo,
+  //! Throws pm::core::Error for fps \<= 0 or a negative \e maxPairs.
+  ArmCameraSource(const sim::Scene &scene, const core::StereoRig &rig, robot::Arm &arm, const vpHomogeneousMatrix &fMo,
                   double fps, long maxPairs);
   //! The target moving: at fMoAt(t) in the arm's base frame at time t (s).
-  ArmCameraSource(const sim::Scene &scene, const StereoRig &rig, robot::Arm &arm,
+  ArmCameraSource(const sim::Scene &scene, const core::StereoRig &rig, robot::Arm &arm,
                   std::function<vpHomogeneousMatrix(double t)> fMoAt, double fps, long maxPairs);
   //! Renders the pair seen from the hand's pose now (noise seed: the pair's number).
   bool next(capture::StereoFrame &f) override;
@@ -50,7 +50,7 @@ public:
 
 private:
   const sim::Scene &m_scene;
-  const StereoRig &m_rig;
+  const core::StereoRig &m_rig;
   robot::Arm &m_arm;
   std::function<vpHomogeneousMatrix(double)> m_fMoAt;
   double m_fps;

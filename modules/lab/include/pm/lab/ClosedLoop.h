@@ -70,7 +70,7 @@ struct LoopFrame
   bool moving = false;           //!< the TC-robot moves the target at t
   vpHomogeneousMatrix hMmTrue;   //!< true pose of the model in the hand frame
   vpHomogeneousMatrix hMmUsed;   //!< the pose the servo used (the filtered estimate, or the truth in oracle mode)
-  TrackResult track;             //!< the tracker's result (it runs in oracle mode too)
+  tracker::TrackResult track;             //!< the tracker's result (it runs in oracle mode too)
   CameraFault fault = CameraFault::None; //!< the fault injected at this frame
   bool frozen = false;           //!< the images were the very same as the last ones
   bool servoing = false;         //!< the servo ran on the estimate (else the arm was being stopped)
@@ -97,13 +97,13 @@ struct LoopFrame
 
   \code
     pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-    const pm::StereoRig rig = pm::io::loadRig("data/rig/pa10_stereo.json");
+    const pm::core::StereoRig rig = pm::io::loadRig("data/rig/pa10_stereo.json");
     const pm::sim::SimulatedPhotoModel sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
-    const std::vector<pm::Phi> steps{{0, 0, 500, 0, 0, 0}, {50, 0, 500, 0, 0, 0}}; // mm, quaternion vector, in h0
+    const std::vector<pm::core::Phi> steps{{0, 0, 500, 0, 0, 0}, {50, 0, 500, 0, 0, 0}}; // mm, quaternion vector, in h0
     auto makeTc = [&](const vpHomogeneousMatrix &wMh0) {
       return std::make_unique<pm::sim::TcRobot>(wMh0, pm::sim::Trajectory(steps, 1.5, 2.0));
     };
-    pm::lab::ClosedLoop loop(rig, scene, sm, pm::TrackerParams(), pm::ServoParams(), pm::lab::LoopParams(), makeTc);
+    pm::lab::ClosedLoop loop(rig, scene, sm, pm::tracker::TrackerParams(), pm::servo::ServoParams(), pm::lab::LoopParams(), makeTc);
     for (int k = 0; k < 150; ++k) {
       const pm::lab::LoopFrame f = loop.step();
       std::cout << f.t << " s: " << f.translationErrorMm << " mm, " << (f.servoing ? "servoing" : "held") << std::endl;
@@ -118,10 +118,10 @@ public:
     at the start; the target's motion is given in that hand frame h0. \e arm drives the rig
     from where it is (null: LoopParams::arm stepped in our loop, from its rest joints). \e model's
     build.model is tracked and its oMm gives the truth. The tracker starts searching, with no
-    initial pose. Throws pm::Error for invalid parameters or if \e makeTc gives no TC-robot.
+    initial pose. Throws pm::core::Error for invalid parameters or if \e makeTc gives no TC-robot.
   */
-  ClosedLoop(const StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model, const TrackerParams &tp,
-             const ServoParams &sp, const LoopParams &lp, const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &wMh0)> &makeTc,
+  ClosedLoop(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model, const tracker::TrackerParams &tp,
+             const servo::ServoParams &sp, const LoopParams &lp, const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &wMh0)> &makeTc,
              std::unique_ptr<robot::Arm> arm = nullptr);
 
   //! One frame: images, estimate, command, integration to the next frame.
@@ -131,11 +131,11 @@ public:
   //! The stereo pair of the last step().
   const sim::StereoImages &images() const { return m_images; }
   //! The photo-model tracker.
-  const PhotoModelTracker &tracker() const { return m_tracker; }
+  const tracker::PhotoModelTracker &tracker() const { return m_tracker; }
   //! Whether the estimate is filtered (LoopParams::filter, Auto resolved for this tracker).
   bool filtering() const { return m_guard.filtering(); }
   //! False when \e u is known and over LoopParams::maxSigmaMm or maxSigmaDeg (each when positive).
-  bool certainEnough(const PoseUncertainty &u) const { return m_guard.certainEnough(u); }
+  bool certainEnough(const precise::PoseUncertainty &u) const { return m_guard.certainEnough(u); }
   //! The arm that carries the rig.
   const robot::Arm &arm() const { return *m_arm; }
   //! The TC-robot that moves the target.
@@ -144,11 +144,11 @@ public:
   double time() const { return static_cast<double>(m_frame) / m_lp.fps; }
 
 private:
-  const StereoRig &m_rig;
+  const core::StereoRig &m_rig;
   const sim::Scene &m_scene;
   vpHomogeneousMatrix m_oMm, m_hdMo;
   LoopParams m_lp;
-  PhotoModelTracker m_tracker;
+  tracker::PhotoModelTracker m_tracker;
   std::unique_ptr<robot::Arm> m_arm;
   hand::GuardedServo m_guard;    //!< after m_tracker and m_arm: made from them
   LoopFaults m_faults;

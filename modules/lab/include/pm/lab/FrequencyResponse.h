@@ -42,7 +42,7 @@ std::pair<double, double> sinusoidFit(const std::vector<double> &t, const std::v
 /*!
   Runs the closed loop once per frequency (a fade-in period, then three periods, the target
   around [0, 0, 500, 0, 0, 0]) and measures the hand's response. \e onFrequency, if given, is
-  called after each. Throws pm::Error as ClosedLoop.
+  called after each. Throws pm::core::Error as ClosedLoop.
 
   \code
     pm::lab::SweepParams sw;
@@ -52,8 +52,8 @@ std::pair<double, double> sinusoidFit(const std::vector<double> &t, const std::v
       std::cout << p.frequencyHz << " Hz: gain " << p.gain << ", lag " << p.phaseLagDeg << " deg\n";
   \endcode
 */
-std::vector<BodePoint> frequencyResponse(const StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
-                                         const TrackerParams &tp, const ServoParams &servo, const LoopParams &lp,
+std::vector<BodePoint> frequencyResponse(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
+                                         const tracker::TrackerParams &tp, const servo::ServoParams &servo, const LoopParams &lp,
                                          const SweepParams &sweep, const std::function<void()> &onFrequency = {});
 
 } // namespace pm::lab

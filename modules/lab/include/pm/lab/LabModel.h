@@ -22,34 +22,34 @@ struct LabModelChoice
   bool flat = false;        //!< the paper's flat model (two photos face-on)
   bool stereo = false;      //!< the stereo snapshot: the rig's two cameras take the photos, every point gets its relief
   double distanceMm = 500;  //!< where the toy is when its photos are taken (and, flat, the photo distance; mm)
-  PhotoModelParams photo;   //!< region and sampling of the flat and stereo models
+  model::PhotoModelParams photo;   //!< region and sampling of the flat and stereo models
   bool rightView = false;   //!< the stereo model adds the right camera's own views
   double viewTurnDeg = 0;   //!< the stereo model's four further photo pairs, the hand turned by this about x and y (deg; 0: one pair)
   bool allAroundAsked = false; //!< --all-around given: the default anyway (neither flat nor stereo), kept for older command lines
   std::string arm = "pa10"; //!< the arm that makes the all-around model's pass (pm::robot::makeArmModel(); --robot)
   int passViews = 16;       //!< hand poses of the all-around model's pass
   std::vector<double> passRingsDeg{20, 40}; //!< its rings' angles from the rest axis (deg; PassPlan::ringsDeg)
-  AllAroundParams allAroundParams; //!< the all-around build (refinement depth, viewpoints, backdrop)
+  model::AllAroundParams allAroundParams; //!< the all-around build (refinement depth, viewpoints, backdrop)
 };
 
 /*!
   The lab's model of \e scene's toy, as chosen, with its true frame (SimulatedPhotoModel::oMm).
-  Throws pm::Error.
+  Throws pm::core::Error.
 
   \code
     const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
     const pm::sim::SimulatedPhotoModel m = pm::lab::makeLabModel(scene, rig, pm::lab::LabModelChoice());
-    pm::PhotoModelTracker tracker(rig, m.build.model);
+    pm::tracker::PhotoModelTracker tracker(rig, m.build.model);
   \endcode
 */
-sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const StereoRig &rig, const LabModelChoice &c);
+sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::StereoRig &rig, const LabModelChoice &c);
 
 //! A look-alike toy beside the target (the programs' --distractor, --distractor-at).
 struct DistractorChoice
 {
   std::string target;                 //!< its catalogue code (empty: none)
   std::vector<double> atMm{-190, 0};  //!< its position on the backdrop, x, y in the target frame (mm)
-  //! Puts it in \e scene (nothing when no target was given). Throws pm::Error for an unknown code.
+  //! Puts it in \e scene (nothing when no target was given). Throws pm::core::Error for an unknown code.
   void apply(sim::Scene &scene) const;
 };
 

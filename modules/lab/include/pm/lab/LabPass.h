@@ -10,8 +10,8 @@
   (pm::io::saveViewsFolder), so the lab and a user's files go through one builder.
 
       pm::robot::SteppedArm arm(pm::robot::makeArmModel("viper850"));
-      const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig, pm::PassPlan(), arm);
-      const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass.views);
+      const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig, pm::model::PassPlan(), arm);
+      const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views);
       const vpHomogeneousMatrix oMm = pass.fMo.inverse() * b.fMm;   // ground truth of the model frame
 */
 #include <vector>
@@ -32,9 +32,9 @@ namespace pm::lab {
 //! What runLabPass() gives: the views and, for ground truth, the robot's side of the pass.
 struct LabPass
 {
-  std::vector<PassView> views;     //!< the views, named "view 00", "view 01", ... (hand pose fMh, the pairs with and without the toy)
+  std::vector<model::PassView> views;     //!< the views, named "view 00", "view 01", ... (hand pose fMh, the pairs with and without the toy)
   std::vector<vpColVector> joints; //!< the arm's joints at each view
-  std::vector<PassDirection> directions; //!< each view's direction as reached (tilted less where the plan's was out of reach)
+  std::vector<model::PassDirection> directions; //!< each view's direction as reached (tilted less where the plan's was out of reach)
   vpHomogeneousMatrix fMo;         //!< the toy in the base frame during the pass (ground truth, metres)
   vpHomogeneousMatrix fMh0;        //!< the hand at rest, in the base frame (where the arm was when the pass began)
 };
@@ -43,10 +43,10 @@ struct LabPass
   Runs the pass of \e plan with \e arm from where it is (its rest) and the toy at \e h0Mo in the
   hand frame there (the plan's pivot is put on the toy's origin); the arm is left at the last
   view. Without \e backgrounds the second pass (the toy removed) is not made (a plain backdrop).
-  Throws pm::Error naming the first view the arm cannot reach within its joint limits, and the
+  Throws pm::core::Error naming the first view the arm cannot reach within its joint limits, and the
   joint in the way.
 */
-LabPass runLabPass(const sim::Scene &scene, const StereoRig &rig, const PassPlan &plan, robot::Arm &arm,
+LabPass runLabPass(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan, robot::Arm &arm,
                    const vpHomogeneousMatrix &h0Mo = vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), bool backgrounds = true);
 
 /*!
@@ -55,9 +55,9 @@ LabPass runLabPass(const sim::Scene &scene, const StereoRig &rig, const PassPlan
   (0, 0, \e distanceMm) in the hand frame at rest, then buildAllAroundModel(); with the model frame
   in the toy's frame (oMm) for ground truth. \e build (when given) receives the whole build.
 */
-sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const StereoRig &rig, const PassPlan &plan,
+sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan,
                                                      const std::string &arm = "pa10", double distanceMm = 500,
-                                                     const AllAroundParams &params = AllAroundParams(),
-                                                     AllAroundBuild *build = nullptr);
+                                                     const model::AllAroundParams &params = model::AllAroundParams(),
+                                                     model::AllAroundBuild *build = nullptr);
 
 } // namespace pm::lab

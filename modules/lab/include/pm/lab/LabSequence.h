@@ -34,15 +34,15 @@ namespace pm::lab {
 class LabSequence : public capture::StereoSource
 {
 public:
-  //! Throws pm::Error for fps \<= 0 or frames \< 1.
-  LabSequence(const sim::Scene &scene, const StereoRig &rig, const sim::Trajectory &trajectory,
+  //! Throws pm::core::Error for fps \<= 0 or frames \< 1.
+  LabSequence(const sim::Scene &scene, const core::StereoRig &rig, const sim::Trajectory &trajectory,
               const vpHomogeneousMatrix &oMm, double fps, long frames);
   //! Renders the next frame (index k, timeS k / fps); false after the last.
   bool next(capture::StereoFrame &f) override;
   //! "simulator, target C12 (crab)".
   std::string describe() const override;
   //! The model frame's pose in the hand frame at frame \e k (mm, quaternion vector).
-  Phi truth(long k) const;
+  core::Phi truth(long k) const;
   //! Whether the target is moving at frame \e k (between two waypoints).
   bool moving(long k) const;
   //! The frames of the sequence.
@@ -50,7 +50,7 @@ public:
 
 private:
   const sim::Scene &m_scene;
-  const StereoRig &m_rig;
+  const core::StereoRig &m_rig;
   const sim::Trajectory &m_trajectory;
   vpHomogeneousMatrix m_oMm;
   double m_fps;

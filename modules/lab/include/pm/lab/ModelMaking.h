@@ -7,11 +7,11 @@
   capture::grabModelPairs), and the simulator's photos of a lab target or of a user's image.
   Each returns a report::ModelOutputs ready for report::writeModelOutputs().
 
-      const pm::StereoRig rig = pm::io::loadRig("rig.json");
+      const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
       pm::capture::ModelPairs pairs;
       pairs.background = {pm::io::readColorImage("bgL.png"), pm::io::readColorImage("bgR.png")};
       pairs.photo = {pm::io::readColorImage("toyL.png"), pm::io::readColorImage("toyR.png")};
-      pm::report::ModelOutputs m = pm::lab::stereoModelFromPhotos(rig, pairs, pm::StereoModelParams(), "my toy");
+      pm::report::ModelOutputs m = pm::lab::stereoModelFromPhotos(rig, pairs, pm::model::StereoModelParams(), "my toy");
       pm::report::writeModelOutputs("model", m, 0);
 */
 #include <string>
@@ -26,27 +26,27 @@ namespace pm::lab {
 /*!
   The flat model (the paper's) from \e background and \e photo, raw images of \e camera with the
   target at \e distanceMm (mm). A lens is corrected first: the model is the ideal camera's, and
-  the outputs' photos are the corrected ones. Throws pm::Error if the photos differ in size
+  the outputs' photos are the corrected ones. Throws pm::core::Error if the photos differ in size
   (naming \e backgroundName and \e photoName) or the builder refuses them.
 */
-report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const RigCamera &camera,
-                                         double distanceMm, const PhotoModelParams &params,
+report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const core::RigCamera &camera,
+                                         double distanceMm, const model::PhotoModelParams &params,
                                          const std::string &backgroundName, const std::string &photoName);
 
 /*!
   The stereo model from the rig's backdrop pair and photo pair (raw images, one hand pose).
   The outputs' photo is the left one, its lens corrected (the region and depths are the ideal
-  image's). \e source names the photos in summary.json. Throws pm::Error.
+  image's). \e source names the photos in summary.json. Throws pm::core::Error.
 */
-report::ModelOutputs stereoModelFromPhotos(const StereoRig &rig, const capture::ModelPairs &pairs,
-                                           const StereoModelParams &params, const std::string &source);
+report::ModelOutputs stereoModelFromPhotos(const core::StereoRig &rig, const capture::ModelPairs &pairs,
+                                           const model::StereoModelParams &params, const std::string &source);
 
 /*!
   The simulator's model of \e scene's target seen from \e distanceMm (mm): flat (the left camera)
   or, with \e stereo, the stereo model (plus four pairs with the hand turned by \e viewTurnDeg
-  when it is not 0). \e params.photo is the flat model's parameters. Throws pm::Error.
+  when it is not 0). \e params.photo is the flat model's parameters. Throws pm::core::Error.
 */
-report::ModelOutputs simulatedModel(const sim::Scene &scene, const StereoRig &rig, double distanceMm, bool stereo,
-                                    const StereoModelParams &params, double viewTurnDeg, const std::string &source);
+report::ModelOutputs simulatedModel(const sim::Scene &scene, const core::StereoRig &rig, double distanceMm, bool stereo,
+                                    const model::StereoModelParams &params, double viewTurnDeg, const std::string &source);
 
 } // namespace pm::lab

@@ -30,7 +30,7 @@ namespace pm::lab {
 */
 vpImage<vpRGBa> drawTrackingTrajectory(const std::vector<TrackedFrame> &frames, const TrackingReport &report,
                                        const std::string &source);
-//! The errors of the six variables after convergence, each goal as a band (needs report.haveTruth; throws pm::Error otherwise).
+//! The errors of the six variables after convergence, each goal as a band (needs report.haveTruth; throws pm::core::Error otherwise).
 vpImage<vpRGBa> drawTrackingErrors(const std::vector<TrackedFrame> &frames, const TrackingReport &report);
 
 //! A closed-loop run's relative pose error over time, translation (mm) and rotation (deg); \e title above.

@@ -50,7 +50,7 @@ struct RunSample
   //! Largest translation error over the bucket (LoopFrame::translationErrorMm, mm).
   double translationErrorMm = 0, rotationErrorDeg = 0; //!< largest rotation error over the bucket (LoopFrame::rotationErrorDeg, deg)
   //! The true relative pose (LoopFrame::hMmTrue as a Phi: mm, quaternion vector) at the bucket's first frame.
-  Phi truth{}, used{};                                 //!< the pose the servo used (LoopFrame::hMmUsed) at the bucket's first frame
+  core::Phi truth{}, used{};                                 //!< the pose the servo used (LoopFrame::hMmUsed) at the bucket's first frame
   std::array<double, 7> q{};                           //!< the joints at the bucket's first frame (rad)
 };
 

@@ -31,7 +31,7 @@ public:
   /*!
     \e videoPath: the video file (empty: none), at \e fps / 2 frames per second, of a rig whose
     cameras are \e width x \e height; \e overlayEvery: an overlay PNG every N frames (0: none);
-    \e oracle: the run servoes on the true pose (so labelled). Throws pm::Error if the video
+    \e oracle: the run servoes on the true pose (so labelled). Throws pm::core::Error if the video
     cannot be opened.
   */
   RunRecorder(const std::string &videoPath, double fps, unsigned width, unsigned height, int overlayEvery, bool oracle);

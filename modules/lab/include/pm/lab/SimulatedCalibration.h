@@ -5,7 +5,7 @@
   known lens distortion; how far a calibration of them lands from that rig is
   pm::calib::compareRigs().
 
-      const pm::StereoRig truth = pm::lab::labRigWithLens(pm::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
+      const pm::core::StereoRig truth = pm::lab::labRigWithLens(pm::core::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
       const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 20, pm::lab::SimulatedCalibrationParams());
       const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
       const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, truth);
@@ -20,19 +20,19 @@ namespace pm::lab {
 struct SimulatedCalibrationParams
 {
   //! The lens of both cameras when no rig is given: strong barrel distortion, as OpenCV's sample cameras.
-  LensDistortion distortion{{-0.25, 0.08, 0.001, -0.0005, 0.0}};
+  core::LensDistortion distortion{{-0.25, 0.08, 0.001, -0.0005, 0.0}};
   double noiseSigma = 2.0;  //!< sensor noise (grey levels)
   std::uint64_t seed = 1;   //!< the board's poses and the noise
 };
 
 //! The lab's rig (data/rig/pa10_stereo.json's geometry: 754 px, 640x480, 323 mm, toed in at 500 mm) with \e lens on both cameras.
-StereoRig labRigWithLens(const LensDistortion &lens);
+core::StereoRig labRigWithLens(const core::LensDistortion &lens);
 
 /*!
   \e n stereo pairs of \e board seen by \e rig at random poses around 500 mm (spread so that the
   corners cover the images, where the distortion is strongest). \e step is called after each pair.
 */
-std::vector<calib::StereoImagePair> renderCalibrationPairs(const StereoRig &rig, const calib::Pattern &board, int n,
+std::vector<calib::StereoImagePair> renderCalibrationPairs(const core::StereoRig &rig, const calib::Pattern &board, int n,
                                                            const SimulatedCalibrationParams &params,
                                                            const std::function<void()> &step = {});
 

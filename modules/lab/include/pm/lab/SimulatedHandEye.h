@@ -42,7 +42,7 @@ struct HandEyeResult
   Moves the PA-10 through \e poses random poses (seed \e seed) with \e scene (the board) fixed in
   the world 0.5 m in front of the start, renders what \e truthRig's cameras see (blurred by
   \e blurPx), finds \e pattern with \e rig's intrinsics and calibrates each camera's hMc.
-  Throws pm::Error when fewer than 3 poses are usable or ViSP's calibration fails.
+  Throws pm::core::Error when fewer than 3 poses are usable or ViSP's calibration fails.
 
   \code
     const pm::calib::ChessBoard board(6, 9, 20);
@@ -51,7 +51,7 @@ struct HandEyeResult
     std::cout << r.left.translationErrorMm << " mm\n";
   \endcode
 */
-HandEyeResult simulatedHandEye(const sim::Scene &scene, const StereoRig &truthRig, const StereoRig &rig, const calib::Pattern &pattern,
+HandEyeResult simulatedHandEye(const sim::Scene &scene, const core::StereoRig &truthRig, const core::StereoRig &rig, const calib::Pattern &pattern,
                                int poses, std::uint64_t seed, double blurPx);
 
 } // namespace pm::lab

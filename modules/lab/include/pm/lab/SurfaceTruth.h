@@ -59,9 +59,9 @@ struct SurfaceTruth
 /*!
   Checks \e build (an all-around model of \e scene's toy; \e oMm its model frame in the toy's frame,
   metres) against the toy, seen through \e cam at 640 x 480 (see SurfaceTruth.h); the outlines of every
-  \e stride-th viewpoint. Throws pm::Error when the build has no mesh.
+  \e stride-th viewpoint. Throws pm::core::Error when the build has no mesh.
 */
-SurfaceTruth checkSurface(const sim::Scene &scene, const AllAroundBuild &build, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
+SurfaceTruth checkSurface(const sim::Scene &scene, const model::AllAroundBuild &build, const vpHomogeneousMatrix &oMm, const vpCameraParameters &cam,
                           int stride = 6);
 
 //! \e t as JSON (an object: "depth" per camera turn, "outlines" per band, "surface_volume_cm3").

@@ -5,11 +5,11 @@
   renderer takes for it, and its relief seen from three sides; then the pictures and the summary
   of one or several targets (a gallery for several).
 
-      const pm::StereoRig rig = pm::io::loadRig("data/rig/pa10_stereo.json");
+      const pm::core::StereoRig rig = pm::io::loadRig("data/rig/pa10_stereo.json");
       const pm::sim::TargetShape shape = pm::sim::makeTarget("C12");
       const pm::sim::Scene scene(shape);
-      const pm::lab::RenderedTarget t = pm::lab::renderTarget(scene, shape, rig, pm::Phi{0, 0, 500, 0, 0, 0}, 5);
-      pm::lab::writeRenderedTargets("render", {t}, pm::Phi{0, 0, 500, 0, 0, 0}, pm::sim::SceneParams(), false);
+      const pm::lab::RenderedTarget t = pm::lab::renderTarget(scene, shape, rig, pm::core::Phi{0, 0, 500, 0, 0, 0}, 5);
+      pm::lab::writeRenderedTargets("render", {t}, pm::core::Phi{0, 0, 500, 0, 0, 0}, pm::sim::SceneParams(), false);
 */
 #include <cstddef>
 #include <functional>
@@ -38,18 +38,18 @@ struct RenderedTarget
 /*!
   Renders \e scene (whose toy is \e shape) seen by \e rig with the toy at \e phi in the hand frame,
   \e repeat times (frames 0..repeat-1, timed), then the left view with the toy turned.
-  \e step(n) is called as work is done: repeat + 2 steps in all. Throws pm::Error.
+  \e step(n) is called as work is done: repeat + 2 steps in all. Throws pm::core::Error.
 */
-RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &shape, const StereoRig &rig, const Phi &phi,
+RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &shape, const core::StereoRig &rig, const core::Phi &phi,
                             int repeat, const std::function<void(std::size_t)> &step = {});
 
 /*!
   Writes each target's \<code\>_left.png, _right.png, _stereo.png (labelled), _relief.png, with
   \e gallery a gallery.png of their left views (four a row), and summary.json (the pose, the
   scene's settings \e sp, each target's sizes and render time) into \e dir. Returns the mean
-  render time over the targets (ms). Throws pm::Error; on an error nothing is left in \e dir.
+  render time over the targets (ms). Throws pm::core::Error; on an error nothing is left in \e dir.
 */
-double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTarget> &targets, const Phi &phi,
+double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTarget> &targets, const core::Phi &phi,
                             const sim::SceneParams &sp, bool gallery);
 
 } // namespace pm::lab

@@ -4,7 +4,7 @@
   The figures of a tracking run against its truth, as pm-track reports them (the paper's Table 2):
   when it converged (Convergence.h), each pose variable's errors after convergence (rms, largest,
   largest while moving and at rest) against a goal, the frame time's mean and p99
-  (pm::percentile), the mean work per frame and the frames in each tracker state.
+  (pm::core::percentile), the mean work per frame and the frames in each tracker state.
 */
 #include <array>
 #include <iosfwd>
@@ -24,8 +24,8 @@ struct TrackedFrame
   double t = 0;            //!< time of the frame from the first (s)
   bool haveTruth = false;  //!< whether \e truth holds the frame's true pose
   bool moving = false;     //!< the target was moving (simulator; false when unknown)
-  Phi truth{};             //!< the model frame's true pose in the hand frame (mm, quaternion vector)
-  TrackResult result;      //!< the tracker's output for the frame (its estimate: result.phi)
+  core::Phi truth{};             //!< the model frame's true pose in the hand frame (mm, quaternion vector)
+  tracker::TrackResult result;      //!< the tracker's output for the frame (its estimate: result.phi)
 };
 
 //! The errors of one pose variable (x, y, z in mm; eps1..3 unitless) over the frames after convergence.
@@ -48,7 +48,7 @@ struct TrackingReport
   bool haveTruth = false;     //!< some frame had a truth
   bool goalsMet = false;      //!< converged, some frame had a truth, and every variable's max within its goal
   double meanMs = 0;          //!< mean TrackResult::computeMs (ms)
-  double p99Ms = 0;           //!< its 99th percentile (ms, pm::percentile)
+  double p99Ms = 0;           //!< its 99th percentile (ms, pm::core::percentile)
   double meanEvaluations = 0; //!< mean TrackResult::evaluations per frame
   std::map<std::string, int> states; //!< frames per tracker state ("searching", "tracking", "lost")
   long preciseFrames = 0;     //!< frames whose pose the precise stage gave (TrackResult::precise)
@@ -69,7 +69,7 @@ std::array<double, 6> table2Goals();
 /*!
   The report of \e frames filmed at \e fps (the convergence window is 1 s of frames). A frame is
   within the bounds of convergence when its estimate is within kConvergedMm and kConvergedDeg of
-  its truth, or, without a truth, when the tracker is tracking. Throws pm::Error for no frames.
+  its truth, or, without a truth, when the tracker is tracking. Throws pm::core::Error for no frames.
 
   \code
     std::vector<pm::lab::TrackedFrame> frames; // filled while tracking
@@ -83,14 +83,14 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
   Writes \e frames as pm-track's frames.csv: a header, then per frame t, the truth (NaN when
   unknown), the estimate, their difference, fitness, quality, state, evaluations, generations,
   compute_ms, moving (0/1), confidence, trusted (0/1) and the reported uncertainty
-  (writeUncertaintyCells()), at 8 significant digits. Throws pm::Error when the stream fails.
+  (writeUncertaintyCells()), at 8 significant digits. Throws pm::core::Error when the stream fails.
 */
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames);
 
 //! The uncertainty's columns of a frames.csv: ",sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg".
 const char *uncertaintyCsvHeader();
 //! Its six cells of one frame, each after a comma; empty when the uncertainty is unknown (TrackResult::uncertainty).
-void writeUncertaintyCells(std::ostream &out, const PoseUncertainty &u);
+void writeUncertaintyCells(std::ostream &out, const precise::PoseUncertainty &u);
 
 //! What a TrackingReport does not know of the run (for its summary).
 struct TrackingRunInfo
@@ -100,7 +100,7 @@ struct TrackingRunInfo
   double fps = 30;                  //!< the frame rate (frames per second)
   capture::SourceStats stats;       //!< the source's counts (unreadable pairs, pairing of live cameras)
   bool live = false;                //!< the pairs came from live cameras (summary.json gets their pairing)
-  std::string trackerJson;          //!< the tracker's settings (pm::trackerConfigToJson)
+  std::string trackerJson;          //!< the tracker's settings (pm::tracker::trackerConfigToJson)
   std::string budget;               //!< the budget per frame, in words (e.g. "800 evaluations")
 };
 

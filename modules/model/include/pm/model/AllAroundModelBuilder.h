@@ -9,7 +9,7 @@
   at the outline's depth. StereoFitness scores each camera with the viewpoint nearest its own
   direction, so the model has the right outline at every orientation the pass covers.
 
-  1. Silhouettes (pm::silhouette, or pm::silhouetteOnBackdrop with backdropHueDeg) of both cameras
+  1. Silhouettes (pm::model::silhouette, or pm::model::silhouetteOnBackdrop with backdropHueDeg) of both cameras
      of every view; a silhouette cut by the image border is an error naming the view.
   2. The visual hull: cells of a cube around the target (found from the silhouettes' centroids)
      carved coarse to fine (coarsestMm down to finestMm) against each silhouette's signed distance
@@ -32,8 +32,8 @@
   The model frame: origin at the hull's centroid, axes those of the hand at the first view, so a
   tracker starting near the first view's pose sees the model turned by little.
 
-      const std::vector<pm::PassView> pass = pm::io::loadViewsFolder("views", rig, 6);
-      const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass);
+      const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig, 6);
+      const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass);
       pm::io::savePhotoModel(b.model, "model.json");
       std::cout << b.surface.size() << " surface points, hull " << b.hullVolumeCm3 << " cm3\n";
 */
@@ -50,7 +50,7 @@
 #include "pm/model/Silhouette.h"
 #include "pm/model/SurfaceFusion.h"
 
-namespace pm {
+namespace pm::model {
 
 //! Parameters of buildAllAroundModel() (the steps of the file's description); validate() checks them.
 struct AllAroundParams
@@ -81,7 +81,7 @@ struct AllAroundParams
   int stripRows = 2;                //!< rows of S_out points across the strip
   int nContour = 200;               //!< outline points per viewpoint, for the precise stage (ContourPoint)
 
-  //! Throws pm::Error naming the first parameter out of range.
+  //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
 };
 
@@ -112,7 +112,7 @@ struct SurfacePoint
 //! What buildAllAroundModel() returns: the model, and what the build found on the way (for reports and pictures).
 struct AllAroundBuild
 {
-  PhotoModel model;                 //!< views: the K viewpoints (view 0 in inner/outer)
+  core::PhotoModel model;                 //!< views: the K viewpoints (view 0 in inner/outer)
   vpHomogeneousMatrix fMm;          //!< the model frame in the world frame of the poses (metres)
   std::vector<SurfacePoint> surface; //!< the surface's points (the mesh's vertices), in the model frame
   HullMesh mesh;                    //!< the surface as triangles, in the model frame (vertex i is surface point i)
@@ -134,7 +134,7 @@ struct AllAroundBuild
 };
 
 /*!
-  Builds the all-around model of the target seen in \e pass by \e rig. Throws pm::Error (one line,
+  Builds the all-around model of the target seen in \e pass by \e rig. Throws pm::core::Error (one line,
   naming the view) for: fewer than minViews views, images of another size than the rig's, a view
   whose silhouette is cut by the image border, a background that does not match its photo, poses
   that carve the hull to nothing, too few usable views after leaving out the disagreeing ones.
@@ -149,11 +149,11 @@ struct AllAroundBuild
 
 int main()
 {
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");
-  const std::vector<pm::PassView> pass = pm::io::loadViewsFolder("views", rig, 6); // at least 6 views
-  pm::AllAroundParams params;
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
+  const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig, 6); // at least 6 views
+  pm::model::AllAroundParams params;
   params.viewpoints = 120; // a lighter model: half the viewpoints
-  const pm::AllAroundBuild b = pm::buildAllAroundModel(rig, pass, params);
+  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, params);
   for (const std::string &why : b.leftOut)
     std::cout << "left out: " << why << "\n";
   pm::io::savePhotoModel(b.model, "model.json");
@@ -161,7 +161,7 @@ int main()
 }
   \endcode
 */
-AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassView> &pass,
+AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass,
                                    const AllAroundParams &params = AllAroundParams());
 
 /*!
@@ -172,4 +172,4 @@ AllAroundBuild buildAllAroundModel(const StereoRig &rig, const std::vector<PassV
 vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
                             const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask = nullptr);
 
-} // namespace pm
+} // namespace pm::model

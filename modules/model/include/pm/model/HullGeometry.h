@@ -5,7 +5,7 @@
   millimetres, a pinhole camera placed in the world (or model) frame, and one camera of one pass view
   as the hull sees it (its ideal photo and its silhouette's signed distance).
 
-      const pm::hull::Pinhole cam(wMc, rig.left.cam, 640, 480);   // wMc in metres
+      const pm::model::hull::Pinhole cam(wMc, rig.left.cam, 640, 480);   // wMc in metres
       double u, v, z;
       if (cam.project({0, 0, 500}, u, v, z)) std::cout << u << " " << v << "\n";
 */
@@ -18,7 +18,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
-namespace pm::hull {
+namespace pm::model::hull {
 
 using Vec3 = std::array<double, 3>; //!< a point or direction (mm)
 
@@ -122,4 +122,4 @@ struct HullCamera
 //! The signed distance (CV_32F, px, positive inside) of a binary \e mask (255 inside).
 cv::Mat signedDistance(const vpImage<unsigned char> &mask);
 
-} // namespace pm::hull
+} // namespace pm::model::hull

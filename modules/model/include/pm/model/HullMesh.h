@@ -13,7 +13,7 @@
   direction is found exactly: the edges between a face turned toward the camera and one turned
   away (ViewpointModel.h).
 
-      const pm::HullMesh mesh = pm::meshVisualHull(hull, cams);
+      const pm::model::HullMesh mesh = pm::model::meshVisualHull(hull, cams);
       std::cout << mesh.vertices.size() << " vertices, " << mesh.triangles.size() << " triangles\n";
 */
 #include <array>
@@ -23,7 +23,7 @@
 #include "pm/model/HullGeometry.h"
 #include "pm/model/VisualHull.h"
 
-namespace pm {
+namespace pm::model {
 
 //! An edge of a HullMesh: its two vertices and the faces on either side (-1: none).
 struct MeshEdge
@@ -37,8 +37,8 @@ struct MeshEdge
 /*!
   A triangle mesh of a hull's surface (see HullMesh.h), in the frame of its vertices.
   \code
-  const pm::HullMesh mesh = pm::meshVisualHull(hull, cams);
-  for (const pm::MeshEdge &e : mesh.edges)
+  const pm::model::HullMesh mesh = pm::model::meshVisualHull(hull, cams);
+  for (const pm::model::MeshEdge &e : mesh.edges)
     if (e.f1 >= 0 && facesCamera(mesh, e.f0, C) != facesCamera(mesh, e.f1, C)) use(e); // on the outline
   \endcode
 */
@@ -84,7 +84,7 @@ struct HullMesh
 
 /*!
   The mesh of \e hull's surface (see HullMesh.h): the field of \e cams sampled at the corners around
-  the carved cells. Throws pm::Error when the surface has no face.
+  the carved cells. Throws pm::core::Error when the surface has no face.
 */
 HullMesh meshVisualHull(const VisualHull &hull, const std::vector<const hull::HullCamera *> &cams);
 
@@ -95,6 +95,6 @@ HullMesh meshVisualHull(const VisualHull &hull, const std::vector<const hull::Hu
 template <class Field>
 HullMesh meshField(const VisualHull &hull, Field corner);
 
-} // namespace pm
+} // namespace pm::model
 
 #include "pm/model/HullMesh.inl"

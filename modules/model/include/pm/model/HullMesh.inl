@@ -5,7 +5,7 @@
 
 #include "pm/core/Error.h"
 
-namespace pm {
+namespace pm::model {
 
 template <class Field>
 HullMesh meshField(const VisualHull &g, Field field)
@@ -130,9 +130,9 @@ HullMesh meshField(const VisualHull &g, Field field)
         }
       }
   if (m.triangles.empty())
-    throw Error("all-around model: the hull's surface has no face (too few cells carved?)");
+    throw core::Error("all-around model: the hull's surface has no face (too few cells carved?)");
   m.update();
   return m;
 }
 
-} // namespace pm
+} // namespace pm::model

@@ -7,14 +7,14 @@
   ringsDeg from the rest axis, all around. The pivot stays on the hand's z axis at the same
   distance, so the target stays in view at the tracking distance.
 
-      const std::vector<vpHomogeneousMatrix> h0Mh = pm::planPass(pm::PassPlan());  // 16 poses
+      const std::vector<vpHomogeneousMatrix> h0Mh = pm::model::planPass(pm::model::PassPlan());  // 16 poses
       // a robot: fMh_k = fMh0 * h0Mh[k], reached (and refused if not) by its own kinematics
 */
 #include <vector>
 
 #include <visp3/core/vpHomogeneousMatrix.h>
 
-namespace pm {
+namespace pm::model {
 
 //! What planPass() plans: how many views, on which rings, around a pivot how far ahead (see the file).
 struct PassPlan
@@ -23,7 +23,7 @@ struct PassPlan
   std::vector<double> ringsDeg{20, 40}; //!< the rings' angles from the rest axis (views spread over them in proportion to the angle)
   double distanceMm = 500;        //!< the pivot ahead of the hand at rest (mm)
 
-  //! Throws pm::Error naming the first value out of range.
+  //! Throws pm::core::Error naming the first value out of range.
   void validate() const;
 };
 
@@ -42,4 +42,4 @@ vpHomogeneousMatrix passPose(const PassDirection &d, double distanceMm);
 //! The hand poses of the pass in the frame of the hand at rest (metres): h0Mh[0] is the identity.
 std::vector<vpHomogeneousMatrix> planPass(const PassPlan &plan);
 
-} // namespace pm
+} // namespace pm::model

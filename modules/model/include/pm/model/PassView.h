@@ -10,7 +10,7 @@
   then 01, ...) and as the lab's simulated PA-10 makes them (pm::lab::runPass). The all-around
   builder (buildAllAroundModel) takes it.
 
-      std::vector<pm::PassView> pass = pm::io::loadViewsFolder("views", rig);
+      std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig);
       std::cout << pass.size() << " views, the first from " << pass[0].fMh.getTranslationVector().t() << "\n";
 */
 #include <string>
@@ -19,7 +19,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
-namespace pm {
+namespace pm::model {
 
 //! One hand pose of a pass (see the file): the images of both cameras and the hand's pose.
 struct PassView
@@ -32,4 +32,4 @@ struct PassView
   std::string name;                                //!< how messages name it ("view 03")
 };
 
-} // namespace pm
+} // namespace pm::model

@@ -24,7 +24,7 @@
 
 #include "pm/core/PhotoModel.h"
 
-namespace pm {
+namespace pm::model {
 
 //! Parameters of buildPhotoModel() (the steps of the file's description); validate() checks them.
 struct PhotoModelParams
@@ -42,21 +42,21 @@ struct PhotoModelParams
   double stripWidthPx = 8.0;     //!< extent of the S_out strip beyond the first row (px)
   int stripRows = 2;             //!< rows of S_out points across the strip
 
-  //! Throws pm::Error naming the first parameter out of range.
+  //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
 };
 
 //! What buildPhotoModel() returns: the model and the target region it was sampled in.
 struct PhotoModelBuild
 {
-  PhotoModel model;              //!< the flat photo-model (z = 0; mm in the model frame)
+  core::PhotoModel model;              //!< the flat photo-model (z = 0; mm in the model frame)
   vpImage<unsigned char> region; //!< 255 inside the target region, 0 elsewhere
 };
 
 /*!
   Builds the flat model from \e background (photo (a)) and \e withTarget (photo (b)), both taken
   by the camera of intrinsics \e cam with the target at \e distanceMm (mm) from it. Throws
-  pm::Error if the photos differ in size, a parameter is out of range, the distance or the focal
+  pm::core::Error if the photos differ in size, a parameter is out of range, the distance or the focal
   lengths are not positive, or no target region can be told from the background (empty S_in).
 
   \code
@@ -71,9 +71,9 @@ int main()
   const vpImage<vpRGBa> background = pm::io::readColorImage("background.png");
   const vpImage<vpRGBa> photo = pm::io::readColorImage("target.png"); // same camera, same place
   const vpCameraParameters cam(800, 800, 320, 240);                   // px, py, u0, v0
-  pm::PhotoModelParams params;
+  pm::model::PhotoModelParams params;
   params.stepPx = 6; // a denser S_in
-  const pm::PhotoModelBuild b = pm::buildPhotoModel(background, photo, cam, 500, params); // 500 mm
+  const pm::model::PhotoModelBuild b = pm::model::buildPhotoModel(background, photo, cam, 500, params); // 500 mm
   pm::io::savePhotoModel(b.model, "model.json");
   std::cout << b.model.inner.size() << " S_in, " << b.model.outer.size() << " S_out points\n";
 }
@@ -83,4 +83,4 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
                                 const vpCameraParameters &cam, double distanceMm,
                                 const PhotoModelParams &params = PhotoModelParams());
 
-} // namespace pm
+} // namespace pm::model

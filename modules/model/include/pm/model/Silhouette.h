@@ -12,8 +12,8 @@
   brightness upward (a shadow never brightens). Then opening and closing (\e cleanRadiusPx), the
   connected regions of at least \e minRegionFraction of the largest one, their holes filled.
 
-      pm::SilhouetteStats st;
-      const vpImage<unsigned char> mask = pm::silhouette(view.left, view.backgroundLeft, pm::SilhouetteParams(), &st);
+      pm::model::SilhouetteStats st;
+      const vpImage<unsigned char> mask = pm::model::silhouette(view.left, view.backgroundLeft, pm::model::SilhouetteParams(), &st);
       std::cout << st.shadowPx << " shadow pixels dropped\n";
 */
 #include <string>
@@ -21,7 +21,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
-namespace pm {
+namespace pm::model {
 
 //! How silhouette() and silhouetteOnBackdrop() tell the target (see the file); validate() checks them.
 struct SilhouetteParams
@@ -38,7 +38,7 @@ struct SilhouetteParams
   double backdropMinSaturation = 0.2; //!< paler pixels have no hue: the target
   double backdropMinValue = 0.1;   //!< darker pixels have no hue: the target
 
-  //! Throws pm::Error naming the first parameter out of range.
+  //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
 };
 
@@ -51,7 +51,7 @@ struct SilhouetteStats
 };
 
 /*!
-  255 on the target, 0 elsewhere. Throws pm::Error (\e name says which image) for images of
+  255 on the target, 0 elsewhere. Throws pm::core::Error (\e name says which image) for images of
   different sizes, a silhouette that is empty or covers more than maxImageFraction of the image (the
   background does not match its photo).
 */
@@ -70,4 +70,4 @@ vpImage<unsigned char> silhouetteOnBackdrop(const vpImage<vpRGBa> &photo, double
                                             const SilhouetteParams &params = SilhouetteParams(),
                                             SilhouetteStats *stats = nullptr, const std::string &name = "the photo");
 
-} // namespace pm
+} // namespace pm::model

@@ -8,8 +8,8 @@
   neighbouring disparities agree. The stereo photo-model (StereoPhotoModelBuilder.h) and the
   all-around model's surface (SurfaceFusion.h) both measure with it.
 
-      const pm::stereo::Rectification rect(rig);                  // once per rig (pinhole cameras)
-      const cv::Mat z = pm::stereo::leftDepth(rect, L, R, region, 400, 600, pm::stereo::MatchParams());
+      const pm::model::stereo::Rectification rect(rig);                  // once per rig (pinhole cameras)
+      const cv::Mat z = pm::model::stereo::leftDepth(rect, L, R, region, 400, 600, pm::model::stereo::MatchParams());
 */
 #include <vector>
 
@@ -21,7 +21,7 @@
 
 #include "pm/core/StereoRig.h"
 
-namespace pm::stereo {
+namespace pm::model::stereo {
 
 //! An image as OpenCV's 8-bit BGR.
 cv::Mat toBgr(const vpImage<vpRGBa> &im);
@@ -31,8 +31,8 @@ cv::Matx33d intrinsics(const vpCameraParameters &c);
 /*!
   The rectified geometry of the rig (pinhole cameras) and the maps of both views.
   \code
-  const pm::stereo::Rectification rect(rig);
-  const cv::Mat left = rect.remap(pm::stereo::toBgr(L), 0);   // the rectified left image
+  const pm::model::stereo::Rectification rect(rig);
+  const cv::Mat left = rect.remap(pm::model::stereo::toBgr(L), 0);   // the rectified left image
   std::cout << "500 mm lies at a disparity of " << rect.disparityAt(500) << " px\n";
   \endcode
 */
@@ -62,7 +62,7 @@ struct Rectification
   cv::Size size; //!< the images' size
 
   //! The rig's rectification (pinhole cameras of the same size).
-  explicit Rectification(const StereoRig &rig)
+  explicit Rectification(const core::StereoRig &rig)
   {
     size = cv::Size(static_cast<int>(rig.left.width), static_cast<int>(rig.left.height));
     K[0] = intrinsics(rig.left.cam);
@@ -130,9 +130,9 @@ struct MatchParams
 /*!
   The left camera's depth (z, mm; CV_32F, NaN where unmatched) at each pixel of \e region (non-zero)
   of the ideal left image \e L, matched in \e R over depths [\e zNearMm, \e zFarMm] of the
-  rectified left camera. Throws pm::Error for images of another size than the rectification's.
+  rectified left camera. Throws pm::core::Error for images of another size than the rectification's.
 */
 cv::Mat leftDepth(const Rectification &rect, const vpImage<vpRGBa> &L, const vpImage<vpRGBa> &R, const vpImage<unsigned char> &region,
                   double zNearMm, double zFarMm, const MatchParams &params);
 
-} // namespace pm::stereo
+} // namespace pm::model::stereo

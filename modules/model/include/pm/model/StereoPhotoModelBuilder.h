@@ -26,7 +26,7 @@
   refused, not faked: a flat model at a guessed depth is what the stereo model replaces, and the
   user can still choose it knowingly (buildPhotoModel; pm-make-model --background --photo --distance-mm).
 
-      const pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bgL, bgR, L, R);
+      const pm::model::StereoPhotoModelBuild b = pm::model::buildStereoPhotoModel(rig, bgL, bgR, L, R);
       pm::io::savePhotoModel(b.model, "model.json");            // version 2: z per point
       std::cout << "origin in the hand frame " << b.hMm.getTranslationVector().t() << "\n";
 */
@@ -37,7 +37,7 @@
 #include "pm/model/PhotoModelBuilder.h"
 #include "pm/core/StereoRig.h"
 
-namespace pm {
+namespace pm::model {
 
 //! Parameters of buildStereoPhotoModel() (the steps of the file's description); validate() checks them.
 struct StereoModelParams
@@ -57,7 +57,7 @@ struct StereoModelParams
   double maxBackgroundChange = 12;   //!< ... and so does a median change over this (grey levels) outside the target
   bool rightView = false;            //!< add the right camera's own view (S_in, S_out sampled in its photo; measured, off: README)
 
-  //! Throws pm::Error naming the first parameter out of range.
+  //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
 };
 
@@ -67,7 +67,7 @@ struct StereoModelParams
 */
 struct StereoPhotoModelBuild
 {
-  PhotoModel model;                    //!< points in the model frame, z included
+  core::PhotoModel model;                    //!< points in the model frame, z included
   //! The target region in the left photo (255 inside, 0 elsewhere).
   vpImage<unsigned char> regionLeft, regionRight; //!< the same in the right photo
   vpImage<float> depthLeft;            //!< hand-frame z (mm) of each matched region pixel of the left photo, NaN elsewhere
@@ -75,12 +75,12 @@ struct StereoPhotoModelBuild
   double backdropMm = 0;               //!< backdrop depth used (left camera's z, mm)
   bool backdropMeasured = false;       //!< measured from the background pair (else given)
   int nOutFallback = 0;                //!< S_out points with no matched region pixel near them (median depth used)
-  std::vector<ModelPoint> dropped;     //!< the S_in points dropped (u, v, hue as sampled), for pictures
+  std::vector<core::ModelPoint> dropped;     //!< the S_in points dropped (u, v, hue as sampled), for pictures
 };
 
 /*!
   Builds the stereo model from the background pair (\e bgL, \e bgR) and the photo pair (\e L,
-  \e R), all taken by \e rig from one hand pose. Throws pm::Error with what to do for: images
+  \e R), all taken by \e rig from one hand pose. Throws pm::core::Error with what to do for: images
   whose size differs from the rig's cameras, a background pair that does not match the photo
   pair, the target missing from (or cut by) one view, a backdrop that cannot be matched (give
   \e backdropMm), too little texture to match.
@@ -96,21 +96,21 @@ struct StereoPhotoModelBuild
 
 int main()
 {
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
   // From one hand pose: the backdrop alone, then the target on it.
   const vpImage<vpRGBa> bgL = pm::io::readColorImage("background_left.png");
   const vpImage<vpRGBa> bgR = pm::io::readColorImage("background_right.png");
   const vpImage<vpRGBa> L = pm::io::readColorImage("left.png");
   const vpImage<vpRGBa> R = pm::io::readColorImage("right.png");
-  pm::StereoModelParams params;
+  pm::model::StereoModelParams params;
   params.backdropMm = 700; // a plain backdrop, too smooth to match: its depth given (mm)
-  const pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bgL, bgR, L, R, params);
+  const pm::model::StereoPhotoModelBuild b = pm::model::buildStereoPhotoModel(rig, bgL, bgR, L, R, params);
   pm::io::savePhotoModel(b.model, "model.json");
   std::cout << b.model.inner.size() << " S_in points, " << b.model.nInDropped << " dropped\n";
 }
   \endcode
 */
-StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL,
+StereoPhotoModelBuild buildStereoPhotoModel(const core::StereoRig &rig, const vpImage<vpRGBa> &bgL,
                                             const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
                                             const vpImage<vpRGBa> &R, const StereoModelParams &params = StereoModelParams());
 
@@ -138,16 +138,16 @@ struct StereoViewPair
   The multi-view stereo model: the model of the first pair (its frame is the model's), and each
   further pair built the same way, its views (left and right) moved into the model frame by its
   known motion. Each camera is then scored with the view whose camera looked from the direction
-  nearest its own (StereoFitness). Throws pm::Error as the one-pair build, naming the pair.
+  nearest its own (StereoFitness). Throws pm::core::Error as the one-pair build, naming the pair.
   The build's regions, depth map, dropped points and counts are those of the first pair.
 
-      std::vector<pm::StereoViewPair> more(1);
+      std::vector<pm::model::StereoViewPair> more(1);
       more[0] = {bgL, bgR, turnedL, turnedR, hMo_turned * hMo.inverse()};
-      const pm::StereoPhotoModelBuild b = pm::buildStereoPhotoModel(rig, bgL, bgR, L, R, more);
+      const pm::model::StereoPhotoModelBuild b = pm::model::buildStereoPhotoModel(rig, bgL, bgR, L, R, more);
 */
-StereoPhotoModelBuild buildStereoPhotoModel(const StereoRig &rig, const vpImage<vpRGBa> &bgL,
+StereoPhotoModelBuild buildStereoPhotoModel(const core::StereoRig &rig, const vpImage<vpRGBa> &bgL,
                                             const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,
                                             const vpImage<vpRGBa> &R, const std::vector<StereoViewPair> &more,
                                             const StereoModelParams &params = StereoModelParams());
 
-} // namespace pm
+} // namespace pm::model

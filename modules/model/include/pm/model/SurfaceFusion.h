@@ -22,7 +22,7 @@
   The hull's field and this evidence make one field (the least of them, in mm), carved and meshed
   as the hull alone was (HullMesh.h).
 
-      const pm::DepthEvidence ev = pm::measureStereo(idealRig, cams, masks, backgrounds, used, false, hull, params);
+      const pm::model::DepthEvidence ev = pm::model::measureStereo(idealRig, cams, masks, backgrounds, used, false, hull, params);
       const long removed = ev.carve(hull);
 */
 #include <algorithm>
@@ -34,7 +34,7 @@
 #include "pm/model/HullGeometry.h"
 #include "pm/model/VisualHull.h"
 
-namespace pm {
+namespace pm::model {
 
 //! How the surface is fused from the views' stereo pairs (SurfaceFusion.h).
 struct FusionParams
@@ -52,14 +52,14 @@ struct FusionParams
   bool fastMatching = true;     //!< the matcher's three-path mode (StereoDepth.h), about 3 times faster than eight paths
   double minTexture = 1.5;      //!< pixels with less texture across the epipolar lines are not matched (StereoDepth.h)
   int uniquenessPercent = 10;   //!< the matcher's uniqueness ratio
-  void validate() const;        //!< throws pm::Error naming the first value out of range
+  void validate() const;        //!< throws pm::core::Error naming the first value out of range
 };
 
 /*!
   The views' measured depths (see SurfaceFusion.h): for each view's left camera, the depth of the
   target inside its silhouette and of the backdrop around and behind it (mm, NaN where unmatched).
   \code
-  const pm::DepthEvidence ev = pm::measureStereo(idealRig, cams, masks, backgrounds, used, false, hull, params);
+  const pm::model::DepthEvidence ev = pm::model::measureStereo(idealRig, cams, masks, backgrounds, used, false, hull, params);
   const double f = ev.field({0, 0, 500});   // mm: > 0 behind the measured surface, < 0 in front, +inf: no evidence
   \endcode
 */
@@ -107,8 +107,8 @@ public:
   without its lens (the photos are ideal). The depth search spans the carved \e hull's box (and
   backdropSearchMm behind it for the backdrop).
 */
-DepthEvidence measureStereo(const StereoRig &idealRig, const std::vector<hull::HullCamera> &cams,
+DepthEvidence measureStereo(const core::StereoRig &idealRig, const std::vector<hull::HullCamera> &cams,
                             const std::vector<vpImage<unsigned char>> &masks, const std::vector<vpImage<vpRGBa>> &backgrounds,
                             const std::vector<bool> &used, bool plainBackdrop, const VisualHull &hull, const FusionParams &params);
 
-} // namespace pm
+} // namespace pm::model

@@ -14,7 +14,7 @@
     stripWidthPx), at the outline's depth, where the strip falls off the target.
 
       std::vector<float> zbuf;
-      const pm::ModelView v = pm::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, zbuf);
+      const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, zbuf);
 */
 #include <vector>
 
@@ -22,7 +22,7 @@
 #include "pm/model/HullGeometry.h"
 #include "pm/model/HullMesh.h"
 
-namespace pm {
+namespace pm::model {
 
 struct AllAroundParams;
 struct SurfacePoint;
@@ -40,7 +40,7 @@ void depthBuffer(const hull::Pinhole &cam, const std::vector<hull::Vec3> &pts, i
   marks the surface points on a hue edge (AllAroundParams::edgeShare); \e zbuf is scratch. S_out
   points carry \e bgHue. The view's cameraMm is the camera's centre.
 */
-ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
+core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
                           const HullMesh &mesh, const std::vector<bool> &onEdge, float bgHue, const AllAroundParams &p,
                           std::vector<float> &zbuf);
 
@@ -49,6 +49,6 @@ ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoi
   edges that border the background in \e mask (the mesh's coverage, HullMesh::depthMap: non-zero on
   it). For the precise stage's lines and for S_out.
 */
-std::vector<ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n);
+std::vector<core::ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n);
 
-} // namespace pm
+} // namespace pm::model

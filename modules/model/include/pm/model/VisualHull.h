@@ -6,9 +6,9 @@
   the continuous field whose zero level is the hull's surface (the least of the silhouettes' signed
   distances where a point projects), from which HullMesh.h takes the surface to a fraction of a cell.
 
-      const pm::hull::Vec3 c = pm::hull::silhouettesMeet(cams);
-      pm::VisualHull hull = pm::hullGrid(c, radiusMm, 1.0);
-      pm::carveVisualHull(cams, hull, 16.0);
+      const pm::model::hull::Vec3 c = pm::model::hull::silhouettesMeet(cams);
+      pm::model::VisualHull hull = pm::model::hullGrid(c, radiusMm, 1.0);
+      pm::model::carveVisualHull(cams, hull, 16.0);
       std::cout << hull.volumeCm3() << " cm3\n";
 */
 #include <cstdint>
@@ -17,14 +17,14 @@
 
 #include "pm/model/HullGeometry.h"
 
-namespace pm {
+namespace pm::model {
 
 /*!
   A visual hull on a dense grid of cubic cells (see VisualHull.h): occupied cells project inside
   every silhouette.
   \code
-  pm::VisualHull hull = pm::hullGrid(centre, 120, 1.0);
-  pm::carveVisualHull(cams, hull, 16.0);
+  pm::model::VisualHull hull = pm::model::hullGrid(centre, 120, 1.0);
+  pm::model::carveVisualHull(cams, hull, 16.0);
   for (int z = 0; z < hull.n; ++z) // the occupied cells' centres
     for (int y = 0; y < hull.n; ++y)
       for (int x = 0; x < hull.n; ++x)
@@ -58,7 +58,7 @@ struct VisualHull
 };
 
 namespace hull {
-//! The point nearest (least squares) to the rays from each camera through its silhouette's centroid. Throws pm::Error if they do not meet.
+//! The point nearest (least squares) to the rays from each camera through its silhouette's centroid. Throws pm::core::Error if they do not meet.
 Vec3 silhouettesMeet(const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks);
 /*!
   The hull's field at \e X: the least over \e cams of the silhouette's signed distance where \e X
@@ -87,15 +87,15 @@ VisualHull hullGrid(const hull::Vec3 &centre, double radiusMm, double finestMm);
   Carves the hull of \e cams in \e grid (hullGrid()): cells of up to \e coarsestMm split down to
   the grid's. A cell projecting wholly outside a silhouette is carved, wholly inside all of them
   kept, otherwise split; at the finest size, kept when its centre projects inside all. Throws
-  pm::Error when nothing is left.
+  pm::core::Error when nothing is left.
 */
 void carveVisualHull(const std::vector<const hull::HullCamera *> &cams, VisualHull &grid, double coarsestMm);
 
 /*!
   The cube the hull is carved in: where the silhouettes' rays meet (silhouettesMeet) and a half-width
-  that holds each silhouette's farthest pixel from there, with a margin. Throws pm::Error if the
+  that holds each silhouette's farthest pixel from there, with a margin. Throws pm::core::Error if the
   centre is behind a camera.
 */
 void hullBox(const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks, hull::Vec3 &centre, double &radiusMm);
 
-} // namespace pm
+} // namespace pm::model

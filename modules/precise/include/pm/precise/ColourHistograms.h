@@ -9,7 +9,7 @@
   or from a first frame, and follow the scene while tracking: each frame's colours along the
   correspondence lines are blended in at a learning rate.
 
-      pm::ColourHistograms h;
+      pm::precise::ColourHistograms h;
       h.start(model.foregroundHistogram, model.backgroundHistogram);   // the model's photos
       h.addForeground(vpRGBa(200, 40, 30)); h.addBackground(vpRGBa(30, 60, 200));
       h.update(0.2, 0.2);                                               // a frame's colours blended in
@@ -23,13 +23,13 @@
 
 #include "pm/core/PhotoModel.h"
 
-namespace pm {
+namespace pm::precise {
 
 /*!
   Foreground and background colour histograms and the posterior table they give (see
   ColourHistograms.h). Lookups allocate nothing. Copyable.
   \code
-  pm::ColourHistograms h;
+  pm::precise::ColourHistograms h;
   for (const vpRGBa &c : targetPixels) h.addForeground(c);
   for (const vpRGBa &c : backgroundPixels) h.addBackground(c);
   h.update(1.0, 1.0);            // the first frame: taken whole
@@ -39,7 +39,7 @@ namespace pm {
 class ColourHistograms
 {
 public:
-  static constexpr int kBins = PhotoModel::kColourBins;           //!< bins per channel
+  static constexpr int kBins = core::PhotoModel::kColourBins;           //!< bins per channel
   static constexpr int kShift = 4;                                //!< 256 / kBins = 2^kShift
   static constexpr std::size_t kSize = static_cast<std::size_t>(kBins) * kBins * kBins; //!< bins in all
   static constexpr float kPseudoCount = 2e-4f; //!< added to every bin of both histograms for the posteriors (about one sample of a few thousand)
@@ -54,7 +54,7 @@ public:
   }
   /*!
     Starts from given histograms (kSize bins each, each summing to 1, e.g. the model's): ready at
-    once. An empty pair: not ready until the first update(). Throws pm::Error for another size.
+    once. An empty pair: not ready until the first update(). Throws pm::core::Error for another size.
   */
   void start(const std::vector<float> &foreground, const std::vector<float> &background);
   //! Forgets everything: not ready.
@@ -90,4 +90,4 @@ private:
   bool m_haveF = false, m_haveB = false, m_ready = false;
 };
 
-} // namespace pm
+} // namespace pm::precise

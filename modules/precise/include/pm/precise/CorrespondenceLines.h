@@ -17,7 +17,7 @@
   rad, in the hand frame) come from the point's projection Jacobian. Smooth in the pose, and as
   sensitive to a turn as to a shift: a turn moves the outline.
 
-      pm::CorrespondenceLines lines(200, 19, 6);
+      pm::precise::CorrespondenceLines lines(200, 19, 6);
       lines.measure(camera, outlines, phi, shape, colours, 2, 150, 3.0);
       double g[6] = {0}, H[36] = {0};
       lines.accumulate(camera, phi, weight, g, H, nullptr);
@@ -32,7 +32,7 @@
 #include "pm/precise/ColourHistograms.h"
 #include "pm/precise/OutlineViews.h"
 
-namespace pm {
+namespace pm::precise {
 
 /*!
   A camera as the lines see it: cMh (mm), the intrinsics of its ideal image, its size, and its image
@@ -78,7 +78,7 @@ struct LineShape
   std::array<float, kMaxFunction> foreground{}; //!< the step's values on the target's side (prepare())
   std::array<float, kMaxFunction> background{}; //!< the step's values on the background's side (prepare())
   double minVariance = 0.5;    //!< the least variance a measured position can have (segments^2; prepare())
-  //! Fills the step's table and the least variance. Throws pm::Error for lengths or shapes out of range.
+  //! Fills the step's table and the least variance. Throws pm::core::Error for lengths or shapes out of range.
   void prepare();
   int segments() const { return functionLength + distributionLength - 1; } //!< a line's length in segments
 };
@@ -111,7 +111,7 @@ public:
     A line is left out when its point is behind the camera, the line leaves the image, or the target
     or the background along it is shorter than \e minContinuous segments. Returns the lines kept.
   */
-  std::size_t measure(const LineCamera &cam, const OutlineViews &outlines, const Phi &phi, const LineShape &shape,
+  std::size_t measure(const LineCamera &cam, const OutlineViews &outlines, const core::Phi &phi, const LineShape &shape,
                       const ColourHistograms &colours, int scale, std::size_t maxLines, double minContinuous);
   /*!
     Adds \e weight times the lines' gradient of L (6, twist) to \e g and their Gauss-Newton
@@ -119,13 +119,13 @@ public:
     the sum of the squared distances (px^2) between the outline found and the contour point's
     projection. Returns the lines in front of the camera.
   */
-  std::size_t accumulate(const LineCamera &cam, const Phi &phi, double weight, double g[6], double H[36],
+  std::size_t accumulate(const LineCamera &cam, const core::Phi &phi, double weight, double g[6], double H[36],
                          double *residual2) const;
   /*!
     Adds the colours of camera \e cam at pose \e phi to \e colours' counts: along each contour point's
     normal, from \e skipPx to at most \e maxPx pixels inside (target) and outside (background).
   */
-  void collectColours(const LineCamera &cam, const OutlineViews &outlines, const Phi &phi, ColourHistograms &colours,
+  void collectColours(const LineCamera &cam, const OutlineViews &outlines, const core::Phi &phi, ColourHistograms &colours,
                       std::size_t maxLines, double skipPx, double maxPx) const;
   std::size_t size() const { return m_n; }                          //!< lines kept by the last measure()
   const LineMeasure &line(std::size_t i) const { return m_lines[i]; } //!< line \e i of the last measure()
@@ -140,6 +140,6 @@ private:
 };
 
 //! The camera centre of \e cam (cMh) in the model frame at pose \e phi (mm).
-void cameraInModel(const LineCamera &cam, const Phi &phi, double out[3]);
+void cameraInModel(const LineCamera &cam, const core::Phi &phi, double out[3]);
 
-} // namespace pm
+} // namespace pm::precise

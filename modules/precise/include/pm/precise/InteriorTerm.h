@@ -11,9 +11,9 @@
   (the texture varies over a pixel or two); a Huber weight bounds what a shadow, a highlight or an
   occluder can do.
 
-      pm::InteriorTerm interior(model, 200);
+      pm::precise::InteriorTerm interior(model, 200);
       interior.measure(camera, view, phi, 1.0, samples);          // at each step
-      pm::InteriorTerm::accumulate(camera, phi, samples, 0.05, 1.0, g, H, nullptr); // each step
+      pm::precise::InteriorTerm::accumulate(camera, phi, samples, 0.05, 1.0, g, H, nullptr); // each step
 */
 #include <cstddef>
 #include <vector>
@@ -22,7 +22,7 @@
 #include "pm/core/Pose.h"
 #include "pm/precise/CorrespondenceLines.h"
 
-namespace pm {
+namespace pm::precise {
 
 /*!
   One camera's interior samples, measured at a pose (InteriorTerm::measure()): for each point, where
@@ -52,12 +52,12 @@ struct InteriorSamples
   viewpoint with their colour, in the order of OutlineViews (the model's own view, then its views).
   measure() and accumulate() allocate nothing once the samples are reserved (reserve()).
   \code
-  const pm::InteriorTerm interior(model, 200);  // model.hasColours
-  pm::InteriorSamples s;
+  const pm::precise::InteriorTerm interior(model, 200);  // model.hasColours
+  pm::precise::InteriorSamples s;
   interior.reserve(s);
   interior.measure(camera, outlines.nearest(c), phi, 1.0, s);
   double g[6] = {0}, H[36] = {0};
-  pm::InteriorTerm::accumulate(camera, phi, s, 0.05, 1.0, g, H, nullptr);
+  pm::precise::InteriorTerm::accumulate(camera, phi, s, 0.05, 1.0, g, H, nullptr);
   \endcode
 */
 class InteriorTerm
@@ -71,9 +71,9 @@ public:
   };
   /*!
     Takes the S_in points and colours of every view of \e model, at most \e maxPoints a view (evenly
-    chosen). Throws pm::Error unless the model carries colours.
+    chosen). Throws pm::core::Error unless the model carries colours.
   */
-  InteriorTerm(const PhotoModel &model, std::size_t maxPoints);
+  InteriorTerm(const core::PhotoModel &model, std::size_t maxPoints);
   //! Reserves \e s for the largest viewpoint.
   void reserve(InteriorSamples &s) const { s.samples.resize(m_maxPoints); }
   /*!
@@ -81,7 +81,7 @@ public:
     each projects (bilinear) and its gradient (central differences over \e stepPx pixels: wider at
     the coarse scales, a smoother texture). Points off the image are left out. Returns the samples kept.
   */
-  std::size_t measure(const LineCamera &cam, std::size_t view, const Phi &phi, double stepPx, InteriorSamples &s) const;
+  std::size_t measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double stepPx, InteriorSamples &s) const;
   /*!
     Adds \e weight times the term's gradient (of the log-likelihood, 6, twist) to \e g and its
     Gauss-Newton information to \e H, for camera \e cam at pose \e phi from its measured samples
@@ -89,7 +89,7 @@ public:
     chromaticity's noise (a Huber weight beyond twice it). \e residual2 (when given) gets the sum of
     squared residuals. Returns the samples used.
   */
-  static std::size_t accumulate(const LineCamera &cam, const Phi &phi, const InteriorSamples &s, double sigma, double weight, double g[6],
+  static std::size_t accumulate(const LineCamera &cam, const core::Phi &phi, const InteriorSamples &s, double sigma, double weight, double g[6],
                                 double H[36], double *residual2);
   //! The chromaticity of a colour: (R - G, R + G - 2 B) / (R + G + B + 30), each in about [-1, 1].
   static void chroma(double r, double g, double b, double out[2])
@@ -110,4 +110,4 @@ private:
   std::size_t m_maxPoints = 0;
 };
 
-} // namespace pm
+} // namespace pm::precise

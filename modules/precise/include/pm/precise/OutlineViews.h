@@ -9,7 +9,7 @@
   outline seen a few degrees away still project onto the outline, since the contour generator of a
   smooth surface moves with the square of the angle.
 
-      const pm::OutlineViews outlines(model);             // throws unless model.hasContours()
+      const pm::precise::OutlineViews outlines(model);             // throws unless model.hasContours()
       const std::size_t k = outlines.nearest(cameraInModelMm);
       for (std::size_t i = outlines.view(k).begin; i < outlines.view(k).end; ++i) use(outlines.point(i));
 */
@@ -18,15 +18,15 @@
 
 #include "pm/core/PhotoModel.h"
 
-namespace pm {
+namespace pm::precise {
 
 /*!
   The contour points of every viewpoint of a model, in one array, and the nearest viewpoint to a
   direction (see OutlineViews.h). Copies what it needs from the model.
   \code
-  const pm::OutlineViews outlines(model);
+  const pm::precise::OutlineViews outlines(model);
   const double c[3] = {0, 0, -500};     // a camera 500 mm in front of the model's origin
-  const pm::OutlineViews::View &v = outlines.view(outlines.nearest(c));
+  const pm::precise::OutlineViews::View &v = outlines.view(outlines.nearest(c));
   std::cout << (v.end - v.begin) << " outline points seen from there\n";
   \endcode
 */
@@ -40,12 +40,12 @@ public:
     std::size_t end = 0;            //!< one past its last point
     double dir[3] = {0, 0, 1};      //!< the unit direction of its camera from the model's origin
   };
-  //! Throws pm::Error unless the model carries outlines in every view (PhotoModel::hasContours()).
-  explicit OutlineViews(const PhotoModel &model);
+  //! Throws pm::core::Error unless the model carries outlines in every view (PhotoModel::hasContours()).
+  explicit OutlineViews(const core::PhotoModel &model);
 
   std::size_t size() const { return m_views.size(); }                 //!< viewpoints
   const View &view(std::size_t k) const { return m_views[k]; }        //!< viewpoint \e k
-  const ContourPoint &point(std::size_t i) const { return m_points[i]; } //!< contour point \e i of the array
+  const core::ContourPoint &point(std::size_t i) const { return m_points[i]; } //!< contour point \e i of the array
   //! The viewpoint whose direction is nearest that of \e cameraMm (a camera's centre in the model frame, not 0).
   std::size_t nearest(const double cameraMm[3]) const;
   //! The most contour points a viewpoint has.
@@ -53,8 +53,8 @@ public:
 
 private:
   std::vector<View> m_views;
-  std::vector<ContourPoint> m_points;
+  std::vector<core::ContourPoint> m_points;
   std::size_t m_maxPoints = 0;
 };
 
-} // namespace pm
+} // namespace pm::precise

@@ -15,7 +15,7 @@
   on each axis.
 
   \code
-    const pm::TrackResult r = tracker.track(left, right);
+    const pm::tracker::TrackResult r = tracker.track(left, right);
     if (r.uncertainty.known)
       std::cout << "1-sigma " << r.uncertainty.maxMm() << " mm, " << r.uncertainty.maxDeg() << " deg\n";
   \endcode
@@ -24,7 +24,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace pm {
+namespace pm::precise {
 
 //! 1-sigma per axis of the hand frame (see PoseUncertainty.h); unknown when no precise stage measured the frame.
 struct PoseUncertainty
@@ -57,8 +57,8 @@ int main()
   std::array<double, 36> information{};  // in a program: PreciseResult::information
   for (int i = 0; i < 6; ++i)
     information[7 * i] = i < 3 ? 4.0 : 4.0e6; // 0.5 mm and 0.5 mrad from the lines
-  const pm::UncertaintyModel model;       // the shipped scales and floors
-  const pm::PoseUncertainty u = model.uncertainty(information, 0.9); // a residual of 0.9 px
+  const pm::precise::UncertaintyModel model;       // the shipped scales and floors
+  const pm::precise::PoseUncertainty u = model.uncertainty(information, 0.9); // a residual of 0.9 px
   std::cout << "x: " << u.sigmaMm[0] << " mm, about x: " << u.sigmaDeg[0] << " deg\n";
 }
   \endcode
@@ -78,8 +78,8 @@ struct UncertaintyModel
   PoseUncertainty uncertainty(const std::array<double, 6> &lineSigma, double residualPx) const;
   //! The sigma on \e axis (0..5: x, y, z, about x, y, z) of a line sigma \e lineSigma (mm or deg) and a residual \e residualPx.
   double sigma(std::size_t axis, double lineSigma, double residualPx) const { return std::hypot(scale[axis] * residualPx * lineSigma, floor[axis]); }
-  //! Throws pm::Error if a scale is not positive or a floor negative or not finite.
+  //! Throws pm::core::Error if a scale is not positive or a floor negative or not finite.
   void validate() const;
 };
 
-} // namespace pm
+} // namespace pm::precise

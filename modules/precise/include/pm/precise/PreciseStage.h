@@ -15,9 +15,9 @@
   them. The colour posteriors come from the model's photos (PhotoModel::foregroundHistogram) and
   follow the scene: learnColours() blends in each frame's colours along the outline.
 
-      pm::PreciseStage precise(rig, model);           // the model must carry outlines (version 5)
+      pm::precise::PreciseStage precise(rig, model);           // the model must carry outlines (version 5)
       precise.setImages(IL, IR);                      // the frame (kept by pointer until the next)
-      const pm::PreciseResult r = precise.refine(rmgaBest);
+      const pm::precise::PreciseResult r = precise.refine(rmgaBest);
       if (r.ok) { phi = r.phi; precise.learnColours(phi); }
 */
 #include <array>
@@ -36,7 +36,7 @@
 #include "pm/precise/InteriorTerm.h"
 #include "pm/precise/OutlineViews.h"
 
-namespace pm {
+namespace pm::precise {
 
 /*!
   The precise stage's parameters (PreciseStage.h), with measured defaults; validate() checks them.
@@ -62,14 +62,14 @@ struct PreciseParams
   double interiorSigma = 0.05;           //!< the chromaticity's noise the interior term assumes
   double interiorWeight = 1.0;           //!< the interior term's weight beside the outline's
 
-  //! Throws pm::Error naming the first parameter out of range.
+  //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
 };
 
 //! What PreciseStage::refine() found.
 struct PreciseResult
 {
-  Phi phi;                     //!< the refined pose (the start when !ok)
+  core::Phi phi;                     //!< the refined pose (the start when !ok)
   bool ok = false;             //!< enough lines were measured in the last iteration
   std::array<std::size_t, 2> lines{}; //!< lines measured in each camera at the finest scale
   /*!
@@ -94,14 +94,14 @@ struct PreciseResult
 
 int main()
 {
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");
-  const pm::PhotoModel model = pm::io::loadPhotoModel("model.json"); // an all-around model
-  pm::PreciseStage precise(rig, model);
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json"); // an all-around model
+  pm::precise::PreciseStage precise(rig, model);
   const vpImage<vpRGBa> IL = pm::io::readColorImage("left.png"), IR = pm::io::readColorImage("right.png");
   precise.setImages(IL, IR);
-  pm::Phi phi;                      // a pose within a few degrees and millimetres
+  pm::core::Phi phi;                      // a pose within a few degrees and millimetres
   phi.z = 500;
-  const pm::PreciseResult r = precise.refine(phi);
+  const pm::precise::PreciseResult r = precise.refine(phi);
   std::cout << r.phi.toString() << " from " << r.lines[0] + r.lines[1] << " lines\n";
 }
   \endcode
@@ -109,32 +109,32 @@ int main()
 class PreciseStage
 {
 public:
-  //! Throws pm::Error for an invalid rig or parameters, or a model without outlines.
-  PreciseStage(const StereoRig &rig, const PhotoModel &model, const PreciseParams &params = PreciseParams());
+  //! Throws pm::core::Error for an invalid rig or parameters, or a model without outlines.
+  PreciseStage(const core::StereoRig &rig, const core::PhotoModel &model, const PreciseParams &params = PreciseParams());
   /*!
     The frame's images (raw, as the cameras gave them): kept by pointer, they must live until the
-    last refine() or learnColours() on them. Throws pm::Error if a size is not its camera's.
+    last refine() or learnColours() on them. Throws pm::core::Error if a size is not its camera's.
   */
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   /*!
     Refines \e start on the images (see PreciseStage.h): with every scale, or, \e near (a start known
     to lie within a few pixels, e.g. the last frame's pose while tracking), with nearScales only.
-    Throws pm::Error for no images or an invalid start.
+    Throws pm::core::Error for no images or an invalid start.
   */
-  PreciseResult refine(const Phi &start, bool near = false);
+  PreciseResult refine(const core::Phi &start, bool near = false);
   /*!
     The stage's objective at \e phi, what its steps drive down: the lines measured at \e phi at the
     finest scale, the mean of (offset / its standard deviation)^2 of the outline each finds from the
     model's, plus, with the interior term, the mean of (chromaticity residual / interiorSigma)^2 (0 at a
-    perfect fit; smooth in the pose). For plots (pm-fitness-map --profiles). Throws pm::Error for no
+    perfect fit; smooth in the pose). For plots (pm-fitness-map --profiles). Throws pm::core::Error for no
     images or an invalid pose; NaN when too few lines are measured.
   */
-  double objective(const Phi &phi);
+  double objective(const core::Phi &phi);
   /*!
     Blends this frame's colours along the outline at \e phi into the histograms (learningRate; the
     whole of them when the model gave none and none were learnt yet).
   */
-  void learnColours(const Phi &phi);
+  void learnColours(const core::Phi &phi);
   //! Back to the model's colour histograms (or none).
   void resetColours();
   const ColourHistograms &colours() const { return m_colours; }                    //!< the colour statistics
@@ -147,7 +147,7 @@ private:
   PreciseParams m_params;
   OutlineViews m_outlines;
   std::array<LineCamera, 2> m_cams;
-  std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort;
+  std::array<std::shared_ptr<const core::UndistortMap>, 2> m_undistort;
   std::array<std::unique_ptr<CorrespondenceLines>, 2> m_lines;
   std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
   std::array<InteriorSamples, 2> m_samples;  //!< each camera's interior samples of the last measurement
@@ -156,4 +156,4 @@ private:
   bool m_hasImages = false;
 };
 
-} // namespace pm
+} // namespace pm::precise

@@ -24,13 +24,13 @@ struct RigCalibrationOutputs
   std::string source;                //!< the pairs, in words ("13 image pairs")
   std::string board;                 //!< the pattern, in words (calib::Pattern::describe())
   calib::RigCalibration calibration; //!< what calib::calibrateRig() found
-  std::optional<StereoRig> truth;    //!< the rig that took the pictures, when known (the lab)
+  std::optional<core::StereoRig> truth;    //!< the rig that took the pictures, when known (the lab)
   double arrowGain = 20;             //!< coverage.png: residual arrows drawn this many times longer
 };
 
 /*!
   Writes the rig, coverage.png and summary.json into \e dir (created if missing); returns
-  summary.json's text. Throws pm::Error; on an error nothing new is left in \e dir.
+  summary.json's text. Throws pm::core::Error; on an error nothing new is left in \e dir.
 
   \code
     pm::report::RigCalibrationOutputs o;
@@ -82,7 +82,7 @@ struct BaselineCheckOutputs
 
 /*!
   Writes detections.png and summary.json into \e dir (created if missing); returns summary.json's
-  text. Throws pm::Error; on an error nothing is left in \e dir.
+  text. Throws pm::core::Error; on an error nothing is left in \e dir.
 
   \code
     pm::calib::BaselineCheck check(rig, board);

@@ -23,36 +23,36 @@ struct PoseErrors
 };
 
 //! The errors of \e a against \e b.
-PoseErrors poseErrors(const Phi &a, const Phi &b);
+PoseErrors poseErrors(const core::Phi &a, const core::Phi &b);
 
 //! A detection and what it is measured against.
 struct DetectionOutputs
 {
   std::string source;      //!< the pair and the model, in words
-  Detection detection;     //!< what detectStatic() found
+  tracker::Detection detection;     //!< what detectStatic() found
   std::string budget;      //!< the tracker's budget per frame, in words
   bool haveTruth = false;  //!< whether \e truth holds the pair's true pose
-  Phi truth{};             //!< the model's true pose (mm, quaternion vector)
-  Phi peak{};              //!< the fitness peak nearest the truth (nearestFitnessPeak)
+  core::Phi truth{};             //!< the model's true pose (mm, quaternion vector)
+  core::Phi peak{};              //!< the fitness peak nearest the truth (nearestFitnessPeak)
   double fitnessAtPeak = 0; //!< F there
 };
 
 /*!
   Writes detection.png (\e fitness's points at the pose found, on \e left and \e right) and
-  summary.json into \e dir; returns summary.json's text. Throws pm::Error; on an error nothing
+  summary.json into \e dir; returns summary.json's text. Throws pm::core::Error; on an error nothing
   is left in \e dir.
 
   \code
-    pm::PhotoModelTracker tracker(rig, model);
+    pm::tracker::PhotoModelTracker tracker(rig, model);
     tracker.initialize();
     pm::report::DetectionOutputs o;
     o.source = "my pair";
-    o.detection = pm::detectStatic(tracker, left, right, pm::DetectionParams());
+    o.detection = pm::tracker::detectStatic(tracker, left, right, pm::tracker::DetectionParams());
     pm::report::writeDetection("detect", o, tracker.fitness(), left, right);
     std::cout << pm::report::describeDetection(o, "detect");
   \endcode
 */
-std::string writeDetection(const std::string &dir, const DetectionOutputs &o, const StereoFitness &fitness,
+std::string writeDetection(const std::string &dir, const DetectionOutputs &o, const core::StereoFitness &fitness,
                            const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
 //! What pm-detect prints of it (written to \e dir).
 std::string describeDetection(const DetectionOutputs &o, const std::string &dir);

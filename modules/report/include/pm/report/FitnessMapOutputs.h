@@ -40,26 +40,26 @@ struct FitnessMapsResult
   double seconds = 0;            //!< all grids' computing time (s)
   std::string summaryJson;       //!< summary.json as written
   std::string text;              //!< one line per grid, as pm-fitness-map prints it
-  //! The grid named \e name (throws pm::Error if there is none).
+  //! The grid named \e name (throws pm::core::Error if there is none).
   const GridResult &grid(const std::string &name) const;
 };
 
 /*!
   Computes \e specs' maps of \e fitness (its images set: \e left, \e right) around \e truth (the
   variables off a grid held at the truth) and writes them into \e dir; \e source names the images
-  in summary.json, \e onMap is called after each grid. Throws pm::Error; on an error nothing is
+  in summary.json, \e onMap is called after each grid. Throws pm::core::Error; on an error nothing is
   left in \e dir.
 
   \code
-    pm::StereoFitness fit(rig, model);
+    pm::core::StereoFitness fit(rig, model);
     fit.setImages(left, right);
     const pm::report::FitnessMapsResult r =
-        pm::report::writeFitnessMaps("maps", fit, model.size(), truth, pm::paperFitnessMaps(), "my pair", left, right);
+        pm::report::writeFitnessMaps("maps", fit, model.size(), truth, pm::core::paperFitnessMaps(), "my pair", left, right);
     std::cout << r.text;
   \endcode
 */
-FitnessMapsResult writeFitnessMaps(const std::string &dir, const StereoFitness &fitness, std::size_t modelPoints, const Phi &truth,
-                                   const std::vector<FitnessMapSpec> &specs, const std::string &source,
+FitnessMapsResult writeFitnessMaps(const std::string &dir, const core::StereoFitness &fitness, std::size_t modelPoints, const core::Phi &truth,
+                                   const std::vector<core::FitnessMapSpec> &specs, const std::string &source,
                                    const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::function<void()> &onMap = {});
 
 } // namespace pm::report

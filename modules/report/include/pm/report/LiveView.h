@@ -26,7 +26,7 @@ namespace pm::report {
   owns the display and the frame it shows; it keeps no reference to the images it is given.
   Without an X display every call but capture() is harmless, so a program need not test for one.
   \code
-  pm::StereoFitness fitness(rig, model);      // rig, model: pm/io/RigFile.h, pm/io/PhotoModelFile.h
+  pm::core::StereoFitness fitness(rig, model);      // rig, model: pm/io/RigFile.h, pm/io/PhotoModelFile.h
   pm::report::LiveView view;
   view.open("pm-track");                      // false, said on stderr, when there is no X display
   fitness.setImages(IL, IR);                  // each new stereo pair, vpImage<vpRGBa>
@@ -53,10 +53,10 @@ public:
     StereoFitness::pointScores at the current pose, camera 0 and 1); \e status is written on the
     left image. A frame whose side-by-side size differs from the first one's is not drawn.
   */
-  void show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::vector<PointScore> &scoresLeft,
-            const std::vector<PointScore> &scoresRight, const std::string &status);
-  //! Writes what the window shows, read back from the X server (vpDisplay::getImage). Throws pm::Error if not open.
-  //! The format follows \e pngPath's extension (pm::io::writeImage, which throws pm::Error when it cannot write).
+  void show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::vector<core::PointScore> &scoresLeft,
+            const std::vector<core::PointScore> &scoresRight, const std::string &status);
+  //! Writes what the window shows, read back from the X server (vpDisplay::getImage). Throws pm::core::Error if not open.
+  //! The format follows \e pngPath's extension (pm::io::writeImage, which throws pm::core::Error when it cannot write).
   void capture(const std::string &pngPath);
 
 private:

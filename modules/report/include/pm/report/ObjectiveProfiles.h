@@ -45,7 +45,7 @@ struct ProfileResult
   files.commit();
   \endcode
 */
-ProfileResult writeObjectiveProfiles(io::StagedFiles &files, const StereoFitness &fitness, PreciseStage &precise, const Phi &truth,
+ProfileResult writeObjectiveProfiles(io::StagedFiles &files, const core::StereoFitness &fitness, precise::PreciseStage &precise, const core::Phi &truth,
                                      double rangeDeg, double stepDeg);
 
 } // namespace pm::report

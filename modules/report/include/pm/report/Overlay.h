@@ -25,13 +25,13 @@ namespace pm::report {
   corner. \e region is the target mask (non-zero inside), of the photo's size; a mask of another
   size draws no outline.
 */
-vpImage<vpRGBa> drawModelOnPhoto(const vpImage<vpRGBa> &photo, const vpImage<unsigned char> &region, const PhotoModel &m);
+vpImage<vpRGBa> drawModelOnPhoto(const vpImage<vpRGBa> &photo, const vpImage<unsigned char> &region, const core::PhotoModel &m);
 /*!
   The model alone: S_in points in their own hue, S_out points white, on dark grey.
   The image has the photo's size (PhotoModel::photoWidth x photoHeight px), each point drawn where
   it was sampled (u, v), with a caption in the top-left corner.
 */
-vpImage<vpRGBa> drawModel(const PhotoModel &m);
+vpImage<vpRGBa> drawModel(const core::PhotoModel &m);
 /*!
   The model projected at a pose, each point coloured by how it scored (Eqs. 8, 9): S_in on the
   target green, on background yellow, elsewhere light grey; S_out on background light blue,
@@ -40,7 +40,7 @@ vpImage<vpRGBa> drawModel(const PhotoModel &m);
   PointScore::Off, and writes \e label in white in the top-left corner. The scores' (u, v) are in
   the raw (distorted) image of their camera, so \e image is that camera's image as taken.
   \code
-  pm::StereoFitness fitness(rig, model);        // rig, model: pm/io/RigFile.h, pm/io/PhotoModelFile.h
+  pm::core::StereoFitness fitness(rig, model);        // rig, model: pm/io/RigFile.h, pm/io/PhotoModelFile.h
   fitness.setImages(IL, IR);                    // the stereo pair, vpImage<vpRGBa>
   const vpImage<vpRGBa> both = pm::report::sideBySide(
       pm::report::drawPointScores(IL, fitness.pointScores(phi, 0), "model at phi, left"),
@@ -48,7 +48,7 @@ vpImage<vpRGBa> drawModel(const PhotoModel &m);
   pm::io::writeImage(both, "scores.png");       // pm/io/ImageFile.h
   \endcode
 */
-vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<PointScore> &scores,
+vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<core::PointScore> &scores,
                                 const std::string &label);
 /*!
   The relief the rig measured: the photo in grey, each matched region pixel coloured by its depth
@@ -60,8 +60,8 @@ vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<
   their u, v in the photo). The result is 40 px taller than the photo: the colour bar, labelled
   with \e nearMm and \e farMm, is in that strip under the photo.
 */
-vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &depthMm, const PhotoModel &m,
-                          const std::vector<ModelPoint> &dropped, double nearMm, double farMm);
+vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &depthMm, const core::PhotoModel &m,
+                          const std::vector<core::ModelPoint> &dropped, double nearMm, double farMm);
 /*!
   Writes \e text at (row, col) with ViSP's font, in \e color.
   Draws into \e I itself, in ViSP's 16 px monospace font (vpFont), over a black shadow one pixel

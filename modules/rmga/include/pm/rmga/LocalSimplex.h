@@ -9,14 +9,14 @@
 
   Invalid poses (|eps| > 1) score -infinity and are never returned. Allocates nothing.
 
-      pm::StereoObjective smooth(fitness, pm::StereoObjective::Score::Smooth);
-      const pm::LocalSimplexResult r = pm::refineLocalSimplex(smooth, gaBest, pm::LocalSimplexParams());
+      pm::rmga::StereoObjective smooth(fitness, pm::rmga::StereoObjective::Score::Smooth);
+      const pm::rmga::LocalSimplexResult r = pm::rmga::refineLocalSimplex(smooth, gaBest, pm::rmga::LocalSimplexParams());
       use(r.best); // r.fitness >= the start's
 */
 #include "pm/core/Pose.h"
 #include "pm/rmga/RmGa.h"
 
-namespace pm {
+namespace pm::rmga {
 
 /*!
   Parameters of refineLocalSimplex(): the size of the first simplex, the evaluation budget and
@@ -30,13 +30,13 @@ struct LocalSimplexParams
   //! Stops early when every vertex lies within this fraction of the first steps of the best ([0, 1)).
   double tolerance = 0.02;
 
-  void validate() const; //!< throws pm::Error naming the parameter out of range
+  void validate() const; //!< throws pm::core::Error naming the parameter out of range
 };
 
 //! What refineLocalSimplex() found.
 struct LocalSimplexResult
 {
-  Phi best;            //!< the best pose found (valid; the start if nothing scored higher)
+  core::Phi best;            //!< the best pose found (valid; the start if nothing scored higher)
   double fitness = 0;  //!< the score at best (never below the start's)
   double startFitness = 0; //!< the score at the start
   int evaluations = 0; //!< poses tried, the start included (an invalid one counts, unscored); at most maxEvaluations
@@ -44,8 +44,8 @@ struct LocalSimplexResult
 
 /*!
   Maximises \e f from \e start, one pose per call of FitnessFunction::evaluate (no early
-  rejection). Throws pm::Error for invalid parameters or an invalid start.
+  rejection). Throws pm::core::Error for invalid parameters or an invalid start.
 */
-LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const Phi &start, const LocalSimplexParams &params);
+LocalSimplexResult refineLocalSimplex(FitnessFunction &f, const core::Phi &start, const LocalSimplexParams &params);
 
-} // namespace pm
+} // namespace pm::rmga

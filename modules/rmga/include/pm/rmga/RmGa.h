@@ -29,7 +29,7 @@
 #include "pm/core/Pose.h"
 #include "pm/rmga/SearchSpace.h"
 
-namespace pm {
+namespace pm::rmga {
 
 //! What RM-GA optimises: fitness of a batch of poses (higher is better).
 class FitnessFunction
@@ -37,7 +37,7 @@ class FitnessFunction
 public:
   virtual ~FitnessFunction() = default;
   //! Writes the fitness of poses[0, n) into fitness[0, n) (higher is better). RM-GA passes valid poses only.
-  virtual void evaluate(const Phi *poses, std::size_t n, double *fitness) = 0;
+  virtual void evaluate(const core::Phi *poses, std::size_t n, double *fitness) = 0;
   /*!
     The same, except that a pose that will score under \e rejectBelow may be given an estimate
     under \e rejectBelow instead, at a part of the work: \e cost[i] is the share of a whole
@@ -46,7 +46,7 @@ public:
     -1e300 (nothing to reject). A function may also score every pose by an estimate at a part of
     the work (a coarse search), saying so in \e cost. The default scores every pose exactly.
   */
-  virtual void evaluateOrReject(const Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost)
+  virtual void evaluateOrReject(const core::Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost)
   {
     (void)rejectBelow;
     evaluate(poses, n, fitness);
@@ -71,7 +71,7 @@ struct RmGaParams
   int restartGenerations = 0;   //!< option: restart all but the best after this many generations without gain (0: never)
   std::uint64_t seed = 1;        //!< seed of the random generator: the same seed, the same run (with an evaluation budget)
 
-  //! Throws pm::Error naming the parameter out of range.
+  //! Throws pm::core::Error naming the parameter out of range.
   void validate() const;
 };
 
@@ -90,14 +90,14 @@ struct FrameBudget
 struct Individual
 {
   Genome genome;      //!< the 72-bit chromosome
-  Phi phi;            //!< decode(genome): the pose it stands for (mm, quaternion vector part)
+  core::Phi phi;            //!< decode(genome): the pose it stands for (mm, quaternion vector part)
   double fitness = 0; //!< fitness at its last evaluation (-1e300 before the first, or when not finite)
 };
 
 //! What RmGa::evolve() found on a frame.
 struct FrameResult
 {
-  Phi best;             //!< the best individual's pose: the pose of the frame
+  core::Phi best;             //!< the best individual's pose: the pose of the frame
   double fitness = 0;   //!< its fitness (the FitnessFunction's value)
   long evaluations = 0; //!< the work, in whole evaluations (a child rejected early counts its share), rounded up
   long candidates = 0;  //!< poses scored, exactly or rejected early
@@ -115,11 +115,11 @@ struct FrameResult
 #include <iostream>
 #include <pm/rmga/RmGa.h>
 
-// A stand-in for the stereo fitness (pm::StereoObjective): the nearer (10, -20, 500) mm, the better.
-class Toy : public pm::FitnessFunction
+// A stand-in for the stereo fitness (pm::rmga::StereoObjective): the nearer (10, -20, 500) mm, the better.
+class Toy : public pm::rmga::FitnessFunction
 {
 public:
-  void evaluate(const pm::Phi *poses, std::size_t n, double *fitness) override
+  void evaluate(const pm::core::Phi *poses, std::size_t n, double *fitness) override
   {
     for (std::size_t i = 0; i < n; ++i)
       fitness[i] = -(std::abs(poses[i].x - 10) + std::abs(poses[i].y + 20) + std::abs(poses[i].z - 500));
@@ -128,13 +128,13 @@ public:
 
 int main()
 {
-  pm::RmGaParams params;
+  pm::rmga::RmGaParams params;
   params.predictMotion = true;      // options off by default
   params.restartGenerations = 30;
-  pm::RmGa ga(pm::SearchSpace(), params); // the paper's search space; a random population
+  pm::rmga::RmGa ga(pm::rmga::SearchSpace(), params); // the paper's search space; a random population
   Toy toy;
   for (int frame = 0; frame < 10; ++frame) {
-    const pm::FrameResult r = ga.evolve(toy, pm::FrameBudget::evals(800));
+    const pm::rmga::FrameResult r = ga.evolve(toy, pm::rmga::FrameBudget::evals(800));
     std::cout << r.best.toString() << " F " << r.fitness << " in " << r.generations << " generations\n";
   }
 }
@@ -143,14 +143,14 @@ int main()
 class RmGa
 {
 public:
-  //! Copies and checks \e space and \e params (throws pm::Error if invalid); the population starts random (randomize()).
+  //! Copies and checks \e space and \e params (throws pm::core::Error if invalid); the population starts random (randomize()).
   RmGa(const SearchSpace &space, const RmGaParams &params);
 
   //! A new random population over the search space (step 1); forgets the motion.
   void randomize();
   //! A population around \e p: the first individual is p, the others p plus uniform noise of
   //! +-spread times each range (clamped). Forgets the motion.
-  void seedAround(const Phi &p, double spread);
+  void seedAround(const core::Phi &p, double spread);
   /*!
     A restart: all but the best \e keep individuals are replaced, a sixth each by random ones,
     by the best's position with a random orientation, by the best's orientation with a random
@@ -181,27 +181,27 @@ public:
     ga.restart(1);
     \endcode
   */
-  void setAnchor(const Phi &p);
+  void setAnchor(const core::Phi &p);
   //! Forgets the anchor: the restarts no longer search near it.
   void clearAnchor() { m_hasAnchor = false; }
   //! True when an anchor is set (setAnchor()).
   bool hasAnchor() const { return m_hasAnchor; }
   //! The anchor, clamped into the search space; meaningful when hasAnchor().
-  const Phi &anchor() const { return m_anchor; }
+  const core::Phi &anchor() const { return m_anchor; }
   /*!
     Moves every individual (and the remembered best poses of the last frames, for the motion
     prediction) by \e f, e.g. when the frame they are expressed in moved: the tracker compensates
     the hand's own motion this way. The fitness values are kept until the next evaluation.
   */
-  void transform(const std::function<Phi(const Phi &)> &f);
+  void transform(const std::function<core::Phi(const core::Phi &)> &f);
   /*!
     Puts \e p (clamped into the search space) in place of the weakest individual, with \e fitness
     on the current frame: a pose found by other means (the tracker's precise stage) joins the search.
   */
-  void inject(const Phi &p, double fitness);
+  void inject(const core::Phi &p, double fitness);
 
   /*!
-    Evolves the population on one frame (steps 2-9) within \e budget. Throws pm::Error if the
+    Evolves the population on one frame (steps 2-9) within \e budget. Throws pm::core::Error if the
     budget is not positive. \e sameFrame: more generations on the frame of the last call (its
     fitness may have changed, e.g. scored on more of the image): no motion prediction, and the
     frame's best replaces the last one in the motion history instead of being added to it.
@@ -228,14 +228,14 @@ private:
   RmGaParams m_params;
   std::mt19937_64 m_rng;
   std::vector<Individual> m_pop, m_children, m_trial, m_merged;
-  std::vector<Phi> m_batch;
+  std::vector<core::Phi> m_batch;
   std::vector<double> m_scores, m_costs;
   bool m_havePrev = false, m_havePrev2 = false;
-  Phi m_prev, m_prev2; //!< best of the last two frames, for the motion prediction
+  core::Phi m_prev, m_prev2; //!< best of the last two frames, for the motion prediction
   Genome m_isolated;   //!< the best kept by the last restart, which does not breed ...
   int m_isolation = 0; //!< ... for this many more generations
   bool m_hasAnchor = false;
-  Phi m_anchor;        //!< see setAnchor()
+  core::Phi m_anchor;        //!< see setAnchor()
 };
 
-} // namespace pm
+} // namespace pm::rmga

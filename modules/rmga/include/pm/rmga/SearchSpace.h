@@ -10,7 +10,7 @@
 
 #include "pm/core/Pose.h"
 
-namespace pm {
+namespace pm::rmga {
 
 /*!
   The box RM-GA searches phi in: a range [lo, hi] per variable, in the order of Phi (x, y, z in
@@ -21,12 +21,12 @@ struct SearchSpace
   std::array<double, 6> lo{-180, -180, 320, -0.37, -0.37, -0.37}; //!< lower bounds: x, y, z (mm), eps1, eps2, eps3
   std::array<double, 6> hi{180, 180, 680, 0.37, 0.37, 0.37};       //!< upper bounds, in the same order
 
-  //! Throws pm::Error unless every range is finite and increasing, and those of eps lie in [-1, 1].
+  //! Throws pm::core::Error unless every range is finite and increasing, and those of eps lie in [-1, 1].
   void validate() const;
   //! Clamps phi into the ranges.
-  Phi clamp(const Phi &p) const;
+  core::Phi clamp(const core::Phi &p) const;
   //! True when every variable of \e p lies in its range (bounds included).
-  bool contains(const Phi &p) const;
+  bool contains(const core::Phi &p) const;
 };
 
 //! 6 genes of 12 bits: 72 bits in all.
@@ -48,10 +48,10 @@ struct Genome
   Gene to value: lo + (hi - lo) g / 4095. A decoded phi whose |eps| would exceed 1 (only in a
   search space wider than the paper's) is repaired onto |eps| = 0.999, never left invalid.
 */
-Phi decode(const Genome &g, const SearchSpace &s);
+core::Phi decode(const Genome &g, const SearchSpace &s);
 //! Value to the nearest gene (clamped into the ranges).
-Genome encode(const Phi &p, const SearchSpace &s);
+Genome encode(const core::Phi &p, const SearchSpace &s);
 //! Single-point crossover of the 72-bit strings at bit \e cut (1..71): a[0, cut) + b[cut, 72).
 Genome crossover(const Genome &a, const Genome &b, int cut);
 
-} // namespace pm
+} // namespace pm::rmga

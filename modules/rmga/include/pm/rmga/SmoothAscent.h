@@ -13,16 +13,16 @@
   \e shrink after one that did not; it stops when the step length falls under \e minStepPx or the
   evaluations are spent. Allocates nothing.
 
-      pm::StereoObjective f(fitness);
-      const pm::Phi starts[2] = {gaBest, lastPose};
-      const pm::SmoothAscentResult r = pm::climbSmooth(f, starts, 2, pm::SmoothAscentParams());
+      pm::rmga::StereoObjective f(fitness);
+      const pm::core::Phi starts[2] = {gaBest, lastPose};
+      const pm::rmga::SmoothAscentResult r = pm::rmga::climbSmooth(f, starts, 2, pm::rmga::SmoothAscentParams());
       use(r.best); // r.score >= the best start's
 */
 #include <cstddef>
 
 #include "pm/core/Pose.h"
 
-namespace pm {
+namespace pm::rmga {
 
 //! What climbSmooth climbs: a score continuous in the pose, with its gradient for a small motion of the pose (applyTwist).
 class SmoothFunction
@@ -34,7 +34,7 @@ public:
     when \e metric is not null, the 6x6 (row-major) mean image-motion metric at \e phi too (see
     StereoFitness::evaluateSmoothGradient).
   */
-  virtual double valueAndGradient(const Phi &phi, double grad[6], double *metric) = 0;
+  virtual double valueAndGradient(const core::Phi &phi, double grad[6], double *metric) = 0;
 };
 
 /*!
@@ -50,22 +50,22 @@ struct SmoothAscentParams
   double grow = 1.5;         //!< step length factor after a step that raised the score
   double shrink = 0.4;       //!< ... and after one that did not
 
-  void validate() const; //!< throws pm::Error naming the parameter out of range
+  void validate() const; //!< throws pm::core::Error naming the parameter out of range
 };
 
 //! What climbSmooth() found.
 struct SmoothAscentResult
 {
-  Phi best;              //!< the highest-scoring pose found (valid; the best start if no step raised the score)
+  core::Phi best;              //!< the highest-scoring pose found (valid; the best start if no step raised the score)
   double score = 0;      //!< at best, never below the best start's
   double startScore = 0; //!< the best start's
   int evaluations = 0;   //!< evaluations of the score and its gradient, the starts' included
 };
 
 /*!
-  Climbs \e f from the best of the \e n starts (each evaluated once). Throws pm::Error for invalid
+  Climbs \e f from the best of the \e n starts (each evaluated once). Throws pm::core::Error for invalid
   parameters, no start, an invalid start or more starts than evaluations.
 */
-SmoothAscentResult climbSmooth(SmoothFunction &f, const Phi *starts, std::size_t n, const SmoothAscentParams &params);
+SmoothAscentResult climbSmooth(SmoothFunction &f, const core::Phi *starts, std::size_t n, const SmoothAscentParams &params);
 
-} // namespace pm
+} // namespace pm::rmga

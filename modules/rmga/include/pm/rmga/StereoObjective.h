@@ -5,17 +5,17 @@
   batch on two cores) or its smooth score (StereoFitness::evaluateSmooth, one pose at a time), and
   the smooth score with its gradient for climbSmooth (StereoFitness::evaluateSmoothGradient).
 
-      pm::StereoObjective f(fitness);                                     // F, for RM-GA
-      pm::StereoObjective s(fitness, pm::StereoObjective::Score::Smooth); // for refineLocalSimplex
-      const pm::FrameResult r = ga.evolve(f, pm::FrameBudget::evals(1900));
-      const pm::LocalSimplexResult l = pm::refineLocalSimplex(s, r.best, pm::LocalSimplexParams());
-      const pm::SmoothAscentResult a = pm::climbSmooth(f, &r.best, 1, pm::SmoothAscentParams());
+      pm::rmga::StereoObjective f(fitness);                                     // F, for RM-GA
+      pm::rmga::StereoObjective s(fitness, pm::rmga::StereoObjective::Score::Smooth); // for refineLocalSimplex
+      const pm::rmga::FrameResult r = ga.evolve(f, pm::rmga::FrameBudget::evals(1900));
+      const pm::rmga::LocalSimplexResult l = pm::rmga::refineLocalSimplex(s, r.best, pm::rmga::LocalSimplexParams());
+      const pm::rmga::SmoothAscentResult a = pm::rmga::climbSmooth(f, &r.best, 1, pm::rmga::SmoothAscentParams());
 */
 #include "pm/core/StereoFitness.h"
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/SmoothAscent.h"
 
-namespace pm {
+namespace pm::rmga {
 
 /*!
   A StereoFitness seen as a FitnessFunction (for RmGa and refineLocalSimplex) and as a
@@ -36,25 +36,25 @@ public:
     (evaluateOrReject) only when the estimate from its first share of points lies this far under the
     threshold (the estimate's own error); a negative margin: never (every pose scored exactly).
   */
-  explicit StereoObjective(const StereoFitness &fitness, Score score = Score::Fitness, double rejectMargin = -1)
+  explicit StereoObjective(const core::StereoFitness &fitness, Score score = Score::Fitness, double rejectMargin = -1)
     : m_f(fitness), m_score(score), m_rejectMargin(rejectMargin)
   {
   }
   //! The score chosen at construction for each pose (Coarse: the estimate from the first share of points).
-  void evaluate(const Phi *poses, std::size_t n, double *fitness) override;
+  void evaluate(const core::Phi *poses, std::size_t n, double *fitness) override;
   /*!
     Fitness with a margin: F, a pose rejected early when its estimate lies under \e rejectBelow
     minus the margin. Coarse: every pose estimated (cost about a quarter). Smooth, a negative
     margin or nothing to reject (\e rejectBelow -1e300): every pose scored exactly (cost 1).
   */
-  void evaluateOrReject(const Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost) override;
+  void evaluateOrReject(const core::Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost) override;
   //! StereoFitness::evaluateSmoothGradient, whatever the Score.
-  double valueAndGradient(const Phi &phi, double grad[6], double *metric) override { return m_f.evaluateSmoothGradient(phi, grad, metric); }
+  double valueAndGradient(const core::Phi &phi, double grad[6], double *metric) override { return m_f.evaluateSmoothGradient(phi, grad, metric); }
 
 private:
-  const StereoFitness &m_f;
+  const core::StereoFitness &m_f;
   Score m_score;
   double m_rejectMargin;
 };
 
-} // namespace pm
+} // namespace pm::rmga

@@ -35,7 +35,7 @@ namespace pm::robot {
 class Arm
 {
 public:
-  //! \e model (not null; throws pm::Error otherwise) with the rig at \e eMh on the flange.
+  //! \e model (not null; throws pm::core::Error otherwise) with the rig at \e eMh on the flange.
   Arm(std::unique_ptr<ArmModel> model, const vpHomogeneousMatrix &eMh);
   virtual ~Arm() = default;
   Arm(const Arm &) = delete;
@@ -43,7 +43,7 @@ public:
 
   const ArmModel &model() const { return *m_model; } //!< the arm's kinematics and limits
   const vpHomogeneousMatrix &eMh() const { return m_eMh; } //!< the rig's hand frame on the flange
-  //! The joints now (rad or m). Throws pm::Error when the arm does not answer.
+  //! The joints now (rad or m). Throws pm::core::Error when the arm does not answer.
   virtual vpColVector q() = 0;
   //! The hand frame's pose in the base frame at joints \e q: model().fMe(q) eMh.
   vpHomogeneousMatrix fMh(const vpColVector &q) const { return m_model->fMe(q) * m_eMh; }
@@ -53,14 +53,14 @@ public:
   vpMatrix hJe(const vpColVector &q) const;
   /*!
     Commands joint velocities \e qdot (rad/s or m/s; dof() values, finite), held until the next
-    command. Throws pm::Error otherwise (the arm is then stopped).
+    command. Throws pm::core::Error otherwise (the arm is then stopped).
   */
   virtual void setJointVelocity(const vpColVector &qdot) = 0;
   //! The joint velocity being commanded, after the arm's own clamps (rad/s or m/s).
   virtual vpColVector commanded() const = 0;
   //! Lets \e dt seconds pass under the last command (the lab integrates; a real arm waits until then).
   virtual void advance(double dt) = 0;
-  //! Moves to joints \e q and returns there, at rest. Throws pm::Error (the joint named) for joints out of the limits.
+  //! Moves to joints \e q and returns there, at rest. Throws pm::core::Error (the joint named) for joints out of the limits.
   virtual void moveTo(const vpColVector &q) = 0;
   //! Commands zero velocity at once.
   virtual void stop() = 0;

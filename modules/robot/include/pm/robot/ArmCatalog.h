@@ -15,7 +15,7 @@ namespace pm::robot {
 //! The names makeArmModel() knows, the lab's default first.
 std::vector<std::string> armNames();
 /*!
-  The model of the arm called \e name. Throws pm::Error naming the known ones for another name.
+  The model of the arm called \e name. Throws pm::core::Error naming the known ones for another name.
   \code
     const std::unique_ptr<pm::robot::ArmModel> arm = pm::robot::makeArmModel("afma6");
   \endcode

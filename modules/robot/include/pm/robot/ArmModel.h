@@ -38,7 +38,7 @@ public:
   virtual std::string title() const = 0;
   //! Number of joints.
   virtual unsigned dof() const = 0;
-  //! The flange's pose in the base frame at joints \e q. Throws pm::Error for a wrong size.
+  //! The flange's pose in the base frame at joints \e q. Throws pm::core::Error for a wrong size.
   virtual vpHomogeneousMatrix fMe(const vpColVector &q) const = 0;
   //! The Jacobian in the flange frame (6 x dof, rows vx vy vz wx wy wz of the flange in its own frame) at \e q.
   virtual vpMatrix eJe(const vpColVector &q) const = 0;
@@ -47,7 +47,7 @@ public:
   virtual vpColVector jointMin() const = 0; //!< lower joint limits (rad or m)
   virtual vpColVector jointMax() const = 0; //!< upper joint limits (rad or m)
   virtual vpColVector speedLimits() const = 0; //!< joint speed limits (rad/s or m/s)
-  //! Acceleration limits (rad/s^2 or m/s^2) the commands are held to (pm::SafeCommand); each arm says where its figures come from.
+  //! Acceleration limits (rad/s^2 or m/s^2) the commands are held to (pm::servo::SafeCommand); each arm says where its figures come from.
   virtual vpColVector accelerationLimits() const = 0;
   //! Whether joint \e i (from 0) slides (m) rather than turns (rad).
   virtual bool prismatic(unsigned i) const { return i >= dof(); }
@@ -57,7 +57,7 @@ public:
     for the pass's tilts around a target 500 mm ahead.
   */
   virtual vpColVector restJoints() const = 0;
-  //! Throws pm::Error naming the arm unless \e q has dof() finite values; \e what says whose values they are.
+  //! Throws pm::core::Error naming the arm unless \e q has dof() finite values; \e what says whose values they are.
   void requireJoints(const vpColVector &q, const std::string &what = "joint values") const;
   //! "joint 3 (-12.5 deg, limits -170..170 deg)" for joint \e i (from 0) at \e q: in degrees, or mm for a prismatic one.
   std::string describeJoint(unsigned i, const vpColVector &q) const;

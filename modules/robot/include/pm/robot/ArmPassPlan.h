@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file ArmPassPlan.h
-  The pass of the hand around the target (a pm::PassPlan) made concrete for one arm: the joints
+  The pass of the hand around the target (a pm::model::PassPlan) made concrete for one arm: the joints
   of each view, found by inverse kinematics from the rest joints or the last view's, within the
   joint limits. A view out of reach is tilted less, 5 deg at a time down to half its ring's
   angle; still out of reach, it is turned about the hand's axis (a wrist's last joint may not
@@ -23,21 +23,21 @@ namespace pm::robot {
 struct ArmPassView
 {
   std::string name;        //!< "view 00", "view 01", ...
-  PassDirection direction; //!< the direction as reached (tilted less or turned where the plan's was out of reach)
+  model::PassDirection direction; //!< the direction as reached (tilted less or turned where the plan's was out of reach)
   vpColVector q;           //!< the arm's joints there
 };
 
 /*!
   The views of \e plan for \e arm from joints \e q0, the rig mounted at \e eMh on the flange and
-  the plan's pivot \e distanceMm ahead of the hand at q0. Throws pm::Error naming the first view
+  the plan's pivot \e distanceMm ahead of the hand at q0. Throws pm::core::Error naming the first view
   out of reach and the joint in the way.
   \code
     const auto arm = pm::robot::makeArmModel("viper850");
     const std::vector<pm::robot::ArmPassView> views =
-        pm::robot::planArmPass(*arm, arm->restJoints(), vpHomogeneousMatrix(), pm::PassPlan(), 500);
+        pm::robot::planArmPass(*arm, arm->restJoints(), vpHomogeneousMatrix(), pm::model::PassPlan(), 500);
   \endcode
 */
 std::vector<ArmPassView> planArmPass(const ArmModel &arm, const vpColVector &q0, const vpHomogeneousMatrix &eMh,
-                                     const PassPlan &plan, double distanceMm);
+                                     const model::PassPlan &plan, double distanceMm);
 
 } // namespace pm::robot

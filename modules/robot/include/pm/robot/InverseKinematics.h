@@ -29,7 +29,7 @@ struct IkResult
 /*!
   Joints of \e arm that put its flange at \e fMe, from \e seed (the nearest solution to it), each
   step held inside the joint limits less \e marginDeg (revolute joints) or \e marginMm (prismatic
-  ones). Throws pm::Error for a seed of the wrong size.
+  ones). Throws pm::core::Error for a seed of the wrong size.
   \code
     pm::robot::Viper850Model viper;
     const vpHomogeneousMatrix goal = viper.fMe(viper.restJoints()) * vpHomogeneousMatrix(0, 0.05, 0, 0, 0, 0);

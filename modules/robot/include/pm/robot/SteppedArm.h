@@ -25,7 +25,7 @@ class SteppedArm : public Arm
 public:
   /*!
     \e model with the rig at \e eMh, integrated in steps of at most \e cycle seconds (the arm's
-    servo cycle; 2 ms, the PA-10's). Throws pm::Error for a null model or a cycle not positive.
+    servo cycle; 2 ms, the PA-10's). Throws pm::core::Error for a null model or a cycle not positive.
   */
   explicit SteppedArm(std::unique_ptr<ArmModel> model, const vpHomogeneousMatrix &eMh = vpHomogeneousMatrix(), double cycle = 0.002);
   vpColVector q() override { return m_q; }

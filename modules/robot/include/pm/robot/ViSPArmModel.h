@@ -19,8 +19,8 @@ class ViSPArmModel : public ArmModel
 {
 public:
   unsigned dof() const override { return Kinematics::njoint; } //!< ViSP's number of joints of the arm
-  vpHomogeneousMatrix fMe(const vpColVector &q) const override; //!< ViSP's get_fMe(); throws pm::Error for a wrong size
-  vpMatrix eJe(const vpColVector &q) const override;            //!< ViSP's get_eJe(); throws pm::Error for a wrong size
+  vpHomogeneousMatrix fMe(const vpColVector &q) const override; //!< ViSP's get_fMe(); throws pm::core::Error for a wrong size
+  vpMatrix eJe(const vpColVector &q) const override;            //!< ViSP's get_eJe(); throws pm::core::Error for a wrong size
   vpColVector jointMin() const override { return m_kinematics.getJointMin(); } //!< ViSP's lower joint limits
   vpColVector jointMax() const override { return m_kinematics.getJointMax(); } //!< ViSP's upper joint limits
   vpColVector accelerationLimits() const override { return speedLimits() * 5.0; } //!< 5 times the speed limits: full speed in 0.2 s, as for the PA-10

@@ -9,7 +9,7 @@
 
   A robot that does not answer (an exception, joints of the wrong size or not finite, or joints
   that do not move for ViSPRobotArmParams::stallS while a motion is commanded: the error names a
-  joint on its limit when one is there) stops the arm and throws pm::Error: the loop that drives
+  joint on its limit when one is there) stops the arm and throws pm::core::Error: the loop that drives
   it ends with that error and the arm at rest.
 */
 #include <visp3/robot/vpRobot.h>
@@ -49,7 +49,7 @@ struct ViSPRobotArmParams
 class ViSPRobotArm : public Arm
 {
 public:
-  //! \e robot with the kinematics of \e model and the rig at \e eMh on its flange. Throws pm::Error for a null model.
+  //! \e robot with the kinematics of \e model and the rig at \e eMh on its flange. Throws pm::core::Error for a null model.
   ViSPRobotArm(vpRobot &robot, std::unique_ptr<ArmModel> model, const vpHomogeneousMatrix &eMh = vpHomogeneousMatrix(),
                const ViSPRobotArmParams &params = ViSPRobotArmParams());
   //! Stops the robot (a stop that fails is not reported from a destructor).
@@ -60,9 +60,9 @@ public:
   //! Waits until \e dt seconds after the end of the last advance() (or the first command), then checks the robot moves.
   void advance(double dt) override;
   /*!
-    Position control to \e q (within the model's limits; throws pm::Error naming a joint out of
+    Position control to \e q (within the model's limits; throws pm::core::Error naming a joint out of
     them), through the robot's own blocking vpRobot::setPosition() (or our velocity loop, see
-    ViSPRobotArmParams::moveByVelocity); then at rest. Throws pm::Error when it stops short of \e q.
+    ViSPRobotArmParams::moveByVelocity); then at rest. Throws pm::core::Error when it stops short of \e q.
   */
   void moveTo(const vpColVector &q) override;
   void stop() override;

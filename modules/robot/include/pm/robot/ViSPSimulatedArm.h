@@ -36,7 +36,7 @@ struct SimulatorHolder
 class ViSPSimulatedArm : private detail::SimulatorHolder, public ViSPRobotArm
 {
 public:
-  //! Throws pm::Error for a name without a ViSP simulator.
+  //! Throws pm::core::Error for a name without a ViSP simulator.
   explicit ViSPSimulatedArm(const std::string &name, const vpHomogeneousMatrix &eMh = vpHomogeneousMatrix());
   ~ViSPSimulatedArm() override;
   std::string describe() const override;

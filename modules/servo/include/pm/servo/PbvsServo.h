@@ -21,7 +21,7 @@
 #include <visp3/visual_features/vpFeatureTranslation.h>
 #include <visp3/vs/vpServo.h>
 
-namespace pm {
+namespace pm::servo {
 
 /*!
   Settings of PbvsServo: the desired pose, vpAdaptiveGain's three parameters, the feed-forward,
@@ -42,7 +42,7 @@ struct ServoParams
   double maxHandRotation = 2.0;  //!< ... and turns at most this fast (rad/s)
 
   /*!
-    Throws pm::Error unless hdMo is a rigid transformation, 0 < gainAtInfinity <= gainAtZero,
+    Throws pm::core::Error unless hdMo is a rigid transformation, 0 < gainAtInfinity <= gainAtZero,
     gainSlopeAtZero > 0, the hand's speed limits are positive and 0 <= feedForwardSmoothing < 1.
   */
   void validate() const;
@@ -57,11 +57,11 @@ struct ServoParams
   \code
     pm::sim::RobotPA10 robot;
     robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
-    pm::PbvsServo servo; // default ServoParams: the target held 0.5 m ahead of the hand
+    pm::servo::PbvsServo servo; // default ServoParams: the target held 0.5 m ahead of the hand
     const double dt = 1.0 / 30;
     vpMatrix eJe;
     robot.get_eJe(eJe);
-    // hMo: the target's estimated pose in the hand frame (metres), e.g. a pm::TrackResult's.
+    // hMo: the target's estimated pose in the hand frame (metres), e.g. a pm::tracker::TrackResult's.
     const vpColVector qdot = servo.computeJointVelocity(hMo, robot.fMe(), eJe, robot.q(), robot.jointMin(),
                                                         robot.jointMax(), dt);
     robot.setVelocity(vpRobot::JOINT_STATE, qdot);
@@ -71,7 +71,7 @@ struct ServoParams
 class PbvsServo
 {
 public:
-  //! Sets up the vpServo task from \e params. Throws pm::Error if ServoParams::validate() does.
+  //! Sets up the vpServo task from \e params. Throws pm::core::Error if ServoParams::validate() does.
   explicit PbvsServo(const ServoParams &params = ServoParams());
   PbvsServo(const PbvsServo &) = delete; // vpServo keeps raw pointers to our features
   PbvsServo &operator=(const PbvsServo &) = delete;
@@ -82,7 +82,7 @@ public:
     feed-forward; none when dt <= 0). \e targetTwist, when given, is the target's twist (v in m/s,
     w in rad/s) in the base frame (e.g. from a PoseFilter) and replaces the finite difference.
     Returns one velocity per joint (rad/s), scaled down as a whole to ServoParams::maxHandSpeed and
-    ServoParams::maxHandRotation. Throws pm::Error if hMo is not a valid pose, \e targetTwist has
+    ServoParams::maxHandRotation. Throws pm::core::Error if hMo is not a valid pose, \e targetTwist has
     not 6 components, or the law gives a non-finite velocity.
   */
   vpColVector computeJointVelocity(const vpHomogeneousMatrix &hMo, const vpHomogeneousMatrix &fMe, const vpMatrix &eJe,
@@ -108,4 +108,4 @@ private:
   double m_tErr = 0, m_rErr = 0;
 };
 
-} // namespace pm
+} // namespace pm::servo

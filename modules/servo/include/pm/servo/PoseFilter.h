@@ -8,7 +8,7 @@
 #include <visp3/core/vpColVector.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
 
-namespace pm {
+namespace pm::servo {
 
 //! The gains of PoseFilter, for the translation and for the rotation.
 struct PoseFilterParams
@@ -17,7 +17,7 @@ struct PoseFilterParams
   double alphaT = 0.7, betaT = 0.2; //!< translation gain beta: the position residual / dt taken into the velocity, in [0, 2)
   //! Rotation gain alpha: the share of the theta-u residual taken into the rotation, in (0, 1] (low: the tilts of the estimate are noisy).
   double alphaR = 0.3, betaR = 0.05; //!< rotation gain beta: the theta-u residual / dt taken into the angular velocity, in [0, 2)
-  void validate() const;             //!< throws pm::Error unless 0 < alpha <= 1 and 0 <= beta < 2
+  void validate() const;             //!< throws pm::core::Error unless 0 < alpha <= 1 and 0 <= beta < 2
 };
 
 /*!
@@ -26,7 +26,7 @@ struct PoseFilterParams
   PbvsServo forward.
 
   \code
-    pm::PoseFilter filter; // default gains
+    pm::servo::PoseFilter filter; // default gains
     const double dt = 1.0 / 30;
     // fMh: the hand in the base frame; hMo: the estimated target in the hand frame.
     filter.update(fMh * hMo, dt);
@@ -37,7 +37,7 @@ struct PoseFilterParams
 class PoseFilter
 {
 public:
-  //! Throws pm::Error if PoseFilterParams::validate() does.
+  //! Throws pm::core::Error if PoseFilterParams::validate() does.
   explicit PoseFilter(const PoseFilterParams &p = PoseFilterParams());
   /*!
     Takes a measurement \e z, \e dt seconds after the previous one; returns the filtered pose.
@@ -60,4 +60,4 @@ private:
   double m_v[3] = {0, 0, 0}, m_w[3] = {0, 0, 0};
 };
 
-} // namespace pm
+} // namespace pm::servo

@@ -9,7 +9,7 @@
 */
 #include <visp3/core/vpColVector.h>
 
-namespace pm {
+namespace pm::servo {
 
 /*!
   Speed and acceleration limiter of a joint velocity command (see SafeCommand.h). It holds the
@@ -18,7 +18,7 @@ namespace pm {
   \code
     pm::sim::RobotPA10 robot;
     robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
-    pm::SafeCommand safe(robot.speedLimits(), robot.accelerationLimits());
+    pm::servo::SafeCommand safe(robot.speedLimits(), robot.accelerationLimits());
     // every cycle of dt seconds: toward the servo's command when the estimate is usable, else toward zero
     robot.setVelocity(vpRobot::JOINT_STATE, usable ? safe.next(qdotWanted, dt) : safe.stop(dt));
   \endcode
@@ -28,11 +28,11 @@ class SafeCommand
 public:
   /*!
     \e speedLimits (rad/s) and \e accelerationLimits (rad/s^2), one per joint (at least one),
-    positive and finite. Throws pm::Error otherwise. The first command is zero.
+    positive and finite. Throws pm::core::Error otherwise. The first command is zero.
   */
   SafeCommand(const vpColVector &speedLimits, const vpColVector &accelerationLimits);
 
-  //! The command for a cycle of \e dt seconds toward \e wanted. Throws pm::Error if dt <= 0.
+  //! The command for a cycle of \e dt seconds toward \e wanted. Throws pm::core::Error if dt <= 0.
   const vpColVector &next(const vpColVector &wanted, double dt);
   //! next() toward zero.
   const vpColVector &stop(double dt);
@@ -45,4 +45,4 @@ private:
   vpColVector m_vmax, m_amax, m_cmd;
 };
 
-} // namespace pm
+} // namespace pm::servo

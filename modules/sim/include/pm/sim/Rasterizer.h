@@ -30,7 +30,7 @@ namespace pm::sim {
   drawn, with the same light direction) fragments hidden from the light get the ambient term only.
   A fragment's colour is texture * (ambient + lit * diffuse * max(0, n.l)) + lit * specular *
   max(0, n.h)^shininess, with lit the shadow map's visibility (1 without one); the normal is turned
-  toward the camera first (two-sided). Rasterizer::draw() and render() throw pm::Error if \e shadow
+  toward the camera first (two-sided). Rasterizer::draw() and render() throw pm::core::Error if \e shadow
   was made for another direction than \e dirCamera seen in the mesh's frame.
 */
 struct Lighting
@@ -67,7 +67,7 @@ public:
   /*!
     Sets the image size (pixels) and the supersampling factor (1..4: SSxSS samples per pixel) and
     empties the depth and id buffers (the clear colour stays the last clear()'s; black on a new
-    instance). Throws pm::Error for a zero size or a factor out of range.
+    instance). Throws pm::core::Error for a zero size or a factor out of range.
   */
   void reset(unsigned width, unsigned height, unsigned supersampling);
   //! Empties the frame before draw(): no sample drawn, the background colour (r, g, b in [0, 1]) everywhere.
@@ -75,7 +75,7 @@ public:
   /*!
     Draws \e mesh (object frame) seen by camera \e cam with the object at \e cMo (its pose in the
     camera frame, metres); \e id (1..255; 0 is refused) is written to the id buffer where visible.
-    Throws pm::Error before reset(), after render() without a clear(), for a mesh without texture,
+    Throws pm::core::Error before reset(), after render() without a clear(), for a mesh without texture,
     and for a shadow map made for another light direction.
   */
   void draw(const Mesh &mesh, const vpHomogeneousMatrix &cMo, const vpCameraParameters &cam, const Lighting &light,

@@ -68,23 +68,23 @@ public:
   void getPosition(const vpRobot::vpControlFrameType frame, vpColVector &q) override;
   /*!
     JOINT_STATE only (the joint values are clamped into their limits); the arm is then at rest.
-    Throws pm::Error for another frame, a size other than 7 or a value not finite.
+    Throws pm::core::Error for another frame, a size other than 7 or a value not finite.
   */
   void setPosition(const vpRobot::vpControlFrameType frame, const vpColVector &q) override;
   /*!
     JOINT_STATE (rad/s) or END_EFFECTOR_FRAME / CAMERA_FRAME (twist in the flange frame, m/s rad/s,
     turned into joint velocities by the pseudo-inverse of eJe; CAMERA_FRAME is taken as the flange
-    frame too). Scaled down as a whole to the speed limits; applied by step(). Throws pm::Error
+    frame too). Scaled down as a whole to the speed limits; applied by step(). Throws pm::core::Error
     for another frame, a wrong size or a value not finite.
   */
   void setVelocity(const vpRobot::vpControlFrameType frame, const vpColVector &vel) override;
-  //! JOINT_STATE only: the joint displacement (rad) since the previous call (or setPosition()). Throws pm::Error otherwise.
+  //! JOINT_STATE only: the joint displacement (rad) since the previous call (or setPosition()). Throws pm::core::Error otherwise.
   void getDisplacement(const vpRobot::vpControlFrameType frame, vpColVector &d) override;
 
   //! Integrates the commanded velocity over \e dt seconds.
   void step(double dt);
 
-  //! Forward kinematics: the flange pose fMe in the base frame (metres) for joints \e q (rad; throws pm::Error unless 7).
+  //! Forward kinematics: the flange pose fMe in the base frame (metres) for joints \e q (rad; throws pm::core::Error unless 7).
   static vpHomogeneousMatrix forward(const vpColVector &q);
   //! The geometric Jacobian fJe in the base frame (6 x 7, rows vx vy vz wx wy wz) for joints \e q (rad).
   static vpMatrix jacobianBase(const vpColVector &q);
@@ -101,7 +101,7 @@ public:
   vpColVector jointMin() const;    //!< lower joint limits (rad)
   vpColVector jointMax() const;    //!< upper joint limits (rad)
   vpColVector speedLimits() const; //!< joint speed limits (rad/s)
-  //! Acceleration limits (rad/s^2) for the commands (robot::Pa10Model::accelerationLimits()); pm::SafeCommand holds the commands to them.
+  //! Acceleration limits (rad/s^2) for the commands (robot::Pa10Model::accelerationLimits()); pm::servo::SafeCommand holds the commands to them.
   vpColVector accelerationLimits() const;
   //! Times a joint reached its limit and was stopped there (should stay 0).
   int limitHits() const { return m_arm->limitHits(); }

@@ -70,7 +70,7 @@ struct SceneParams
   bool distractor = false;
   double distractorPose[6] = {-190, 0, 0, 0, 0, 0}; //!< the look-alike's pose in the target frame (x, y, z mm, eps1..3)
 
-  //! Throws pm::Error naming the first parameter out of range.
+  //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
 };
 
@@ -91,8 +91,8 @@ struct StereoImages
   sp.exposure = 0.8;                                     // a darker lab
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"), sp); // the crab
   const vpCameraParameters cam(800, 800, 320, 240);
-  const pm::StereoRig rig = pm::StereoRig::symmetric(cam, 640, 480, 0.12, pm::StereoRig::toeInFor(0.12, 0.5));
-  const vpHomogeneousMatrix hMo = pm::toHomogeneousMatrix(pm::Phi{0, 0, 500, 0, 0, 0}); // 500 mm ahead
+  const pm::core::StereoRig rig = pm::core::StereoRig::symmetric(cam, 640, 480, 0.12, pm::core::StereoRig::toeInFor(0.12, 0.5));
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(pm::core::Phi{0, 0, 500, 0, 0, 0}); // 500 mm ahead
   for (std::uint64_t frame = 0; frame < 30; ++frame) {
     const pm::sim::StereoImages im = scene.renderStereo(rig, hMo, frame);
     // im.left, im.right: what the two cameras see
@@ -104,7 +104,7 @@ class Scene
 public:
   /*!
     Builds the meshes of the toy (every params.meshStepMm), of the backdrop (params.backdropGapMm
-    behind the toy's base) and of the occluder. Throws pm::Error for a parameter out of range or a
+    behind the toy's base) and of the occluder. Throws pm::core::Error for a parameter out of range or a
     target whose grids do not match.
   */
   Scene(const TargetShape &target, const SceneParams &params = SceneParams());
@@ -117,23 +117,23 @@ public:
     computed once per camera and kept), then the sensor noise is added. \e withTarget false: the
     backdrop alone (no toy, no shadow of it). Afterwards \e raster's coverage() and depthAt() tell the
     objects apart by id (1 backdrop, 2 toy, 3 occluder, 4 look-alike); for a distorted camera they
-    hold the larger ideal canvas, not \e out. Throws pm::Error (see Rasterizer::render()).
+    hold the larger ideal canvas, not \e out. Throws pm::core::Error (see Rasterizer::render()).
   */
-  void render(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+  void render(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
               unsigned stream, vpImage<vpRGBa> &out, bool withTarget = true) const;
   //! Both views of the rig for the target at \e hMo (rendered in parallel, streams 0 and 1 of \e frame).
-  StereoImages renderStereo(const StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const;
+  StereoImages renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const;
   /*!
     The two photos of the paper's Fig. 4, taken by one camera (the \e cam intrinsics, w x h)
     looking straight at the target from \e distanceMm: (a) the backdrop alone, (b) with the toy.
-    Throws pm::Error unless \e distanceMm > 0.
+    Throws pm::core::Error unless \e distanceMm > 0.
   */
   void renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, double distanceMm, vpImage<vpRGBa> &background,
                     vpImage<vpRGBa> &withTarget) const;
 
   /*!
     The look-alike's shape (a second toy: the same kind as the target, or another of similar hue);
-    it is drawn while params().distractor is on. Throws pm::Error if the shape is invalid.
+    it is drawn while params().distractor is on. Throws pm::core::Error if the shape is invalid.
   */
   void setDistractor(const TargetShape &shape);
   bool hasDistractor() const { return !m_distractor.triangles.empty(); } //!< true once setDistractor() gave a shape
@@ -165,7 +165,7 @@ private:
   std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
   struct LensCache;
   std::shared_ptr<LensCache> m_lensCache; // the distorted cameras' resampling maps, shared by copies
-  void renderIdeal(Rasterizer &raster, const RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+  void renderIdeal(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const;
 };
 

@@ -23,7 +23,7 @@ struct SeaBottomParams
 /*!
   The sea-bottom texture for \e p (widthMm / texelMm x heightMm / texelMm texels, rounded up).
   Deterministic; one texture per parameter set is shared by the whole process while it is in use
-  (thread-safe). Throws pm::Error for a non-positive size, a texel of 0.05 mm or less, or more
+  (thread-safe). Throws pm::core::Error for a non-positive size, a texel of 0.05 mm or less, or more
   than 40 million texels.
 */
 std::shared_ptr<const Texture> makeSeaBottomTexture(const SeaBottomParams &p);

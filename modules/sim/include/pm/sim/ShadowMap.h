@@ -33,7 +33,7 @@ public:
     Rasterises the depth of \e mesh (fragments cut by its mask where it uses one) seen along the
     light that comes from direction \e towardLight (object frame, normalised here), with square
     texels of \e texelM metres, over the mesh's extent plus \e marginM. The map is limited to
-    4096 x 4096 texels (the texel grows if needed). Throws pm::Error for a zero direction, a
+    4096 x 4096 texels (the texel grows if needed). Throws pm::core::Error for a zero direction, a
     non-positive texel or an empty mesh.
   */
   ShadowMap(const Mesh &mesh, const double towardLight[3], double texelM, double marginM = 2e-3);

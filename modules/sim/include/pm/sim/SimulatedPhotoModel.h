@@ -10,7 +10,7 @@
   buildStereoPhotoModel(). No distance is given to the builder: it measures it.
 
       const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
-      const pm::Phi truth = sm.truth(hMo);   // the model's true pose for a toy at hMo
+      const pm::core::Phi truth = sm.truth(hMo);   // the model's true pose for a toy at hMo
 */
 #include "pm/model/PhotoModelBuilder.h"
 #include "pm/model/StereoPhotoModelBuilder.h"
@@ -25,7 +25,7 @@ namespace pm::sim {
 */
 struct SimulatedPhotoModel
 {
-  PhotoModelBuild build;             //!< the model and its region in the (left) photo
+  model::PhotoModelBuild build;             //!< the model and its region in the (left) photo
   //! The background photo, the backdrop alone (the left one for a stereo model).
   vpImage<vpRGBa> background, photo; //!< the photo with the toy (the left one for a stereo model)
   vpHomogeneousMatrix oMm;           //!< the model frame in the toy's frame (metres)
@@ -36,7 +36,7 @@ struct SimulatedPhotoModel
   vpImage<float> depth;              //!< hand-frame z (mm) of the matched left region pixels, NaN elsewhere
   double backdropMm = 0;             //!< the backdrop's depth the builder measured (left camera, mm)
   int nOutFallback = 0;              //!< S_out points with no matched region pixel near them (the builder's count)
-  std::vector<ModelPoint> dropped;   //!< S_in points without a reliable match
+  std::vector<core::ModelPoint> dropped;   //!< S_in points without a reliable match
   vpHomogeneousMatrix photoHMo;      //!< the toy's pose in the hand frame when the photos were taken
   vpImage<float> trueDepth;          //!< ground truth: hand-frame z (mm) of the toy at each left photo pixel, NaN off it
 
@@ -52,23 +52,23 @@ struct SimulatedPhotoModel
     frame's origin is the region's centroid in the photo, which sits off the toy's origin by
     ((cu - u0) d / px, (cv - v0) d / py, 0).
   */
-  Phi truth(const vpHomogeneousMatrix &hMo) const { return fromHomogeneousMatrix(hMo * oMm); }
+  core::Phi truth(const vpHomogeneousMatrix &hMo) const { return core::fromHomogeneousMatrix(hMo * oMm); }
 };
 
-//! Photos by camera \e cam (w x h pixels) at \e distanceMm, then the model (the scene's look-alike left out). Throws pm::Error.
+//! Photos by camera \e cam (w x h pixels) at \e distanceMm, then the model (the scene's look-alike left out). Throws pm::core::Error.
 SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &scene, const vpCameraParameters &cam, unsigned w, unsigned h,
-                                            double distanceMm, const PhotoModelParams &params = PhotoModelParams());
+                                            double distanceMm, const model::PhotoModelParams &params = model::PhotoModelParams());
 
 /*!
   The stereo model of the toy at hMo = (0, 0, \e distanceMm) in the hand frame (facing the rig),
   from the rig's backdrop pair and photo pair. With \e viewTurnDeg > 0, four further pairs are taken
   with the hand moved around the scene by +-viewTurnDeg about its x and y axes (the toy's origin
   staying in place) and the model holds their views too (a multi-view model). The scene's
-  look-alike is left out. Throws pm::Error unless \e distanceMm > 0 and \e viewTurnDeg is in
+  look-alike is left out. Throws pm::core::Error unless \e distanceMm > 0 and \e viewTurnDeg is in
   [0, 45], and as buildStereoPhotoModel().
 */
-SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const StereoRig &rig, double distanceMm = 500,
-                                                  const StereoModelParams &params = StereoModelParams(),
+SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &scene, const core::StereoRig &rig, double distanceMm = 500,
+                                                  const model::StereoModelParams &params = model::StereoModelParams(),
                                                   double viewTurnDeg = 0);
 
 } // namespace pm::sim

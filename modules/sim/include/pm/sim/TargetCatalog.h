@@ -47,7 +47,7 @@ const std::vector<TargetInfo> &labTargetCatalog();
 bool isCatalogTarget(const std::string &code);
 //! True if \e code names one of the relief targets R1..R3 (case-insensitive).
 bool isReliefTarget(const std::string &code);
-//! Generates a target (C01..C12, R1..R3). Throws pm::Error for an unknown code. Deterministic.
+//! Generates a target (C01..C12, R1..R3). Throws pm::core::Error for an unknown code. Deterministic.
 TargetShape makeTarget(const std::string &code, double texelMm = 0.25);
 
 } // namespace pm::sim

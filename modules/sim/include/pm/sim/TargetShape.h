@@ -75,7 +75,7 @@ struct TargetShape
   the zero of the interpolated signed distance, much finer than the step). When the shape has an
   underside (TargetShape::base), a second sheet for it, cut by the same outline: a closed body.
   Positions in metres in the target frame, the shape's colours as texture, Mesh::specular =
-  \e specular. Throws pm::Error for a grid smaller than 2 x 2 or grids that do not match its size.
+  \e specular. Throws pm::core::Error for a grid smaller than 2 x 2 or grids that do not match its size.
 */
 Mesh buildTargetMesh(const TargetShape &shape, double stepMm = 1.0, float specular = 0.12f);
 
@@ -84,7 +84,7 @@ Mesh buildTargetMesh(const TargetShape &shape, double stepMm = 1.0, float specul
   width (height by aspect ratio); the outline is the alpha channel where the image has one
   (alpha < 128 is outside), the whole rectangle otherwise; the default relief is a rounded
   dome of \e depthMm (0: flat). Its code is "user", its origin the outline's centroid. Throws
-  pm::Error for an empty image, \e widthMm \<= 0, \e depthMm \< 0, or an alpha channel with nothing opaque.
+  pm::core::Error for an empty image, \e widthMm \<= 0, \e depthMm \< 0, or an alpha channel with nothing opaque.
 */
 TargetShape targetFromImage(const vpImage<vpRGBa> &image, double widthMm, double depthMm, const std::string &name);
 

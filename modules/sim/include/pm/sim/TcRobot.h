@@ -27,14 +27,14 @@ public:
   TcRobot(const vpHomogeneousMatrix &wMh0, const Trajectory &steps);
   /*!
     A sinusoid of \e amplitude on variable \e axis (0..5: x, y, z in mm, eps1..3) around \e phi0,
-    at \e frequencyHz (\> 0). Throws pm::Error if its peak velocity or acceleration exceeds the
+    at \e frequencyHz (\> 0). Throws pm::core::Error if its peak velocity or acceleration exceeds the
     limits (mm/s and mm/s^2 for positions, 1/s and 1/s^2 for eps), for an axis out of range, or
     if phi0 + |amplitude| on that axis is not a valid pose.
   */
-  TcRobot(const vpHomogeneousMatrix &wMh0, const Phi &phi0, int axis, double amplitude, double frequencyHz,
+  TcRobot(const vpHomogeneousMatrix &wMh0, const core::Phi &phi0, int axis, double amplitude, double frequencyHz,
           double maxVelocity, double maxAcceleration);
 
-  Phi phi(double t) const;                  //!< the target's pose in h0
+  core::Phi phi(double t) const;                  //!< the target's pose in h0
   vpHomogeneousMatrix wMo(double t) const;  //!< the target's pose in the world
   bool moving(double t) const;              //!< between two waypoints at \e t; always true for a sinusoid
   double duration() const;                  //!< of the steps; 0 for a sinusoid (endless)
@@ -42,7 +42,7 @@ public:
 private:
   vpHomogeneousMatrix m_wMh0;
   std::unique_ptr<Trajectory> m_steps;
-  Phi m_phi0;
+  core::Phi m_phi0;
   int m_axis = 0;
   double m_amp = 0, m_freq = 0;
 };

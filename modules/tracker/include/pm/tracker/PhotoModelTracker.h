@@ -24,11 +24,11 @@
   models), TrackResult::uncertainty gives the pose's 1-sigma along and about the hand frame's
   axes in mm and deg (PoseUncertainty.h): hold the robot when it exceeds what the task tolerates.
 
-      pm::PhotoModelTracker tracker(rig, model);
+      pm::tracker::PhotoModelTracker tracker(rig, model);
       tracker.initialize();
       for (;;) {
         grab(IL, IR);
-        const pm::TrackResult r = tracker.track(IL, IR);
+        const pm::tracker::TrackResult r = tracker.track(IL, IR);
         if (r.trusted && (!r.uncertainty.known || (r.uncertainty.maxMm() < 2 && r.uncertainty.maxDeg() < 2)))
           use(r.hMo);
       }
@@ -52,7 +52,7 @@
 #include "pm/tracker/TiltFilter.h"
 #include "pm/tracker/TrackConfidence.h"
 
-namespace pm {
+namespace pm::tracker {
 
 /*!
   The tracker's state (see the file's description): Searching after initialize(), until a first
@@ -64,9 +64,9 @@ const char *toString(TrackState s);
 
 //! The fitness the tracker uses: the paper's, except that image pixels less saturated than 0.1
 //! have no hue (a blank, grey or black frame would otherwise have hue 0, red, and match a red target).
-inline FitnessParams trackerFitnessDefaults()
+inline core::FitnessParams trackerFitnessDefaults()
 {
-  FitnessParams f;
+  core::FitnessParams f;
   f.minSaturation = 0.1f;
   return f;
 }
@@ -75,9 +75,9 @@ inline FitnessParams trackerFitnessDefaults()
   RM-GA as the tracker runs it, by measurement (issues 4 and 18): motion prediction, restarts
   after 30 generations without gain, no refinement of its own (the smooth ascent does it).
 */
-inline RmGaParams trackerGaDefaults()
+inline rmga::RmGaParams trackerGaDefaults()
 {
-  RmGaParams g;
+  rmga::RmGaParams g;
   g.predictMotion = true;
   g.refineEvaluations = 0;
   g.restartGenerations = 30;
@@ -98,21 +98,21 @@ inline RmGaParams trackerGaDefaults()
 
 int main()
 {
-  pm::TrackerParams params;         // the measured defaults
+  pm::tracker::TrackerParams params;         // the measured defaults
   params.budgetEvaluations = 0;     // a wall-time budget instead of evaluations:
   params.budgetMs = 30;             // 30 ms of search a frame
   params.ga.seed = 7;               // another random sequence
   params.confidence.threshold = 0.99; // trust fewer frames
-  params.validate();                // throws pm::Error naming the first value out of range
-  pm::PhotoModelTracker tracker(pm::io::loadRig("rig.json"), pm::io::loadPhotoModel("model.json"), params);
+  params.validate();                // throws pm::core::Error naming the first value out of range
+  pm::tracker::PhotoModelTracker tracker(pm::io::loadRig("rig.json"), pm::io::loadPhotoModel("model.json"), params);
 }
   \endcode
 */
 struct TrackerParams
 {
-  SearchSpace space;            //!< where phi is searched
-  RmGaParams ga = trackerGaDefaults(); //!< RM-GA (population, operators, options, seed)
-  FitnessParams fitness = trackerFitnessDefaults(); //!< Eqs. (8)-(11)
+  rmga::SearchSpace space;            //!< where phi is searched
+  rmga::RmGaParams ga = trackerGaDefaults(); //!< RM-GA (population, operators, options, seed)
+  core::FitnessParams fitness = trackerFitnessDefaults(); //!< Eqs. (8)-(11)
   long budgetEvaluations = 800; //!< per-frame budget: evaluations (deterministic; a pose rejected early counts its share) ...
   double budgetMs = 24.0;       //!< ... or wall time, used when budgetEvaluations is 0 (the paper: 24 ms)
   /*!
@@ -174,7 +174,7 @@ struct TrackerParams
   */
   int smoothRefineEvaluations = 0;
   double smoothRefineMaxDrop = 0.01; //!< the simplex's pose is kept unless F there is this much under RM-GA's best (F's units)
-  LocalSimplexParams smoothRefine; //!< its first steps (its evaluations: smoothRefineEvaluations)
+  rmga::LocalSimplexParams smoothRefine; //!< its first steps (its evaluations: smoothRefineEvaluations)
 
   /*!
     The top of F's plateau, on every frame whose q reaches lockQuality: a climb of the smooth score
@@ -183,7 +183,7 @@ struct TrackerParams
     higher, on top of the frame budget. Its pose is the frame's when F there is not lower than at
     RM-GA's best by more than smoothAscentMaxDrop. smoothAscent.maxEvaluations 0: off.
   */
-  SmoothAscentParams smoothAscent;
+  rmga::SmoothAscentParams smoothAscent;
   double smoothAscentMaxDrop = 0.02; //!< the climb's pose is kept unless F there is this much under RM-GA's best (F's units)
   /*!
     The precise last stage (PreciseStage.h): on every frame whose q reaches lockQuality, for a model
@@ -199,7 +199,7 @@ struct TrackerParams
     frames. false, or a model without outlines: off (the frame is RM-GA's and the smooth ascent's).
   */
   bool preciseStage = true;
-  PreciseParams precise;             //!< the precise stage's parameters (PreciseStage.h)
+  precise::PreciseParams precise;             //!< the precise stage's parameters (PreciseStage.h)
   double preciseMaxDropQ = 0.02;     //!< the precise pose is kept unless q there is this much under RM-GA's best
   double preciseMaxMoveMm = 12;      //!< ... and it moved less than this from its start (mm) ...
   double preciseMaxMoveDeg = 8;      //!< ... and turned less than this (deg)
@@ -257,21 +257,21 @@ struct TrackerParams
   */
   ConfidenceModel confidence;
   //! From the precise stage's information to the reported 1-sigma per axis (TrackResult::uncertainty).
-  UncertaintyModel uncertainty;
+  precise::UncertaintyModel uncertainty;
 
-  //! Throws pm::Error naming the first parameter out of range.
+  //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
   //! The whole frame budget: budgetEvaluations evaluations when positive, else budgetMs milliseconds.
-  FrameBudget budget() const { return budgetEvaluations > 0 ? FrameBudget::evals(budgetEvaluations) : FrameBudget::ms(budgetMs); }
+  rmga::FrameBudget budget() const { return budgetEvaluations > 0 ? rmga::FrameBudget::evals(budgetEvaluations) : rmga::FrameBudget::ms(budgetMs); }
   //! The budget of a steady frame (see steadyBudgetFraction); never under one population's evaluations.
-  FrameBudget steadyBudget() const;
+  rmga::FrameBudget steadyBudget() const;
 };
 
 //! What PhotoModelTracker::track() says about a frame (also kept: PhotoModelTracker::lastResult()).
 struct TrackResult
 {
   vpHomogeneousMatrix hMo;  //!< pose of the model in the hand frame (metres)
-  Phi phi;                  //!< the same as phi (mm, quaternion vector)
+  core::Phi phi;                  //!< the same as phi (mm, quaternion vector)
   double fitness = 0;       //!< F at phi
   double quality = 0;       //!< q, the normalised fitness
   TrackState state = TrackState::Searching; //!< the state after this frame
@@ -289,9 +289,9 @@ struct TrackResult
   int smoothEvaluations = 0; //!< evaluations of the smooth score by the local refinement (0: none)
   int ascentEvaluations = 0; //!< evaluations of the smooth score and its gradient by the climb (0: none)
   bool precise = false;      //!< the precise stage's pose is the frame's (TrackerParams::preciseStage)
-  PreciseResult preciseResult; //!< what the precise stage found (its lines, residual, information), when it ran
+  precise::PreciseResult preciseResult; //!< what the precise stage found (its lines, residual, information), when it ran
   //! The pose's 1-sigma per axis in mm and deg (PoseUncertainty.h): known when the precise stage's pose is the frame's.
-  PoseUncertainty uncertainty;
+  precise::PoseUncertainty uncertainty;
 
   ConfidenceCues cues;       //!< what the confidence is computed from
   double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)
@@ -316,16 +316,16 @@ struct TrackResult
 
 int main()
 {
-  const pm::StereoRig rig = pm::io::loadRig("rig.json");
-  const pm::PhotoModel model = pm::io::loadPhotoModel("model.json");
-  pm::PhotoModelTracker tracker(rig, model); // the default TrackerParams
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json");
+  pm::tracker::PhotoModelTracker tracker(rig, model); // the default TrackerParams
   tracker.initialize();                      // search from scratch
   for (int k = 0; k < 100; ++k) {
     const vpImage<vpRGBa> IL = pm::io::readColorImage("left_" + std::to_string(k) + ".png");
     const vpImage<vpRGBa> IR = pm::io::readColorImage("right_" + std::to_string(k) + ".png");
     // eye-in-hand: tracker.applyHandMotion(hNowMhPrev) here, when the hand moved since the last frame
-    const pm::TrackResult r = tracker.track(IL, IR);
-    std::cout << pm::toString(r.state) << " q " << r.quality << " confidence " << r.confidence << "\n";
+    const pm::tracker::TrackResult r = tracker.track(IL, IR);
+    std::cout << pm::tracker::toString(r.state) << " q " << r.quality << " confidence " << r.confidence << "\n";
     if (r.trusted) // tracking, verified, confident: a pose to act on
       std::cout << "hMo (m):\n" << r.hMo << "\n";
   }
@@ -336,10 +336,10 @@ class PhotoModelTracker
 {
 public:
   /*!
-    Throws pm::Error if the rig, the model or the parameters are invalid, or if the model does
+    Throws pm::core::Error if the rig, the model or the parameters are invalid, or if the model does
     not fit the rig (under half of its points in an image at the centre of the search space).
   */
-  PhotoModelTracker(const StereoRig &rig, const PhotoModel &model, const TrackerParams &params = TrackerParams());
+  PhotoModelTracker(const core::StereoRig &rig, const core::PhotoModel &model, const TrackerParams &params = TrackerParams());
 
   //! Searches from scratch: a random population over the search space (state: searching).
   void initialize();
@@ -347,7 +347,7 @@ public:
   void initFromPose(const vpHomogeneousMatrix &hMo);
   /*!
     One frame: hue planes of the pair, RM-GA within the frame budget, the state. Throws
-    pm::Error if an image's size differs from its camera's.
+    pm::core::Error if an image's size differs from its camera's.
   */
   TrackResult track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
 
@@ -369,9 +369,9 @@ public:
   //! q of a fitness value for this model.
   double quality(double fitness) const { return (fitness - m_fBackground) / (m_fMax - m_fBackground); }
   //! The model's points at the last pose in camera \e camera's image (0 left, 1 right), each with its score class (for drawing).
-  std::vector<PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_last.phi, camera); }
+  std::vector<core::PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_last.phi, camera); }
   //! The stereo fitness the tracker scores with (its hue planes: those of the last frame).
-  const StereoFitness &fitness() const { return m_fitness; }
+  const core::StereoFitness &fitness() const { return m_fitness; }
   //! The parameters (the tracker's copy, validated).
   const TrackerParams &params() const { return m_params; }
   //! The tilt filter this model gets: TrackerParams::tiltFilterAllAround for an all-around model, tiltFilter otherwise.
@@ -379,7 +379,7 @@ public:
   //! True when the precise stage runs (TrackerParams::preciseStage and a model with outlines).
   bool hasPreciseStage() const { return m_precise != nullptr; }
   //! The precise stage (its colour statistics, its last lines); null when off.
-  const PreciseStage *preciseStage() const { return m_precise.get(); }
+  const precise::PreciseStage *preciseStage() const { return m_precise.get(); }
 
 private:
   //! What track() decided about the frame it works on.
@@ -391,14 +391,14 @@ private:
     mutable bool windowed = false;   //!< the hue planes hold only the steady windows
     mutable bool escalated = false;  //!< see TrackResult::escalated
     double hueMs = 0;                //!< the time the hue planes took
-    FrameBudget budget;              //!< the main search's
-    FrameBudget mainWhole;           //!< the main search's when not steady (the whole budget but the challenger's share)
+    rmga::FrameBudget budget;              //!< the main search's
+    rmga::FrameBudget mainWhole;           //!< the main search's when not steady (the whole budget but the challenger's share)
     double msSinceStart() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
   };
   //! RM-GA on the frame (coarse while searching), and the escalation of a steady frame that went wrong.
-  FrameResult search(const Frame &f, StereoObjective &objective, StereoObjective &coarseObjective);
+  rmga::FrameResult search(const Frame &f, rmga::StereoObjective &objective, rmga::StereoObjective &coarseObjective);
   //! The local refinements of the frame's pose: the simplex (option), the smooth ascent or the precise stage, the tilt filter.
-  void refine(TrackResult &r, StereoObjective &objective, const Frame &f);
+  void refine(TrackResult &r, rmga::StereoObjective &objective, const Frame &f);
   //! The precise stage on the frame: from r's pose or the last frame's (see TrackerParams::preciseStage); true when its pose is kept.
   bool refinePrecise(TrackResult &r, const Frame &f);
   //! The state machine (with the lock gate), the verification's start, the steadiness.
@@ -407,35 +407,35 @@ private:
   void scoreConfidence(TrackResult &r, const Frame &f);
   void resetCounters(); //!< the state machine's and the steadiness's, for a new start
   //! Other poses of the same object the confidence compares \e b with (turned about its z axis, its tilt mirrored).
-  static std::array<Phi, 8> competitors(const Phi &b);
+  static std::array<core::Phi, 8> competitors(const core::Phi &b);
   //! The cues of pose \e phi of quality \e q on this frame's images (\e last: the last frame's pose, when it was tracked); the state's own cues are left to the caller.
-  ConfidenceCues cuesAt(const Phi &phi, double q, const Phi *last) const;
+  ConfidenceCues cuesAt(const core::Phi &phi, double q, const core::Phi *last) const;
   //! The precise stage's cues of \e r (when its pose is the frame's; \e s: its lines' sigmas, lineSigmas()) into \e c.
   static void addPreciseCues(ConfidenceCues &c, const TrackResult &r, const std::array<double, 6> &s);
   //! A steady frame's hue windows (see TrackerParams::steadyHueMarginPx).
-  std::array<PixelRect, 2> steadyWindows() const;
-  void startVerification(const Phi &lock);
+  std::array<core::PixelRect, 2> steadyWindows() const;
+  void startVerification(const core::Phi &lock);
   //! Runs the challenger on this frame (objective set on its images); may move \e r to a better pose.
-  void verify(StereoObjective &objective, const FrameBudget &budget, TrackResult &r);
+  void verify(rmga::StereoObjective &objective, const rmga::FrameBudget &budget, TrackResult &r);
 
   TrackerParams m_params;
-  StereoFitness m_fitness;
-  RmGa m_ga;
+  core::StereoFitness m_fitness;
+  rmga::RmGa m_ga;
   TrackResult m_last;
-  Phi m_beforeLast;        //!< the pose of the frame before the last (for the steady windows' prediction)
+  core::Phi m_beforeLast;        //!< the pose of the frame before the last (for the steady windows' prediction)
   bool m_haveBeforeLast = false;
   double m_fBackground = 0, m_fMax = 1;
   int m_lowFrames = 0;
   int m_steadyFrames = 0;  //!< frames tracked in a row near the recent best q
   double m_recentBestQ = 0;
-  RmGa m_challenger;       //!< the verification's search (see TrackerParams::verifyEvaluations)
+  rmga::RmGa m_challenger;       //!< the verification's search (see TrackerParams::verifyEvaluations)
   long m_verifyLeft = 0;   //!< evaluations of verification still to run
   bool m_verified = false;
   int m_framesTracked = 0;
   int m_untrustedFrames = 0; //!< tracked, verified frames in a row under reverifyBelowConfidence
   TiltFilter m_tilt;
   bool m_allAround = false;    //!< the model is an all-around one (PhotoModel::isAllAround)
-  std::unique_ptr<PreciseStage> m_precise; //!< null: off
+  std::unique_ptr<precise::PreciseStage> m_precise; //!< null: off
 };
 
-} // namespace pm
+} // namespace pm::tracker

@@ -12,7 +12,7 @@
 #include "pm/rmga/SearchSpace.h"
 #include "pm/tracker/PhotoModelTracker.h"
 
-namespace pm {
+namespace pm::tracker {
 
 //! When a static detection stops.
 struct DetectionParams
@@ -37,9 +37,9 @@ struct Detection
   until DetectionParams says stop. The tracker keeps its state afterwards.
 
   \code
-    pm::PhotoModelTracker tracker(rig, model);
+    pm::tracker::PhotoModelTracker tracker(rig, model);
     tracker.initialize();
-    const pm::Detection d = pm::detectStatic(tracker, left, right, pm::DetectionParams());
+    const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, left, right, pm::tracker::DetectionParams());
     std::cout << d.best.phi.toString() << " after " << d.convergedS << " s\n";
   \endcode
 */
@@ -47,6 +47,6 @@ Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, 
                        const DetectionParams &params);
 
 //! The fitness peak nearest \e start: a pattern search of RM-GA's genes within \e space (5,000 evaluations).
-Phi nearestFitnessPeak(const StereoFitness &fitness, const Phi &start, const SearchSpace &space);
+core::Phi nearestFitnessPeak(const core::StereoFitness &fitness, const core::Phi &start, const rmga::SearchSpace &space);
 
-} // namespace pm
+} // namespace pm::tracker

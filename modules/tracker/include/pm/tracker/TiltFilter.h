@@ -11,9 +11,9 @@
   whose tilt lies farther than \e gateDeg from the prediction (a jump, a switch to another pose)
   restarts it.
 
-      pm::TiltFilter filter;              // alpha 0.2, beta 0.02
+      pm::tracker::TiltFilter filter;              // alpha 0.2, beta 0.02
       for (;;) {
-        const pm::Phi raw = estimate();   // this frame's best pose
+        const pm::core::Phi raw = estimate();   // this frame's best pose
         use(filter.update(raw));          // its tilt smoothed
         filter.transform(hNowMhPrev);     // the hand moved (eye-in-hand)
       }
@@ -22,7 +22,7 @@
 
 #include "pm/core/Pose.h"
 
-namespace pm {
+namespace pm::tracker {
 
 //! TiltFilter's gains and gate (alpha 1 and beta 0: off); validate() checks them.
 struct TiltFilterParams
@@ -33,7 +33,7 @@ struct TiltFilterParams
 
   //! alpha 1 and beta 0: the filter passes every pose unchanged.
   bool passesThrough() const { return alpha >= 1 && beta <= 0; }
-  void validate() const; //!< throws pm::Error unless 0 < alpha <= 1, 0 <= beta < 1 and gateDeg > 0
+  void validate() const; //!< throws pm::core::Error unless 0 < alpha <= 1, 0 <= beta < 1 and gateDeg > 0
 };
 
 /*!
@@ -43,10 +43,10 @@ struct TiltFilterParams
 class TiltFilter
 {
 public:
-  //! Copies and checks \e params (throws pm::Error if invalid); no state until the first update().
+  //! Copies and checks \e params (throws pm::core::Error if invalid); no state until the first update().
   explicit TiltFilter(const TiltFilterParams &params = TiltFilterParams());
   //! This frame's pose \e measured (valid); returns it with its tilt filtered.
-  Phi update(const Phi &measured);
+  core::Phi update(const core::Phi &measured);
   //! Forgets the past: the next update passes its pose and starts from it.
   void reset() { m_has = false; }
   //! The hand moved by \e hNowMhPrev (the previous hand frame seen from the current one).
@@ -57,8 +57,8 @@ public:
 private:
   TiltFilterParams m_p;
   bool m_has = false;
-  Phi m_pose;          //!< the last output
+  core::Phi m_pose;          //!< the last output
   double m_w[2] = {0, 0}; //!< tilt velocity (rad per frame) about the hand's x and y axes
 };
 
-} // namespace pm
+} // namespace pm::tracker

@@ -32,7 +32,7 @@
   relief); only the all-around model has the precise stage's cues.
 
   \code
-    pm::ConfidenceModel m;                 // the shipped coefficients
+    pm::tracker::ConfidenceModel m;                 // the shipped coefficients
     const double c = m.confidence(cues);   // in (0, 1)
     if (c >= m.threshold) use(pose);
   \endcode
@@ -40,7 +40,7 @@
 #include <array>
 #include <string>
 
-namespace pm {
+namespace pm::tracker {
 
 //! The cues of one frame (see the file's description); the tracker fills them in TrackResult::cues.
 struct ConfidenceCues
@@ -87,7 +87,7 @@ enum class ConfidenceKind
 
 //! "auto", "flat", "stereo", "all-around" or "custom".
 const char *toString(ConfidenceKind k);
-//! The kind named \e s (as toString()); throws pm::Error for another name.
+//! The kind named \e s (as toString()); throws pm::core::Error for another name.
 ConfidenceKind confidenceKindFromString(const std::string &s);
 
 /*!
@@ -101,7 +101,7 @@ ConfidenceKind confidenceKindFromString(const std::string &s);
 
 int main()
 {
-  pm::ConfidenceCues cues; // in a program: TrackResult::cues of the frame
+  pm::tracker::ConfidenceCues cues; // in a program: TrackResult::cues of the frame
   cues.quality = 0.6;
   cues.qualityMin = 0.55;
   cues.inMatchMin = 0.8;
@@ -110,7 +110,7 @@ int main()
   cues.framesTracked = 30;
   cues.verified = true;
   cues.tracking = true;
-  const pm::ConfidenceModel m; // the shipped coefficients
+  const pm::tracker::ConfidenceModel m; // the shipped coefficients
   const double c = m.confidence(cues);
   std::cout << "confidence " << c << (c >= m.threshold ? ": trusted" : ": not trusted") << "\n";
 }
@@ -133,14 +133,14 @@ struct ConfidenceModel
   /*!
     The coefficients shipped for the model \e kind (Flat, Stereo or AllAround; fitted by
     `pm-confidence --fit`, docs/trust.md), each kind's bias placed so that its operating point is
-    the threshold 0.95. The result's kind is \e kind. Throws pm::Error for Auto or Custom.
+    the threshold 0.95. The result's kind is \e kind. Throws pm::core::Error for Auto or Custom.
   */
   static ConfidenceModel shipped(ConfidenceKind kind);
   //! The features a model of \e kind weighs (the others' weights are 0): Flat the first 12, Stereo those but the tilt, AllAround also the precise stage's.
   static std::array<bool, ConfidenceCues::kFeatures> featuresUsed(ConfidenceKind kind);
   //! 1 / (1 + exp(-(w . x + b))) with x = c.features(): in (0, 1).
   double confidence(const ConfidenceCues &c) const;
-  //! Throws pm::Error if a coefficient is not finite or the threshold is outside (0, 1).
+  //! Throws pm::core::Error if a coefficient is not finite or the threshold is outside (0, 1).
   void validate() const;
 
 private:
@@ -150,4 +150,4 @@ private:
   explicit ConfidenceModel(Blank) {} // every weight 0 (shipped() fills them)
 };
 
-} // namespace pm
+} // namespace pm::tracker

@@ -16,20 +16,20 @@
       }
 
   \code
-    pm::TrackerParams p = pm::loadTrackerConfig("tracker.json");   // over TrackerParams()
+    pm::tracker::TrackerParams p = pm::tracker::loadTrackerConfig("tracker.json");   // over TrackerParams()
     p.ga.seed = 7;
-    std::ofstream("mine.json") << pm::trackerConfigToJson(p);
+    std::ofstream("mine.json") << pm::tracker::trackerConfigToJson(p);
   \endcode
 */
 #include <string>
 
 #include "pm/tracker/PhotoModelTracker.h"
 
-namespace pm {
+namespace pm::tracker {
 
-//! Reads a configuration over \e defaults; throws pm::Error naming the file and the key.
+//! Reads a configuration over \e defaults; throws pm::core::Error naming the file and the key.
 TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults = TrackerParams());
 //! Every key of \e p, as loadTrackerConfig reads them.
 std::string trackerConfigToJson(const TrackerParams &p);
 
-} // namespace pm
+} // namespace pm::tracker

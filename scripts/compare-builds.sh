@@ -1,0 +1,181 @@
+#!/usr/bin/env bash
+# Behaviour unchanged, shown by outputs: runs the same programs, with fixed seeds and an evaluation
+# budget, from two builds, and compares what they wrote (frames.csv, summary.json and the other
+# tables), timings aside.
+#
+#   bash scripts/compare-builds.sh [--cases LIST] [--reuse] BEFORE_BUILD AFTER_BUILD OUT
+#
+#   BEFORE_BUILD, AFTER_BUILD  build trees (their apps/ hold the programs), e.g. ../before/build build
+#   OUT                        OUT/before/<case>/ and OUT/after/<case>/ receive the outputs;
+#                              OUT/report.txt the comparison
+#   --cases LIST               comma-separated subset of: servo-c12, servo-r2, servo-c12-viper850,
+#                              servo-r2-viper850, track-table2, detect-all, compare-table2 (default: all)
+#   --reuse                    keep OUT/before/<case> when it is already there (the "before" build
+#                              is run once, the "after" build after each change)
+#
+# Exit status 0 when every case is the same, 1 when one differs (the report says where), 2 on a
+# usage error. A value is "the same" when it is equal, or both numbers within 1e-9 relative.
+# Ignored (they measure the machine, not the behaviour): columns and keys named *_ms, *ms_*,
+# compute_ms, *_s of wall time, resident memory (the words ms, s, seconds, time, fps, wall, memory), and the tracker's settings (their layout changed
+# with the configuration file's version 2; the values they hold are compared through the outputs).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+usage() { sed -n '5,21p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+cases="servo-c12,servo-r2,servo-c12-viper850,servo-r2-viper850,track-table2,detect-all,compare-table2"
+reuse=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --cases) [ $# -ge 2 ] || usage; cases="$2"; shift 2 ;;
+    --reuse) reuse=1; shift ;;
+    -h|--help) usage ;;
+    -*) echo "error: unknown option $1" >&2; usage ;;
+    *) break ;;
+  esac
+done
+[ $# -eq 3 ] || usage
+before="$(cd "$1" && pwd)"; after="$(cd "$2" && pwd)"; out="$3"
+for b in "$before" "$after"; do
+  [ -x "$b/apps/pm-servo" ] || { echo "error: $b/apps/pm-servo not found (build that tree first)" >&2; exit 2; }
+done
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+
+# case name -> program and arguments (fixed seeds: the programs' defaults; an evaluation budget)
+args_of() {
+  case "$1" in
+    servo-c12)          echo "pm-servo --target C12 --no-video --quiet --budget-evals 800" ;;
+    servo-r2)           echo "pm-servo --target R2 --no-video --quiet --budget-evals 800" ;;
+    servo-c12-viper850) echo "pm-servo --target C12 --robot viper850 --no-video --quiet --budget-evals 800" ;;
+    servo-r2-viper850)  echo "pm-servo --target R2 --robot viper850 --no-video --quiet --budget-evals 800" ;;
+    track-table2)       echo "pm-track --target C12 --quiet --budget-evals 800" ;;
+    detect-all)         echo "pm-detect --all-targets --quiet --budget-evals 800 --max-time-s 3600" ;;
+    compare-table2)     echo "pm-compare --target C12 --scenarios table2 --trackers ours-aa --quiet --budget-evals 800" ;;
+    *) echo "error: unknown case '$1'" >&2; exit 2 ;;
+  esac
+}
+
+run_case() { # build side case
+  local build="$1" side="$2" c="$3" dir="$out/$2/$3" cmd
+  cmd="$(args_of "$c")"
+  if [ "$side" = before ] && [ "$reuse" = 1 ] && [ -f "$dir/summary.json" ]; then
+    echo "  $side: kept from an earlier run" >&2
+    return 0
+  fi
+  rm -rf "$dir"
+  local t0=$SECONDS
+  # shellcheck disable=SC2086
+  "$build/apps/"$cmd --out "$dir" >"$out/$side-$c.log" 2>&1 ||
+    { echo "error: $side $c failed (see $out/$side-$c.log)" >&2; return 1; }
+  echo "  $side: $((SECONDS - t0)) s" >&2
+}
+
+IFS=',' read -r -a list <<<"$cases"
+for c in "${list[@]}"; do
+  args_of "$c" >/dev/null
+  echo "$c: $(args_of "$c")" >&2
+  run_case "$before" before "$c"
+  run_case "$after" after "$c"
+done
+
+python3 - "$out" "${list[@]}" <<'EOF'
+import csv, json, math, os, re, sys
+
+out, cases = sys.argv[1], sys.argv[2:]
+# Names that measure the machine: wall time, memory, speed.
+TIMING = {"ms", "s", "seconds", "time", "fps", "wall", "memory"}  # words of a name (split at "_")
+KEEP = {"converged_after_s", "hold_s", "move_s", "duration_s"}  # simulated time: behaviour
+IGNORED_KEYS = {"tracker", "tracker_settings"}  # the configuration's layout (version 1 or 2)
+
+ignored = set()
+
+def timing(name):
+    t = name not in KEEP and any(w in TIMING for w in name.lower().split("_"))
+    if t:
+        ignored.add(name)
+    return t
+
+def settings(name, a, b):
+    if name in IGNORED_KEYS and isinstance(a, dict) and isinstance(b, dict):
+        ignored.add(name)
+        return True
+    return False
+
+def same(a, b):
+    if a == b:
+        return True
+    try:
+        x, y = float(a), float(b)
+    except (TypeError, ValueError):
+        return False
+    if math.isnan(x) and math.isnan(y):
+        return True
+    return abs(x - y) <= 1e-9 * max(1.0, abs(x), abs(y))
+
+def cmp_json(a, b, path, diffs):
+    if isinstance(a, dict) and isinstance(b, dict):
+        for k in sorted(set(a) | set(b)):
+            if timing(k) or settings(k, a.get(k), b.get(k)):
+                continue
+            if k not in a or k not in b:
+                diffs.append(f"{path}.{k}: only in {'after' if k in b else 'before'}")
+            else:
+                cmp_json(a[k], b[k], f"{path}.{k}", diffs)
+    elif isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            diffs.append(f"{path}: {len(a)} items before, {len(b)} after")
+        for i, (x, y) in enumerate(zip(a, b)):
+            cmp_json(x, y, f"{path}[{i}]", diffs)
+    elif not same(a, b):
+        diffs.append(f"{path}: {a!r} before, {b!r} after")
+
+def cmp_csv(fa, fb, name, diffs):
+    ra, rb = list(csv.reader(open(fa))), list(csv.reader(open(fb)))
+    if not ra or not rb or ra[0] != rb[0]:
+        diffs.append(f"{name}: the header differs")
+        return 0
+    head = ra[0]
+    cols = [i for i, h in enumerate(head) if not timing(h)]
+    if len(ra) != len(rb):
+        diffs.append(f"{name}: {len(ra) - 1} rows before, {len(rb) - 1} after")
+    bad = 0
+    for r, (x, y) in enumerate(zip(ra[1:], rb[1:]), 1):
+        for i in cols:
+            if i >= len(x) or i >= len(y) or not same(x[i], y[i]):
+                if bad < 5:
+                    diffs.append(f"{name} row {r} column {head[i]}: {x[i] if i < len(x) else '-'} before, "
+                                 f"{y[i] if i < len(y) else '-'} after")
+                bad += 1
+    if bad > 5:
+        diffs.append(f"{name}: {bad} values differ in all")
+    return len(ra) - 1
+
+report, failed = [], False
+for c in cases:
+    a, b = os.path.join(out, "before", c), os.path.join(out, "after", c)
+    diffs, files, rows = [], 0, 0
+    ignored.clear()
+    for root, _, names in os.walk(a):
+        for n in sorted(names):
+            rel = os.path.relpath(os.path.join(root, n), a)
+            fa, fb = os.path.join(a, rel), os.path.join(b, rel)
+            if not (n.endswith(".csv") or n.endswith(".json")):
+                continue
+            if not os.path.exists(fb):
+                diffs.append(f"{rel}: missing after")
+                continue
+            files += 1
+            if n.endswith(".json"):
+                cmp_json(json.load(open(fa)), json.load(open(fb)), rel, diffs)
+            else:
+                rows += cmp_csv(fa, fb, rel, diffs)
+    verdict = "same" if not diffs else "DIFFERENT"
+    failed |= bool(diffs)
+    report.append(f"{c}: {verdict} ({files} files compared, {rows} table rows)")
+    report += ["  " + d for d in diffs[:40]]
+    report.append("  not compared (timings, settings' layout): " + ", ".join(sorted(ignored)))
+text = "\n".join(report) + "\n"
+open(os.path.join(out, "report.txt"), "w").write(text)
+print(text, end="")
+sys.exit(1 if failed else 0)
+EOF
