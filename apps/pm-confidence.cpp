@@ -24,6 +24,143 @@
 
 using pm::compare::LabelledFrame;
 
+namespace {
+
+//! pm-confidence's options.
+struct Options
+{
+  std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
+  std::vector<std::string> scenarios = pm::compare::scenarioNames();
+  int steps = 0;
+  bool quick = false, fit = false, quiet = false, allAround = false, stereo = false, precise = true;
+  double maxFalseAccept = 0.001;
+};
+
+void addOptions(CLI::App &app, Options &o)
+{
+  app.add_option("--out", o.out, "output folder (created if missing)")->required();
+  app.add_option("--scenarios", o.scenarios, "which scenarios")->delimiter(',')->check(CLI::IsMember(pm::compare::allScenarioNames()));
+  app.add_option("--steps", o.steps, "table2: only the first N steps (0: all 20)")->check(CLI::Range(0, 1000));
+  app.add_option("--rig", o.rigPath, "stereo rig file");
+  app.add_option("--trajectory", o.trajectoryPath, "table2: the waypoints (step,x,y,z,e1,e2,e3)");
+  app.add_option("--max-false-accept", o.maxFalseAccept, "the threshold reported is the lowest whose false accept rate is at most this")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_flag("--quick", o.quick, "two runs on C12 only (for tests)");
+  app.add_flag("--fit", o.fit, "fit the logistic model on the set (two-fold by run for the cross-validated AUROC)");
+  auto *aa = app.add_flag("--all-around", o.allAround, "every run's model is the all-around one (the PA-10's pass around its toy) "
+                          "instead of the flat one; the tracker then weighs the cues with the all-around coefficients");
+  app.add_flag("--stereo", o.stereo, "every run's model is the stereo one (the rig's two photos, with their relief) instead of the flat "
+               "one; the tracker weighs the cues with the stereo coefficients")->excludes(aa);
+  app.add_flag("--precise,!--no-precise", o.precise, "the tracker's precise last stage after RM-GA (all-around models: --all-around)");
+  app.add_flag("--quiet", o.quiet, "no progress, no table on stdout");
+}
+
+//! The frames the study tracks in all (for the progress bar).
+std::size_t totalFrames(const Options &o)
+{
+  std::size_t total = 0;
+  for (const auto &s : pm::compare::makeScenarios(o.scenarios, o.trajectoryPath, o.steps))
+    total += s.frames.size() * pm::compare::confidencePasses(o.quick).size();
+  return total;
+}
+
+//! The labelled set: every scenario tracked by every run of the study.
+pm::compare::ConfidenceStudy study(const Options &o, const pm::core::StereoRig &defaultRig, std::size_t total)
+{
+  pm::compare::ConfidenceStudyParams cs;
+  cs.scenarios = o.scenarios;
+  cs.trajectoryPath = o.trajectoryPath;
+  cs.steps = o.steps;
+  cs.quick = o.quick;
+  cs.allAround = o.allAround;
+  cs.stereo = o.stereo;
+  cs.precise = o.precise;
+  cs.dataDir = pm::app::dataDir();
+  pm::app::Progress progress("rendering and tracking", total, o.quiet);
+  pm::compare::ConfidenceStudy st = pm::compare::runConfidenceStudy(defaultRig, cs, [&] { progress.step(); });
+  progress.finish();
+  return st;
+}
+
+//! --fit: the logistic model of the run's kind of photo-model fitted anew, as JSON.
+nlohmann::json fitJson(const Options &o, const pm::compare::ConfidenceStudy &st)
+{
+  const pm::tracker::ConfidenceKind kind = o.allAround ? pm::tracker::ConfidenceKind::AllAround
+                                           : o.stereo  ? pm::tracker::ConfidenceKind::Stereo
+                                                       : pm::tracker::ConfidenceKind::Flat;
+  pm::compare::ConfidenceFit f;
+  try {
+    f = pm::compare::fitConfidence(st, kind, o.maxFalseAccept);
+  } catch (const pm::core::Error &e) {
+    throw pm::core::Error(std::string("--fit: ") + e.what());
+  }
+  return {{"kind", pm::tracker::toString(kind)}, {"auroc_cross_validated", f.aurocCrossValidated}, {"auroc", f.auroc},
+          {"weights", f.model.weights}, {"bias", f.model.bias}, {"threshold", f.model.threshold},
+          {"operating_threshold_unshifted", f.operatingThreshold}, {"trusted_right_frames", f.trustedRight},
+          {"trusted_wrong_frames", f.trustedWrong}, {"features", pm::tracker::ConfidenceCues::featureNames()}, {"iterations", f.iterations}};
+}
+
+//! The ROC, whole and near its left edge, in percent; the dotted line: the trusted frames' false accept rate.
+vpImage<vpRGBa> drawRoc(const pm::compare::ConfidenceReport &rep, std::size_t frames)
+{
+  pm::report::Series whole{"confidence", vpRGBa(200, 40, 40), {}, {}, false}, edge = whole;
+  for (const auto &p : rep.curve) {
+    whole.t.push_back(100 * p.falseAcceptRate);
+    whole.y.push_back(100 * p.trueAcceptRate);
+    if (p.falseAcceptRate <= 0.02) {
+      edge.t.push_back(100 * p.falseAcceptRate);
+      edge.y.push_back(100 * p.trueAcceptRate);
+    }
+  }
+  const double trustedFar = 100.0 * rep.falseAcceptRate();
+  std::ostringstream title;
+  title << "ROC of the confidence on " << frames << " frames (" << rep.wrong << " wrong), AUROC " << std::fixed << std::setprecision(4) << rep.auroc;
+  return pm::report::drawTimePlots({{"ROC", "TAR %", {whole}, 0, {trustedFar}}, {"ROC up to 2 % false accepts", "TAR %", {edge}, 0, {trustedFar}}},
+                                   2, title.str(), "false accept rate (%)", 560);
+}
+
+nlohmann::json summaryJson(const Options &o, const pm::compare::ConfidenceStudy &st, const pm::compare::ConfidenceReport &rep,
+                           const nlohmann::json &fit)
+{
+  nlohmann::json runsJson = nlohmann::json::array();
+  for (std::size_t i = 0; i < st.runNames.size(); ++i)
+    runsJson.push_back({{"name", st.runNames[i]}, {"frames", rep.perRun[i][0]}, {"wrong_frames", rep.perRun[i][1]},
+                        {"trusted_wrong_frames", rep.perRun[i][2]}, {"trusted_right_frames", rep.perRun[i][3]}});
+  return nlohmann::json{{"frames", st.frames.size()},
+                        {"wrong_frames", rep.wrong},
+                        {"wrong_frames_while_tracking", rep.trackingWrong},
+                        {"wrong", "estimate more than 20 mm or 5 deg from the truth, or a model of another toy"},
+                        {"auroc", rep.auroc},
+                        {"auroc_while_tracking", rep.aurocTracking},
+                        {"threshold", rep.threshold},
+                        {"true_accept_rate", rep.trueAcceptRate()},
+                        {"false_accept_rate", rep.falseAcceptRate()},
+                        {"accept", "trusted: tracking, lock verified, confidence >= threshold"},
+                        {"threshold_for_max_false_accept", {{"max_false_accept_rate", o.maxFalseAccept},
+                                                            {"threshold", rep.atMaxFalseAccept.threshold},
+                                                            {"true_accept_rate", rep.atMaxFalseAccept.trueAcceptRate},
+                                                            {"false_accept_rate", rep.atMaxFalseAccept.falseAcceptRate}}},
+                        {"runs", runsJson},
+                        {"fit", fit}};
+}
+
+void printSummary(const Options &o, const pm::compare::ConfidenceStudy &st, const pm::compare::ConfidenceReport &rep,
+                  const nlohmann::json &fit, const std::string &dir)
+{
+  std::cout << std::fixed << std::setprecision(4) << "confidence on " << st.frames.size() << " labelled frames, " << rep.wrong
+            << " wrong (" << rep.trackingWrong << " of them while tracking), " << st.runNames.size() << " runs\n"
+            << "  AUROC " << rep.auroc << " (frames while tracking: " << rep.aurocTracking << ")\n"
+            << "  trusted (threshold " << rep.threshold << ", lock verified): true accept rate " << rep.trueAcceptRate()
+            << ", false accept rate " << rep.falseAcceptRate() << " (" << rep.trustedWrong << " frames)\n"
+            << "  threshold for a false accept rate <= " << o.maxFalseAccept << ": " << rep.atMaxFalseAccept.threshold
+            << " (true accept " << rep.atMaxFalseAccept.trueAcceptRate << ")\n";
+  if (o.fit)
+    std::cout << "  fitted: " << fit.dump() << "\n";
+  std::cout << "  written to " << dir << "/ (frames.csv, roc.png, summary.json)" << std::endl;
+}
+
+} // namespace
+
 int main(int argc, char **argv)
 {
   CLI::App app{"Measures the tracker's confidence (TrackResult::confidence) on a labelled set of frames: every pm-compare "
@@ -35,120 +172,25 @@ int main(int argc, char **argv)
                "its bias placed so that the threshold 0.95 trusts at most --max-false-accept of the wrong frames) and prints its coefficients.",
                "pm-confidence"};
   app.option_defaults()->always_capture_default();
-  std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
-  std::vector<std::string> scenarios = pm::compare::scenarioNames();
-  int steps = 0;
-  bool quick = false, fit = false, quiet = false, allAround = false;
-  double maxFalseAccept = 0.001;
-  app.add_option("--out", out, "output folder (created if missing)")->required();
-  app.add_option("--scenarios", scenarios, "which scenarios")->delimiter(',')->check(CLI::IsMember(pm::compare::allScenarioNames()));
-  app.add_option("--steps", steps, "table2: only the first N steps (0: all 20)")->check(CLI::Range(0, 1000));
-  app.add_option("--rig", rigPath, "stereo rig file");
-  app.add_option("--trajectory", trajectoryPath, "table2: the waypoints (step,x,y,z,e1,e2,e3)");
-  app.add_option("--max-false-accept", maxFalseAccept, "the threshold reported is the lowest whose false accept rate is at most this")
-      ->check(CLI::Range(0.0, 1.0));
-  app.add_flag("--quick", quick, "two runs on C12 only (for tests)");
-  app.add_flag("--fit", fit, "fit the logistic model on the set (two-fold by run for the cross-validated AUROC)");
-  bool stereo = false;
-  auto *aa = app.add_flag("--all-around", allAround, "every run's model is the all-around one (the PA-10's pass around its toy) "
-                          "instead of the flat one; the tracker then weighs the cues with the all-around coefficients");
-  app.add_flag("--stereo", stereo, "every run's model is the stereo one (the rig's two photos, with their relief) instead of the flat "
-               "one; the tracker weighs the cues with the stereo coefficients")->excludes(aa);
-  bool precise = true;
-  app.add_flag("--precise,!--no-precise", precise, "the tracker's precise last stage after RM-GA (all-around models: --all-around)");
-  app.add_flag("--quiet", quiet, "no progress, no table on stdout");
+  Options o;
+  addOptions(app, o);
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::core::StereoRig defaultRig = pm::io::loadRig(rigPath);
-    pm::compare::ConfidenceStudyParams cs;
-    cs.scenarios = scenarios;
-    cs.trajectoryPath = trajectoryPath;
-    cs.steps = steps;
-    cs.quick = quick;
-    cs.allAround = allAround;
-    cs.stereo = stereo;
-    cs.precise = precise;
-    cs.dataDir = pm::app::dataDir();
-    std::size_t total = 0;
-    for (const auto &s : pm::compare::makeScenarios(scenarios, trajectoryPath, steps))
-      total += s.frames.size() * pm::compare::confidencePasses(quick).size();
-    pm::io::StagedFiles files(out);
-    pm::app::Progress progress("rendering and tracking", total, quiet);
-    const pm::compare::ConfidenceStudy study = pm::compare::runConfidenceStudy(defaultRig, cs, [&] { progress.step(); });
-    progress.finish();
-    const std::vector<LabelledFrame> &set = study.frames;
-    const pm::compare::ConfidenceReport rep = pm::compare::reportConfidence(study, maxFalseAccept, pm::tracker::TrackerParams().confidence.threshold);
-    nlohmann::json fitJson;
-    if (fit) {
-      const pm::tracker::ConfidenceKind kind = allAround ? pm::tracker::ConfidenceKind::AllAround : stereo ? pm::tracker::ConfidenceKind::Stereo : pm::tracker::ConfidenceKind::Flat;
-      pm::compare::ConfidenceFit f;
-      try {
-        f = pm::compare::fitConfidence(study, kind, maxFalseAccept);
-      } catch (const pm::core::Error &e) {
-        throw pm::core::Error(std::string("--fit: ") + e.what());
-      }
-      fitJson = {{"kind", pm::tracker::toString(kind)}, {"auroc_cross_validated", f.aurocCrossValidated}, {"auroc", f.auroc},
-                 {"weights", f.model.weights}, {"bias", f.model.bias}, {"threshold", f.model.threshold},
-                 {"operating_threshold_unshifted", f.operatingThreshold}, {"trusted_right_frames", f.trustedRight},
-                 {"trusted_wrong_frames", f.trustedWrong}, {"features", pm::tracker::ConfidenceCues::featureNames()}, {"iterations", f.iterations}};
-    }
-
+    const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
+    const std::size_t total = totalFrames(o);
+    pm::io::StagedFiles files(o.out);
+    const pm::compare::ConfidenceStudy st = study(o, rig, total);
+    const pm::compare::ConfidenceReport rep =
+        pm::compare::reportConfidence(st, o.maxFalseAccept, pm::tracker::TrackerParams().judgement.confidence.threshold);
+    const nlohmann::json fit = o.fit ? fitJson(o, st) : nlohmann::json();
     std::ofstream csv(files.stage("frames.csv"));
-    pm::compare::writeConfidenceCsv(csv, study);
+    pm::compare::writeConfidenceCsv(csv, st);
     csv.close();
-
-    // The ROC, whole and near its left edge, in percent; the dotted line: the trusted frames' false accept rate.
-    pm::report::Series whole{"confidence", vpRGBa(200, 40, 40), {}, {}, false}, edge = whole;
-    for (const auto &p : rep.curve) {
-      whole.t.push_back(100 * p.falseAcceptRate);
-      whole.y.push_back(100 * p.trueAcceptRate);
-      if (p.falseAcceptRate <= 0.02) {
-        edge.t.push_back(100 * p.falseAcceptRate);
-        edge.y.push_back(100 * p.trueAcceptRate);
-      }
-    }
-    const double trustedFar = 100.0 * rep.falseAcceptRate();
-    std::ostringstream title;
-    title << "ROC of the confidence on " << set.size() << " frames (" << rep.wrong << " wrong), AUROC " << std::fixed << std::setprecision(4) << rep.auroc;
-    pm::io::writeImage(pm::report::drawTimePlots({{"ROC", "TAR %", {whole}, 0, {trustedFar}},
-                                               {"ROC up to 2 % false accepts", "TAR %", {edge}, 0, {trustedFar}}},
-                                              2, title.str(), "false accept rate (%)", 560),
-                       files.stage("roc.png"));
-
-    nlohmann::json runsJson = nlohmann::json::array();
-    for (std::size_t i = 0; i < study.runNames.size(); ++i)
-      runsJson.push_back({{"name", study.runNames[i]}, {"frames", rep.perRun[i][0]}, {"wrong_frames", rep.perRun[i][1]},
-                          {"trusted_wrong_frames", rep.perRun[i][2]}, {"trusted_right_frames", rep.perRun[i][3]}});
-    const nlohmann::json summary{{"frames", set.size()},
-                                 {"wrong_frames", rep.wrong},
-                                 {"wrong_frames_while_tracking", rep.trackingWrong},
-                                 {"wrong", "estimate more than 20 mm or 5 deg from the truth, or a model of another toy"},
-                                 {"auroc", rep.auroc},
-                                 {"auroc_while_tracking", rep.aurocTracking},
-                                 {"threshold", rep.threshold},
-                                 {"true_accept_rate", rep.trueAcceptRate()},
-                                 {"false_accept_rate", rep.falseAcceptRate()},
-                                 {"accept", "trusted: tracking, lock verified, confidence >= threshold"},
-                                 {"threshold_for_max_false_accept", {{"max_false_accept_rate", maxFalseAccept},
-                                                                     {"threshold", rep.atMaxFalseAccept.threshold},
-                                                                     {"true_accept_rate", rep.atMaxFalseAccept.trueAcceptRate},
-                                                                     {"false_accept_rate", rep.atMaxFalseAccept.falseAcceptRate}}},
-                                 {"runs", runsJson},
-                                 {"fit", fitJson}};
-    pm::io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");
+    pm::io::writeImage(drawRoc(rep, st.frames.size()), files.stage("roc.png"));
+    pm::io::writeTextFile(files.stage("summary.json"), summaryJson(o, st, rep, fit).dump(2) + "\n");
     files.commit();
-    if (!quiet) {
-      std::cout << std::fixed << std::setprecision(4) << "confidence on " << set.size() << " labelled frames, " << rep.wrong
-                << " wrong (" << rep.trackingWrong << " of them while tracking), " << study.runNames.size() << " runs\n"
-                << "  AUROC " << rep.auroc << " (frames while tracking: " << rep.aurocTracking << ")\n"
-                << "  trusted (threshold " << rep.threshold << ", lock verified): true accept rate " << rep.trueAcceptRate()
-                << ", false accept rate " << rep.falseAcceptRate() << " (" << rep.trustedWrong << " frames)\n"
-                << "  threshold for a false accept rate <= " << maxFalseAccept << ": " << rep.atMaxFalseAccept.threshold
-                << " (true accept " << rep.atMaxFalseAccept.trueAcceptRate << ")\n";
-      if (fit)
-        std::cout << "  fitted: " << fitJson.dump() << "\n";
-      std::cout << "  written to " << files.dir() << "/ (frames.csv, roc.png, summary.json)" << std::endl;
-    }
+    if (!o.quiet)
+      printSummary(o, st, rep, fit, files.dir());
     return 0;
   });
 }

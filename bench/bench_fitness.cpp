@@ -29,8 +29,8 @@ using pm::bench::setup;
 
 void runFitness(benchmark::State &state, const pm::core::PhotoModel &model, bool scalar, bool smooth = false)
 {
-  pm::core::StereoFitness::forceScalar(scalar);
   pm::core::StereoFitness fit(setup().rig, model);
+  fit.useScalarKernel(scalar);
   fit.setImages(setup().images.left, setup().images.right);
   const auto ps = poses(256);
   std::size_t i = 0;
@@ -39,13 +39,12 @@ void runFitness(benchmark::State &state, const pm::core::PhotoModel &model, bool
     sink += smooth ? fit.evaluateSmooth(ps[i++ & 255]) : fit.evaluate(ps[i++ & 255]);
     benchmark::DoNotOptimize(sink);
   }
-  pm::core::StereoFitness::forceScalar(false);
   state.SetItemsProcessed(state.iterations());
   state.counters["points"] = static_cast<double>(model.size());
   state.counters["stereo_evals_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["ns_per_point"] = benchmark::Counter(static_cast<double>(state.iterations() * model.size() * 2),
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(smooth ? "smooth (bilinear, scalar)" : scalar ? "scalar" : pm::core::StereoFitness::kernelName());
+  state.SetLabel(smooth ? "smooth (bilinear, scalar)" : scalar ? "scalar" : fit.kernelName());
 }
 
 void Fitness_DefaultModel(benchmark::State &s) { runFitness(s, setup().model, false); }

@@ -56,19 +56,19 @@ void Hue_StereoPair_ViSP(benchmark::State &state)
 /*!
   The hue planes as the tracker computes them (StereoFitness::setImages, both cameras on two
   cores): of the whole images, and of a steady frame's windows (the model's footprint at the pose
-  grown by the default margin, TrackerParams::steadyHueMarginPx).
+  grown by the default margin, SteadyParams::hueMarginPx).
 */
 void hueAsTracked(benchmark::State &state, bool windows, bool fromMemory = false)
 {
   // fromMemory: a new frame each time, as a camera delivers them (40 copies, more than the caches hold).
   std::vector<pm::sim::StereoImages> frames(fromMemory ? 40 : 1, setup().images);
   pm::core::StereoFitness fit(setup().rig, setup().model);
-  const int margin = pm::tracker::TrackerParams().steadyHueMarginPx;
+  const int margin = pm::tracker::TrackerParams().steady.hueMarginPx;
   std::array<pm::core::PixelRect, 2> w;
   long pixels = 0;
   for (int cam = 0; cam < 2; ++cam) {
-    const pm::core::StereoFitness::Camera &c = fit.camera(cam);
-    w[static_cast<std::size_t>(cam)] = windows ? fit.footprint(setup().truth, cam).grown(margin, c.width, c.height) : pm::core::PixelRect{0, 0, c.width, c.height};
+    const pm::core::PinholeCamera::Projection &c = fit.camera(cam);
+    w[static_cast<std::size_t>(cam)] = windows ? fit.footprint(setup().truth, cam).grown(margin, c.w, c.h) : pm::core::PixelRect{0, 0, c.w, c.h};
     const pm::core::PixelRect &r = w[static_cast<std::size_t>(cam)];
     pixels += static_cast<long>(r.u1 - r.u0) * (r.v1 - r.v0);
   }

@@ -59,7 +59,7 @@ void allAroundFrame(benchmark::State &state, bool precise)
 {
   const AllAround &a = allAround();
   pm::tracker::TrackerParams p;
-  p.preciseStage = precise;
+  p.refinement.precise.enabled = precise;
   pm::tracker::PhotoModelTracker tracker(setup().rig, a.model.build.model, p);
   tracker.initFromPose(pm::core::toHomogeneousMatrix(a.truth));
   for (int k = 0; k < 5; ++k) // a few frames: steady

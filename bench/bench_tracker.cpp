@@ -38,13 +38,12 @@ using pm::bench::setup;
 void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying, int hueMarginPx = -1, bool before = false)
 {
   pm::tracker::TrackerParams p = pm::tracker::TrackerParams();
-  p.steadyBudgetFraction = steadyFraction;
+  p.steady.budgetFraction = steadyFraction;
   if (hueMarginPx >= 0)
-    p.steadyHueMarginPx = hueMarginPx;
+    p.steady.hueMarginPx = hueMarginPx;
   if (before) {
-    p.budgetEvaluations = 1900;
-    p.ga.refineEvaluations = 100;
-    p.verifyEvaluations = 6000;
+    p.search.budgetEvaluations = 1900;
+    p.verifier.evaluations = 6000;
   }
   pm::tracker::PhotoModelTracker tracker(setup().rig, setup().model, p);
   const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(setup().truth);
@@ -66,9 +65,9 @@ void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying
   state.counters["evaluations"] = static_cast<double>(evaluations) / static_cast<double>(std::max<long>(1, frames));
 }
 void Tracker_Frame_Whole(benchmark::State &s) { trackerFrame(s, 1.0, false); }
-void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steadyBudgetFraction, false); }
-//! Its peer: the same steady frame with the hue of the whole images (TrackerParams::steadyHueMarginPx 0).
-void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steadyBudgetFraction, false, 0); }
+void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steady.budgetFraction, false); }
+//! Its peer: the same steady frame with the hue of the whole images (SteadyParams::hueMarginPx 0).
+void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steady.budgetFraction, false, 0); }
 void Tracker_Frame_Verifying(benchmark::State &s) { trackerFrame(s, 1.0, true); }
 //! The whole frame's peer: the budget of before issue 18 (1,900 evaluations, refinement 100), the rest as now.
 void Tracker_Frame_Before_1900Evals(benchmark::State &s) { trackerFrame(s, 1.0, false, -1, true); }

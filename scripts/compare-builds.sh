@@ -101,9 +101,14 @@ def settings(name, a, b):
         return True
     return False
 
+def tail(path):  # an absolute path names its checkout: compare what lies under it
+    return "/".join(path.split("/")[-3:])
+
 def same(a, b):
     if a == b:
         return True
+    if isinstance(a, str) and isinstance(b, str) and a.startswith("/") and b.startswith("/"):
+        return tail(a) == tail(b)
     try:
         x, y = float(a), float(b)
     except (TypeError, ValueError):

@@ -222,13 +222,13 @@ TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)
        {vpHomogeneousMatrix(0.02, -0.01, 0.52, 0.436, 0, 0), vpHomogeneousMatrix(-0.01, 0.01, 0.5, 0, -0.436, 0.2)}) {
     const pm::sim::StereoImages im = scene.renderStereo(rig(), hMo, 0);
     pm::tracker::TrackerParams p;
-    p.budgetEvaluations = 3000;
-    p.ga.population = 100;
-    p.ga.restartGenerations = 30;
-    p.ga.refineEvaluations = 200;
+    p.search.budgetEvaluations = 3000;
+    p.search.ga.population = 100;
+    p.search.ga.restartGenerations = 30;
     pm::tracker::PhotoModelTracker t(rig(), b.model, p);
     ASSERT_TRUE(b.model.isAllAround());
-    EXPECT_EQ(&t.tiltFilter(), &t.params().tiltFilterAllAround); // the lighter smoothing of a model that sees its tilt
+    EXPECT_DOUBLE_EQ(t.tiltFilter().alpha, t.params().refinement.tiltFilterAllAround.alpha); // the lighter smoothing of a model that sees its tilt
+    EXPECT_DOUBLE_EQ(t.tiltFilter().beta, t.params().refinement.tiltFilterAllAround.beta);
     t.initialize();
     pm::tracker::TrackResult r;
     for (int k = 0; k < 40; ++k)
@@ -276,10 +276,9 @@ TEST(AllAround, BothKernelsAgreeAndTheModelFileKeepsEveryView)
     poses.push_back({t(rng), t(rng), 500 + t(rng), e(rng), e(rng), e(rng)});
     fast.push_back(f.evaluate(poses.back()));
   }
-  pm::core::StereoFitness::forceScalar(true);
+  f.useScalarKernel(true);
   for (int k = 0; k < 200; ++k)
     EXPECT_EQ(f.evaluate(poses[static_cast<std::size_t>(k)]), fast[static_cast<std::size_t>(k)]);
-  pm::core::StereoFitness::forceScalar(false);
 }
 
 TEST(AllAround, AViewWithAWrongPoseIsNamedAndLeftOut)
@@ -387,7 +386,7 @@ TEST(AllAround, TheViewsStereoPairsBringTheBulgingHullBackToTheBoxsFaceAndBoundI
     const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), pass.views, p);
     const vpHomogeneousMatrix cMm = (pass.views[0].fMh * rig().left.hMc).inverse() * b.fMm;
     std::vector<float> zbuf;
-    pm::model::hull::Pinhole cam(cMm.inverse(), rig().left.cam, rig().left.width, rig().left.height);
+    pm::core::PinholeCamera::Projection cam(cMm.inverse(), rig().left.cam, rig().left.width, rig().left.height);
     b.mesh.depthMap(cam, zbuf);
     std::vector<double> e;
     for (unsigned v = 0; v < rig().left.height; ++v)

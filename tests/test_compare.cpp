@@ -412,7 +412,7 @@ TEST(Comparison, OneRowPerFrameAndTrackerTheResultsShapeAndAClearErrorForAnUnkno
   p.trackers = {"mbt-klt", "ours"};
   p.trajectoryPath = pm::test::dataPath("trajectories/table2.csv");
   p.mbtXml = pm::test::dataPath("compare/mbt.xml");
-  p.tracker.budgetEvaluations = 800;
+  p.tracker.search.budgetEvaluations = 800;
   pm::compare::Comparison c(rig, p);
   const std::string cao = d.file("model.cao");
   pm::test::writeText(cao, c.caoText());

@@ -225,9 +225,9 @@ TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
   }
   const auto x = pm::io::readCameraFile(d.file("cam.xml"), "left", 640, 480);
   EXPECT_EQ(x.format, "visp-xml");
-  EXPECT_DOUBLE_EQ(x.cam.get_px(), 700);
-  ASSERT_EQ(x.distortion.coefficients.size(), 5u);
-  EXPECT_DOUBLE_EQ(x.distortion.coefficients[0], -0.2);
+  EXPECT_DOUBLE_EQ(x.camera.cam.get_px(), 700);
+  ASSERT_EQ(x.camera.distortion.coefficients.size(), 5u);
+  EXPECT_DOUBLE_EQ(x.camera.distortion.coefficients[0], -0.2);
   // Writes the text as a camera file and reads it.
   const auto read = [&](const std::string &name, const std::string &text) {
     pm::test::writeText(d.file(name), text);
@@ -239,14 +239,14 @@ TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
                                   "distortion_model: plumb_bob\ndistortion_coefficients:\n  rows: 1\n  cols: 5\n"
                                   "  data: [-0.266, -0.0386, 0.00178, -0.00028, 0.238]\n");
   EXPECT_EQ(r.format, "ros");
-  EXPECT_DOUBLE_EQ(r.cam.get_py(), 536.1);
-  EXPECT_DOUBLE_EQ(r.distortion.coefficients[4], 0.238);
+  EXPECT_DOUBLE_EQ(r.camera.cam.get_py(), 536.1);
+  EXPECT_DOUBLE_EQ(r.camera.distortion.coefficients[4], 0.238);
   // OpenCV's own sample calibration file, when opencv-doc is installed.
   if (std::filesystem::exists(kOpenCvData + "left_intrinsics.yml")) {
     const auto o = pm::io::readCameraFile(kOpenCvData + "left_intrinsics.yml", "left", 640, 480);
     EXPECT_EQ(o.format, "opencv");
-    EXPECT_NEAR(o.cam.get_px(), 535.9157, 1e-3);
-    EXPECT_NEAR(o.distortion.coefficients[0], -0.26637, 1e-5);
+    EXPECT_NEAR(o.camera.cam.get_px(), 535.9157, 1e-3);
+    EXPECT_NEAR(o.camera.distortion.coefficients[0], -0.26637, 1e-5);
   }
   // OpenCV's XML form of the same.
   const auto cx = read("cv.xml", "<?xml version=\"1.0\"?>\n<opencv_storage>\n<camera_matrix type_id=\"opencv-matrix\">"
@@ -255,14 +255,14 @@ TEST(CameraFile, ReadsViSPOpenCvAndRosFiles)
                                 "<cols>1</cols><dt>d</dt><data>-0.2 0.01 0.001 0.002</data></distortion_coefficients>\n"
                                 "</opencv_storage>\n");
   EXPECT_EQ(cx.format, "opencv");
-  EXPECT_DOUBLE_EQ(cx.cam.get_py(), 537);
-  EXPECT_EQ(cx.distortion.coefficients, (std::vector<double>{-0.2, 0.01, 0.001, 0.002}));
+  EXPECT_DOUBLE_EQ(cx.camera.cam.get_py(), 537);
+  EXPECT_EQ(cx.camera.distortion.coefficients, (std::vector<double>{-0.2, 0.01, 0.001, 0.002}));
   // Written by us, read back.
-  pm::core::RigCamera cam{"left", r.cam, 640, 480, vpHomogeneousMatrix(), r.distortion};
+  pm::core::PinholeCamera cam{"left", r.camera.cam, 640, 480, vpHomogeneousMatrix(), r.camera.distortion};
   pm::io::writeOpenCvCameraFile(cam, d.file("back.yml"));
   const auto b = pm::io::readCameraFile(d.file("back.yml"), "left", 640, 480);
-  EXPECT_EQ(b.distortion.coefficients, r.distortion.coefficients);
-  EXPECT_DOUBLE_EQ(b.cam.get_u0(), 342.3);
+  EXPECT_EQ(b.camera.distortion.coefficients, r.camera.distortion.coefficients);
+  EXPECT_DOUBLE_EQ(b.camera.cam.get_u0(), 342.3);
 }
 
 TEST(CameraFile, BadFilesAreClearErrors)
@@ -320,11 +320,11 @@ TEST(CameraFile, AKannalaBrandtModelIsRefusedBeforeViSPsParserReadsPastItsCoeffi
   }
   // The same file with ViSP's own model with distortion is read.
   pm::test::writeText(d.file("c.xml"), file("perspectiveProjWith"));
-  const pm::io::CameraIntrinsics c = pm::io::readCameraFile(d.file("c.xml"), "left", 640, 480);
+  const pm::io::CameraFile c = pm::io::readCameraFile(d.file("c.xml"), "left", 640, 480);
   EXPECT_EQ(c.format, "visp-xml");
-  EXPECT_DOUBLE_EQ(c.cam.get_px(), 600.0);
-  ASSERT_FALSE(c.distortion.coefficients.empty());
-  EXPECT_DOUBLE_EQ(c.distortion.coefficients[0], 0.1);
+  EXPECT_DOUBLE_EQ(c.camera.cam.get_px(), 600.0);
+  ASSERT_FALSE(c.camera.distortion.coefficients.empty());
+  EXPECT_DOUBLE_EQ(c.camera.distortion.coefficients[0], 0.1);
   // ViSP's parser hands back px = 0 with a distortion model (fuzzing found it): a clear error, not ViSP's exception.
   std::string zero = file("perspectiveProjWith");
   zero.replace(zero.find("<px>600"), 7, "<px>0");
@@ -354,7 +354,7 @@ TEST(RigFile, ALensSurvivesTheRoundTripInOpenCvAndViSPFiles)
   double worst = 0;
   for (int v = 0; v <= 480; v += 60)
     for (int u = 0; u <= 640; u += 80)
-      worst = std::max(worst, vpImagePoint::distance(x.distortion.distort(x.cam, vpImagePoint(v, u)),
+      worst = std::max(worst, vpImagePoint::distance(x.camera.distortion.distort(x.camera.cam, vpImagePoint(v, u)),
                                                      kBarrel.distort(rig.left.cam, vpImagePoint(v, u))));
   EXPECT_LT(worst, 2.0);
   EXPECT_GT(worst, 0.0);

@@ -331,7 +331,7 @@ TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
     ASSERT_GE(e.f1, 0) << "an open edge";
   EXPECT_NEAR(mesh.volume(), 4.0 / 3.0 * M_PI * R * R * R, 0.01 * 4.0 / 3.0 * M_PI * R * R * R);
   const vpCameraParameters cam(754, 754, 320, 240);
-  const pm::model::hull::Pinhole pin = pm::model::hull::Pinhole::lookingAtOrigin({0, 0, -500}, cam, 640, 480);
+  const pm::core::PinholeCamera::Projection pin = pm::core::PinholeCamera::Projection::lookingAtOrigin({0, 0, -500}, cam, 640, 480);
   std::vector<float> zbuf;
   mesh.depthMap(pin, zbuf);
   std::vector<unsigned char> mask(zbuf.size());

@@ -212,7 +212,7 @@ TEST(ReliefTargets, BoxCastsAShadowOnTheBackdropAwayFromTheLight)
   const pm::sim::Scene sOn(box, on), sOff(box, off);
   EXPECT_TRUE(sOn.sceneLit());
   EXPECT_FALSE(sOff.sceneLit());
-  const pm::core::RigCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::core::LensDistortion()};
+  const pm::core::PinholeCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::core::LensDistortion()};
   const double dist = 500;
   const vpHomogeneousMatrix hMo(0, 0, dist * 1e-3, 0, 0, 0);
   pm::sim::Rasterizer r;
@@ -240,7 +240,7 @@ TEST(ReliefTargets, HighlightsAreStrongerUnderTheSceneLight)
   pm::sim::SceneParams matte = p;
   matte.sceneSpecular = 0;
   const pm::sim::Scene glossy(head, p), dull(head, matte);
-  const pm::core::RigCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::core::LensDistortion()};
+  const pm::core::PinholeCamera cam{"front", kCam, 640, 480, vpHomogeneousMatrix(), pm::core::LensDistortion()};
   const vpHomogeneousMatrix hMo(0, 0, 0.5, 0, 0, 0);
   pm::sim::Rasterizer r;
   vpImage<vpRGBa> a, b;

@@ -323,7 +323,7 @@ TEST(Scene, TargetAtTheTruePoseSitsAtBothImageCentres)
   const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
   for (const char *code : {"C04", "C12"}) {
     const pm::sim::Scene scene(pm::sim::makeTarget(code, 0.5));
-    for (const pm::core::RigCamera *c : {&rig.left, &rig.right}) {
+    for (const pm::core::PinholeCamera *c : {&rig.left, &rig.right}) {
       pm::sim::Rasterizer r;
       vpImage<vpRGBa> I;
       scene.render(r, *c, hMo, 0, 0, I);

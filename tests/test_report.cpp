@@ -115,8 +115,8 @@ TEST(ModelMaking, AFlatModelFromPhotosThroughALensIsTheIdealCamerasModel)
   // the ideal pair's outline; given without it, the outline's far edge is pulled inward.
   const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
-  pm::core::RigCamera ideal{"photo", rig.left.cam, rig.left.width, rig.left.height, vpHomogeneousMatrix(), pm::core::LensDistortion()};
-  pm::core::RigCamera bent = ideal;
+  pm::core::PinholeCamera ideal{"photo", rig.left.cam, rig.left.width, rig.left.height, vpHomogeneousMatrix(), pm::core::LensDistortion()};
+  pm::core::PinholeCamera bent = ideal;
   bent.distortion = pm::core::LensDistortion{{-0.4, 0.0, 0, 0, 0}};
   const vpHomogeneousMatrix hMo(0.1, 0, 0.5, 0, 0, 0);
   pm::sim::Rasterizer r;

@@ -10,7 +10,7 @@
 
 namespace {
 
-vpImagePoint project(const pm::core::RigCamera &c, double X, double Y, double Z)
+vpImagePoint project(const pm::core::PinholeCamera &c, double X, double Y, double Z)
 {
   const vpHomogeneousMatrix cMh = c.cMh();
   const double x = cMh[0][0] * X + cMh[0][1] * Y + cMh[0][2] * Z + cMh[0][3];
@@ -27,7 +27,7 @@ TEST(Rig, ShippedLabRigMatchesTheHardware)
 {
   const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
   EXPECT_NEAR(rig.baseline(), 0.323, 1e-9);
-  for (const pm::core::RigCamera *c : {&rig.left, &rig.right}) {
+  for (const pm::core::PinholeCamera *c : {&rig.left, &rig.right}) {
     EXPECT_EQ(c->width, 640u);
     EXPECT_EQ(c->height, 480u);
     EXPECT_DOUBLE_EQ(c->cam.get_px(), 754);
@@ -131,4 +131,43 @@ TEST(PoseTable, ShippedTable2AndBrokenTables)
     EXPECT_NE(e.find(expect), std::string::npos) << text << " -> " << e;
     EXPECT_NE(e.find("t.csv"), std::string::npos) << e;
   }
+}
+
+TEST(PinholeCamera, ItsProjectionIsViSPsAndGoesBackAlongItsRay)
+{
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::PinholeCamera &c = rig.right;
+  const pm::core::PinholeCamera::Projection p = c.projection(); // placed in the hand frame
+  EXPECT_EQ(p.w, static_cast<int>(c.width));
+  EXPECT_EQ(p.h, static_cast<int>(c.height));
+  for (const pm::core::Vec3 &X : {pm::core::Vec3{0, 0, 500}, pm::core::Vec3{40, -25, 520}, pm::core::Vec3{-60, 30, 470}}) {
+    // ViSP's projection of the same point (metres) through cMh and the intrinsics.
+    vpColVector Xh(4);
+    Xh[0] = X[0] * 1e-3, Xh[1] = X[1] * 1e-3, Xh[2] = X[2] * 1e-3, Xh[3] = 1;
+    const vpColVector Xc = c.cMh() * Xh;
+    double uV = 0, vV = 0;
+    vpMeterPixelConversion::convertPoint(c.cam, Xc[0] / Xc[2], Xc[1] / Xc[2], uV, vV);
+    double u = 0, v = 0, z = 0;
+    ASSERT_TRUE(p.project(X, u, v, z));
+    EXPECT_NEAR(u, uV, 1e-9);
+    EXPECT_NEAR(v, vV, 1e-9);
+    EXPECT_NEAR(z, Xc[2] * 1e3, 1e-9);
+    // Back along the ray through (u, v) at that depth: the point again.
+    const pm::core::Vec3 B = p.backProject(u, v, z);
+    for (std::size_t k = 0; k < 3; ++k)
+      EXPECT_NEAR(B[k], X[k], 1e-9);
+    const pm::core::Vec3 r = p.ray(u, v), d = pm::core::unit(pm::core::sub(X, p.centre));
+    EXPECT_NEAR(pm::core::dot(r, d), 1.0, 1e-12);
+  }
+  double u, v, z;
+  EXPECT_FALSE(p.project({0, 0, -500}, u, v, z)); // behind the hand: behind the camera
+  // A camera looking at the origin from 500 mm along -z sees the origin at its principal point.
+  const auto o = pm::core::PinholeCamera::Projection::lookingAtOrigin({0, 0, -500}, c.cam, c.width, c.height);
+  ASSERT_TRUE(o.project({0, 0, 0}, u, v, z));
+  EXPECT_NEAR(u, c.cam.get_u0(), 1e-9);
+  EXPECT_NEAR(v, c.cam.get_v0(), 1e-9);
+  EXPECT_NEAR(z, 500, 1e-9);
+  pm::core::PinholeCamera bad = c;
+  bad.width = 0;
+  EXPECT_NE(pm::test::errorOf([&] { bad.validate(); }).find("image size"), std::string::npos);
 }

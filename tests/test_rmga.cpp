@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <visp3/core/vpThetaUVector.h>
-#include "pm/rmga/LocalSimplex.h"
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/SmoothAscent.h"
 
@@ -320,22 +319,6 @@ TEST(RmGa, AfterALockOnAWrongPoseTheAnchorLeadsRestartsToATargetThatMovedWhileUn
   EXPECT_GE(with, 6) << "of 24 seeds; without the anchor " << without;
 }
 
-TEST(RmGa, RefinementSharpensTheBest)
-{
-  auto error = [](int refine) {
-    Peak f;
-    pm::rmga::RmGaParams p;
-    p.seed = 11;
-    p.refineEvaluations = refine;
-    pm::rmga::RmGa ga(pm::rmga::SearchSpace(), p);
-    pm::rmga::FrameResult r;
-    for (int frame = 0; frame < 20; ++frame)
-      r = ga.evolve(f, pm::rmga::FrameBudget::evals(600));
-    return distance(r.best, f.centre);
-  };
-  EXPECT_LT(error(200), error(0));
-}
-
 TEST(RmGa, BadBudgetsAndParametersAreRefused)
 {
   Peak f;
@@ -351,50 +334,6 @@ TEST(RmGa, BadBudgetsAndParametersAreRefused)
   pm::rmga::SearchSpace s;
   s.hi[2] = s.lo[2];
   EXPECT_THROW(pm::rmga::RmGa(s, pm::rmga::RmGaParams()), pm::core::Error);
-}
-
-TEST(LocalSimplex, ClimbsASmoothPeakFromAStartOffItWithinItsBudget)
-{
-  Peak f;
-  pm::core::Phi start = f.centre;
-  start.x += 4;
-  start.y -= 3;
-  start.z += 6;
-  start.e1 += 0.02;
-  start.e3 -= 0.015;
-  pm::rmga::LocalSimplexParams p;
-  p.maxEvaluations = 600;
-  p.tolerance = 0.001;
-  const pm::rmga::LocalSimplexResult r = pm::rmga::refineLocalSimplex(f, start, p);
-  EXPECT_LE(r.evaluations, p.maxEvaluations);
-  EXPECT_EQ(f.calls, r.evaluations); // every evaluation counted, none of an invalid pose hidden
-  EXPECT_GT(r.fitness, r.startFitness);
-  EXPECT_LT(distance(r.best, f.centre), 0.3);
-  for (std::size_t k = 3; k < 6; ++k)
-    EXPECT_NEAR(r.best[k], f.centre[k], 0.002) << "eps " << k - 2;
-  // A small budget stops early, never below the start, never past the budget.
-  Peak g;
-  p.maxEvaluations = 20;
-  const pm::rmga::LocalSimplexResult s = pm::rmga::refineLocalSimplex(g, start, p);
-  EXPECT_LE(s.evaluations, 20);
-  EXPECT_GE(s.fitness, s.startFitness);
-}
-
-TEST(LocalSimplex, NeverReturnsAnInvalidPoseAndRefusesBadInput)
-{
-  // The peak lies beyond |eps| = 1: the search may push against it but returns a valid pose.
-  Peak f;
-  f.centre = {0, 0, 500, 0.9, 0.5, 0.0};
-  const pm::rmga::LocalSimplexResult r = pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0.8, 0.5, 0.0}, pm::rmga::LocalSimplexParams());
-  EXPECT_TRUE(r.best.isValid());
-  EXPECT_GE(r.fitness, r.startFitness);
-  pm::rmga::LocalSimplexParams bad;
-  bad.step[4] = 0;
-  EXPECT_THROW(pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::core::Error);
-  bad = pm::rmga::LocalSimplexParams();
-  bad.maxEvaluations = 6;
-  EXPECT_THROW(pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0, 0, 0}, bad), pm::core::Error);
-  EXPECT_THROW(pm::rmga::refineLocalSimplex(f, {0, 0, 500, 0.9, 0.9, 0}, pm::rmga::LocalSimplexParams()), pm::core::Error);
 }
 
 namespace {

@@ -171,7 +171,7 @@ TEST(ClosedLoop, OracleFollowsAStepOfTheTarget)
   const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5), sp);
   const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
   pm::tracker::TrackerParams tp;
-  tp.budgetEvaluations = 300;
+  tp.search.budgetEvaluations = 300;
   pm::lab::LoopParams lp;
   lp.oracle = true;
   const std::vector<pm::core::Phi> steps = {{0, 0, 500, 0, 0, 0}, {-50, 0, 500, 0, 0, 0}};
@@ -257,13 +257,12 @@ FaultRun runWithFaults(const pm::lab::LoopFaults &faults, int frames, const std:
   const pm::sim::Scene other(pm::sim::makeTarget(trackerTarget), sp);
   const auto sm = pm::sim::makeSimulatedPhotoModel(other, rig.left.cam, 640, 480, 500);
   pm::tracker::TrackerParams tp;
-  tp.budgetEvaluations = budget;
-  tp.ga.predictMotion = true;
-  tp.ga.refineEvaluations = 100;
-  tp.ga.restartGenerations = 30;
+  tp.search.budgetEvaluations = budget;
+  tp.search.ga.predictMotion = true;
+  tp.search.ga.restartGenerations = 30;
   if (issue17Search) { // the first search as it was in issue 17: every candidate on all the points, any pose over the lock quality locked
-    tp.coarseSearch = false;
-    tp.lockConfidence = 0;
+    tp.search.coarse = false;
+    tp.lock.confidence = 0;
   }
   pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::servo::ServoParams(), pm::lab::LoopParams(), [&](const vpHomogeneousMatrix &wMh0) {
     return std::make_unique<pm::sim::TcRobot>(wMh0, pm::core::Phi{0, 0, 500, 0, 0, 0}, 0, 30.0, 0.2, 200.0, 500.0);
@@ -335,7 +334,7 @@ TEST(ClosedLoop, AWrongFirstLockIsNeverServoedOn)
 {
   // 600 evaluations per frame, no anti-aliasing, every candidate of the first search scored on all
   // the points (no coarse search: with it, 600 evaluations find the crab at once here) and every
-  // pose over the lock quality locked (no lock gate, TrackerParams::lockConfidence): the tracker's
+  // pose over the lock quality locked (no lock gate, LockParams::confidence): the tracker's
   // first lock is a wrong pose (issue 17's case; servoed on at once before the lock was verified). The arm holds until a challenger search has moved the tracker to the crab, then
   // servos (checked in runWithFaults: never on a wrong pose).
   const FaultRun r = runWithFaults(pm::lab::LoopFaults(), 120, "C12", 600, "", true);

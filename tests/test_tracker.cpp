@@ -1,7 +1,11 @@
 // The photo-model tracker: detection from scratch, static detection (Table 1), initFromPose, the states (lost and found
 // again), configuration files, bad input. Budgets in evaluations, so every run is deterministic.
-#include <gtest/gtest.h>
+#include <algorithm>
 
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "C12Scene.h"
 #include "TestSupport.h"
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
@@ -17,26 +21,13 @@
 
 namespace {
 
-struct C12Scene
-{
-  pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
-  pm::sim::Scene scene{pm::sim::makeTarget("C12", 0.5)};
-  pm::sim::SimulatedPhotoModel sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
-  vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({20, -10, 520, 0.03, -0.02, 0.05});
-  pm::sim::StereoImages im = scene.renderStereo(rig, hMo, 0);
-  pm::core::Phi truth = sm.truth(hMo);
-};
-
-const C12Scene &c12()
-{
-  static const C12Scene s;
-  return s;
-}
+using pm::test::C12Scene;
+using pm::test::c12;
 
 pm::tracker::TrackerParams evalBudget(long evals)
 {
   pm::tracker::TrackerParams p;
-  p.budgetEvaluations = evals;
+  p.search.budgetEvaluations = evals;
   return p;
 }
 
@@ -46,9 +37,8 @@ TEST(Tracker, DetectsFromScratch)
 {
   const C12Scene &S = c12();
   pm::tracker::TrackerParams p = evalBudget(3000);
-  p.ga.population = 100;
-  p.ga.restartGenerations = 30;
-  p.ga.refineEvaluations = 200;
+  p.search.ga.population = 100;
+  p.search.ga.restartGenerations = 30;
   pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initialize();
   EXPECT_EQ(t.getState(), pm::tracker::TrackState::Searching);
@@ -87,14 +77,14 @@ TEST(Tracker, BlankFramesAreLostThenTheTargetIsFoundAgain)
 {
   const C12Scene &S = c12();
   pm::tracker::TrackerParams p = evalBudget(2000);
-  p.ga.population = 60;
-  p.ga.restartGenerations = 30;
+  p.search.ga.population = 60;
+  p.search.ga.restartGenerations = 30;
   pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   t.track(S.im.left, S.im.right);
   const vpImage<vpRGBa> blank(480, 640, vpRGBa(90, 90, 90));
   std::vector<pm::tracker::TrackState> states;
-  for (int k = 0; k < p.lostFrames + 1; ++k)
+  for (int k = 0; k < p.lock.lostFrames + 1; ++k)
     states.push_back(t.track(blank, blank).state);
   EXPECT_EQ(states.front(), pm::tracker::TrackState::Tracking); // one bad frame is not yet a loss
   EXPECT_EQ(states.back(), pm::tracker::TrackState::Lost);
@@ -113,8 +103,8 @@ TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
 {
   const C12Scene &S = c12();
   pm::tracker::TrackerParams p = evalBudget(1000);
-  p.steadyBudgetFraction = 0.3;
-  p.steadyAfterFrames = 5;
+  p.steady.budgetFraction = 0.3;
+  p.steady.afterFrames = 5;
   pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   std::vector<pm::tracker::TrackResult> r;
@@ -138,7 +128,7 @@ TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
   EXPECT_FALSE(b.steady);
   EXPECT_TRUE(b.escalated);
   EXPECT_GT(b.evaluations, 900);
-  EXPECT_LE(b.evaluations, 1000 + p.ga.population); // the steady part, the rest, and the population scored again
+  EXPECT_LE(b.evaluations, 1000 + p.search.ga.population); // the steady part, the rest, and the population scored again
   EXPECT_LT(b.quality, 0.2);
   const pm::tracker::TrackResult next = t.track(S.im.left, S.im.right);
   EXPECT_FALSE(next.steady);
@@ -146,7 +136,7 @@ TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
   EXPECT_GT(next.evaluations, 900);
   // Without the escalation the blank frame keeps the steady budget.
   pm::tracker::TrackerParams q = p;
-  q.steadyEscalation = false;
+  q.steady.escalation = false;
   pm::tracker::PhotoModelTracker u(S.rig, S.sm.build.model, q);
   u.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   for (int k = 0; k < 6; ++k)
@@ -156,7 +146,7 @@ TEST(Tracker, SteadyFramesGetTheSmallerBudgetAndADropGetsTheWholeOne)
   EXPECT_FALSE(ub.escalated);
   EXPECT_LE(ub.evaluations, 300);
   // Out of range: refused.
-  p.steadyBudgetFraction = 0;
+  p.steady.budgetFraction = 0;
   EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::core::Error);
 }
 
@@ -167,9 +157,9 @@ TEST(Tracker, SteadyFramesSeeTheHueOnlyAroundTheTargetAndScoreTheSame)
   // fitness and cues are those of the whole images (the confidence's competitors included).
   const C12Scene &S = c12();
   pm::tracker::TrackerParams p = evalBudget(600);
-  p.steadyAfterFrames = 3;
+  p.steady.afterFrames = 3;
   pm::tracker::TrackerParams whole = p;
-  whole.steadyHueMarginPx = 0;
+  whole.steady.hueMarginPx = 0;
   pm::tracker::PhotoModelTracker a(S.rig, S.sm.build.model, p), b(S.rig, S.sm.build.model, whole);
   a.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   b.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
@@ -191,7 +181,7 @@ TEST(Tracker, SteadyFramesSeeTheHueOnlyAroundTheTargetAndScoreTheSame)
       }
   }
   EXPECT_GE(steady, 4);
-  p.steadyHueMarginPx = -1;
+  p.steady.hueMarginPx = -1;
   EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, p), pm::core::Error);
 }
 
@@ -206,31 +196,6 @@ TEST(Tracker, SameSeedSameEstimates)
     return xs;
   };
   EXPECT_EQ(run(), run());
-}
-
-TEST(Tracker, SmoothRefinementRunsOnLockedFramesWithinItsBudgetAndKeepsTheFitness)
-{
-  const C12Scene &S = c12();
-  pm::tracker::TrackerParams p = evalBudget(1000);
-  p.smoothRefineEvaluations = 60;
-  pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
-  t.initialize(); // searching: q is low on the first frames, no refinement there
-  int refined = 0;
-  for (int k = 0; k < 30; ++k) {
-    const pm::tracker::TrackResult r = t.track(S.im.left, S.im.right);
-    EXPECT_LE(r.smoothEvaluations, 60);
-    if (r.quality < p.lockQuality - p.smoothRefineMaxDrop) {
-      EXPECT_EQ(r.smoothEvaluations, 0);
-    }
-    refined += r.smoothEvaluations > 0;
-    EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // the fitness reported is the pose's
-  }
-  EXPECT_GT(refined, 10);
-  pm::tracker::TrackerParams bad = p;
-  bad.smoothRefineEvaluations = 3; // fewer than the first simplex
-  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::core::Error);
-  bad.smoothRefineEvaluations = -1;
-  EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, bad), pm::core::Error);
 }
 
 namespace {
@@ -255,12 +220,11 @@ TrustRun runStill(long verifyEvaluations, int frames, double threshold = 0.95, d
   const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
   const pm::core::Phi truth = sm.truth(hMo);
   pm::tracker::TrackerParams p = evalBudget(600);
-  p.ga.predictMotion = true;
-  p.ga.refineEvaluations = 100;
-  p.ga.restartGenerations = 30;
-  p.lockConfidence = lockConfidence; // 0: the wrong first lock of this case is taken, for the verification to undo
-  p.verifyEvaluations = verifyEvaluations;
-  p.confidence.threshold = threshold;
+  p.search.ga.predictMotion = true;
+  p.search.ga.restartGenerations = 30;
+  p.lock.confidence = lockConfidence; // 0: the wrong first lock of this case is taken, for the verification to undo
+  p.verifier.evaluations = verifyEvaluations;
+  p.judgement.confidence.threshold = threshold;
   pm::tracker::PhotoModelTracker t(rig, sm.build.model, p);
   TrustRun run;
   for (int k = 0; k < frames; ++k) {
@@ -322,7 +286,7 @@ TEST(Tracker, BadInputIsRefused)
   const C12Scene &S = c12();
   EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, evalBudget(5)), pm::core::Error); // under the population
   pm::tracker::TrackerParams zero;
-  zero.budgetMs = 0;
+  zero.search.budgetMs = 0;
   EXPECT_THROW(pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, zero), pm::core::Error);
   // A model twenty times too large does not fit the rig.
   pm::core::PhotoModel huge = S.sm.build.model;
@@ -333,16 +297,17 @@ TEST(Tracker, BadInputIsRefused)
     }
   EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, huge); }).find("does not fit the rig"), std::string::npos);
   pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, evalBudget(100));
-  EXPECT_EQ(&t.tiltFilter(), &t.params().tiltFilter); // a one-view model: the one-view tilt filter
+  EXPECT_DOUBLE_EQ(t.tiltFilter().alpha, t.params().refinement.tiltFilter.alpha); // a one-view model: the one-view tilt filter
+  EXPECT_DOUBLE_EQ(t.tiltFilter().beta, t.params().refinement.tiltFilter.beta);
   EXPECT_THROW(t.track(vpImage<vpRGBa>(240, 320), S.im.right), pm::core::Error);
   pm::tracker::TrackerParams v = evalBudget(100);
-  v.verifyBudgetFraction = 1.0;
+  v.verifier.budgetFraction = 1.0;
   EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, v); }).find("verification"), std::string::npos);
   pm::tracker::TrackerParams c = evalBudget(100);
-  c.confidence.threshold = 1.5;
+  c.judgement.confidence.threshold = 1.5;
   EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, c); }).find("threshold"), std::string::npos);
   pm::tracker::TrackerParams u = evalBudget(100);
-  u.uncertainty.floor[1] = -1;
+  u.judgement.uncertainty.floor[1] = -1;
   EXPECT_NE(pm::test::errorOf([&] { pm::tracker::PhotoModelTracker(S.rig, S.sm.build.model, u); }).find("uncertainty"), std::string::npos);
 }
 
@@ -350,16 +315,16 @@ TEST(Tracker, WeighsTheCuesWithTheCoefficientsOfItsModelsKindUnlessGivenItsOwn)
 {
   const C12Scene &S = c12(); // a flat model
   pm::tracker::TrackerParams p = evalBudget(100);
-  p.confidence.threshold = 0.9;
+  p.judgement.confidence.threshold = 0.9;
   const pm::tracker::PhotoModelTracker flat(S.rig, S.sm.build.model, p);
-  EXPECT_EQ(flat.params().confidence.kind, pm::tracker::ConfidenceKind::Flat);
-  EXPECT_EQ(flat.params().confidence.weights, pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Flat).weights);
-  EXPECT_NE(flat.params().confidence.weights[4], 0.0); // the flat model weighs the tilt
-  EXPECT_DOUBLE_EQ(flat.params().confidence.threshold, 0.9); // the threshold as given
-  p.confidence.kind = pm::tracker::ConfidenceKind::Custom;
-  p.confidence.weights.fill(0.25);
+  EXPECT_EQ(flat.params().judgement.confidence.kind, pm::tracker::ConfidenceKind::Flat);
+  EXPECT_EQ(flat.params().judgement.confidence.weights, pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Flat).weights);
+  EXPECT_NE(flat.params().judgement.confidence.weights[4], 0.0); // the flat model weighs the tilt
+  EXPECT_DOUBLE_EQ(flat.params().judgement.confidence.threshold, 0.9); // the threshold as given
+  p.judgement.confidence.kind = pm::tracker::ConfidenceKind::Custom;
+  p.judgement.confidence.weights.fill(0.25);
   const pm::tracker::PhotoModelTracker custom(S.rig, S.sm.build.model, p);
-  EXPECT_EQ(custom.params().confidence.weights[4], 0.25);
+  EXPECT_EQ(custom.params().judgement.confidence.weights[4], 0.25);
   // The kinds that see the relief do not weigh the tilt; only the all-around one weighs the precise stage's cues.
   for (pm::tracker::ConfidenceKind k : {pm::tracker::ConfidenceKind::Stereo, pm::tracker::ConfidenceKind::AllAround}) {
     const pm::tracker::ConfidenceModel m = pm::tracker::ConfidenceModel::shipped(k);
@@ -379,84 +344,96 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
 {
   pm::test::TempDir d("config");
   pm::tracker::TrackerParams p;
-  p.budgetEvaluations = 1234;
-  p.ga.population = 33;
-  p.ga.predictMotion = true;
+  p.search.budgetEvaluations = 1234;
+  p.search.ga.population = 33;
+  p.search.ga.predictMotion = true;
   p.fitness.inTolDeg = 25;
-  p.steadyBudgetFraction = 0.4;
-  p.steadyHueMarginPx = 17;
-  p.smoothRefineEvaluations = 77;
-  p.verifyEvaluations = 4321;
-  p.verifySameObjectMm = 45;
-  p.confidence.weights[2] = -3.25;
-  p.confidence.threshold = 0.7;
-  p.smoothAscent.maxEvaluations = 31;
-  p.smoothAscent.minStepPx = 0.03;
-  p.smoothAscentMaxDrop = 0.04;
-  p.tiltFilter.alpha = 0.35;
-  p.tiltFilter.gateDeg = 7;
-  p.tiltFilterAllAround.beta = 0.03;
-  p.rejectMarginQ = 0.25;
-  p.coarseSearch = false;
-  p.steadyEscalation = false;
-  p.confidence.kind = pm::tracker::ConfidenceKind::Custom;
-  p.uncertainty.scale[3] = 2.5;
-  p.uncertainty.floor[0] = 0.125;
+  p.steady.budgetFraction = 0.4;
+  p.steady.hueMarginPx = 17;
+  p.verifier.evaluations = 4321;
+  p.verifier.sameObjectMm = 45;
+  p.judgement.confidence.weights[2] = -3.25;
+  p.judgement.confidence.threshold = 0.7;
+  p.refinement.ascent.climb.maxEvaluations = 31;
+  p.refinement.ascent.climb.minStepPx = 0.03;
+  p.refinement.ascent.maxDrop = 0.04;
+  p.refinement.tiltFilter.alpha = 0.35;
+  p.refinement.tiltFilter.gateDeg = 7;
+  p.refinement.tiltFilterAllAround.beta = 0.03;
+  p.search.rejectMarginQ = 0.25;
+  p.search.coarse = false;
+  p.steady.escalation = false;
+  p.judgement.confidence.kind = pm::tracker::ConfidenceKind::Custom;
+  p.judgement.uncertainty.scale[3] = 2.5;
+  p.judgement.uncertainty.floor[0] = 0.125;
   pm::test::writeText(d.file("t.json"), pm::tracker::trackerConfigToJson(p));
   const pm::tracker::TrackerParams q = pm::tracker::loadTrackerConfig(d.file("t.json"));
-  EXPECT_EQ(q.budgetEvaluations, 1234);
-  EXPECT_EQ(q.ga.population, 33);
-  EXPECT_TRUE(q.ga.predictMotion);
+  EXPECT_EQ(q.search.budgetEvaluations, 1234);
+  EXPECT_EQ(q.search.ga.population, 33);
+  EXPECT_TRUE(q.search.ga.predictMotion);
   EXPECT_DOUBLE_EQ(q.fitness.inTolDeg, 25);
-  EXPECT_DOUBLE_EQ(q.steadyBudgetFraction, 0.4);
-  EXPECT_EQ(q.steadyHueMarginPx, 17);
-  EXPECT_EQ(q.smoothRefineEvaluations, 77);
-  EXPECT_EQ(q.verifyEvaluations, 4321);
-  EXPECT_DOUBLE_EQ(q.verifySameObjectMm, 45);
-  EXPECT_DOUBLE_EQ(q.confidence.weights[2], -3.25);
-  EXPECT_DOUBLE_EQ(q.confidence.threshold, 0.7);
-  EXPECT_EQ(q.confidence.kind, pm::tracker::ConfidenceKind::Custom);
-  EXPECT_DOUBLE_EQ(q.uncertainty.scale[3], 2.5);
-  EXPECT_DOUBLE_EQ(q.uncertainty.floor[0], 0.125);
-  EXPECT_EQ(q.smoothAscent.maxEvaluations, 31);
-  EXPECT_DOUBLE_EQ(q.smoothAscent.minStepPx, 0.03);
-  EXPECT_DOUBLE_EQ(q.smoothAscentMaxDrop, 0.04);
-  EXPECT_DOUBLE_EQ(q.tiltFilter.alpha, 0.35);
-  EXPECT_DOUBLE_EQ(q.tiltFilter.gateDeg, 7);
-  EXPECT_DOUBLE_EQ(q.tiltFilterAllAround.beta, 0.03);
-  EXPECT_DOUBLE_EQ(q.tiltFilterAllAround.alpha, pm::tracker::TrackerParams().tiltFilterAllAround.alpha);
-  EXPECT_DOUBLE_EQ(q.rejectMarginQ, 0.25);
-  EXPECT_FALSE(q.coarseSearch);
-  EXPECT_FALSE(q.steadyEscalation);
+  EXPECT_DOUBLE_EQ(q.steady.budgetFraction, 0.4);
+  EXPECT_EQ(q.steady.hueMarginPx, 17);
+  EXPECT_EQ(q.verifier.evaluations, 4321);
+  EXPECT_DOUBLE_EQ(q.verifier.sameObjectMm, 45);
+  EXPECT_DOUBLE_EQ(q.judgement.confidence.weights[2], -3.25);
+  EXPECT_DOUBLE_EQ(q.judgement.confidence.threshold, 0.7);
+  EXPECT_EQ(q.judgement.confidence.kind, pm::tracker::ConfidenceKind::Custom);
+  EXPECT_DOUBLE_EQ(q.judgement.uncertainty.scale[3], 2.5);
+  EXPECT_DOUBLE_EQ(q.judgement.uncertainty.floor[0], 0.125);
+  EXPECT_EQ(q.refinement.ascent.climb.maxEvaluations, 31);
+  EXPECT_DOUBLE_EQ(q.refinement.ascent.climb.minStepPx, 0.03);
+  EXPECT_DOUBLE_EQ(q.refinement.ascent.maxDrop, 0.04);
+  EXPECT_DOUBLE_EQ(q.refinement.tiltFilter.alpha, 0.35);
+  EXPECT_DOUBLE_EQ(q.refinement.tiltFilter.gateDeg, 7);
+  EXPECT_DOUBLE_EQ(q.refinement.tiltFilterAllAround.beta, 0.03);
+  EXPECT_DOUBLE_EQ(q.refinement.tiltFilterAllAround.alpha, pm::tracker::TrackerParams().refinement.tiltFilterAllAround.alpha);
+  EXPECT_DOUBLE_EQ(q.search.rejectMarginQ, 0.25);
+  EXPECT_FALSE(q.search.coarse);
+  EXPECT_FALSE(q.steady.escalation);
+  // The file is written in sections, one per part of the tracker (version 2).
+  const nlohmann::json written = nlohmann::json::parse(pm::tracker::trackerConfigToJson(p));
+  EXPECT_EQ(written.at("version"), 2);
+  for (const char *part : {"fitness", "search", "lock", "steady", "verifier", "refinement", "judgement"})
+    EXPECT_TRUE(written.at(part).is_object()) << part;
+  EXPECT_EQ(written.at("search").at("rmga").at("population"), 33);
+  EXPECT_EQ(written.at("refinement").at("ascent").at("max_evaluations"), 31);
   // A file with no keys gives the library's defaults, or the caller's.
-  pm::test::writeText(d.file("empty.json"), R"({"format":"visp-photomodel-tracker","version":1})");
-  EXPECT_EQ(pm::tracker::trackerConfigToJson(pm::tracker::loadTrackerConfig(d.file("empty.json"))), pm::tracker::trackerConfigToJson(pm::tracker::TrackerParams()));
-  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("empty.json"), evalBudget(1234)).budgetEvaluations, 1234);
+  const std::string v2 = R"({"format":"visp-photomodel-tracker","version":2)";
+  pm::test::writeText(d.file("empty.json"), v2 + "}");
+  std::string notice = "x";
+  EXPECT_EQ(pm::tracker::trackerConfigToJson(pm::tracker::loadTrackerConfig(d.file("empty.json"), pm::tracker::TrackerParams(), &notice)),
+            pm::tracker::trackerConfigToJson(pm::tracker::TrackerParams()));
+  EXPECT_EQ(notice, ""); // no notice for the current version
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("empty.json"), evalBudget(1234)).search.budgetEvaluations, 1234);
   // Partial files keep the defaults.
-  pm::test::writeText(d.file("partial.json"), R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"seed":9}})");
-  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("partial.json")).ga.seed, 9u);
-  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("partial.json")).ga.population, 20);
+  pm::test::writeText(d.file("partial.json"), v2 + R"(,"search":{"rmga":{"seed":9}}})");
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("partial.json")).search.ga.seed, 9u);
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("partial.json")).search.ga.population, 20);
   // Weights written without a kind are meant to be used: the kind is then custom.
-  pm::test::writeText(d.file("weights.json"), R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"weights":[1,1,1,1,1,1,1,1,1,1,1,1,0,0,0,0,0,0]}})");
-  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("weights.json")).confidence.kind, pm::tracker::ConfidenceKind::Custom);
-  pm::test::writeText(d.file("kind.json"), R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"kind":"all-around"}})");
-  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("kind.json")).confidence.kind, pm::tracker::ConfidenceKind::AllAround);
+  pm::test::writeText(d.file("weights.json"), v2 + R"(,"judgement":{"confidence":{"weights":[1,1,1,1,1,1,1,1,1,1,1,1,0,0,0,0,0,0]}}})");
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("weights.json")).judgement.confidence.kind, pm::tracker::ConfidenceKind::Custom);
+  pm::test::writeText(d.file("kind.json"), v2 + R"(,"judgement":{"confidence":{"kind":"all-around"}}})");
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("kind.json")).judgement.confidence.kind, pm::tracker::ConfidenceKind::AllAround);
   const std::vector<std::pair<std::string, std::string>> bad = {
-      {R"({"format":"visp-photomodel-tracker","version":1,"budget_ms":0})", "budget"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"populaton":10}})", "populaton"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"rmga":{"population":"many"}})", "not valid"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"lock_quality":0.1,"lost_quality":0.5})", "lost < lock"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"steady_budget_fraction":1.5})", "steady"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"smooth_refine_evaluations":3})", "evaluations are needed"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"verify_budget_fraction":1})", "verification"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"smooth_ascent":{"shrink":1}})", "smooth ascent"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"smooth_ascent":{"steps":3}})", "steps"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"tilt_filter":{"alpha":0}})", "tilt filter"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"tilt_filter_all_around":{"beta":1}})", "tilt filter"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"threshold":0}})", "threshold"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"wieghts":[1]}})", "wieghts"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"confidence":{"kind":"round"}})", "unknown kind"},
-      {R"({"format":"visp-photomodel-tracker","version":1,"uncertainty":{"scale":[1,1,0,1,1,1]}})", "uncertainty"},
+      {v2 + R"(,"search":{"budget_ms":0}})", "budget"},
+      {v2 + R"(,"search":{"rmga":{"populaton":10}}})", "populaton"},
+      {v2 + R"(,"search":{"rmga":{"population":"many"}}})", "not valid"},
+      {v2 + R"(,"lock":{"quality":0.1,"lost_quality":0.5}})", "lost < lock"},
+      {v2 + R"(,"steady":{"budget_fraction":1.5}})", "steady"},
+      {v2 + R"(,"verifier":{"budget_fraction":1}})", "verification"},
+      {v2 + R"(,"refinement":{"ascent":{"shrink":1}}})", "smooth ascent"},
+      {v2 + R"(,"refinement":{"ascent":{"steps":3}}})", "steps"},
+      {v2 + R"(,"refinement":{"tilt_filter":{"alpha":0}}})", "tilt filter"},
+      {v2 + R"(,"refinement":{"tilt_filter_all_around":{"beta":1}}})", "tilt filter"},
+      {v2 + R"(,"refinement":{"precise":{"max_move_mm":0}}})", "precise stage"},
+      {v2 + R"(,"judgement":{"confidence":{"threshold":0}}})", "threshold"},
+      {v2 + R"(,"judgement":{"confidence":{"wieghts":[1]}}})", "wieghts"},
+      {v2 + R"(,"judgement":{"confidence":{"kind":"round"}}})", "unknown kind"},
+      {v2 + R"(,"judgement":{"uncertainty":{"scale":[1,1,0,1,1,1]}}})", "uncertainty"},
+      {v2 + R"(,"budget_ms":24})", "unknown key \"budget_ms\""},                        // version 1's keys are not version 2's
+      {v2 + R"(,"search":{"rmga":{"refine_evaluations":0}}})", "refine_evaluations"}, // a key of a refiner that is gone
+      {R"({"format":"visp-photomodel-tracker","version":3})", "versions 1 and 2"},
       {"{ not json", "not valid"},
       {R"({"format":"x"})", "format"}};
   for (const auto &[text, expect] : bad) {
@@ -464,6 +441,85 @@ TEST(TrackerConfig, FileRoundTripAndErrors)
     const std::string e = pm::test::errorOf([&] { pm::tracker::loadTrackerConfig(d.file("bad.json")); });
     EXPECT_NE(e.find(expect), std::string::npos) << text << " -> " << e;
   }
+}
+
+TEST(TrackerConfig, AFileOfVersionOneLoadsWithANoticeItsGoneRefinersIgnored)
+{
+  pm::test::TempDir d("config1");
+  // Every flat key of version 1 lands in its part's section.
+  pm::test::writeText(d.file("v1.json"), R"({"format":"visp-photomodel-tracker","version":1,
+    "budget_ms":30,"budget_evaluations":900,"lock_quality":0.4,"lock_confidence":0.1,"lost_quality":0.25,"lost_frames":4,
+    "init_spread":0.03,"steady_budget_fraction":0.2,"steady_after_frames":5,"steady_quality_drop":0.04,
+    "steady_hue_margin_px":30,"steady_escalation":false,"smooth_refine_evaluations":77,"smooth_refine_max_drop":0.5,
+    "smooth_ascent":{"max_evaluations":30,"grow":1.25},"smooth_ascent_max_drop":0.05,"reject_margin_q":0.2,
+    "coarse_search":false,"precise_stage":false,"precise_max_drop_q":0.03,"precise_max_move_mm":10,
+    "precise_max_move_deg":6,"precise_restart_mm":7,"precise_restart_deg":3,"precise":{"lines":120},
+    "tilt_filter":{"alpha":0.3},"tilt_filter_all_around":{"gate_deg":6},"verify_evaluations":2500,
+    "verify_budget_fraction":0.4,"verify_margin":0.03,"verify_switch_margin":0.04,"verify_far_mm":25,"verify_far_deg":6,
+    "verify_same_object_mm":50,"reverify_after_frames":12,"reverify_below_confidence":0.4,
+    "confidence":{"threshold":0.9},"uncertainty":{"floor":[0.1,0.1,0.1,0.1,0.1,0.1]},
+    "search_space":{"lo":[-100,-100,400,-0.6,-0.6,-0.6]},"rmga":{"population":24,"refine_evaluations":100,"seed":5},
+    "fitness":{"in_tol_deg":28}})");
+  std::string notice;
+  const pm::tracker::TrackerParams p = pm::tracker::loadTrackerConfig(d.file("v1.json"), pm::tracker::TrackerParams(), &notice);
+  EXPECT_EQ(std::count(notice.begin(), notice.end(), '\n'), 0); // one line
+  EXPECT_NE(notice.find("version 1"), std::string::npos) << notice;
+  for (const char *gone : {"smooth_refine_evaluations", "smooth_refine_max_drop", "rmga.refine_evaluations"})
+    EXPECT_NE(notice.find(gone), std::string::npos) << notice;
+  EXPECT_DOUBLE_EQ(p.search.budgetMs, 30);
+  EXPECT_EQ(p.search.budgetEvaluations, 900);
+  EXPECT_DOUBLE_EQ(p.lock.quality, 0.4);
+  EXPECT_DOUBLE_EQ(p.lock.confidence, 0.1);
+  EXPECT_DOUBLE_EQ(p.lock.lostQuality, 0.25);
+  EXPECT_EQ(p.lock.lostFrames, 4);
+  EXPECT_DOUBLE_EQ(p.search.initSpread, 0.03);
+  EXPECT_DOUBLE_EQ(p.steady.budgetFraction, 0.2);
+  EXPECT_EQ(p.steady.afterFrames, 5);
+  EXPECT_DOUBLE_EQ(p.steady.qualityDrop, 0.04);
+  EXPECT_EQ(p.steady.hueMarginPx, 30);
+  EXPECT_FALSE(p.steady.escalation);
+  EXPECT_EQ(p.refinement.ascent.climb.maxEvaluations, 30);
+  EXPECT_DOUBLE_EQ(p.refinement.ascent.climb.grow, 1.25);
+  EXPECT_DOUBLE_EQ(p.refinement.ascent.maxDrop, 0.05);
+  EXPECT_DOUBLE_EQ(p.search.rejectMarginQ, 0.2);
+  EXPECT_FALSE(p.search.coarse);
+  EXPECT_FALSE(p.refinement.precise.enabled);
+  EXPECT_DOUBLE_EQ(p.refinement.precise.maxDropQ, 0.03);
+  EXPECT_DOUBLE_EQ(p.refinement.precise.maxMoveMm, 10);
+  EXPECT_DOUBLE_EQ(p.refinement.precise.maxMoveDeg, 6);
+  EXPECT_DOUBLE_EQ(p.refinement.precise.restartMm, 7);
+  EXPECT_DOUBLE_EQ(p.refinement.precise.restartDeg, 3);
+  EXPECT_EQ(p.refinement.precise.stage.lines, 120u);
+  EXPECT_DOUBLE_EQ(p.refinement.tiltFilter.alpha, 0.3);
+  EXPECT_DOUBLE_EQ(p.refinement.tiltFilterAllAround.gateDeg, 6);
+  EXPECT_EQ(p.verifier.evaluations, 2500);
+  EXPECT_DOUBLE_EQ(p.verifier.budgetFraction, 0.4);
+  EXPECT_DOUBLE_EQ(p.verifier.margin, 0.03);
+  EXPECT_DOUBLE_EQ(p.verifier.switchMargin, 0.04);
+  EXPECT_DOUBLE_EQ(p.verifier.farMm, 25);
+  EXPECT_DOUBLE_EQ(p.verifier.farDeg, 6);
+  EXPECT_DOUBLE_EQ(p.verifier.sameObjectMm, 50);
+  EXPECT_EQ(p.verifier.reverifyAfterFrames, 12);
+  EXPECT_DOUBLE_EQ(p.verifier.reverifyBelowConfidence, 0.4);
+  EXPECT_DOUBLE_EQ(p.judgement.confidence.threshold, 0.9);
+  EXPECT_DOUBLE_EQ(p.judgement.uncertainty.floor[3], 0.1);
+  EXPECT_DOUBLE_EQ(p.search.space.lo[2], 400);
+  EXPECT_EQ(p.search.ga.population, 24);
+  EXPECT_EQ(p.search.ga.seed, 5u);
+  EXPECT_DOUBLE_EQ(p.fitness.inTolDeg, 28);
+  // Written again, it is a file of version 2 with the same parameters and no notice.
+  pm::test::writeText(d.file("v2.json"), pm::tracker::trackerConfigToJson(p));
+  EXPECT_EQ(pm::tracker::trackerConfigToJson(pm::tracker::loadTrackerConfig(d.file("v2.json"), pm::tracker::TrackerParams(), &notice)),
+            pm::tracker::trackerConfigToJson(p));
+  EXPECT_EQ(notice, "");
+  // Version 1's rules hold: an unknown key is refused, weights without a kind are custom.
+  const std::string v1 = R"({"format":"visp-photomodel-tracker","version":1)";
+  pm::test::writeText(d.file("bad1.json"), v1 + R"(,"lock_qualty":0.3})");
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::loadTrackerConfig(d.file("bad1.json")); }).find("lock_qualty"), std::string::npos);
+  pm::test::writeText(d.file("bad2.json"), v1 + R"(,"rmga":{"populaton":10}})");
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::loadTrackerConfig(d.file("bad2.json")); }).find("populaton"), std::string::npos);
+  pm::test::writeText(d.file("weights1.json"), v1 + R"(,"confidence":{"weights":[1,1,1,1,1,1,1,1,1,1,1,1,0,0,0,0,0,0]}})");
+  EXPECT_EQ(pm::tracker::loadTrackerConfig(d.file("weights1.json")).judgement.confidence.kind, pm::tracker::ConfidenceKind::Custom);
 }
 
 TEST(TiltFilter, SmoothsTheTiltOnlyFollowsASteadyTurnAndRestartsOnAJump)
@@ -538,7 +594,7 @@ TEST(Tracker, SearchingFramesScoreManyPosesCoarselyAndReportTheExactFitness)
   EXPECT_GT(r.candidates, 3 * r.evaluations);
   EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // F itself, not the estimate
   // Without the coarse search (only the early rejection of hopeless children) it scores under half as many.
-  p.coarseSearch = false;
+  p.search.coarse = false;
   pm::tracker::PhotoModelTracker u(S.rig, S.sm.build.model, p);
   u.initialize();
   const pm::tracker::TrackResult q = u.track(S.im.left, S.im.right);
@@ -550,14 +606,14 @@ TEST(Tracker, TheSmoothAscentRunsOnLockedFramesWithinItsBudgetAndTheFrameTimeIsA
 {
   const C12Scene &S = c12();
   pm::tracker::TrackerParams p = evalBudget(400);
-  p.smoothAscent.maxEvaluations = 10;
+  p.refinement.ascent.climb.maxEvaluations = 10;
   pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   int climbed = 0;
   for (int k = 0; k < 20; ++k) {
     const pm::tracker::TrackResult r = t.track(S.im.left, S.im.right);
     EXPECT_LE(r.ascentEvaluations, 10);
-    if (r.state == pm::tracker::TrackState::Tracking && r.quality >= p.lockQuality) {
+    if (r.state == pm::tracker::TrackState::Tracking && r.quality >= p.lock.quality) {
       ++climbed;
       EXPECT_GT(r.ascentEvaluations, 0);
     }
@@ -571,7 +627,7 @@ TEST(Tracker, TheSmoothAscentRunsOnLockedFramesWithinItsBudgetAndTheFrameTimeIsA
   }
   EXPECT_GT(climbed, 15);
   // Off: no climb.
-  p.smoothAscent.maxEvaluations = 0;
+  p.refinement.ascent.climb.maxEvaluations = 0;
   pm::tracker::PhotoModelTracker u(S.rig, S.sm.build.model, p);
   u.initFromPose(pm::core::toHomogeneousMatrix(S.truth));
   EXPECT_EQ(u.track(S.im.left, S.im.right).ascentEvaluations, 0);
@@ -584,8 +640,8 @@ TEST(StaticDetection, FindsTheStillTargetStopsByItsRulesAndTheNearestPeakScoresA
   // detector would land.
   const C12Scene &S = c12();
   pm::tracker::TrackerParams p = evalBudget(3000);
-  p.ga.population = 100;
-  p.ga.restartGenerations = 30;
+  p.search.ga.population = 100;
+  p.search.ga.restartGenerations = 30;
   pm::tracker::PhotoModelTracker t(S.rig, S.sm.build.model, p);
   t.initialize();
   pm::tracker::DetectionParams dp;
@@ -603,7 +659,7 @@ TEST(StaticDetection, FindsTheStillTargetStopsByItsRulesAndTheNearestPeakScoresA
   const double fTruth = t.fitness().evaluate(S.truth);
   EXPECT_GE(d.best.fitness, fTruth);
 
-  const pm::core::Phi peak = pm::tracker::nearestFitnessPeak(t.fitness(), S.truth, p.space);
+  const pm::core::Phi peak = pm::tracker::nearestFitnessPeak(t.fitness(), S.truth, p.search.space);
   EXPECT_GE(t.fitness().evaluate(peak), fTruth);
   EXPECT_LT(pm::core::translationDistanceMm(peak, S.truth), 8.0); // the flat model's own bias on a 40 mm deep toy
   EXPECT_LT(pm::core::translationDistanceMm(peak, d.best.phi), 4.0); // the detection lands on the peak rather than on the truth

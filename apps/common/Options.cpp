@@ -1,5 +1,7 @@
 #include "pm/app/Options.h"
 
+#include <iostream>
+
 #include "pm/robot/ArmCatalog.h"
 #include "pm/tracker/TrackerConfigFile.h"
 
@@ -96,67 +98,62 @@ TrackerOptions::TrackerOptions(CLI::App &app, const tracker::TrackerParams &defa
     m_set.emplace_back(o, std::move(f));
   };
   tracker::TrackerParams &p = m_cli;
-  add(app.add_option("--budget-ms", p.budgetMs, "compute budget per frame, wall time (ms)")->check(CLI::Range(0.0, 1e6)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.budgetMs = c.budgetMs; t.budgetEvaluations = 0; });
-  add(app.add_option("--budget-evals", p.budgetEvaluations, "compute budget per frame, fitness evaluations "
+  add(app.add_option("--budget-ms", p.search.budgetMs, "compute budget per frame, wall time (ms)")->check(CLI::Range(0.0, 1e6)),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.budgetMs = c.search.budgetMs; t.search.budgetEvaluations = 0; });
+  add(app.add_option("--budget-evals", p.search.budgetEvaluations, "compute budget per frame, fitness evaluations "
                                                             "(deterministic; overrides --budget-ms)")->check(CLI::Range(0L, 100000000L)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.budgetEvaluations = c.budgetEvaluations; });
-  add(app.add_option("--steady-budget", p.steadyBudgetFraction, "fraction of the budget for a steady frame (tracked "
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.budgetEvaluations = c.search.budgetEvaluations; });
+  add(app.add_option("--steady-budget", p.steady.budgetFraction, "fraction of the budget for a steady frame (tracked "
                                                                 "for a while, q near its recent best; 1: all frames alike)")
           ->check(CLI::Range(0.01, 1.0)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.steadyBudgetFraction = c.steadyBudgetFraction; });
-  add(app.add_option("--steady-hue-margin", p.steadyHueMarginPx, "steady frames: hue only within this many pixels of "
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.steady.budgetFraction = c.steady.budgetFraction; });
+  add(app.add_option("--steady-hue-margin", p.steady.hueMarginPx, "steady frames: hue only within this many pixels of "
                                                                  "where the model can land (0: the whole images)")
           ->check(CLI::Range(0, 10000)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.steadyHueMarginPx = c.steadyHueMarginPx; });
-  add(app.add_option("--population", p.ga.population, "RM-GA individuals")->check(CLI::Range(2, 100000)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.population = c.ga.population; });
-  add(app.add_option("--elite", p.ga.elite, "RM-GA individuals always kept"),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.elite = c.ga.elite; });
-  add(app.add_option("--tournament", p.ga.tournament, "RM-GA tournament size"),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.tournament = c.ga.tournament; });
-  add(app.add_option("--crossover-rate", p.ga.crossoverRate, "RM-GA crossover probability")->check(CLI::Range(0.0, 1.0)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.crossoverRate = c.ga.crossoverRate; });
-  add(app.add_option("--mutation-per-bit", p.ga.mutationPerBit, "RM-GA probability to flip each of the 72 bits")
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.steady.hueMarginPx = c.steady.hueMarginPx; });
+  add(app.add_option("--population", p.search.ga.population, "RM-GA individuals")->check(CLI::Range(2, 100000)),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.population = c.search.ga.population; });
+  add(app.add_option("--elite", p.search.ga.elite, "RM-GA individuals always kept"),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.elite = c.search.ga.elite; });
+  add(app.add_option("--tournament", p.search.ga.tournament, "RM-GA tournament size"),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.tournament = c.search.ga.tournament; });
+  add(app.add_option("--crossover-rate", p.search.ga.crossoverRate, "RM-GA crossover probability")->check(CLI::Range(0.0, 1.0)),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.crossoverRate = c.search.ga.crossoverRate; });
+  add(app.add_option("--mutation-per-bit", p.search.ga.mutationPerBit, "RM-GA probability to flip each of the 72 bits")
           ->check(CLI::Range(0.0, 1.0)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.mutationPerBit = c.ga.mutationPerBit; });
-  add(app.add_flag("--predict,!--no-predict", p.ga.predictMotion, "option: move the population by the predicted motion"),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.predictMotion = c.ga.predictMotion; });
-  add(app.add_option("--refine-evals", p.ga.refineEvaluations, "option: local refinement of the best, evaluations per frame")
-          ->check(CLI::Range(0, 1000000)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.refineEvaluations = c.ga.refineEvaluations; });
-  add(app.add_option("--smooth-refine", p.smoothRefineEvaluations,
-                     "option: after RM-GA, a local continuous search of the smooth score from the best, this many "
-                     "evaluations per frame (each costs about 13 of F; on top of the frame budget; 0: off)")
-          ->check(CLI::Range(0, 1000000)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.smoothRefineEvaluations = c.smoothRefineEvaluations; });
-  add(app.add_option("--restart-generations", p.ga.restartGenerations,
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.mutationPerBit = c.search.ga.mutationPerBit; });
+  add(app.add_flag("--predict,!--no-predict", p.search.ga.predictMotion, "option: move the population by the predicted motion"),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.predictMotion = c.search.ga.predictMotion; });
+  add(app.add_option("--restart-generations", p.search.ga.restartGenerations,
                      "option: restart all but the best after this many generations without gain (0: never)")
           ->check(CLI::Range(0, 1000000)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.restartGenerations = c.ga.restartGenerations; });
-  add(app.add_option("--ga-seed", p.ga.seed, "RM-GA random seed"),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.ga.seed = c.ga.seed; });
-  add(app.add_option("--lock-quality", p.lockQuality, "normalised fitness q from which the target is tracked"),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.lockQuality = c.lockQuality; });
-  add(app.add_option("--lost-quality", p.lostQuality, "normalised fitness q below which it is lost"),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.lostQuality = c.lostQuality; });
-  add(app.add_option("--verify-evals", p.verifyEvaluations, "evaluations of the challenger search that verifies a new lock "
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.restartGenerations = c.search.ga.restartGenerations; });
+  add(app.add_option("--ga-seed", p.search.ga.seed, "RM-GA random seed"),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.search.ga.seed = c.search.ga.seed; });
+  add(app.add_option("--lock-quality", p.lock.quality, "normalised fitness q from which the target is tracked"),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.lock.quality = c.lock.quality; });
+  add(app.add_option("--lost-quality", p.lock.lostQuality, "normalised fitness q below which it is lost"),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.lock.lostQuality = c.lock.lostQuality; });
+  add(app.add_option("--verify-evals", p.verifier.evaluations, "evaluations of the challenger search that verifies a new lock "
                                                         "before it is trusted (0: every lock trusted at once)")
           ->check(CLI::Range(0L, 100000000L)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.verifyEvaluations = c.verifyEvaluations; });
-  add(app.add_flag("--precise,!--no-precise", p.preciseStage,
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.verifier.evaluations = c.verifier.evaluations; });
+  add(app.add_flag("--precise,!--no-precise", p.refinement.precise.enabled,
                    "the precise last stage after RM-GA (outline and interior, Gauss-Newton; needs an all-around model)"),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.preciseStage = c.preciseStage; });
-  add(app.add_option("--trust-threshold", p.confidence.threshold, "confidence from which an estimate is trusted")
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.refinement.precise.enabled = c.refinement.precise.enabled; });
+  add(app.add_option("--trust-threshold", p.judgement.confidence.threshold, "confidence from which an estimate is trusted")
           ->check(CLI::Range(0.001, 0.999)),
-      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.confidence.threshold = c.confidence.threshold; });
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.judgement.confidence.threshold = c.judgement.confidence.threshold; });
 }
 
 tracker::TrackerParams TrackerOptions::resolve() const
 {
   // The options given, applied in order over the defaults or the file: --budget-ms switches to a
   // wall-time budget (the defaults' is in evaluations), --budget-evals after it wins.
-  tracker::TrackerParams p = m_config.empty() ? m_defaults : tracker::loadTrackerConfig(m_config, m_defaults);
+  std::string notice;
+  tracker::TrackerParams p = m_config.empty() ? m_defaults : tracker::loadTrackerConfig(m_config, m_defaults, &notice);
+  if (!notice.empty())
+    std::cerr << "notice: " << notice << "\n";
   for (const auto &[opt, set] : m_set)
     if (opt->count() > 0)
       set(p, m_cli);

@@ -26,7 +26,7 @@ BoardView Pattern::find(const vpImage<vpRGBa> &I, const vpCameraParameters &cam,
 {
   if (distortion.isNone())
     return find(I, cam, name, whole);
-  core::RigCamera camera{name, cam, I.getWidth(), I.getHeight(), vpHomogeneousMatrix(), distortion};
+  core::PinholeCamera camera{name, cam, I.getWidth(), I.getHeight(), vpHomogeneousMatrix(), distortion};
   const core::UndistortMap map(camera);
   vpImage<vpRGBa> ideal;
   map.undistort(I, ideal);

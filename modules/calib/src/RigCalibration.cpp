@@ -204,7 +204,7 @@ void setRig(const cv::Mat &R, const cv::Mat &T, const cv::Mat K[2], const cv::Ma
     cRMcL[i][3] = T.at<double>(static_cast<int>(i)) * 1e-3;
   }
   const vpHomogeneousMatrix cLMcR = cRMcL.inverse();
-  core::RigCamera *cams[2] = {&result.rig.left, &result.rig.right};
+  core::PinholeCamera *cams[2] = {&result.rig.left, &result.rig.right};
   vpHomogeneousMatrix hMc[2];
   handFrameOf(cLMcR, hMc[0], hMc[1]);
   for (int k = 0; k < 2; ++k) {

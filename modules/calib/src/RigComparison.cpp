@@ -7,7 +7,7 @@
 namespace pm::calib {
 
 namespace {
-double cameraMapRms(const core::RigCamera &est, const core::RigCamera &truth)
+double cameraMapRms(const core::PinholeCamera &est, const core::PinholeCamera &truth)
 {
   std::vector<vpImagePoint> raw;
   for (unsigned v = 0; v <= truth.height; v += truth.height / 12)

@@ -28,7 +28,7 @@ const vpRGBa kColors[] = {vpRGBa(220, 50, 40), vpRGBa(240, 120, 150), vpRGBa(40,
                           vpRGBa(230, 150, 20), vpRGBa(90, 90, 90)};
 
 //! The outline at \e hMm drawn on the left image.
-void drawOutline(vpImage<vpRGBa> &I, const std::vector<vpPoint> &outline, const vpHomogeneousMatrix &hMm, const core::RigCamera &cam,
+void drawOutline(vpImage<vpRGBa> &I, const std::vector<vpPoint> &outline, const vpHomogeneousMatrix &hMm, const core::PinholeCamera &cam,
                  const vpRGBa &color)
 {
   const auto px = projectPolygon(outline, cam.cMh() * hMm, cam.cam);
@@ -143,12 +143,12 @@ ComparisonResult Comparison::run(const std::string &caoPath, std::ostream &csv, 
       return makeOurTracker(rig, s.allAround.build.model, m_p.tracker, "all-around photo-model (ours, PA-10 pass)");
     if (key == "ours-aa-rmga") {
       tracker::TrackerParams rmga = m_p.tracker;
-      rmga.preciseStage = false;
+      rmga.refinement.precise.enabled = false;
       return makeOurTracker(rig, s.allAround.build.model, rmga, "all-around photo-model, RM-GA alone (ours, no precise stage)");
     }
     if (key == "ours-steady") {
       tracker::TrackerParams fast = m_p.tracker;
-      fast.steadyBudgetFraction = m_p.steadyVariant;
+      fast.steady.budgetFraction = m_p.steadyVariant;
       return makeOurTracker(rig, s.flat.build.model, fast,
                             "photo-model (ours, steady frames " + std::to_string(std::lround(100 * m_p.steadyVariant)) + " %)");
     }

@@ -66,10 +66,10 @@ ConfidenceStudy runConfidenceStudy(const core::StereoRig &defaultRig, const Conf
       c.oMm = models[i].oMm;
       c.otherToy = r.model != pass.target;
       c.params = tracker::TrackerParams();
-      c.params.budgetEvaluations = r.budget;
-      c.params.ga.seed = r.seed;
-      c.params.steadyBudgetFraction = r.steady;
-      c.params.preciseStage = params.precise;
+      c.params.search.budgetEvaluations = r.budget;
+      c.params.search.ga.seed = r.seed;
+      c.params.steady.budgetFraction = r.steady;
+      c.params.refinement.precise.enabled = params.precise;
       c.name = pass.label + ": " + (params.allAround ? "all-around model of " : r.stereo || params.stereo ? "stereo model of " : "model of ") + r.model +
                ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) + (r.steady < 1 ? ", steady frames 25 %" : "");
       runs.push_back(c);

@@ -34,8 +34,8 @@ std::vector<UncertaintySample> collectUncertaintySamples(const core::StereoRig &
   const sim::SimulatedPhotoModel m = lab::makeLabModel(scene, rig, lab::LabModelChoice());
   const Scenario s = makeScenario("random6dof", {});
   tracker::TrackerParams p;
-  p.ga.seed = run.seed;
-  p.budgetEvaluations = run.budget;
+  p.search.ga.seed = run.seed;
+  p.search.budgetEvaluations = run.budget;
   tracker::PhotoModelTracker tracker(rig, m.build.model, p);
   if (!tracker.hasPreciseStage())
     throw core::Error("uncertainty calibration: the model of " + run.target + " has no outlines for the precise stage");

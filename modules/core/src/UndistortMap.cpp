@@ -9,7 +9,7 @@
 
 namespace pm::core {
 
-UndistortMap::UndistortMap(const RigCamera &camera) : m_w(camera.width), m_h(camera.height)
+UndistortMap::UndistortMap(const PinholeCamera &camera) : m_w(camera.width), m_h(camera.height)
 {
   camera.distortion.validate(camera.cam, m_w, m_h, camera.name + " camera");
   const cv::Matx33d K(camera.cam.get_px(), 0, camera.cam.get_u0(), 0, camera.cam.get_py(), camera.cam.get_v0(), 0, 0, 1);

@@ -7,7 +7,7 @@
 namespace pm::hand {
 
 GuardedServo::GuardedServo(const servo::ServoParams &sp, const GuardParams &gp, const tracker::PhotoModelTracker &tracker, const robot::ArmModel &arm)
-    : m_sp(sp), m_servo(std::make_unique<servo::PbvsServo>(sp)), m_gp(gp), m_lostQuality(tracker.params().lostQuality), m_space(tracker.params().space),
+    : m_sp(sp), m_servo(std::make_unique<servo::PbvsServo>(sp)), m_gp(gp), m_lostQuality(tracker.params().lock.lostQuality), m_space(tracker.params().search.space),
       m_filtering(gp.filter == GuardParams::Filter::On || (gp.filter == GuardParams::Filter::Auto && !tracker.hasPreciseStage())),
       m_arm(arm), m_safe(arm.speedLimits(), arm.accelerationLimits()), m_filter(gp.filterParams)
 {

@@ -145,9 +145,9 @@ Fields xmlFields(const std::string &text)
   return f;
 }
 
-CameraIntrinsics fromFields(const Fields &f, bool ros)
+CameraFile fromFields(const Fields &f, bool ros)
 {
-  CameraIntrinsics c;
+  CameraFile c;
   c.format = ros ? "ros" : "opencv";
   if (!f.K.present)
     throw core::Error("no \"camera_matrix\"");
@@ -163,12 +163,12 @@ CameraIntrinsics fromFields(const Fields &f, bool ros)
   if (K[1] != 0 || K[3] != 0 || K[6] != 0 || K[7] != 0 || K[8] != 1)
     throw core::Error("\"camera_matrix\" is not a camera matrix [fx 0 cx; 0 fy cy; 0 0 1] (a skew is not supported)");
   try {
-    c.cam.initPersProjWithoutDistortion(K[0], K[4], K[2], K[5]);
+    c.camera.cam.initPersProjWithoutDistortion(K[0], K[4], K[2], K[5]);
   } catch (const vpException &e) { // ViSP takes a focal length under 1e-6 for 0 (fuzzing found it)
     throw core::Error("\"camera_matrix\": " + e.getStringMessage() + " (focal lengths must be positive)");
   }
   if (f.D.present)
-    c.distortion.coefficients = f.D.values;
+    c.camera.distortion.coefficients = f.D.values;
   if (ros) {
     const std::string model = f.distortionModel.empty() ? "plumb_bob" : f.distortionModel;
     if (model != "plumb_bob" && model != "rational_polynomial")
@@ -177,47 +177,47 @@ CameraIntrinsics fromFields(const Fields &f, bool ros)
   for (const long long *v : {&f.width, &f.height})
     if (*v < 0 || *v > 1000000)
       throw core::Error(std::string("\"") + (v == &f.width ? "image_width" : "image_height") + "\" must be a positive integer");
-  c.width = static_cast<unsigned>(f.width);
-  c.height = static_cast<unsigned>(f.height);
+  c.camera.width = static_cast<unsigned>(f.width);
+  c.camera.height = static_cast<unsigned>(f.height);
   return c;
 }
 
-CameraIntrinsics fromVispXml(const std::string &path, const std::string &name, unsigned w, unsigned h)
+CameraFile fromVispXml(const std::string &path, const std::string &name, unsigned w, unsigned h)
 {
   refuseUnsafeCameraXml(path);
-  CameraIntrinsics c;
+  CameraFile c;
   c.format = "visp-xml";
   int status = vpXmlParserCamera::SEQUENCE_ERROR;
   try {
     QuietStdout quiet;
     vpXmlParserCamera parser;
-    status = parser.parse(c.cam, path, name, vpCameraParameters::perspectiveProjWithDistortion, w, h);
+    status = parser.parse(c.camera.cam, path, name, vpCameraParameters::perspectiveProjWithDistortion, w, h);
   } catch (const vpException &) {
     status = vpXmlParserCamera::SEQUENCE_ERROR;
   }
   if (status == vpXmlParserCamera::SEQUENCE_OK) {
-    requireValidIntrinsics(c.cam, path, name);
-    const double kud = c.cam.get_kud();
+    requireValidIntrinsics(c.camera.cam, path, name);
+    const double kud = c.camera.cam.get_kud();
     if (!std::isfinite(kud))
       throw core::Error("camera '" + name + "' in '" + path + "': kud is not finite");
-    c.distortion.coefficients = {kud, 0, 0, 0, 0};
-    c.cam.initPersProjWithoutDistortion(c.cam.get_px(), c.cam.get_py(), c.cam.get_u0(), c.cam.get_v0());
+    c.camera.distortion.coefficients = {kud, 0, 0, 0, 0};
+    c.camera.cam.initPersProjWithoutDistortion(c.camera.cam.get_px(), c.camera.cam.get_py(), c.camera.cam.get_u0(), c.camera.cam.get_v0());
   } else {
-    c.cam = readCameraXml(path, name, w, h);
+    c.camera.cam = readCameraXml(path, name, w, h);
   }
-  c.width = w;
-  c.height = h;
+  c.camera.width = w;
+  c.camera.height = h;
   return c;
 }
 
 } // namespace
 
-CameraIntrinsics readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h)
+CameraFile readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h)
 {
   if (!std::filesystem::is_regular_file(path))
     throw core::Error("the intrinsics file '" + path + "' does not exist");
   const std::string text = readAll(path);
-  CameraIntrinsics c;
+  CameraFile c;
   try {
     // Text only: OpenCV's XML parser crashes on a NUL byte (fuzzing found it), and no camera file holds control characters.
     if (text.size() > 1000000)
@@ -240,27 +240,28 @@ CameraIntrinsics readCameraFile(const std::string &path, const std::string &name
     else
       throw core::Error("not a camera file this program knows (ViSP camera XML, OpenCV FileStorage with camera_matrix, "
                   "ROS camera_info YAML)");
-    if (w && h && c.width && c.height && (c.width != w || c.height != h))
-      throw core::Error("it is for " + std::to_string(c.width) + "x" + std::to_string(c.height) + " images, the camera's are " +
+    if (w && h && c.camera.width && c.camera.height && (c.camera.width != w || c.camera.height != h))
+      throw core::Error("it is for " + std::to_string(c.camera.width) + "x" + std::to_string(c.camera.height) + " images, the camera's are " +
                   std::to_string(w) + "x" + std::to_string(h));
     if (w && h) {
-      c.width = w;
-      c.height = h;
+      c.camera.width = w;
+      c.camera.height = h;
     }
-    if (c.width && c.height)
-      c.distortion.validate(c.cam, c.width, c.height, "camera '" + name + "'");
+    if (c.camera.width && c.camera.height)
+      c.camera.distortion.validate(c.camera.cam, c.camera.width, c.camera.height, "camera '" + name + "'");
     else
-      c.distortion.validate(c.cam, 1, 1, "camera '" + name + "'"); // counts and values at least
+      c.camera.distortion.validate(c.camera.cam, 1, 1, "camera '" + name + "'"); // counts and values at least
   } catch (const core::Error &e) {
     const std::string what = e.what();
     if (what.find(path) != std::string::npos)
       throw;
     throw core::Error("intrinsics file '" + path + "': " + what);
   }
+  c.camera.name = name;
   return c;
 }
 
-void writeOpenCvCameraFile(const core::RigCamera &camera, const std::string &path)
+void writeOpenCvCameraFile(const core::PinholeCamera &camera, const std::string &path)
 {
   try {
     cv::FileStorage fs(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);

@@ -43,7 +43,7 @@ json poseToJson(const vpHomogeneousMatrix &M)
 
 } // namespace
 
-vpCameraParameters vispDistortionModel(const core::RigCamera &camera)
+vpCameraParameters vispDistortionModel(const core::PinholeCamera &camera)
 {
   const vpCameraParameters &cam = camera.cam;
   vpCameraParameters out;
@@ -96,9 +96,9 @@ core::StereoRig loadRig(const std::string &path)
     const json &cams = j.at("cameras");
     if (!cams.is_array() || cams.size() != 2)
       throw core::Error("\"cameras\" must list exactly two cameras, left then right");
-    core::RigCamera *dst[2] = {&rig.left, &rig.right};
+    core::PinholeCamera *dst[2] = {&rig.left, &rig.right};
     for (std::size_t i = 0; i < 2; ++i) {
-      core::RigCamera &c = *dst[i];
+      core::PinholeCamera &c = *dst[i];
       c.name = cams[i].at("name").get<std::string>();
       const int w = cams[i].at("image_width").get<int>(), h = cams[i].at("image_height").get<int>();
       if (w <= 0 || h <= 0)
@@ -110,9 +110,9 @@ core::StereoRig loadRig(const std::string &path)
       const fs::path file = cams[i].contains("intrinsics") ? dir / cams[i].at("intrinsics").get<std::string>() : xml;
       if (file.empty())
         throw core::Error("camera '" + c.name + "' has no \"intrinsics\" file and the rig no \"intrinsics_xml\"");
-      const CameraIntrinsics in = readCameraFile(file.string(), c.name, c.width, c.height);
-      c.cam = in.cam;
-      c.distortion = in.distortion;
+      const CameraFile in = readCameraFile(file.string(), c.name, c.width, c.height);
+      c.cam = in.camera.cam;
+      c.distortion = in.camera.distortion;
     }
     rig.validate();
   } catch (const core::Error &e) {
@@ -142,7 +142,7 @@ void saveRig(const core::StereoRig &rig, const std::string &rigJsonPath, const s
     for (const auto &w : written)
       fs::remove(w.first, ec);
   };
-  for (const core::RigCamera *c : {&rig.left, &rig.right}) {
+  for (const core::PinholeCamera *c : {&rig.left, &rig.right}) {
     json cj{{"name", c->name}, {"image_width", c->width}, {"image_height", c->height}, {"hMc", poseToJson(c->hMc)}};
     try {
       // ViSP's XML: the pinhole model, or ViSP's one-coefficient model of the lens (exact when

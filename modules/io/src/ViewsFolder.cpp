@@ -66,7 +66,7 @@ std::vector<model::PassView> loadViewsFolder(const std::string &dir, const core:
                   "and " + viewFileName("pose_fPh", k) + ")");
     model::PassView v;
     v.name = name;
-    auto image = [&](const char *stem, const core::RigCamera &cam, vpImage<vpRGBa> &out) {
+    auto image = [&](const char *stem, const core::PinholeCamera &cam, vpImage<vpRGBa> &out) {
       const std::string path = (fs::path(dir) / viewFileName(stem, k)).string();
       try {
         out = readColorImage(path);

@@ -9,7 +9,7 @@
 
 namespace pm::lab {
 
-report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const core::RigCamera &camera,
+report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const core::PinholeCamera &camera,
                                          double distanceMm, const model::PhotoModelParams &params,
                                          const std::string &backgroundName, const std::string &photoName)
 {

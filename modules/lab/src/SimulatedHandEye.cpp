@@ -46,7 +46,7 @@ HandEyeResult simulatedHandEye(const sim::Scene &scene, const core::StereoRig &t
     bool seen = true;
     vpHomogeneousMatrix views[2];
     for (int c = 0; c < 2 && seen; ++c) {
-      const core::RigCamera &cam = c ? truthRig.right : truthRig.left;
+      const core::PinholeCamera &cam = c ? truthRig.right : truthRig.left;
       vpImage<vpRGBa> I;
       scene.render(raster, cam, hMb, static_cast<std::uint64_t>(1000 + m), static_cast<unsigned>(c), I);
       I = defocused(I, blurPx);
@@ -80,7 +80,7 @@ HandEyeResult simulatedHandEye(const sim::Scene &scene, const core::StereoRig &t
     if (status != 0)
       throw core::Error("hand-eye: vpHandEyeCalibration failed (poses too alike?)");
     const vpHomogeneousMatrix ref = (c ? rig.right : rig.left).hMc;
-    HandEyeCamera &h = c ? r.right : r.left;
+    HandEyeEstimate &h = c ? r.right : r.left;
     h.hMc = eMc;
     h.translationErrorMm = (eMc.getTranslationVector() - ref.getTranslationVector()).frobeniusNorm() * 1e3;
     h.rotationErrorDeg = (ref.inverse() * eMc).getThetaUVector().getTheta() * 180 / M_PI;

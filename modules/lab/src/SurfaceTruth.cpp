@@ -19,7 +19,7 @@ namespace {
 constexpr int kW = 640, kH = 480;
 
 //! cMm of a camera looking at the model's origin from \e C (mm; Pinhole::lookingAtOrigin), metres.
-vpHomogeneousMatrix cMmOf(const model::hull::Pinhole &pin)
+vpHomogeneousMatrix cMmOf(const core::PinholeCamera::Projection &pin)
 {
   vpHomogeneousMatrix cMm;
   for (unsigned r = 0; r < 3; ++r) {
@@ -57,7 +57,7 @@ SurfaceTruth checkSurface(const sim::Scene &scene, const model::AllAroundBuild &
     d.turnDeg = 20.0 * static_cast<double>(k);
     const double a = d.turnDeg * M_PI / 180;
     const model::hull::Vec3 C{rest[0], rest[1] * std::cos(a) - rest[2] * std::sin(a), rest[1] * std::sin(a) + rest[2] * std::cos(a)};
-    const model::hull::Pinhole pin = model::hull::Pinhole::lookingAtOrigin(C, cam, kW, kH);
+    const core::PinholeCamera::Projection pin = core::PinholeCamera::Projection::lookingAtOrigin(C, cam, kW, kH);
     std::vector<float> zb;
     b.mesh.depthMap(pin, zb);
     drawToy(r, toy, cMmOf(pin) * mMo, cam, 2);
@@ -92,7 +92,7 @@ SurfaceTruth checkSurface(const sim::Scene &scene, const model::AllAroundBuild &
     std::size_t band = 0;
     while (band < 3 && ang >= bands[band + 1])
       ++band;
-    const model::hull::Pinhole pin = model::hull::Pinhole::lookingAtOrigin(C, cam, kW, kH);
+    const core::PinholeCamera::Projection pin = core::PinholeCamera::Projection::lookingAtOrigin(C, cam, kW, kH);
     drawToy(r, toy, cMmOf(pin) * mMo, cam, 4);
     auto cov = [&](double u, double vv) {
       const int x = static_cast<int>(std::floor(u)), y = static_cast<int>(std::floor(vv));

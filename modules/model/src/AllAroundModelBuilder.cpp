@@ -57,7 +57,7 @@ void AllAroundParams::validate() const
 namespace {
 
 using hull::Vec3;
-using hull::HullCamera;
+using hull::HullView;
 using hull::cross;
 using hull::dot;
 using hull::sub;
@@ -93,7 +93,7 @@ struct ColourSample
 };
 
 //! The 5x5 patch around where \e X projects in \e vc's photo (R, G, B of each pixel), zero-mean and unit-norm; false off the image or flat.
-bool patchAt(const HullCamera &vc, const Vec3 &X, std::array<float, 75> &out)
+bool patchAt(const HullView &vc, const Vec3 &X, std::array<float, 75> &out)
 {
   double u, v, z;
   if (!vc.cam.project(X, u, v, z))
@@ -129,7 +129,7 @@ bool patchAt(const HullCamera &vc, const Vec3 &X, std::array<float, 75> &out)
   highest, when that is clearly better than at the hull (by refineMinGain) and good in itself
   (refineMinScore). Returns the number of points moved.
 */
-int refineByPhotoConsistency(const std::vector<const HullCamera *> &cams, const std::vector<std::vector<std::uint16_t>> &seenBy,
+int refineByPhotoConsistency(const std::vector<const HullView *> &cams, const std::vector<std::vector<std::uint16_t>> &seenBy,
                              const std::vector<Vec3> &normals, const AllAroundParams &p, double cell, std::vector<Vec3> &pts)
 {
   const int steps = static_cast<int>(std::floor(p.refineDepthMm / cell));
@@ -289,14 +289,14 @@ std::vector<Vec3> capDirections(const Vec3 &pole, double capDeg, int n)
   The colour histograms of the target (the photos' pixels over 2 px inside the silhouettes) and of
   its surroundings (2 to 30 px outside), PhotoModel::kColourBins^3 bins each, normalised.
 */
-void colourHistograms(const std::vector<const HullCamera *> &cams, std::vector<float> &fg, std::vector<float> &bg)
+void colourHistograms(const std::vector<const HullView *> &cams, std::vector<float> &fg, std::vector<float> &bg)
 {
   const int B = core::PhotoModel::kColourBins, shift = 8 - 4; // 16 bins: the top 4 bits
   static_assert(core::PhotoModel::kColourBins == 16, "the shift assumes 16 bins per channel");
   fg.assign(static_cast<std::size_t>(B) * B * B, 0.f);
   bg.assign(fg.size(), 0.f);
   double nf = 0, nb = 0;
-  for (const HullCamera *vc : cams)
+  for (const HullView *vc : cams)
     for (int y = 0; y < vc->cam.h; y += 2)
       for (int x = 0; x < vc->cam.w; x += 2) {
         const float d = vc->signedDist.at<float>(y, x);
@@ -327,7 +327,7 @@ namespace {
 //! The pass's photos in the ideal images: each camera of each view with its silhouette's field.
 struct PassImages
 {
-  std::vector<HullCamera> cams;                //!< two per view, left then right
+  std::vector<HullView> cams;                //!< two per view, left then right
   std::vector<vpImage<vpRGBa>> backgrounds;    //!< each camera's background (the photo against a plain backdrop)
   std::vector<std::string> names;              //!< each view's name
 };
@@ -336,10 +336,10 @@ struct PassImages
 PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p, AllAroundBuild &out)
 {
   PassImages images;
-  std::vector<HullCamera> &cams = images.cams;
+  std::vector<HullView> &cams = images.cams;
   std::vector<vpImage<vpRGBa>> &backgrounds = images.backgrounds;
   std::vector<std::string> &names = images.names;
-  const core::RigCamera *rc[2] = {&rig.left, &rig.right};
+  const core::PinholeCamera *rc[2] = {&rig.left, &rig.right};
   std::unique_ptr<core::UndistortMap> und[2];
   for (int c = 0; c < 2; ++c)
     if (!rc[c]->distortion.isNone())
@@ -367,8 +367,8 @@ PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassV
         throw core::Error(name + ": the target is cut by the " + std::string(side) +
                     " image's border: every view must see the whole target");
       out.shadowPx += st.shadowPx;
-      HullCamera vc;
-      vc.cam = hull::Pinhole(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height);
+      HullView vc;
+      vc.cam = core::PinholeCamera::Projection(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height);
       vc.photo = std::move(photo);
       vc.signedDist = hull::signedDistance(mask);
       vc.view = static_cast<int>(k);
@@ -400,14 +400,14 @@ Vec3 occupiedCentroid(const VisualHull &g)
 }
 
 //! Stage 4: which cameras see each vertex (the mesh's depth, the normal facing the camera, off the outline).
-std::vector<std::vector<std::uint16_t>> camerasSeeing(const std::vector<const HullCamera *> &usedCams, const HullMesh &mesh,
+std::vector<std::vector<std::uint16_t>> camerasSeeing(const std::vector<const HullView *> &usedCams, const HullMesh &mesh,
                                                       const AllAroundParams &p, std::vector<float> &zbuf)
 {
   const std::vector<Vec3> &pts = mesh.vertices;
   const std::vector<Vec3> &normals = mesh.normals;
   std::vector<std::vector<std::uint16_t>> seenBy(pts.size());
   for (std::size_t ci = 0; ci < usedCams.size(); ++ci) {
-    const HullCamera *vc = usedCams[ci];
+    const HullView *vc = usedCams[ci];
     mesh.depthMap(vc->cam, zbuf);
     for (std::size_t i = 0; i < pts.size(); ++i) {
       double u, v, z;
@@ -430,13 +430,13 @@ std::vector<std::vector<std::uint16_t>> camerasSeeing(const std::vector<const Hu
 }
 
 //! Each vertex's colour in each camera that sees it.
-std::vector<std::vector<ColourSample>> colourSamples(const std::vector<const HullCamera *> &usedCams,
+std::vector<std::vector<ColourSample>> colourSamples(const std::vector<const HullView *> &usedCams,
                                                      const std::vector<std::vector<std::uint16_t>> &seenBy, const std::vector<Vec3> &pts)
 {
   std::vector<std::vector<ColourSample>> samples(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
     for (std::uint16_t ci : seenBy[i]) {
-      const HullCamera *vc = usedCams[ci];
+      const HullView *vc = usedCams[ci];
       double u, v, z;
       if (!vc->cam.project(pts[i], u, v, z))
         continue;
@@ -453,7 +453,7 @@ std::vector<std::vector<ColourSample>> colourSamples(const std::vector<const Hul
 //! H_B: the mean hue of the backgrounds around the used views' silhouettes.
 float backgroundHueAround(const PassImages &im, const std::vector<vpImage<unsigned char>> &silhouettes, const std::vector<bool> &used)
 {
-  const std::vector<HullCamera> &cams = im.cams;
+  const std::vector<HullView> &cams = im.cams;
   const std::vector<vpImage<vpRGBa>> &backgrounds = im.backgrounds;
   std::vector<float> bgHues;
   for (std::size_t i = 0; i < cams.size(); ++i) {
@@ -489,7 +489,7 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
   std::vector<float> vz;
   for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
     const Vec3 C = hull::scaled(dirs[vi], D);
-    const hull::Pinhole cam = hull::Pinhole::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
+    const core::PinholeCamera::Projection cam = core::PinholeCamera::Projection::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
     core::ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, zbuf);
     if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
       if (vi == 0)
@@ -534,7 +534,7 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
 
   // 1. Silhouettes in the ideal images.
   const PassImages im = silhouettesOfPass(rig, pass, p, out);
-  const std::vector<HullCamera> &cams = im.cams;
+  const std::vector<HullView> &cams = im.cams;
   const std::vector<vpImage<vpRGBa>> &backgrounds = im.backgrounds;
   const std::vector<std::string> &names = im.names;
 
@@ -551,8 +551,8 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   if (out.nViewsUsed < p.minViews)
     throw core::Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
                 std::to_string(p.minViews) + " are needed (" + (out.leftOut.empty() ? "" : out.leftOut[0]) + ")");
-  std::vector<const HullCamera *> usedCams;
-  for (const HullCamera &vc : cams)
+  std::vector<const HullView *> usedCams;
+  for (const HullView &vc : cams)
     if (used[static_cast<std::size_t>(vc.view)])
       usedCams.push_back(&vc);
 
@@ -643,7 +643,7 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
 vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
                             const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask)
 {
-  const hull::Pinhole pin(mMc, cam, w, h);
+  const core::PinholeCamera::Projection pin(mMc, cam, w, h);
   vpImage<vpRGBa> out(h, w, vpRGBa(0, 0, 0));
   std::vector<float> zbuf(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity());
   for (const SurfacePoint &s : surface) {

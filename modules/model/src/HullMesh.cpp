@@ -83,7 +83,7 @@ double HullMesh::volume() const
   return v / 6.0;
 }
 
-void HullMesh::depthMap(const hull::Pinhole &cam, std::vector<float> &zbuf) const
+void HullMesh::depthMap(const core::PinholeCamera::Projection &cam, std::vector<float> &zbuf) const
 {
   zbuf.assign(static_cast<std::size_t>(cam.w) * static_cast<std::size_t>(cam.h), std::numeric_limits<float>::infinity());
   for (std::size_t f = 0; f < triangles.size(); ++f) {
@@ -161,7 +161,7 @@ HullMesh HullMesh::decimated(double cellMm) const
   return out;
 }
 
-HullMesh meshVisualHull(const VisualHull &g, const std::vector<const hull::HullCamera *> &cams)
+HullMesh meshVisualHull(const VisualHull &g, const std::vector<const hull::HullView *> &cams)
 {
   return meshField(g, [&](int x, int y, int z) { return hull::field(cams, g.corner(x, y, z)); });
 }

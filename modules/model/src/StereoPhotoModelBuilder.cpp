@@ -62,7 +62,7 @@ double localMedian(const cv::Mat &z, const cv::Point2f &p, double radius)
   return median(v);
 }
 
-void checkSize(const vpImage<vpRGBa> &im, const core::RigCamera &cam, const char *what)
+void checkSize(const vpImage<vpRGBa> &im, const core::PinholeCamera &cam, const char *what)
 {
   if (im.getWidth() != cam.width || im.getHeight() != cam.height)
     throw core::Error(std::string("stereo photo-model: the ") + what + " is " + std::to_string(im.getWidth()) + "x" +
@@ -79,7 +79,7 @@ struct PlacedView
 };
 
 //! \e p placed in the hand frame (mm) on its pixel's ray of \e cam, at the camera's depth \e z (mm).
-core::ModelPoint onRay(const core::RigCamera &cam, const core::ModelPoint &p, double z)
+core::ModelPoint onRay(const core::PinholeCamera &cam, const core::ModelPoint &p, double z)
 {
   const vpCameraParameters &c = cam.cam;
   const double X = (p.u - c.get_u0()) / c.get_px() * z, Y = (p.v - c.get_v0()) / c.get_py() * z;
@@ -98,7 +98,7 @@ core::ModelPoint onRay(const core::RigCamera &cam, const core::ModelPoint &p, do
   at its region pixels (NaN where unmatched). S_in: at its pixel's depth, dropped when unmatched or off
   the median of the matched pixels around it; S_out: at the depth of the silhouette next to it.
 */
-PlacedView placeView(const core::PhotoModel &sampled, const cv::Mat &camZ, const core::RigCamera &cam, const StereoModelParams &params,
+PlacedView placeView(const core::PhotoModel &sampled, const cv::Mat &camZ, const core::PinholeCamera &cam, const StereoModelParams &params,
                      double fallbackZ)
 {
   PlacedView pv;
@@ -163,7 +163,7 @@ std::vector<core::ModelPoint> shifted(std::vector<core::ModelPoint> pts, const c
   Camera \e to's depth (mm) at its \e region pixels from camera \e from's depth map: each matched pixel's
   3-D point projected into \e to, splatted on the four pixels around it, the nearest surface kept.
 */
-cv::Mat warpedDepth(const cv::Mat &fromZ, const core::RigCamera &from, const core::RigCamera &to, const vpImage<unsigned char> &region)
+cv::Mat warpedDepth(const cv::Mat &fromZ, const core::PinholeCamera &from, const core::PinholeCamera &to, const vpImage<unsigned char> &region)
 {
   cv::Mat z(fromZ.size(), CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
   const vpHomogeneousMatrix cMc = to.hMc.inverse() * from.hMc;
@@ -195,7 +195,7 @@ cv::Mat warpedDepth(const cv::Mat &fromZ, const core::RigCamera &from, const cor
 }
 
 //! The flat build of one view, with an error that names the view.
-PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im, const core::RigCamera &cam,
+PhotoModelBuild viewRegion(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &im, const core::PinholeCamera &cam,
                            const StereoModelParams &p)
 {
   PhotoModelBuild b;

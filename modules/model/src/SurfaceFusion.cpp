@@ -86,7 +86,7 @@ double DepthEvidence::field(const Vec3 &X) const
   return std::min(surface, behind2);
 }
 
-long DepthEvidence::carve(VisualHull &g, const std::vector<const hull::HullCamera *> &cams) const
+long DepthEvidence::carve(VisualHull &g, const std::vector<const hull::HullView *> &cams) const
 {
   long removed = 0;
   for (int z = 0; z < g.n; ++z)
@@ -111,7 +111,7 @@ void DepthEvidence::counts(long &target, long &backdrop) const
   }
 }
 
-DepthEvidence measureStereo(const core::StereoRig &rig, const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks,
+DepthEvidence measureStereo(const core::StereoRig &rig, const std::vector<hull::HullView> &cams, const std::vector<vpImage<unsigned char>> &masks,
                             const std::vector<vpImage<vpRGBa>> &backgrounds, const std::vector<bool> &used, bool plainBackdrop,
                             const VisualHull &hull, const FusionParams &p)
 {
@@ -137,7 +137,7 @@ DepthEvidence measureStereo(const core::StereoRig &rig, const std::vector<hull::
   mp.minTexture = p.minTexture;
   mp.uniquenessPercent = p.uniquenessPercent;
   for (std::size_t i = 0; i + 1 < cams.size(); i += 2) {
-    const hull::HullCamera &L = cams[i], &R = cams[i + 1];
+    const hull::HullView &L = cams[i], &R = cams[i + 1];
     if (!used[static_cast<std::size_t>(L.view)])
       continue;
     // The depths the carved hull spans in this camera: its occupied box's corners.

@@ -11,7 +11,7 @@ namespace pm::model {
 
 using hull::Vec3;
 
-void depthBuffer(const hull::Pinhole &cam, const std::vector<Vec3> &pts, int radius, std::vector<float> &zbuf)
+void depthBuffer(const core::PinholeCamera::Projection &cam, const std::vector<Vec3> &pts, int radius, std::vector<float> &zbuf)
 {
   zbuf.assign(static_cast<std::size_t>(cam.w) * static_cast<std::size_t>(cam.h), std::numeric_limits<float>::infinity());
   for (const Vec3 &p : pts) {
@@ -30,7 +30,7 @@ void depthBuffer(const hull::Pinhole &cam, const std::vector<Vec3> &pts, int rad
   }
 }
 
-std::vector<core::ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n)
+std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n)
 {
   auto inMask = [&](double u, double v) {
     const int x = static_cast<int>(std::lround(u)), y = static_cast<int>(std::lround(v));
@@ -127,19 +127,29 @@ std::vector<core::ContourPoint> meshOutline(const hull::Pinhole &cam, const Hull
   return out;
 }
 
-core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
-                          const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
-                          std::vector<float> &zbuf)
+namespace {
+
+//! The hull's exact coverage in the view's image (255 where its surface is), from its depth map \e zbuf.
+cv::Mat coverageMask(const core::PinholeCamera::Projection &cam, const std::vector<float> &zbuf)
 {
-  constexpr long kEdgeKey = 1L << 40; // picks on an edge sort after the others, one per cell of their own
-  mesh.depthMap(cam, zbuf); // the hull's exact coverage and depth
   cv::Mat mask(cam.h, cam.w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < cam.h; ++y)
     for (int x = 0; x < cam.w; ++x)
       if (std::isfinite(zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]))
         mask.at<unsigned char>(y, x) = 255;
-  // S_in: visible points with a hue at least minInsidePx inside the outline (at the outline a pixel
-  // mixes target and background), one per cell of a grid over the image.
+  return mask;
+}
+
+/*!
+  S_in: visible points with a hue at least minInsidePx inside the outline (at the outline a pixel
+  mixes target and background), one per cell of a grid over the image and of each kind (on a hue
+  edge, elsewhere); edgeShare of nIn from the edges, the rest elsewhere, each thinned evenly.
+*/
+std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface,
+                                          const std::vector<Vec3> &mpts, const std::vector<bool> &edge, const AllAroundParams &p,
+                                          const cv::Mat &mask, const std::vector<float> &zbuf)
+{
+  constexpr long kEdgeKey = 1L << 40; // picks on an edge sort after the others, one per cell of their own
   cv::Mat inside;
   cv::distanceTransform(mask, inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   const double area = cv::countNonZero(mask);
@@ -173,11 +183,6 @@ core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<Surf
                      static_cast<float>(v)});
   }
   std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
-  core::ModelView view;
-  for (int k = 0; k < 3; ++k)
-    view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
-  // One point per cell of each kind (on a hue edge, elsewhere); edgeShare of nIn from the edges,
-  // the rest elsewhere, each thinned evenly.
   std::vector<core::ModelPoint> onEdge, plain;
   for (std::size_t j = 0; j < picks.size(); ++j) {
     if (j > 0 && picks[j].key == picks[j - 1].key)
@@ -197,13 +202,18 @@ core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<Surf
   const std::size_t nEdge = std::min(onEdge.size(), static_cast<std::size_t>(std::lround(p.edgeShare * p.nIn)));
   thin(onEdge, nEdge);
   thin(plain, static_cast<std::size_t>(p.nIn) - onEdge.size());
-  view.inner = std::move(onEdge);
-  view.inner.insert(view.inner.end(), plain.begin(), plain.end());
-  // The outline: the mesh's contour edges on the silhouette's boundary.
-  const std::vector<unsigned char> maskBytes(mask.datastart, mask.dataend);
-  view.contour = meshOutline(cam, mesh, maskBytes, p.nContour);
-  // S_out: along the mask's contours (every part of the outline, evenly), offset outward, at the
-  // outline's depth, where the strip falls off the target.
+  onEdge.insert(onEdge.end(), plain.begin(), plain.end());
+  return onEdge;
+}
+
+/*!
+  S_out: along the mask's contours (every part of the outline, evenly), offset outward, at the
+  outline's depth, where the strip falls off the target.
+*/
+std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection &cam, float bgHue, const AllAroundParams &p,
+                                          const cv::Mat &mask, const std::vector<float> &zbuf)
+{
+  std::vector<core::ModelPoint> outer;
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
   double total = 0;
@@ -244,11 +254,30 @@ core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<Surf
         if (ui >= 0 && vv >= 0 && ui < cam.w && vv < cam.h && mask.at<unsigned char>(vv, ui))
           continue; // in a concavity, on the target
         const Vec3 w = cam.backProject(su, sv, depth);
-        view.outer.push_back({static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]), bgHue, static_cast<float>(su),
-                              static_cast<float>(sv)});
+        outer.push_back({static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]), bgHue, static_cast<float>(su),
+                         static_cast<float>(sv)});
       }
     }
   }
+  return outer;
+}
+
+} // namespace
+
+core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
+                                const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
+                                std::vector<float> &zbuf)
+{
+  mesh.depthMap(cam, zbuf); // the hull's exact coverage and depth
+  const cv::Mat mask = coverageMask(cam, zbuf);
+  core::ModelView view;
+  for (int k = 0; k < 3; ++k)
+    view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
+  view.inner = sampleInner(cam, surface, mpts, edge, p, mask, zbuf);
+  // The outline: the mesh's contour edges on the silhouette's boundary.
+  const std::vector<unsigned char> maskBytes(mask.datastart, mask.dataend);
+  view.contour = meshOutline(cam, mesh, maskBytes, p.nContour);
+  view.outer = sampleOuter(cam, bgHue, p, mask, zbuf);
   return view;
 }
 

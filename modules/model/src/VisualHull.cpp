@@ -17,7 +17,7 @@ double VisualHull::volumeCm3() const { return static_cast<double>(occupied()) * 
 
 namespace hull {
 
-Vec3 silhouettesMeet(const std::vector<HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks)
+Vec3 silhouettesMeet(const std::vector<HullView> &cams, const std::vector<vpImage<unsigned char>> &masks)
 {
   double A[9] = {0}, b[3] = {0};
   for (std::size_t i = 0; i < cams.size(); ++i) {
@@ -41,10 +41,10 @@ Vec3 silhouettesMeet(const std::vector<HullCamera> &cams, const std::vector<vpIm
   return {x.at<double>(0), x.at<double>(1), x.at<double>(2)};
 }
 
-double field(const std::vector<const HullCamera *> &cams, const Vec3 &X)
+double field(const std::vector<const HullView *> &cams, const Vec3 &X)
 {
   double f = 1e6;
-  for (const hull::HullCamera *vc : cams) {
+  for (const hull::HullView *vc : cams) {
     double u, v, z;
     if (!vc->cam.project(X, u, v, z))
       return -1e6;
@@ -65,10 +65,10 @@ enum class CellClass
 };
 
 //! How the cube of half-diagonal \e radius (mm) at \e c stands against the silhouettes of \e cams.
-CellClass classify(const std::vector<const hull::HullCamera *> &cams, const Vec3 &c, double radius)
+CellClass classify(const std::vector<const hull::HullView *> &cams, const Vec3 &c, double radius)
 {
   bool allInside = true;
-  for (const hull::HullCamera *vc : cams) {
+  for (const hull::HullView *vc : cams) {
     double u, v, z;
     if (!vc->cam.project(c, u, v, z))
       return CellClass::Outside;
@@ -82,7 +82,7 @@ CellClass classify(const std::vector<const hull::HullCamera *> &cams, const Vec3
   return allInside ? CellClass::Inside : CellClass::Boundary;
 }
 
-void carve(const std::vector<const hull::HullCamera *> &cams, VisualHull &g, int x0, int y0, int z0, int size)
+void carve(const std::vector<const hull::HullView *> &cams, VisualHull &g, int x0, int y0, int z0, int size)
 {
   const double s = size * g.cell;
   const Vec3 c{g.origin[0] + (x0 + 0.5 * size) * g.cell, g.origin[1] + (y0 + 0.5 * size) * g.cell, g.origin[2] + (z0 + 0.5 * size) * g.cell};
@@ -108,7 +108,7 @@ void carve(const std::vector<const hull::HullCamera *> &cams, VisualHull &g, int
 
 } // namespace
 
-void hullBox(const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks, Vec3 &centre, double &radius)
+void hullBox(const std::vector<hull::HullView> &cams, const std::vector<vpImage<unsigned char>> &masks, Vec3 &centre, double &radius)
 {
   centre = hull::silhouettesMeet(cams, masks);
   radius = 0;
@@ -128,7 +128,7 @@ void hullBox(const std::vector<hull::HullCamera> &cams, const std::vector<vpImag
   radius = std::max(radius, 5.0);
 }
 
-std::vector<bool> agreeingViews(const std::vector<hull::HullCamera> &cams, std::size_t nViews, const Vec3 &origin, int n, double cell,
+std::vector<bool> agreeingViews(const std::vector<hull::HullView> &cams, std::size_t nViews, const Vec3 &origin, int n, double cell,
                                 double maxFraction, const std::vector<std::string> &names, std::vector<std::string> &why)
 {
   std::vector<bool> used(nViews, true);
@@ -140,7 +140,7 @@ std::vector<bool> agreeingViews(const std::vector<hull::HullCamera> &cams, std::
       for (int x = 0; x < n; ++x) {
         const Vec3 c{origin[0] + (x + 0.5) * cell, origin[1] + (y + 0.5) * cell, origin[2] + (z + 0.5) * cell};
         std::vector<int> by;
-        for (const hull::HullCamera &vc : cams) {
+        for (const hull::HullView &vc : cams) {
           if (!by.empty() && by.back() == vc.view)
             continue;
           double u, v, zz;
@@ -196,7 +196,7 @@ VisualHull hullGrid(const Vec3 &centre, double radius, double finestMm)
   return g;
 }
 
-void carveVisualHull(const std::vector<const hull::HullCamera *> &cams, VisualHull &g, double coarsestMm)
+void carveVisualHull(const std::vector<const hull::HullView *> &cams, VisualHull &g, double coarsestMm)
 {
   int levels = 0;
   while ((1 << levels) < g.n)

@@ -49,7 +49,7 @@ PreciseStage::PreciseStage(const core::StereoRig &rig, const core::PhotoModel &m
 {
   rig.validate();
   m_params.shape.prepare();
-  const core::RigCamera *rc[2] = {&rig.left, &rig.right};
+  const core::PinholeCamera *rc[2] = {&rig.left, &rig.right};
   int maxScale = 1;
   for (int s : m_params.scales)
     maxScale = std::max(maxScale, s);
@@ -57,14 +57,7 @@ PreciseStage::PreciseStage(const core::StereoRig &rig, const core::PhotoModel &m
     maxScale = std::max(maxScale, s);
   for (std::size_t k = 0; k < 2; ++k) {
     LineCamera &c = m_cams[k];
-    const vpHomogeneousMatrix cMh = rc[k]->cMh();
-    for (unsigned r = 0; r < 3; ++r) {
-      for (unsigned q = 0; q < 3; ++q)
-        c.R[3 * r + q] = cMh[r][q];
-      c.t[r] = 1e3 * cMh[r][3];
-    }
-    c.px = rc[k]->cam.get_px(), c.py = rc[k]->cam.get_py(), c.u0 = rc[k]->cam.get_u0(), c.v0 = rc[k]->cam.get_v0();
-    c.w = static_cast<int>(rc[k]->width), c.h = static_cast<int>(rc[k]->height);
+    static_cast<core::PinholeCamera::Projection &>(c) = rc[k]->projection();
     if (!rc[k]->distortion.isNone()) {
       m_undistort[k] = std::make_shared<core::UndistortMap>(*rc[k]);
       c.nearest = m_undistort[k]->nearest().data();

@@ -17,7 +17,7 @@ namespace pm::report {
 
 namespace {
 
-nlohmann::json cameraJson(const core::RigCamera &c)
+nlohmann::json cameraJson(const core::PinholeCamera &c)
 {
   return {{"px", c.cam.get_px()}, {"py", c.cam.get_py()}, {"u0", c.cam.get_u0()}, {"v0", c.cam.get_v0()},
           {"distortion", c.distortion.coefficients}, {"image_width", c.width}, {"image_height", c.height}};

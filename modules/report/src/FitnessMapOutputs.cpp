@@ -108,7 +108,7 @@ FitnessMapsResult writeFitnessMaps(const std::string &dir, const core::StereoFit
                                {"model_points", modelPoints},
                                {"fitness_at_truth", atTruth.fitness},
                                {"counts_at_truth", {{"left", countsJson(atTruth.countsLeft)}, {"right", countsJson(atTruth.countsRight)}}},
-                               {"kernel", core::StereoFitness::kernelName()},
+                               {"kernel", fit.kernelName()},
                                {"grids", grids},
                                {"time_s", r.seconds}};
   r.summaryJson = summary.dump(2) + "\n";

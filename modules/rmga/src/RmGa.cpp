@@ -32,7 +32,6 @@ void RmGaParams::validate() const
   check(tournament >= 1 && tournament <= population, "tournament size must lie in [1, population]");
   check(crossoverRate >= 0 && crossoverRate <= 1, "crossover rate must lie in [0, 1]");
   check(mutationPerBit >= 0 && mutationPerBit <= 1, "mutation rate per bit must lie in [0, 1]");
-  check(refineEvaluations >= 0, "refinement evaluations must be non-negative");
   check(restartGenerations >= 0, "restart generations must be non-negative");
 }
 
@@ -212,40 +211,6 @@ void RmGa::mutate(Genome &g)
     g.flip(k);
 }
 
-void RmGa::refine(FitnessFunction &f, double maxEvals, double &cost, long &candidates)
-{
-  // Pattern search on the genes of the best individual: +-step on each variable, halving the step.
-  auto bestIt = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
-  Individual best = *bestIt;
-  double used = 0;
-  m_trial.resize(1); // a member: the hot path allocates nothing after the first frame
-  for (int step = 16; step >= 1 && used < maxEvals; step /= 2) {
-    bool improved = true;
-    while (improved && used < maxEvals) {
-      improved = false;
-      for (std::size_t i = 0; i < 6 && used < maxEvals; ++i)
-        for (int dir : {1, -1}) {
-          if (used >= maxEvals)
-            break;
-          Genome g = best.genome;
-          const int v = static_cast<int>(g.gene[i]) + dir * step;
-          if (v < 0 || v > Genome::kMax)
-            continue;
-          g.gene[i] = static_cast<std::uint16_t>(v);
-          m_trial[0] = make(g);
-          evaluate(f, m_trial, 0, used, candidates);
-          if (m_trial[0].fitness > best.fitness) {
-            best = m_trial[0];
-            improved = true;
-            break;
-          }
-        }
-    }
-  }
-  cost += used;
-  *bestIt = best;
-}
-
 FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sameFrame)
 {
   if (!(budget.evaluations > 0) && !(budget.milliseconds > 0))
@@ -275,11 +240,9 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sam
   double evals = 0; // the work, in whole evaluations
   long candidates = 0;
   evaluate(f, m_pop, 0, evals, candidates);
-  const double refineEvals = m_params.refineEvaluations;
   const bool byEvals = budget.evaluations > 0;
-  const double gaEvals = byEvals ? std::max(0.0, static_cast<double>(budget.evaluations) - refineEvals) : 0.0;
-  const double perEvalMs = elapsedMs() / std::max(1.0, evals);
-  const double gaMs = byEvals ? 0.0 : budget.milliseconds - perEvalMs * refineEvals;
+  const double gaEvals = byEvals ? static_cast<double>(budget.evaluations) : 0.0;
+  const double gaMs = byEvals ? 0.0 : budget.milliseconds;
   const int n = m_params.population, lambda = n - m_params.elite;
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   std::uniform_int_distribution<int> cut(1, 6 * Genome::kBits - 1);
@@ -327,10 +290,7 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sam
       r.restarted = true;
     }
   }
-  // 8. Local refinement of the best.
-  if (refineEvals > 0)
-    refine(f, byEvals ? std::floor(static_cast<double>(budget.evaluations) - evals + 1e-9) : refineEvals, evals, candidates);
-  // 9. The best is the frame's pose.
+  // 8. The best is the frame's pose.
   const auto best = std::max_element(m_pop.begin(), m_pop.end(), lessFit);
   r.best = best->phi;
   r.fitness = best->fitness;

@@ -10,21 +10,16 @@ void StereoObjective::evaluate(const core::Phi *poses, std::size_t n, double *fi
     m_f.evaluate(poses, n, fitness);
     return;
   }
-  if (m_score == Score::Coarse) {
-    double cost[64];
-    for (std::size_t b = 0; b < n; b += 64) // no allocation: in blocks
-      m_f.evaluate(poses + b, std::min<std::size_t>(64, n - b), fitness + b, 1e300, cost);
-    return;
-  }
-  for (std::size_t i = 0; i < n; ++i)
-    fitness[i] = m_f.evaluateSmooth(poses[i]);
+  double cost[64]; // Coarse
+  for (std::size_t b = 0; b < n; b += 64) // no allocation: in blocks
+    m_f.evaluate(poses + b, std::min<std::size_t>(64, n - b), fitness + b, 1e300, cost);
 }
 
 void StereoObjective::evaluateOrReject(const core::Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost)
 {
   if (m_score == Score::Coarse)
     m_f.evaluate(poses, n, fitness, 1e300, cost); // every pose on the first share of points
-  else if (m_score == Score::Smooth || m_rejectMargin < 0 || !(rejectBelow > -1e300))
+  else if (m_rejectMargin < 0 || !(rejectBelow > -1e300))
     FitnessFunction::evaluateOrReject(poses, n, rejectBelow, fitness, cost);
   else
     m_f.evaluate(poses, n, fitness, rejectBelow - m_rejectMargin, cost);

@@ -527,9 +527,6 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &
                                std::uint8_t id, const std::uint32_t *tris, std::size_t count, int yBegin, int yEnd,
                                float *color, std::size_t colorOffset)
 {
-
-  const Texture &tex = *mesh.texture;
-  [[maybe_unused]] const float ambient = static_cast<float>(light.ambient);
   const int W = static_cast<int>(m_W), H = static_cast<int>(m_H);
   // Edge functions in fixed point (1/256 px) and 64-bit integers: exact, so two triangles that
   // share an edge cover each sample on it exactly once (top-left rule), with no crack between them.
@@ -624,42 +621,50 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &
       for (int q = 0; q < kAttrs; ++q)
         v0[q] = wa * va[q] + wb * vb[q] + wc * vc[q];
       const std::size_t row = static_cast<std::size_t>(y) * m_W + static_cast<std::size_t>(x0);
-      std::size_t first = row + static_cast<std::size_t>(lo);
-      const std::size_t end = row + static_cast<std::size_t>(hi);
-      float kf = 0.f;
-#if PM_RASTER_AVX2
-      if constexpr (!kShadow) {
-        if (useAvx2 && end - first + 1 >= kMinAvx2Span) {
-          const std::size_t done = shadeSpanAvx2(v0, d, end - first + 1, m_invDepth.data() + first, m_id.data() + first,
-                                                 color + kStride * (first - colorOffset), tex, mesh.useMask, id);
-          first += done;
-          kf = static_cast<float>(done);
-        }
-      }
-#endif
-      for (std::size_t idx = first; idx <= end; ++idx, kf += 1.f) {
-        const float w = v0[0] + kf * d[0];
-        if (w <= m_invDepth[idx])
-          continue;
-        const float iz = 1.f / w;
-        if (mesh.useMask && v0[3] + kf * d[3] > 0.f)
-          continue;
-        const float s = (v0[1] + kf * d[1]) * iz;
-        const float t = (v0[2] + kf * d[2]) * iz;
-        float diff = (v0[4] + kf * d[4]) * iz, spec = (v0[5] + kf * d[5]) * iz;
-        if constexpr (kShadow) {
-          const float su = (v0[6] + kf * d[6]) * iz;
-          const float sv = (v0[7] + kf * d[7]) * iz;
-          const float sd = (v0[8] + kf * d[8]) * iz;
-          const float lit = light.shadow->visibility(su, sv, sd);
-          diff = ambient + lit * diff;
-          spec = lit * spec;
-        }
-        m_invDepth[idx] = w;
-        m_id[idx] = id;
-        shadeTexel(tex, s, t, diff, spec, color + kStride * (idx - colorOffset));
-      }
+      shadeSpan<kShadow>(mesh, light, id, v0, d, row + static_cast<std::size_t>(lo), row + static_cast<std::size_t>(hi), color,
+                         colorOffset, useAvx2);
     }
+  }
+}
+
+template <bool kShadow>
+void Rasterizer::shadeSpan(const Mesh &mesh, const Lighting &light, std::uint8_t id, const float *v0, const float *d, std::size_t first,
+                           std::size_t end, float *color, std::size_t colorOffset, [[maybe_unused]] bool useAvx2)
+{
+  const Texture &tex = *mesh.texture;
+  [[maybe_unused]] const float ambient = static_cast<float>(light.ambient);
+  float kf = 0.f;
+#if PM_RASTER_AVX2
+  if constexpr (!kShadow) {
+    if (useAvx2 && end - first + 1 >= kMinAvx2Span) {
+      const std::size_t done = shadeSpanAvx2(v0, d, end - first + 1, m_invDepth.data() + first, m_id.data() + first,
+                                             color + kStride * (first - colorOffset), tex, mesh.useMask, id);
+      first += done;
+      kf = static_cast<float>(done);
+    }
+  }
+#endif
+  for (std::size_t idx = first; idx <= end; ++idx, kf += 1.f) {
+    const float w = v0[0] + kf * d[0];
+    if (w <= m_invDepth[idx])
+      continue;
+    const float iz = 1.f / w;
+    if (mesh.useMask && v0[3] + kf * d[3] > 0.f)
+      continue;
+    const float s = (v0[1] + kf * d[1]) * iz;
+    const float t = (v0[2] + kf * d[2]) * iz;
+    float diff = (v0[4] + kf * d[4]) * iz, spec = (v0[5] + kf * d[5]) * iz;
+    if constexpr (kShadow) {
+      const float su = (v0[6] + kf * d[6]) * iz;
+      const float sv = (v0[7] + kf * d[7]) * iz;
+      const float sd = (v0[8] + kf * d[8]) * iz;
+      const float lit = light.shadow->visibility(su, sv, sd);
+      diff = ambient + lit * diff;
+      spec = lit * spec;
+    }
+    m_invDepth[idx] = w;
+    m_id[idx] = id;
+    shadeTexel(tex, s, t, diff, spec, color + kStride * (idx - colorOffset));
   }
 }
 

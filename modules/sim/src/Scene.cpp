@@ -88,7 +88,7 @@ struct Scene::LensCache
 {
   std::mutex mutex;
   std::vector<std::shared_ptr<const LensWarp>> warps;
-  std::shared_ptr<const LensWarp> get(const core::RigCamera &camera)
+  std::shared_ptr<const LensWarp> get(const core::PinholeCamera &camera)
   {
     std::vector<double> key{camera.cam.get_px(), camera.cam.get_py(), camera.cam.get_u0(), camera.cam.get_v0(),
                             static_cast<double>(camera.width), static_cast<double>(camera.height)};
@@ -173,7 +173,7 @@ void Scene::setDistractor(const TargetShape &shape)
   m_distractor = buildTargetMesh(shape, m_params.meshStepMm, static_cast<float>(m_params.specular));
 }
 
-void Scene::render(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget) const
 {
   if (camera.distortion.isNone()) {
@@ -181,7 +181,7 @@ void Scene::render(Rasterizer &raster, const core::RigCamera &camera, const vpHo
     return;
   }
   const std::shared_ptr<const LensWarp> warp = m_lensCache->get(camera);
-  core::RigCamera ideal = camera;
+  core::PinholeCamera ideal = camera;
   ideal.cam = warp->canvasCam;
   ideal.width = warp->canvasW;
   ideal.height = warp->canvasH;
@@ -195,7 +195,7 @@ void Scene::render(Rasterizer &raster, const core::RigCamera &camera, const vpHo
   Rasterizer::addNoise(out, m_params.noiseSigma, hash64(m_params.seed ^ hash64(frame * 8 + stream)));
 }
 
-void Scene::renderIdeal(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                         unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const
 {
   if (raster.width() != camera.width || raster.height() != camera.height || raster.supersampling() != m_params.supersampling)
@@ -261,7 +261,7 @@ void Scene::renderIdeal(Rasterizer &raster, const core::RigCamera &camera, const
 StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const
 {
   StereoImages im;
-  const core::RigCamera *cams[2] = {&rig.left, &rig.right};
+  const core::PinholeCamera *cams[2] = {&rig.left, &rig.right};
   vpImage<vpRGBa> *outs[2] = {&im.left, &im.right};
   // The two cameras on two cores, through the pool the fitness uses: an OpenMP region here left
   // libgomp's worker spinning after it, on the core the tracker's helper needs (1,900 evaluations
@@ -290,7 +290,7 @@ void Scene::renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, 
 {
   if (!(distanceMm > 0))
     throw core::Error("photo distance must be positive");
-  const core::RigCamera photo{"photo", cam, w, h, vpHomogeneousMatrix(), core::LensDistortion()};
+  const core::PinholeCamera photo{"photo", cam, w, h, vpHomogeneousMatrix(), core::LensDistortion()};
   const vpHomogeneousMatrix hMo(0, 0, distanceMm * 1e-3, 0, 0, 0);
   Rasterizer r;
   render(r, photo, hMo, 0, 2, background, false);

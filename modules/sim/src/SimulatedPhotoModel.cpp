@@ -51,7 +51,7 @@ SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const co
   scene.render(r, rig.left, hMo, 0, 6, s.photo, true);
   if (!rig.left.distortion.isNone()) {
     // The model's pixels are the ideal image's: the true depth of that image (a pinhole render).
-    core::RigCamera ideal = rig.left;
+    core::PinholeCamera ideal = rig.left;
     ideal.distortion = core::LensDistortion();
     vpImage<vpRGBa> unused;
     scene.render(r, ideal, hMo, 0, 6, unused, true);

@@ -2,8 +2,10 @@
 
 #include <chrono>
 
+#include <cmath>
+#include <cstdint>
+
 #include "pm/rmga/RmGa.h"
-#include "pm/rmga/StereoObjective.h"
 
 namespace pm::tracker {
 
@@ -41,14 +43,43 @@ Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, 
 
 core::Phi nearestFitnessPeak(const core::StereoFitness &fitness, const core::Phi &start, const rmga::SearchSpace &space)
 {
-  rmga::StereoObjective obj(fitness);
-  rmga::RmGaParams gp;
-  gp.population = 2;
-  gp.elite = 1;
-  gp.refineEvaluations = 5000;
-  rmga::RmGa ga(space, gp);
-  ga.seedAround(start, 0.0);
-  return ga.evolve(obj, rmga::FrameBudget::evals(2 + gp.refineEvaluations)).best;
+  // A pattern search on RM-GA's genes (its grid of poses): +-step on each variable, the first gain
+  // taken, the step halved from 16 genes to 1 when nothing gains, 5,000 evaluations at most.
+  constexpr int kEvaluations = 5000;
+  auto score = [&](const rmga::Genome &g) {
+    const core::Phi phi = rmga::decode(g, space);
+    double F = 0;
+    fitness.evaluate(&phi, 1, &F);
+    return std::isfinite(F) ? F : -1e300;
+  };
+  rmga::Genome best = rmga::encode(space.clamp(start), space);
+  double bestF = score(best);
+  int used = 0;
+  for (int step = 16; step >= 1 && used < kEvaluations; step /= 2) {
+    bool improved = true;
+    while (improved && used < kEvaluations) {
+      improved = false;
+      for (std::size_t i = 0; i < 6 && used < kEvaluations; ++i)
+        for (int dir : {1, -1}) {
+          if (used >= kEvaluations)
+            break;
+          rmga::Genome g = best;
+          const int v = static_cast<int>(g.gene[i]) + dir * step;
+          if (v < 0 || v > rmga::Genome::kMax)
+            continue;
+          g.gene[i] = static_cast<std::uint16_t>(v);
+          const double F = score(g);
+          ++used;
+          if (F > bestF) {
+            best = g;
+            bestF = F;
+            improved = true;
+            break;
+          }
+        }
+    }
+  }
+  return rmga::decode(best, space);
 }
 
 } // namespace pm::tracker

@@ -18,108 +18,127 @@ void from_json(const json &j, ConfidenceKind &k) { k = confidenceKindFromString(
 
 namespace {
 constexpr const char *kFormat = "visp-photomodel-tracker";
+constexpr long long kVersion = 2; //!< the version written; version 1 (flat keys) is read too
 
-/*!
-  Every key of the file, once: \e v.value(key, field) for a value, \e v.section(key, f) for an
-  object whose keys f lists. The reader and the writer below both walk this list.
-*/
-template <typename V> void eachKey(V &v, TrackerParams &p)
+//! The refinement chain's section: its stages in their order.
+template <typename V> void refinementKeys(V &v, RefinementParams &r)
 {
-  v.value("budget_ms", p.budgetMs)
-      .value("budget_evaluations", p.budgetEvaluations)
-      .value("lock_quality", p.lockQuality)
-      .value("lock_confidence", p.lockConfidence)
-      .value("lost_quality", p.lostQuality)
-      .value("lost_frames", p.lostFrames)
-      .value("init_spread", p.initSpread)
-      .value("steady_budget_fraction", p.steadyBudgetFraction)
-      .value("steady_after_frames", p.steadyAfterFrames)
-      .value("steady_quality_drop", p.steadyQualityDrop)
-      .value("steady_hue_margin_px", p.steadyHueMarginPx)
-      .value("steady_escalation", p.steadyEscalation)
-      .value("smooth_refine_evaluations", p.smoothRefineEvaluations)
-      .value("smooth_refine_max_drop", p.smoothRefineMaxDrop)
-      .section("smooth_ascent", [&](V &a) {
-        a.value("max_evaluations", p.smoothAscent.maxEvaluations)
-            .value("first_step_px", p.smoothAscent.firstStepPx)
-            .value("max_step_px", p.smoothAscent.maxStepPx)
-            .value("min_step_px", p.smoothAscent.minStepPx)
-            .value("grow", p.smoothAscent.grow)
-            .value("shrink", p.smoothAscent.shrink);
-      })
-      .value("smooth_ascent_max_drop", p.smoothAscentMaxDrop)
-      .value("reject_margin_q", p.rejectMarginQ)
-      .value("coarse_search", p.coarseSearch)
-      .value("precise_stage", p.preciseStage)
-      .value("precise_max_drop_q", p.preciseMaxDropQ)
-      .value("precise_max_move_mm", p.preciseMaxMoveMm)
-      .value("precise_max_move_deg", p.preciseMaxMoveDeg)
-      .value("precise_restart_mm", p.preciseRestartMm)
-      .value("precise_restart_deg", p.preciseRestartDeg)
-      .section("precise", [&](V &q) {
-        q.value("lines", p.precise.lines)
-            .value("scales", p.precise.scales)
-            .value("sigmas_px", p.precise.sigmasPx)
-            .value("near_scales", p.precise.nearScales)
-            .value("near_sigmas_px", p.precise.nearSigmasPx)
-            .value("interior_max_scale", p.precise.interiorMaxScale)
-            .value("updates_per_scale", p.precise.updatesPerScale)
-            .value("function_length", p.precise.shape.functionLength)
-            .value("distribution_length", p.precise.shape.distributionLength)
-            .value("amplitude", p.precise.shape.amplitude)
-            .value("slope", p.precise.shape.slope)
-            .value("min_continuous", p.precise.minContinuous)
-            .value("regularisation_rotation", p.precise.regularisationRotation)
-            .value("regularisation_translation", p.precise.regularisationTranslation)
-            .value("learning_rate", p.precise.learningRate)
-            .value("histogram_skip_px", p.precise.histogramSkipPx)
-            .value("histogram_max_px", p.precise.histogramMaxPx)
-            .value("min_lines", p.precise.minLines)
-            .value("interior_points", p.precise.interiorPoints)
-            .value("interior_sigma", p.precise.interiorSigma)
-            .value("interior_weight", p.precise.interiorWeight);
-      });
-  for (const auto &named : {std::pair<const char *, TiltFilterParams *>{"tilt_filter", &p.tiltFilter},
-                             std::pair<const char *, TiltFilterParams *>{"tilt_filter_all_around", &p.tiltFilterAllAround}}) {
+  precise::PreciseParams &q = r.precise.stage;
+  v.section("precise", [&](V &s) {
+     s.value("enabled", r.precise.enabled)
+         .value("max_drop_q", r.precise.maxDropQ)
+         .value("max_move_mm", r.precise.maxMoveMm)
+         .value("max_move_deg", r.precise.maxMoveDeg)
+         .value("restart_mm", r.precise.restartMm)
+         .value("restart_deg", r.precise.restartDeg)
+         .section("stage", [&](V &t) {
+           t.value("lines", q.lines)
+               .value("scales", q.scales)
+               .value("sigmas_px", q.sigmasPx)
+               .value("near_scales", q.nearScales)
+               .value("near_sigmas_px", q.nearSigmasPx)
+               .value("interior_max_scale", q.interiorMaxScale)
+               .value("updates_per_scale", q.updatesPerScale)
+               .value("function_length", q.shape.functionLength)
+               .value("distribution_length", q.shape.distributionLength)
+               .value("amplitude", q.shape.amplitude)
+               .value("slope", q.shape.slope)
+               .value("min_continuous", q.minContinuous)
+               .value("regularisation_rotation", q.regularisationRotation)
+               .value("regularisation_translation", q.regularisationTranslation)
+               .value("learning_rate", q.learningRate)
+               .value("histogram_skip_px", q.histogramSkipPx)
+               .value("histogram_max_px", q.histogramMaxPx)
+               .value("min_lines", q.minLines)
+               .value("interior_points", q.interiorPoints)
+               .value("interior_sigma", q.interiorSigma)
+               .value("interior_weight", q.interiorWeight);
+         });
+   }).section("ascent", [&](V &a) {
+    a.value("max_evaluations", r.ascent.climb.maxEvaluations)
+        .value("first_step_px", r.ascent.climb.firstStepPx)
+        .value("max_step_px", r.ascent.climb.maxStepPx)
+        .value("min_step_px", r.ascent.climb.minStepPx)
+        .value("grow", r.ascent.climb.grow)
+        .value("shrink", r.ascent.climb.shrink)
+        .value("max_drop", r.ascent.maxDrop);
+  });
+  for (const auto &named : {std::pair<const char *, TiltFilterParams *>{"tilt_filter", &r.tiltFilter},
+                             std::pair<const char *, TiltFilterParams *>{"tilt_filter_all_around", &r.tiltFilterAllAround}}) {
     TiltFilterParams *filter = named.second; // not a structured binding: a lambda may not capture one in C++17
     v.section(named.first, [filter](V &t) { t.value("alpha", filter->alpha).value("beta", filter->beta).value("gate_deg", filter->gateDeg); });
   }
-  v.value("verify_evaluations", p.verifyEvaluations)
-      .value("verify_budget_fraction", p.verifyBudgetFraction)
-      .value("verify_margin", p.verifyMargin)
-      .value("verify_switch_margin", p.verifySwitchMargin)
-      .value("verify_far_mm", p.verifyFarMm)
-      .value("verify_far_deg", p.verifyFarDeg)
-      .value("verify_same_object_mm", p.verifySameObjectMm)
-      .value("reverify_after_frames", p.reverifyAfterFrames)
-      .value("reverify_below_confidence", p.reverifyBelowConfidence)
-      .section("confidence", [&](V &c) {
-        c.value("kind", p.confidence.kind).value("weights", p.confidence.weights).value("bias", p.confidence.bias).value("threshold", p.confidence.threshold);
+}
+
+/*!
+  Every key of the file (version 2), once, in a section per part of the tracker: \e v.value(key, field)
+  for a value, \e v.section(key, f) for an object whose keys f lists. The reader and the writer below
+  both walk this list.
+*/
+template <typename V> void eachKey(V &v, TrackerParams &p)
+{
+  v.section("fitness", [&](V &q) {
+     q.value("in_tol_deg", p.fitness.inTolDeg)
+         .value("in_bg_tol_deg", p.fitness.inBgTolDeg)
+         .value("out_bg_tol_deg", p.fitness.outBgTolDeg)
+         .value("in_match", p.fitness.inMatch)
+         .value("in_background", p.fitness.inBackground)
+         .value("in_other", p.fitness.inOther)
+         .value("out_background", p.fitness.outBackground)
+         .value("out_other", p.fitness.outOther)
+         .value("off_image", p.fitness.offImage)
+         .value("min_saturation", p.fitness.minSaturation);
+   })
+      .section("search", [&](V &s) {
+        s.value("budget_evaluations", p.search.budgetEvaluations)
+            .value("budget_ms", p.search.budgetMs)
+            .value("reject_margin_q", p.search.rejectMarginQ)
+            .value("coarse", p.search.coarse)
+            .value("init_spread", p.search.initSpread)
+            .section("space", [&](V &w) { w.value("lo", p.search.space.lo).value("hi", p.search.space.hi); })
+            .section("rmga", [&](V &g) {
+              g.value("population", p.search.ga.population)
+                  .value("elite", p.search.ga.elite)
+                  .value("tournament", p.search.ga.tournament)
+                  .value("crossover_rate", p.search.ga.crossoverRate)
+                  .value("mutation_per_bit", p.search.ga.mutationPerBit)
+                  .value("predict_motion", p.search.ga.predictMotion)
+                  .value("restart_generations", p.search.ga.restartGenerations)
+                  .value("seed", p.search.ga.seed);
+            });
       })
-      .section("uncertainty", [&](V &u) { u.value("scale", p.uncertainty.scale).value("floor", p.uncertainty.floor); })
-      .section("search_space", [&](V &s) { s.value("lo", p.space.lo).value("hi", p.space.hi); })
-      .section("rmga", [&](V &g) {
-        g.value("population", p.ga.population)
-            .value("elite", p.ga.elite)
-            .value("tournament", p.ga.tournament)
-            .value("crossover_rate", p.ga.crossoverRate)
-            .value("mutation_per_bit", p.ga.mutationPerBit)
-            .value("predict_motion", p.ga.predictMotion)
-            .value("refine_evaluations", p.ga.refineEvaluations)
-            .value("restart_generations", p.ga.restartGenerations)
-            .value("seed", p.ga.seed);
+      .section("lock", [&](V &l) {
+        l.value("quality", p.lock.quality)
+            .value("confidence", p.lock.confidence)
+            .value("lost_quality", p.lock.lostQuality)
+            .value("lost_frames", p.lock.lostFrames);
       })
-      .section("fitness", [&](V &q) {
-        q.value("in_tol_deg", p.fitness.inTolDeg)
-            .value("in_bg_tol_deg", p.fitness.inBgTolDeg)
-            .value("out_bg_tol_deg", p.fitness.outBgTolDeg)
-            .value("in_match", p.fitness.inMatch)
-            .value("in_background", p.fitness.inBackground)
-            .value("in_other", p.fitness.inOther)
-            .value("out_background", p.fitness.outBackground)
-            .value("out_other", p.fitness.outOther)
-            .value("off_image", p.fitness.offImage)
-            .value("min_saturation", p.fitness.minSaturation);
+      .section("steady", [&](V &s) {
+        s.value("budget_fraction", p.steady.budgetFraction)
+            .value("after_frames", p.steady.afterFrames)
+            .value("quality_drop", p.steady.qualityDrop)
+            .value("escalation", p.steady.escalation)
+            .value("hue_margin_px", p.steady.hueMarginPx);
+      })
+      .section("verifier", [&](V &c) {
+        c.value("evaluations", p.verifier.evaluations)
+            .value("budget_fraction", p.verifier.budgetFraction)
+            .value("margin", p.verifier.margin)
+            .value("switch_margin", p.verifier.switchMargin)
+            .value("far_mm", p.verifier.farMm)
+            .value("far_deg", p.verifier.farDeg)
+            .value("same_object_mm", p.verifier.sameObjectMm)
+            .value("reverify_after_frames", p.verifier.reverifyAfterFrames)
+            .value("reverify_below_confidence", p.verifier.reverifyBelowConfidence);
+      })
+      .section("refinement", [&](V &r) { refinementKeys(r, p.refinement); })
+      .section("judgement", [&](V &j) {
+        j.section("confidence", [&](V &c) {
+           c.value("kind", p.judgement.confidence.kind)
+               .value("weights", p.judgement.confidence.weights)
+               .value("bias", p.judgement.confidence.bias)
+               .value("threshold", p.judgement.confidence.threshold);
+         }).section("uncertainty", [&](V &u) { u.value("scale", p.judgement.uncertainty.scale).value("floor", p.judgement.uncertainty.floor); });
       });
 }
 
@@ -188,30 +207,99 @@ public:
   }
   json j = json::object();
 };
+
+/*!
+  A file of version 1 (flat keys, before the tracker's parts had their sections) as version 2:
+  each key moved to its part's section. The keys of the refiners that are gone (the local simplex,
+  RM-GA's own refinement) are dropped; \e notice says so. An unknown key stays where it is, for the
+  reader to refuse.
+*/
+json fromVersion1(json j, std::string &notice)
+{
+  static const std::vector<std::pair<const char *, std::vector<const char *>>> moves = {
+      {"budget_ms", {"search", "budget_ms"}}, {"budget_evaluations", {"search", "budget_evaluations"}},
+      {"reject_margin_q", {"search", "reject_margin_q"}}, {"coarse_search", {"search", "coarse"}},
+      {"init_spread", {"search", "init_spread"}}, {"search_space", {"search", "space"}}, {"rmga", {"search", "rmga"}},
+      {"lock_quality", {"lock", "quality"}}, {"lock_confidence", {"lock", "confidence"}},
+      {"lost_quality", {"lock", "lost_quality"}}, {"lost_frames", {"lock", "lost_frames"}},
+      {"steady_budget_fraction", {"steady", "budget_fraction"}}, {"steady_after_frames", {"steady", "after_frames"}},
+      {"steady_quality_drop", {"steady", "quality_drop"}}, {"steady_escalation", {"steady", "escalation"}},
+      {"steady_hue_margin_px", {"steady", "hue_margin_px"}},
+      {"verify_evaluations", {"verifier", "evaluations"}}, {"verify_budget_fraction", {"verifier", "budget_fraction"}},
+      {"verify_margin", {"verifier", "margin"}}, {"verify_switch_margin", {"verifier", "switch_margin"}},
+      {"verify_far_mm", {"verifier", "far_mm"}}, {"verify_far_deg", {"verifier", "far_deg"}},
+      {"verify_same_object_mm", {"verifier", "same_object_mm"}},
+      {"reverify_after_frames", {"verifier", "reverify_after_frames"}},
+      {"reverify_below_confidence", {"verifier", "reverify_below_confidence"}},
+      {"precise_stage", {"refinement", "precise", "enabled"}}, {"precise_max_drop_q", {"refinement", "precise", "max_drop_q"}},
+      {"precise_max_move_mm", {"refinement", "precise", "max_move_mm"}},
+      {"precise_max_move_deg", {"refinement", "precise", "max_move_deg"}},
+      {"precise_restart_mm", {"refinement", "precise", "restart_mm"}},
+      {"precise_restart_deg", {"refinement", "precise", "restart_deg"}}, {"precise", {"refinement", "precise", "stage"}},
+      {"smooth_ascent", {"refinement", "ascent"}}, {"smooth_ascent_max_drop", {"refinement", "ascent", "max_drop"}},
+      {"tilt_filter", {"refinement", "tilt_filter"}}, {"tilt_filter_all_around", {"refinement", "tilt_filter_all_around"}},
+      {"confidence", {"judgement", "confidence"}}, {"uncertainty", {"judgement", "uncertainty"}}};
+  std::vector<std::string> dropped;
+  for (const char *gone : {"smooth_refine_evaluations", "smooth_refine_max_drop"})
+    if (j.erase(gone) > 0)
+      dropped.emplace_back(gone);
+  if (j.contains("rmga") && j["rmga"].is_object() && j["rmga"].erase("refine_evaluations") > 0)
+    dropped.emplace_back("rmga.refine_evaluations");
+  json out = json::object();
+  for (const auto &[from, path] : moves) {
+    if (!j.contains(from))
+      continue;
+    json *at = &out;
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)
+      at = &(*at)[path[k]];
+    json &to = (*at)[path.back()];
+    if (to.is_object() && j[from].is_object())
+      to.update(j[from]); // smooth_ascent's keys beside smooth_ascent_max_drop
+    else
+      to = j[from];
+    j.erase(from);
+  }
+  for (auto it = j.begin(); it != j.end(); ++it) { // format, version and fitness keep their place
+    if (it.key() != "format" && it.key() != "version" && it.key() != "fitness")
+      throw core::Error("unknown key \"" + it.key() + "\"");
+    out[it.key()] = it.value();
+  }
+  notice = "version 1 (flat keys) read as version 2 (a section per part of the tracker, see docs/file-formats.md)";
+  if (!dropped.empty()) {
+    notice += "; ignored, their refiners are gone:";
+    for (const std::string &d : dropped)
+      notice += " " + d;
+  }
+  return out;
+}
 } // namespace
 
-TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults)
+TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults, std::string *notice)
 {
   std::ifstream f(path);
   if (!f)
     throw core::Error("tracker configuration '" + path + "' does not exist or cannot be read");
   TrackerParams p = defaults;
   try {
-    const json j = json::parse(f);
+    json j = json::parse(f);
     if (!j.is_object() || j.value("format", "") != kFormat)
       throw core::Error(std::string("\"format\" must be \"") + kFormat + "\"");
     const json version = j.value("version", json());
-    if (!version.is_number_integer() || version.get<long long>() != 1)
-      throw core::Error("unsupported \"version\" (this program reads version 1)");
+    if (!version.is_number_integer() || (version.get<long long>() != 1 && version.get<long long>() != kVersion))
+      throw core::Error("unsupported \"version\" (this program reads versions 1 and 2)");
+    std::string upgraded;
+    if (version.get<long long>() == 1)
+      j = fromVersion1(std::move(j), upgraded);
     Reader top(j, "");
     top.known("format").known("version");
     eachKey(top, p);
     top.done();
-    const json &c = j.value("confidence", json::object());
+    const json &c = j.value("judgement", json::object()).value("confidence", json::object());
     if (c.is_object() && c.contains("weights") && !c.contains("kind"))
-      p.confidence.kind = ConfidenceKind::Custom; // weights written by hand are meant to be used
-
+      p.judgement.confidence.kind = ConfidenceKind::Custom; // weights written by hand are meant to be used
     p.validate();
+    if (notice)
+      *notice = upgraded.empty() ? std::string() : "tracker configuration '" + path + "': " + upgraded;
   } catch (const core::Error &e) {
     throw core::Error("tracker configuration '" + path + "': " + e.what());
   } catch (const json::exception &e) {
@@ -224,7 +312,7 @@ std::string trackerConfigToJson(const TrackerParams &params)
 {
   TrackerParams p = params; // eachKey takes the fields by reference; the writer only reads them
   Writer w;
-  w.value("format", kFormat).value("version", 1);
+  w.value("format", kFormat).value("version", kVersion);
   eachKey(w, p);
   return w.j.dump(2) + "\n";
 }

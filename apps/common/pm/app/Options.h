@@ -38,7 +38,7 @@ void addFitnessOptions(CLI::App &app, core::FitnessParams &p);
 /*!
   The tracker's options: --config FILE (JSON, see TrackerConfigFile.h), then --budget-ms,
   --budget-evals, --population, --elite, --tournament, --crossover-rate, --mutation-per-bit,
-  --predict / --no-predict, --refine-evals, --restart-generations, --ga-seed, --lock-quality,
+  --predict / --no-predict, --restart-generations, --ga-seed, --lock-quality,
   --lost-quality; an option given on the command line overrides the file.
 */
 class TrackerOptions

@@ -54,7 +54,7 @@ struct ConfidenceStudyParams
   bool quick = false;          //!< confidencePasses(true)
   bool allAround = false;      //!< every run's model is the all-around one
   bool stereo = false;         //!< every run's model is the stereo one (unless allAround)
-  bool precise = true;         //!< the tracker's precise stage (TrackerParams::preciseStage; all-around models only)
+  bool precise = true;         //!< the tracker's precise stage (tracker::PreciseRefinementParams::enabled; all-around models only)
   std::string dataDir;         //!< where a pass's rig file is found
 };
 

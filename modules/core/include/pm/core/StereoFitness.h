@@ -245,30 +245,16 @@ public:
   bool hasDepth() const { return m_hasDepth; }
   //! The parameters given to the constructor.
   const FitnessParams &params() const { return m_params; }
-  //! "avx2" or "scalar": the kernel this machine runs.
-  static const char *kernelName();
-  //! Forces the scalar kernel (for tests that compare both); process-wide.
-  static void forceScalar(bool on);
-
+  //! "avx2" or "scalar": the kernel this fitness runs (AVX2 where the CPU has it, unless useScalarKernel()).
+  const char *kernelName() const;
   /*!
-    A camera as the kernels see it: cMh in mm, and the intrinsics of its ideal (pinhole) image.
+    The scalar kernels instead of the AVX2 ones even where the CPU has them (\e on), or back to the
+    machine's best: for the tests and benchmarks that compare them (F is the same to the bit).
   */
-  struct Camera
-  {
-    double cMh[12];        //!< cMh, the hand frame's pose in the camera frame: row-major 3x4 [R | t], translation in mm
-    /*! \var StereoFitness::Camera::px
-        \brief focal length along u (px)
-        \var StereoFitness::Camera::py
-        \brief focal length along v (px)
-        \var StereoFitness::Camera::u0
-        \brief principal point, column (px) */
-    float px, py, u0, v0;  //!< principal point, row (px)
-    /*! \var StereoFitness::Camera::width
-        \brief image width (px) */
-    int width, height;     //!< image height (px)
-  };
-  //! Camera \e camera (0 left, 1 right) as the kernels see it: cMh, intrinsics, image size.
-  const Camera &camera(int camera) const { return m_cams[camera]; }
+  void useScalarKernel(bool on);
+
+  //! Camera \e camera (0 left, 1 right) placed in the hand frame, as the kernels read it: cMh (mm), intrinsics, image size.
+  const PinholeCamera::Projection &camera(int camera) const { return m_cams[camera]; }
 
 private:
   void check(const Phi &phi) const;
@@ -303,7 +289,7 @@ private:
   double stereoScore(const Phi &phi) const { return 0.5 * (score(countCamera(0, phi)) + score(countCamera(1, phi))); }
 
   FitnessParams m_params;
-  Camera m_cams[2];
+  PinholeCamera::Projection m_cams[2]; //!< the rig's cameras in the hand frame
   std::size_t m_nIn = 0, m_nOut = 0;
   // Model points, structure of arrays: x, y, z (mm), hue (tenths of a degree).
   std::vector<float> m_x, m_y, m_z;
@@ -327,6 +313,7 @@ private:
   std::array<vpCameraParameters, 2> m_intrinsics;
   std::array<std::vector<std::int64_t>, 2> m_pixelScratch; //!< addHueUnder's pixels per camera (kept: no allocation once grown)
   bool m_hasImages = false;
+  bool m_avx2 = false;     //!< the AVX2 kernels run (the CPU has them and useScalarKernel() did not say otherwise)
   bool m_hasDepth = false; //!< some point has z != 0 (the 3-D model); else the flat model's exact kernel
 };
 

@@ -1,8 +1,8 @@
 #pragma once
 /*!
   \file StereoRig.h
-  The stereo rig on the robot's hand: two cameras (ViSP's vpCameraParameters for the pinhole
-  part, a LensDistortion for the lens) and where each sits on the hand.
+  The stereo rig on the robot's hand: two cameras (PinholeCamera.h: the intrinsics, the image size,
+  the lens) and where each sits on the hand.
 
   Frames: the hand frame H has z pointing forward (toward the target), x to the right and
   y down, like a camera frame, with its origin midway between the two optical centres.
@@ -13,24 +13,9 @@
 
 #include <visp3/core/vpCameraParameters.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
-#include "pm/core/LensDistortion.h"
+#include "pm/core/PinholeCamera.h"
 
 namespace pm::core {
-
-/*!
-  One camera of the rig: its intrinsics, image size, pose on the hand (hMc) and lens.
-*/
-struct RigCamera
-{
-  std::string name;             //!< "left" / "right"
-  vpCameraParameters cam;       //!< intrinsics of the ideal (pinhole) image: px, py, u0, v0
-  unsigned width = 0;           //!< image width in pixels
-  unsigned height = 0;          //!< image height in pixels
-  vpHomogeneousMatrix hMc;      //!< camera pose in the hand frame (metres)
-  LensDistortion distortion;    //!< the lens (none: a pinhole camera, the raw image is the ideal one)
-  /*! The hand frame's pose in the camera frame, hMc's inverse (metres). */
-  vpHomogeneousMatrix cMh() const { return hMc.inverse(); }
-};
 
 /*!
   The two cameras on the robot's hand (see StereoRig.h for the frames). A plain value: StereoFitness
@@ -49,7 +34,7 @@ class StereoRig
 public:
   /*! \var StereoRig::left
       \brief the left camera (camera 0 of StereoFitness) */
-  RigCamera left, right; //!< the right camera (camera 1 of StereoFitness)
+  PinholeCamera left, right; //!< the right camera (camera 1 of StereoFitness)
 
   /*!
     The lab's symmetric rig: both cameras with intrinsics \e cam and size w x h, optical
@@ -68,9 +53,8 @@ public:
   vpHomogeneousMatrix cLMcR() const { return left.hMc.inverse() * right.hMc; }
 
   /*!
-    Throws pm::core::Error naming the camera and the value if a focal length px, py is not positive, a
-    principal point u0, v0 is negative, an intrinsic is not finite, an image size is zero, a pose
-    is not rigid, or a lens distortion is invalid (LensDistortion::validate()).
+    Throws pm::core::Error naming the camera and the value if either camera is invalid
+    (PinholeCamera::validate()).
   */
   void validate() const;
 };

@@ -25,14 +25,14 @@ namespace pm::core {
 
 /*!
   Where each pixel of a camera's ideal (pinhole) image is seen in its raw image (see UndistortMap.h
-  for an example). Built from a copy of what it needs: the RigCamera may go afterwards. A camera
+  for an example). Built from a copy of what it needs: the PinholeCamera may go afterwards. A camera
   without distortion gets the identity map.
 */
 class UndistortMap
 {
 public:
   //! Throws pm::core::Error if the camera's distortion is invalid (LensDistortion::validate).
-  explicit UndistortMap(const RigCamera &camera);
+  explicit UndistortMap(const PinholeCamera &camera);
   //! Width of both images, the camera's (pixels).
   unsigned width() const { return m_w; }
   //! Height of both images, the camera's (pixels).

@@ -10,24 +10,23 @@
   - ROS camera_info YAML: camera_matrix and distortion_coefficients as {rows, cols, data},
     distortion_model plumb_bob or rational_polynomial.
 
-      const pm::io::CameraIntrinsics c = pm::io::readCameraFile("left.yml", "left", 640, 480);
-      rig.left.cam = c.cam;  rig.left.distortion = c.distortion;
+      const pm::io::CameraFile c = pm::io::readCameraFile("left.yml", "left", 640, 480);
+      rig.left.cam = c.camera.cam;  rig.left.distortion = c.camera.distortion;
 */
 #include <string>
 #include <visp3/core/vpCameraParameters.h>
-#include "pm/core/LensDistortion.h"
-#include "pm/core/StereoRig.h"
+#include "pm/core/PinholeCamera.h"
 
 namespace pm::io {
 
-//! One camera's intrinsics as readCameraFile() found them in a file.
-struct CameraIntrinsics
+/*!
+  What readCameraFile() found in a file: the camera (its name the one asked for, its intrinsics, its
+  lens, its image size: the \e w, \e h asked for, else the file's, 0 if it gives none; its pose the
+  identity) and the file's format.
+*/
+struct CameraFile
 {
-  vpCameraParameters cam;     //!< px, py, u0, v0 (pinhole part)
-  core::LensDistortion distortion;  //!< OpenCV's model; none for a pinhole
-  //! \var width
-  //! Image width (px): the \e w asked for, else the file's (0 if it gives none).
-  unsigned width = 0, height = 0; //!< image height (px): the \e h asked for, else the file's (0 if it gives none)
+  core::PinholeCamera camera; //!< the camera the file describes
   std::string format;         //!< "visp-xml", "opencv", "ros"
 };
 
@@ -44,15 +43,15 @@ struct CameraIntrinsics
 
 int main()
 {
-  const pm::io::CameraIntrinsics c = pm::io::readCameraFile("left.yml", "left", 640, 480);
-  std::cout << c.format << ": " << c.cam << "distortion: " << c.distortion.coefficients.size() << " coefficients"
+  const pm::io::CameraFile c = pm::io::readCameraFile("left.yml", "left", 640, 480);
+  std::cout << c.format << ": " << c.camera.cam << "distortion: " << c.camera.distortion.coefficients.size() << " coefficients"
             << std::endl;
 }
   \endcode
 */
-CameraIntrinsics readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h);
+CameraFile readCameraFile(const std::string &path, const std::string &name, unsigned w, unsigned h);
 
 //! Writes \e camera's intrinsics and distortion as an OpenCV YAML file (cv::FileStorage). Throws pm::core::Error.
-void writeOpenCvCameraFile(const core::RigCamera &camera, const std::string &path);
+void writeOpenCvCameraFile(const core::PinholeCamera &camera, const std::string &path);
 
 } // namespace pm::io

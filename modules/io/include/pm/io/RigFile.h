@@ -57,6 +57,6 @@ void saveRig(const core::StereoRig &rig, const std::string &rigJsonPath, const s
              const std::string &description = "");
 
 //! ViSP's one-coefficient model (kud, kdu) of \e camera's lens: exact for k1 alone, else a least-squares fit over the image.
-vpCameraParameters vispDistortionModel(const core::RigCamera &camera);
+vpCameraParameters vispDistortionModel(const core::PinholeCamera &camera);
 
 } // namespace pm::io

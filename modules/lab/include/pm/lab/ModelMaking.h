@@ -29,7 +29,7 @@ namespace pm::lab {
   the outputs' photos are the corrected ones. Throws pm::core::Error if the photos differ in size
   (naming \e backgroundName and \e photoName) or the builder refuses them.
 */
-report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const core::RigCamera &camera,
+report::ModelOutputs flatModelFromPhotos(vpImage<vpRGBa> background, vpImage<vpRGBa> photo, const core::PinholeCamera &camera,
                                          double distanceMm, const model::PhotoModelParams &params,
                                          const std::string &backgroundName, const std::string &photoName);
 

@@ -22,8 +22,8 @@ namespace pm::lab {
 //! A camera's defocus: a Gaussian blur of sigma \e px (pixels, OpenCV; 0 or less: the image as it is).
 vpImage<vpRGBa> defocused(const vpImage<vpRGBa> &image, double px);
 
-//! One camera's hand-eye result.
-struct HandEyeCamera
+//! One camera's hand-eye result: its pose on the hand as calibrated, and how far it lies from the rig file's.
+struct HandEyeEstimate
 {
   vpHomogeneousMatrix hMc;       //!< the camera's pose on the hand, as calibrated (metres)
   double translationErrorMm = 0; //!< its distance from the rig file's hMc (mm)
@@ -33,8 +33,8 @@ struct HandEyeCamera
 //! The hand-eye calibration of both cameras.
 struct HandEyeResult
 {
-  HandEyeCamera left;            //!< the left camera's
-  HandEyeCamera right;           //!< the right camera's
+  HandEyeEstimate left;            //!< the left camera's
+  HandEyeEstimate right;           //!< the right camera's
   std::size_t poses = 0;         //!< arm poses used (the board seen well by both cameras)
 };
 

@@ -79,14 +79,14 @@ struct HullMesh
     (pixel centres against the projected triangles; every face, so that a fold of the mesh's small
     noise leaves no hole).
   */
-  void depthMap(const hull::Pinhole &cam, std::vector<float> &zbuf) const;
+  void depthMap(const core::PinholeCamera::Projection &cam, std::vector<float> &zbuf) const;
 };
 
 /*!
   The mesh of \e hull's surface (see HullMesh.h): the field of \e cams sampled at the corners around
   the carved cells. Throws pm::core::Error when the surface has no face.
 */
-HullMesh meshVisualHull(const VisualHull &hull, const std::vector<const hull::HullCamera *> &cams);
+HullMesh meshVisualHull(const VisualHull &hull, const std::vector<const hull::HullView *> &cams);
 
 /*!
   The same from any field sampled on \e hull's corners: \e corner(x, y, z) gives the field at grid

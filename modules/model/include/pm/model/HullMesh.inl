@@ -7,14 +7,25 @@
 
 namespace pm::model {
 
+namespace nets {
+
+//! The index of grid corner (\e x, \e y, \e z) of a grid of \e n cells a side.
+inline std::size_t cornerIndex(int n, int x, int y, int z)
+{
+  const std::size_t nc = static_cast<std::size_t>(n) + 1;
+  return (static_cast<std::size_t>(z) * nc + static_cast<std::size_t>(y)) * nc + static_cast<std::size_t>(x);
+}
+
+/*!
+  The field at the corners of every cell whose occupancy differs from a face neighbour's, on both
+  sides, and of their neighbours (the field's zero level may pass a cell beside the carved
+  boundary); NaN at the other corners.
+*/
 template <class Field>
-HullMesh meshField(const VisualHull &g, Field field)
+std::vector<float> fieldNearBoundary(const VisualHull &g, Field &field)
 {
   const int n = g.n, nc = n + 1;
-  auto cornerIdx = [nc](int x, int y, int z) {
-    return (static_cast<std::size_t>(z) * static_cast<std::size_t>(nc) + static_cast<std::size_t>(y)) * static_cast<std::size_t>(nc) +
-           static_cast<std::size_t>(x);
-  };
+  auto cornerIdx = [n](int x, int y, int z) { return cornerIndex(n, x, y, z); };
   const float unknown = std::numeric_limits<float>::quiet_NaN();
   std::vector<float> f(static_cast<std::size_t>(nc) * nc * nc, unknown);
   // The corners of every cell whose occupancy differs from a face neighbour's, on both sides, and of
@@ -48,8 +59,14 @@ HullMesh meshField(const VisualHull &g, Field field)
                 v = static_cast<float>(field(x + dx, y + dy, z + dz));
             }
       }
-  // One vertex per crossed cell: the mean of the crossings along its twelve edges.
-  HullMesh m;
+  return f;
+}
+
+//! One vertex per crossed cell of \e f: the mean of the crossings along its twelve edges; returns each cell's vertex (-1: none).
+inline std::vector<std::int32_t> netVertices(const VisualHull &g, const std::vector<float> &f, HullMesh &m)
+{
+  const int n = g.n;
+  auto cornerIdx = [n](int x, int y, int z) { return cornerIndex(n, x, y, z); };
   std::vector<std::int32_t> vertexOf(static_cast<std::size_t>(n) * n * n, -1);
   static const int kEdges[12][6] = {{0, 0, 0, 1, 0, 0}, {0, 1, 0, 1, 1, 0}, {0, 0, 1, 1, 0, 1}, {0, 1, 1, 1, 1, 1},
                                     {0, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0}, {0, 0, 1, 0, 1, 1}, {1, 0, 1, 1, 1, 1},
@@ -84,7 +101,14 @@ HullMesh meshField(const VisualHull &g, Field field)
         m.vertices.push_back({g.origin[0] + (x + sum[0] / k) * g.cell, g.origin[1] + (y + sum[1] / k) * g.cell,
                               g.origin[2] + (z + sum[2] / k) * g.cell});
       }
-  // A quad around every crossed grid edge, facing the side where the field is negative.
+  return vertexOf;
+}
+
+//! A quad (two triangles) around every crossed grid edge of \e f, facing the side where the field is negative.
+inline void netQuads(const VisualHull &g, const std::vector<float> &f, const std::vector<std::int32_t> &vertexOf, HullMesh &m)
+{
+  const int n = g.n;
+  auto cornerIdx = [n](int x, int y, int z) { return cornerIndex(n, x, y, z); };
   for (int z = 1; z < n; ++z)
     for (int y = 1; y < n; ++y)
       for (int x = 1; x < n; ++x) {
@@ -129,6 +153,17 @@ HullMesh meshField(const VisualHull &g, Field field)
           m.triangles.push_back({static_cast<std::uint32_t>(v[0]), static_cast<std::uint32_t>(v[2]), static_cast<std::uint32_t>(v[3])});
         }
       }
+}
+
+} // namespace nets
+
+template <class Field>
+HullMesh meshField(const VisualHull &g, Field field)
+{
+  const std::vector<float> f = nets::fieldNearBoundary(g, field);
+  HullMesh m;
+  const std::vector<std::int32_t> vertexOf = nets::netVertices(g, f, m);
+  nets::netQuads(g, f, vertexOf, m);
   if (m.triangles.empty())
     throw core::Error("all-around model: the hull's surface has no face (too few cells carved?)");
   m.update();

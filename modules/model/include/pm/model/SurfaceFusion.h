@@ -69,10 +69,10 @@ public:
   //! One camera's measured depths.
   struct View
   {
-    hull::Pinhole cam; //!< where it was (the pass's world frame)
+    core::PinholeCamera::Projection cam; //!< where it was (the pass's world frame)
     cv::Mat target;    //!< CV_32F, the target's depth (camera z, mm), NaN elsewhere
     cv::Mat backdrop;  //!< CV_32F, the backdrop's depth, NaN elsewhere (empty: none)
-    cv::Mat silhouette; //!< CV_32F, its silhouette's signed distance (px, HullCamera::signedDist)
+    cv::Mat silhouette; //!< CV_32F, its silhouette's signed distance (px, HullView::signedDist)
     cv::Mat weight;    //!< CV_32F, each depth's weight, from how squarely the view sees the surface there
   };
   FusionParams params; //!< the fusion's parameters
@@ -95,7 +95,7 @@ public:
     return field(X) + params.truncationMm * std::max(0.0, 1.0 - silhouettePx / params.outlineMarginPx);
   }
   //! Empties the occupied cells of \e hull whose centre the evidence puts outside (fieldInside() with \e cams' silhouettes); returns how many.
-  long carve(VisualHull &hull, const std::vector<const hull::HullCamera *> &cams) const;
+  long carve(VisualHull &hull, const std::vector<const hull::HullView *> &cams) const;
   //! Pixels with a measured depth: target and backdrop, over every view.
   void counts(long &target, long &backdrop) const;
 };
@@ -107,7 +107,7 @@ public:
   without its lens (the photos are ideal). The depth search spans the carved \e hull's box (and
   backdropSearchMm behind it for the backdrop).
 */
-DepthEvidence measureStereo(const core::StereoRig &idealRig, const std::vector<hull::HullCamera> &cams,
+DepthEvidence measureStereo(const core::StereoRig &idealRig, const std::vector<hull::HullView> &cams,
                             const std::vector<vpImage<unsigned char>> &masks, const std::vector<vpImage<vpRGBa>> &backgrounds,
                             const std::vector<bool> &used, bool plainBackdrop, const VisualHull &hull, const FusionParams &params);
 

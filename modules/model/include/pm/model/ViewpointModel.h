@@ -31,16 +31,16 @@ struct SurfacePoint;
   The hull's depth buffer seen by \e cam: every point of \e pts splatted over a square of \e radius
   pixels (nearest depth kept, +inf where none falls), into \e zbuf (w x h, row-major).
 */
-void depthBuffer(const hull::Pinhole &cam, const std::vector<hull::Vec3> &pts, int radius, std::vector<float> &zbuf);
+void depthBuffer(const core::PinholeCamera::Projection &cam, const std::vector<hull::Vec3> &pts, int radius, std::vector<float> &zbuf);
 
 /*!
-  The viewpoint of camera \e cam (in the model frame; Pinhole::lookingAtOrigin) of a model whose
+  The viewpoint of camera \e cam (in the model frame; core::PinholeCamera::Projection::lookingAtOrigin) of a model whose
   surface is \e surface (model frame) and \e mesh (the same surface as triangles, model frame), its
   surface points also given as \e pts: S_in, S_out and the outline (see ViewpointModel.h). \e onEdge
   marks the surface points on a hue edge (AllAroundParams::edgeShare); \e zbuf is scratch. S_out
   points carry \e bgHue. The view's cameraMm is the camera's centre.
 */
-core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
+core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
                           const HullMesh &mesh, const std::vector<bool> &onEdge, float bgHue, const AllAroundParams &p,
                           std::vector<float> &zbuf);
 
@@ -49,6 +49,6 @@ core::ModelView sampleViewpoint(const hull::Pinhole &cam, const std::vector<Surf
   edges that border the background in \e mask (the mesh's coverage, HullMesh::depthMap: non-zero on
   it). For the precise stage's lines and for S_out.
 */
-std::vector<core::ContourPoint> meshOutline(const hull::Pinhole &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n);
+std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n);
 
 } // namespace pm::model

@@ -59,12 +59,12 @@ struct VisualHull
 
 namespace hull {
 //! The point nearest (least squares) to the rays from each camera through its silhouette's centroid. Throws pm::core::Error if they do not meet.
-Vec3 silhouettesMeet(const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks);
+Vec3 silhouettesMeet(const std::vector<hull::HullView> &cams, const std::vector<vpImage<unsigned char>> &masks);
 /*!
   The hull's field at \e X: the least over \e cams of the silhouette's signed distance where \e X
-  projects (px, HullCamera::sdSmooth): positive inside the hull, 0 on its surface. Behind a camera: -1e6.
+  projects (px, HullView::sdSmooth): positive inside the hull, 0 on its surface. Behind a camera: -1e6.
 */
-double field(const std::vector<const hull::HullCamera *> &cams, const Vec3 &X);
+double field(const std::vector<const hull::HullView *> &cams, const Vec3 &X);
 } // namespace hull
 
 /*!
@@ -74,7 +74,7 @@ double field(const std::vector<const hull::HullCamera *> &cams, const Vec3 &X);
   worst first, up to a quarter of the views. Returns whether each view is used; \e why gets a line per
   view left out, named by \e names.
 */
-std::vector<bool> agreeingViews(const std::vector<hull::HullCamera> &cams, std::size_t nViews, const hull::Vec3 &origin, int n, double cell,
+std::vector<bool> agreeingViews(const std::vector<hull::HullView> &cams, std::size_t nViews, const hull::Vec3 &origin, int n, double cell,
                                 double maxFraction, const std::vector<std::string> &names, std::vector<std::string> &why);
 
 /*!
@@ -89,13 +89,13 @@ VisualHull hullGrid(const hull::Vec3 &centre, double radiusMm, double finestMm);
   kept, otherwise split; at the finest size, kept when its centre projects inside all. Throws
   pm::core::Error when nothing is left.
 */
-void carveVisualHull(const std::vector<const hull::HullCamera *> &cams, VisualHull &grid, double coarsestMm);
+void carveVisualHull(const std::vector<const hull::HullView *> &cams, VisualHull &grid, double coarsestMm);
 
 /*!
   The cube the hull is carved in: where the silhouettes' rays meet (silhouettesMeet) and a half-width
   that holds each silhouette's farthest pixel from there, with a margin. Throws pm::core::Error if the
   centre is behind a camera.
 */
-void hullBox(const std::vector<hull::HullCamera> &cams, const std::vector<vpImage<unsigned char>> &masks, hull::Vec3 &centre, double &radiusMm);
+void hullBox(const std::vector<hull::HullView> &cams, const std::vector<vpImage<unsigned char>> &masks, hull::Vec3 &centre, double &radiusMm);
 
 } // namespace pm::model

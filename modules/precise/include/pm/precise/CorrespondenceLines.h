@@ -28,6 +28,7 @@
 
 #include <visp3/core/vpRGBa.h>
 
+#include "pm/core/PinholeCamera.h"
 #include "pm/core/Pose.h"
 #include "pm/precise/ColourHistograms.h"
 #include "pm/precise/OutlineViews.h"
@@ -35,26 +36,14 @@
 namespace pm::precise {
 
 /*!
-  A camera as the lines see it: cMh (mm), the intrinsics of its ideal image, its size, and its image
-  this frame (raw; read through \e nearest, the UndistortMap's ideal-to-raw pixel index, when the
-  lens has distortion).
+  A camera as the lines see it: the rig's camera placed in the hand frame (core::PinholeCamera::
+  Projection: cMh in mm, the intrinsics of its ideal image, its size) and its image this frame (raw;
+  read through \e nearest, the UndistortMap's ideal-to-raw pixel index, when the lens has distortion).
 */
-struct LineCamera
+struct LineCamera : core::PinholeCamera::Projection
 {
-  double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}; //!< cMh's rotation, row-major
-  double t[3] = {0, 0, 0};                    //!< cMh's translation (mm)
-  /*! \var LineCamera::px
-      \brief focal length along u (px)
-      \var LineCamera::py
-      \brief focal length along v (px)
-      \var LineCamera::u0
-      \brief principal point, column (px) */
-  double px = 1, py = 1, u0 = 0, v0 = 0;       //!< principal point, row (px)
-  /*! \var LineCamera::w
-      \brief image width (px) */
-  int w = 0, h = 0;                            //!< image height (px)
-  const vpRGBa *image = nullptr;               //!< this frame's raw image (row-major w x h)
-  const std::int32_t *nearest = nullptr;       //!< ideal pixel -> raw pixel index (-1: off the raw image); null: a pinhole camera
+  const vpRGBa *image = nullptr;         //!< this frame's raw image (row-major w x h)
+  const std::int32_t *nearest = nullptr; //!< ideal pixel -> raw pixel index (-1: off the raw image); null: a pinhole camera
 };
 
 /*!

@@ -14,8 +14,7 @@
         fitness on this frame is known); the best N of parents and children survive (elitism);
         [option] when the best has not improved for some generations, all but the best
         restart (see restart()); the best does not breed while the new ones search;
-   8. [option] a local refinement of the best (pattern search on the genes);
-   9. the best individual is the pose of the frame.
+   8. the best individual is the pose of the frame.
 
   It knows nothing of images: it calls a FitnessFunction. Runs are reproducible from the
   seed; with an evaluation budget they are deterministic, with a time budget they depend on the
@@ -67,7 +66,6 @@ struct RmGaParams
   double crossoverRate = 0.9;   //!< probability that two parents cross over
   double mutationPerBit = 2.0 / 72; //!< probability of flipping each of the 72 bits of a child
   bool predictMotion = false;   //!< option: move the population by the predicted motion on a new frame
-  int refineEvaluations = 0;    //!< option: evaluations of the local refinement of the best, per frame
   int restartGenerations = 0;   //!< option: restart all but the best after this many generations without gain (0: never)
   std::uint64_t seed = 1;        //!< seed of the random generator: the same seed, the same run (with an evaluation budget)
 
@@ -201,7 +199,7 @@ public:
   void inject(const core::Phi &p, double fitness);
 
   /*!
-    Evolves the population on one frame (steps 2-9) within \e budget. Throws pm::core::Error if the
+    Evolves the population on one frame (steps 2-8) within \e budget. Throws pm::core::Error if the
     budget is not positive. \e sameFrame: more generations on the frame of the last call (its
     fitness may have changed, e.g. scored on more of the image): no motion prediction, and the
     frame's best replaces the last one in the motion history instead of being added to it.
@@ -222,12 +220,11 @@ private:
                 double rejectBelow = -1e300);
   const Individual &tournament();
   void mutate(Genome &g);
-  void refine(FitnessFunction &f, double maxEvals, double &cost, long &candidates);
 
   SearchSpace m_space;
   RmGaParams m_params;
   std::mt19937_64 m_rng;
-  std::vector<Individual> m_pop, m_children, m_trial, m_merged;
+  std::vector<Individual> m_pop, m_children, m_merged;
   std::vector<core::Phi> m_batch;
   std::vector<double> m_scores, m_costs;
   bool m_havePrev = false, m_havePrev2 = false;

@@ -1,14 +1,12 @@
 #pragma once
 /*!
   \file StereoObjective.h
-  The stereo fitness as what RM-GA and the local searches optimise: F (StereoFitness::evaluate, a
-  batch on two cores) or its smooth score (StereoFitness::evaluateSmooth, one pose at a time), and
-  the smooth score with its gradient for climbSmooth (StereoFitness::evaluateSmoothGradient).
+  The stereo fitness as what RM-GA and the smooth ascent optimise: F (StereoFitness::evaluate, a
+  batch on two cores), or F estimated on a quarter of the model's points (a coarse search), and the
+  smooth score with its gradient for climbSmooth (StereoFitness::evaluateSmoothGradient).
 
       pm::rmga::StereoObjective f(fitness);                                     // F, for RM-GA
-      pm::rmga::StereoObjective s(fitness, pm::rmga::StereoObjective::Score::Smooth); // for refineLocalSimplex
       const pm::rmga::FrameResult r = ga.evolve(f, pm::rmga::FrameBudget::evals(1900));
-      const pm::rmga::LocalSimplexResult l = pm::rmga::refineLocalSimplex(s, r.best, pm::rmga::LocalSimplexParams());
       const pm::rmga::SmoothAscentResult a = pm::rmga::climbSmooth(f, &r.best, 1, pm::rmga::SmoothAscentParams());
 */
 #include "pm/core/StereoFitness.h"
@@ -18,7 +16,7 @@
 namespace pm::rmga {
 
 /*!
-  A StereoFitness seen as a FitnessFunction (for RmGa and refineLocalSimplex) and as a
+  A StereoFitness seen as a FitnessFunction (for RmGa) and as a
   SmoothFunction (for climbSmooth); see the file's description. It keeps a reference to the
   StereoFitness, whose current images it scores: the fitness must outlive it.
 */
@@ -28,9 +26,8 @@ public:
   /*!
     Fitness: F. Coarse: F estimated from the first share of the model's points (an even sample,
     StereoFitness::kRejectStride; cost about a quarter), for a search that must look at many poses.
-    Smooth: evaluateSmooth.
   */
-  enum class Score { Fitness, Coarse, Smooth };
+  enum class Score { Fitness, Coarse };
   /*!
     \e fitness must outlive the objective. \e rejectMargin >= 0 (F's units): a pose is rejected early
     (evaluateOrReject) only when the estimate from its first share of points lies this far under the
@@ -44,8 +41,8 @@ public:
   void evaluate(const core::Phi *poses, std::size_t n, double *fitness) override;
   /*!
     Fitness with a margin: F, a pose rejected early when its estimate lies under \e rejectBelow
-    minus the margin. Coarse: every pose estimated (cost about a quarter). Smooth, a negative
-    margin or nothing to reject (\e rejectBelow -1e300): every pose scored exactly (cost 1).
+    minus the margin. Coarse: every pose estimated (cost about a quarter). A negative margin or
+    nothing to reject (\e rejectBelow -1e300): every pose scored exactly (cost 1).
   */
   void evaluateOrReject(const core::Phi *poses, std::size_t n, double rejectBelow, double *fitness, double *cost) override;
   //! StereoFitness::evaluateSmoothGradient, whatever the Score.

@@ -176,6 +176,13 @@ private:
   void drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &proj, const Lighting &light, std::uint8_t id,
                      const std::uint32_t *tris, std::size_t count, int yBegin, int yEnd, float *color,
                      std::size_t colorOffset);
+  /*!
+    Shades samples [first, end] of a span whose attributes are \e v0 at \e first and step by \e d per
+    sample (depth-tested, masked); 8 at a time with AVX2 when \e useAvx2 and no cast shadows.
+  */
+  template <bool kShadow>
+  void shadeSpan(const Mesh &mesh, const Lighting &light, std::uint8_t id, const float *v0, const float *d, std::size_t first,
+                 std::size_t end, float *color, std::size_t colorOffset, bool useAvx2);
   void resolveRows(vpImage<vpRGBa> &out, unsigned vBegin, unsigned vEnd, const float *color, std::size_t colorOffset,
                    double exposure, double noiseSigma, std::uint64_t noiseSeed) const;
   unsigned m_w = 0, m_h = 0, m_ss = 1, m_W = 0, m_H = 0;

@@ -119,7 +119,7 @@ public:
     objects apart by id (1 backdrop, 2 toy, 3 occluder, 4 look-alike); for a distorted camera they
     hold the larger ideal canvas, not \e out. Throws pm::core::Error (see Rasterizer::render()).
   */
-  void render(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+  void render(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
               unsigned stream, vpImage<vpRGBa> &out, bool withTarget = true) const;
   //! Both views of the rig for the target at \e hMo (rendered in parallel, streams 0 and 1 of \e frame).
   StereoImages renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const;
@@ -165,7 +165,7 @@ private:
   std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
   struct LensCache;
   std::shared_ptr<LensCache> m_lensCache; // the distorted cameras' resampling maps, shared by copies
-  void renderIdeal(Rasterizer &raster, const core::RigCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+  void renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const;
 };
 

@@ -18,7 +18,7 @@
   - how far q lies under its recent best (an occlusion, a drift onto the background);
   - how far the pose jumped since the last frame (the hand's own motion taken out), in mm and deg;
   - how long the target has been tracked, and whether the lock was verified (a challenger search
-    after the lock found no better pose elsewhere, see TrackerParams::verifyEvaluations);
+    after the lock found no better pose elsewhere, see VerifierParams::evaluations);
   - whether the tracker says it is tracking at all;
   - from the precise stage, when its pose is the frame's (all-around models): the rms distance
     between the outline found along its lines and the model's, how well its lines pin the pose
@@ -93,7 +93,7 @@ ConfidenceKind confidenceKindFromString(const std::string &s);
 /*!
   The logistic model that turns a frame's cues into its confidence, with the threshold of trust.
   The default-constructed model is the shipped one (threshold 0.95); the tracker's is
-  TrackerParams::confidence.
+  JudgementParams::confidence.
 
   \code
 #include <iostream>

@@ -1,0 +1,100 @@
+#include "pm/core/StereoFitness.h"
+
+#include <exception>
+#include <string>
+
+#include "FitnessKernels.h"
+#include "pm/core/BatchPool.h"
+#include "pm/core/Error.h"
+
+namespace pm::core {
+
+void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+{
+  const std::array<PixelRect, 2> whole = {PixelRect{0, 0, m_cams[0].w, m_cams[0].h},
+                                          PixelRect{0, 0, m_cams[1].w, m_cams[1].h}};
+  setImages(left, right, whole);
+}
+
+void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::array<PixelRect, 2> &windows)
+{
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  for (int k = 0; k < 2; ++k)
+    if (static_cast<int>(im[k]->getWidth()) != m_cams[k].w || static_cast<int>(im[k]->getHeight()) != m_cams[k].h)
+      throw Error(std::string(k == 0 ? "left" : "right") + " image is " + std::to_string(im[k]->getWidth()) + "x" +
+                  std::to_string(im[k]->getHeight()) + " but the rig's camera is " + std::to_string(m_cams[k].w) +
+                  "x" + std::to_string(m_cams[k].h));
+  // The two planes on two cores (BatchPool: on the caller alone when the other core is busy).
+  std::exception_ptr error[2];
+  BatchPool::shared().run(2, [&](std::size_t k) {
+    try {
+      if (const auto &map = m_undistort[k])
+        m_planes[k].compute(*im[k], m_params.minSaturation, *map);
+      else
+        m_planes[k].compute(*im[k], m_params.minSaturation, windows[k]);
+    } catch (...) {
+      error[k] = std::current_exception();
+    }
+  });
+  for (const auto &e : error)
+    if (e)
+      std::rethrow_exception(e);
+  m_hasImages = true;
+}
+
+void StereoFitness::addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses, std::size_t n)
+{
+  for (std::size_t k = 0; k < n; ++k)
+    check(poses[k]);
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  for (int cam = 0; cam < 2; ++cam)
+    if (im[cam]->getWidth() != m_planes[static_cast<std::size_t>(cam)].width() ||
+        im[cam]->getHeight() != m_planes[static_cast<std::size_t>(cam)].height())
+      throw Error("fitness: the hue is added from images of another size than the last pair's");
+  // The two cameras on two cores; addPixels cannot throw here (the sizes match, the pixels are in the image).
+  BatchPool::shared().run(2, [&](std::size_t cam) {
+    if (m_undistort[cam]) // its plane is the whole ideal image
+      return;
+    std::vector<std::int64_t> &pixels = m_pixelScratch[cam];
+    pixels.clear();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Projection p = projectionOf(static_cast<int>(cam), poses[k]);
+      const View &view = viewFor(p);
+#ifdef PM_HAVE_X86
+      const kernels::ModelSoA m{m_x.data(), m_y.data(), m_z.data(), m_hue.data()};
+      if (m_avx2) // the counting kernel's projection, 8 points at a time
+        (m_hasDepth ? kernels::collectPixelsAvx2<true> : kernels::collectPixelsAvx2<false>)(p, m, view.inBegin, view.outEnd, m_planes[cam].window(), pixels);
+      else
+#endif
+        (m_hasDepth ? kernels::collectPixels<true> : kernels::collectPixels<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
+                                                                 view.outEnd, m_planes[cam].window(), pixels);
+    }
+    m_planes[cam].addPixels(*im[cam], m_params.minSaturation, pixels.data(), pixels.size());
+  });
+}
+
+PixelRect StereoFitness::footprint(const Phi &phi, int camera) const
+{
+  if (!phi.isValid())
+    throw Error("footprint of an invalid pose " + phi.toString());
+  const Projection p = projectionOf(camera, phi);
+  const View &view = viewFor(p);
+  double umin = 1e9, vmin = 1e9, umax = -1e9, vmax = -1e9;
+  for (std::size_t i = view.inBegin; i < view.outEnd; ++i) {
+    const double X = m_x[i], Y = m_y[i], Z = m_z[i];
+    const double zc = p.r[6] * X + p.r[7] * Y + p.r[8] * Z + p.t[2];
+    if (zc <= 1e-3)
+      continue;
+    const double u = p.px * (p.r[0] * X + p.r[1] * Y + p.r[2] * Z + p.t[0]) / zc + p.u0;
+    const double v = p.py * (p.r[3] * X + p.r[4] * Y + p.r[5] * Z + p.t[1]) / zc + p.v0;
+    umin = std::min(umin, u), umax = std::max(umax, u), vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+  }
+  if (umax < umin)
+    return {};
+  // A point at u lands on pixel round(u): the box of the pixels they land on, clipped.
+  const PixelRect box{static_cast<int>(std::max(-1.0, std::floor(umin))), static_cast<int>(std::max(-1.0, std::floor(vmin))),
+                      static_cast<int>(std::min(1e6, std::ceil(umax) + 1)), static_cast<int>(std::min(1e6, std::ceil(vmax) + 1))};
+  return box.grown(0, p.w, p.h);
+}
+
+} // namespace pm::core

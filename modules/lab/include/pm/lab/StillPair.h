@@ -1,0 +1,48 @@
+#pragma once
+/*!
+  \file StillPair.h
+  One still stereo pair to find a target in (pm-detect's Table 1, pm-fitness-map's maps): a user's
+  pair of image files with a model file, or the simulator's pair of a lab target at a pose, with
+  its model (LabModel.h) and the model's true pose.
+
+  \code
+    const pm::lab::StillPair user = pm::lab::loadStillPair("L.png", "R.png", "model.json");
+    const pm::lab::StillPair lab = pm::lab::renderStillPair(pm::sim::makeTarget("C12"), {0, 0, 500, 0, 0, 0}, rig,
+                                                            pm::sim::SceneParams(), pm::lab::LabModelChoice());
+    std::cout << lab.source << ": the model at " << lab.truth.toString() << "\n";
+  \endcode
+*/
+#include <string>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/core/PhotoModel.h"
+#include "pm/core/Pose.h"
+#include "pm/core/StereoRig.h"
+#include "pm/lab/LabModel.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/TargetShape.h"
+
+namespace pm::lab {
+
+//! A still pair, its model and, where known, the model's true pose in the hand frame (see StillPair.h).
+struct StillPair
+{
+  core::PhotoModel model;     //!< the photo-model to find
+  vpImage<vpRGBa> left;       //!< the left image
+  vpImage<vpRGBa> right;      //!< the right image
+  bool haveTruth = false;     //!< the truth is known (always in the simulator)
+  core::Phi truth;            //!< the model's true pose (mm, quaternion vector)
+  std::string source;         //!< what the pair is, for the outputs
+};
+
+//! A user's pair and model, read from files (no truth: the caller's, if it has one). Throws core::Error naming the file.
+StillPair loadStillPair(const std::string &left, const std::string &right, const std::string &modelPath);
+//! Throws core::Error when the pair's images differ in size (named \e left and \e right).
+void requireSameSize(const StillPair &pair, const std::string &left, const std::string &right);
+//! The simulator's pair of \e shape at \e phi (the toy's pose in the hand frame), with the lab's model of it (\e choice) and its truth.
+StillPair renderStillPair(const sim::TargetShape &shape, const core::Phi &phi, const core::StereoRig &rig, const sim::SceneParams &sp,
+                          const LabModelChoice &choice);
+
+} // namespace pm::lab

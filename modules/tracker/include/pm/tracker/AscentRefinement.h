@@ -1,0 +1,54 @@
+#pragma once
+/*!
+  \file AscentRefinement.h
+  The refinement chain's second stage, for the frames the precise stage did not end: the top of F's
+  plateau. RM-GA's F counts whole pixels, a staircase flat over a degree or two of tilt, and the
+  GA's best wanders over the plateau from frame to frame; a climb of the smooth score along its
+  gradient (rmga::climbSmooth, core::StereoFitness::evaluateSmoothGradient) from the frame's pose or
+  the last frame's, whichever scores higher, reaches its top in a dozen evaluations, on top of the
+  frame budget.
+
+  Its acceptance rule: the climb's pose is kept unless F there is under the frame's F by more than
+  maxDrop (F's units).
+
+  \code
+    pm::tracker::AscentRefinement ascent(params.refinement.ascent, fitness);
+    if (ascent.active())
+      ascent.refine(r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
+  \endcode
+*/
+#include "pm/core/StereoFitness.h"
+#include "pm/rmga/SmoothAscent.h"
+#include "pm/rmga/StereoObjective.h"
+#include "pm/tracker/TrackResult.h"
+
+namespace pm::tracker {
+
+//! The climb's parameters and its acceptance rule (see AscentRefinement.h).
+struct AscentParams
+{
+  rmga::SmoothAscentParams climb; //!< the climb (its maxEvaluations 0: the stage is off)
+  double maxDrop = 0.02;          //!< the climb's pose is kept unless F there is this much under the frame's (F's units)
+
+  //! Throws core::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! The chain's smooth ascent (see the file's description). Keeps a reference to the fitness: it must outlive the stage.
+class AscentRefinement
+{
+public:
+  //! Copies \e params; \e fitness scores the climb on its current hue planes.
+  AscentRefinement(const AscentParams &params, const core::StereoFitness &fitness);
+
+  bool active() const { return m_p.climb.maxEvaluations > 0; } //!< the stage runs
+  //! Climbs from \e r's pose and, when \e last was tracked, from its pose; true when the climb's pose is kept.
+  bool refine(TrackResult &r, const TrackResult &last);
+
+private:
+  AscentParams m_p;
+  const core::StereoFitness &m_fitness;
+  rmga::StereoObjective m_objective; //!< the smooth score's gradient
+};
+
+} // namespace pm::tracker

@@ -1,0 +1,96 @@
+#pragma once
+/*!
+  \file Judgement.h
+  The judgement of a frame's pose: its confidence (how likely it lies within 2 cm and 5 deg of the
+  truth, TrackConfidence.h), whether a robot may act on it (trusted: tracking, verified, confidence
+  over the threshold) and, when the precise stage gave it, its 1-sigma per axis in mm and deg
+  (precise::PoseUncertainty). The evidence (the pose's fit in each camera, the competing poses of
+  the same object, the precise stage's lines and their sigmas) is measured once a frame (measure());
+  a new lock's confidence (firstLockConfidence(), for LockState's gate) and the frame's (judge())
+  are read from it with the tracker's state of the moment.
+
+  \code
+    pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, fitness, scale);
+    const pm::tracker::Evidence e = judgement.measure(r);
+    const bool refused = lock.wouldLock(r.quality) &&
+                         judgement.firstLockConfidence(e, steady.recentBestQ(), verifiedAtOnce) < params.lock.confidence;
+    ...
+    judgement.judge(r, e, {lastPose, recentBestQ, framesTracked, verified});
+    if (r.trusted) use(r.hMo);
+  \endcode
+*/
+#include <array>
+#include <cstddef>
+
+#include "pm/core/PhotoModel.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/precise/PoseUncertainty.h"
+#include "pm/tracker/QualityScale.h"
+#include "pm/tracker/TrackConfidence.h"
+#include "pm/tracker/TrackResult.h"
+
+namespace pm::tracker {
+
+//! The judgement's parameters: the confidence's model and threshold, the uncertainty's scales and floors.
+struct JudgementParams
+{
+  /*!
+    How the frame's confidence is computed from its cues, and its threshold (TrackResult::trusted).
+    Its kind Auto (the default): the coefficients shipped for the model's kind (flat, stereo or
+    all-around, forModel()); the threshold is this one.
+  */
+  ConfidenceModel confidence;
+  //! From the precise stage's information to the reported 1-sigma per axis (TrackResult::uncertainty).
+  precise::UncertaintyModel uncertainty;
+
+  //! These parameters for \e model: a confidence of kind Auto replaced by the coefficients of the model's kind (the threshold kept).
+  JudgementParams forModel(const core::PhotoModel &model) const;
+  //! Throws core::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! What measure() found of a pose on the frame: the cues that do not depend on the tracker's state, and the precise stage's sigmas.
+struct Evidence
+{
+  ConfidenceCues cues;                //!< the pose's fit, tilt, competitors and precise cues (the state's own left to judge())
+  std::array<double, 6> lineSigmas{}; //!< the precise stage's lines' own 1-sigma per axis (mm, deg), when its pose is the frame's
+};
+
+//! The tracker's state that a frame is judged with (see Judgement::judge()).
+struct JudgedState
+{
+  const core::Phi *last = nullptr; //!< the last frame's pose when it was tracked (the jump), else null
+  double recentBestQ = 0;          //!< SteadyFramePolicy::recentBestQ() after this frame
+  int framesTracked = 0;           //!< LockState::framesTracked()
+  bool verified = false;           //!< LockVerifier::verified()
+};
+
+//! The judgement (see the file's description). Keeps a reference to the fitness: it must outlive the judgement.
+class Judgement
+{
+public:
+  /*!
+    \e params as resolved for the model (JudgementParams::forModel); \e competitorMinDeg: competing
+    poses turned less than this are the same pose (VerifierParams::farDeg).
+  */
+  Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale);
+
+  //! The competing poses of \e phi it scores (turned about its z axis, its tilt mirrored), valid ones only; returns their number.
+  std::size_t competitors(const core::Phi &phi, core::Phi *out) const;
+  //! The evidence of the frame's pose \e r (its phi, quality and precise stage's result) on the fitness's current hue planes.
+  Evidence measure(const TrackResult &r) const;
+  //! The confidence of \e e as a first, unverified lock (\e verifiedAtOnce: locks need no verification).
+  double firstLockConfidence(const Evidence &e, double recentBestQ, bool verifiedAtOnce) const;
+  //! Fills \e r's cues, confidence, verified, trusted and uncertainty from \e e and the tracker's \e state.
+  void judge(TrackResult &r, const Evidence &e, const JudgedState &state) const;
+
+  const JudgementParams &params() const { return m_p; } //!< the parameters (resolved for the model)
+
+private:
+  JudgementParams m_p;
+  double m_competitorMinDeg;
+  const core::StereoFitness &m_fitness;
+  QualityScale m_scale;
+};
+
+} // namespace pm::tracker

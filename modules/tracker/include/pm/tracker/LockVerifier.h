@@ -1,0 +1,108 @@
+#pragma once
+/*!
+  \file LockVerifier.h
+  The verification of a lock. "Tracking" says that the model fits somewhere, not that the pose is
+  right: after the tracker locks (from searching or lost), a challenger RM-GA, started from the lock
+  with every other individual new (random, the lock's position with another orientation, its
+  orientation elsewhere, its tilt mirrored, facing the cameras; see rmga::RmGa::restart) and the lock
+  itself kept out of breeding, searches the same frames (on the whole images, coarse when
+  SearchParams::coarse) with a share of the whole budget. A pose it finds farther than farMm or
+  farDeg from the tracker's:
+  - scoring over switchMargin (in q) above it: the tracker moves there (a wrong first lock), and
+    verification starts again;
+  - within sameObjectMm of it and scoring within margin under it (another pose of the same object
+    as good, e.g. the mirrored tilt): ambiguous, verification starts again;
+  - otherwise (worse, or a twin elsewhere that scores the same): no objection.
+  A lock that lasts \e evaluations evaluations of the challenger is verified. A verified lock whose
+  confidence stays under reverifyBelowConfidence for reverifyAfterFrames tracked frames in a row is
+  verified again (a wrong lock that the challenger missed, its confidence low).
+
+  The verifier owns the challenger's population, the evaluations still to run, whether the lock is
+  verified and the count of doubtful frames.
+
+  \code
+    pm::tracker::LockVerifier verifier(params.verifier, params.search, fitness, scale);
+    if (verifier.verifying(lastState)) {
+      const auto better = verifier.challenge(plan.challenger, r.phi, r.fitness, search.ga());
+      if (better) moveTo(*better);            // a wrong first lock
+    }
+    verifier.onState(prev, r.state, r.phi, search.ga());   // a new lock is verified on the next frames
+    verifier.afterJudgement(r.state, r.confidence, r.phi, search.ga()); // a doubtful lock again
+  \endcode
+*/
+#include <optional>
+
+#include "pm/core/StereoFitness.h"
+#include "pm/rmga/RmGa.h"
+#include "pm/rmga/StereoObjective.h"
+#include "pm/tracker/PoseSearch.h"
+#include "pm/tracker/QualityScale.h"
+#include "pm/tracker/TrackResult.h"
+
+namespace pm::tracker {
+
+//! The lock verifier's parameters (see LockVerifier.h); validate() checks them.
+struct VerifierParams
+{
+  long evaluations = 3000;        //!< evaluations of the challenger a lock must last to be verified (0: every lock verified)
+  double budgetFraction = 0.5;    //!< the challenger's share of the whole frame budget while verifying, in (0, 1)
+  double margin = 0.02;           //!< in q: a same-object pose elsewhere scoring over the tracker's q minus this is as good (ambiguous)
+  double switchMargin = 0.03;     //!< in q: a challenger's pose this much above the tracker's takes over
+  double farMm = 20;              //!< a challenger's pose farther than this (mm) ...
+  double farDeg = 5;              //!< ... or turned more than this (deg) is elsewhere; confidence competitors turned less are ignored
+  double sameObjectMm = 60;       //!< a pose elsewhere but within this (mm) is another pose of the same object
+  /*!
+    A verified lock whose confidence stays under reverifyBelowConfidence this many tracked frames in
+    a row is verified again (0: never). Not at the trust threshold: a right pose of middling
+    confidence (a small budget, an occlusion) would be verified over and over.
+  */
+  int reverifyAfterFrames = 15;
+  double reverifyBelowConfidence = 0.5; //!< the confidence under which a tracked, verified frame counts toward reverifyAfterFrames
+
+  //! Throws core::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! The lock verifier (see the file's description). Keeps a reference to the fitness: it must outlive the verifier.
+class LockVerifier
+{
+public:
+  //! The challenger: \e search's RM-GA with another seed and no motion prediction, on \e fitness.
+  LockVerifier(const VerifierParams &params, const SearchParams &search, const core::StereoFitness &fitness, const QualityScale &scale);
+
+  //! The challenger runs this frame: evaluations are left and the last state was tracking.
+  bool verifying(TrackState lastState) const { return m_left > 0 && lastState == TrackState::Tracking; }
+  /*!
+    The challenger's search on this frame within \e budget, against the tracker's pose \e pose of
+    fitness \e fitness. Returns a better pose elsewhere, with its F, when it takes over (verification
+    then starts again from it, near \e ga's anchor); adds its work to \e work.
+  */
+  std::optional<std::pair<core::Phi, double>> challenge(const rmga::FrameBudget &budget, const core::Phi &pose, double fitness,
+                                                         const rmga::RmGa &ga, TrackResult &work);
+  //! After the frame's state: a new lock (\e prev not tracking) is verified on the next frames; a target not tracked is no longer verified.
+  void onState(TrackState prev, TrackState state, const core::Phi &pose, const rmga::RmGa &ga);
+  //! After the judgement: a verified, tracked lock of low \e confidence for long is verified again.
+  void afterJudgement(TrackState state, double confidence, const core::Phi &pose, const rmga::RmGa &ga);
+
+  bool verified() const { return m_verified; } //!< the lock survived its challenger
+  //! The hand moved: a running challenger follows.
+  void transform(const std::function<core::Phi(const core::Phi &)> &moved);
+  //! A new start: nothing verified, nothing to verify (\e verified: a pose given, taken as verified).
+  void reset(bool verified = false);
+
+private:
+  //! Verification from \e lock: the challenger around it, near \e ga's anchor.
+  void start(const core::Phi &lock, const rmga::RmGa &ga);
+
+  VerifierParams m_p;
+  bool m_coarse;
+  const core::StereoFitness &m_fitness;
+  QualityScale m_scale;
+  rmga::StereoObjective m_objective;
+  rmga::RmGa m_challenger;
+  long m_left = 0;          //!< evaluations of verification still to run
+  bool m_verified = false;
+  int m_doubtfulFrames = 0; //!< tracked, verified frames in a row under reverifyBelowConfidence
+};
+
+} // namespace pm::tracker

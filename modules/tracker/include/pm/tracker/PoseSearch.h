@@ -1,0 +1,100 @@
+#pragma once
+/*!
+  \file PoseSearch.h
+  The tracker's search: RM-GA's population carried from frame to frame and evolved on each frame
+  within the frame's budget (FramePlan), coarse while the target is not tracked (candidates scored
+  on a quarter of the model's points, the best then on all), with early rejection of children that
+  cannot survive. It owns the population: the other parts' wishes come back to it as an RmGaUpdate,
+  applied in one place (apply()).
+
+  \code
+    pm::tracker::PoseSearch search(params.search, fitness, scale);
+    search.initialize();                                   // a random population
+    const pm::rmga::FrameResult r = search.evolve(plan.main, false);  // tracked: every point
+    pm::tracker::RmGaUpdate u;
+    u.anchor = r.best;                                     // trusted
+    search.apply(u);
+  \endcode
+*/
+#include <functional>
+
+#include "pm/core/StereoFitness.h"
+#include "pm/rmga/RmGa.h"
+#include "pm/rmga/StereoObjective.h"
+#include "pm/tracker/QualityScale.h"
+#include "pm/tracker/RmGaUpdate.h"
+
+namespace pm::tracker {
+
+//! The fitness the tracker uses: the paper's, except that image pixels less saturated than 0.1
+//! have no hue (a blank, grey or black frame would otherwise have hue 0, red, and match a red target).
+core::FitnessParams trackerFitnessDefaults();
+
+//! RM-GA as the tracker runs it, by measurement (issues 4 and 18): motion prediction, restarts after 30 generations without gain.
+rmga::RmGaParams trackerGaDefaults();
+
+/*!
+  The search's parameters: where and how RM-GA searches, and the frame budget (800 evaluations,
+  measured: docs/rmga-tracker.md). validate() checks them.
+*/
+struct SearchParams
+{
+  rmga::SearchSpace space;                   //!< where phi is searched
+  rmga::RmGaParams ga = trackerGaDefaults(); //!< RM-GA (population, operators, options, seed)
+  long budgetEvaluations = 800; //!< per-frame budget: evaluations (deterministic; a pose rejected early counts its share) ...
+  double budgetMs = 24.0;       //!< ... or wall time, used when budgetEvaluations is 0 (the paper: 24 ms)
+  /*!
+    Early rejection: RM-GA's children that cannot survive (under the worst parent) are scored on
+    the first quarter of the model's points only (core::StereoFitness::evaluate with a threshold),
+    when that share's estimate of q lies this much under the threshold's q; otherwise on every
+    point. Negative: never (every child scored exactly).
+  */
+  double rejectMarginQ = 0.15;
+  /*!
+    Coarse search: while searching or lost, and in the verification's challenger, candidates are
+    scored on the first quarter of the model's points (rmga::StereoObjective::Score::Coarse: about
+    four times as many poses for the same work); the frame's best is then scored on every point.
+  */
+  bool coarse = true;
+  double initSpread = 0.02;     //!< initFromPose: population spread, fraction of each range
+
+  //! The whole frame budget: budgetEvaluations evaluations when positive, else budgetMs milliseconds.
+  rmga::FrameBudget budget() const
+  {
+    return budgetEvaluations > 0 ? rmga::FrameBudget::evals(budgetEvaluations) : rmga::FrameBudget::ms(budgetMs);
+  }
+  //! Throws core::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! The search on the frame (see the file's description). Keeps a reference to the fitness: it must outlive the search.
+class PoseSearch
+{
+public:
+  //! \e fitness scores the poses on its current hue planes; \e scale turns the rejection margin into F's units.
+  PoseSearch(const SearchParams &params, const core::StereoFitness &fitness, const QualityScale &scale);
+
+  void initialize();                     //!< a random population, no anchor
+  void initFromPose(const core::Phi &p); //!< a population around \e p, which is the anchor
+  //! Moves the population (and its anchor and motion history) by \e moved: the hand moved.
+  void transform(const std::function<core::Phi(const core::Phi &)> &moved);
+  /*!
+    RM-GA on the frame within \e budget: coarse when \e coarse (and SearchParams::coarse), its best
+    then scored on every point. \e sameFrame: more generations on the frame of the last call
+    (rmga::RmGa::evolve), scored on every point.
+  */
+  rmga::FrameResult evolve(const rmga::FrameBudget &budget, bool coarse, bool sameFrame = false);
+  //! The frame's changes, in their order: reseed, inject, restart or scatter, anchor.
+  void apply(const RmGaUpdate &update);
+
+  const rmga::RmGa &ga() const { return m_ga; } //!< the population and its anchor
+
+private:
+  SearchParams m_params;
+  const core::StereoFitness &m_fitness;
+  rmga::StereoObjective m_objective; //!< F, children that cannot survive rejected early
+  rmga::StereoObjective m_coarse;    //!< F estimated on a quarter of the points
+  rmga::RmGa m_ga;
+};
+
+} // namespace pm::tracker

@@ -1,0 +1,77 @@
+#pragma once
+/*!
+  \file PreciseRefinement.h
+  The refinement chain's first stage: the precise stage (precise::PreciseStage: Gauss-Newton steps
+  on the outline's correspondence lines in both cameras, and the interior's colours) on every frame
+  whose q reaches the lock, for a model that carries outlines (an all-around model). It starts from
+  the frame's pose (RM-GA's best, or the pose the lock verifier moved to), or from the last frame's
+  pose when the target was tracked and the frame's pose lies within restartMm and restartDeg of it
+  (else from both, the lower residual kept; and from the frame's pose when the last frame's start
+  gives nothing acceptable).
+
+  Its acceptance rule: a result is kept when it moved less than maxMoveMm and maxMoveDeg from its
+  start and F there is not under the frame's F by more than maxDropQ (in q): the outline's peak lies
+  on F's plateau, a divergence (colours that do not separate, a wrong start) leaves it. A kept pose
+  is final: the chain ends with it, and it joins RM-GA's population. Colours are learnt on trusted frames.
+
+  \code
+    pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, fitness, scale);
+    if (stage.active() && stage.refine(r, last, IL, IR))
+      search.inject(r.phi, r.fitness); // the frame's pose is the stage's
+  \endcode
+*/
+#include <memory>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+
+#include "pm/core/PhotoModel.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoRig.h"
+#include "pm/precise/PreciseStage.h"
+#include "pm/tracker/QualityScale.h"
+#include "pm/tracker/TrackResult.h"
+
+namespace pm::tracker {
+
+//! The precise stage's place in the chain: on or off, the stage's own parameters, its acceptance rule and its restarts.
+struct PreciseRefinementParams
+{
+  bool enabled = true;             //!< false, or a model without outlines: the chain goes on to the ascent
+  precise::PreciseParams stage;    //!< the precise stage's parameters (PreciseStage.h)
+  double maxDropQ = 0.02;          //!< the precise pose is kept unless q there is this much under the frame's ...
+  double maxMoveMm = 12;           //!< ... and it moved less than this from its start (mm) ...
+  double maxMoveDeg = 8;           //!< ... and turned less than this (deg)
+  double restartMm = 8;            //!< the frame's pose farther than this from the last frame's (mm) ...
+  double restartDeg = 4;           //!< ... or turned more than this (deg): the stage starts from both
+
+  //! Throws core::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! The chain's precise stage (see the file's description). Keeps a reference to the fitness: it must outlive the stage.
+class PreciseRefinement
+{
+public:
+  //! The stage runs when \e params.enabled and \e model has outlines (core::PhotoModel::hasContours).
+  PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
+                    const core::StereoFitness &fitness, const QualityScale &scale);
+
+  bool active() const { return m_stage != nullptr; } //!< the stage runs
+  /*!
+    Refines \e r (a locked frame's pose) on the images, from it or from \e last's; true when the
+    result is kept (then \e r's phi and fitness are the stage's). \e r.preciseResult: what it found either way.
+  */
+  bool refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
+  void learnColours(const core::Phi &phi) { m_stage->learnColours(phi); }
+  const precise::PreciseStage *stage() const { return m_stage.get(); } //!< the stage (its colours, its last lines); null when off
+
+private:
+  PreciseRefinementParams m_p;
+  const core::StereoFitness &m_fitness;
+  QualityScale m_scale;
+  std::unique_ptr<precise::PreciseStage> m_stage;
+};
+
+} // namespace pm::tracker

@@ -1,0 +1,85 @@
+#pragma once
+/*!
+  \file RefinementChain.h
+  After the search (and the lock verifier), on a frame whose q reaches the lock, the frame's pose
+  goes through the refinement chain, three stages in a fixed order, each with its own acceptance
+  rule in its own parameters:
+   1. the precise stage (PreciseRefinement.h): when its pose is kept, it is final: the chain ends
+      there (the later stages are for the models and frames it does not serve) and the tilt filter
+      restarts;
+   2. the smooth ascent (AscentRefinement.h): the top of F's plateau near the frame's pose;
+   3. the tilt filter (TiltFilter.h): the tilt smoothed from frame to frame (a model of one or a few
+      views sees it poorly; an all-around model gets a lighter filter), on frames tracked in a row.
+  A frame under the lock skips the chain (the tilt filter restarts).
+
+  \code
+    pm::tracker::RefinementChain chain(params.refinement, rig, model, fitness, scale);
+    const auto inject = chain.refine(r, last, IL, IR, locked); // r.phi: the chain's pose
+    if (inject) search.inject(*inject);                     // the precise stage's pose joins RM-GA
+  \endcode
+*/
+#include <optional>
+
+#include "pm/tracker/AscentRefinement.h"
+#include "pm/tracker/PreciseRefinement.h"
+#include "pm/tracker/RmGaUpdate.h"
+#include "pm/tracker/TiltFilter.h"
+
+namespace pm::tracker {
+
+//! The chain's stages' parameters, in their order (see RefinementChain.h).
+struct RefinementParams
+{
+  PreciseRefinementParams precise; //!< 1. the precise stage
+  AscentParams ascent;             //!< 2. the smooth ascent
+  /*!
+    3. The tilt filter for a model of one or a few views (flat, a stereo snapshot); alpha 1 and beta 0: off.
+  */
+  TiltFilterParams tiltFilter;
+  /*!
+    3. The same for an all-around model (core::PhotoModel::isAllAround), whose outline changes with
+    the tilt as the toy's does: lighter smoothing. Measured on the main job (C12, seeds 1-5): the
+    one-view filter (alpha 0.2, beta 0.02) lags the tilted steps by 5-6 deg and servoed 97 frames on
+    a wrong pose in all; alpha 0.5, beta 0: 17 (docs/all-around-model.md).
+  */
+  TiltFilterParams tiltFilterAllAround{0.5, 0.0, 5.0};
+
+  //! Throws core::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! The refinement chain (see the file's description): owns its stages and their state.
+class RefinementChain
+{
+public:
+  //! The stages for \e model on \e rig (the precise stage only for a model with outlines), scoring with \e fitness.
+  RefinementChain(const RefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
+                  const core::StereoFitness &fitness, const QualityScale &scale);
+
+  /*!
+    The stages on \e r (\e locked: its q reaches the lock; \e last: the last frame's result). Returns
+    the precise stage's pose, to join RM-GA's population, when it is the frame's.
+  */
+  std::optional<RmGaUpdate::Inject> refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left,
+                                           const vpImage<vpRGBa> &right, bool locked);
+  //! The pose jumped (the lock verifier moved the tracker): the tilt filter restarts.
+  void restart() { m_tilt.reset(); }
+  //! After the judgement: the precise stage learns the colours along the outline of a trusted pose.
+  void learn(const TrackResult &r);
+  //! The hand moved by \e hNowMhPrev: the tilt filter's state follows.
+  void transform(const vpHomogeneousMatrix &hNowMhPrev) { m_tilt.transform(hNowMhPrev); }
+  //! A new start.
+  void reset() { m_tilt.reset(); }
+
+  const PreciseRefinement &precise() const { return m_precise; } //!< stage 1
+  const TiltFilterParams &tiltFilter() const { return m_tiltParams; } //!< stage 3's parameters for this model
+
+private:
+  PreciseRefinement m_precise;
+  AscentRefinement m_ascent;
+  TiltFilterParams m_tiltParams;
+  TiltFilter m_tilt;
+  const core::StereoFitness &m_fitness;
+};
+
+} // namespace pm::tracker

@@ -1,0 +1,90 @@
+#pragma once
+/*!
+  \file SteadyFramePolicy.h
+  Steady frames: once the target has been tracked for a few frames in a row with q near its recent
+  best, a frame's search gets only a fraction of the budget (the refinement chain does the fine
+  work) and its hue planes are computed only where the model can land (the windows around its
+  footprint at the last pose and at the pose the last two frames predict). A steady frame whose q
+  falls (the target started to move fast, a jump, an occlusion) escalates: the rest of the whole
+  budget at once, on the whole images. Any other frame (searching, lost, just locked, q dropping)
+  gets the whole budget.
+
+  The policy owns what it decides from: the recent best q (forgotten at 0.001 per frame, and
+  remembered through a loss, so that a relock on a wrong pose, of lower q, is not taken for
+  steady), the count of steady frames and the two last poses (for the windows' prediction).
+
+  \code
+    pm::tracker::SteadyFramePolicy steady(params.steady);
+    pm::tracker::FramePlan plan = steady.plan(verifying);         // before the frame
+    if (plan.windowed)
+      fitness.setImages(IL, IR, steady.windows(fitness, lastPose));
+    ...
+    if (plan.steady && steady.escalates(q))  // after the steady search
+      moreSearch();
+    steady.update(state, q);                 // after the frame's state
+  \endcode
+*/
+#include <array>
+#include <functional>
+
+#include "pm/core/HuePlane.h"
+#include "pm/core/Pose.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/tracker/FramePlan.h"
+#include "pm/tracker/TrackResult.h"
+
+namespace pm::tracker {
+
+//! The steady frames' parameters (see SteadyFramePolicy.h); validate() checks them.
+struct SteadyParams
+{
+  double budgetFraction = 0.15; //!< a steady frame's share of the budget (1: every frame the same)
+  int afterFrames = 3;          //!< tracked frames in a row near the recent best q before a frame is steady (>= 1)
+  double qualityDrop = 0.03;    //!< how far under its recent best q may lie and still count as steady (in q)
+  //! A steady frame whose q ends more than qualityDrop under the recent best gets the rest of the whole budget at once.
+  bool escalation = true;
+  /*!
+    On a steady frame the hue planes are computed only where the model can land (core::StereoFitness::
+    footprint at the last and the predicted pose), grown by this many pixels. The confidence's cues are
+    scored on the whole images all the same (core::StereoFitness::addHueUnder). 0: always the whole images.
+  */
+  int hueMarginPx = 24;
+
+  //! Throws core::Error naming the first parameter out of range.
+  void validate() const;
+};
+
+//! The steady-frame policy (see the file's description).
+class SteadyFramePolicy
+{
+public:
+  //! Copies \e params; no frame is steady until the target has been tracked.
+  explicit SteadyFramePolicy(const SteadyParams &params) : m_p(params) {}
+
+  //! This frame's plan (budgets not yet set): steady or not, windowed or not; \e verifying: the challenger runs (whole images).
+  FramePlan plan(bool verifying) const;
+  //! The hue windows of a steady frame in each camera: the model's footprint at \e last and at the predicted pose, grown.
+  std::array<core::PixelRect, 2> windows(const core::StereoFitness &fitness, const core::Phi &last) const;
+  //! A steady frame whose search ended at \e q must escalate (SteadyParams::escalation).
+  bool escalates(double q) const { return m_p.escalation && q < m_recentBestQ - m_p.qualityDrop; }
+  //! The recent best q (the confidence's drop is measured from it).
+  double recentBestQ() const { return m_recentBestQ; }
+
+  //! After the frame's state: the recent best q and the count of steady frames.
+  void update(TrackState state, double q);
+  //! At the frame's end: \e last (the previous frame's pose) kept for the prediction when \e bothTracked (it and this frame).
+  void remember(const core::Phi &last, bool bothTracked);
+  //! The hand moved: the remembered pose follows.
+  void transform(const std::function<core::Phi(const core::Phi &)> &moved);
+  //! A new start: not steady, no recent best, no past poses.
+  void reset();
+
+private:
+  SteadyParams m_p;
+  int m_steadyFrames = 0;  //!< frames tracked in a row near the recent best q
+  double m_recentBestQ = 0;
+  core::Phi m_beforeLast;  //!< the pose of the frame before the last (for the windows' prediction)
+  bool m_haveBeforeLast = false;
+};
+
+} // namespace pm::tracker

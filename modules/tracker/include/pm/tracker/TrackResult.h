@@ -1,0 +1,66 @@
+#pragma once
+/*!
+  \file TrackResult.h
+  What the tracker says about a frame: the pose hMo, its fitness, the state, the confidence and
+  the uncertainty (PhotoModelTracker::track()).
+
+  \code
+    const pm::tracker::TrackResult r = tracker.track(IL, IR);
+    std::cout << pm::tracker::toString(r.state) << " q " << r.quality << " confidence " << r.confidence << "\n";
+    if (r.trusted)          // tracking, verified, confident: a pose to act on
+      use(r.hMo);
+  \endcode
+*/
+#include <array>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+
+#include "pm/core/Pose.h"
+#include "pm/precise/PoseUncertainty.h"
+#include "pm/precise/PreciseStage.h"
+#include "pm/tracker/TrackConfidence.h"
+
+namespace pm::tracker {
+
+/*!
+  The tracker's state (LockState.h): Searching after initialize(), until a first lock; Tracking
+  while q holds; Lost after LockParams::lostFrames frames under LockParams::lostQuality, until a new lock.
+*/
+enum class TrackState { Searching, Tracking, Lost };
+//! The state's name: "searching", "tracking" or "lost".
+const char *toString(TrackState s);
+
+//! What PhotoModelTracker::track() says about a frame (also kept: PhotoModelTracker::lastResult()).
+struct TrackResult
+{
+  vpHomogeneousMatrix hMo;  //!< pose of the model in the hand frame (metres)
+  core::Phi phi;            //!< the same as phi (mm, quaternion vector)
+  double fitness = 0;       //!< F at phi
+  double quality = 0;       //!< q, the normalised fitness
+  TrackState state = TrackState::Searching; //!< the state after this frame
+  long evaluations = 0;     //!< the work of RM-GA and the verification, in whole evaluations (see rmga::FrameResult)
+  long candidates = 0;      //!< poses they scored
+  int generations = 0;      //!< RM-GA generations they ran
+  double computeMs = 0;     //!< time spent in track()
+  /*!
+    Where it went (ms): the hue planes; the search (RM-GA, any escalation, the verification); the
+    refinement chain (the precise stage, or the smooth ascent and the tilt filter); the judgement.
+  */
+  std::array<double, 4> stageMs{};
+  bool steady = false;      //!< the frame had the steady budget (and no more)
+  bool escalated = false;   //!< a steady frame whose q fell, given the rest of the whole budget (SteadyParams::escalation)
+  int ascentEvaluations = 0; //!< evaluations of the smooth score and its gradient by the climb (0: none)
+  bool precise = false;      //!< the precise stage's pose is the frame's (PreciseRefinementParams::enabled)
+  precise::PreciseResult preciseResult; //!< what the precise stage found (its lines, residual, information), when it ran
+  //! The pose's 1-sigma per axis in mm and deg (PoseUncertainty.h): known when the precise stage's pose is the frame's.
+  precise::PoseUncertainty uncertainty;
+
+  ConfidenceCues cues;       //!< what the confidence is computed from
+  double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)
+  bool verified = false;     //!< the lock survived its challenger search (VerifierParams::evaluations)
+  bool switched = false;     //!< the challenger found a better pose elsewhere this frame and the tracker moved there
+  //! Tracking, verified and confidence at or above the threshold: a pose a robot may act on.
+  bool trusted = false;
+};
+
+} // namespace pm::tracker

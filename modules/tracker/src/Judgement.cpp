@@ -1,0 +1,124 @@
+#include "pm/tracker/Judgement.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pm/core/Pose.h"
+
+namespace pm::tracker {
+
+JudgementParams JudgementParams::forModel(const core::PhotoModel &model) const
+{
+  JudgementParams p = *this;
+  if (confidence.kind == ConfidenceKind::Auto) { // the coefficients of the model's kind, the threshold as given
+    const ConfidenceKind kind = model.isAllAround() ? ConfidenceKind::AllAround : model.hasDepth() ? ConfidenceKind::Stereo : ConfidenceKind::Flat;
+    p.confidence = ConfidenceModel::shipped(kind);
+    p.confidence.threshold = confidence.threshold;
+  }
+  return p;
+}
+
+void JudgementParams::validate() const
+{
+  confidence.validate();
+  uncertainty.validate();
+}
+
+Judgement::Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale)
+    : m_p(params), m_competitorMinDeg(competitorMinDeg), m_fitness(fitness), m_scale(scale)
+{
+}
+
+std::size_t Judgement::competitors(const core::Phi &phi, core::Phi *out) const
+{
+  const vpHomogeneousMatrix hMb = core::toHomogeneousMatrix(phi);
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < 8; ++k) {
+    core::Phi p;
+    if (k < 7) { // turned about the model's z axis: -135..-45, 45..180 deg
+      const double a = (static_cast<double>(k) - 3.0) * M_PI / 4.0 + (k >= 3 ? M_PI / 4.0 : 0.0);
+      p = core::fromHomogeneousMatrix(hMb * vpHomogeneousMatrix(0, 0, 0, 0, 0, a));
+    } else { // the tilt mirrored
+      p = core::Phi{phi.x, phi.y, phi.z, -phi.e1, -phi.e2, phi.e3};
+    }
+    if (p.isValid())
+      out[n++] = p;
+  }
+  return n;
+}
+
+Evidence Judgement::measure(const TrackResult &r) const
+{
+  Evidence e;
+  ConfidenceCues &c = e.cues;
+  const core::FitnessDetail d = m_fitness.evaluateDetail(r.phi);
+  c.quality = r.quality;
+  c.qualityMin = std::min(m_scale.quality(d.left), m_scale.quality(d.right));
+  auto shares = [](const core::FitnessCounts &n, double &in, double &out) {
+    const int nIn = n.inMatch + n.inBackground + n.inOther + n.inOff, nOut = n.outBackground + n.outOther + n.outOff;
+    in = nIn > 0 ? static_cast<double>(n.inMatch) / nIn : 0.0;
+    out = nOut > 0 ? static_cast<double>(n.outBackground) / nOut : 0.0;
+  };
+  double inL, outL, inR, outR;
+  shares(d.countsLeft, inL, outL);
+  shares(d.countsRight, inR, outR);
+  c.inMatchMin = std::min(inL, inR);
+  c.outBackgroundMin = std::min(outL, outR);
+  const core::Phi &phi = r.phi;
+  const double r22 = 1.0 - 2.0 * (phi.e1 * phi.e1 + phi.e2 * phi.e2); // the model's z axis . the hand's
+  c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;
+  // Competing poses of the same object: turned about the model's z axis, or the tilt mirrored.
+  std::array<core::Phi, 8> all, rivals;
+  std::array<double, 8> rivalF{};
+  std::size_t nRivals = 0;
+  const std::size_t n = competitors(phi, all.data());
+  for (std::size_t k = 0; k < n; ++k)
+    if (core::rotationDistanceDeg(all[k], phi) > m_competitorMinDeg) // a mirrored small tilt is the same pose
+      rivals[nRivals++] = all[k];
+  m_fitness.evaluate(rivals.data(), nRivals, rivalF.data()); // one batch, on two cores
+  double qAlt = -1e9;
+  for (std::size_t k = 0; k < nRivals; ++k)
+    qAlt = std::max(qAlt, m_scale.quality(rivalF[k]));
+  c.competitorMargin = r.quality - qAlt;
+  if (r.precise) { // how well the precise stage's lines pin the pose (their sigmas, once), and how well they fit
+    const precise::PreciseResult &p = r.preciseResult;
+    e.lineSigmas = precise::lineSigmas(p.information);
+    const std::array<double, 6> &s = e.lineSigmas;
+    c.precise = true;
+    c.preciseResidualPx = p.residualPx;
+    c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
+    c.preciseSigmaDeg = std::min(1e3, std::max({s[3], s[4], s[5]}));
+    c.separation = p.separation;
+    c.cameraDisagreementPx = std::fabs(p.residualPxPerCamera[0] - p.residualPxPerCamera[1]);
+  }
+  return e;
+}
+
+double Judgement::firstLockConfidence(const Evidence &e, double recentBestQ, bool verifiedAtOnce) const
+{
+  ConfidenceCues lock = e.cues;
+  lock.qualityDrop = std::max(0.0, recentBestQ - lock.quality);
+  lock.framesTracked = 1;
+  lock.verified = verifiedAtOnce;
+  lock.tracking = true;
+  return m_p.confidence.confidence(lock);
+}
+
+void Judgement::judge(TrackResult &r, const Evidence &e, const JudgedState &state) const
+{
+  ConfidenceCues &c = r.cues;
+  c = e.cues;
+  c.qualityDrop = std::max(0.0, state.recentBestQ - r.quality);
+  c.jumpMm = state.last ? core::translationDistanceMm(r.phi, *state.last) : 0.0;
+  c.jumpDeg = state.last ? core::rotationDistanceDeg(r.phi, *state.last) : 0.0;
+  c.framesTracked = state.framesTracked;
+  c.verified = state.verified;
+  c.tracking = r.state == TrackState::Tracking;
+  if (r.precise)
+    r.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, r.preciseResult.residualPx);
+  r.verified = state.verified;
+  r.confidence = m_p.confidence.confidence(c);
+  r.trusted = c.tracking && r.verified && r.confidence >= m_p.confidence.threshold;
+}
+
+} // namespace pm::tracker

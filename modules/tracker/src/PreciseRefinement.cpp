@@ -1,0 +1,64 @@
+#include "pm/tracker/PreciseRefinement.h"
+
+#include "pm/core/Error.h"
+
+namespace pm::tracker {
+
+void PreciseRefinementParams::validate() const
+{
+  stage.validate();
+  if (!(maxDropQ >= 0) || !(restartMm > 0) || !(restartDeg > 0) || !(maxMoveMm > 0) || !(maxMoveDeg > 0))
+    throw core::Error("tracker: the precise stage's fitness drop must be non-negative and its restart and move distances positive");
+}
+
+PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
+                                     const core::StereoFitness &fitness, const QualityScale &scale)
+    : m_p(params), m_fitness(fitness), m_scale(scale)
+{
+  if (params.enabled && model.hasContours())
+    m_stage = std::make_unique<precise::PreciseStage>(rig, model, params.stage);
+}
+
+bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+{
+  m_stage->setImages(left, right);
+  const double minF = r.fitness - m_scale.fitnessSpan(m_p.maxDropQ);
+  auto acceptable = [&](const precise::PreciseResult &p, const core::Phi &start, double &F) {
+    if (!p.ok || core::translationDistanceMm(p.phi, start) > m_p.maxMoveMm || core::rotationDistanceDeg(p.phi, start) > m_p.maxMoveDeg)
+      return false;
+    F = m_fitness.evaluate(p.phi);
+    return F >= minF;
+  };
+  const bool haveLast = last.state == TrackState::Tracking && last.precise && last.phi.isValid();
+  const bool near = haveLast && core::translationDistanceMm(r.phi, last.phi) <= m_p.restartMm &&
+                    core::rotationDistanceDeg(r.phi, last.phi) <= m_p.restartDeg;
+  precise::PreciseResult best;
+  double bestF = 0;
+  bool found = false;
+  if (haveLast) {
+    const precise::PreciseResult fromLast = m_stage->refine(last.phi, true); // the target moves little between frames
+    r.preciseResult = fromLast;
+    found = acceptable(fromLast, last.phi, bestF);
+    if (found)
+      best = fromLast;
+  }
+  if (!near || !found) {
+    const precise::PreciseResult fromSearch = m_stage->refine(r.phi);
+    double F = 0;
+    if (acceptable(fromSearch, r.phi, F) && (!found || fromSearch.residualPx < best.residualPx)) {
+      best = fromSearch;
+      bestF = F;
+      found = true;
+    }
+    if (!found)
+      r.preciseResult = fromSearch;
+  }
+  if (!found)
+    return false;
+  r.preciseResult = best;
+  r.phi = best.phi;
+  r.fitness = bestF;
+  return true;
+}
+
+} // namespace pm::tracker

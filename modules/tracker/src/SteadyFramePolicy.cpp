@@ -1,0 +1,69 @@
+#include "pm/tracker/SteadyFramePolicy.h"
+
+#include <algorithm>
+
+#include "pm/core/Error.h"
+
+namespace pm::tracker {
+
+void SteadyParams::validate() const
+{
+  if (!(budgetFraction > 0 && budgetFraction <= 1) || afterFrames < 1 || !(qualityDrop >= 0 && qualityDrop < 1) || hueMarginPx < 0 ||
+      hueMarginPx > 10000)
+    throw core::Error("tracker: the steady budget fraction must lie in (0, 1], the steady frames be at least 1, the steady "
+                      "quality drop lie in [0, 1) and the steady hue margin in [0, 10000] px");
+}
+
+FramePlan SteadyFramePolicy::plan(bool verifying) const
+{
+  FramePlan p;
+  p.verifying = verifying;
+  p.steady = m_steadyFrames >= m_p.afterFrames;
+  p.windowed = p.steady && !verifying && m_p.hueMarginPx > 0; // the challenger searches the whole images
+  return p;
+}
+
+std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoFitness &fitness, const core::Phi &last) const
+{
+  std::array<core::PixelRect, 2> w;
+  core::Phi next = last; // constant velocity from the two last frames (else the last pose again)
+  if (m_haveBeforeLast)
+    for (std::size_t i = 0; i < 6; ++i)
+      next[i] = 2 * last[i] - m_beforeLast[i];
+  if (!next.isValid())
+    next = last;
+  for (int cam = 0; cam < 2; ++cam) {
+    const std::size_t c = static_cast<std::size_t>(cam);
+    w[c] = fitness.footprint(last, cam).united(fitness.footprint(next, cam));
+    w[c] = w[c].grown(m_p.hueMarginPx, fitness.camera(cam).w, fitness.camera(cam).h);
+  }
+  return w;
+}
+
+void SteadyFramePolicy::update(TrackState state, double q)
+{
+  const bool tracking = state == TrackState::Tracking;
+  m_recentBestQ = std::max(tracking ? q : 0.0, m_recentBestQ - 0.001);
+  m_steadyFrames = tracking && q >= m_recentBestQ - m_p.qualityDrop ? m_steadyFrames + 1 : 0;
+}
+
+void SteadyFramePolicy::remember(const core::Phi &last, bool bothTracked)
+{
+  m_beforeLast = last;
+  m_haveBeforeLast = bothTracked;
+}
+
+void SteadyFramePolicy::transform(const std::function<core::Phi(const core::Phi &)> &moved)
+{
+  if (m_haveBeforeLast)
+    m_beforeLast = moved(m_beforeLast);
+}
+
+void SteadyFramePolicy::reset()
+{
+  m_steadyFrames = 0;
+  m_recentBestQ = 0;
+  m_haveBeforeLast = false;
+}
+
+} // namespace pm::tracker

@@ -1,0 +1,299 @@
+// The tracker's parts, one at a time: the lock state, the steady-frame policy, the frame's budgets, the
+// quality scale, the search's changes applied in one place, the lock verifier and the judgement.
+#include <gtest/gtest.h>
+
+#include "C12Scene.h"
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/io/RigFile.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/FramePlan.h"
+#include "pm/tracker/Judgement.h"
+#include "pm/tracker/LockState.h"
+#include "pm/tracker/LockVerifier.h"
+#include "pm/tracker/PoseSearch.h"
+#include "pm/tracker/QualityScale.h"
+#include "pm/tracker/RefinementChain.h"
+#include "pm/tracker/SteadyFramePolicy.h"
+#include "pm/tracker/TrackerParams.h"
+
+using pm::tracker::RmGaUpdate;
+using pm::tracker::TrackState;
+
+namespace {
+
+using Crab = pm::test::C12Scene;
+const Crab &crab() { return pm::test::c12(); }
+
+//! The crab's fitness on its pair, and its quality scale, as the tracker makes them.
+struct Scored
+{
+  pm::core::StereoFitness fitness;
+  pm::tracker::QualityScale scale;
+  explicit Scored(const Crab &c)
+      : fitness(c.rig, c.sm.build.model, pm::tracker::trackerFitnessDefaults()),
+        scale(c.sm.build.model, pm::tracker::trackerFitnessDefaults())
+  {
+    fitness.setImages(c.im.left, c.im.right);
+  }
+};
+
+} // namespace
+
+TEST(LockState, LocksLosesAfterItsFramesAndSaysWhatRmGaMustDo)
+{
+  pm::tracker::LockParams p; // lock at 0.35, lost under 0.2 for 3 frames
+  pm::tracker::LockState s(p);
+  EXPECT_EQ(s.state(), TrackState::Searching);
+  EXPECT_FALSE(s.wouldLock(0.3));
+  EXPECT_EQ(s.update(0.3, false), RmGaUpdate::Restart::None); // under the lock: still searching
+  EXPECT_EQ(s.state(), TrackState::Searching);
+  EXPECT_TRUE(s.wouldLock(0.5));
+  EXPECT_EQ(s.update(0.5, true), RmGaUpdate::Restart::AwayFromBest); // a lock refused: scatter, keep searching
+  EXPECT_EQ(s.state(), TrackState::Searching);
+  EXPECT_EQ(s.update(0.5, false), RmGaUpdate::Restart::None);
+  EXPECT_EQ(s.state(), TrackState::Tracking);
+  EXPECT_EQ(s.framesTracked(), 1);
+  EXPECT_FALSE(s.wouldLock(0.9)); // already tracking: no new lock
+  // Two frames under lostQuality, one over: the count starts again.
+  s.update(0.1, false);
+  s.update(0.1, false);
+  s.update(0.25, false);
+  EXPECT_EQ(s.state(), TrackState::Tracking);
+  EXPECT_EQ(s.framesTracked(), 4);
+  s.update(0.1, false);
+  s.update(0.1, false);
+  EXPECT_EQ(s.update(0.1, false), RmGaUpdate::Restart::AroundBest); // the third in a row: lost, search again around the best
+  EXPECT_EQ(s.state(), TrackState::Lost);
+  EXPECT_EQ(s.framesTracked(), 0);
+  EXPECT_EQ(s.update(0.1, false), RmGaUpdate::Restart::None); // once, when it is lost
+  EXPECT_EQ(s.state(), TrackState::Lost);
+  s.reset(TrackState::Tracking);
+  EXPECT_EQ(s.state(), TrackState::Tracking);
+  pm::tracker::LockParams bad;
+  bad.lostQuality = 0.5;
+  EXPECT_THROW(bad.validate(), pm::core::Error);
+}
+
+TEST(SteadyFramePolicy, SteadyAfterItsFramesNearTheRecentBestWhichIsRememberedThroughALoss)
+{
+  pm::tracker::SteadyParams p; // steady after 3 frames within 0.03 of the recent best
+  pm::tracker::SteadyFramePolicy s(p);
+  EXPECT_FALSE(s.plan(false).steady);
+  for (int k = 0; k < 3; ++k)
+    s.update(TrackState::Tracking, 0.6);
+  const pm::tracker::FramePlan steady = s.plan(false);
+  EXPECT_TRUE(steady.steady);
+  EXPECT_TRUE(steady.windowed);
+  EXPECT_FALSE(s.plan(true).windowed); // the challenger searches the whole images
+  EXPECT_TRUE(s.plan(true).steady);
+  EXPECT_DOUBLE_EQ(s.recentBestQ(), 0.6);
+  EXPECT_FALSE(s.escalates(0.58));
+  EXPECT_TRUE(s.escalates(0.56)); // more than 0.03 under the recent best
+  s.update(TrackState::Tracking, 0.5); // a drop: not steady any more
+  EXPECT_FALSE(s.plan(false).steady);
+  EXPECT_NEAR(s.recentBestQ(), 0.599, 1e-12); // forgotten at 0.001 a frame
+  s.update(TrackState::Lost, 0.1);
+  EXPECT_NEAR(s.recentBestQ(), 0.598, 1e-12); // remembered through a loss
+  s.reset();
+  EXPECT_DOUBLE_EQ(s.recentBestQ(), 0.0);
+  pm::tracker::SteadyParams off = p;
+  off.escalation = false;
+  pm::tracker::SteadyFramePolicy noEscalation(off);
+  noEscalation.update(TrackState::Tracking, 0.6);
+  EXPECT_FALSE(noEscalation.escalates(0.1));
+}
+
+TEST(SteadyFramePolicy, ItsWindowsHoldTheModelAtTheLastAndThePredictedPose)
+{
+  const Crab &c = crab();
+  pm::core::StereoFitness fitness(c.rig, c.sm.build.model);
+  pm::tracker::SteadyParams p;
+  pm::tracker::SteadyFramePolicy s(p);
+  pm::core::Phi before = c.truth, last = c.truth;
+  before.x -= 30; // moving 30 mm a frame along x: the next pose is predicted 30 mm further
+  s.remember(before, true);
+  pm::core::Phi next = last;
+  next.x += 30;
+  const std::array<pm::core::PixelRect, 2> w = s.windows(fitness, last);
+  for (int cam = 0; cam < 2; ++cam) {
+    for (const pm::core::Phi &q : {last, next}) {
+      const pm::core::PixelRect f = fitness.footprint(q, cam);
+      EXPECT_LE(w[static_cast<std::size_t>(cam)].u0, f.u0 - (f.u0 > 0 ? std::min(p.hueMarginPx, f.u0) : 0));
+      EXPECT_GE(w[static_cast<std::size_t>(cam)].u1, f.u1);
+      EXPECT_LE(w[static_cast<std::size_t>(cam)].v0, f.v0);
+      EXPECT_GE(w[static_cast<std::size_t>(cam)].v1, f.v1);
+    }
+    EXPECT_LT(w[static_cast<std::size_t>(cam)].u1 - w[static_cast<std::size_t>(cam)].u0, 640); // a window, not the image
+  }
+}
+
+TEST(FramePlan, TheBudgetsSplitTheWholeOneBetweenTheSearchAndTheChallenger)
+{
+  pm::tracker::TrackerParams tp; // 800 evaluations, 15 % on steady frames, half to the challenger
+  pm::tracker::FramePlan f;
+  f.setBudgets(tp.search, tp.steady, tp.verifier);
+  EXPECT_EQ(f.main.evaluations, 800);
+  EXPECT_EQ(f.challenger.evaluations, 400);
+  f.steady = true;
+  f.setBudgets(tp.search, tp.steady, tp.verifier);
+  EXPECT_EQ(f.main.evaluations, 120);
+  EXPECT_EQ(f.mainWhole.evaluations, 800);
+  f.verifying = true;
+  f.setBudgets(tp.search, tp.steady, tp.verifier);
+  EXPECT_EQ(f.main.evaluations, 120);      // the steady budget, the challenger's share on top
+  EXPECT_EQ(f.mainWhole.evaluations, 400); // an escalation gets the whole budget but the challenger's share
+  tp.steady.budgetFraction = 0.01;
+  f.setBudgets(tp.search, tp.steady, tp.verifier);
+  EXPECT_EQ(f.main.evaluations, tp.search.ga.population); // never under one population
+  // A wall-time budget: the hue planes' time is taken out of it.
+  tp.search.budgetEvaluations = 0;
+  tp.search.budgetMs = 10;
+  pm::tracker::FramePlan t;
+  t.hueMs = 2;
+  t.setBudgets(tp.search, tp.steady, tp.verifier);
+  EXPECT_DOUBLE_EQ(t.main.milliseconds, 8);
+  EXPECT_DOUBLE_EQ(pm::tracker::budgetPart(pm::rmga::FrameBudget::ms(10), 0.25, 20).milliseconds, 2.5);
+}
+
+TEST(QualityScale, TheBackgroundScoresZeroAndAPerfectMatchOne)
+{
+  const Crab &c = crab();
+  const pm::core::FitnessParams f = pm::tracker::trackerFitnessDefaults();
+  const pm::tracker::QualityScale q(c.sm.build.model, f);
+  const double n = static_cast<double>(c.sm.build.model.size()), nIn = static_cast<double>(c.sm.build.model.inner.size());
+  const double nOut = n - nIn;
+  EXPECT_NEAR(q.quality((f.inBackground * nIn + f.outBackground * nOut) / n), 0.0, 1e-12);
+  EXPECT_NEAR(q.quality((f.inMatch * nIn + f.outBackground * nOut) / n), 1.0, 1e-12);
+  EXPECT_NEAR(q.fitnessSpan(1.0), (f.inMatch - f.inBackground) * nIn / n, 1e-12);
+  pm::core::FitnessParams flat = f;
+  flat.inMatch = flat.inBackground; // a match scores no better than the background
+  EXPECT_THROW(pm::tracker::QualityScale(c.sm.build.model, flat), pm::core::Error);
+}
+
+TEST(PoseSearch, TheFramesChangesAreAppliedInOnePlaceInTheirOrder)
+{
+  const Crab &c = crab();
+  Scored scored(c);
+  const pm::core::StereoFitness &fitness = scored.fitness;
+  const pm::tracker::QualityScale &scale = scored.scale;
+  pm::tracker::SearchParams p;
+  pm::tracker::PoseSearch search(p, fitness, scale);
+  search.initialize();
+  EXPECT_FALSE(search.ga().hasAnchor());
+  search.evolve(pm::rmga::FrameBudget::evals(200), true);
+  // A reseed, then an injected pose: the population is around the reseed, with the pose among it.
+  RmGaUpdate u;
+  u.reseed = RmGaUpdate::Reseed{c.truth, 0.0};
+  pm::core::Phi found = c.truth;
+  found.x += 1;
+  u.inject = RmGaUpdate::Inject{found, 1.5};
+  u.anchor = c.truth;
+  search.apply(u);
+  bool injected = false;
+  for (const auto &ind : search.ga().population()) {
+    EXPECT_LT(pm::core::translationDistanceMm(ind.phi, c.truth), 2.0);
+    injected = injected || ind.fitness == 1.5;
+  }
+  EXPECT_TRUE(injected);
+  ASSERT_TRUE(search.ga().hasAnchor());
+  EXPECT_LT(pm::core::translationDistanceMm(search.ga().anchor(), c.truth), 1.0);
+  // A scatter (a lock refused) keeps only the best in place: most of the population moves away.
+  RmGaUpdate s;
+  s.restart = RmGaUpdate::Restart::AwayFromBest;
+  search.apply(s);
+  int far = 0;
+  for (const auto &ind : search.ga().population())
+    far += pm::core::translationDistanceMm(ind.phi, c.truth) > 20;
+  EXPECT_GT(far, p.ga.population / 2);
+}
+
+TEST(LockVerifier, AWrongLockIsChallengedAndARightOneVerified)
+{
+  const Crab &c = crab();
+  Scored scored(c);
+  const pm::core::StereoFitness &fitness = scored.fitness;
+  const pm::tracker::QualityScale &scale = scored.scale;
+  pm::tracker::SearchParams sp;
+  const pm::rmga::RmGa anchorless(sp.space, sp.ga);
+  pm::tracker::VerifierParams vp;
+  vp.evaluations = 1200;
+  // The right pose: no objection, verified once its evaluations are spent.
+  pm::tracker::LockVerifier right(vp, sp, fitness, scale);
+  EXPECT_FALSE(right.verifying(TrackState::Tracking));
+  right.onState(TrackState::Searching, TrackState::Tracking, c.truth, anchorless);
+  EXPECT_TRUE(right.verifying(TrackState::Tracking));
+  EXPECT_FALSE(right.verified());
+  pm::tracker::TrackResult work;
+  for (int k = 0; k < 6 && !right.verified(); ++k)
+    EXPECT_FALSE(right.challenge(pm::rmga::FrameBudget::evals(400), c.truth, fitness.evaluate(c.truth), anchorless, work));
+  EXPECT_TRUE(right.verified());
+  EXPECT_GT(work.evaluations, 0);
+  EXPECT_FALSE(right.verifying(TrackState::Tracking));
+  // A lock far off the crab: the challenger finds the crab, clearly better, and the tracker must move there.
+  pm::core::Phi wrong = c.truth;
+  wrong.x += 90;
+  wrong.y -= 60;
+  pm::tracker::LockVerifier verifier(vp, sp, fitness, scale);
+  verifier.onState(TrackState::Searching, TrackState::Tracking, wrong, anchorless);
+  std::optional<std::pair<pm::core::Phi, double>> better;
+  for (int k = 0; k < 20 && !better; ++k)
+    better = verifier.challenge(pm::rmga::FrameBudget::evals(400), wrong, fitness.evaluate(wrong), anchorless, work);
+  ASSERT_TRUE(better.has_value());
+  EXPECT_LT(pm::core::translationDistanceMm(better->first, c.truth), 20.0);
+  EXPECT_DOUBLE_EQ(better->second, fitness.evaluate(better->first));
+  EXPECT_FALSE(verifier.verified()); // the new pose is verified in turn
+  // A target no longer tracked is no longer verified, nor verifying.
+  verifier.onState(TrackState::Tracking, TrackState::Lost, better->first, anchorless);
+  EXPECT_FALSE(verifier.verifying(TrackState::Tracking));
+  EXPECT_FALSE(verifier.verified());
+}
+
+TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
+{
+  const Crab &c = crab();
+  Scored scored(c);
+  const pm::core::StereoFitness &fitness = scored.fitness;
+  const pm::tracker::QualityScale &scale = scored.scale;
+  const pm::tracker::JudgementParams params = pm::tracker::JudgementParams().forModel(c.sm.build.model);
+  EXPECT_EQ(params.confidence.kind, pm::tracker::ConfidenceKind::Flat); // the coefficients of the model's kind
+  const pm::tracker::Judgement judgement(params, 5.0, fitness, scale);
+  pm::core::Phi seen[8];
+  EXPECT_EQ(judgement.competitors(c.truth, seen), 8u); // turned about its axis (7) and its tilt mirrored, all valid here
+  pm::tracker::TrackResult r;
+  r.phi = c.truth;
+  r.fitness = fitness.evaluate(c.truth);
+  r.quality = scale.quality(r.fitness);
+  r.state = TrackState::Tracking;
+  const pm::tracker::Evidence e = judgement.measure(r);
+  EXPECT_DOUBLE_EQ(e.cues.quality, r.quality);
+  EXPECT_GT(e.cues.competitorMargin, 0.0); // the right pose stands above its turned copies
+  EXPECT_GT(e.cues.inMatchMin, 0.5);
+  EXPECT_FALSE(e.cues.precise); // a flat model: no precise stage
+  // The state is the tracker's: the same evidence judged as a long verified track, and unverified.
+  pm::tracker::JudgedState s;
+  s.recentBestQ = r.quality;
+  s.framesTracked = 30;
+  s.verified = true;
+  judgement.judge(r, e, s);
+  EXPECT_EQ(r.cues.framesTracked, 30);
+  EXPECT_TRUE(r.verified);
+  EXPECT_EQ(r.trusted, r.confidence >= params.confidence.threshold);
+  pm::tracker::TrackResult u = r;
+  s.verified = false;
+  judgement.judge(u, e, s);
+  EXPECT_FALSE(u.trusted); // never trusted unverified, whatever its confidence
+  EXPECT_LT(u.confidence, r.confidence);
+  // The jump is measured from the last tracked pose, the drop from the recent best.
+  pm::core::Phi last = c.truth;
+  last.x -= 10;
+  s.last = &last;
+  s.recentBestQ = r.quality + 0.1;
+  judgement.judge(u, e, s);
+  EXPECT_NEAR(u.cues.jumpMm, 10.0, 1e-9);
+  EXPECT_NEAR(u.cues.qualityDrop, 0.1, 1e-12);
+  // As a first lock (one frame, unverified) it is less sure than as a long verified track.
+  EXPECT_LT(judgement.firstLockConfidence(e, r.quality, false), r.confidence);
+}
