@@ -3,7 +3,7 @@
 # budget, from two builds, and compares what they wrote (frames.csv, summary.json and the other
 # tables), timings aside.
 #
-#   bash scripts/compare-builds.sh [--cases LIST] [--reuse] BEFORE_BUILD AFTER_BUILD OUT
+#   bash scripts/compare-builds.sh [--cases LIST] [--reuse] [--report-only] BEFORE_BUILD AFTER_BUILD OUT
 #
 #   BEFORE_BUILD, AFTER_BUILD  build trees (their apps/ hold the programs), e.g. ../before/build build
 #   OUT                        OUT/before/<case>/ and OUT/after/<case>/ receive the outputs;
@@ -12,22 +12,27 @@
 #                              servo-r2-viper850, track-table2, detect-all, compare-table2 (default: all)
 #   --reuse                    keep OUT/before/<case> when it is already there (the "before" build
 #                              is run once, the "after" build after each change)
+#   --report-only              run nothing: compare what OUT/before and OUT/after already hold
 #
-# Exit status 0 when every case is the same, 1 when one differs (the report says where), 2 on a
-# usage error. A value is "the same" when it is equal, or both numbers within 1e-9 relative.
-# Ignored (they measure the machine, not the behaviour): columns and keys named *_ms, *ms_*,
-# compute_ms, *_s of wall time, resident memory (the words ms, s, seconds, time, fps, wall, memory), and the tracker's settings (their layout changed
-# with the configuration file's version 2; the values they hold are compared through the outputs).
+# Exit status 0 when every case is the same, 1 when one differs (the report says where, and which of
+# summary.json's figures moved, before -> after), 2 on a usage error. A value is "the same" when it is
+# equal, or both numbers within 1e-9 relative (two absolute paths: the same last three components).
+# Ignored (they measure the machine, not the behaviour): columns and keys named with the words ms, s,
+# seconds, time, fps, wall or memory (but converged_after_s, simulated time), and the tracker's
+# settings (their layout changed with the configuration file's version 2; the values they hold are
+# compared through the outputs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-usage() { sed -n '5,21p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '5,23p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 cases="servo-c12,servo-r2,servo-c12-viper850,servo-r2-viper850,track-table2,detect-all,compare-table2"
 reuse=0
+report_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --cases) [ $# -ge 2 ] || usage; cases="$2"; shift 2 ;;
     --reuse) reuse=1; shift ;;
+    --report-only) report_only=1; shift ;;
     -h|--help) usage ;;
     -*) echo "error: unknown option $1" >&2; usage ;;
     *) break ;;
@@ -73,6 +78,7 @@ run_case() { # build side case
 IFS=',' read -r -a list <<<"$cases"
 for c in "${list[@]}"; do
   args_of "$c" >/dev/null
+  [ "$report_only" = 1 ] && continue
   echo "$c: $(args_of "$c")" >&2
   run_case "$before" before "$c"
   run_case "$after" after "$c"
@@ -134,6 +140,15 @@ def cmp_json(a, b, path, diffs):
     elif not same(a, b):
         diffs.append(f"{path}: {a!r} before, {b!r} after")
 
+def figures(a, b, path, out):
+    """The summary's numbers that moved, skipping lists of many items (per-target tables)."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        for k in sorted(set(a) & set(b)):
+            if not timing(k) and not settings(k, a[k], b[k]) and k != "by_tenth_of_the_run":
+                figures(a[k], b[k], f"{path}.{k}" if path else k, out)
+    elif isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool) and not same(a, b):
+        out.append(f"{path} {a:.6g} -> {b:.6g}")
+
 def cmp_csv(fa, fb, name, diffs):
     ra, rb = list(csv.reader(open(fa))), list(csv.reader(open(fb)))
     if not ra or not rb or ra[0] != rb[0]:
@@ -175,6 +190,12 @@ for c in cases:
             else:
                 rows += cmp_csv(fa, fb, rel, diffs)
     verdict = "same" if not diffs else "DIFFERENT"
+    if diffs:  # what moved: the summary's figures, before and after
+        sa, sb = os.path.join(a, "summary.json"), os.path.join(b, "summary.json")
+        if os.path.exists(sa) and os.path.exists(sb):
+            moved = []
+            figures(json.load(open(sa)), json.load(open(sb)), "", moved)
+            diffs = ["figures: " + m for m in moved[:24]] + diffs
     failed |= bool(diffs)
     report.append(f"{c}: {verdict} ({files} files compared, {rows} table rows)")
     report += ["  " + d for d in diffs[:40]]

@@ -5,10 +5,12 @@
 #include <array>
 
 #include <cmath>
+#include <random>
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
+#include "pm/core/ViewpointIndex.h"
 #include "pm/model/PhotoModelBuilder.h"
 #include "pm/model/StereoPhotoModelBuilder.h"
 #include "pm/io/PhotoModelFile.h"
@@ -470,4 +472,71 @@ TEST(StereoPhotoModel, BadInputIsAClearError)
     const std::string e = pm::test::errorOf([&] { pm::model::buildStereoPhotoModel(rig, u.bgL, u.bgR, u.L, u.R, strict); });
     EXPECT_NE(e.find("too little texture"), std::string::npos) << e;
   }
+}
+
+//! The view of largest dot product with \e c, the first on a tie (none above -2: view 0), by scanning them all.
+static std::size_t nearestByScan(const std::vector<pm::core::Vec3> &dirs, const double c[3])
+{
+  std::size_t best = 0;
+  double bestDot = -2;
+  for (std::size_t k = 0; k < dirs.size(); ++k) {
+    const double d = dirs[k][0] * c[0] + dirs[k][1] * c[1] + dirs[k][2] * c[2];
+    if (d > bestDot) {
+      bestDot = d;
+      best = k;
+    }
+  }
+  return best;
+}
+
+TEST(ViewpointIndex, GivesTheExactNearestViewForAnyDirectionAndAnyNumberOfViews)
+{
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g(0, 1);
+  auto randomUnit = [&] { return pm::core::unit({g(rng), g(rng), g(rng)}); };
+  for (std::size_t n : {1u, 5u, 16u, 17u, 240u, 960u}) {
+    std::vector<pm::core::Vec3> dirs;
+    // Half on a Fibonacci sphere (as a pass's viewpoints), half random (bunched views, sparse regions).
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k % 2 == 0) {
+        const double z = 1 - 2 * (static_cast<double>(k) + 0.5) / static_cast<double>(n), r = std::sqrt(1 - z * z);
+        const double a = 2.399963229728653 * static_cast<double>(k);
+        dirs.push_back({r * std::cos(a), r * std::sin(a), z});
+      } else {
+        dirs.push_back(randomUnit());
+      }
+    }
+    const pm::core::ViewpointIndex index(dirs);
+    ASSERT_EQ(index.size(), n);
+    std::vector<pm::core::Vec3> unitDirs;
+    for (std::size_t k = 0; k < n; ++k)
+      unitDirs.push_back(index.direction(k));
+    std::size_t mismatches = 0;
+    for (int q = 0; q < 20000; ++q) {
+      pm::core::Vec3 d = randomUnit();
+      if (q % 2 && n > 1) { // on the boundary between two views, where a coarse lookup errs
+        const pm::core::Vec3 a = dirs[static_cast<std::size_t>(q) % n], b = dirs[static_cast<std::size_t>(q * 7 + 1) % n];
+        d = pm::core::unit(pm::core::add(a, b));
+        d = pm::core::unit(pm::core::add(d, pm::core::scaled(randomUnit(), 1e-4)));
+      }
+      const double c[3] = {500 * d[0], 500 * d[1], 500 * d[2]}; // a camera 500 mm away
+      mismatches += index.nearest(c) != nearestByScan(unitDirs, c);
+    }
+    EXPECT_EQ(mismatches, 0u) << n << " views";
+  }
+}
+
+TEST(ViewpointIndex, IsTheModelsOwnViewsInOrder)
+{
+  pm::core::PhotoModel m;
+  m.cameraMm[2] = -500; // its own view: from in front
+  pm::core::ModelView back;
+  back.cameraMm[2] = 500;
+  m.views.push_back(back);
+  const pm::core::ViewpointIndex index(m);
+  ASSERT_EQ(index.size(), 2u);
+  const double front[3] = {10, 0, -480}, behind[3] = {0, 20, 450};
+  EXPECT_EQ(index.nearest(front), 0u);
+  EXPECT_EQ(index.nearest(behind), 1u);
+  EXPECT_NEAR(index.direction(1)[2], 1.0, 1e-12);
 }

@@ -46,7 +46,7 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
   m_nIn = model.inner.size();
   m_nOut = model.outer.size();
   // Every view's S_in then S_out, one after the other in the same arrays; view 0 is the model's own.
-  auto addView = [&](const std::vector<ModelPoint> &in, const std::vector<ModelPoint> &out, const double cam[3]) {
+  auto addView = [&](const std::vector<ModelPoint> &in, const std::vector<ModelPoint> &out) {
     View v;
     v.inBegin = m_x.size();
     v.inEnd = v.outBegin = v.inBegin + in.size();
@@ -54,9 +54,6 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
     m_order.resize(v.outEnd);
     v.inSplit = v.inBegin + (in.size() + kRejectStride - 1) / kRejectStride;
     v.outSplit = v.outBegin + (out.size() + kRejectStride - 1) / kRejectStride;
-    const double norm = std::sqrt(cam[0] * cam[0] + cam[1] * cam[1] + cam[2] * cam[2]);
-    for (int k = 0; k < 3; ++k)
-      v.dir[k] = norm > 0 ? cam[k] / norm : 0.0;
     // Each set in the order 0, s, 2s, ..., 1, 1 + s, ... (s = kRejectStride): its first share is an
     // even sample of it, for early rejection. F counts classes, so the order changes nothing else.
     std::size_t modelIndex = m_x.size();
@@ -75,36 +72,10 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
     }
     m_views.push_back(v);
   };
-  addView(model.inner, model.outer, model.cameraMm);
+  addView(model.inner, model.outer);
   for (const ModelView &mv : model.views)
-    addView(mv.inner, mv.outer, mv.cameraMm);
-  if (m_views.size() > kScanViews) {
-    if (m_views.size() > 65535)
-      throw Error("a photo-model may hold at most 65,535 views");
-    // Each cell's centre direction takes the nearest view.
-    m_viewCube.resize(6 * kCubeCells * kCubeCells);
-    for (int face = 0; face < 6; ++face)
-      for (int j = 0; j < kCubeCells; ++j)
-        for (int i = 0; i < kCubeCells; ++i) {
-          const double s = 2.0 * (i + 0.5) / kCubeCells - 1.0, t = 2.0 * (j + 0.5) / kCubeCells - 1.0;
-          const int axis = face / 2;
-          const double sign = face % 2 ? -1.0 : 1.0;
-          double d[3];
-          d[axis] = sign;
-          d[(axis + 1) % 3] = s;
-          d[(axis + 2) % 3] = t;
-          std::size_t best = 0;
-          double bestDot = -1e9;
-          for (std::size_t v = 0; v < m_views.size(); ++v) {
-            const double dd = (m_views[v].dir[0] * d[0] + m_views[v].dir[1] * d[1] + m_views[v].dir[2] * d[2]);
-            if (dd > bestDot) {
-              bestDot = dd;
-              best = v;
-            }
-          }
-          m_viewCube[cubeCell(d)] = static_cast<std::uint16_t>(best);
-        }
-  }
+    addView(mv.inner, mv.outer);
+  m_viewpoints = ViewpointIndex(model);
   // The vector kernels read groups of 8 past a set's end (masked): padding.
   m_x.resize(m_x.size() + 8, 0.f);
   m_y.resize(m_y.size() + 8, 0.f);
@@ -165,6 +136,18 @@ void StereoFitness::countView(const Projection &p, const View &v, int stage, Fit
     kernels::countScalar<true>(p, tol, m, inB, inE, outB, outE, counts);
   else
     kernels::countScalar<false>(p, tol, m, inB, inE, outB, outE, counts);
+}
+
+const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
+{
+  if (m_views.size() == 1)
+    return m_views[0];
+  // The camera's centre in the model frame, -R^T t of cMm, as a direction from the origin: the view
+  // whose camera looked from the nearest direction.
+  double c[3];
+  for (int k = 0; k < 3; ++k)
+    c[k] = -(static_cast<double>(p.r[k]) * p.t[0] + static_cast<double>(p.r[3 + k]) * p.t[1] + static_cast<double>(p.r[6 + k]) * p.t[2]);
+  return m_views[m_viewpoints.nearest(c)];
 }
 
 FitnessCounts StereoFitness::countCamera(int cam, const Phi &phi) const

@@ -39,6 +39,7 @@
 #include "pm/core/Pose.h"
 #include "pm/core/StereoRig.h"
 #include "pm/core/UndistortMap.h"
+#include "pm/core/ViewpointIndex.h"
 
 namespace pm::core {
 
@@ -268,11 +269,10 @@ private:
     std::size_t inBegin, inEnd, outBegin, outEnd; //!< its S_in and S_out in m_x, m_y, m_z, m_hue
     //! The first share of each (every kRejectStride-th point of the model's order): [inBegin, inSplit), [outBegin, outSplit).
     std::size_t inSplit, outSplit;
-    double dir[3];                                //!< unit direction of its camera from the model origin
   };
   //! Counts one camera's points of a view: \e stage 0 all, 1 the first share, 2 the rest.
   void countView(const struct Projection &p, const View &v, int stage, FitnessCounts &counts) const;
-  //! The view scored for a camera at projection \e p: the one whose camera looked from the nearest direction.
+  //! The view scored for a camera at projection \e p: the one whose camera looked from the nearest direction (ViewpointIndex).
   const View &viewFor(const struct Projection &p) const;
   /*!
     Camera \e cam's normalised smooth score at \e phi; adds its gradient to \e grad and (\e metric) its
@@ -295,16 +295,7 @@ private:
   std::vector<float> m_x, m_y, m_z;
   std::vector<std::int32_t> m_hue;
   std::vector<View> m_views; //!< view 0: the model's own points (the only one of a flat or one-view model)
-  /*!
-    Many views (an all-around model): the view nearest each cell of a cube map of directions
-    (6 faces of kCubeCells^2 cells), so that viewFor costs a lookup, not a scan of every view.
-    Empty for a few views (viewFor scans them: the exact nearest).
-  */
-  std::vector<std::uint16_t> m_viewCube;
-  static constexpr int kCubeCells = 64;
-  static constexpr std::size_t kScanViews = 16; //!< up to this many views, viewFor scans them
-  //! The cube-map cell of direction \e c (any length, not zero).
-  static std::size_t cubeCell(const double c[3]);
+  ViewpointIndex m_viewpoints; //!< the view each camera scores: the one made from the nearest direction (the model's own lookup)
   std::vector<std::uint32_t> m_order; //!< m_order[k]: where the k-th point of the model's order (S_in then S_out of each view) is kept
   std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
   std::array<HuePlane, 2> m_planes;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "pm/core/PhotoModel.h"
+#include "pm/core/ViewpointIndex.h"
 
 namespace pm::precise {
 
@@ -33,12 +34,11 @@ namespace pm::precise {
 class OutlineViews
 {
 public:
-  //! One viewpoint: its points [begin, end) and its unit direction from the model's origin.
+  //! One viewpoint: its points [begin, end).
   struct View
   {
     std::size_t begin = 0;          //!< its first point in point()
     std::size_t end = 0;            //!< one past its last point
-    double dir[3] = {0, 0, 1};      //!< the unit direction of its camera from the model's origin
   };
   //! Throws pm::core::Error unless the model carries outlines in every view (PhotoModel::hasContours()).
   explicit OutlineViews(const core::PhotoModel &model);
@@ -46,13 +46,14 @@ public:
   std::size_t size() const { return m_views.size(); }                 //!< viewpoints
   const View &view(std::size_t k) const { return m_views[k]; }        //!< viewpoint \e k
   const core::ContourPoint &point(std::size_t i) const { return m_points[i]; } //!< contour point \e i of the array
-  //! The viewpoint whose direction is nearest that of \e cameraMm (a camera's centre in the model frame, not 0).
-  std::size_t nearest(const double cameraMm[3]) const;
+  //! The viewpoint whose direction is nearest that of \e cameraMm (a camera's centre in the model frame, not 0; core::ViewpointIndex).
+  std::size_t nearest(const double cameraMm[3]) const { return m_index.nearest(cameraMm); }
   //! The most contour points a viewpoint has.
   std::size_t maxPoints() const { return m_maxPoints; }
 
 private:
   std::vector<View> m_views;
+  core::ViewpointIndex m_index; //!< the model's own lookup of the nearest view
   std::vector<core::ContourPoint> m_points;
   std::size_t m_maxPoints = 0;
 };
