@@ -632,8 +632,10 @@ TEST(SmoothFitness, ItsClimbFindsTheBoxFromTwoMillimetresAndADegreeAway)
 {
   // The poster box's stereo model (its depth exact to a fraction of a millimetre): RM-GA's
   // staircase fitness is flat over about a degree of tilt; the climb along the smooth score's
-  // gradient (the tracker's smooth ascent, climbSmooth) gets back to the truth from a pose 2 mm and
-  // 1 deg off in 24 evaluations.
+  // gradient (the tracker's smooth ascent, climbSmooth) gets back from a pose 2 mm and 1 deg off
+  // in 24 evaluations onto the smooth score's ridge: at least half the rotation error gone and 90 %
+  // of the way up to the peak's score (with this one-view model the peak lies about 0.4 deg from
+  // the truth: the climb from the truth itself stops there; the ridge is flat over a few tenths).
   const pm::core::StereoRig rig = labRig();
   const pm::sim::Scene box(pm::sim::makeTarget("R1", 0.25));
   pm::model::StereoModelParams leftOnly; // the one-view model (with the right camera's view: 0.7 mm, 0.35 deg)
@@ -661,7 +663,10 @@ TEST(SmoothFitness, ItsClimbFindsTheBoxFromTwoMillimetresAndADegreeAway)
   EXPECT_LE(c.evaluations, 24);
   EXPECT_GT(c.score, c.startScore);
   EXPECT_LT(std::hypot(c.best.x - truth.x, c.best.y - truth.y, c.best.z - truth.z), 0.5);
-  EXPECT_LT(rotationDeg(c.best, truth), 0.3);
+  EXPECT_LT(rotationDeg(c.best, truth), 0.5);
+  pm::core::Phi fromTruth = truth;
+  const pm::rmga::SmoothAscentResult peak = pm::rmga::climbSmooth(smooth, &fromTruth, 1, a);
+  EXPECT_GT(c.score, c.startScore + 0.9 * (peak.score - c.startScore));
 }
 
 TEST_F(FitnessOnC12, SmoothGradientIsTheSmoothScoresSlopeAndItsValueTheSmoothScore)
@@ -713,8 +718,13 @@ TEST_F(FitnessOnC12, SmoothGradientKernelsAgreeAndTheMetricIsTheMeanImageMotion)
   scalar.useScalarKernel(true);
   const double ss = scalar.evaluateSmoothGradient(q, gs, Ms);
   EXPECT_NEAR(sv, ss, 1e-5);
+  // Agreement measured against the gradient's size: the AVX2 kernel projects in float, the scalar
+  // one in double, so a point on a pixel's edge may fall on either side, where the bilinear score's
+  // slope jumps by that point's share (the crab's model has one such point for e3: 2.4e-4 of that
+  // component, 3e-5 of the gradient; the other components agree to 5e-6 of themselves).
+  const double gNorm = std::sqrt(gs[0] * gs[0] + gs[1] * gs[1] + gs[2] * gs[2] + gs[3] * gs[3] + gs[4] * gs[4] + gs[5] * gs[5]);
   for (int k = 0; k < 6; ++k)
-    EXPECT_NEAR(gv[k], gs[k], 1e-4 * (std::fabs(gs[k]) + 1e-3)) << k;
+    EXPECT_NEAR(gv[k], gs[k], 1e-4 * (gNorm + 1e-3)) << k;
   for (int k = 0; k < 36; ++k)
     EXPECT_NEAR(Mv[k], Ms[k], 1e-4 * std::fabs(Ms[k]) + 1e-6) << k;
   // d^T M d: the mean squared image motion of the points for a small motion d, as projecting them

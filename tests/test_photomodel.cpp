@@ -86,8 +86,16 @@ TEST(PhotoModel, DensityAndStripAreParameters)
 TEST(PhotoModel, SmallHolesFilledLargeHolesKept)
 {
   Disc d = redDisc();
-  pm::test::paintDisc(d.tg, d.cu - 25, d.cv, 4, vpRGBa(30, 90, 170));  // a blue spot: part of the target
-  pm::test::paintDisc(d.tg, d.cu + 25, d.cv, 20, vpRGBa(30, 90, 170)); // a big window onto the background
+  // Holes in the disc that show the background photo itself: a small spot (a background-like spot
+  // on the target, filled) and a big window onto the background (kept).
+  auto window = [&](double cu, double cv, double r) {
+    for (unsigned v = 0; v < d.tg.getHeight(); ++v)
+      for (unsigned u = 0; u < d.tg.getWidth(); ++u)
+        if ((u - cu) * (u - cu) + (v - cv) * (v - cv) <= r * r)
+          d.tg[v][u] = d.bg[v][u];
+  };
+  window(d.cu - 25, d.cv, 4);
+  window(d.cu + 25, d.cv, 20);
   const auto b = pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500);
   EXPECT_EQ(b.region[static_cast<unsigned>(d.cv)][static_cast<unsigned>(d.cu - 25)], 255);
   EXPECT_EQ(b.region[static_cast<unsigned>(d.cv)][static_cast<unsigned>(d.cu + 25)], 0);

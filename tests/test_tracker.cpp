@@ -244,11 +244,13 @@ TrustRun runStill(long verifyEvaluations, int frames, double threshold = 0.95, d
 
 TEST(Tracker, AWrongFirstLockIsNotTrustedTheChallengerFindsTheTarget)
 {
-  const TrustRun v = runStill(6000, 40);
+  const TrustRun v = runStill(6000, 70);
   // The case: the tracker locks at once on a wrong pose.
   ASSERT_TRUE(v.tracking[0]);
   ASSERT_FALSE(v.right[0]);
-  // Verified, it never trusts a wrong pose, and trusts the right one within 40 frames.
+  // Verified, it never trusts a wrong pose, and trusts the right one within 70 frames (here the
+  // challenger finds the crab at frame 35 and it is trusted from frame 55; with the flat model of
+  // before issue 42's one background subtraction, within 40: the GA's path, not a property).
   for (std::size_t k = 0; k < v.trusted.size(); ++k)
     EXPECT_FALSE(v.trusted[k] && !v.right[k]) << "frame " << k;
   ASSERT_GE(v.firstTrusted, 0);

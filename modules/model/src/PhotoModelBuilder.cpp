@@ -6,6 +6,7 @@
 
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
+#include "pm/model/BackgroundSubtraction.h"
 
 namespace pm::model {
 
@@ -15,9 +16,6 @@ void PhotoModelParams::validate() const
     if (!ok)
       throw core::Error(std::string("photo-model parameter ") + what);
   };
-  check(regionHueTolDeg > 0 && regionHueTolDeg < 180, "region hue tolerance must lie in (0, 180) degrees");
-  check(regionSatTol > 0 && regionSatTol <= 1, "region saturation tolerance must lie in (0, 1]");
-  check(regionValTol > 0 && regionValTol <= 1, "region value tolerance must lie in (0, 1]");
   check(minSaturation >= 0 && minSaturation < 1, "minimum saturation must lie in [0, 1)");
   check(minValue >= 0 && minValue < 1, "minimum value must lie in [0, 1)");
   check(minHueFromBackgroundDeg >= 0 && minHueFromBackgroundDeg < 180, "minimum hue distance from the background must lie in [0, 180)");
@@ -27,6 +25,7 @@ void PhotoModelParams::validate() const
   check(stripWidthPx >= 0 && stripWidthPx <= 200, "strip width must lie in [0, 200] px");
   check(stripRows >= 1 && stripRows <= 20, "strip rows must lie in [1, 20]");
   check(maxHoleAreaPx >= 0, "maximum hole area must be non-negative");
+  background.validate();
 }
 
 namespace {
@@ -34,16 +33,7 @@ namespace {
 cv::Mat regionMask(const vpImage<vpRGBa> &bg, const vpImage<vpRGBa> &tg, const PhotoModelParams &p)
 {
   const int h = static_cast<int>(tg.getHeight()), w = static_cast<int>(tg.getWidth());
-  cv::Mat m(h, w, CV_8U, cv::Scalar(0));
-  for (int v = 0; v < h; ++v)
-    for (int u = 0; u < w; ++u) {
-      const core::Hsv a = core::rgbToHsv(bg[v][u]), b = core::rgbToHsv(tg[v][u]);
-      const bool hues = b.s >= p.minSaturation && b.v >= p.minValue && a.s >= p.minSaturation && a.v >= p.minValue;
-      const bool differs = (hues && core::hueDistance(a.h, b.h) > p.regionHueTolDeg) ||
-                           std::fabs(a.s - b.s) > p.regionSatTol || std::fabs(a.v - b.v) > p.regionValTol;
-      if (differs)
-        m.at<unsigned char>(v, u) = 255;
-    }
+  cv::Mat m = subtractBackground(tg, bg, p.background); // the target's pixels, shadows left out
   if (p.cleanRadiusPx > 0) {
     const int k = 2 * p.cleanRadiusPx + 1;
     const cv::Mat se = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(k, k));
@@ -116,8 +106,8 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
   const cv::Mat region = regionMask(background, withTarget, params);
   const cv::Moments mo = cv::moments(region, true);
   if (mo.m00 < 1)
-    throw core::Error("photo-model: no pixel of the target photo differs in colour from the background photo (hue by more "
-                "than " + std::to_string(static_cast<int>(params.regionHueTolDeg)) + " deg): S_in would be empty (is the "
+    throw core::Error("photo-model: no pixel of the target photo differs in colour from the background photo (chromaticity by "
+                "more than " + std::to_string(params.background.chromaTol) + ", or brightness): S_in would be empty (is the "
                 "target in the photo, and of another colour than the background?)");
   m.centroidU = mo.m10 / mo.m00;
   m.centroidV = mo.m01 / mo.m00;

@@ -5,10 +5,9 @@
   distance: (a) the background alone, (b) the target on that background.
 
   1. H_B is the circular mean hue of photo (a).
-  2. A pixel belongs to the target when its colour in (b) differs from the same pixel in (a):
-     its hue by more than regionHueTolDeg (where both are saturated and bright enough for a hue
-     to mean something), or its saturation or value by more than regionSatTol / regionValTol
-     (white, grey or black parts of a target have no hue, but they are not the background). The largest connected region, cleaned by opening and closing, with its
+  2. A pixel belongs to the target when its colour in (b) differs from the same pixel in (a), by
+     the model builders' one background subtraction (BackgroundSubtraction.h: chromaticity, or
+     brightness beyond a shadow's). The largest connected region, cleaned by opening and closing, with its
      small holes filled (spots of a background-like hue on the target) and its large ones kept
      (background seen between legs), is the target region; its centroid is the model origin.
   3. S_in: region pixels on a grid of stepPx (aligned on the centroid) whose hue means something
@@ -23,15 +22,14 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/PhotoModel.h"
+#include "pm/model/BackgroundSubtraction.h"
 
 namespace pm::model {
 
 //! Parameters of buildPhotoModel() (the steps of the file's description); validate() checks them.
 struct PhotoModelParams
 {
-  double regionHueTolDeg = 30.0; //!< hue change that marks a target pixel (deg)
-  double regionSatTol = 0.3;     //!< saturation change that marks a target pixel
-  double regionValTol = 0.3;     //!< value change that marks a target pixel
+  BackgroundParams background;   //!< how a target pixel is told from the background (BackgroundSubtraction.h)
   double minSaturation = 0.15;   //!< below this a pixel's hue is noise
   double minValue = 0.08;        //!< below this a pixel's hue is noise
   double minHueFromBackgroundDeg = 30.0; //!< S_in points need a hue this far from H_B (deg)

@@ -2,15 +2,9 @@
 /*!
   \file Silhouette.h
   The target's silhouette in one photo: where it differs from the photo of the same hand pose
-  with the target removed (PassView), cleaned with OpenCV's image operations.
-
-  A pixel differs when its chromaticity (r, g, b divided by their sum) moved by more than
-  \e chromaTol, or its brightness changed by a ratio outside [\e darkRatio, \e brightRatio]. A cast
-  shadow dims the backdrop and keeps its chromaticity: a pixel darker than the background by a
-  ratio in [\e darkRatio, 1) with its chromaticity kept is shadow, not target. White and grey
-  parts of a target differ from a coloured backdrop in chromaticity, and from a grey one in
-  brightness upward (a shadow never brightens). Then opening and closing (\e cleanRadiusPx), the
-  connected regions of at least \e minRegionFraction of the largest one, their holes filled.
+  with the target removed (PassView; the background subtraction of BackgroundSubtraction.h), cleaned
+  with OpenCV's image operations: opening and closing (\e cleanRadiusPx), the connected regions of at
+  least \e minRegionFraction of the largest one, their holes filled.
 
       pm::model::SilhouetteStats st;
       const vpImage<unsigned char> mask = pm::model::silhouette(view.left, view.backgroundLeft, pm::model::SilhouetteParams(), &st);
@@ -21,15 +15,14 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
+#include "pm/model/BackgroundSubtraction.h"
+
 namespace pm::model {
 
 //! How silhouette() and silhouetteOnBackdrop() tell the target (see the file); validate() checks them.
 struct SilhouetteParams
 {
-  double chromaTol = 0.035;       //!< chromaticity change (each of r, g over r + g + b) that marks the target
-  double darkRatio = 0.35;        //!< darker than this ratio of the background: the target (a shadow keeps more light)
-  double brightRatio = 1.12;      //!< brighter than this ratio: the target (no shadow brightens)
-  double minBrightness = 30;      //!< a background darker than this (mean of r, g, b) has no chromaticity to compare: brightness alone decides
+  BackgroundParams background;    //!< the background subtraction (BackgroundSubtraction.h)
   int cleanRadiusPx = 2;          //!< opening and closing radius
   double minRegionFraction = 0.2; //!< regions smaller than this fraction of the largest are dropped
   double maxImageFraction = 0.6;  //!< a silhouette over this fraction of the image: the background does not match
