@@ -14,6 +14,10 @@ function(pm_add_module name)
   target_link_libraries(${target} PUBLIC ${M_DEPENDS} PRIVATE ${M_PRIVATE_DEPENDS})
   target_compile_features(${target} PUBLIC cxx_std_17)
   pm_set_warnings(${target})
+  list(LENGTH M_SOURCES n)
+  if(n GREATER_EQUAL 6) # below that, compiling the header costs about what it saves
+    pm_precompile(module_${name} ${target} ${PM_PCH_MODULE})
+  endif()
   install(TARGETS ${target} EXPORT visp-photomodelTargets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
