@@ -63,14 +63,16 @@ void ViewpointIndex::buildCells()
         double radius = 0;
         for (int corner = 0; corner < 4; ++corner)
           radius = std::max(radius, angle(c, facePoint(face, at(i + corner % 2), at(j + corner / 2))));
-        double best = 10;
+        // In cosines (one acos a cell, not one a view): within the limit <=> cos(angle) >= cos(limit).
+        double bestDot = -1;
         for (const Vec3 &d : m_dirs)
-          best = std::min(best, angle(c, d));
-        const double limit = best + 2 * radius + 1e-9;
+          bestDot = std::max(bestDot, dot(c, d));
+        const double limit = std::acos(std::clamp(bestDot, -1.0, 1.0)) + 2 * radius + 1e-9;
+        const double minDot = limit >= M_PI ? -2.0 : std::cos(limit);
         const double cc[3] = {c[0], c[1], c[2]};
         std::vector<std::uint16_t> &l = lists[cell(cc)];
         for (std::size_t k = 0; k < m_dirs.size(); ++k)
-          if (angle(c, m_dirs[k]) <= limit)
+          if (dot(c, m_dirs[k]) >= minDot)
             l.push_back(static_cast<std::uint16_t>(k));
       }
   for (std::size_t c = 0; c < cells; ++c) {
