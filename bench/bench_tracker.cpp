@@ -35,9 +35,11 @@ using pm::bench::setup;
   verified; and the budget of before issue 18 (1,900 evaluations on every frame, RM-GA's own
   refinement of 100; the tracker's other parts as now), the peer of the whole frame.
 */
-void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying, int hueMarginPx = -1, bool before = false)
+void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying, int hueMarginPx = -1, bool before = false,
+                  bool stereoVisibility = true)
 {
   pm::tracker::TrackerParams p = pm::tracker::TrackerParams();
+  p.fitness.stereoVisibility = stereoVisibility;
   p.steady.budgetFraction = steadyFraction;
   if (hueMarginPx >= 0)
     p.steady.hueMarginPx = hueMarginPx;
@@ -66,6 +68,11 @@ void trackerFrame(benchmark::State &state, double steadyFraction, bool verifying
 }
 void Tracker_Frame_Whole(benchmark::State &s) { trackerFrame(s, 1.0, false); }
 void Tracker_Frame_Steady(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steady.budgetFraction, false); }
+//! Its peer for the stereo visibility (issue 43): the same steady frame with the paper's fitness, each camera alone.
+void Tracker_Frame_Steady_PaperFitness(benchmark::State &s)
+{
+  trackerFrame(s, pm::tracker::TrackerParams().steady.budgetFraction, false, -1, false, false);
+}
 //! Its peer: the same steady frame with the hue of the whole images (SteadyParams::hueMarginPx 0).
 void Tracker_Frame_Steady_WholeImages(benchmark::State &s) { trackerFrame(s, pm::tracker::TrackerParams().steady.budgetFraction, false, 0); }
 void Tracker_Frame_Verifying(benchmark::State &s) { trackerFrame(s, 1.0, true); }
@@ -87,6 +94,7 @@ void Render_StereoPair(benchmark::State &state)
 
 BENCHMARK(Tracker_Frame_Whole)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_Steady_PaperFitness)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_WholeImages)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Verifying)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Before_1900Evals)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -216,7 +216,7 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::getline(lines, header);
   std::getline(lines, row);
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 46); // 47 columns: 27, 6 sigmas and 14 joints
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 47); // 48 columns: 28, 6 sigmas and 14 joints
   EXPECT_NE(row.find(",1.25,"), std::string::npos) << row;
   EXPECT_NE(row.find(",oracle,"), std::string::npos) << row;
   EXPECT_NE(row.find(",,,,,,"), std::string::npos) << row; // an unknown uncertainty: six empty cells
@@ -239,6 +239,14 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   };
   EXPECT_EQ(cell(col("sigma_x_mm")), "0.125");
   EXPECT_EQ(cell(col("sigma_rz_deg")), "0.875");
+  f.track.visibleShare = 0.75; // the share of the model not hidden, under its header
+  std::ostringstream seen;
+  pm::lab::writeLoopCsvRow(seen, f, true);
+  const std::string vs = seen.str();
+  std::size_t b = 0;
+  for (int i = 0; i < col("visible_share"); ++i)
+    b = vs.find(',', b) + 1;
+  EXPECT_EQ(vs.substr(b, vs.find(',', b) - b), "0.75");
   // A 6-joint arm (ViSP's Viper850 and Afma6): 12 joint columns, and a row of its 6 joints fits them.
   std::ostringstream six;
   pm::lab::writeLoopCsvHeader(six, 6);
@@ -248,8 +256,8 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::istringstream sixLines(six.str());
   std::getline(sixLines, header);
   std::getline(sixLines, row);
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 44);
-  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 44);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 45);
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 45);
   EXPECT_EQ(header.find(",q7"), std::string::npos);
 }
 

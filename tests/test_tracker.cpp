@@ -225,6 +225,9 @@ TrustRun runStill(long verifyEvaluations, int frames, double threshold = 0.95, d
   p.lock.confidence = lockConfidence; // 0: the wrong first lock of this case is taken, for the verification to undo
   p.verifier.evaluations = verifyEvaluations;
   p.judgement.confidence.threshold = threshold;
+  // The paper's fitness, each camera alone: the case is its wrong first lock (with the stereo
+  // visibility the same GA path locks right at once: nothing for the verification to undo).
+  p.fitness.stereoVisibility = false;
   pm::tracker::PhotoModelTracker t(rig, sm.build.model, p);
   TrustRun run;
   for (int k = 0; k < frames; ++k) {

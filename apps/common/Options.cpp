@@ -64,6 +64,8 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p)
   app.add_option("--noise", p.noiseSigma, "sensor noise (grey levels)")->check(CLI::Range(0.0, 100.0))->group(g);
   app.add_option("--exposure", p.exposure, "brightness gain (lighting change)")->check(CLI::Range(0.05, 10.0))->group(g);
   app.add_flag("--occluder", p.occluder, "put a strand of seaweed in front of the target")->group(g);
+  app.add_flag("--sweeping-bar", p.sweepingBar, "a violet bar 60 mm wide, 100 mm in front of the target, sweeps to and fro "
+                                                "across it at 4 mm a frame (docs/occlusion.md)")->group(g);
   app.add_option("--supersampling", p.supersampling, "samples per pixel along each axis (anti-aliasing)")
       ->check(CLI::Range(1u, 4u))->group(g);
   app.add_option("--seed", p.seed, "noise seed")->group(g);
@@ -142,6 +144,10 @@ TrackerOptions::TrackerOptions(CLI::App &app, const tracker::TrackerParams &defa
   add(app.add_flag("--precise,!--no-precise", p.refinement.precise.enabled,
                    "the precise last stage after RM-GA (outline and interior, Gauss-Newton; needs an all-around model)"),
       [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.refinement.precise.enabled = c.refinement.precise.enabled; });
+  add(app.add_flag("--stereo-visibility,!--no-stereo-visibility", p.fitness.stereoVisibility,
+                   "a model point that misses in one camera on a hue not the target's, where the other camera sees what the "
+                   "model says, is hidden there and leaves the fitness (off: the paper's, each camera alone; docs/occlusion.md)"),
+      [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.fitness.stereoVisibility = c.fitness.stereoVisibility; });
   add(app.add_option("--trust-threshold", p.judgement.confidence.threshold, "confidence from which an estimate is trusted")
           ->check(CLI::Range(0.001, 0.999)),
       [](tracker::TrackerParams &t, const tracker::TrackerParams &c) { t.judgement.confidence.threshold = c.judgement.confidence.threshold; });

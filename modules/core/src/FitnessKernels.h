@@ -55,6 +55,8 @@ inline bool cpuHasAvx2() { return false; }
 struct Tolerances
 {
   std::int32_t bg, in, inBg, outBg;
+  //! 1 for a hue (tenths of a degree, [0, 3600)) of the target's own (StereoFitness's target hues), else 0; padded by 3 bytes.
+  const std::uint8_t *targetHue;
 };
 
 //! The model's points as the kernels read them: x, y, z (mm), hue (tenths of a degree).
@@ -124,6 +126,15 @@ inline void collectPixels(const Projection &p, const float *x, const float *y, c
 }
 
 
+//! Whether hue \e h (sampleScalar's) is a hit of an S_in point of hue \e hm: on the image, with a hue within t.in of hm.
+inline bool inHit(std::int32_t h, std::int32_t hm, const Tolerances &t) { return h >= 0 && h != HuePlane::kNoHue && wrapDist(h, hm) <= t.in; }
+//! Whether hue \e h is a hit of an S_out point: on the image, with a hue within t.outBg of the background's.
+inline bool outHit(std::int32_t h, const Tolerances &t) { return h >= 0 && h != HuePlane::kNoHue && wrapDist(h, t.bg) <= t.outBg; }
+//! Whether hue \e h (on the image) is within t.inBg of the background's (an S_in point on background: a wrong pose, never hidden).
+inline bool inBackground(std::int32_t h, const Tolerances &t) { return h != HuePlane::kNoHue && wrapDist(h, t.bg) <= t.inBg; }
+//! Whether hue \e h (on the image) is one of the target's own hues (a miss on one is a wrong pose, never an occluder).
+inline bool targetHue(std::int32_t h, const Tolerances &t) { return h != HuePlane::kNoHue && t.targetHue[h]; }
+
 inline void classifyIn(std::int32_t h, std::int32_t hm, const Tolerances &t, FitnessCounts &c)
 {
   if (h < 0) {
@@ -149,14 +160,35 @@ inline void classifyOut(std::int32_t h, const Tolerances &t, FitnessCounts &c)
     ++c.outOther;
 }
 
+/*!
+  Counts points [inBegin, inEnd) as S_in and [outBegin, outEnd) as S_out of camera \e p into \e c.
+  With \e other (the other camera, StereoFitness's stereo visibility), a point on the image that
+  misses in \e p on a hue that is neither the target's nor the background's (something else
+  stands there) but is a hit in
+  \e other (the other camera sees there what the model says: its hue, the background) is hidden
+  in \e p (inHidden, outHidden) instead of its class.
+*/
 template <bool kDepth>
-void countScalar(const Projection &p, const Tolerances &t, const ModelSoA &m, std::size_t inBegin, std::size_t inEnd,
-                 std::size_t outBegin, std::size_t outEnd, FitnessCounts &c)
+void countScalar(const Projection &p, const Projection *other, const Tolerances &t, const ModelSoA &m, std::size_t inBegin,
+                 std::size_t inEnd, std::size_t outBegin, std::size_t outEnd, FitnessCounts &c)
 {
-  for (std::size_t i = inBegin; i < inEnd; ++i)
-    classifyIn(sampleScalar<kDepth>(p, m.x[i], m.y[i], kDepth ? m.z[i] : 0.f), m.hue[i], t, c);
-  for (std::size_t i = outBegin; i < outEnd; ++i)
-    classifyOut(sampleScalar<kDepth>(p, m.x[i], m.y[i], kDepth ? m.z[i] : 0.f), t, c);
+  for (std::size_t i = inBegin; i < inEnd; ++i) {
+    const float z = kDepth ? m.z[i] : 0.f;
+    const std::int32_t h = sampleScalar<kDepth>(p, m.x[i], m.y[i], z);
+    if (other && h >= 0 && !inHit(h, m.hue[i], t) && !inBackground(h, t) && !targetHue(h, t) &&
+        inHit(sampleScalar<kDepth>(*other, m.x[i], m.y[i], z), m.hue[i], t))
+      ++c.inHidden;
+    else
+      classifyIn(h, m.hue[i], t, c);
+  }
+  for (std::size_t i = outBegin; i < outEnd; ++i) {
+    const float z = kDepth ? m.z[i] : 0.f;
+    const std::int32_t h = sampleScalar<kDepth>(p, m.x[i], m.y[i], z);
+    if (other && h >= 0 && !outHit(h, t) && !targetHue(h, t) && outHit(sampleScalar<kDepth>(*other, m.x[i], m.y[i], z), t))
+      ++c.outHidden;
+    else
+      classifyOut(h, t, c);
+  }
 }
 
 #ifdef PM_HAVE_X86
@@ -252,49 +284,87 @@ __attribute__((target("avx2,fma"))) inline int hsum(__m256i v)
   return _mm_cvtsi128_si32(s);
 }
 
+//! Lanes of \e mask whose hue \e h (on the image, or kNoHue) is not one of the target's own (Tolerances::targetHue).
+__attribute__((target("avx2,fma"))) inline __m256i notTargetHue8(__m256i h, __m256i mask, const Tolerances &t)
+{
+  const __m256i withHue = _mm256_andnot_si256(_mm256_cmpeq_epi32(h, _mm256_set1_epi32(HuePlane::kNoHue)), mask);
+  const __m256i g = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int *>(t.targetHue), h, withHue, 1);
+  const __m256i isTarget = _mm256_and_si256(withHue, _mm256_cmpgt_epi32(_mm256_and_si256(g, _mm256_set1_epi32(0xff)), _mm256_setzero_si256()));
+  return _mm256_andnot_si256(isTarget, mask);
+}
+
+//! Lanes whose hue (sample8's) is on the image and is a hue.
+__attribute__((target("avx2,fma"))) inline __m256i hasHue8(__m256i h)
+{
+  const __m256i neg = _mm256_set1_epi32(-1);
+  return _mm256_andnot_si256(_mm256_or_si256(_mm256_cmpeq_epi32(h, neg), _mm256_cmpeq_epi32(h, _mm256_set1_epi32(HuePlane::kNoHue))), neg);
+}
+
 /*!
-  Counts points [inBegin, inEnd) as S_in and [outBegin, outEnd) as S_out into \e c, 8 at a time
-  (the last group masked: the arrays are padded).
+  countScalar 8 points at a time (the last group masked: the arrays are padded); the other camera
+  is sampled only for the lanes that miss in \e p, and not at all for a group without a miss.
 */
 template <bool kDepth>
-__attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const Tolerances &t, const ModelSoA &m,
+__attribute__((target("avx2,fma"))) void countAvx2(const Projection &p, const Projection *other, const Tolerances &t, const ModelSoA &m,
                                                    std::size_t inBegin, std::size_t inEnd, std::size_t outBegin,
                                                    std::size_t outEnd, FitnessCounts &c)
 {
-  const __m256i neg = _mm256_set1_epi32(-1), noHue = _mm256_set1_epi32(HuePlane::kNoHue);
+  const __m256i neg = _mm256_set1_epi32(-1);
   const __m256i bg = _mm256_set1_epi32(t.bg);
   const __m256i tIn = _mm256_set1_epi32(t.in + 1), tInBg = _mm256_set1_epi32(t.inBg + 1), tOutBg = _mm256_set1_epi32(t.outBg + 1);
-  __m256i nMatch = _mm256_setzero_si256(), nBg = _mm256_setzero_si256(), nOff = _mm256_setzero_si256();
+  __m256i nMatch = _mm256_setzero_si256(), nBg = _mm256_setzero_si256(), nOff = _mm256_setzero_si256(), nHidden = _mm256_setzero_si256();
   for (std::size_t i = inBegin; i < inEnd; i += 8) {
     const __m256i act = laneMask(std::min<std::size_t>(8, inEnd - i));
     const __m256i h = sample8<kDepth>(p, m, i, act);
+    const __m256i hm = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(m.hue + i));
     const __m256i off = _mm256_and_si256(_mm256_cmpeq_epi32(h, neg), act);
-    const __m256i hasHue = _mm256_andnot_si256(_mm256_or_si256(_mm256_cmpeq_epi32(h, neg), _mm256_cmpeq_epi32(h, noHue)), neg);
-    const __m256i match = _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tIn, wrapDist8(h, _mm256_loadu_si256(reinterpret_cast<const __m256i *>(m.hue + i)))));
+    const __m256i hasHue = hasHue8(h);
+    const __m256i match = _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tIn, wrapDist8(h, hm)));
     const __m256i isBg = _mm256_andnot_si256(match, _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tInBg, wrapDist8(h, bg))));
+    if (other) {
+      __m256i miss = _mm256_andnot_si256(_mm256_or_si256(_mm256_or_si256(match, isBg), off), act); // neither its hue nor the background's
+      if (!_mm256_testz_si256(miss, miss))
+        miss = notTargetHue8(h, miss, t);
+      if (!_mm256_testz_si256(miss, miss)) {
+        const __m256i ho = sample8<kDepth>(*other, m, i, miss);
+        const __m256i hidden = _mm256_and_si256(miss, _mm256_and_si256(hasHue8(ho), _mm256_cmpgt_epi32(tIn, wrapDist8(ho, hm))));
+        nHidden = _mm256_sub_epi32(nHidden, hidden);
+      }
+    }
     nMatch = _mm256_sub_epi32(nMatch, match);
     nBg = _mm256_sub_epi32(nBg, isBg);
     nOff = _mm256_sub_epi32(nOff, off);
   }
-  const int nIn = static_cast<int>(inEnd - inBegin), match = hsum(nMatch), onBg = hsum(nBg), offIn = hsum(nOff);
+  const int nIn = static_cast<int>(inEnd - inBegin), match = hsum(nMatch), onBg = hsum(nBg), offIn = hsum(nOff), hidIn = hsum(nHidden);
   c.inMatch += match;
   c.inBackground += onBg;
   c.inOff += offIn;
-  c.inOther += nIn - match - onBg - offIn;
+  c.inHidden += hidIn;
+  c.inOther += nIn - match - onBg - offIn - hidIn;
 
-  __m256i oBg = _mm256_setzero_si256(), oOff = _mm256_setzero_si256();
+  __m256i oBg = _mm256_setzero_si256(), oOff = _mm256_setzero_si256(), oHidden = _mm256_setzero_si256();
   for (std::size_t j = outBegin; j < outEnd; j += 8) {
     const __m256i act = laneMask(std::min<std::size_t>(8, outEnd - j));
     const __m256i h = sample8<kDepth>(p, m, j, act);
     const __m256i off = _mm256_and_si256(_mm256_cmpeq_epi32(h, neg), act);
-    const __m256i hasHue = _mm256_andnot_si256(_mm256_or_si256(_mm256_cmpeq_epi32(h, neg), _mm256_cmpeq_epi32(h, noHue)), neg);
-    oBg = _mm256_sub_epi32(oBg, _mm256_and_si256(hasHue, _mm256_cmpgt_epi32(tOutBg, wrapDist8(h, bg))));
+    const __m256i hit = _mm256_and_si256(hasHue8(h), _mm256_cmpgt_epi32(tOutBg, wrapDist8(h, bg)));
+    if (other) {
+      __m256i miss = _mm256_andnot_si256(_mm256_or_si256(hit, off), act);
+      if (!_mm256_testz_si256(miss, miss))
+        miss = notTargetHue8(h, miss, t);
+      if (!_mm256_testz_si256(miss, miss)) {
+        const __m256i ho = sample8<kDepth>(*other, m, j, miss);
+        oHidden = _mm256_sub_epi32(oHidden, _mm256_and_si256(miss, _mm256_and_si256(hasHue8(ho), _mm256_cmpgt_epi32(tOutBg, wrapDist8(ho, bg)))));
+      }
+    }
+    oBg = _mm256_sub_epi32(oBg, hit);
     oOff = _mm256_sub_epi32(oOff, off);
   }
-  const int nOut = static_cast<int>(outEnd - outBegin), outBg = hsum(oBg), offOut = hsum(oOff);
+  const int nOut = static_cast<int>(outEnd - outBegin), outBg = hsum(oBg), offOut = hsum(oOff), hidOut = hsum(oHidden);
   c.outBackground += outBg;
   c.outOff += offOut;
-  c.outOther += nOut - outBg - offOut;
+  c.outHidden += hidOut;
+  c.outOther += nOut - outBg - offOut - hidOut;
 }
 #endif
 

@@ -1,5 +1,6 @@
 #include "pm/core/StereoFitness.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -27,6 +28,14 @@ void FitnessParams::validate() const
       throw Error("fitness scores must be finite");
   if (!(minSaturation >= 0.f && minSaturation < 1.f))
     throw Error("fitness parameter minimum saturation must lie in [0, 1)");
+  if (!(maxHiddenShare >= 0 && maxHiddenShare < 1))
+    throw Error("fitness parameter max hidden share must lie in [0, 1)");
+}
+
+double FitnessCounts::visibleShare() const
+{
+  const int onImage = inMatch + inBackground + inOther + inHidden + outBackground + outOther + outHidden;
+  return onImage > 0 ? 1.0 - static_cast<double>(inHidden + outHidden) / onImage : 1.0;
 }
 
 StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params)
@@ -85,6 +94,27 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
   m_tolIn = kernels::deci(params.inTolDeg);
   m_tolInBg = kernels::deci(params.inBgTolDeg);
   m_tolOutBg = kernels::deci(params.outBgTolDeg);
+  buildTargetHues();
+}
+
+void StereoFitness::buildTargetHues()
+{
+  // A histogram of the S_in hues of every view by degree, then each tenth of a degree marked when
+  // the points within kTargetHueSpanDeg of it reach kTargetHueShare of them.
+  std::vector<double> perDegree(360, 0.0);
+  double n = 0;
+  for (const View &v : m_views)
+    for (std::size_t i = v.inBegin; i < v.inEnd; ++i, ++n)
+      perDegree[static_cast<std::size_t>(m_hue[i] / 10) % 360] += 1;
+  m_targetHue.assign(3600 + 4, 0);
+  const int span = static_cast<int>(kTargetHueSpanDeg);
+  for (int d = 0; d < 360; ++d) {
+    double near = 0;
+    for (int k = -span; k <= span; ++k)
+      near += perDegree[static_cast<std::size_t>((d + k + 360) % 360)];
+    if (n > 0 && near >= kTargetHueShare * n)
+      std::fill_n(m_targetHue.begin() + 10 * d, 10, std::uint8_t{1});
+  }
 }
 
 void StereoFitness::check(const Phi &phi) const
@@ -117,25 +147,25 @@ Projection StereoFitness::projectionOf(int cam, const Phi &phi) const
   return p;
 }
 
-void StereoFitness::countView(const Projection &p, const View &v, int stage, FitnessCounts &counts) const
+void StereoFitness::countView(const Projection &p, const Projection *other, const View &v, int stage, FitnessCounts &counts) const
 {
   const std::size_t inB = stage == 2 ? v.inSplit : v.inBegin, inE = stage == 1 ? v.inSplit : v.inEnd;
   const std::size_t outB = stage == 2 ? v.outSplit : v.outBegin, outE = stage == 1 ? v.outSplit : v.outEnd;
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
+  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHue.data()};
   const kernels::ModelSoA m{m_x.data(), m_y.data(), m_z.data(), m_hue.data()};
 #ifdef PM_HAVE_X86
   if (m_avx2) {
     if (m_hasDepth)
-      kernels::countAvx2<true>(p, tol, m, inB, inE, outB, outE, counts);
+      kernels::countAvx2<true>(p, other, tol, m, inB, inE, outB, outE, counts);
     else
-      kernels::countAvx2<false>(p, tol, m, inB, inE, outB, outE, counts);
+      kernels::countAvx2<false>(p, other, tol, m, inB, inE, outB, outE, counts);
     return;
   }
 #endif
   if (m_hasDepth)
-    kernels::countScalar<true>(p, tol, m, inB, inE, outB, outE, counts);
+    kernels::countScalar<true>(p, other, tol, m, inB, inE, outB, outE, counts);
   else
-    kernels::countScalar<false>(p, tol, m, inB, inE, outB, outE, counts);
+    kernels::countScalar<false>(p, other, tol, m, inB, inE, outB, outE, counts);
 }
 
 const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
@@ -152,9 +182,9 @@ const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
 
 FitnessCounts StereoFitness::countCamera(int cam, const Phi &phi) const
 {
-  const Projection p = projectionOf(cam, phi);
+  const Projection p = projectionOf(cam, phi), o = projectionOf(1 - cam, phi);
   FitnessCounts counts;
-  countView(p, viewFor(p), 0, counts);
+  countView(p, m_params.stereoVisibility ? &o : nullptr, viewFor(p), 0, counts);
   return counts;
 }
 
@@ -165,7 +195,7 @@ double StereoFitness::stereoScoreOrReject(const Phi &phi, double rejectBelow, do
   FitnessCounts c[2];
   double estimate = 0, done = 0, all = 0;
   for (int cam = 0; cam < 2; ++cam) {
-    countView(p[cam], *v[cam], 1, c[cam]);
+    countView(p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 1, c[cam]);
     estimate += 0.5 * score(c[cam]); // the share's own mean score: an estimate of F_cam
     done += static_cast<double>((v[cam]->inSplit - v[cam]->inBegin) + (v[cam]->outSplit - v[cam]->outBegin));
     all += static_cast<double>((v[cam]->inEnd - v[cam]->inBegin) + (v[cam]->outEnd - v[cam]->outBegin));
@@ -175,17 +205,35 @@ double StereoFitness::stereoScoreOrReject(const Phi &phi, double rejectBelow, do
     return estimate;
   }
   for (int cam = 0; cam < 2; ++cam)
-    countView(p[cam], *v[cam], 2, c[cam]);
+    countView(p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 2, c[cam]);
   cost = 1.0;
   return 0.5 * (score(c[0]) + score(c[1]));
 }
 
-double StereoFitness::score(const FitnessCounts &c) const
+void StereoFitness::cappedHidden(const FitnessCounts &c, int &inHidden, int &outHidden) const
+{
+  const int nIn = c.inMatch + c.inBackground + c.inOther + c.inOff + c.inHidden;
+  const int nOut = c.outBackground + c.outOther + c.outOff + c.outHidden;
+  inHidden = std::min(c.inHidden, static_cast<int>(m_params.maxHiddenShare * nIn));
+  outHidden = std::min(c.outHidden, static_cast<int>(m_params.maxHiddenShare * nOut));
+}
+
+double StereoFitness::score(const FitnessCounts &c) const { return scoreOf(c, false); }
+
+double StereoFitness::visibleScore(const FitnessCounts &c) const { return scoreOf(c, true); }
+
+double StereoFitness::scoreOf(const FitnessCounts &c, bool visibleOnly) const
 {
   const FitnessParams &q = m_params;
-  const double sum = q.inMatch * c.inMatch + q.inBackground * c.inBackground + q.inOther * c.inOther +
-                     q.offImage * (c.inOff + c.outOff) + q.outBackground * c.outBackground + q.outOther * c.outOther;
-  const int nIn = c.inMatch + c.inBackground + c.inOther + c.inOff, nOut = c.outBackground + c.outOther + c.outOff;
+  // A hidden point scores 0, neither for the pose nor against it. F keeps it in the count, so that
+  // a pose never gains by hiding its misses; the visible score leaves it out of the count too.
+  // Those beyond the cap count as the misses they are.
+  int inHidden = 0, outHidden = 0;
+  cappedHidden(c, inHidden, outHidden);
+  const double sum = q.inMatch * c.inMatch + q.inBackground * c.inBackground + q.inOther * (c.inOther + c.inHidden - inHidden) +
+                     q.offImage * (c.inOff + c.outOff) + q.outBackground * c.outBackground + q.outOther * (c.outOther + c.outHidden - outHidden);
+  const int nIn = c.inMatch + c.inBackground + c.inOther + c.inOff + c.inHidden - (visibleOnly ? inHidden : 0);
+  const int nOut = c.outBackground + c.outOther + c.outOff + c.outHidden - (visibleOnly ? outHidden : 0);
   return normalised(sum, static_cast<std::size_t>(nIn), static_cast<std::size_t>(nOut));
 }
 
@@ -233,6 +281,8 @@ FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const
   d.left = score(d.countsLeft);
   d.right = score(d.countsRight);
   d.fitness = 0.5 * (d.left + d.right);
+  d.visibleLeft = visibleScore(d.countsLeft);
+  d.visibleRight = visibleScore(d.countsRight);
   return d;
 }
 

@@ -58,15 +58,21 @@ double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
 std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) const
 {
   check(phi);
-  const Projection p = projectionOf(camera, phi);
+  const Projection p = projectionOf(camera, phi), o = projectionOf(1 - camera, phi);
   const View &view = viewFor(p);
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg};
+  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHue.data()};
   std::vector<PointScore> out;
   for (std::size_t k = view.inBegin; k < view.outEnd; ++k) { // in the model's order
     const std::size_t i = m_order[k];
     const bool inner = k < view.inEnd;
     FitnessCounts c;
     const std::int32_t h = m_hasDepth ? kernels::sampleScalar<true>(p, m_x[i], m_y[i], m_z[i]) : kernels::sampleScalar<false>(p, m_x[i], m_y[i], 0.f);
+    const std::int32_t ho = !m_params.stereoVisibility || h < 0 ? -1
+                            : m_hasDepth ? kernels::sampleScalar<true>(o, m_x[i], m_y[i], m_z[i])
+                                         : kernels::sampleScalar<false>(o, m_x[i], m_y[i], 0.f);
+    const bool hidden = m_params.stereoVisibility && h >= 0 && !kernels::targetHue(h, tol) &&
+                        (inner ? !kernels::inHit(h, m_hue[i], tol) && !kernels::inBackground(h, tol) && kernels::inHit(ho, m_hue[i], tol)
+                               : !kernels::outHit(h, tol) && kernels::outHit(ho, tol));
     if (inner)
       kernels::classifyIn(h, m_hue[i], tol, c);
     else
@@ -84,7 +90,8 @@ std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) c
       s.v = static_cast<float>(raw.get_v());
     }
     s.inner = inner;
-    s.cls = c.inMatch ? PointScore::InMatch
+    s.cls = hidden ? PointScore::Hidden
+            : c.inMatch ? PointScore::InMatch
             : c.inBackground ? PointScore::InBackground
             : c.inOther ? PointScore::InOther
             : c.outBackground ? PointScore::OutBackground

@@ -69,6 +69,8 @@ void RunLog::add(const LoopFrame &f)
   m_servoedOnWrong += f.servoing && f.wrongUsed() ? 1 : 0;
   m_servoedOnWrongRaw += f.servoing && f.wrongEstimate() ? 1 : 0;
   m_precise += f.track.precise ? 1 : 0;
+  m_partlyHidden += f.track.visibleShare < 0.99 ? 1 : 0;
+  m_minVisible = std::min(m_minVisible, f.track.visibleShare);
   if (converged() && f.track.state == tracker::TrackState::Tracking)
     m_estimate.add(f.estimateErrorMm, f.estimateErrorDeg);
   m_held += f.servoing ? 0 : 1;

@@ -42,7 +42,8 @@ void RunRecorder::record(long k, const LoopFrame &f, const ClosedLoop &loop, con
   const core::Phi used = core::fromHomogeneousMatrix(f.hMmUsed);
   std::ostringstream label;
   label << std::fixed << std::setprecision(1) << "t " << f.t << " s  " << (m_oracle ? "oracle" : toString(f.track.state))
-        << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg";
+        << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg  visible " << std::setprecision(0)
+        << 100 * f.track.visibleShare << " % (magenta: hidden)";
   const vpImage<vpRGBa> pair =
       report::sideBySide(report::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str()),
                          report::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right"));

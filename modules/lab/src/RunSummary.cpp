@@ -42,6 +42,8 @@ std::string runSummaryJson(const RunLog &log, const RunInfo &info)
       {"estimate_error", {{"rms_mm", log.estimate().rmsMm()}, {"max_mm", log.estimate().maxMm}, {"rms_deg", log.estimate().rmsDeg()},
                           {"max_deg", log.estimate().maxDeg}, {"over", "the tracker's own estimate, tracked frames from convergence on"}}},
       {"frames_precise", log.framesPrecise()},
+      {"visible_share", {{"min", log.minVisibleShare()}, {"frames_partly_hidden", log.framesPartlyHidden()},
+                         {"over", "the share of the model's points on the images not found hidden (the lower camera's), at the estimate"}}},
       {"max_joint_speed_fraction", log.maxJointSpeedFraction()},
       {"mean_frame_ms", log.meanComputeMs()},
       {"overlays", info.overlays},

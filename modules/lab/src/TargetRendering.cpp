@@ -117,6 +117,7 @@ double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTa
                                {"noise_sigma", sp.noiseSigma},
                                {"exposure", sp.exposure},
                                {"occluder", sp.occluder},
+                               {"sweeping_bar", sp.sweepingBar},
                                {"render_stereo_ms_mean", meanMs},
                                {"targets", list}};
   io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");

@@ -109,6 +109,7 @@ vpImage<vpRGBa> drawPointScores(const vpImage<vpRGBa> &image, const std::vector<
     case core::PointScore::InOther: c = vpColor::lightGray; break;
     case core::PointScore::OutBackground: c = vpColor(60, 160, 255); break;
     case core::PointScore::OutOther: c = vpColor::red; break;
+    case core::PointScore::Hidden: c = vpColor(255, 0, 255); break; // left out: the other camera sees the model there
     case core::PointScore::Off: break;
     }
     vpImageDraw::drawPoint(I, vpImagePoint(s.v, s.u), c, 3);

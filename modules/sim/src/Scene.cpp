@@ -29,6 +29,8 @@ void SceneParams::validate() const
             std::fabs(lightDirHand[0]) + std::fabs(lightDirHand[1]) + std::fabs(lightDirHand[2]) > 0,
         "light direction must be a non-zero vector");
   check(occluderSizeMm[0] > 0 && occluderSizeMm[1] > 0, "occluder size must be positive");
+  check(barWidthMm > 0 && barTravelMm > 0 && barMmPerFrame > 0 && barDepthMm < 0,
+        "sweeping bar: width, travel and speed must be positive, its depth negative (in front of the toy)");
   check(shadows == ShadowMode::Auto || shadows == ShadowMode::Off || shadows == ShadowMode::On,
         "shadow mode must be Auto, Off or On");
   check(std::isfinite(sceneLightDir[0] + sceneLightDir[1] + sceneLightDir[2]) && sceneLightDir[2] < 0,
@@ -145,6 +147,15 @@ Scene::Scene(const TargetShape &target, const SceneParams &params)
   m_backdrop = makeBackdropMesh(makeSeaBottomTexture(m_params.seaBottom), m_params.seaBottom,
                                 m_params.backdropGapMm);
   // The occluder: a strand of seaweed, a flat olive-green quad with a little texture.
+  const double *c = m_params.occluderCentreMm;
+  m_occluder = makeFlatQuad(c[0], c[1], c[2], m_params.occluderSizeMm[0], m_params.occluderSizeMm[1], 60, 120, 40);
+  // The sweeping bar: a violet quad centred on the target's z axis, moved along x at each render.
+  m_bar = makeFlatQuad(0, 0, m_params.barDepthMm, m_params.barWidthMm, 300, 120, 50, 140);
+}
+
+Mesh Scene::makeFlatQuad(double xMm, double yMm, double zMm, double widthMm, double heightMm, int r, int g, int b)
+{
+  // A flat quad facing the hand (-z), of colour (r, g, b) with a little texture.
   auto tex = std::make_shared<Texture>();
   tex->width = 8;
   tex->height = 64;
@@ -153,19 +164,28 @@ Scene::Scene(const TargetShape &target, const SceneParams &params)
     for (int i = 0; i < 8; ++i) {
       const double n = 0.8 + 0.4 * latticeValue(i, j, 5);
       std::uint8_t *o = &tex->rgb[3 * static_cast<std::size_t>(j * 8 + i)];
-      o[0] = static_cast<std::uint8_t>(60 * n);
-      o[1] = static_cast<std::uint8_t>(120 * n);
-      o[2] = static_cast<std::uint8_t>(40 * n);
+      o[0] = static_cast<std::uint8_t>(std::min(255.0, r * n));
+      o[1] = static_cast<std::uint8_t>(std::min(255.0, g * n));
+      o[2] = static_cast<std::uint8_t>(std::min(255.0, b * n));
     }
-  const float cx = static_cast<float>(m_params.occluderCentreMm[0] * 1e-3), cy = static_cast<float>(m_params.occluderCentreMm[1] * 1e-3);
-  const float cz = static_cast<float>(m_params.occluderCentreMm[2] * 1e-3);
-  const float hw = static_cast<float>(m_params.occluderSizeMm[0] / 2e3), hh = static_cast<float>(m_params.occluderSizeMm[1] / 2e3);
-  m_occluder.vertices = {{cx - hw, cy - hh, cz, 0, 0, -1, 0, 0, -1},
-                         {cx + hw, cy - hh, cz, 0, 0, -1, 7, 0, -1},
-                         {cx + hw, cy + hh, cz, 0, 0, -1, 7, 63, -1},
-                         {cx - hw, cy + hh, cz, 0, 0, -1, 0, 63, -1}};
-  m_occluder.triangles = {{0, 1, 2}, {0, 2, 3}};
-  m_occluder.texture = tex;
+  const float cx = static_cast<float>(xMm * 1e-3), cy = static_cast<float>(yMm * 1e-3), cz = static_cast<float>(zMm * 1e-3);
+  const float hw = static_cast<float>(widthMm / 2e3), hh = static_cast<float>(heightMm / 2e3);
+  Mesh m;
+  m.vertices = {{cx - hw, cy - hh, cz, 0, 0, -1, 0, 0, -1},
+                {cx + hw, cy - hh, cz, 0, 0, -1, 7, 0, -1},
+                {cx + hw, cy + hh, cz, 0, 0, -1, 7, 63, -1},
+                {cx - hw, cy + hh, cz, 0, 0, -1, 0, 63, -1}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.texture = tex;
+  return m;
+}
+
+double Scene::barOffsetMm(std::uint64_t frame) const
+{
+  // To and fro over [-travel / 2, travel / 2], starting at the left end.
+  const double travel = m_params.barTravelMm, period = 2 * travel;
+  const double d = std::fmod(static_cast<double>(frame) * m_params.barMmPerFrame, period);
+  return (d < travel ? d : period - d) - travel / 2;
 }
 
 void Scene::setDistractor(const TargetShape &shape)
@@ -230,7 +250,7 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
     toyLight.specular = m_params.sceneSpecular;
     toyLight.shininess = m_params.sceneShininess;
   }
-  Rasterizer::DrawCall calls[4];
+  Rasterizer::DrawCall calls[5];
   std::size_t n = 0;
   auto add = [&](const Mesh &mesh, const vpHomogeneousMatrix &M, const Lighting &l, std::uint8_t id) {
     calls[n].mesh = &mesh;
@@ -244,6 +264,8 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
   // the same depth, the backdrop lies backdropGapMm behind the toys' base).
   if (m_params.occluder)
     add(m_occluder, cMo, light, 3);
+  if (m_params.sweepingBar)
+    add(m_bar, cMo * vpHomogeneousMatrix(barOffsetMm(frame) * 1e-3, 0, 0, 0, 0, 0), light, 3);
   if (withTarget)
     add(m_toy, cMo, toyLight, 2);
   if (m_params.distractor && hasDistractor()) {

@@ -10,11 +10,13 @@
 namespace pm::sim {
 
 namespace {
-//! The scene the model's photos are taken in: the target alone, without a look-alike beside it.
+//! The scene the model's photos are taken in: the target alone, without a look-alike beside it or anything in front of it.
 Scene alone(const Scene &scene)
 {
   Scene s = scene;
   s.params().distractor = false;
+  s.params().occluder = false;
+  s.params().sweepingBar = false;
   return s;
 }
 } // namespace

@@ -52,8 +52,9 @@ Evidence Judgement::measure(const TrackResult &r) const
   Evidence e;
   ConfidenceCues &c = e.cues;
   const core::FitnessDetail d = m_fitness.evaluateDetail(r.phi);
-  c.quality = r.quality;
-  c.qualityMin = std::min(m_scale.quality(d.left), m_scale.quality(d.right));
+  // Over the points not hidden: a right pose behind an occluder is judged as in the open.
+  c.quality = m_scale.quality(0.5 * (d.visibleLeft + d.visibleRight));
+  c.qualityMin = std::min(m_scale.quality(d.visibleLeft), m_scale.quality(d.visibleRight));
   auto shares = [](const core::FitnessCounts &n, double &in, double &out) {
     const int nIn = n.inMatch + n.inBackground + n.inOther + n.inOff, nOut = n.outBackground + n.outOther + n.outOff;
     in = nIn > 0 ? static_cast<double>(n.inMatch) / nIn : 0.0;
@@ -62,7 +63,8 @@ Evidence Judgement::measure(const TrackResult &r) const
   double inL, outL, inR, outR;
   shares(d.countsLeft, inL, outL);
   shares(d.countsRight, inR, outR);
-  c.inMatchMin = std::min(inL, inR);
+  c.inMatchMin = std::min(inL, inR); // over the points not hidden: what is hidden leaves the confidence as it leaves F
+  e.visibleShare = std::min(d.countsLeft.visibleShare(), d.countsRight.visibleShare());
   c.outBackgroundMin = std::min(outL, outR);
   const core::Phi &phi = r.phi;
   const double r22 = 1.0 - 2.0 * (phi.e1 * phi.e1 + phi.e2 * phi.e2); // the model's z axis . the hand's
@@ -117,6 +119,7 @@ void Judgement::judge(TrackResult &r, const Evidence &e, const JudgedState &stat
   if (r.precise)
     r.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, r.preciseResult.residualPx);
   r.verified = state.verified;
+  r.visibleShare = e.visibleShare;
   r.confidence = m_p.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_p.confidence.threshold;
 }

@@ -87,7 +87,9 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
          .value("out_background", p.fitness.outBackground)
          .value("out_other", p.fitness.outOther)
          .value("off_image", p.fitness.offImage)
-         .value("min_saturation", p.fitness.minSaturation);
+         .value("min_saturation", p.fitness.minSaturation)
+         .value("stereo_visibility", p.fitness.stereoVisibility)
+         .value("max_hidden_share", p.fitness.maxHiddenShare);
    })
       .section("search", [&](V &s) {
         s.value("budget_evaluations", p.search.budgetEvaluations)

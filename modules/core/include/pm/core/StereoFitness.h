@@ -59,6 +59,21 @@ struct FitnessParams
   double outOther = -0.5;    //!< p_out otherwise (the strip lies on the target, or a pixel without hue)
   double offImage = 0.0;     //!< score of a point projected off the image (or behind the camera)
   float minSaturation = 0.f; //!< image pixels less saturated have no hue (0: the paper, every pixel has one)
+  /*!
+    Stereo visibility (what a stereo rig can see of what hides the target): a point on the image
+    that misses in one camera (S_in: not its own hue; S_out: not the background) where the other
+    camera sees what the model says is there (its hue; the background), on a hue that is neither
+    the target's own nor the background's, is hidden in the first: something stands in front of
+    it there. It scores 0 in F, neither for the pose nor against it, and stays in the count (a pose
+    never gains by hiding its misses); FitnessDetail's visible scores, which judge a pose, leave
+    it out of the count too (docs/occlusion.md). False: the paper's fitness, each camera alone.
+  */
+  bool stereoVisibility = true;
+  /*!
+    At most this share of a camera's S_in, and of its S_out, leaves its score as hidden; the hidden
+    points beyond it count as the misses they are (a pose cannot hide most of its model).
+  */
+  double maxHiddenShare = 0.5;
 
   void validate() const; //!< throws pm::core::Error naming the parameter out of range
 };
@@ -81,6 +96,11 @@ struct FitnessCounts
       \var FitnessCounts::outOther
       \brief other S_out points in the image */
   int outBackground = 0, outOther = 0, outOff = 0; //!< S_out points off the image or behind the camera
+  /*! \var FitnessCounts::inHidden
+      \brief S_in points hidden in this camera (FitnessParams::stereoVisibility) */
+  int inHidden = 0, outHidden = 0; //!< S_out points hidden in this camera
+  //! The share of the points on the image that are not hidden (1 when none is; 1 when none is on the image).
+  double visibleShare() const;
 };
 
 /*!
@@ -90,7 +110,7 @@ struct FitnessCounts
 struct PointScore
 {
   //! The class of the point, as counted in FitnessCounts.
-  enum Class : std::uint8_t { InMatch, InBackground, InOther, OutBackground, OutOther, Off };
+  enum Class : std::uint8_t { InMatch, InBackground, InOther, OutBackground, OutOther, Off, Hidden };
   /*! \var PointScore::InMatch
       \brief S_in point on its own hue (FitnessCounts::inMatch)
       \var PointScore::InBackground
@@ -102,7 +122,9 @@ struct PointScore
       \var PointScore::OutOther
       \brief S_out point on another pixel (FitnessCounts::outOther)
       \var PointScore::Off
-      \brief point off the image or behind the camera */
+      \brief point off the image or behind the camera
+      \var PointScore::Hidden
+      \brief point hidden in this camera (FitnessCounts::inHidden, outHidden) */
   /*! \var PointScore::u
       \brief column in the raw image (px), the lens's distortion applied; -1 behind the camera */
   float u, v;  //!< row in the raw image (px), the lens's distortion applied; -1 behind the camera
@@ -123,6 +145,13 @@ struct FitnessDetail
   /*! \var FitnessDetail::countsLeft
       \brief how the left camera's points fell */
   FitnessCounts countsLeft, countsRight; //!< how the right camera's points fell
+  /*!
+    F_L and F_R over the points not hidden only (as ViSP's render-based drift detector averages
+    over the visible points): a right pose behind an occluder keeps the score it has in the open.
+    For judging a pose, never for searching one (a pose would gain by hiding its misses). Equal to
+    left and right when nothing is hidden.
+  */
+  double visibleLeft = 0, visibleRight = 0;
 };
 
 /*!
@@ -259,19 +288,22 @@ public:
 
 private:
   void check(const Phi &phi) const;
+  void buildTargetHues(); //!< m_targetHue from the views' S_in
   struct Projection projectionOf(int cam, const Phi &phi) const;
   FitnessCounts countCamera(int cam, const Phi &phi) const;
   //! F of a pose already checked, or, when its first share of points scores it under \e rejectBelow, that estimate (\e cost: the share of the work done).
   double stereoScoreOrReject(const Phi &phi, double rejectBelow, double &cost) const;
   double score(const FitnessCounts &c) const;
+  double visibleScore(const FitnessCounts &c) const; //!< score() over the points not hidden (FitnessDetail::visibleLeft)
+  double scoreOf(const FitnessCounts &c, bool visibleOnly) const; //!< score() or visibleScore()
   struct View
   {
     std::size_t inBegin, inEnd, outBegin, outEnd; //!< its S_in and S_out in m_x, m_y, m_z, m_hue
     //! The first share of each (every kRejectStride-th point of the model's order): [inBegin, inSplit), [outBegin, outSplit).
     std::size_t inSplit, outSplit;
   };
-  //! Counts one camera's points of a view: \e stage 0 all, 1 the first share, 2 the rest.
-  void countView(const struct Projection &p, const View &v, int stage, FitnessCounts &counts) const;
+  //! Counts one camera's points of a view: \e stage 0 all, 1 the first share, 2 the rest; \e other: the other camera, for stereo visibility (null: off).
+  void countView(const struct Projection &p, const struct Projection *other, const View &v, int stage, FitnessCounts &counts) const;
   //! The view scored for a camera at projection \e p: the one whose camera looked from the nearest direction (ViewpointIndex).
   const View &viewFor(const struct Projection &p) const;
   /*!
@@ -287,6 +319,8 @@ private:
   double normalised(double sum, std::size_t nIn, std::size_t nOut) const;
   //! F of a pose already checked.
   double stereoScore(const Phi &phi) const { return 0.5 * (score(countCamera(0, phi)) + score(countCamera(1, phi))); }
+  //! The hidden points a score leaves out: at most maxHiddenShare of each set (S_in, S_out).
+  void cappedHidden(const FitnessCounts &c, int &inHidden, int &outHidden) const;
 
   FitnessParams m_params;
   PinholeCamera::Projection m_cams[2]; //!< the rig's cameras in the hand frame
@@ -298,6 +332,13 @@ private:
   ViewpointIndex m_viewpoints; //!< the view each camera scores: the one made from the nearest direction (the model's own lookup)
   std::vector<std::uint32_t> m_order; //!< m_order[k]: where the k-th point of the model's order (S_in then S_out of each view) is kept
   std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
+  /*!
+    The target's own hues, per tenth of a degree (1: within kTargetHueSpanDeg of at least
+    kTargetHueShare of the model's S_in points, all views): a point that misses on one of them is
+    a wrong pose, never hidden. Padded by 4 bytes for the vector gather.
+  */
+  std::vector<std::uint8_t> m_targetHue;
+  static constexpr double kTargetHueSpanDeg = 6, kTargetHueShare = 0.005;
   std::array<HuePlane, 2> m_planes;
   std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort; //!< null for a camera without distortion
   std::array<LensDistortion, 2> m_distortion;

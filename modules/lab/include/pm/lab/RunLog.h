@@ -113,6 +113,10 @@ public:
   const ErrorStats &estimate() const { return m_estimate; }
   //! Frames whose pose the precise stage gave (TrackResult::precise).
   long framesPrecise() const { return m_precise; }
+  //! Frames whose estimate had some of the model hidden (TrackResult::visibleShare under 0.99).
+  long framesPartlyHidden() const { return m_partlyHidden; }
+  //! The lowest TrackResult::visibleShare of the run (1 without frames).
+  double minVisibleShare() const { return m_minVisible; }
   //! The tracker's mean time per frame (TrackResult::computeMs, ms; 0 without frames).
   double meanComputeMs() const { return m_frames ? m_sumMs / static_cast<double>(m_frames) : 0; }
   //! The decimated record for the plots (the last, partial bucket only after finish()).
@@ -134,7 +138,8 @@ private:
   ErrorStats m_rest, m_moving, m_allRest, m_allMoving;
   std::array<ErrorStats, 10> m_tenths{};
   int m_violations = 0;
-  double m_maxSpeedFraction = 0, m_sumMs = 0;
+  double m_maxSpeedFraction = 0, m_sumMs = 0, m_minVisible = 1;
+  long m_partlyHidden = 0;
   long m_servoedOnWrong = 0, m_servoedOnWrongRaw = 0, m_held = 0, m_servoed = 0, m_precise = 0;
   ErrorStats m_estimate;
   std::vector<RunSample> m_samples;

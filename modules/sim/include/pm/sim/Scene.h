@@ -50,6 +50,16 @@ struct SceneParams
   bool occluder = false;                    //!< a strand of seaweed in front of the toy
   double occluderCentreMm[3] = {25, 0, -70};//!< its centre in the target frame
   double occluderSizeMm[2] = {22, 260};     //!< its width and height
+  /*!
+    A violet bar, 300 mm tall, that sweeps to and fro across the front of the toy along the target
+    frame's x (Scene::barOffsetMm(): its offset at a frame, from the frame number); drawn as an
+    occluder (id 3).
+  */
+  bool sweepingBar = false;
+  double barDepthMm = -100;   //!< its plane in the target frame (z; negative: in front of the toy)
+  double barWidthMm = 60;     //!< its width (mm)
+  double barTravelMm = 500;   //!< the span it sweeps, centred on the target (mm)
+  double barMmPerFrame = 4;   //!< its speed (mm a frame: 120 mm/s at 30 frames a second)
   std::uint64_t seed = 1;                   //!< noise seed
   /*!
     On: the scene light (sceneLightDir, fixed in the target frame) replaces the hand light and
@@ -137,6 +147,8 @@ public:
   */
   void setDistractor(const TargetShape &shape);
   bool hasDistractor() const { return !m_distractor.triangles.empty(); } //!< true once setDistractor() gave a shape
+  //! The sweeping bar's offset along the target frame's x at \e frame (mm; SceneParams::sweepingBar).
+  double barOffsetMm(std::uint64_t frame) const;
 
   //! True if this scene is lit by the scene light with shadows (params().shadows, Auto resolved).
   bool sceneLit() const;
@@ -160,7 +172,9 @@ public:
 private:
   TargetShape m_target;
   SceneParams m_params;
-  Mesh m_toy, m_backdrop, m_occluder, m_distractor;
+  //! A flat textured quad facing the hand, centred at (x, y, z) of the target frame (mm).
+  static Mesh makeFlatQuad(double xMm, double yMm, double zMm, double widthMm, double heightMm, int r, int g, int b);
+  Mesh m_toy, m_backdrop, m_occluder, m_distractor, m_bar;
   struct ShadowCache;
   std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
   struct LensCache;

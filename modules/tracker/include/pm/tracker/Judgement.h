@@ -54,6 +54,7 @@ struct Evidence
 {
   ConfidenceCues cues;                //!< the pose's fit, tilt, competitors and precise cues (the state's own left to judge())
   std::array<double, 6> lineSigmas{}; //!< the precise stage's lines' own 1-sigma per axis (mm, deg), when its pose is the frame's
+  double visibleShare = 1;            //!< the lower of the cameras' shares of points not hidden (TrackResult::visibleShare)
 };
 
 //! The tracker's state that a frame is judged with (see Judgement::judge()).

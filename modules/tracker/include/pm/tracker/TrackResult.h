@@ -56,6 +56,12 @@ struct TrackResult
   precise::PoseUncertainty uncertainty;
 
   ConfidenceCues cues;       //!< what the confidence is computed from
+  /*!
+    The share of the model's points on the images that the stereo visibility did not find hidden,
+    the lower of the two cameras' (core::FitnessCounts::visibleShare(); 1: nothing hidden, or
+    core::FitnessParams::stereoVisibility off).
+  */
+  double visibleShare = 1;
   double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)
   bool verified = false;     //!< the lock survived its challenger search (VerifierParams::evaluations)
   bool switched = false;     //!< the challenger found a better pose elsewhere this frame and the tracker moved there

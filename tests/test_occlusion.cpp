@@ -1,0 +1,173 @@
+// Stereo visibility (issue 43): what hides part of the target leaves the fitness, checked against
+// the renderer's own record of which object each pixel shows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "TestSupport.h"
+#include "pm/core/Error.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/io/RigFile.h"
+#include "pm/sim/Rasterizer.h"
+#include "pm/sim/Scene.h"
+#include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/TargetCatalog.h"
+
+namespace {
+
+constexpr std::uint8_t kToy = 2, kOccluder = 3; // the renderer's object ids (Scene::render)
+
+//! The crab 510 mm ahead, its stereo model (made without the strand), and its pair with and without the strand in front.
+struct StrandCase
+{
+  pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::SceneParams sp = [] {
+    pm::sim::SceneParams p;
+    p.supersampling = 1;
+    return p;
+  }();
+  pm::sim::Scene scene{pm::sim::makeTarget("C12"), sp};
+  vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
+  pm::sim::SimulatedPhotoModel sm = [this] {
+    pm::model::StereoModelParams two;
+    two.rightView = true;
+    return pm::sim::makeSimulatedStereoPhotoModel(scene, rig, 500, two);
+  }();
+  pm::core::Phi truth = sm.truth(hMo);
+  vpImage<vpRGBa> clear[2], strand[2];
+  pm::sim::Rasterizer raster[2]; //!< after the strand's render: which object each pixel shows
+  StrandCase()
+  {
+    for (unsigned k = 0; k < 2; ++k)
+      scene.render(raster[k], k ? rig.right : rig.left, hMo, 0, k, clear[k]);
+    scene.params().occluder = true;
+    for (unsigned k = 0; k < 2; ++k)
+      scene.render(raster[k], k ? rig.right : rig.left, hMo, 0, k, strand[k]);
+  }
+};
+
+const StrandCase &strandCase()
+{
+  static const StrandCase c;
+  return c;
+}
+
+pm::core::FitnessParams visibility(bool on)
+{
+  pm::core::FitnessParams p;
+  p.stereoVisibility = on;
+  return p;
+}
+
+} // namespace
+
+TEST(StereoVisibility, ThePointsFoundHiddenAreThoseTheStrandHides)
+{
+  const StrandCase &c = strandCase();
+  pm::core::StereoFitness fit(c.rig, c.sm.build.model);
+  fit.setImages(c.strand[0], c.strand[1]);
+  for (int cam = 0; cam < 2; ++cam) {
+    int hidden = 0, hiddenOnStrand = 0, inOnStrand = 0, inOnStrandHidden = 0;
+    for (const pm::core::PointScore &s : fit.pointScores(c.truth, cam)) {
+      if (s.cls == pm::core::PointScore::Off)
+        continue;
+      const unsigned u = static_cast<unsigned>(std::lround(s.u)), v = static_cast<unsigned>(std::lround(s.v));
+      const bool onStrand = c.raster[cam].coverage(u, v, kOccluder) > 0.5;
+      hidden += s.cls == pm::core::PointScore::Hidden;
+      hiddenOnStrand += s.cls == pm::core::PointScore::Hidden && onStrand;
+      if (s.inner && onStrand) {
+        ++inOnStrand;
+        inOnStrandHidden += s.cls == pm::core::PointScore::Hidden;
+      }
+    }
+    // The strand hides a fifth or so of the crab in each camera ...
+    ASSERT_GT(inOnStrand, 20) << "camera " << cam;
+    // ... every point found hidden is on it (the strand's edge pixels aside) ...
+    EXPECT_GE(hiddenOnStrand, 0.95 * hidden) << "camera " << cam << ": " << hiddenOnStrand << " of " << hidden;
+    // ... and most of the crab's points it covers are found (not those the other camera cannot see either).
+    EXPECT_GE(inOnStrandHidden, 0.6 * inOnStrand) << "camera " << cam << ": " << inOnStrandHidden << " of " << inOnStrand;
+  }
+}
+
+TEST(StereoVisibility, BehindTheStrandTheRightPoseIsJudgedAsInTheOpenAndSearchedWithoutPenalty)
+{
+  const StrandCase &c = strandCase();
+  auto detailAt = [&](const vpImage<vpRGBa> *pair, bool on) {
+    pm::core::StereoFitness fit(c.rig, c.sm.build.model, visibility(on));
+    fit.setImages(pair[0], pair[1]);
+    return fit.evaluateDetail(c.truth);
+  };
+  const pm::core::FitnessDetail clearOn = detailAt(c.clear, true), strandOn = detailAt(c.strand, true);
+  const pm::core::FitnessDetail clearOff = detailAt(c.clear, false), strandOff = detailAt(c.strand, false);
+  // Nothing hidden: the same F either way, and the visible F is F.
+  EXPECT_NEAR(clearOn.fitness, clearOff.fitness, 0.005);
+  EXPECT_NEAR(0.5 * (clearOn.visibleLeft + clearOn.visibleRight), clearOn.fitness, 0.005);
+  // Behind the strand the paper's F falls by a tenth or more. The search's F counts the hidden
+  // points for nothing (the strip behind the strand no longer against the pose): no lower than the
+  // paper's, and not higher than in the open (a pose gains nothing by hiding) ...
+  const double fall = clearOff.fitness - strandOff.fitness;
+  EXPECT_GT(fall, 0.1);
+  EXPECT_GE(strandOn.fitness, strandOff.fitness);
+  EXPECT_LE(strandOn.fitness, clearOn.fitness);
+  // ... while the F the pose is judged by, over the visible points, hardly moves.
+  EXPECT_LT(clearOn.fitness - 0.5 * (strandOn.visibleLeft + strandOn.visibleRight), 0.3 * fall);
+}
+
+TEST(StereoVisibility, WrongPosesGainNothingWhereNothingIsHidden)
+{
+  // Without the strand, poses around the crab's (up to 60 mm and 20 deg off): where no point is
+  // hidden, the stereo visibility changes nothing; a pose off the crab finds few of its points
+  // "hidden" (on neither the target's hues nor the background's) and never stands higher for it.
+  const StrandCase &c = strandCase();
+  pm::core::StereoFitness on(c.rig, c.sm.build.model, visibility(true)), off(c.rig, c.sm.build.model, visibility(false));
+  on.setImages(c.clear[0], c.clear[1]);
+  off.setImages(c.clear[0], c.clear[1]);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> mm(-60, 60), eps(-0.17, 0.17);
+  const double fTruth = on.evaluate(c.truth);
+  int higherThanTruth = 0;
+  for (int i = 0; i < 200; ++i) {
+    pm::core::Phi p = c.truth;
+    p.x += mm(rng), p.y += mm(rng), p.z += mm(rng), p.e1 += eps(rng), p.e2 += eps(rng), p.e3 += eps(rng);
+    const double fOn = on.evaluate(p), fOff = off.evaluate(p);
+    EXPECT_LT(fOn - fOff, 0.05) << p.toString();
+    higherThanTruth += fOn > fTruth;
+  }
+  EXPECT_EQ(higherThanTruth, 0);
+}
+
+TEST(StereoVisibility, BothKernelsCountTheSameHiddenPoints)
+{
+  const StrandCase &c = strandCase();
+  pm::core::StereoFitness fit(c.rig, c.sm.build.model);
+  fit.setImages(c.strand[0], c.strand[1]);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> mm(-20, 20), eps(-0.05, 0.05);
+  int anyHidden = 0;
+  for (int i = 0; i < 60; ++i) {
+    pm::core::Phi p = c.truth;
+    p.x += mm(rng), p.y += mm(rng), p.z += mm(rng), p.e1 += eps(rng), p.e2 += eps(rng), p.e3 += eps(rng);
+    fit.useScalarKernel(false);
+    const pm::core::FitnessDetail a = fit.evaluateDetail(p);
+    fit.useScalarKernel(true);
+    const pm::core::FitnessDetail b = fit.evaluateDetail(p);
+    EXPECT_EQ(a.fitness, b.fitness) << p.toString();
+    EXPECT_EQ(a.countsLeft.inHidden, b.countsLeft.inHidden);
+    EXPECT_EQ(a.countsLeft.outHidden, b.countsLeft.outHidden);
+    EXPECT_EQ(a.countsRight.inHidden, b.countsRight.inHidden);
+    EXPECT_EQ(a.countsRight.outHidden, b.countsRight.outHidden);
+    anyHidden += a.countsLeft.inHidden + a.countsRight.inHidden > 0;
+  }
+  EXPECT_GT(anyHidden, 30); // the strand is in front of most of them
+}
+
+TEST(StereoVisibility, AHiddenShareOutOfRangeIsRefused)
+{
+  const StrandCase &c = strandCase();
+  pm::core::FitnessParams p;
+  p.maxHiddenShare = 1.0;
+  EXPECT_THROW(pm::core::StereoFitness(c.rig, c.sm.build.model, p), pm::core::Error);
+  p.maxHiddenShare = -0.1;
+  EXPECT_THROW(pm::core::StereoFitness(c.rig, c.sm.build.model, p), pm::core::Error);
+}
