@@ -333,7 +333,10 @@ TEST(PmCompare, TheFlatAndTheThreeDModelSideBySideEachAgainstItsOwnTruth)
   EXPECT_EQ(depth.at("key"), "ours-3d");
   EXPECT_FALSE(depth.at("needs_initial_pose").get<bool>());
   EXPECT_GT(depth.at("success_1cm2deg").get<double>(), 0.9);
-  EXPECT_GE(depth.at("success_1cm2deg").get<double>(), flat.at("success_1cm2deg").get<double>());
+  // (Its share within 1 cm / 2 deg is no longer above the flat model's: since issue 43's stereo
+  // visibility the flat model's is 92.9 % here, 74.0 % with the paper's fitness; the stereo
+  // model's 90.8 %, 91.8 %.) What the stereo model brings is the depth:
+  EXPECT_LT(depth.at("mean_translation_error_mm").get<double>(), 0.5 * flat.at("mean_translation_error_mm").get<double>());
   // The flat model's depth bias (several mm, the crab's relief), which the stereo model removes.
   EXPECT_GT(flat.at("mean_translation_error_mm").get<double>(), 3.0);
   EXPECT_LT(depth.at("mean_translation_error_mm").get<double>(), 2.0);

@@ -268,7 +268,10 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   r.quality = scale.quality(r.fitness);
   r.state = TrackState::Tracking;
   const pm::tracker::Evidence e = judgement.measure(r);
-  EXPECT_DOUBLE_EQ(e.cues.quality, r.quality);
+  // The cues' q is over the points not hidden (the stereo visibility): never under the frame's q.
+  const pm::core::FitnessDetail d = fitness.evaluateDetail(c.truth);
+  EXPECT_DOUBLE_EQ(e.cues.quality, scale.quality(0.5 * (d.visibleLeft + d.visibleRight)));
+  EXPECT_GE(e.cues.quality, r.quality);
   EXPECT_GT(e.cues.competitorMargin, 0.0); // the right pose stands above its turned copies
   EXPECT_GT(e.cues.inMatchMin, 0.5);
   EXPECT_FALSE(e.cues.precise); // a flat model: no precise stage

@@ -145,13 +145,12 @@ struct FitnessDetail
   /*! \var FitnessDetail::countsLeft
       \brief how the left camera's points fell */
   FitnessCounts countsLeft, countsRight; //!< how the right camera's points fell
-  /*!
-    F_L and F_R over the points not hidden only (as ViSP's render-based drift detector averages
-    over the visible points): a right pose behind an occluder keeps the score it has in the open.
-    For judging a pose, never for searching one (a pose would gain by hiding its misses). Equal to
-    left and right when nothing is hidden.
-  */
-  double visibleLeft = 0, visibleRight = 0;
+  /*! \var FitnessDetail::visibleLeft
+      \brief F_L over the points not hidden only (as ViSP's render-based drift detector averages
+      over the visible points): a right pose behind an occluder keeps the score it has in the open.
+      For judging a pose, never for searching one (a pose would gain by hiding its misses); equal
+      to left when nothing is hidden. */
+  double visibleLeft = 0, visibleRight = 0; //!< F_R over the points not hidden only (see visibleLeft)
 };
 
 /*!
