@@ -5,6 +5,9 @@
 #include <cmath>
 #include <random>
 
+#include <visp3/core/vpMeterPixelConversion.h>
+#include <visp3/core/vpPoint.h>
+
 #include "TestSupport.h"
 #include "pm/core/Error.h"
 #include "pm/core/StereoFitness.h"
@@ -170,4 +173,40 @@ TEST(StereoVisibility, AHiddenShareOutOfRangeIsRefused)
   EXPECT_THROW(pm::core::StereoFitness(c.rig, c.sm.build.model, p), pm::core::Error);
   p.maxHiddenShare = -0.1;
   EXPECT_THROW(pm::core::StereoFitness(c.rig, c.sm.build.model, p), pm::core::Error);
+}
+
+TEST(SweepingBar, GoesToAndFroAcrossTheTargetAndIsDrawnInFrontOfIt)
+{
+  const StrandCase &c = strandCase();
+  pm::sim::Scene scene = c.scene;
+  scene.params().occluder = false;
+  scene.params().sweepingBar = true;
+  const pm::sim::SceneParams &p = scene.params();
+  // To and fro over the travel, centred on the target: an end, the other end, back.
+  EXPECT_DOUBLE_EQ(scene.barOffsetMm(0), -p.barTravelMm / 2);
+  const auto across = static_cast<std::uint64_t>(p.barTravelMm / p.barMmPerFrame);
+  EXPECT_DOUBLE_EQ(scene.barOffsetMm(across), p.barTravelMm / 2);
+  EXPECT_DOUBLE_EQ(scene.barOffsetMm(2 * across), -p.barTravelMm / 2);
+  EXPECT_NEAR(scene.barOffsetMm(across / 2), 0.0, p.barMmPerFrame);
+  // Halfway it stands over the target: in the left image, along the row of the toy's origin, a
+  // band of bar about as wide as 60 mm at 410 mm (about 115 px); at an end, off the toy's origin.
+  pm::sim::Rasterizer r;
+  vpImage<vpRGBa> I;
+  double u = 0, v = 0;
+  vpPoint origin(0, 0, 0);
+  origin.track(c.rig.left.cMh() * c.hMo);
+  vpMeterPixelConversion::convertPoint(c.rig.left.cam, origin.get_x(), origin.get_y(), u, v);
+  const auto row = static_cast<unsigned>(v);
+  auto barPixels = [&] {
+    int n = 0;
+    for (unsigned col = 0; col < I.getWidth(); ++col)
+      n += r.coverage(col, row, kOccluder) > 0.5;
+    return n;
+  };
+  scene.render(r, c.rig.left, c.hMo, across / 2, 0, I);
+  EXPECT_GT(barPixels(), 90);
+  EXPECT_LT(barPixels(), 140);
+  scene.render(r, c.rig.left, c.hMo, 0, 0, I);
+  EXPECT_EQ(r.coverage(static_cast<unsigned>(u), row, kOccluder), 0.0);
+  EXPECT_GT(r.coverage(static_cast<unsigned>(u), row, kToy), 0.5);
 }
