@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <random>
 
 #include <visp3/core/vpTime.h>
@@ -280,6 +281,7 @@ public:
   vpColVector q = vpColVector(6, 0.0), qdot = vpColVector(6, 0.0);
   bool nanJoints = false, frozen = false, stopped = false;
   double clockedGain = 0;  //!< > 0: moves by itself in real time, at this share of the command (a sluggish or eager controller)
+  std::function<double()> clockMs = [] { return vpTime::measureTimeMs(); }; //!< its controller's clock (ms)
   double lastReadMs = -1;
   double fastestShare = 0; //!< the largest |qdot_i| / limit_i commanded, against \e limits
   vpColVector limits;
@@ -288,7 +290,7 @@ public:
   void getDisplacement(const vpRobot::vpControlFrameType, vpColVector &d) override { d.resize(6, true); }
   void getPosition(const vpRobot::vpControlFrameType, vpColVector &out) override
   {
-    const double now = vpTime::measureTimeMs();
+    const double now = clockMs();
     if (clockedGain > 0 && lastReadMs >= 0)
       run(clockedGain * 1e-3 * (now - lastReadMs));
     lastReadMs = now;
@@ -417,6 +419,10 @@ TEST(HandLoop, ARobotThatStopsAnsweringMidServoEndsTheLoopWithAClearErrorAndTheA
   pm::robot::ViSPRobotArm arm(robot, pm::robot::makeArmModel("viper850"));
   robot.q = arm.model().restJoints();
   robot.clockedGain = 1;
+  // Its clock runs a frame's time per step of the loop, however slow the machine (a sanitizer's build
+  // runs the loop at a third of real time: the wall clock would move the robot three frames a frame).
+  double simulatedMs = 0;
+  robot.clockMs = [&simulatedMs] { return simulatedMs; };
   pm::lab::ArmCameraSource cameras(scene, rig(), arm, arm.fMh() * vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), 30, 0);
   pm::servo::ServoParams sp;
   sp.hdMo = sm.photoHMo * sm.oMm * vpHomogeneousMatrix(0, 0, -0.05, 0, 0, 0); // the model's frame, 50 mm nearer
@@ -428,14 +434,17 @@ TEST(HandLoop, ARobotThatStopsAnsweringMidServoEndsTheLoopWithAClearErrorAndTheA
   long servoed = 0;
   for (int k = 0; k < 150 && servoed < 30; ++k) { // at most 5 s
     ASSERT_TRUE(loop.step(f));
+    simulatedMs += 1000.0 / 30;
     servoed += f.command.servoing ? 1 : 0;
   }
   ASSERT_EQ(servoed, 30);
   ASSERT_GT(arm.commanded().frobeniusNorm(), 1e-3);
   robot.frozen = true;
   std::string e;
-  for (int k = 0; k < 90 && e.empty(); ++k)
+  for (int k = 0; k < 90 && e.empty(); ++k) {
     e = errorOf([&] { loop.step(f); });
+    simulatedMs += 1000.0 / 30;
+  }
   EXPECT_NE(e.find("does not answer"), std::string::npos) << e;
   EXPECT_NE(e.find("the arm was told to stop"), std::string::npos) << e;
   EXPECT_TRUE(robot.stopped);
