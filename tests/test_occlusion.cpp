@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include <visp3/core/vpMeterPixelConversion.h>
@@ -12,6 +13,8 @@
 #include "pm/core/Error.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/io/RigFile.h"
+#include "pm/lab/LabModel.h"
+#include "pm/precise/PreciseStage.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
@@ -209,4 +212,123 @@ TEST(SweepingBar, GoesToAndFroAcrossTheTargetAndIsDrawnInFrontOfIt)
   scene.render(r, c.rig.left, c.hMo, 0, 0, I);
   EXPECT_EQ(r.coverage(static_cast<unsigned>(u), row, kOccluder), 0.0);
   EXPECT_GT(r.coverage(static_cast<unsigned>(u), row, kToy), 0.5);
+}
+
+//! The crab's all-around lab model (made of the target alone) and the truth of the strand case in its frame.
+struct LabCase
+{
+  const StrandCase &c = strandCase();
+  pm::sim::Scene alone{pm::sim::makeTarget("C12"), c.sp};
+  pm::sim::SimulatedPhotoModel model = pm::lab::makeLabModel(alone, c.rig, pm::lab::LabModelChoice());
+  pm::core::Phi truth = model.truth(c.hMo);
+};
+
+const LabCase &labCase()
+{
+  static const LabCase l;
+  return l;
+}
+
+pm::precise::PreciseParams lineOcclusion(bool on)
+{
+  pm::precise::PreciseParams p;
+  p.occlusion.enabled = on;
+  return p;
+}
+
+TEST(StereoOcclusion, TheLinesFoundHiddenAreThoseTheStrandHides)
+{
+  const LabCase &l = labCase();
+  const StrandCase &c = l.c;
+  ASSERT_TRUE(l.model.build.model.hasContours());
+  pm::precise::PreciseStage precise(c.rig, l.model.build.model);
+  precise.setImages(c.clear[0], c.clear[1]);
+  pm::precise::PreciseResult r = precise.refine(l.truth, true);
+  ASSERT_TRUE(r.ok);
+  EXPECT_EQ(r.hiddenLines[0] + r.hiddenLines[1], 0u); // nothing in front: nothing hidden
+  precise.setImages(c.strand[0], c.strand[1]);
+  r = precise.refine(l.truth, true);
+  ASSERT_TRUE(r.ok);
+  for (int cam = 0; cam < 2; ++cam) {
+    const pm::precise::CorrespondenceLines &lines = precise.lines(cam);
+    // Where each line's target side lies (6 px inside its centre): on the strand for every hidden
+    // line, on it for few kept ones.
+    auto onStrand = [&](const pm::precise::LineMeasure &m) {
+      const double u = m.cu - 6 * m.nu, v = m.cv - 6 * m.nv;
+      return c.raster[cam].coverage(static_cast<unsigned>(std::lround(u)), static_cast<unsigned>(std::lround(v)), kOccluder) > 0.5;
+    };
+    int hiddenOn = 0, keptOn = 0;
+    for (std::size_t i = 0; i < lines.hiddenCount(); ++i)
+      hiddenOn += onStrand(lines.hiddenLine(i));
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      keptOn += onStrand(lines.line(i));
+    EXPECT_GE(lines.hiddenCount(), 8u) << "camera " << cam; // the strand crosses the crab's outline in both
+    EXPECT_GE(hiddenOn, 0.9 * static_cast<double>(lines.hiddenCount())) << "camera " << cam;
+    EXPECT_LE(keptOn, hiddenOn / 2) << "camera " << cam;
+  }
+}
+
+TEST(StereoOcclusion, WrongPosesOnAClearViewFindNothingHidden)
+{
+  // Poses around the crab's (up to 30 mm and 15 deg off) on a clear pair: what a wrong pose's lines
+  // see where the target is not lies beside or behind it, never in front, so hardly a line is hidden.
+  const LabCase &l = labCase();
+  const StrandCase &c = l.c;
+  pm::precise::PreciseStage precise(c.rig, l.model.build.model);
+  precise.setImages(c.clear[0], c.clear[1]);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> mm(-30, 30), eps(-0.13, 0.13);
+  std::size_t hidden = 0, lines = 0;
+  for (int i = 0; i < 40; ++i) {
+    pm::core::Phi p = l.truth;
+    p.x += mm(rng), p.y += mm(rng), p.z += mm(rng), p.e1 += eps(rng), p.e2 += eps(rng), p.e3 += eps(rng);
+    (void)precise.objective(p); // measures the lines at p (the finest scale)
+    for (int cam = 0; cam < 2; ++cam) {
+      hidden += precise.lines(cam).hiddenCount();
+      lines += precise.lines(cam).size() + precise.lines(cam).hiddenCount();
+    }
+  }
+  ASSERT_GT(lines, 2000u);
+  EXPECT_LE(static_cast<double>(hidden), 0.01 * static_cast<double>(lines)) << hidden << " of " << lines;
+}
+
+TEST(StereoOcclusion, BehindTheStrandThePreciseStageLandsAndJudgesAsInTheOpen)
+{
+  // The precise stage from the crab's pose: behind the strand, without what it finds hidden (lines
+  // and interior points), it lands as in the open and its lines split target from background as
+  // sharply (the separation, a cue of the confidence); with every line and point, the strand's
+  // chromaticity pulls it off by twice as much and the lines crossing it blur the split.
+  const LabCase &l = labCase();
+  const StrandCase &c = l.c;
+  auto at = [&](const vpImage<vpRGBa> *pair, bool on) {
+    pm::precise::PreciseStage precise(c.rig, l.model.build.model, lineOcclusion(on));
+    precise.setImages(pair[0], pair[1]);
+    return precise.refine(l.truth, true);
+  };
+  const pm::precise::PreciseResult open = at(c.clear, true), hidden = at(c.strand, true), all = at(c.strand, false);
+  ASSERT_TRUE(open.ok && hidden.ok && all.ok);
+  EXPECT_EQ(open.hiddenLines[0] + open.hiddenLines[1], 0u);
+  EXPECT_GE(hidden.hiddenLines[0] + hidden.hiddenLines[1], 20u);
+  EXPECT_LT(open.separation - hidden.separation, 0.01);
+  EXPECT_GT(open.separation - all.separation, 0.05);
+  const double deg[3] = {pm::core::rotationDistanceDeg(open.phi, l.truth), pm::core::rotationDistanceDeg(hidden.phi, l.truth),
+                         pm::core::rotationDistanceDeg(all.phi, l.truth)};
+  EXPECT_LT(deg[1], deg[0] + 0.25) << deg[0] << " in the open";
+  EXPECT_GT(deg[2], deg[1] + 0.2) << deg[1] << " without the hidden";
+  EXPECT_LT(pm::core::translationDistanceMm(hidden.phi, l.truth), 1.0);
+}
+
+TEST(StereoOcclusion, ParametersOutOfRangeAreRefusedWithAClearError)
+{
+  const LabCase &l = labCase();
+  auto refusal = [&](const std::function<void(pm::precise::StereoOcclusionParams &)> &change) {
+    pm::precise::PreciseParams p;
+    change(p.occlusion);
+    return pm::test::errorOf([&] { pm::precise::PreciseStage s(l.c.rig, l.model.build.model, p); });
+  };
+  EXPECT_NE(refusal([](auto &o) { o.maxHiddenShare = 1; }).find("hidden lines' largest share"), std::string::npos);
+  EXPECT_NE(refusal([](auto &o) { o.probesPx[1] = 0; }).find("probes"), std::string::npos);
+  EXPECT_NE(refusal([](auto &o) { o.frontMaxMm = 5; }).find("occluders' depths"), std::string::npos);
+  EXPECT_NE(refusal([](auto &o) { o.sameHueDeg = NAN; }).find("same hue"), std::string::npos);
+  EXPECT_EQ(refusal([](auto &o) { o.enabled = false; }), ""); // off: every line counts
 }

@@ -94,27 +94,7 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
   m_tolIn = kernels::deci(params.inTolDeg);
   m_tolInBg = kernels::deci(params.inBgTolDeg);
   m_tolOutBg = kernels::deci(params.outBgTolDeg);
-  buildTargetHues();
-}
-
-void StereoFitness::buildTargetHues()
-{
-  // A histogram of the S_in hues of every view by degree, then each tenth of a degree marked when
-  // the points within kTargetHueSpanDeg of it reach kTargetHueShare of them.
-  std::vector<double> perDegree(360, 0.0);
-  double n = 0;
-  for (const View &v : m_views)
-    for (std::size_t i = v.inBegin; i < v.inEnd; ++i, ++n)
-      perDegree[static_cast<std::size_t>(m_hue[i] / 10) % 360] += 1;
-  m_targetHue.assign(3600 + 4, 0);
-  const int span = static_cast<int>(kTargetHueSpanDeg);
-  for (int d = 0; d < 360; ++d) {
-    double near = 0;
-    for (int k = -span; k <= span; ++k)
-      near += perDegree[static_cast<std::size_t>((d + k + 360) % 360)];
-    if (n > 0 && near >= kTargetHueShare * n)
-      std::fill_n(m_targetHue.begin() + 10 * d, 10, std::uint8_t{1});
-  }
+  m_targetHues = TargetHues(model);
 }
 
 void StereoFitness::check(const Phi &phi) const
@@ -151,7 +131,7 @@ void StereoFitness::countView(const Projection &p, const Projection *other, cons
 {
   const std::size_t inB = stage == 2 ? v.inSplit : v.inBegin, inE = stage == 1 ? v.inSplit : v.inEnd;
   const std::size_t outB = stage == 2 ? v.outSplit : v.outBegin, outE = stage == 1 ? v.outSplit : v.outEnd;
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHue.data()};
+  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
   const kernels::ModelSoA m{m_x.data(), m_y.data(), m_z.data(), m_hue.data()};
 #ifdef PM_HAVE_X86
   if (m_avx2) {

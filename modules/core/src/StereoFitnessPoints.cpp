@@ -60,7 +60,7 @@ std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) c
   check(phi);
   const Projection p = projectionOf(camera, phi), o = projectionOf(1 - camera, phi);
   const View &view = viewFor(p);
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHue.data()};
+  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
   std::vector<PointScore> out;
   for (std::size_t k = view.inBegin; k < view.outEnd; ++k) { // in the model's order
     const std::size_t i = m_order[k];

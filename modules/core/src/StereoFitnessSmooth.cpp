@@ -11,7 +11,7 @@ void StereoFitness::smoothSumsScalar(const Projection &p, std::size_t b, std::si
                                      SmoothSums &out) const
 {
   const FitnessParams &q = m_params;
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHue.data()};
+  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
   // A pixel's score for an S_in point of hue hm (or, hm < 0, for an S_out point): the classes of
   // Eqs. (8), (9) as the kernels count them.
   auto pixelScore = [&](std::int32_t h, std::int32_t hm) {
@@ -74,7 +74,7 @@ double StereoFitness::smoothCamera(int cam, const Phi &phi, bool vectorised, boo
   std::size_t inRest = view.inBegin, outRest = view.outBegin;
 #ifdef PM_HAVE_X86
   if (vectorised && m_avx2) {
-    const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHue.data()};
+    const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
     const FitnessParams &q = m_params;
     const kernels::ClassScores cs{static_cast<float>(q.inMatch), static_cast<float>(q.inBackground), static_cast<float>(q.inOther),
                          static_cast<float>(q.outBackground), static_cast<float>(q.outOther), static_cast<float>(q.offImage)};

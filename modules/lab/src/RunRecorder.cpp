@@ -44,9 +44,13 @@ void RunRecorder::record(long k, const LoopFrame &f, const ClosedLoop &loop, con
   label << std::fixed << std::setprecision(1) << "t " << f.t << " s  " << (m_oracle ? "oracle" : toString(f.track.state))
         << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg  visible " << std::setprecision(0)
         << 100 * f.track.visibleShare << " % (magenta: hidden)";
-  const vpImage<vpRGBa> pair =
-      report::sideBySide(report::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str()),
-                         report::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right"));
+  vpImage<vpRGBa> left = report::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str());
+  vpImage<vpRGBa> right = report::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right");
+  if (const precise::PreciseStage *stage = loop.tracker().preciseStage(); stage && f.track.precise) {
+    report::drawCorrespondenceLines(left, stage->lines(0)); // the lines of the frame's pose: cyan kept, magenta hidden
+    report::drawCorrespondenceLines(right, stage->lines(1));
+  }
+  const vpImage<vpRGBa> pair = report::sideBySide(left, right);
   if (wantVideo) {
     cv::Mat bgra, bgr, half; // ViSP converts to BGRA; the writer takes BGR
     vpImageConvert::convert(pair, bgra);

@@ -38,6 +38,14 @@ struct Composed
   double R[9], t[3], hRo[9];
 };
 
+ModelInCamera modelIn(const Composed &c)
+{
+  ModelInCamera m;
+  std::copy(c.R, c.R + 9, m.R);
+  std::copy(c.t, c.t + 3, m.t);
+  return m;
+}
+
 Composed compose(const LineCamera &cam, const core::Phi &phi)
 {
   Composed c;
@@ -145,7 +153,7 @@ void cameraInModel(const LineCamera &cam, const core::Phi &phi, double out[3])
 }
 
 CorrespondenceLines::CorrespondenceLines(std::size_t maxLines, int maxSegments, int maxScale)
-    : m_lines(maxLines), m_segF(static_cast<std::size_t>(maxSegments)), m_segB(static_cast<std::size_t>(maxSegments)),
+    : m_lines(maxLines), m_hidden(maxLines), m_segF(static_cast<std::size_t>(maxSegments)), m_segB(static_cast<std::size_t>(maxSegments)),
       m_dist(LineShape::kMaxDistribution), m_maxSegments(maxSegments), m_maxScale(maxScale)
 {
 }
@@ -154,6 +162,7 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
                                          const ColourHistograms &colours, int scale, std::size_t maxLines, double minContinuous)
 {
   m_n = 0;
+  m_nHidden = 0;
   const int L = shape.segments();
   if (L > m_maxSegments || scale > m_maxScale || scale < 1)
     throw core::Error("precise stage: a line of " + std::to_string(L) + " segments of " + std::to_string(scale) +
@@ -163,6 +172,7 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
   cameraInModel(cam, phi, cm);
   m_view = outlines.nearest(cm);
   const Selection sel = select(outlines, m_view, std::min(maxLines, m_lines.size()));
+  const ModelInCamera here = modelIn(c), there = m_occlusion ? modelIn(compose(*m_other, phi)) : here;
   const int P = L * scale;
   const int D = shape.distributionLength, F = shape.functionLength;
   for (std::size_t k = 0; k < sel.count; ++k) {
@@ -173,6 +183,7 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
     const double u = pr.u, v = pr.v, nu = pr.nu, nv = pr.nv;
     if (std::min(q.insideMm, q.outsideMm) * pr.pxPerMm / scale < minContinuous)
       continue;
+    const bool hidden = m_occlusion && hiddenHere(cam, q, here, cm, there, pr.pxPerMm);
     // The segments' probabilities of lying on the target, from the inside end outward. The line steps
     // one pixel at a time along its dominant axis (the other coordinate rounded), so that every
     // pixel's place along the normal is known exactly: t_k = t0 + k / |n_dominant|.
@@ -236,7 +247,7 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
     double sep = 0;
     for (int s = 0; s < L; ++s)
       sep += std::fabs(m_segF[static_cast<std::size_t>(s)] - m_segB[static_cast<std::size_t>(s)]);
-    LineMeasure &m = m_lines[m_n++];
+    LineMeasure &m = hidden ? m_hidden[m_nHidden++] : m_lines[m_n++];
     m.X[0] = static_cast<float>(pr.X[0]), m.X[1] = static_cast<float>(pr.X[1]), m.X[2] = static_cast<float>(pr.X[2]);
     m.cu = static_cast<float>(u), m.cv = static_cast<float>(v);
     m.nu = static_cast<float>(nu), m.nv = static_cast<float>(nv);
@@ -246,7 +257,19 @@ std::size_t CorrespondenceLines::measure(const LineCamera &cam, const OutlineVie
     m.variance = static_cast<float>(std::max(var, shape.minVariance) * segPx * segPx);
     m.separation = static_cast<float>(sep / L);
   }
+  if (m_nHidden > 0 && static_cast<double>(m_nHidden) > m_occlusion->params().maxHiddenShare * static_cast<double>(m_n + m_nHidden)) {
+    // Too much hidden to be an occluder in front of a right pose: every line counts.
+    std::copy(m_hidden.begin(), m_hidden.begin() + static_cast<long>(m_nHidden), m_lines.begin() + static_cast<long>(m_n));
+    m_n += m_nHidden;
+    m_nHidden = 0;
+  }
   return m_n;
+}
+
+bool CorrespondenceLines::hiddenHere(const LineCamera &cam, const core::ContourPoint &q, const ModelInCamera &self, const double centre[3],
+                                     const ModelInCamera &other, double pxPerMm) const
+{
+  return m_occlusion->hidden(cam, self, centre, *m_other, other, q, pxPerMm);
 }
 
 std::size_t CorrespondenceLines::accumulate(const LineCamera &cam, const core::Phi &phi, double weight, double g[6], double H[36],
@@ -299,11 +322,12 @@ void CorrespondenceLines::collectColours(const LineCamera &cam, const OutlineVie
   double cm[3];
   cameraInModel(cam, phi, cm);
   const Selection sel = select(outlines, outlines.nearest(cm), maxLines);
+  const ModelInCamera here = modelIn(c), there = m_occlusion ? modelIn(compose(*m_other, phi)) : here;
   for (std::size_t k = 0; k < sel.count; ++k) {
     const core::ContourPoint &q = outlines.point(sel.at(k));
     Projected pr;
-    if (!projectContour(cam, c, q, pr))
-      continue;
+    if (!projectContour(cam, c, q, pr) || (m_occlusion && hiddenHere(cam, q, here, cm, there, pr.pxPerMm)))
+      continue; // an occluder's colours are neither the target's nor the background's
     const double u = pr.u, v = pr.v, nu = pr.nu, nv = pr.nv, pxPerMm = pr.pxPerMm;
     const double inLen = std::min(maxPx, q.insideMm * pxPerMm - skipPx), outLen = std::min(maxPx, q.outsideMm * pxPerMm - skipPx);
     for (double t = skipPx; t <= skipPx + inLen; t += 1.0) {

@@ -98,12 +98,33 @@ void composeCamera(const LineCamera &cam, const core::Phi &phi, double R[9], dou
 
 std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double h, InteriorSamples &s) const
 {
+  return measureVisible(cam, view, phi, h, s, nullptr, nullptr);
+}
+
+std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double h, InteriorSamples &s,
+                                  const LineCamera &other, const StereoOcclusion &occlusion) const
+{
+  return measureVisible(cam, view, phi, h, s, &other, &occlusion);
+}
+
+std::size_t InteriorTerm::measureVisible(const LineCamera &cam, std::size_t view, const core::Phi &phi, double h, InteriorSamples &s,
+                                         const LineCamera *other, const StereoOcclusion *occlusion) const
+{
   s.n = 0;
   if (view >= m_views.size())
     return 0;
   double R[9], t[3];
   core::Rot3 hRo;
   composeCamera(cam, phi, R, t, hRo);
+  ModelInCamera here{}, there{};
+  double centre[3] = {0, 0, 0};
+  if (occlusion) {
+    std::copy(R, R + 9, here.R);
+    std::copy(t, t + 3, here.t);
+    core::Rot3 unused;
+    composeCamera(*other, phi, there.R, there.t, unused);
+    cameraInModel(cam, phi, centre);
+  }
   for (std::size_t i = m_views[view].begin; i < m_views[view].end && s.n < s.samples.size(); ++i) {
     const Point &p = m_points[i];
     double Xc[3];
@@ -115,6 +136,11 @@ std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const
     double c[2], dc[2][2];
     if (!chromaAndGradient(cam, u, v, h, c, dc))
       continue;
+    if (occlusion) {
+      const double X[3] = {p.X[0], p.X[1], p.X[2]};
+      if (occlusion->pointHidden(cam, here, centre, *other, there, X))
+        continue;
+    }
     InteriorSamples::Sample &m = s.samples[s.n++];
     for (int k = 0; k < 3; ++k)
       m.X[k] = p.X[k];

@@ -40,6 +40,7 @@ void PreciseParams::validate() const
   check(interiorPoints <= 100000, "the interior points must lie in [0, 100000]");
   check(interiorSigma > 0 && interiorSigma <= 10 && interiorWeight >= 0 && interiorWeight <= 1e6,
         "the interior term's sigma must lie in (0, 10] and its weight in [0, 1e6]");
+  occlusion.validate();
   LineShape s = shape;
   s.prepare();
 }
@@ -63,6 +64,11 @@ PreciseStage::PreciseStage(const core::StereoRig &rig, const core::PhotoModel &m
       c.nearest = m_undistort[k]->nearest().data();
     }
     m_lines[k] = std::make_unique<CorrespondenceLines>(m_params.lines, m_params.shape.segments(), maxScale);
+  }
+  if (m_params.occlusion.enabled) {
+    m_occlusion = std::make_unique<StereoOcclusion>(model, m_params.occlusion);
+    for (std::size_t k = 0; k < 2; ++k)
+      m_lines[k]->setOcclusion(m_occlusion.get(), &m_cams[1 - k]);
   }
   if (m_params.interiorPoints > 0 && m_params.interiorWeight > 0 && model.hasColours)
   {
@@ -90,7 +96,7 @@ void PreciseStage::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> 
   m_hasImages = true;
 }
 
-PreciseResult PreciseStage::refine(const core::Phi &start, bool near)
+PreciseResult PreciseStage::refine(const core::Phi &start, bool near, bool lookForHidden)
 {
   if (!m_hasImages)
     throw core::Error("precise stage: refine() before setImages()");
@@ -101,6 +107,9 @@ PreciseResult PreciseStage::refine(const core::Phi &start, bool near)
   if (!m_colours.ready()) // nothing to tell target from background with yet
     return res;
   const PreciseParams &p = m_params;
+  const StereoOcclusion *occlusion = lookForHidden ? m_occlusion.get() : nullptr;
+  for (std::size_t k = 0; k < 2; ++k)
+    m_lines[k]->setOcclusion(occlusion, &m_cams[1 - k]);
   core::Phi phi = start;
   std::size_t n[2] = {0, 0};
   const std::vector<int> &scales = near ? p.nearScales : p.scales;
@@ -122,7 +131,7 @@ PreciseResult PreciseStage::refine(const core::Phi &start, bool near)
       double g[2][6] = {{0}}, H[2][36] = {{0}};
       core::BatchPool::shared().run(2, [&](std::size_t k) {
         m_lines[k]->accumulate(m_cams[k], phi, weight, g[k], H[k], nullptr);
-        if (interior && m_interior->measure(m_cams[k], m_lines[k]->viewpoint(), phi, scale, m_samples[k]) > 0)
+        if (interior && measureInterior(k, phi, scale, occlusion) > 0)
           InteriorTerm::accumulate(m_cams[k], phi, m_samples[k], p.interiorSigma, p.interiorWeight, g[k], H[k], nullptr);
       });
       Eigen::Matrix<double, 6, 6> A;
@@ -159,6 +168,7 @@ PreciseResult PreciseStage::refine(const core::Phi &start, bool near)
     res.information[static_cast<std::size_t>(k)] = H[0][k] + H[1][k];
   const std::size_t total = n[0] + n[1];
   res.lines = {n[0], n[1]};
+  res.hiddenLines = {m_lines[0]->hiddenCount(), m_lines[1]->hiddenCount()};
   res.residualPx = total ? std::sqrt((r2[0] + r2[1]) / static_cast<double>(total)) : 0.0;
   res.separation = total ? sep / static_cast<double>(total) : 0.0;
   for (std::size_t k = 0; k < 2; ++k)
@@ -175,6 +185,8 @@ double PreciseStage::objective(const core::Phi &phi)
   if (!phi.isValid())
     throw core::Error("precise stage: an invalid pose " + phi.toString());
   const int scale = m_params.scales.back();
+  for (std::size_t k = 0; k < 2; ++k)
+    m_lines[k]->setOcclusion(m_occlusion.get(), &m_cams[1 - k]);
   double sum = 0;
   std::size_t n = 0;
   for (std::size_t k = 0; k < 2; ++k) {
@@ -193,7 +205,7 @@ double PreciseStage::objective(const core::Phi &phi)
     double r2 = 0, g[6] = {0}, H[36] = {0};
     std::size_t used = 0;
     for (std::size_t k = 0; k < 2; ++k)
-      if (m_interior->measure(m_cams[k], m_lines[k]->viewpoint(), phi, scale, m_samples[k]) > 0)
+      if (measureInterior(k, phi, scale, m_occlusion.get()) > 0)
         used += InteriorTerm::accumulate(m_cams[k], phi, m_samples[k], m_params.interiorSigma, 1.0, g, H, &r2);
     if (used > 0)
       value += m_params.interiorWeight * r2 / (m_params.interiorSigma * m_params.interiorSigma) / static_cast<double>(used);
@@ -201,10 +213,19 @@ double PreciseStage::objective(const core::Phi &phi)
   return value;
 }
 
-void PreciseStage::learnColours(const core::Phi &phi)
+std::size_t PreciseStage::measureInterior(std::size_t k, const core::Phi &phi, int scale, const StereoOcclusion *occlusion)
+{
+  if (occlusion)
+    return m_interior->measure(m_cams[k], m_lines[k]->viewpoint(), phi, scale, m_samples[k], m_cams[1 - k], *occlusion);
+  return m_interior->measure(m_cams[k], m_lines[k]->viewpoint(), phi, scale, m_samples[k]);
+}
+
+void PreciseStage::learnColours(const core::Phi &phi, bool lookForHidden)
 {
   if (!m_hasImages || !phi.isValid())
     return;
+  for (std::size_t k = 0; k < 2; ++k)
+    m_lines[k]->setOcclusion(lookForHidden ? m_occlusion.get() : nullptr, &m_cams[1 - k]);
   for (std::size_t k = 0; k < 2; ++k)
     m_lines[k]->collectColours(m_cams[k], m_outlines, phi, m_colours, m_params.lines, m_params.histogramSkipPx, m_params.histogramMaxPx);
   m_colours.update(m_params.learningRate, m_params.learningRate);

@@ -125,6 +125,18 @@ void drawLabel(vpImage<vpRGBa> &I, const std::string &text, int row, int col, co
   font.drawText(I, text, vpImagePoint(row, col), vpColor(color.R, color.G, color.B));
 }
 
+void drawCorrespondenceLines(vpImage<vpRGBa> &I, const precise::CorrespondenceLines &lines)
+{
+  auto stroke = [&I](const precise::LineMeasure &m, double along, double half, const vpColor &c) {
+    const double u = m.cu + along * m.nu, v = m.cv + along * m.nv;
+    vpImageDraw::drawLine(I, vpImagePoint(v - half * m.nv, u - half * m.nu), vpImagePoint(v + half * m.nv, u + half * m.nu), c, 2);
+  };
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    stroke(lines.line(i), lines.line(i).mean, 4, vpColor::cyan);
+  for (std::size_t i = 0; i < lines.hiddenCount(); ++i)
+    stroke(lines.hiddenLine(i), 0, 10, vpColor(255, 0, 255));
+}
+
 vpImage<vpRGBa> sideBySide(const vpImage<vpRGBa> &a, const vpImage<vpRGBa> &b)
 {
   vpImage<vpRGBa> I(std::max(a.getHeight(), b.getHeight()), a.getWidth() + b.getWidth(), vpRGBa(0, 0, 0));

@@ -1,5 +1,7 @@
 #include "pm/tracker/PreciseRefinement.h"
 
+#include <algorithm>
+
 #include "pm/core/Error.h"
 
 namespace pm::tracker {
@@ -9,14 +11,25 @@ void PreciseRefinementParams::validate() const
   stage.validate();
   if (!(maxDropQ >= 0) || !(restartMm > 0) || !(restartDeg > 0) || !(maxMoveMm > 0) || !(maxMoveDeg > 0))
     throw core::Error("tracker: the precise stage's fitness drop must be non-negative and its restart and move distances positive");
+  if (!(lookForHiddenBelow >= 0 && lookForHiddenBelow <= 1))
+    throw core::Error("tracker: the precise stage's visible share to look for hidden lines below must lie in [0, 1]");
 }
 
 PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
                                      const core::StereoFitness &fitness, const QualityScale &scale)
     : m_p(params), m_fitness(fitness), m_scale(scale)
 {
-  if (params.enabled && model.hasContours())
-    m_stage = std::make_unique<precise::PreciseStage>(rig, model, params.stage);
+  if (!params.enabled || !model.hasContours())
+    return;
+  // One rule for what the rig sees of an occluder: the fitness's stereo visibility (on or off, its
+  // background tolerance, saturation and largest hidden share) decides the lines' too.
+  precise::PreciseParams stage = params.stage;
+  const core::FitnessParams &f = fitness.params();
+  stage.occlusion.enabled = f.stereoVisibility;
+  stage.occlusion.maxHiddenShare = f.maxHiddenShare;
+  stage.occlusion.backgroundTolDeg = f.inBgTolDeg;
+  stage.occlusion.minSaturation = f.minSaturation;
+  m_stage = std::make_unique<precise::PreciseStage>(rig, model, stage);
 }
 
 bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
@@ -29,6 +42,12 @@ bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const vp
     F = m_fitness.evaluate(p.phi);
     return F >= minF;
   };
+  // The lines and interior points hidden by something in front are looked for only where the
+  // fitness finds part of the target hidden at the search's pose (lookForHiddenBelow): on a clear
+  // view the stage is the one it always was (and pays nothing for it).
+  const core::FitnessDetail seen = m_fitness.evaluateDetail(r.phi);
+  const bool lookForHidden = std::min(seen.countsLeft.visibleShare(), seen.countsRight.visibleShare()) < m_p.lookForHiddenBelow;
+  m_lookedForHidden = lookForHidden;
   const bool haveLast = last.state == TrackState::Tracking && last.precise && last.phi.isValid();
   const bool near = haveLast && core::translationDistanceMm(r.phi, last.phi) <= m_p.restartMm &&
                     core::rotationDistanceDeg(r.phi, last.phi) <= m_p.restartDeg;
@@ -36,14 +55,14 @@ bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const vp
   double bestF = 0;
   bool found = false;
   if (haveLast) {
-    const precise::PreciseResult fromLast = m_stage->refine(last.phi, true); // the target moves little between frames
+    const precise::PreciseResult fromLast = m_stage->refine(last.phi, true, lookForHidden); // the target moves little between frames
     r.preciseResult = fromLast;
     found = acceptable(fromLast, last.phi, bestF);
     if (found)
       best = fromLast;
   }
   if (!near || !found) {
-    const precise::PreciseResult fromSearch = m_stage->refine(r.phi);
+    const precise::PreciseResult fromSearch = m_stage->refine(r.phi, false, lookForHidden);
     double F = 0;
     if (acceptable(fromSearch, r.phi, F) && (!found || fromSearch.residualPx < best.residualPx)) {
       best = fromSearch;

@@ -31,6 +31,7 @@ template <typename V> void refinementKeys(V &v, RefinementParams &r)
          .value("max_move_deg", r.precise.maxMoveDeg)
          .value("restart_mm", r.precise.restartMm)
          .value("restart_deg", r.precise.restartDeg)
+         .value("look_for_hidden_below", r.precise.lookForHiddenBelow)
          .section("stage", [&](V &t) {
            t.value("lines", q.lines)
                .value("scales", q.scales)

@@ -38,6 +38,7 @@
 #include "pm/core/PhotoModel.h"
 #include "pm/core/Pose.h"
 #include "pm/core/StereoRig.h"
+#include "pm/core/TargetHues.h"
 #include "pm/core/UndistortMap.h"
 #include "pm/core/ViewpointIndex.h"
 
@@ -287,7 +288,6 @@ public:
 
 private:
   void check(const Phi &phi) const;
-  void buildTargetHues(); //!< m_targetHue from the views' S_in
   struct Projection projectionOf(int cam, const Phi &phi) const;
   FitnessCounts countCamera(int cam, const Phi &phi) const;
   //! F of a pose already checked, or, when its first share of points scores it under \e rejectBelow, that estimate (\e cost: the share of the work done).
@@ -331,13 +331,7 @@ private:
   ViewpointIndex m_viewpoints; //!< the view each camera scores: the one made from the nearest direction (the model's own lookup)
   std::vector<std::uint32_t> m_order; //!< m_order[k]: where the k-th point of the model's order (S_in then S_out of each view) is kept
   std::int32_t m_bgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0;
-  /*!
-    The target's own hues, per tenth of a degree (1: within kTargetHueSpanDeg of at least
-    kTargetHueShare of the model's S_in points, all views): a point that misses on one of them is
-    a wrong pose, never hidden. Padded by 4 bytes for the vector gather.
-  */
-  std::vector<std::uint8_t> m_targetHue;
-  static constexpr double kTargetHueSpanDeg = 6, kTargetHueShare = 0.005;
+  TargetHues m_targetHues; //!< a point that misses on one of the target's own hues is a wrong pose, never hidden
   std::array<HuePlane, 2> m_planes;
   std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort; //!< null for a camera without distortion
   std::array<LensDistortion, 2> m_distortion;

@@ -32,6 +32,7 @@
 #include "pm/core/Pose.h"
 #include "pm/precise/ColourHistograms.h"
 #include "pm/precise/OutlineViews.h"
+#include "pm/precise/StereoOcclusion.h"
 
 namespace pm::precise {
 
@@ -95,10 +96,21 @@ public:
   //! Buffers for up to \e maxLines lines of up to \e maxSegments segments of \e maxScale pixels.
   CorrespondenceLines(std::size_t maxLines, int maxSegments, int maxScale);
   /*!
+    Lines hidden in this camera (StereoOcclusion.h) leave the measurement: \e occlusion decides,
+    from this camera's image and \e other's (the rig's other camera as the lines see it, its image
+    read at each measure()). Both are kept by pointer and must outlive the lines; null: every line counts.
+  */
+  void setOcclusion(const StereoOcclusion *occlusion, const LineCamera *other)
+  {
+    m_occlusion = occlusion;
+    m_other = occlusion ? other : nullptr;
+  }
+  /*!
     Measures the lines of camera \e cam at pose \e phi (hMo) on its image: at most \e maxLines
     contour points of the viewpoint nearest the camera, evenly chosen; segments of \e scale pixels.
     A line is left out when its point is behind the camera, the line leaves the image, or the target
-    or the background along it is shorter than \e minContinuous segments. Returns the lines kept.
+    or the background along it is shorter than \e minContinuous segments, and when it is hidden in
+    this camera (setOcclusion(); then kept apart: hiddenCount(), hiddenLine()). Returns the lines kept.
   */
   std::size_t measure(const LineCamera &cam, const OutlineViews &outlines, const core::Phi &phi, const LineShape &shape,
                       const ColourHistograms &colours, int scale, std::size_t maxLines, double minContinuous);
@@ -112,19 +124,27 @@ public:
                          double *residual2) const;
   /*!
     Adds the colours of camera \e cam at pose \e phi to \e colours' counts: along each contour point's
-    normal, from \e skipPx to at most \e maxPx pixels inside (target) and outside (background).
+    normal, from \e skipPx to at most \e maxPx pixels inside (target) and outside (background); not
+    along the lines hidden in this camera (setOcclusion()).
   */
   void collectColours(const LineCamera &cam, const OutlineViews &outlines, const core::Phi &phi, ColourHistograms &colours,
                       std::size_t maxLines, double skipPx, double maxPx) const;
   std::size_t size() const { return m_n; }                          //!< lines kept by the last measure()
   const LineMeasure &line(std::size_t i) const { return m_lines[i]; } //!< line \e i of the last measure()
+  std::size_t hiddenCount() const { return m_nHidden; }            //!< lines the last measure() found hidden and left out
+  const LineMeasure &hiddenLine(std::size_t i) const { return m_hidden[i]; } //!< hidden line \e i of the last measure() (its outline as measured)
   //! The viewpoint the last measure() used.
   std::size_t viewpoint() const { return m_view; }
 
 private:
-  std::vector<LineMeasure> m_lines;
+  //! Whether contour point \e q (\e pxPerMm at its depth) is hidden in camera \e cam (the model at \e self, its centre at \e centre) and seen by m_other (at \e other).
+  bool hiddenHere(const LineCamera &cam, const core::ContourPoint &q, const ModelInCamera &self, const double centre[3], const ModelInCamera &other,
+                  double pxPerMm) const;
+  std::vector<LineMeasure> m_lines, m_hidden;
   std::vector<float> m_segF, m_segB, m_dist;
-  std::size_t m_n = 0, m_view = 0;
+  std::size_t m_n = 0, m_nHidden = 0, m_view = 0;
+  const StereoOcclusion *m_occlusion = nullptr;
+  const LineCamera *m_other = nullptr;
   int m_maxSegments, m_maxScale;
 };
 

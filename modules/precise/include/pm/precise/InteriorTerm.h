@@ -21,6 +21,7 @@
 #include "pm/core/PhotoModel.h"
 #include "pm/core/Pose.h"
 #include "pm/precise/CorrespondenceLines.h"
+#include "pm/precise/StereoOcclusion.h"
 
 namespace pm::precise {
 
@@ -83,6 +84,12 @@ public:
   */
   std::size_t measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double stepPx, InteriorSamples &s) const;
   /*!
+    measure(), leaving out the points hidden in \e cam and seen by \e other (the rig's other camera),
+    by \e occlusion's rule (StereoOcclusion.h).
+  */
+  std::size_t measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double stepPx, InteriorSamples &s, const LineCamera &other,
+                      const StereoOcclusion &occlusion) const;
+  /*!
     Adds \e weight times the term's gradient (of the log-likelihood, 6, twist) to \e g and its
     Gauss-Newton information to \e H, for camera \e cam at pose \e phi from its measured samples
     \e s (the image's chromaticity linearised about each sample's measured place); \e sigma is the
@@ -101,6 +108,9 @@ public:
   std::size_t views() const { return m_views.size(); } //!< viewpoints
 
 private:
+  //! measure(), leaving out what \e occlusion finds hidden when given.
+  std::size_t measureVisible(const LineCamera &cam, std::size_t view, const core::Phi &phi, double stepPx, InteriorSamples &s, const LineCamera *other,
+                             const StereoOcclusion *occlusion) const;
   struct View
   {
     std::size_t begin, end;

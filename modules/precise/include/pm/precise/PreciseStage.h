@@ -35,6 +35,7 @@
 #include "pm/precise/CorrespondenceLines.h"
 #include "pm/precise/InteriorTerm.h"
 #include "pm/precise/OutlineViews.h"
+#include "pm/precise/StereoOcclusion.h"
 
 namespace pm::precise {
 
@@ -61,6 +62,7 @@ struct PreciseParams
   std::size_t interiorPoints = 200;      //!< the interior term's points per camera (InteriorTerm.h; 0: off, the outline alone)
   double interiorSigma = 0.05;           //!< the chromaticity's noise the interior term assumes
   double interiorWeight = 1.0;           //!< the interior term's weight beside the outline's
+  StereoOcclusionParams occlusion;       //!< the lines hidden in one camera and seen by the other leave the stage (StereoOcclusion.h)
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
@@ -72,6 +74,7 @@ struct PreciseResult
   core::Phi phi;                     //!< the refined pose (the start when !ok)
   bool ok = false;             //!< enough lines were measured in the last iteration
   std::array<std::size_t, 2> lines{}; //!< lines measured in each camera at the finest scale
+  std::array<std::size_t, 2> hiddenLines{}; //!< lines found hidden in each camera at the finest scale and left out (StereoOcclusion.h)
   /*!
     The Gauss-Newton information of the finest scale's lines at phi: sum over lines of J^T J /
     variance, J the line position's derivative (px) with respect to the twist (mm, then rad; hand
@@ -111,6 +114,8 @@ class PreciseStage
 public:
   //! Throws pm::core::Error for an invalid rig or parameters, or a model without outlines.
   PreciseStage(const core::StereoRig &rig, const core::PhotoModel &model, const PreciseParams &params = PreciseParams());
+  PreciseStage(const PreciseStage &) = delete;            //!< its lines keep pointers to its cameras
+  PreciseStage &operator=(const PreciseStage &) = delete; //!< its lines keep pointers to its cameras
   /*!
     The frame's images (raw, as the cameras gave them): kept by pointer, they must live until the
     last refine() or learnColours() on them. Throws pm::core::Error if a size is not its camera's.
@@ -118,10 +123,12 @@ public:
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   /*!
     Refines \e start on the images (see PreciseStage.h): with every scale, or, \e near (a start known
-    to lie within a few pixels, e.g. the last frame's pose while tracking), with nearScales only.
-    Throws pm::core::Error for no images or an invalid start.
+    to lie within a few pixels, e.g. the last frame's pose while tracking), with nearScales only;
+    \e lookForHidden false: every line and interior point counts this time, even with
+    PreciseParams::occlusion on (the tracker looks only where the fitness found part of the target
+    hidden). Throws pm::core::Error for no images or an invalid start.
   */
-  PreciseResult refine(const core::Phi &start, bool near = false);
+  PreciseResult refine(const core::Phi &start, bool near = false, bool lookForHidden = true);
   /*!
     The stage's objective at \e phi, what its steps drive down: the lines measured at \e phi at the
     finest scale, the mean of (offset / its standard deviation)^2 of the outline each finds from the
@@ -132,9 +139,10 @@ public:
   double objective(const core::Phi &phi);
   /*!
     Blends this frame's colours along the outline at \e phi into the histograms (learningRate; the
-    whole of them when the model gave none and none were learnt yet).
+    whole of them when the model gave none and none were learnt yet); along the lines not hidden
+    (PreciseParams::occlusion), unless \e lookForHidden is false (refine()'s).
   */
-  void learnColours(const core::Phi &phi);
+  void learnColours(const core::Phi &phi, bool lookForHidden = true);
   //! Back to the model's colour histograms (or none).
   void resetColours();
   const ColourHistograms &colours() const { return m_colours; }                    //!< the colour statistics
@@ -144,11 +152,14 @@ public:
   const PreciseParams &params() const { return m_params; }                          //!< the parameters
 
 private:
+  //! Camera \e k's interior samples at \e phi (its lines' viewpoint), without those \e occlusion finds hidden (null: all).
+  std::size_t measureInterior(std::size_t k, const core::Phi &phi, int scale, const StereoOcclusion *occlusion);
   PreciseParams m_params;
   OutlineViews m_outlines;
   std::array<LineCamera, 2> m_cams;
   std::array<std::shared_ptr<const core::UndistortMap>, 2> m_undistort;
   std::array<std::unique_ptr<CorrespondenceLines>, 2> m_lines;
+  std::unique_ptr<StereoOcclusion> m_occlusion; //!< null: every line counts
   std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
   std::array<InteriorSamples, 2> m_samples;  //!< each camera's interior samples of the last measurement
   ColourHistograms m_colours;

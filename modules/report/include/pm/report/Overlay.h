@@ -5,8 +5,8 @@
   alone (S_in in its hues, S_out in white) on grey, like Fig. 4 (c), (d) of the paper.
   Also the model's points as they scored at a pose (drawPointScores), the relief a stereo model
   measured (drawDepth), and two helpers: a text label in an image and two images side by side.
-  Every function returns a new image and leaves its inputs unchanged, except drawLabel(), which
-  draws into the image it is given. Point coordinates are pixels: u the column, v the row.
+  Every function returns a new image and leaves its inputs unchanged, except drawLabel() and
+  drawCorrespondenceLines(), which draw into the image they are given. Point coordinates are pixels: u the column, v the row.
 */
 #include <string>
 
@@ -15,6 +15,7 @@
 
 #include "pm/core/PhotoModel.h"
 #include "pm/core/StereoFitness.h"
+#include "pm/precise/CorrespondenceLines.h"
 
 namespace pm::report {
 
@@ -68,6 +69,19 @@ vpImage<vpRGBa> drawDepth(const vpImage<vpRGBa> &photo, const vpImage<float> &de
   down and right; (row, col) in pixels is the position given to vpFont::drawText.
 */
 void drawLabel(vpImage<vpRGBa> &I, const std::string &text, int row, int col, const vpRGBa &color);
+/*!
+  The precise stage's correspondence lines of one camera as last measured (precise::CorrespondenceLines),
+  drawn into \e I: each kept line as a short cyan stroke along its normal through the outline it
+  found, each line found hidden (precise::StereoOcclusion) as a longer magenta stroke through its
+  centre. The lines' pixels are of the ideal (undistorted) image: on a camera with a lens, a few
+  pixels off the raw image near its edges.
+  \code
+  const pm::precise::PreciseStage &stage = *tracker.preciseStage();
+  vpImage<vpRGBa> left = IL;
+  pm::report::drawCorrespondenceLines(left, stage.lines(0));
+  \endcode
+*/
+void drawCorrespondenceLines(vpImage<vpRGBa> &I, const precise::CorrespondenceLines &lines);
 /*!
   Places \e b to the right of \e a.
   The result is as wide as both and as high as the higher; the part under the lower one is black.

@@ -38,12 +38,21 @@ namespace pm::tracker {
 struct PreciseRefinementParams
 {
   bool enabled = true;             //!< false, or a model without outlines: the chain goes on to the ascent
-  precise::PreciseParams stage;    //!< the precise stage's parameters (PreciseStage.h)
+  precise::PreciseParams stage;    //!< the precise stage's parameters (PreciseStage.h); its hidden lines follow the fitness's stereo visibility
+
   double maxDropQ = 0.02;          //!< the precise pose is kept unless q there is this much under the frame's ...
   double maxMoveMm = 12;           //!< ... and it moved less than this from its start (mm) ...
   double maxMoveDeg = 8;           //!< ... and turned less than this (deg)
   double restartMm = 8;            //!< the frame's pose farther than this from the last frame's (mm) ...
   double restartDeg = 4;           //!< ... or turned more than this (deg): the stage starts from both
+  /*!
+    The stage looks for lines and interior points hidden by something in front (precise::StereoOcclusion,
+    on with the fitness's stereo visibility) only on frames where the fitness finds less than this
+    share of the model's points visible at the search's pose: an occluder hides a few percent of them
+    or more (the strand 11 %), a clear view at most about 1 % (at wrong poses too), where looking
+    dropped lines at a wrong first lock and delayed the right one.
+  */
+  double lookForHiddenBelow = 0.95;
 
   //! Throws core::Error naming the first parameter out of range.
   void validate() const;
@@ -64,13 +73,14 @@ public:
   */
   bool refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
-  void learnColours(const core::Phi &phi) { m_stage->learnColours(phi); }
+  void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
   const precise::PreciseStage *stage() const { return m_stage.get(); } //!< the stage (its colours, its last lines); null when off
 
 private:
   PreciseRefinementParams m_p;
   const core::StereoFitness &m_fitness;
   QualityScale m_scale;
+  bool m_lookedForHidden = false; //!< the last refine() looked for hidden lines (the fitness found part of the target hidden)
   std::unique_ptr<precise::PreciseStage> m_stage;
 };
 
