@@ -332,3 +332,34 @@ TEST(StereoOcclusion, ParametersOutOfRangeAreRefusedWithAClearError)
   EXPECT_NE(refusal([](auto &o) { o.sameHueDeg = NAN; }).find("same hue"), std::string::npos);
   EXPECT_EQ(refusal([](auto &o) { o.enabled = false; }), ""); // off: every line counts
 }
+
+TEST(StillBackdrop, StandsStillInTheWorldWhileTheTargetMovesAndFartherBehindIt)
+{
+  // The backdrop drawn at oMb = hMo^-1 hMo0 (the target moved from hMo0 to hMo, the panel stayed):
+  // without the toy, the same image as the panel where it stood; and the still panel stands
+  // stillBackdropGapMm farther behind the toy than the panel it rests on.
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::SceneParams sp;
+  sp.supersampling = 1;
+  const pm::sim::Scene resting(pm::sim::makeTarget("C12"), sp);
+  sp.stillBackdrop = true;
+  const pm::sim::Scene still(pm::sim::makeTarget("C12"), sp);
+  const vpHomogeneousMatrix hMo0 = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({30, -20, 520, 0.05, 0.1, -0.03});
+  pm::sim::Rasterizer r0, r1;
+  vpImage<vpRGBa> where, moved;
+  still.render(r0, rig.left, hMo0, 7, 0, where, false);
+  still.render(r1, rig.left, hMo, 7, 0, moved, false, hMo.inverse() * hMo0);
+  EXPECT_TRUE(where == moved);
+  // With the toy: it moved, the panel did not (the same backdrop pixel far from the toy).
+  still.render(r1, rig.left, hMo, 7, 0, moved, true, hMo.inverse() * hMo0);
+  EXPECT_NEAR(r1.depthAt(20, 20, 1), r0.depthAt(20, 20, 1), 1e-6);
+  vpImage<vpRGBa> rest;
+  resting.render(r1, rig.left, hMo0, 7, 0, rest, false);
+  // Depths in m, along the camera's axis: the toed-in camera looks at the panel about 20 deg off its normal.
+  const double fartherMm = 1e3 * (r0.depthAt(320, 240, 1) - r1.depthAt(320, 240, 1));
+  EXPECT_GT(fartherMm, sp.stillBackdropGapMm - 0.5);
+  EXPECT_LT(fartherMm, sp.stillBackdropGapMm / std::cos(25 * M_PI / 180));
+  sp.stillBackdropGapMm = -1;
+  EXPECT_NE(pm::test::errorOf([&] { pm::sim::Scene s(pm::sim::makeTarget("C12"), sp); }).find("still backdrop"), std::string::npos);
+}

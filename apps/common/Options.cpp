@@ -66,6 +66,8 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p)
   app.add_flag("--occluder", p.occluder, "put a strand of seaweed in front of the target")->group(g);
   app.add_flag("--sweeping-bar", p.sweepingBar, "a violet bar 60 mm wide, 100 mm in front of the target, sweeps to and fro "
                                                 "across it at 4 mm a frame (docs/occlusion.md)")->group(g);
+  app.add_flag("--still-backdrop", p.stillBackdrop, "the backdrop stands still, 50 mm farther behind the target, while the "
+                                                    "target moves in front of it (docs/occlusion.md)")->group(g);
   app.add_option("--supersampling", p.supersampling, "samples per pixel along each axis (anti-aliasing)")
       ->check(CLI::Range(1u, 4u))->group(g);
   app.add_option("--seed", p.seed, "noise seed")->group(g);

@@ -54,7 +54,9 @@ LoopFrame ClosedLoop::step()
     next.left.resize(m_rig.left.height, m_rig.left.width, vpRGBa(0, 0, 0, 255));
     next.right.resize(m_rig.right.height, m_rig.right.width, vpRGBa(0, 0, 0, 255));
   } else if (f.fault == CameraFault::None || m_frame == 0) {
-    next = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(m_frame));
+    // A still backdrop stays where it stood at the start while the target moves.
+    const vpHomogeneousMatrix oMb = m_scene.params().stillBackdrop ? wMo.inverse() * m_tc->wMo(0) : vpHomogeneousMatrix();
+    next = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(m_frame), oMb);
   } else {
     next = m_images; // frozen: the last pair again
   }

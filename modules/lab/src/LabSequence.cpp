@@ -23,7 +23,11 @@ bool LabSequence::next(capture::StereoFrame &f)
   f.index = k;
   f.timeS = static_cast<double>(k) / m_fps;
   f.skewMs = 0;
-  sim::StereoImages im = m_scene.renderStereo(m_rig, core::toHomogeneousMatrix(m_trajectory.at(f.timeS)), static_cast<std::uint64_t>(k));
+  const vpHomogeneousMatrix hMo = core::toHomogeneousMatrix(m_trajectory.at(f.timeS));
+  // The hand stands still: a still backdrop stays where it stood at the start.
+  const vpHomogeneousMatrix oMb =
+      m_scene.params().stillBackdrop ? hMo.inverse() * core::toHomogeneousMatrix(m_trajectory.at(0)) : vpHomogeneousMatrix();
+  sim::StereoImages im = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(k), oMb);
   f.left = std::move(im.left);
   f.right = std::move(im.right);
   ++m_stats.pairs;

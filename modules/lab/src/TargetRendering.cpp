@@ -118,6 +118,7 @@ double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTa
                                {"exposure", sp.exposure},
                                {"occluder", sp.occluder},
                                {"sweeping_bar", sp.sweepingBar},
+                               {"still_backdrop", sp.stillBackdrop},
                                {"render_stereo_ms_mean", meanMs},
                                {"targets", list}};
   io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");

@@ -14,6 +14,19 @@
 
 namespace pm::sim {
 
+namespace {
+//! Whether \e M is exactly the identity (a backdrop where it rests).
+bool isIdentity(const vpHomogeneousMatrix &M)
+{
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 4; ++c)
+      if (M[r][c] != (r == c ? 1.0 : 0.0))
+        return false;
+  return true;
+}
+} // namespace
+
+
 void SceneParams::validate() const
 {
   auto check = [](bool ok, const char *what) {
@@ -31,6 +44,7 @@ void SceneParams::validate() const
   check(occluderSizeMm[0] > 0 && occluderSizeMm[1] > 0, "occluder size must be positive");
   check(barWidthMm > 0 && barTravelMm > 0 && barMmPerFrame > 0 && barDepthMm < 0,
         "sweeping bar: width, travel and speed must be positive, its depth negative (in front of the toy)");
+  check(stillBackdropGapMm >= 0 && stillBackdropGapMm <= 500, "still backdrop: its gap must lie in [0, 500] mm");
   check(shadows == ShadowMode::Auto || shadows == ShadowMode::Off || shadows == ShadowMode::On,
         "shadow mode must be Auto, Off or On");
   check(std::isfinite(sceneLightDir[0] + sceneLightDir[1] + sceneLightDir[2]) && sceneLightDir[2] < 0,
@@ -145,7 +159,7 @@ Scene::Scene(const TargetShape &target, const SceneParams &params)
   m_params.validate();
   m_toy = buildTargetMesh(m_target, m_params.meshStepMm, static_cast<float>(m_params.specular));
   m_backdrop = makeBackdropMesh(makeSeaBottomTexture(m_params.seaBottom), m_params.seaBottom,
-                                m_params.backdropGapMm);
+                                m_params.backdropGapMm + (m_params.stillBackdrop ? m_params.stillBackdropGapMm : 0.0));
   // The occluder: a strand of seaweed, a flat olive-green quad with a little texture.
   const double *c = m_params.occluderCentreMm;
   m_occluder = makeFlatQuad(c[0], c[1], c[2], m_params.occluderSizeMm[0], m_params.occluderSizeMm[1], 60, 120, 40);
@@ -194,10 +208,10 @@ void Scene::setDistractor(const TargetShape &shape)
 }
 
 void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
-                   unsigned stream, vpImage<vpRGBa> &out, bool withTarget) const
+                   unsigned stream, vpImage<vpRGBa> &out, bool withTarget, const vpHomogeneousMatrix &oMb) const
 {
   if (camera.distortion.isNone()) {
-    renderIdeal(raster, camera, hMo, frame, stream, out, withTarget, m_params.noiseSigma);
+    renderIdeal(raster, camera, hMo, frame, stream, out, withTarget, m_params.noiseSigma, oMb);
     return;
   }
   const std::shared_ptr<const LensWarp> warp = m_lensCache->get(camera);
@@ -207,7 +221,7 @@ void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const 
   ideal.height = warp->canvasH;
   ideal.distortion = core::LensDistortion();
   vpImage<vpRGBa> canvas;
-  renderIdeal(raster, ideal, hMo, frame, stream, canvas, withTarget, 0.0);
+  renderIdeal(raster, ideal, hMo, frame, stream, canvas, withTarget, 0.0, oMb);
   out.resize(camera.height, camera.width);
   const cv::Mat src(static_cast<int>(canvas.getHeight()), static_cast<int>(canvas.getWidth()), CV_8UC4, canvas.bitmap);
   cv::Mat dst(static_cast<int>(camera.height), static_cast<int>(camera.width), CV_8UC4, out.bitmap);
@@ -216,7 +230,7 @@ void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const 
 }
 
 void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
-                        unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const
+                        unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma, const vpHomogeneousMatrix &oMb) const
 {
   if (raster.width() != camera.width || raster.height() != camera.height || raster.supersampling() != m_params.supersampling)
     raster.reset(camera.width, camera.height, m_params.supersampling);
@@ -274,13 +288,20 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
     look.shadow = nullptr; // the toy's shadow map does not hold it
     add(m_distractor, cMo * core::toHomogeneousMatrix(core::Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), look, 4);
   }
-  add(m_backdrop, cMo, light, 1);
+  if (!m_params.stillBackdrop && isIdentity(oMb)) {
+    add(m_backdrop, cMo, light, 1);
+  } else {
+    Lighting still = light;
+    still.shadow = nullptr; // the toy's shadow map is of the panel it rests on: none on a still one, at rest or not
+    add(m_backdrop, cMo * oMb, still, 1);
+  }
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
   const float tank[3] = {0.04f, 0.06f, 0.09f}; // the dark tank beyond the panel
   raster.render(tank, calls, n, camera.cam, out, m_params.exposure, noiseSigma, noiseSeed);
 }
 
-StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const
+StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                                 const vpHomogeneousMatrix &oMb) const
 {
   StereoImages im;
   const core::PinholeCamera *cams[2] = {&rig.left, &rig.right};
@@ -296,7 +317,7 @@ StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneous
       // Render_StereoPair: 43.3 -> 40.7 ms in one measurement, within the spread between runs).
       // clear() sets every sample, so the images are the same.
       thread_local Rasterizer raster;
-      render(raster, *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i]);
+      render(raster, *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i], true, oMb);
     } catch (...) {
       error[i] = std::current_exception();
     }

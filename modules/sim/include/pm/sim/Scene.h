@@ -60,6 +60,16 @@ struct SceneParams
   double barWidthMm = 60;     //!< its width (mm)
   double barTravelMm = 500;   //!< the span it sweeps, centred on the target (mm)
   double barMmPerFrame = 4;   //!< its speed (mm a frame: 120 mm/s at 30 frames a second)
+  /*!
+    A backdrop that stands still in the world while the target moves in front of it: the panel
+    stands stillBackdropGapMm farther behind the toy's base (the pass and the photos see both at
+    rest), and the scenarios (lab::ClosedLoop, lab::LabSequence) give render() its pose in the
+    target frame each frame, so that the background slides behind the target's outline as the
+    target and the hand move (the toy casts no shadow on it). Off: the toy rests on its panel,
+    which moves with it.
+  */
+  bool stillBackdrop = false;
+  double stillBackdropGapMm = 50; //!< how much farther behind the toy's base the still panel stands (mm)
   std::uint64_t seed = 1;                   //!< noise seed
   /*!
     On: the scene light (sceneLightDir, fixed in the target frame) replaces the hand light and
@@ -127,12 +137,15 @@ public:
     computed once per camera and kept), then the sensor noise is added. \e withTarget false: the
     backdrop alone (no toy, no shadow of it). Afterwards \e raster's coverage() and depthAt() tell the
     objects apart by id (1 backdrop, 2 toy, 3 occluder, 4 look-alike); for a distorted camera they
-    hold the larger ideal canvas, not \e out. Throws pm::core::Error (see Rasterizer::render()).
+    hold the larger ideal canvas, not \e out. \e oMb: the backdrop's pose in the target frame (the
+    identity: where it rests behind the toy; SceneParams::stillBackdrop), the toy's shadow left off
+    it when it is elsewhere or still. Throws pm::core::Error (see Rasterizer::render()).
   */
   void render(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
-              unsigned stream, vpImage<vpRGBa> &out, bool withTarget = true) const;
-  //! Both views of the rig for the target at \e hMo (rendered in parallel, streams 0 and 1 of \e frame).
-  StereoImages renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame) const;
+              unsigned stream, vpImage<vpRGBa> &out, bool withTarget = true, const vpHomogeneousMatrix &oMb = vpHomogeneousMatrix()) const;
+  //! Both views of the rig for the target at \e hMo (rendered in parallel, streams 0 and 1 of \e frame), the backdrop at \e oMb (render()).
+  StereoImages renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                            const vpHomogeneousMatrix &oMb = vpHomogeneousMatrix()) const;
   /*!
     The two photos of the paper's Fig. 4, taken by one camera (the \e cam intrinsics, w x h)
     looking straight at the target from \e distanceMm: (a) the backdrop alone, (b) with the toy.
@@ -180,7 +193,7 @@ private:
   struct LensCache;
   std::shared_ptr<LensCache> m_lensCache; // the distorted cameras' resampling maps, shared by copies
   void renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
-                   unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma) const;
+                   unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma, const vpHomogeneousMatrix &oMb) const;
 };
 
 } // namespace pm::sim
