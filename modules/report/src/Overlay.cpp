@@ -129,6 +129,10 @@ void drawCorrespondenceLines(vpImage<vpRGBa> &I, const precise::CorrespondenceLi
 {
   auto stroke = [&I](const precise::LineMeasure &m, double along, double half, const vpColor &c) {
     const double u = m.cu + along * m.nu, v = m.cv + along * m.nv;
+    const double w = I.getWidth() - 2.0, h = I.getHeight() - 2.0;
+    for (const double k : {-half, half})
+      if (!(u + k * m.nu >= 1 && u + k * m.nu <= w && v + k * m.nv >= 1 && v + k * m.nv <= h))
+        return; // a stroke off the image's edge is not drawn
     vpImageDraw::drawLine(I, vpImagePoint(v - half * m.nv, u - half * m.nu), vpImagePoint(v + half * m.nv, u + half * m.nu), c, 2);
   };
   for (std::size_t i = 0; i < lines.size(); ++i)
