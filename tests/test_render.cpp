@@ -13,6 +13,7 @@
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/sim/Rasterizer.h"
+#include "pm/sim/Clutter.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SeaBottom.h"
 #include "pm/sim/TargetCatalog.h"
@@ -442,6 +443,76 @@ TEST(Scene, OccluderHidesPartOfTheTarget)
   const auto hidden = pixelsOf(r, 2).size();
   EXPECT_GT(pixelsOf(r, 3).size(), 2000u);
   EXPECT_LT(static_cast<double>(hidden), 0.95 * static_cast<double>(open));
+}
+
+TEST(Clutter, ThreeOtherToysOneOfTheNearestHueAroundTheTargetClearOfIt)
+{
+  for (const char *code : {"C12", "R2", "C05"}) {
+    const pm::sim::TargetShape target = pm::sim::makeTarget(code, 1.0);
+    const double hue = pm::sim::meanHueDeg(target);
+    const std::vector<pm::sim::ClutterToy> toys = pm::sim::clutterAround(target);
+    ASSERT_EQ(toys.size(), 3u) << code;
+    auto gap = [&](const std::string &c) {
+      const double d = std::fabs(pm::sim::meanHueDeg(pm::sim::makeTarget(c, 1.0)) - hue);
+      return std::min(d, 360 - d);
+    };
+    EXPECT_TRUE(toys[0].similarHue);
+    for (const pm::sim::TargetInfo &t : pm::sim::targetCatalog()) { // the nearest creature in hue
+      if (t.code != code) {
+        EXPECT_LE(gap(toys[0].code), gap(t.code)) << code << " " << t.code;
+      }
+    }
+    EXPECT_LT(gap(toys[0].code), 15.0) << code;
+    for (std::size_t i = 0; i < 3; ++i) {
+      EXPECT_NE(toys[i].code, code);
+      for (std::size_t j = i + 1; j < 3; ++j)
+        EXPECT_NE(toys[i].code, toys[j].code);
+      if (i > 0) {
+        EXPECT_FALSE(toys[i].similarHue);
+        EXPECT_GT(gap(toys[i].code), 60.0) << code << " " << toys[i].code;
+      }
+      // Clear of the target's nominal outline: beyond its half-extent on one axis.
+      EXPECT_TRUE(std::fabs(toys[i].poseMm[0]) > target.info.widthMm / 2 + 25 ||
+                  std::fabs(toys[i].poseMm[1]) > target.info.heightMm / 2 + 25) << code << " " << toys[i].code;
+    }
+  }
+}
+
+TEST(Scene, ClutterStandsBesideTheTargetAndMovesWithTheBackdrop)
+{
+  const pm::core::StereoRig rig = labRig();
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  const pm::sim::TargetShape shape = pm::sim::makeTarget("C12", 0.5);
+  pm::sim::SceneParams p;
+  pm::sim::Rasterizer r;
+  vpImage<vpRGBa> I;
+  std::size_t alone[2];
+  for (unsigned k = 0; k < 2; ++k) {
+    pm::sim::Scene(shape, p).render(r, k == 0 ? rig.left : rig.right, hMo, 0, k, I);
+    alone[k] = pixelsOf(r, 2).size();
+    EXPECT_TRUE(pixelsOf(r, 4).empty());
+  }
+  p.clutter = true;
+  p.stillBackdrop = true;
+  const pm::sim::Scene scene(shape, p);
+  auto meanU = [](const std::vector<std::pair<unsigned, unsigned>> &px) {
+    double s = 0;
+    for (const auto &q : px)
+      s += q.first;
+    return s / static_cast<double>(px.size());
+  };
+  for (unsigned k = 0; k < 2; ++k) {
+    const pm::core::PinholeCamera *cam = k == 0 ? &rig.left : &rig.right;
+    scene.render(r, *cam, hMo, 0, k, I);
+    const auto toy = pixelsOf(r, 2), others = pixelsOf(r, 4);
+    EXPECT_GT(others.size(), 5000u);                                // the clutter is in view ...
+    EXPECT_EQ(toy.size(), alone[k]);                                // ... and hides nothing of the toy
+    // The target moved 30 mm to the left in front of the still backdrop: the clutter stays with the backdrop.
+    const vpHomogeneousMatrix moved = hMo * vpHomogeneousMatrix(-0.03, 0, 0, 0, 0, 0);
+    scene.render(r, *cam, moved, 0, k, I, true, vpHomogeneousMatrix(0.03, 0, 0, 0, 0, 0));
+    EXPECT_NEAR(meanU(pixelsOf(r, 4)), meanU(others), 2.0);
+    EXPECT_LT(meanU(pixelsOf(r, 2)), meanU(toy) - 30);
+  }
 }
 
 TEST(Scene, AStereoPairIsTheSameWhateverWasRenderedBefore)

@@ -68,6 +68,8 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p)
                                                 "across it at 4 mm a frame (docs/occlusion.md)")->group(g);
   app.add_flag("--still-backdrop", p.stillBackdrop, "the backdrop stands still, 50 mm farther behind the target, while the "
                                                     "target moves in front of it (docs/occlusion.md)")->group(g);
+  app.add_flag("--clutter", p.clutter, "three other toys of the catalogue stand around the target, one of similar hue "
+                                       "(docs/occlusion.md)")->group(g);
   app.add_option("--supersampling", p.supersampling, "samples per pixel along each axis (anti-aliasing)")
       ->check(CLI::Range(1u, 4u))->group(g);
   app.add_option("--seed", p.seed, "noise seed")->group(g);

@@ -14,6 +14,7 @@ LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const 
   scene.params().distractor = false; // the target alone, as a user would make the pass
   scene.params().occluder = false;
   scene.params().sweepingBar = false;
+  scene.params().clutter = false;
   model::PassPlan plan = inPlan;
   plan.distanceMm = 1e3 * h0Mo[2][3];
   LabPass out;

@@ -119,6 +119,7 @@ double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTa
                                {"occluder", sp.occluder},
                                {"sweeping_bar", sp.sweepingBar},
                                {"still_backdrop", sp.stillBackdrop},
+                               {"clutter", sp.clutter},
                                {"render_stereo_ms_mean", meanMs},
                                {"targets", list}};
   io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");

@@ -9,6 +9,7 @@
 #include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 #include "pm/core/Pose.h"
+#include "pm/sim/Clutter.h"
 #include "pm/sim/Noise.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -165,6 +166,14 @@ Scene::Scene(const TargetShape &target, const SceneParams &params)
   m_occluder = makeFlatQuad(c[0], c[1], c[2], m_params.occluderSizeMm[0], m_params.occluderSizeMm[1], 60, 120, 40);
   // The sweeping bar: a violet quad centred on the target's z axis, moved along x at each render.
   m_bar = makeFlatQuad(0, 0, m_params.barDepthMm, m_params.barWidthMm, 300, 120, 50, 140);
+  // The clutter stands where the target's base rests: on the panel, or on the still panel farther back.
+  if (m_params.clutter)
+    for (const ClutterToy &t : clutterAround(m_target)) {
+      const double *p = t.poseMm;
+      const double z = p[2] + (m_params.stillBackdrop ? m_params.stillBackdropGapMm : 0.0);
+      m_clutter.push_back({buildTargetMesh(makeTarget(t.code), m_params.meshStepMm, static_cast<float>(m_params.specular)),
+                           core::toHomogeneousMatrix(core::Phi{p[0], p[1], z, p[3], p[4], p[5]})});
+    }
 }
 
 Mesh Scene::makeFlatQuad(double xMm, double yMm, double zMm, double widthMm, double heightMm, int r, int g, int b)
@@ -264,7 +273,7 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
     toyLight.specular = m_params.sceneSpecular;
     toyLight.shininess = m_params.sceneShininess;
   }
-  Rasterizer::DrawCall calls[5];
+  Rasterizer::DrawCall calls[8];
   std::size_t n = 0;
   auto add = [&](const Mesh &mesh, const vpHomogeneousMatrix &M, const Lighting &l, std::uint8_t id) {
     calls[n].mesh = &mesh;
@@ -288,6 +297,12 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
     look.shadow = nullptr; // the toy's shadow map does not hold it
     add(m_distractor, cMo * core::toHomogeneousMatrix(core::Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), look, 4);
   }
+  if (m_params.clutter)
+    for (const ClutterMesh &c : m_clutter) {
+      Lighting look = toyLight;
+      look.shadow = nullptr; // the toy's shadow map does not hold them
+      add(c.mesh, cMo * oMb * c.oMn, look, 4);
+    }
   if (!m_params.stillBackdrop && isIdentity(oMb)) {
     add(m_backdrop, cMo, light, 1);
   } else {

@@ -10,13 +10,14 @@
 namespace pm::sim {
 
 namespace {
-//! The scene the model's photos are taken in: the target alone, without a look-alike beside it or anything in front of it.
+//! The scene the model's photos are taken in: the target alone, without a look-alike or clutter beside it or anything in front of it.
 Scene alone(const Scene &scene)
 {
   Scene s = scene;
   s.params().distractor = false;
   s.params().occluder = false;
   s.params().sweepingBar = false;
+  s.params().clutter = false;
   return s;
 }
 } // namespace

@@ -14,6 +14,7 @@
 */
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
@@ -89,6 +90,13 @@ struct SceneParams
   */
   bool distractor = false;
   double distractorPose[6] = {-190, 0, 0, 0, 0, 0}; //!< the look-alike's pose in the target frame (x, y, z mm, eps1..3)
+  /*!
+    Clutter: three other toys of the catalogue around the target (sim::clutterAround(): one of
+    similar hue, a green and a blue one), standing on the backdrop and moving with it (still with a
+    still backdrop), lit like the toy. Their meshes are built by the constructor when this is on
+    (turning it on afterwards draws nothing).
+  */
+  bool clutter = false;
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
@@ -124,7 +132,7 @@ class Scene
 public:
   /*!
     Builds the meshes of the toy (every params.meshStepMm), of the backdrop (params.backdropGapMm
-    behind the toy's base) and of the occluder. Throws pm::core::Error for a parameter out of range or a
+    behind the toy's base), of the occluder and of the clutter (when params.clutter is on). Throws pm::core::Error for a parameter out of range or a
     target whose grids do not match.
   */
   Scene(const TargetShape &target, const SceneParams &params = SceneParams());
@@ -136,7 +144,7 @@ public:
     enough to hold the whole raw one, resampled into the raw image (bilinear, through a map
     computed once per camera and kept), then the sensor noise is added. \e withTarget false: the
     backdrop alone (no toy, no shadow of it). Afterwards \e raster's coverage() and depthAt() tell the
-    objects apart by id (1 backdrop, 2 toy, 3 occluder, 4 look-alike); for a distorted camera they
+    objects apart by id (1 backdrop, 2 toy, 3 occluder, 4 look-alike or clutter); for a distorted camera they
     hold the larger ideal canvas, not \e out. \e oMb: the backdrop's pose in the target frame (the
     identity: where it rests behind the toy; SceneParams::stillBackdrop), the toy's shadow left off
     it when it is elsewhere or still. Throws pm::core::Error (see Rasterizer::render()).
@@ -188,6 +196,13 @@ private:
   //! A flat textured quad facing the hand, centred at (x, y, z) of the target frame (mm).
   static Mesh makeFlatQuad(double xMm, double yMm, double zMm, double widthMm, double heightMm, int r, int g, int b);
   Mesh m_toy, m_backdrop, m_occluder, m_distractor, m_bar;
+  //! The clutter's toys (SceneParams::clutter) and their poses on the backdrop (the frame it rests in).
+  struct ClutterMesh
+  {
+    Mesh mesh;
+    vpHomogeneousMatrix oMn;
+  };
+  std::vector<ClutterMesh> m_clutter;
   struct ShadowCache;
   std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
   struct LensCache;
