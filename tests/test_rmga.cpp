@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "pm/core/Error.h"
+#include "pm/core/Pose.h"
 
 #include <algorithm>
 #include <visp3/core/vpThetaUVector.h>
@@ -317,6 +318,40 @@ TEST(RmGa, AfterALockOnAWrongPoseTheAnchorLeadsRestartsToATargetThatMovedWhileUn
   const int with = found(true), without = found(false);
   EXPECT_LE(without, 1) << "of 24 seeds";
   EXPECT_GE(with, 6) << "of 24 seeds; without the anchor " << without;
+}
+
+TEST(RmGa, AnAvoidedPoseIsNotScoredForItsFramesThenIsFoundAgain)
+{
+  // The tracker's refused lock: the only peak, avoided for 2 frames, the population scattered.
+  Peak peak;
+  pm::rmga::RmGa ga = gaOnThePeak(peak, 3, false);
+  ga.avoid(peak.centre, 20, 20, 2);
+  ga.scatter(1, 30);
+  EXPECT_EQ(ga.avoidedCount(), 1u);
+  ga.inject(peak.centre, 1.0); // nor does a pose found by other means join the search there
+  for (const pm::rmga::Individual &ind : ga.population())
+    EXPECT_NE(ind.fitness, 1.0);
+  for (int frame = 0; frame < 2; ++frame) {
+    const long before = peak.calls;
+    const pm::rmga::FrameResult r = ga.evolve(peak, pm::rmga::FrameBudget::evals(400));
+    EXPECT_EQ(peak.calls - before, r.candidates); // the avoided ones were never given to the fitness
+    EXPECT_TRUE(pm::core::translationDistanceMm(r.best, peak.centre) > 20 || pm::core::rotationDistanceDeg(r.best, peak.centre) > 20)
+        << "frame " << frame << ": " << r.best.toString();
+    for (const pm::rmga::Individual &ind : ga.population()) {
+      if (pm::core::translationDistanceMm(ind.phi, peak.centre) <= 20 && pm::core::rotationDistanceDeg(ind.phi, peak.centre) <= 20) {
+        EXPECT_LT(ind.fitness, -1e299);
+      }
+    }
+  }
+  EXPECT_EQ(ga.avoidedCount(), 0u); // its frames are over: the peak is the search's again
+  const pm::rmga::FrameResult r = ga.evolve(peak, pm::rmga::FrameBudget::evals(800));
+  EXPECT_LE(pm::core::translationDistanceMm(r.best, peak.centre), 20) << r.best.toString(); // where it could not be before
+  EXPECT_LE(pm::core::rotationDistanceDeg(r.best, peak.centre), 20);
+  // Four at most, the newest replacing the one nearest its end; a bad one is ignored.
+  for (int k = 0; k < 6; ++k)
+    ga.avoid(pm::core::Phi{10.0 * k, 0, 500, 0, 0, 0}, 5, 5, 3 + k);
+  ga.avoid(pm::core::Phi{0, 0, 500, 0, 0, 0}, -1, 5, 3);
+  EXPECT_EQ(ga.avoidedCount(), pm::rmga::RmGa::kMaxAvoided);
 }
 
 TEST(RmGa, BadBudgetsAndParametersAreRefused)

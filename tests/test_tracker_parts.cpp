@@ -77,6 +77,37 @@ TEST(LockState, LocksLosesAfterItsFramesAndSaysWhatRmGaMustDo)
   EXPECT_THROW(bad.validate(), pm::core::Error);
 }
 
+TEST(LockState, ALockNeverTrustedAndPlainlyWrongForItsFramesIsDroppedAsIfRefused)
+{
+  pm::tracker::LockParams p; // confidence 0.05 at the lock; dropped after 10 such frames
+  pm::tracker::LockState s(p);
+  s.update(0.5, false);
+  ASSERT_EQ(s.state(), TrackState::Tracking);
+  for (int k = 0; k < 9; ++k) { // nine frames judged plainly wrong, then one a little better: the count starts again
+    s.onJudged(0.01, false);
+    EXPECT_EQ(s.update(0.5, false), RmGaUpdate::Restart::None);
+  }
+  s.onJudged(0.2, false);
+  for (int k = 0; k < 9; ++k) {
+    s.onJudged(0.01, false);
+    s.update(0.5, false);
+    EXPECT_EQ(s.state(), TrackState::Tracking) << k;
+  }
+  s.onJudged(0.01, false); // the tenth judged plainly wrong: dropped on the next frame, whatever its q, as if refused
+  EXPECT_EQ(s.update(0.9, false), RmGaUpdate::Restart::AwayFromBest);
+  EXPECT_EQ(s.state(), TrackState::Searching);
+  // A lock trusted once is never dropped this way (an occlusion may take its confidence down).
+  s.update(0.5, false);
+  s.onJudged(0.97, true);
+  for (int k = 0; k < 30; ++k) {
+    s.onJudged(0.01, false);
+    EXPECT_EQ(s.update(0.5, false), RmGaUpdate::Restart::None);
+  }
+  EXPECT_EQ(s.state(), TrackState::Tracking);
+  p.dropAfterFrames = -1;
+  EXPECT_THROW(p.validate(), pm::core::Error);
+}
+
 TEST(SteadyFramePolicy, SteadyAfterItsFramesNearTheRecentBestWhichIsRememberedThroughALoss)
 {
   pm::tracker::SteadyParams p; // steady after 3 frames within 0.03 of the recent best
@@ -208,6 +239,11 @@ TEST(PoseSearch, TheFramesChangesAreAppliedInOnePlaceInTheirOrder)
   for (const auto &ind : search.ga().population())
     far += pm::core::translationDistanceMm(ind.phi, c.truth) > 20;
   EXPECT_GT(far, p.ga.population / 2);
+  // ... and the best is avoided: the next frames' best is elsewhere, for its frames.
+  EXPECT_EQ(search.ga().avoidedCount(), 1u);
+  const pm::rmga::FrameResult elsewhere = search.evolve(pm::rmga::FrameBudget::evals(400), false);
+  EXPECT_TRUE(pm::core::translationDistanceMm(elsewhere.best, c.truth) > p.avoidMm - 1 ||
+              pm::core::rotationDistanceDeg(elsewhere.best, c.truth) > p.avoidDeg - 1);
 }
 
 TEST(LockVerifier, AWrongLockIsChallengedAndARightOneVerified)

@@ -135,6 +135,19 @@ inline bool inBackground(std::int32_t h, const Tolerances &t) { return h != HueP
 //! Whether hue \e h (on the image) is one of the target's own hues (a miss on one is a wrong pose, never an occluder).
 inline bool targetHue(std::int32_t h, const Tolerances &t) { return h != HuePlane::kNoHue && t.targetHue[h]; }
 
+/*!
+  The stereo visibility's rule, its first half, for an S_in point of hue \e hm: the camera sees hue
+  \e h there, on the image, a miss, neither on the background's hue nor on one of the target's own
+  (something else may stand in front). The point is hidden when the other camera, at the point's
+  own projection, sees a hit (inHit); only then is the other camera sampled.
+*/
+inline bool inMayBeHidden(std::int32_t h, std::int32_t hm, const Tolerances &t)
+{
+  return h >= 0 && !inHit(h, hm, t) && !inBackground(h, t) && !targetHue(h, t);
+}
+//! The same for an S_out point: on the image, not the background's hue nor one of the target's own; hidden when the other camera sees the background (outHit).
+inline bool outMayBeHidden(std::int32_t h, const Tolerances &t) { return h >= 0 && !outHit(h, t) && !targetHue(h, t); }
+
 inline void classifyIn(std::int32_t h, std::int32_t hm, const Tolerances &t, FitnessCounts &c)
 {
   if (h < 0) {
@@ -175,8 +188,7 @@ void countScalar(const Projection &p, const Projection *other, const Tolerances 
   for (std::size_t i = inBegin; i < inEnd; ++i) {
     const float z = kDepth ? m.z[i] : 0.f;
     const std::int32_t h = sampleScalar<kDepth>(p, m.x[i], m.y[i], z);
-    if (other && h >= 0 && !inHit(h, m.hue[i], t) && !inBackground(h, t) && !targetHue(h, t) &&
-        inHit(sampleScalar<kDepth>(*other, m.x[i], m.y[i], z), m.hue[i], t))
+    if (other && inMayBeHidden(h, m.hue[i], t) && inHit(sampleScalar<kDepth>(*other, m.x[i], m.y[i], z), m.hue[i], t))
       ++c.inHidden;
     else
       classifyIn(h, m.hue[i], t, c);
@@ -184,7 +196,7 @@ void countScalar(const Projection &p, const Projection *other, const Tolerances 
   for (std::size_t i = outBegin; i < outEnd; ++i) {
     const float z = kDepth ? m.z[i] : 0.f;
     const std::int32_t h = sampleScalar<kDepth>(p, m.x[i], m.y[i], z);
-    if (other && h >= 0 && !outHit(h, t) && !targetHue(h, t) && outHit(sampleScalar<kDepth>(*other, m.x[i], m.y[i], z), t))
+    if (other && outMayBeHidden(h, t) && outHit(sampleScalar<kDepth>(*other, m.x[i], m.y[i], z), t))
       ++c.outHidden;
     else
       classifyOut(h, t, c);

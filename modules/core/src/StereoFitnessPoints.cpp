@@ -70,9 +70,8 @@ std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) c
     const std::int32_t ho = !m_params.stereoVisibility || h < 0 ? -1
                             : m_hasDepth ? kernels::sampleScalar<true>(o, m_x[i], m_y[i], m_z[i])
                                          : kernels::sampleScalar<false>(o, m_x[i], m_y[i], 0.f);
-    const bool hidden = m_params.stereoVisibility && h >= 0 && !kernels::targetHue(h, tol) &&
-                        (inner ? !kernels::inHit(h, m_hue[i], tol) && !kernels::inBackground(h, tol) && kernels::inHit(ho, m_hue[i], tol)
-                               : !kernels::outHit(h, tol) && kernels::outHit(ho, tol));
+    const bool hidden = m_params.stereoVisibility && (inner ? kernels::inMayBeHidden(h, m_hue[i], tol) && kernels::inHit(ho, m_hue[i], tol)
+                                                            : kernels::outMayBeHidden(h, tol) && kernels::outHit(ho, tol));
     if (inner)
       kernels::classifyIn(h, m_hue[i], tol, c);
     else

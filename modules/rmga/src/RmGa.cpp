@@ -57,6 +57,7 @@ Individual RmGa::make(const Genome &g) const
 void RmGa::randomize()
 {
   m_pop.clear();
+  m_avoided = {};
   std::uniform_int_distribution<int> gene(0, Genome::kMax);
   for (int k = 0; k < m_params.population; ++k) {
     Genome g;
@@ -147,6 +148,9 @@ void RmGa::transform(const std::function<core::Phi(const core::Phi &)> &f)
   }
   if (m_hasAnchor)
     m_anchor = m_space.clamp(f(m_anchor));
+  for (Avoided &a : m_avoided)
+    if (a.frames > 0)
+      a.pose = f(a.pose);
   if (m_havePrev)
     m_prev = f(m_prev);
   if (m_havePrev2)
@@ -155,7 +159,7 @@ void RmGa::transform(const std::function<core::Phi(const core::Phi &)> &f)
 
 void RmGa::inject(const core::Phi &p, double fitness)
 {
-  if (m_pop.empty() || !p.isValid())
+  if (m_pop.empty() || !p.isValid() || isAvoided(p))
     return;
   std::size_t weakest = 0;
   for (std::size_t i = 1; i < m_pop.size(); ++i)
@@ -167,20 +171,54 @@ void RmGa::inject(const core::Phi &p, double fitness)
     m_prev = p;
 }
 
+void RmGa::avoid(const core::Phi &p, double mm, double deg, int frames)
+{
+  if (!p.isValid() || !(mm > 0) || !(deg > 0) || frames <= 0)
+    return;
+  Avoided *slot = &m_avoided[0];
+  for (Avoided &a : m_avoided)
+    if (a.frames < slot->frames)
+      slot = &a;
+  *slot = Avoided{p, mm, deg, frames};
+}
+
+std::size_t RmGa::avoidedCount() const
+{
+  return static_cast<std::size_t>(std::count_if(m_avoided.begin(), m_avoided.end(), [](const Avoided &a) { return a.frames > 0; }));
+}
+
+bool RmGa::isAvoided(const core::Phi &p) const
+{
+  for (const Avoided &a : m_avoided)
+    if (a.frames > 0 && core::translationDistanceMm(p, a.pose) <= a.mm && core::rotationDistanceDeg(p, a.pose) <= a.deg)
+      return true;
+  return false;
+}
+
 void RmGa::evaluate(FitnessFunction &f, std::vector<Individual> &ind, std::size_t from, double &cost, long &candidates, double rejectBelow)
 {
+  // The avoided ones are not scored: the others go to the fitness in one batch, in their order.
   const std::size_t n = ind.size() - from;
   m_batch.resize(n);
   m_scores.resize(n);
   m_costs.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    m_batch[i] = ind[from + i].phi;
-  f.evaluateOrReject(m_batch.data(), n, rejectBelow, m_scores.data(), m_costs.data());
+  m_slots.resize(n);
+  std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    ind[from + i].fitness = std::isfinite(m_scores[i]) ? m_scores[i] : -1e300;
-    cost += std::clamp(m_costs[i], 0.0, 1.0);
+    if (isAvoided(ind[from + i].phi)) {
+      ind[from + i].fitness = -1e300;
+      continue;
+    }
+    m_slots[k] = from + i;
+    m_batch[k++] = ind[from + i].phi;
   }
-  candidates += static_cast<long>(n);
+  if (k > 0)
+    f.evaluateOrReject(m_batch.data(), k, rejectBelow, m_scores.data(), m_costs.data());
+  for (std::size_t j = 0; j < k; ++j) {
+    ind[m_slots[j]].fitness = std::isfinite(m_scores[j]) ? m_scores[j] : -1e300;
+    cost += std::clamp(m_costs[j], 0.0, 1.0);
+  }
+  candidates += static_cast<long>(k);
 }
 
 const Individual &RmGa::tournament()
@@ -296,6 +334,9 @@ FrameResult RmGa::evolve(FitnessFunction &f, const FrameBudget &budget, bool sam
   r.fitness = best->fitness;
   r.evaluations = static_cast<long>(std::ceil(evals - 1e-9));
   r.candidates = candidates;
+  if (!sameFrame) // one frame less for each avoided pose
+    for (Avoided &a : m_avoided)
+      a.frames = std::max(0, a.frames - 1);
   if (!sameFrame || !m_havePrev) {
     m_prev2 = m_prev;
     m_havePrev2 = m_havePrev;

@@ -83,6 +83,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   const TrackState prev = m_lock.state();
   update.restart = updateState(r, evidence);                             // 6. searching, tracking or lost
   judge(r, evidence, prev);                                              // 7. confidence, trust, uncertainty
+  m_lock.onJudged(r.confidence, r.trusted);
   if (r.trusted) // where the target was last seen for sure: the restarts' anchor
     update.anchor = r.phi;
   m_search.apply(update);                                                // 8. RM-GA's changes, in one place

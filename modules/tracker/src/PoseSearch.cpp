@@ -1,5 +1,7 @@
 #include "pm/tracker/PoseSearch.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "pm/core/Error.h"
@@ -33,6 +35,8 @@ void SearchParams::validate() const
                       " evaluations cannot even evaluate the population of " + std::to_string(ga.population));
   if (!(rejectMarginQ <= 1))
     throw core::Error("tracker: the early rejection margin must be at most 1 (negative: off)");
+  if (avoidFrames < 0 || !(avoidMm > 0) || !(avoidDeg > 0))
+    throw core::Error("tracker: a refused lock's avoided frames must be non-negative and its radii positive");
   if (!(initSpread >= 0 && initSpread <= 1))
     throw core::Error("tracker: the initial spread must lie in [0, 1]");
 }
@@ -78,8 +82,13 @@ void PoseSearch::apply(const RmGaUpdate &u)
     m_ga.inject(u.inject->pose, u.inject->fitness);
   if (u.restart == RmGaUpdate::Restart::AroundBest)
     m_ga.restart(1, m_params.ga.restartGenerations);
-  else if (u.restart == RmGaUpdate::Restart::AwayFromBest)
+  else if (u.restart == RmGaUpdate::Restart::AwayFromBest) {
+    if (m_params.avoidFrames > 0) // the refused pose's basin closed for a while
+      m_ga.avoid(std::max_element(m_ga.population().begin(), m_ga.population().end(),
+                                  [](const rmga::Individual &a, const rmga::Individual &b) { return a.fitness < b.fitness; })->phi,
+                 m_params.avoidMm, m_params.avoidDeg, m_params.avoidFrames);
     m_ga.scatter(1, m_params.ga.restartGenerations);
+  }
   if (u.anchor)
     m_ga.setAnchor(*u.anchor);
 }

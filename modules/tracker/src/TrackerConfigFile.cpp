@@ -98,6 +98,9 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
             .value("reject_margin_q", p.search.rejectMarginQ)
             .value("coarse", p.search.coarse)
             .value("init_spread", p.search.initSpread)
+            .value("avoid_frames", p.search.avoidFrames)
+            .value("avoid_mm", p.search.avoidMm)
+            .value("avoid_deg", p.search.avoidDeg)
             .section("space", [&](V &w) { w.value("lo", p.search.space.lo).value("hi", p.search.space.hi); })
             .section("rmga", [&](V &g) {
               g.value("population", p.search.ga.population)
@@ -114,7 +117,8 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
         l.value("quality", p.lock.quality)
             .value("confidence", p.lock.confidence)
             .value("lost_quality", p.lock.lostQuality)
-            .value("lost_frames", p.lock.lostFrames);
+            .value("lost_frames", p.lock.lostFrames)
+            .value("drop_after_frames", p.lock.dropAfterFrames);
       })
       .section("steady", [&](V &s) {
         s.value("budget_fraction", p.steady.budgetFraction)

@@ -22,6 +22,7 @@
 */
 #include <cstdint>
 #include <functional>
+#include <array>
 #include <random>
 #include <vector>
 
@@ -194,9 +195,26 @@ public:
   void transform(const std::function<core::Phi(const core::Phi &)> &f);
   /*!
     Puts \e p (clamped into the search space) in place of the weakest individual, with \e fitness
-    on the current frame: a pose found by other means (the tracker's precise stage) joins the search.
+    on the current frame: a pose found by other means (the tracker's precise stage) joins the search,
+    unless it lies where the search avoids (avoid()).
   */
   void inject(const core::Phi &p, double fitness);
+
+  /*!
+    A pose to stay away from: for the next \e frames frames (evolve() on a new frame), a candidate
+    within \e mm and \e deg of \e p is not scored and cannot survive (it costs nothing of the
+    budget): for a best known to be wrong, whose basin the population would fall back into however
+    it is scattered. At most kMaxAvoided at once (a new one replaces the one nearest its end).
+    transform() moves them with the population; randomize() forgets them.
+    \code
+    ga.avoid(refused, 20, 20, 15); // not there again for half a second
+    ga.scatter(0, 0);
+    \endcode
+  */
+  void avoid(const core::Phi &p, double mm, double deg, int frames);
+  static constexpr std::size_t kMaxAvoided = 4; //!< avoided poses kept at once
+  //! The poses avoided now (avoid()), with the frames they still are.
+  std::size_t avoidedCount() const;
 
   /*!
     Evolves the population on one frame (steps 2-8) within \e budget. Throws pm::core::Error if the
@@ -226,6 +244,7 @@ private:
   std::mt19937_64 m_rng;
   std::vector<Individual> m_pop, m_children, m_merged;
   std::vector<core::Phi> m_batch;
+  std::vector<std::size_t> m_slots; //!< evaluate(): where each pose of the batch came from
   std::vector<double> m_scores, m_costs;
   bool m_havePrev = false, m_havePrev2 = false;
   core::Phi m_prev, m_prev2; //!< best of the last two frames, for the motion prediction
@@ -233,6 +252,16 @@ private:
   int m_isolation = 0; //!< ... for this many more generations
   bool m_hasAnchor = false;
   core::Phi m_anchor;        //!< see setAnchor()
+  //! A pose avoided (avoid()): its place, its radii, the frames it still is.
+  struct Avoided
+  {
+    core::Phi pose;
+    double mm = 0, deg = 0;
+    int frames = 0;
+  };
+  std::array<Avoided, kMaxAvoided> m_avoided{};
+  //! True if \e p lies within an avoided pose's radii.
+  bool isAvoided(const core::Phi &p) const;
 };
 
 } // namespace pm::rmga

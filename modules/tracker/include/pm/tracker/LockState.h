@@ -9,6 +9,9 @@
   A lock is refused when its confidence as a first, unverified lock (Judgement::firstLockConfidence)
   is under \e confidence: a plainly wrong pose (a look-alike of similar hue, the toy turned over)
   keeps the search going, scattered away from it, instead of locking and waiting for a challenger.
+  A lock made but never trusted whose confidence stays under \e confidence for dropAfterFrames
+  judged frames in a row (onJudged()) is dropped the same way: a wrong first lock that got past the
+  gate, which the lock's challenger did not overturn, gives way instead of holding the search.
 
   \code
     pm::tracker::LockState lock(params.lock);
@@ -29,6 +32,7 @@ struct LockParams
   double confidence = 0.05;  //!< ... when its confidence as a first, unverified lock reaches this (0: every pose over quality locks)
   double lostQuality = 0.2;  //!< q below which, for lostFrames frames, it is lost
   int lostFrames = 3;        //!< frames in a row under lostQuality that make a tracked target lost (>= 1)
+  int dropAfterFrames = 10;  //!< judged frames in a row of a lock never trusted under \e confidence that drop it (0: never)
 
   //! Throws core::Error naming the first parameter out of range.
   void validate() const;
@@ -48,6 +52,8 @@ public:
     what RM-GA must do: search again around its best (the target just lost) or away from it (the lock refused).
   */
   RmGaUpdate::Restart update(double q, bool refused);
+  //! The frame's judgement: \e confidence and whether it was \e trusted (counts toward dropping a lock never trusted).
+  void onJudged(double confidence, bool trusted);
 
   TrackState state() const { return m_state; }       //!< the state after the last frame
   int framesTracked() const { return m_framesTracked; } //!< frames in a row in the tracking state, the last one included
@@ -59,6 +65,8 @@ private:
   TrackState m_state = TrackState::Searching;
   int m_lowFrames = 0;
   int m_framesTracked = 0;
+  bool m_trusted = false; //!< the lock was trusted on a frame since it was made
+  int m_wrongFrames = 0;  //!< judged frames in a row of a lock never trusted under LockParams::confidence
 };
 
 } // namespace pm::tracker

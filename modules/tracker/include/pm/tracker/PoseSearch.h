@@ -57,6 +57,15 @@ struct SearchParams
   */
   bool coarse = true;
   double initSpread = 0.02;     //!< initFromPose: population spread, fraction of each range
+  /*!
+    A lock refused as plainly wrong, or dropped as such (LockState; RmGaUpdate::Restart::AwayFromBest),
+    is avoided (rmga::RmGa::avoid) for avoidFrames frames: a
+    candidate within avoidMm and avoidDeg of it is not scored, so that the scattered population
+    cannot fall back into its basin (0 frames: never).
+  */
+  int avoidFrames = 15;
+  double avoidMm = 20;  //!< the avoided pose's radius in position (mm)
+  double avoidDeg = 20; //!< ... and in orientation (deg)
 
   //! The whole frame budget: budgetEvaluations evaluations when positive, else budgetMs milliseconds.
   rmga::FrameBudget budget() const

@@ -3,7 +3,8 @@
   \file RmGaUpdate.h
   What the tracker's parts ask of RM-GA's population at the end of a frame, as a value: the lock
   verifier's switch (a new population around the better pose), the precise stage's pose (joins the
-  population), the lock state's restart (the target lost) or scatter (a first lock plainly wrong),
+  population), the lock state's restart (the target lost) or scatter (a first lock plainly wrong,
+  its basin avoided for a while),
   and the anchor (the last trusted pose). PoseSearch::apply() applies them in that order, in one
   place; no part changes RM-GA itself.
 
@@ -35,7 +36,10 @@ struct RmGaUpdate
     core::Phi pose;     //!< the pose
     double fitness = 0; //!< F there
   };
-  //! Searching again: none; a restart around the best (the target lost); a scatter away from it (a lock refused).
+  /*!
+    Searching again: none; a restart around the best (the target lost); a scatter away from it, the
+    best avoided for a while (a lock refused or dropped as plainly wrong: SearchParams::avoidFrames).
+  */
   enum class Restart { None, AroundBest, AwayFromBest };
 
   std::optional<Reseed> reseed;          //!< the verifier moved the tracker to a better pose
