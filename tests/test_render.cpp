@@ -428,20 +428,28 @@ TEST(Scene, ReliefChangesTheViewAndHidesParts)
   EXPECT_GT(std::fabs(nl - nr) / std::max(nl, nr), 0.05);
 }
 
-TEST(Scene, OccluderHidesPartOfTheTarget)
+namespace {
+//! The crab 500 mm ahead of the lab rig, a rasterizer and an image to render it with.
+struct CrabAhead
 {
-  const pm::core::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
-  const pm::sim::TargetShape shape = pm::sim::makeTarget("C12", 0.5);
-  pm::sim::SceneParams p;
+  pm::core::StereoRig rig = labRig();
+  vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
+  pm::sim::TargetShape shape = pm::sim::makeTarget("C12", 0.5);
   pm::sim::Rasterizer r;
   vpImage<vpRGBa> I;
-  pm::sim::Scene(shape, p).render(r, rig.left, hMo, 0, 0, I);
-  const auto open = pixelsOf(r, 2).size();
+};
+} // namespace
+
+TEST(Scene, OccluderHidesPartOfTheTarget)
+{
+  CrabAhead c;
+  pm::sim::SceneParams p;
+  pm::sim::Scene(c.shape, p).render(c.r, c.rig.left, c.hMo, 0, 0, c.I);
+  const auto open = pixelsOf(c.r, 2).size();
   p.occluder = true;
-  pm::sim::Scene(shape, p).render(r, rig.left, hMo, 0, 0, I);
-  const auto hidden = pixelsOf(r, 2).size();
-  EXPECT_GT(pixelsOf(r, 3).size(), 2000u);
+  pm::sim::Scene(c.shape, p).render(c.r, c.rig.left, c.hMo, 0, 0, c.I);
+  const auto hidden = pixelsOf(c.r, 2).size();
+  EXPECT_GT(pixelsOf(c.r, 3).size(), 2000u);
   EXPECT_LT(static_cast<double>(hidden), 0.95 * static_cast<double>(open));
 }
 
@@ -480,21 +488,17 @@ TEST(Clutter, ThreeOtherToysOneOfTheNearestHueAroundTheTargetClearOfIt)
 
 TEST(Scene, ClutterStandsBesideTheTargetAndMovesWithTheBackdrop)
 {
-  const pm::core::StereoRig rig = labRig();
-  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({0, 0, 500, 0, 0, 0});
-  const pm::sim::TargetShape shape = pm::sim::makeTarget("C12", 0.5);
+  CrabAhead c;
   pm::sim::SceneParams p;
-  pm::sim::Rasterizer r;
-  vpImage<vpRGBa> I;
   std::size_t alone[2];
   for (unsigned k = 0; k < 2; ++k) {
-    pm::sim::Scene(shape, p).render(r, k == 0 ? rig.left : rig.right, hMo, 0, k, I);
-    alone[k] = pixelsOf(r, 2).size();
-    EXPECT_TRUE(pixelsOf(r, 4).empty());
+    pm::sim::Scene(c.shape, p).render(c.r, k == 0 ? c.rig.left : c.rig.right, c.hMo, 0, k, c.I);
+    alone[k] = pixelsOf(c.r, 2).size();
+    EXPECT_TRUE(pixelsOf(c.r, 4).empty());
   }
   p.clutter = true;
   p.stillBackdrop = true;
-  const pm::sim::Scene scene(shape, p);
+  const pm::sim::Scene scene(c.shape, p);
   auto meanU = [](const std::vector<std::pair<unsigned, unsigned>> &px) {
     double s = 0;
     for (const auto &q : px)
@@ -502,16 +506,16 @@ TEST(Scene, ClutterStandsBesideTheTargetAndMovesWithTheBackdrop)
     return s / static_cast<double>(px.size());
   };
   for (unsigned k = 0; k < 2; ++k) {
-    const pm::core::PinholeCamera *cam = k == 0 ? &rig.left : &rig.right;
-    scene.render(r, *cam, hMo, 0, k, I);
-    const auto toy = pixelsOf(r, 2), others = pixelsOf(r, 4);
+    const pm::core::PinholeCamera *cam = k == 0 ? &c.rig.left : &c.rig.right;
+    scene.render(c.r, *cam, c.hMo, 0, k, c.I);
+    const auto toy = pixelsOf(c.r, 2), others = pixelsOf(c.r, 4);
     EXPECT_GT(others.size(), 5000u);                                // the clutter is in view ...
     EXPECT_EQ(toy.size(), alone[k]);                                // ... and hides nothing of the toy
     // The target moved 30 mm to the left in front of the still backdrop: the clutter stays with the backdrop.
-    const vpHomogeneousMatrix moved = hMo * vpHomogeneousMatrix(-0.03, 0, 0, 0, 0, 0);
-    scene.render(r, *cam, moved, 0, k, I, true, vpHomogeneousMatrix(0.03, 0, 0, 0, 0, 0));
-    EXPECT_NEAR(meanU(pixelsOf(r, 4)), meanU(others), 2.0);
-    EXPECT_LT(meanU(pixelsOf(r, 2)), meanU(toy) - 30);
+    const vpHomogeneousMatrix moved = c.hMo * vpHomogeneousMatrix(-0.03, 0, 0, 0, 0, 0);
+    scene.render(c.r, *cam, moved, 0, k, c.I, true, vpHomogeneousMatrix(0.03, 0, 0, 0, 0, 0));
+    EXPECT_NEAR(meanU(pixelsOf(c.r, 4)), meanU(others), 2.0);
+    EXPECT_LT(meanU(pixelsOf(c.r, 2)), meanU(toy) - 30);
   }
 }
 
