@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iostream>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -517,6 +518,46 @@ TEST(Scene, ClutterStandsBesideTheTargetAndMovesWithTheBackdrop)
     EXPECT_NEAR(meanU(pixelsOf(c.r, 4)), meanU(others), 2.0);
     EXPECT_LT(meanU(pixelsOf(c.r, 2)), meanU(toy) - 30);
   }
+}
+
+TEST(Scene, TheGrippersFingersStayAtTheBottomOfBothImagesAndHideMoreOfTheTargetAsTheHandClosesIn)
+{
+  CrabAhead c;
+  const vpHomogeneousMatrix near = pm::core::toHomogeneousMatrix({0, 0, 300, 0, 0, 0});
+  pm::sim::SceneParams p;
+  const pm::sim::Scene bare(c.shape, p);
+  p.gripper = true;
+  const pm::sim::Scene scene(c.shape, p);
+  for (unsigned k = 0; k < 2; ++k) {
+    const pm::core::PinholeCamera &cam = k == 0 ? c.rig.left : c.rig.right;
+    double hiddenShare[2];
+    std::vector<std::pair<unsigned, unsigned>> fingers[2];
+    for (int d = 0; d < 2; ++d) {
+      const vpHomogeneousMatrix &hMo = d == 0 ? c.hMo : near;
+      bare.render(c.r, cam, hMo, 0, k, c.I);
+      const double open = static_cast<double>(pixelsOf(c.r, 2).size());
+      EXPECT_TRUE(pixelsOf(c.r, 3).empty());
+      scene.render(c.r, cam, hMo, 0, k, c.I);
+      fingers[d] = pixelsOf(c.r, 3);
+      hiddenShare[d] = 1 - static_cast<double>(pixelsOf(c.r, 2).size()) / open;
+      EXPECT_GT(fingers[d].size(), 10000u) << k;
+      for (const auto &px : fingers[d]) // in the bottom half, entering from the image's edge
+        ASSERT_GE(px.second, cam.height / 2) << k;
+      EXPECT_TRUE(std::any_of(fingers[d].begin(), fingers[d].end(), [&](const auto &px) {
+        return px.second == cam.height - 1 || px.first == 0 || px.first == cam.width - 1;
+      }));
+    }
+    EXPECT_EQ(fingers[0], fingers[1]) << k; // fixed on the hand: the same pixels whatever the target's pose
+    std::cout << "camera " << k << ": the fingers hide " << 100 * hiddenShare[0] << " % of the crab's pixels 500 mm ahead, "
+              << 100 * hiddenShare[1] << " % 300 mm ahead" << std::endl;
+    EXPECT_LT(hiddenShare[0], 0.01) << k;                  // 500 mm ahead: they touch the toy's lower edge at most
+    EXPECT_GT(hiddenShare[1], hiddenShare[0] + 0.03) << k; // 300 mm ahead: they hide its lower legs
+    EXPECT_LT(hiddenShare[1], 0.30) << k;
+  }
+  // The pass and the model's photos see the target alone.
+  scene.targetAlone().render(c.r, c.rig.left, near, 0, 0, c.I);
+  EXPECT_TRUE(pixelsOf(c.r, 3).empty());
+  EXPECT_FALSE(scene.targetAlone().params().gripper);
 }
 
 TEST(Scene, AStereoPairIsTheSameWhateverWasRenderedBefore)

@@ -70,6 +70,8 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p)
                                                     "target moves in front of it (docs/occlusion.md)")->group(g);
   app.add_flag("--clutter", p.clutter, "three other toys of the catalogue stand around the target, one of similar hue "
                                        "(docs/occlusion.md)")->group(g);
+  app.add_flag("--gripper", p.gripper, "a gripper's two fingers on the hand, entering the bottom of both images "
+                                       "(pm-servo --grasp closes the hand in on the target; docs/occlusion.md)")->group(g);
   app.add_option("--supersampling", p.supersampling, "samples per pixel along each axis (anti-aliasing)")
       ->check(CLI::Range(1u, 4u))->group(g);
   app.add_option("--seed", p.seed, "noise seed")->group(g);

@@ -10,11 +10,7 @@ namespace pm::lab {
 LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const model::PassPlan &inPlan, robot::Arm &arm,
                    const vpHomogeneousMatrix &h0Mo, bool backgrounds)
 {
-  sim::Scene scene = inScene;
-  scene.params().distractor = false; // the target alone, as a user would make the pass
-  scene.params().occluder = false;
-  scene.params().sweepingBar = false;
-  scene.params().clutter = false;
+  const sim::Scene scene = inScene.targetAlone(); // as a user would make the pass
   model::PassPlan plan = inPlan;
   plan.distanceMm = 1e3 * h0Mo[2][3];
   LabPass out;

@@ -120,6 +120,7 @@ double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTa
                                {"sweeping_bar", sp.sweepingBar},
                                {"still_backdrop", sp.stillBackdrop},
                                {"clutter", sp.clutter},
+                               {"gripper", sp.gripper},
                                {"render_stereo_ms_mean", meanMs},
                                {"targets", list}};
   io::writeTextFile(files.stage("summary.json"), summary.dump(2) + "\n");

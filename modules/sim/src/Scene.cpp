@@ -45,6 +45,7 @@ void SceneParams::validate() const
   check(occluderSizeMm[0] > 0 && occluderSizeMm[1] > 0, "occluder size must be positive");
   check(barWidthMm > 0 && barTravelMm > 0 && barMmPerFrame > 0 && barDepthMm < 0,
         "sweeping bar: width, travel and speed must be positive, its depth negative (in front of the toy)");
+  gripperShape.validate();
   check(stillBackdropGapMm >= 0 && stillBackdropGapMm <= 500, "still backdrop: its gap must lie in [0, 500] mm");
   check(shadows == ShadowMode::Auto || shadows == ShadowMode::Off || shadows == ShadowMode::On,
         "shadow mode must be Auto, Off or On");
@@ -154,25 +155,27 @@ struct Scene::LensCache
 };
 
 Scene::Scene(const TargetShape &target, const SceneParams &params)
-    : m_target(target), m_params(params), m_shadowCache(std::make_shared<ShadowCache>()),
+    : m_target(target), m_params(params), m_stillGapMm(params.stillBackdropGapMm), m_shadowCache(std::make_shared<ShadowCache>()),
       m_lensCache(std::make_shared<LensCache>())
 {
   m_params.validate();
   m_toy = buildTargetMesh(m_target, m_params.meshStepMm, static_cast<float>(m_params.specular));
-  m_backdrop = makeBackdropMesh(makeSeaBottomTexture(m_params.seaBottom), m_params.seaBottom,
-                                m_params.backdropGapMm + (m_params.stillBackdrop ? m_params.stillBackdropGapMm : 0.0));
+  // The panel the toy rests on, and the still one farther back (either may be drawn: SceneParams::stillBackdrop).
+  const std::shared_ptr<const Texture> sea = makeSeaBottomTexture(m_params.seaBottom);
+  m_backdrop = makeBackdropMesh(sea, m_params.seaBottom, m_params.backdropGapMm);
+  m_stillBackdrop = makeBackdropMesh(sea, m_params.seaBottom, m_params.backdropGapMm + m_stillGapMm);
   // The occluder: a strand of seaweed, a flat olive-green quad with a little texture.
   const double *c = m_params.occluderCentreMm;
   m_occluder = makeFlatQuad(c[0], c[1], c[2], m_params.occluderSizeMm[0], m_params.occluderSizeMm[1], 60, 120, 40);
   // The sweeping bar: a violet quad centred on the target's z axis, moved along x at each render.
   m_bar = makeFlatQuad(0, 0, m_params.barDepthMm, m_params.barWidthMm, 300, 120, 50, 140);
+  m_gripper = makeGripperMesh(m_params.gripperShape); // in the hand frame
   // The clutter stands where the target's base rests: on the panel, or on the still panel farther back.
   if (m_params.clutter)
     for (const ClutterToy &t : clutterAround(m_target)) {
       const double *p = t.poseMm;
-      const double z = p[2] + (m_params.stillBackdrop ? m_params.stillBackdropGapMm : 0.0);
       m_clutter.push_back({buildTargetMesh(makeTarget(t.code), m_params.meshStepMm, static_cast<float>(m_params.specular)),
-                           core::toHomogeneousMatrix(core::Phi{p[0], p[1], z, p[3], p[4], p[5]})});
+                           core::toHomogeneousMatrix(core::Phi{p[0], p[1], p[2], p[3], p[4], p[5]})});
     }
 }
 
@@ -201,6 +204,17 @@ Mesh Scene::makeFlatQuad(double xMm, double yMm, double zMm, double widthMm, dou
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
   m.texture = tex;
   return m;
+}
+
+Scene Scene::targetAlone() const
+{
+  Scene s = *this;
+  s.m_params.distractor = false;
+  s.m_params.clutter = false;
+  s.m_params.occluder = false;
+  s.m_params.sweepingBar = false;
+  s.m_params.gripper = false;
+  return s;
 }
 
 double Scene::barOffsetMm(std::uint64_t frame) const
@@ -273,7 +287,7 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
     toyLight.specular = m_params.sceneSpecular;
     toyLight.shininess = m_params.sceneShininess;
   }
-  Rasterizer::DrawCall calls[8];
+  Rasterizer::DrawCall calls[10];
   std::size_t n = 0;
   auto add = [&](const Mesh &mesh, const vpHomogeneousMatrix &M, const Lighting &l, std::uint8_t id) {
     calls[n].mesh = &mesh;
@@ -282,9 +296,14 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
     calls[n].id = id;
     ++n;
   };
-  // Front to back: the occluder, the toys, then the backdrop behind them all, whose samples under
+  // Front to back: the gripper, the occluders, the toys, then the backdrop behind them all, whose samples under
   // a toy then fail the depth test before they are shaded (the same image: no two surfaces are at
   // the same depth, the backdrop lies backdropGapMm behind the toys' base).
+  if (m_params.gripper) {
+    Lighting onHand = light;
+    onHand.shadow = nullptr; // the toy's shadow map does not hold the fingers, nor their shadow
+    add(m_gripper, cMh, onHand, 3);
+  }
   if (m_params.occluder)
     add(m_occluder, cMo, light, 3);
   if (m_params.sweepingBar)
@@ -297,18 +316,21 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
     look.shadow = nullptr; // the toy's shadow map does not hold it
     add(m_distractor, cMo * core::toHomogeneousMatrix(core::Phi{d[0], d[1], d[2], d[3], d[4], d[5]}), look, 4);
   }
+  // The clutter stands on the panel drawn: the resting one, or the still one farther back.
+  const vpHomogeneousMatrix onPanel =
+      m_params.stillBackdrop ? oMb * vpHomogeneousMatrix(0, 0, 1e-3 * m_stillGapMm, 0, 0, 0) : oMb;
   if (m_params.clutter)
     for (const ClutterMesh &c : m_clutter) {
       Lighting look = toyLight;
       look.shadow = nullptr; // the toy's shadow map does not hold them
-      add(c.mesh, cMo * oMb * c.oMn, look, 4);
+      add(c.mesh, cMo * onPanel * c.oMn, look, 4);
     }
   if (!m_params.stillBackdrop && isIdentity(oMb)) {
     add(m_backdrop, cMo, light, 1);
   } else {
     Lighting still = light;
     still.shadow = nullptr; // the toy's shadow map is of the panel it rests on: none on a still one, at rest or not
-    add(m_backdrop, cMo * oMb, still, 1);
+    add(m_params.stillBackdrop ? m_stillBackdrop : m_backdrop, cMo * oMb, still, 1);
   }
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
   const float tank[3] = {0.04f, 0.06f, 0.09f}; // the dark tank beyond the panel

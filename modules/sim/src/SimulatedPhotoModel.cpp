@@ -9,23 +9,10 @@
 
 namespace pm::sim {
 
-namespace {
-//! The scene the model's photos are taken in: the target alone, without a look-alike or clutter beside it or anything in front of it.
-Scene alone(const Scene &scene)
-{
-  Scene s = scene;
-  s.params().distractor = false;
-  s.params().occluder = false;
-  s.params().sweepingBar = false;
-  s.params().clutter = false;
-  return s;
-}
-} // namespace
-
 SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &inScene, const vpCameraParameters &cam, unsigned w, unsigned h,
                                             double distanceMm, const model::PhotoModelParams &params)
 {
-  const Scene scene = alone(inScene);
+  const Scene scene = inScene.targetAlone();
   SimulatedPhotoModel s;
   scene.renderPhotos(cam, w, h, distanceMm, s.background, s.photo);
   s.build = model::buildPhotoModel(s.background, s.photo, cam, distanceMm, params);
@@ -38,7 +25,7 @@ SimulatedPhotoModel makeSimulatedPhotoModel(const Scene &inScene, const vpCamera
 SimulatedPhotoModel makeSimulatedStereoPhotoModel(const Scene &inScene, const core::StereoRig &rig, double distanceMm,
                                                   const model::StereoModelParams &params, double viewTurnDeg)
 {
-  const Scene scene = alone(inScene);
+  const Scene scene = inScene.targetAlone();
   if (!(distanceMm > 0) || !std::isfinite(distanceMm))
     throw core::Error("photo distance must be positive");
   if (!(viewTurnDeg >= 0 && viewTurnDeg <= 45))

@@ -20,6 +20,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/StereoRig.h"
+#include "pm/sim/Gripper.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/sim/SeaBottom.h"
 #include "pm/sim/ShadowMap.h"
@@ -67,7 +68,7 @@ struct SceneParams
     rest), and the scenarios (lab::ClosedLoop, lab::LabSequence) give render() its pose in the
     target frame each frame, so that the background slides behind the target's outline as the
     target and the hand move (the toy casts no shadow on it). Off: the toy rests on its panel,
-    which moves with it.
+    which moves with it. It may be turned on or off between renders (pm-compare's scenarios).
   */
   bool stillBackdrop = false;
   double stillBackdropGapMm = 50; //!< how much farther behind the toy's base the still panel stands (mm)
@@ -97,6 +98,13 @@ struct SceneParams
     (turning it on afterwards draws nothing).
   */
   bool clutter = false;
+  /*!
+    A parallel gripper's two fingers on the hand (sim::makeGripperMesh()), fixed in the hand frame
+    below the rig, entering the bottom of both images: the end of a grasp approach, where they hide
+    the lower part of a target 300 to 350 mm ahead. Drawn as an occluder (id 3).
+  */
+  bool gripper = false;
+  GripperParams gripperShape; //!< the fingers' shape and place on the hand
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
@@ -132,8 +140,9 @@ class Scene
 public:
   /*!
     Builds the meshes of the toy (every params.meshStepMm), of the backdrop (params.backdropGapMm
-    behind the toy's base), of the occluder and of the clutter (when params.clutter is on). Throws pm::core::Error for a parameter out of range or a
-    target whose grids do not match.
+    behind the toy's base), of the occluder, of the gripper's fingers and of the clutter (when
+    params.clutter is on). Throws pm::core::Error for a parameter out of range or a target whose
+    grids do not match.
   */
   Scene(const TargetShape &target, const SceneParams &params = SceneParams());
 
@@ -144,7 +153,8 @@ public:
     enough to hold the whole raw one, resampled into the raw image (bilinear, through a map
     computed once per camera and kept), then the sensor noise is added. \e withTarget false: the
     backdrop alone (no toy, no shadow of it). Afterwards \e raster's coverage() and depthAt() tell the
-    objects apart by id (1 backdrop, 2 toy, 3 occluder, 4 look-alike or clutter); for a distorted camera they
+    objects apart by id (1 backdrop, 2 toy, 3 occluder: the strand, the bar or the gripper's fingers, 4 look-alike or
+    clutter); for a distorted camera they
     hold the larger ideal canvas, not \e out. \e oMb: the backdrop's pose in the target frame (the
     identity: where it rests behind the toy; SceneParams::stillBackdrop), the toy's shadow left off
     it when it is elsewhere or still. Throws pm::core::Error (see Rasterizer::render()).
@@ -168,6 +178,7 @@ public:
   */
   void setDistractor(const TargetShape &shape);
   bool hasDistractor() const { return !m_distractor.triangles.empty(); } //!< true once setDistractor() gave a shape
+  bool hasClutter() const { return !m_clutter.empty(); } //!< true if made with SceneParams::clutter on (its toys can be drawn)
   //! The sweeping bar's offset along the target frame's x at \e frame (mm; SceneParams::sweepingBar).
   double barOffsetMm(std::uint64_t frame) const;
 
@@ -179,12 +190,19 @@ public:
   */
   std::shared_ptr<const ShadowMap> shadowMap() const;
 
+  /*!
+    A copy of this scene with the target alone on its backdrop: no look-alike, clutter, strand, bar
+    or gripper (the all-around pass and the model's photos: a user photographs the target alone).
+  */
+  Scene targetAlone() const;
+
   const TargetShape &target() const { return m_target; } //!< the target (the scene's own copy)
   const SceneParams &params() const { return m_params; }  //!< the parameters
   /*!
     The parameters, to change between renders (exposure, noise, lights, shadows, occluder on or
     off, the look-alike's pose...). Not validated here. The meshes were built by the constructor:
-    changing meshStepMm, specular, backdropGapMm, seaBottom, occluderCentreMm or occluderSizeMm
+    changing meshStepMm, specular, backdropGapMm, stillBackdropGapMm, seaBottom, occluderCentreMm, occluderSizeMm or
+    gripperShape
     afterwards has no effect on them (setDistractor() uses the meshStepMm and specular of its call).
   */
   SceneParams &params() { return m_params; }
@@ -193,10 +211,11 @@ public:
 private:
   TargetShape m_target;
   SceneParams m_params;
+  double m_stillGapMm; //!< the still panel's gap the meshes were built with (SceneParams::stillBackdropGapMm)
   //! A flat textured quad facing the hand, centred at (x, y, z) of the target frame (mm).
   static Mesh makeFlatQuad(double xMm, double yMm, double zMm, double widthMm, double heightMm, int r, int g, int b);
-  Mesh m_toy, m_backdrop, m_occluder, m_distractor, m_bar;
-  //! The clutter's toys (SceneParams::clutter) and their poses on the backdrop (the frame it rests in).
+  Mesh m_toy, m_backdrop, m_stillBackdrop, m_occluder, m_distractor, m_bar, m_gripper;
+  //! The clutter's toys (SceneParams::clutter) and their poses on the panel the toy rests on (on the still one: its gap farther).
   struct ClutterMesh
   {
     Mesh mesh;
