@@ -48,7 +48,7 @@ struct Options
   double holdS = 1.5, moveS = 2.0, amplitude = 50, frequency = 0.5, durationS = 0, fps = 30;
   double maxVelocity = 300, maxAcceleration = 1500;
   int overlayEvery = 150, steps = 0;
-  bool quiet = false, noVideo = false, freqSweep = false;
+  bool quiet = false, noVideo = false, freqSweep = false, grasp = false;
   pm::lab::LoopParams lp;
   pm::servo::ServoParams servo;
   pm::app::LabModelChoice lab;
@@ -88,6 +88,9 @@ void addLoopOptions(CLI::App &app, Options &o)
   app.add_option("--filter-alpha-translation", lp.filterParams.alphaT, "filter: translation gain")->check(CLI::Range(0.01, 1.0));
   app.add_option("--filter-beta-translation", lp.filterParams.betaT, "filter: velocity gain")->check(CLI::Range(0.0, 1.9));
   app.add_flag("--feed-forward-rotation,!--no-feed-forward-rotation", o.servo.feedForwardRotation, "feed the target's angular velocity forward too");
+  app.add_flag("--grasp", o.grasp, "a grasp approach: the hand closes in on the still target from 500 to 300 mm at "
+                                  "25 mm/s while servoed (with --gripper, its fingers in view); the tracker searches from "
+                                  "250 mm (docs/occlusion.md)");
   app.add_flag("--freq-sweep", o.freqSweep, "run sines of 0.1 to 1 Hz on --axis and write bode.png and bode.csv");
   app.add_option("--overlay-every", o.overlayEvery, "write an overlay PNG every N frames (0: none)")->check(CLI::Range(0, 1000000));
   app.add_flag("--no-video", o.noVideo, "do not write servo.avi");
@@ -127,8 +130,21 @@ Lab makeLab(Options &o)
   o.distractor.apply(*lab.scene);
   lab.model = pm::app::makeLabModel(*lab.scene, lab.rig, o.lab);
   if (o.motion == "steps")
-    lab.waypoints = pm::io::readWaypoints(o.stepsPath, o.steps);
+    lab.waypoints = pm::io::readWaypoints(o.stepsPath, o.grasp ? 1 : o.steps); // a grasp: the target stands at the first
   return lab;
+}
+
+//! --grasp: the approach in the loop, a search space that reaches its end, a duration that holds it there.
+void applyGrasp(Options &o, pm::tracker::TrackerParams &tp)
+{
+  if (!o.grasp)
+    return;
+  if (o.motion != "steps" || o.freqSweep)
+    throw CLI::ValidationError("--grasp", "approaches a still target: not with --motion sine or --freq-sweep");
+  o.lp.graspApproach = true;
+  tp.search.space.lo[2] = std::min(tp.search.space.lo[2], o.lp.approach.toMm - 50);
+  if (o.durationS <= 0) // settled, closed in, then held 3 s at the grasp's distance
+    o.durationS = o.lp.approach.settleS + (o.lp.approach.fromMm - o.lp.approach.toMm) / o.lp.approach.mmPerS + 3;
 }
 
 //! --freq-sweep: sines of 0.1 to 1 Hz on the axis; bode.csv, bode.png and summary.json.
@@ -283,7 +299,8 @@ int main(int argc, char **argv)
   app.add_flag("--quiet", o.quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
-    const pm::tracker::TrackerParams tp = trackerOptions.resolve();
+    pm::tracker::TrackerParams tp = trackerOptions.resolve();
+    applyGrasp(o, tp);
     const Lab lab = makeLab(o);
     axisIndex(o.axis); // a bad --axis is refused before anything is written
     pm::io::StagedFiles files(o.out);

@@ -6,6 +6,7 @@
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
+#include "pm/hand/GraspApproach.h"
 #include "pm/hand/HandLoop.h"
 #include "pm/hand/HandPass.h"
 #include "pm/io/RigFile.h"
@@ -41,6 +42,42 @@ double mm(const vpHomogeneousMatrix &e) { return 1e3 * e.getTranslationVector().
 double deg(const vpHomogeneousMatrix &e) { return e.getThetaUVector().getTheta() * 180 / M_PI; }
 
 } // namespace
+
+TEST(GraspApproach, ClosesInOnlyWhileServoedOnceSettledAndStopsAtTheGraspsDistance)
+{
+  pm::hand::GraspApproachParams p; // 500 to 300 mm at 25 mm/s, after 1 s servoed at 500
+  const vpHomogeneousMatrix hdMo0(0.01, -0.02, 0.45, 0.1, 0, 0);
+  pm::hand::GraspApproach a(p, hdMo0);
+  EXPECT_DOUBLE_EQ(a.distanceMm(), 500); // the start's distance, the rest of hdMo0 kept
+  EXPECT_DOUBLE_EQ(a.hdMo()[2][3], 0.5);
+  EXPECT_DOUBLE_EQ(a.hdMo()[0][3], 0.01);
+  EXPECT_DOUBLE_EQ(a.hdMo()[1][2], hdMo0[1][2]);
+  const double dt = 0.1;
+  for (int k = 0; k < 20; ++k) // held: it waits
+    a.advance(false, dt);
+  EXPECT_DOUBLE_EQ(a.distanceMm(), 500);
+  for (int k = 0; k < 10; ++k) // servoed 1 s: settled, not yet moving
+    a.advance(true, dt);
+  EXPECT_NEAR(a.distanceMm(), 500, 1e-9);
+  for (int k = 0; k < 10; ++k) // servoed 1 s more: 25 mm in
+    a.advance(true, dt);
+  EXPECT_NEAR(a.distanceMm(), 475, 1e-6);
+  a.advance(false, dt); // a frame held: no step, and no new settling afterwards
+  EXPECT_NEAR(a.distanceMm(), 475, 1e-6);
+  a.advance(true, dt);
+  EXPECT_NEAR(a.distanceMm(), 472.5, 1e-6);
+  EXPECT_FALSE(a.done());
+  for (int k = 0; k < 200; ++k)
+    a.advance(true, dt);
+  EXPECT_DOUBLE_EQ(a.distanceMm(), 300); // and no nearer
+  EXPECT_DOUBLE_EQ(a.hdMo()[2][3], 0.3);
+  EXPECT_TRUE(a.done());
+  p.toMm = 600; // farther than the start
+  EXPECT_THROW(pm::hand::GraspApproach(p, hdMo0), pm::core::Error);
+  p = pm::hand::GraspApproachParams();
+  p.mmPerS = 0;
+  EXPECT_THROW(p.validate(), pm::core::Error);
+}
 
 TEST(HandPass, FromTheArmsOwnCamerasItStopsWhereTheLabsPassDoesTakesTheBackgroundsAndComesBack)
 {

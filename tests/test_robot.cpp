@@ -15,6 +15,8 @@
 #include "pm/sim/TargetCatalog.h"
 #include "pm/sim/TcRobot.h"
 
+using pm::test::errorOf;
+
 using pm::sim::RobotPA10;
 
 namespace {
@@ -155,6 +157,14 @@ TEST(Servo, InvalidPosesNeverReachVpServo)
   const vpColVector q0 = servo.computeJointVelocity(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), robot.fMe(), eJe, robot.q(),
                                                     robot.jointMin(), robot.jointMax(), 0.033);
   EXPECT_LT(q0.frobeniusNorm(), 1e-3);
+  // The desired pose moved 200 mm nearer (a grasp approach): the same pose is now 200 mm off, the hand moves toward it.
+  servo.setDesired(vpHomogeneousMatrix(0, 0, 0.3, 0, 0, 0));
+  const vpColVector qIn = servo.computeJointVelocity(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), robot.fMe(), eJe, robot.q(),
+                                                     robot.jointMin(), robot.jointMax(), 0.033);
+  EXPECT_NEAR(servo.translationError(), 0.2, 1e-9);
+  EXPECT_GT((eJe * qIn)[2], 0.1); // along the hand's z, toward the target
+  EXPECT_THROW(servo.setDesired(scaled), pm::core::Error);
+  EXPECT_DOUBLE_EQ(servo.params().hdMo[2][3], 0.3);
   pm::servo::PbvsServo far;
   const vpColVector q1 = far.computeJointVelocity(vpHomogeneousMatrix(0.3, 0.2, 0.9, 0.5, 0.2, 0), robot.fMe(), eJe, robot.q(),
                                                   robot.jointMin(), robot.jointMax(), 0.033);
@@ -191,6 +201,50 @@ TEST(ClosedLoop, OracleFollowsAStepOfTheTarget)
   EXPECT_LT(maxMoving, 10.0) << "max error while moving";          // the hand keeps up with the move
   EXPECT_LT(f.translationErrorMm, 2.0); // and settles
   EXPECT_LT(f.rotationErrorDeg, 0.5);
+  EXPECT_EQ(loop.arm().limitHits(), 0);
+}
+
+TEST(ClosedLoop, AGraspApproachClosesTheHandInOnTheTargetAndNeedsASearchSpaceThatReachesIt)
+{
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::SceneParams sp;
+  sp.supersampling = 1;
+  sp.gripper = true;
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5), sp);
+  const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, 640, 480, 500);
+  pm::tracker::TrackerParams tp;
+  tp.search.budgetEvaluations = 300;
+  pm::lab::LoopParams lp;
+  lp.oracle = true; // the approach itself: servoed on the truth
+  lp.graspApproach = true;
+  lp.approach.mmPerS = 100;
+  lp.approach.settleS = 0.2;
+  const std::vector<pm::core::Phi> still = {{0, 0, 500, 0, 0, 0}};
+  auto makeTc = [&](const vpHomogeneousMatrix &wMh0) {
+    return std::make_unique<pm::sim::TcRobot>(wMh0, pm::sim::Trajectory(still, 10.0, 1.0));
+  };
+  // The default search space starts at 320 mm: it does not reach the grasp's 300 mm.
+  EXPECT_NE(errorOf([&] { const pm::lab::ClosedLoop l(rig, scene, sm, tp, pm::servo::ServoParams(), lp, makeTc); }).find("search space"),
+            std::string::npos);
+  tp.search.space.lo[2] = 250;
+  pm::lab::ClosedLoop loop(rig, scene, sm, tp, pm::servo::ServoParams(), lp, makeTc);
+  pm::lab::LoopFrame f;
+  double zPrev = 1e9, zAt1s = 0;
+  for (int k = 0; k < 105; ++k) { // 3.5 s: settled 0.2 s, 2 s closing in at 100 mm/s, then held at 300 mm
+    f = loop.step();
+    const double z = 1e3 * f.hMmTrue[2][3];
+    EXPECT_LT(z, zPrev + 1.0) << k; // never backs away
+    zPrev = z;
+    if (k == 30)
+      zAt1s = z;
+    // Keeps up with the desired pose as it moves: a proportional servo lags a goal moving at v by
+    // about v / gain (100 mm/s over the adaptive gain's 1.5 to 4 per second: 25 to 67 mm).
+    EXPECT_LT(f.translationErrorMm, 40.0) << k;
+  }
+  EXPECT_LT(zAt1s, 470.0); // closing in after 1 s, behind its goal (80 mm in) by the lag, never ahead of it
+  EXPECT_GT(zAt1s, 500 - 100 * (1.0 - 0.2) - 5.0);
+  EXPECT_NEAR(1e3 * f.hMmTrue[2][3], 300, 3.0);      // at the grasp's distance
+  EXPECT_LT(f.translationErrorMm, 2.0);
   EXPECT_EQ(loop.arm().limitHits(), 0);
 }
 

@@ -96,6 +96,34 @@ TEST(RunLog, OnlineFiguresEqualTheBatchOnes)
   }
 }
 
+TEST(RunLog, TheNearestTheTargetCameAndHowWellItWasSeenThere)
+{
+  // A grasp approach: 500 mm to 300 mm in 200 frames, then held 60; the estimate 0.5 mm off while
+  // farther than 310 mm, 1.5 mm and 0.8 deg nearer, and one frame searching at 300 mm 40 mm off.
+  const pm::robot::Pa10Model robot;
+  pm::lab::RunLog log(261, 30, robot, 500);
+  for (long k = 0; k < 261; ++k) {
+    LoopFrame f;
+    f.t = static_cast<double>(k) / 30.0;
+    f.q = robot.restJoints();
+    f.qdot.resize(7, 0.0);
+    const double z = std::max(300.0, 500.0 - static_cast<double>(k));
+    f.hMmTrue = vpHomogeneousMatrix(0, 0, 1e-3 * z, 0, 0, 0);
+    f.track.state = k == 250 ? pm::tracker::TrackState::Searching : pm::tracker::TrackState::Tracking;
+    f.estimateErrorMm = k == 250 ? 40 : (z >= 310 ? 0.5 : 1.5);
+    f.estimateErrorDeg = z >= 310 ? 0.2 : 0.8;
+    log.add(f);
+  }
+  log.finish();
+  EXPECT_DOUBLE_EQ(log.nearestMm(), 300);
+  const pm::lab::ErrorStats e = log.estimateNearest();
+  EXPECT_EQ(e.frames, 60u + 10u - 1u); // held at 300 (the searching frame left out) and 309..301 on the way
+  EXPECT_DOUBLE_EQ(e.maxMm, 1.5);
+  EXPECT_DOUBLE_EQ(e.maxDeg, 0.8);
+  EXPECT_EQ(log.estimateNearest(30).frames, e.frames + 20u); // 329..310 too
+  EXPECT_DOUBLE_EQ(log.estimateNearest(30).maxMm, 1.5);
+}
+
 TEST(RunLog, NeverConvergedMeansTheWholeRun)
 {
   const pm::robot::Pa10Model robot;

@@ -25,6 +25,12 @@ void GuardedServo::setDesired(const vpHomogeneousMatrix &hdMo)
   m_sp = sp;
 }
 
+void GuardedServo::moveDesired(const vpHomogeneousMatrix &hdMo)
+{
+  m_servo->setDesired(hdMo);
+  m_sp.hdMo = hdMo;
+}
+
 bool GuardedServo::certainEnough(const precise::PoseUncertainty &u) const
 {
   return !u.known || ((m_gp.maxSigmaMm <= 0 || u.maxMm() <= m_gp.maxSigmaMm) && (m_gp.maxSigmaDeg <= 0 || u.maxDeg() <= m_gp.maxSigmaDeg));

@@ -29,6 +29,15 @@ ClosedLoop::ClosedLoop(const core::StereoRig &rig, const sim::Scene &scene, cons
 {
   if (!(lp.fps > 0 && lp.robotDt > 0 && lp.robotDt <= 1.0 / lp.fps))
     throw core::Error("closed loop: the frame rate must be positive and the robot step at most a frame");
+  if (lp.graspApproach) {
+    m_approach.emplace(lp.approach, sp.hdMo);
+    if (!(lp.approach.toMm > tp.search.space.lo[2]))
+      throw core::Error("closed loop: the grasp approach ends at " + std::to_string(static_cast<int>(lp.approach.toMm)) +
+                        " mm, nearer than the tracker's search space reaches (z from " +
+                        std::to_string(static_cast<int>(tp.search.space.lo[2])) + " mm): widen search.space");
+    m_hdMo = m_approach->hdMo();
+    m_guard.moveDesired(m_hdMo);
+  }
   // The target starts at the desired pose in front of the hand.
   m_tc = makeTc(m_arm->fMh());
   if (!m_tc)
@@ -83,6 +92,11 @@ LoopFrame ClosedLoop::step()
   f.estimateErrorDeg = core::rotationDistanceDeg(f.track.phi, truth);
   f.usedErrorMm = core::translationDistanceMm(used, truth);
   f.usedErrorDeg = core::rotationDistanceDeg(used, truth);
+  if (m_approach) { // closes in for the next frame
+    m_approach->advance(f.servoing, 1.0 / m_lp.fps);
+    m_hdMo = m_approach->hdMo();
+    m_guard.moveDesired(m_hdMo);
+  }
   ++m_frame;
   return f;
 }

@@ -73,6 +73,10 @@ void RunLog::add(const LoopFrame &f)
   m_minVisible = std::min(m_minVisible, f.track.visibleShare);
   if (converged() && f.track.state == tracker::TrackState::Tracking)
     m_estimate.add(f.estimateErrorMm, f.estimateErrorDeg);
+  const double distanceMm = 1e3 * f.hMmTrue[2][3];
+  m_nearestMm = std::min(m_nearestMm, distanceMm);
+  if (f.track.state == tracker::TrackState::Tracking)
+    m_byDistance[static_cast<std::size_t>(std::clamp(distanceMm / 10, 0.0, 199.0))].add(f.estimateErrorMm, f.estimateErrorDeg);
   m_held += f.servoing ? 0 : 1;
   m_servoed += f.servoing ? 1 : 0;
 
@@ -96,6 +100,17 @@ void RunLog::add(const LoopFrame &f)
 }
 
 // A run longer than expected: pairs of samples become one, and buckets twice as long.
+ErrorStats RunLog::estimateNearest(double spanMm) const
+{
+  ErrorStats e;
+  if (m_frames == 0)
+    return e;
+  const auto first = static_cast<std::size_t>(std::clamp(m_nearestMm / 10, 0.0, 199.0));
+  for (std::size_t b = first; b < m_byDistance.size() && 10.0 * static_cast<double>(b) < m_nearestMm + spanMm; ++b)
+    e.add(m_byDistance[b]);
+  return e;
+}
+
 void RunLog::halveSamples()
 {
   std::size_t j = 0;

@@ -9,6 +9,21 @@
 
 namespace pm::lab {
 
+namespace {
+//! The nearest the target came and how well it was seen there (a grasp approach's end).
+nlohmann::json nearestJson(const RunLog &log)
+{
+  const ErrorStats e = log.estimateNearest();
+  return {{"distance_mm", log.nearestMm()},
+          {"estimate_frames", e.frames},
+          {"estimate_rms_mm", e.rmsMm()},
+          {"estimate_max_mm", e.maxMm},
+          {"estimate_rms_deg", e.rmsDeg()},
+          {"estimate_max_deg", e.maxDeg},
+          {"over", "the tracked frames whose target stood within 10 mm of the nearest distance (the true pose's z)"}};
+}
+} // namespace
+
 std::string runSummaryJson(const RunLog &log, const RunInfo &info)
 {
   const ErrorStats &rest = log.atRest(), &moving = log.moving();
@@ -41,6 +56,7 @@ std::string runSummaryJson(const RunLog &log, const RunInfo &info)
                      "raw estimate: the tracker's own, before the filter"},
       {"estimate_error", {{"rms_mm", log.estimate().rmsMm()}, {"max_mm", log.estimate().maxMm}, {"rms_deg", log.estimate().rmsDeg()},
                           {"max_deg", log.estimate().maxDeg}, {"over", "the tracker's own estimate, tracked frames from convergence on"}}},
+      {"nearest", nearestJson(log)},
       {"frames_precise", log.framesPrecise()},
       {"visible_share", {{"min", log.minVisibleShare()}, {"frames_partly_hidden", log.framesPartlyHidden()},
                          {"over", "the share of the model's points on the images not found hidden (the lower camera's), at the estimate"}}},

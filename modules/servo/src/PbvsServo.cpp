@@ -34,6 +34,14 @@ PbvsServo::PbvsServo(const ServoParams &params) : m_params(params), m_vObj(6, 0.
   m_task.addFeature(m_tu);
 }
 
+void PbvsServo::setDesired(const vpHomogeneousMatrix &hdMo)
+{
+  ServoParams p = m_params;
+  p.hdMo = hdMo;
+  p.validate();
+  m_params = p;
+}
+
 vpColVector PbvsServo::stop(unsigned dof)
 {
   m_havePrev = false;

@@ -96,6 +96,12 @@ public:
                       const vpMatrix &hJe, double dt, const vpHomogeneousMatrix *oracle = nullptr);
   //! From now on, keep the target at \e hdMo in the hand frame (ServoParams::hdMo; the servo starts afresh).
   void setDesired(const vpHomogeneousMatrix &hdMo);
+  /*!
+    Moves the pose the servo keeps to \e hdMo (a grasp approach closing in, a little every frame):
+    the servo goes on, with its memory of the target's motion. Throws pm::core::Error unless
+    \e hdMo is a rigid transformation.
+  */
+  void moveDesired(const vpHomogeneousMatrix &hdMo);
   //! The pose of the target in the hand frame the servo keeps.
   const vpHomogeneousMatrix &desired() const { return m_sp.hdMo; }
   //! Whether the estimate is filtered (GuardParams::filter, Auto resolved for the tracker).

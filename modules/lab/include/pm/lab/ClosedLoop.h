@@ -18,6 +18,9 @@
 
 #include <visp3/core/vpColVector.h>
 
+#include <optional>
+
+#include "pm/hand/GraspApproach.h"
 #include "pm/hand/GuardedServo.h"
 #include "pm/robot/Arm.h"
 #include "pm/sim/Scene.h"
@@ -45,6 +48,13 @@ struct LoopParams : hand::GuardParams
   */
   bool realTime = false;
   vpHomogeneousMatrix eMh; //!< the rig's hand frame on that arm's flange (identity: the rig looks along the flange's z axis)
+  /*!
+    A grasp approach (hand::GraspApproach): while servoed, the hand closes in on the target from
+    approach.fromMm to approach.toMm; the desired pose, and the errors against it, follow it. The
+    tracker's search space must reach approach.toMm.
+  */
+  bool graspApproach = false;
+  hand::GraspApproachParams approach; //!< its distances and speed
 };
 
 //! What the camera does at a frame (LoopFaults::camera).
@@ -151,6 +161,7 @@ private:
   tracker::PhotoModelTracker m_tracker;
   std::unique_ptr<robot::Arm> m_arm;
   hand::GuardedServo m_guard;    //!< after m_tracker and m_arm: made from them
+  std::optional<hand::GraspApproach> m_approach; //!< LoopParams::graspApproach
   LoopFaults m_faults;
   std::unique_ptr<sim::TcRobot> m_tc;
   sim::StereoImages m_images;

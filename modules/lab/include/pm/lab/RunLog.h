@@ -117,6 +117,14 @@ public:
   long framesPartlyHidden() const { return m_partlyHidden; }
   //! The lowest TrackResult::visibleShare of the run (1 without frames).
   double minVisibleShare() const { return m_minVisible; }
+  //! The nearest the target came ahead of the hand (the true pose's z, mm; a grasp approach's end).
+  double nearestMm() const { return m_nearestMm; }
+  /*!
+    The tracker's own estimate against the truth over the tracked frames whose target stood within
+    \e spanMm of nearestMm() (kept online in 10 mm bands of distance: the bands that start within
+    the span), e.g. how well the hand saw the target at the end of a grasp approach.
+  */
+  ErrorStats estimateNearest(double spanMm = 10) const;
   //! The tracker's mean time per frame (TrackResult::computeMs, ms; 0 without frames).
   double meanComputeMs() const { return m_frames ? m_sumMs / static_cast<double>(m_frames) : 0; }
   //! The decimated record for the plots (the last, partial bucket only after finish()).
@@ -140,6 +148,8 @@ private:
   int m_violations = 0;
   double m_maxSpeedFraction = 0, m_sumMs = 0, m_minVisible = 1;
   long m_partlyHidden = 0;
+  double m_nearestMm = 1e9;
+  std::array<ErrorStats, 200> m_byDistance{}; //!< the tracked frames' estimate errors in 10 mm bands of distance (0 to 2 m)
   long m_servoedOnWrong = 0, m_servoedOnWrongRaw = 0, m_held = 0, m_servoed = 0, m_precise = 0;
   ErrorStats m_estimate;
   std::vector<RunSample> m_samples;

@@ -88,6 +88,12 @@ public:
   vpColVector computeJointVelocity(const vpHomogeneousMatrix &hMo, const vpHomogeneousMatrix &fMe, const vpMatrix &eJe,
                                    const vpColVector &q, const vpColVector &qmin, const vpColVector &qmax, double dt,
                                    const vpColVector *targetTwist = nullptr);
+  /*!
+    Keeps the target at \e hdMo from the next call on (a grasp approach closing in), the
+    feed-forward's memory of the target's motion kept. Throws pm::core::Error unless \e hdMo is a
+    rigid transformation.
+  */
+  void setDesired(const vpHomogeneousMatrix &hdMo);
   //! Zero velocity for \e dof joints; the feed-forward forgets the target's motion.
   vpColVector stop(unsigned dof);
   //! Norm of the translation of the last servo error cdMc (m).
