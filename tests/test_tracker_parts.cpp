@@ -108,6 +108,42 @@ TEST(LockState, ALockNeverTrustedAndPlainlyWrongForItsFramesIsDroppedAsIfRefused
   EXPECT_THROW(p.validate(), pm::core::Error);
 }
 
+TEST(LockState, ALockNeverTrustedAndDoubtfulForItsFramesIsDroppedTooARightOneNearTrustIsNot)
+{
+  pm::tracker::LockParams p; // doubtful under 0.5 for 45 judged frames in a row
+  pm::tracker::LockState s(p);
+  s.update(0.5, false);
+  for (int k = 0; k < 44; ++k) { // a wrong lock over the gate (0.05): the plainly wrong rule never fires
+    s.onJudged(k % 2 ? 0.25 : 0.4, false);
+    EXPECT_EQ(s.update(0.5, false), RmGaUpdate::Restart::None) << k;
+  }
+  s.onJudged(0.3, false); // the 45th: dropped on the next frame, as if refused
+  EXPECT_EQ(s.update(0.9, false), RmGaUpdate::Restart::AwayFromBest);
+  EXPECT_EQ(s.state(), TrackState::Searching);
+  // A lock whose confidence rises over 0.5 now and then (a right pose not yet trusted) is kept.
+  s.update(0.5, false);
+  for (int k = 0; k < 200; ++k) {
+    s.onJudged(k % 40 == 39 ? 0.6 : 0.45, false);
+    EXPECT_EQ(s.update(0.5, false), RmGaUpdate::Restart::None) << k;
+  }
+  // Nor is one trusted once, however doubtful afterwards (an occluder may take its confidence down).
+  s.onJudged(0.97, true);
+  for (int k = 0; k < 100; ++k) {
+    s.onJudged(0.3, false);
+    EXPECT_EQ(s.update(0.5, false), RmGaUpdate::Restart::None);
+  }
+  EXPECT_EQ(s.state(), TrackState::Tracking);
+  p.doubtFrames = 0; // off
+  pm::tracker::LockState never(p);
+  never.update(0.5, false);
+  for (int k = 0; k < 100; ++k) {
+    never.onJudged(0.3, false);
+    EXPECT_EQ(never.update(0.5, false), RmGaUpdate::Restart::None);
+  }
+  p.doubtConfidence = 0.01; // under the lock's confidence
+  EXPECT_THROW(p.validate(), pm::core::Error);
+}
+
 TEST(SteadyFramePolicy, SteadyAfterItsFramesNearTheRecentBestWhichIsRememberedThroughALoss)
 {
   pm::tracker::SteadyParams p; // steady after 3 frames within 0.03 of the recent best

@@ -87,11 +87,12 @@ Evidence Judgement::measure(const TrackResult &r) const
     e.lineSigmas = precise::lineSigmas(p.information);
     const std::array<double, 6> &s = e.lineSigmas;
     c.precise = true;
-    c.preciseResidualPx = p.residualPx;
+    const double toReference = std::clamp(phi.z, 50.0, 5000.0) / ConfidenceCues::kPixelCueDistanceMm;
+    c.preciseResidualPx = p.residualPx * toReference;
     c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
     c.preciseSigmaDeg = std::min(1e3, std::max({s[3], s[4], s[5]}));
     c.separation = p.separation;
-    c.cameraDisagreementPx = std::fabs(p.residualPxPerCamera[0] - p.residualPxPerCamera[1]);
+    c.cameraDisagreementPx = std::fabs(p.residualPxPerCamera[0] - p.residualPxPerCamera[1]) * toReference;
   }
   return e;
 }

@@ -12,15 +12,19 @@ void LockParams::validate() const
     throw core::Error("tracker: lost frames must be at least 1");
   if (!(confidence >= 0 && confidence < 1))
     throw core::Error("tracker: the lock confidence must lie in [0, 1)");
-  if (dropAfterFrames < 0)
+  if (dropAfterFrames < 0 || doubtFrames < 0)
     throw core::Error("tracker: the frames that drop a lock never trusted must be non-negative");
+  if (!(doubtConfidence >= confidence && doubtConfidence < 1))
+    throw core::Error("tracker: the doubtful lock's confidence must lie in [the lock confidence, 1)");
 }
 
 RmGaUpdate::Restart LockState::update(double q, bool refused)
 {
   const TrackState prev = m_state;
-  if (m_state == TrackState::Tracking && m_p.dropAfterFrames > 0 && m_wrongFrames >= m_p.dropAfterFrames) {
-    m_state = TrackState::Searching; // a lock never trusted, plainly wrong for long: refused after all
+  const bool wrongLong = m_p.dropAfterFrames > 0 && m_wrongFrames >= m_p.dropAfterFrames;
+  const bool doubtfulLong = m_p.doubtFrames > 0 && m_doubtFrames >= m_p.doubtFrames;
+  if (m_state == TrackState::Tracking && (wrongLong || doubtfulLong)) {
+    m_state = TrackState::Searching; // a lock never trusted, plainly wrong or doubtful for long: refused after all
     refused = true;
   } else if (q >= m_p.quality && !refused) {
     m_state = TrackState::Tracking;
@@ -33,6 +37,7 @@ RmGaUpdate::Restart LockState::update(double q, bool refused)
   if (m_state != TrackState::Tracking || prev != TrackState::Tracking) { // a new lock, or none
     m_trusted = false;
     m_wrongFrames = 0;
+    m_doubtFrames = 0;
   }
   if (refused) // the search converged on a plainly wrong pose: everywhere again, that pose avoided for a while
     return RmGaUpdate::Restart::AwayFromBest;
@@ -47,6 +52,7 @@ void LockState::onJudged(double confidence, bool trusted)
     return;
   m_trusted = m_trusted || trusted;
   m_wrongFrames = !m_trusted && confidence < m_p.confidence ? m_wrongFrames + 1 : 0;
+  m_doubtFrames = !m_trusted && confidence < m_p.doubtConfidence ? m_doubtFrames + 1 : 0;
 }
 
 void LockState::reset(TrackState state)
@@ -56,6 +62,7 @@ void LockState::reset(TrackState state)
   m_framesTracked = 0;
   m_trusted = state == TrackState::Tracking; // a pose given (initFromPose) is taken as right
   m_wrongFrames = 0;
+  m_doubtFrames = 0;
 }
 
 } // namespace pm::tracker

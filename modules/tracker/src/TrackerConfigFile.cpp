@@ -118,7 +118,9 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
             .value("confidence", p.lock.confidence)
             .value("lost_quality", p.lock.lostQuality)
             .value("lost_frames", p.lock.lostFrames)
-            .value("drop_after_frames", p.lock.dropAfterFrames);
+            .value("drop_after_frames", p.lock.dropAfterFrames)
+            .value("doubt_confidence", p.lock.doubtConfidence)
+            .value("doubt_frames", p.lock.doubtFrames);
       })
       .section("steady", [&](V &s) {
         s.value("budget_fraction", p.steady.budgetFraction)

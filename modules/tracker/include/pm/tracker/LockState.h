@@ -11,7 +11,10 @@
   keeps the search going, scattered away from it, instead of locking and waiting for a challenger.
   A lock made but never trusted whose confidence stays under \e confidence for dropAfterFrames
   judged frames in a row (onJudged()) is dropped the same way: a wrong first lock that got past the
-  gate, which the lock's challenger did not overturn, gives way instead of holding the search.
+  gate, which the lock's challenger did not overturn, gives way instead of holding the search. So is
+  one whose confidence stays under \e doubtConfidence for doubtFrames judged frames in a row: a
+  wrong lock a little over the gate (a head turned 20 deg, confidence 0.2 to 0.4) that would
+  otherwise hold the arm for good; a right lock is trusted, or near it, long before.
 
   \code
     pm::tracker::LockState lock(params.lock);
@@ -33,6 +36,8 @@ struct LockParams
   double lostQuality = 0.2;  //!< q below which, for lostFrames frames, it is lost
   int lostFrames = 3;        //!< frames in a row under lostQuality that make a tracked target lost (>= 1)
   int dropAfterFrames = 10;  //!< judged frames in a row of a lock never trusted under \e confidence that drop it (0: never)
+  double doubtConfidence = 0.5; //!< a lock never trusted under this confidence ...
+  int doubtFrames = 45;      //!< ... for this many judged frames in a row is dropped too (0: never)
 
   //! Throws core::Error naming the first parameter out of range.
   void validate() const;
@@ -67,6 +72,7 @@ private:
   int m_framesTracked = 0;
   bool m_trusted = false; //!< the lock was trusted on a frame since it was made
   int m_wrongFrames = 0;  //!< judged frames in a row of a lock never trusted under LockParams::confidence
+  int m_doubtFrames = 0;  //!< judged frames in a row of a lock never trusted under LockParams::doubtConfidence
 };
 
 } // namespace pm::tracker

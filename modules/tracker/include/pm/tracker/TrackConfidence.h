@@ -58,11 +58,17 @@ struct ConfidenceCues
   bool verified = false;     //!< the lock survived its challenger search
   bool tracking = false;     //!< the state is tracking
   bool precise = false;      //!< the precise stage's pose is the frame's (the cues below are measured)
-  double preciseResidualPx = 0; //!< PreciseResult::residualPx
+  /*!
+    PreciseResult::residualPx as seen from kPixelCueDistanceMm (times the pose's z / 500): the model's
+    outline error is in mm on the target, and its pixels grow as the hand closes in (1.7 times at 300 mm).
+  */
+  double preciseResidualPx = 0;
   double preciseSigmaMm = 0;    //!< the largest of the lines' own 1-sigma along x, y, z (mm, lineSigmas())
   double preciseSigmaDeg = 0;   //!< the largest of the lines' own 1-sigma about x, y, z (deg)
   double separation = 0;        //!< PreciseResult::separation, in [0, 1]
-  double cameraDisagreementPx = 0; //!< |left camera's residual - right camera's| (px)
+  double cameraDisagreementPx = 0; //!< |left camera's residual - right camera's| (px, as seen from kPixelCueDistanceMm too)
+  //! The distance the pixel cues are stated at (mm): the lab's, where the coefficients were fitted.
+  static constexpr double kPixelCueDistanceMm = 500;
 
   static constexpr std::size_t kFeatures = 18; //!< the number of features
   /*!
