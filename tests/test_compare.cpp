@@ -238,6 +238,67 @@ TEST(Scenario, TheForcedLossBlanksTheFramesAndTheTargetJumps)
   EXPECT_THROW(pm::compare::makeScenario("nope", {}), pm::core::Error);
 }
 
+TEST(Scenario, TheWorldAroundTheTargetOnRequestAStillBackdropClutterAndAGraspWithTheFingersInView)
+{
+  const std::vector<std::string> names{"still-backdrop", "clutter", "grasp"};
+  for (const auto &name : names) { // on request only: the default comparison and its figures unchanged
+    EXPECT_EQ(std::count(pm::compare::scenarioNames().begin(), pm::compare::scenarioNames().end(), name), 0) << name;
+    EXPECT_EQ(std::count(pm::compare::allScenarioNames().begin(), pm::compare::allScenarioNames().end(), name), 1) << name;
+  }
+  const pm::compare::Scenario still = pm::compare::makeScenario("still-backdrop", {});
+  const pm::compare::Scenario clutter = pm::compare::makeScenario("clutter", {});
+  const pm::compare::Scenario grasp = pm::compare::makeScenario("grasp", {});
+  for (const auto &f : still.frames)
+    EXPECT_TRUE(f.stillBackdrop && !f.clutter && !f.gripper);
+  for (const auto &f : clutter.frames)
+    EXPECT_TRUE(f.clutter && !f.stillBackdrop && !f.gripper);
+  for (const auto &f : grasp.frames)
+    EXPECT_TRUE(f.gripper && !f.clutter && !f.stillBackdrop);
+  EXPECT_NEAR(grasp.frames.front().hMo[2][3], 0.5, 1e-9); // from 500 to 300 mm ahead
+  EXPECT_NEAR(grasp.frames.back().hMo[2][3], 0.3, 1e-9);
+  // What they need: the clutter's toys built, a search that reaches 300 mm.
+  pm::sim::SceneParams sp;
+  sp.supersampling = 1;
+  pm::rmga::SearchSpace space;
+  pm::compare::prepareForScenarios({"table2"}, sp, space);
+  EXPECT_FALSE(sp.clutter);
+  EXPECT_DOUBLE_EQ(space.lo[2], pm::rmga::SearchSpace().lo[2]);
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  pm::sim::Scene plain(pm::sim::makeTarget("C12", 0.5), sp);
+  EXPECT_THROW(pm::compare::renderScenarioFrame(plain, rig, clutter, 0), pm::core::Error);
+  pm::compare::prepareForScenarios(names, sp, space);
+  EXPECT_TRUE(sp.clutter);
+  EXPECT_LE(space.lo[2], 250.0);
+  pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5), sp);
+  // Each scenario's frame differs from the same pose in the plain world where it should: the
+  // clutter beside the target, the fingers at the bottom; the still backdrop stays in the images
+  // while the target moves (the hand is held in pm-compare), where a resting one moves with it.
+  auto render = [&](const pm::compare::Scenario &s, std::size_t k, bool plainWorld) {
+    pm::compare::Scenario one = s;
+    if (plainWorld) {
+      one.frames[k] = pm::compare::ScenarioFrame();
+      one.frames[k].hMo = s.frames[k].hMo;
+    }
+    return pm::compare::renderScenarioFrame(scene, rig, one, k).left;
+  };
+  auto changedShare = [](const vpImage<vpRGBa> &a, const vpImage<vpRGBa> &b, unsigned v0, unsigned v1) {
+    long changed = 0, all = 0;
+    for (unsigned v = v0; v < v1; ++v)
+      for (unsigned u = 0; u < a.getWidth(); ++u, ++all)
+        changed += std::abs(static_cast<int>(a[v][u].R) - static_cast<int>(b[v][u].R)) + std::abs(static_cast<int>(a[v][u].G) - static_cast<int>(b[v][u].G)) +
+                           std::abs(static_cast<int>(a[v][u].B) - static_cast<int>(b[v][u].B)) > 60 ? 1 : 0; // well over the noise
+    return static_cast<double>(changed) / static_cast<double>(all);
+  };
+  EXPECT_GT(changedShare(render(clutter, 60, false), render(clutter, 60, true), 0, 480), 0.03);
+  const std::size_t last = grasp.frames.size() - 1;
+  const vpImage<vpRGBa> withFingers = render(grasp, last, false), without = render(grasp, last, true);
+  EXPECT_GT(changedShare(withFingers, without, 400, 480), 0.1);
+  EXPECT_LT(changedShare(withFingers, without, 0, 240), 0.01); // the fingers stay in the lower half
+  // The top rows, away from the target: the still backdrop's stay, the resting one's move.
+  EXPECT_LT(changedShare(render(still, 0, false), render(still, 60, false), 0, 60), 0.01);
+  EXPECT_GT(changedShare(render(still, 0, true), render(still, 60, true), 0, 60), 0.1);
+}
+
 TEST(ComparedTrackers, ViSPsTrackersStartedAtTheTruthStayNearItOnSlowMotion)
 {
   // The .cao model and the template are right if ViSP's trackers, started at the true pose,

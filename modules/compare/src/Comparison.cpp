@@ -95,6 +95,7 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
       throw core::Error("compare: unknown tracker '" + k + "'");
   if (!std::ifstream(m_p.mbtXml))
     throw core::Error("cannot read the MBT settings " + m_p.mbtXml);
+  prepareForScenarios(m_p.scenarios, m_p.scene, m_p.tracker.search.space);
   m_s = std::make_unique<Setup>(sim::makeTarget(m_p.target), m_p.scene);
   m_s->scenarios = makeScenarios(m_p.scenarios, m_p.trajectoryPath, m_p.steps);
   m_s->flat = sim::makeSimulatedPhotoModel(m_s->scene, rig.left.cam, rig.left.width, rig.left.height, m_p.distanceMm);

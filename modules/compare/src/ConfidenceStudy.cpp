@@ -42,6 +42,8 @@ ConfidenceStudy runConfidenceStudy(const core::StereoRig &defaultRig, const Conf
     sp.supersampling = pass.supersampling;
     if (!pass.strand)
       sp.occluderSizeMm[0] = 40; // pm-compare's strand
+    rmga::SearchSpace space;
+    prepareForScenarios(params.scenarios, sp, space);
     sim::Scene scene(sim::makeTarget(pass.target), sp);
     std::function<void(sim::Scene &, double)> sceneAt;
     if (!pass.distractor.empty()) {
@@ -70,6 +72,7 @@ ConfidenceStudy runConfidenceStudy(const core::StereoRig &defaultRig, const Conf
       c.params.search.ga.seed = r.seed;
       c.params.steady.budgetFraction = r.steady;
       c.params.refinement.precise.enabled = params.precise;
+      c.params.search.space = space;
       c.name = pass.label + ": " + (params.allAround ? "all-around model of " : r.stereo || params.stereo ? "stereo model of " : "model of ") + r.model +
                ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) + (r.steady < 1 ? ", steady frames 25 %" : "");
       runs.push_back(c);

@@ -1,5 +1,6 @@
 #include "pm/compare/Scenario.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -19,7 +20,8 @@ const std::vector<std::string> &scenarioNames()
 
 const std::vector<std::string> &allScenarioNames()
 {
-  static const std::vector<std::string> names{"table2", "sinusoid", "fast", "occlusion", "lighting", "loss", "random6dof"};
+  static const std::vector<std::string> names{"table2",     "sinusoid",       "fast",    "occlusion", "lighting",
+                                              "loss",       "random6dof",     "still-backdrop", "clutter", "grasp"};
   return names;
 }
 
@@ -132,6 +134,32 @@ Scenario makeScenario(const std::string &name, const std::vector<core::Phi> &tab
       return fr;
     });
     s.description = "a random smooth 6-DoF motion: x, y +-40 mm, z +-30 mm, up to 45 deg about every axis, 20 s";
+  } else if (name == "still-backdrop") {
+    s = timed(10, fps, [](double t) {
+      ScenarioFrame f;
+      const double w = 2 * M_PI * 0.2 * t;
+      f.hMo = core::toHomogeneousMatrix(core::Phi{60 * std::sin(w), 30 * std::sin(0.65 * w), 500 + 20 * std::sin(0.5 * w),
+                                                  0.05 * std::sin(0.8 * w), 0.06 * std::sin(w), 0.05 * std::sin(w)});
+      f.stillBackdrop = true;
+      return f;
+    });
+    s.description = "x 60 mm, y 30 mm, z 20 mm, turns up to 7 deg, in front of a backdrop that stands still 50 mm farther back, 10 s";
+  } else if (name == "clutter") {
+    s = timed(8, fps, [](double t) {
+      ScenarioFrame f;
+      f.hMo = core::toHomogeneousMatrix(sway(t));
+      f.clutter = true;
+      return f;
+    });
+    s.description = "slow sway among three other toys, one of similar hue, 8 s";
+  } else if (name == "grasp") {
+    s = timed(10, fps, [](double t) {
+      ScenarioFrame f;
+      f.hMo = core::toHomogeneousMatrix(core::Phi{10 * std::sin(2 * M_PI * 0.2 * t), 0, ramp(t, 1, 8, 500, 300), 0, 0, 0});
+      f.gripper = true;
+      return f;
+    });
+    s.description = "from 500 to 300 mm in front of the hand (1-8 s), the gripper's fingers in view, 10 s";
   } else if (name == "loss") {
     const int blank0 = static_cast<int>(2 * fps), blank1 = blank0 + static_cast<int>(0.5 * fps), jump = static_cast<int>(5 * fps);
     for (int k = 0; k < static_cast<int>(8 * fps); ++k) {
@@ -168,14 +196,28 @@ std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const
   return seqs;
 }
 
+void prepareForScenarios(const std::vector<std::string> &names, sim::SceneParams &scene, rmga::SearchSpace &space)
+{
+  auto has = [&](const char *n) { return std::find(names.begin(), names.end(), n) != names.end(); };
+  scene.clutter = scene.clutter || has("clutter");
+  if (has("grasp"))
+    space.lo[2] = std::min(space.lo[2], 250.0);
+}
+
 sim::StereoImages renderScenarioFrame(sim::Scene &scene, const core::StereoRig &rig, const Scenario &s, std::size_t k)
 {
   const ScenarioFrame &f = s.frames.at(k);
   scene.params().exposure = f.exposure;
   scene.params().lightDirHand[0] = f.lightX;
   scene.params().occluder = f.occluded;
-  if (!f.blank)
-    return scene.renderStereo(rig, f.hMo, static_cast<std::uint64_t>(k));
+  scene.params().stillBackdrop = f.stillBackdrop;
+  scene.params().gripper = f.gripper;
+  if (f.clutter && !scene.hasClutter())
+    throw core::Error("scenario " + s.name + ": clutter in a scene made without it (sim::SceneParams::clutter)");
+  scene.params().clutter = f.clutter;
+  if (!f.blank) // a still backdrop stays where it stood at the first frame
+    return scene.renderStereo(rig, f.hMo, static_cast<std::uint64_t>(k),
+                              f.stillBackdrop ? f.hMo.inverse() * s.frames.front().hMo : vpHomogeneousMatrix());
   sim::StereoImages im;
   im.left.resize(rig.left.height, rig.left.width, vpRGBa(0, 0, 0, 255));
   im.right.resize(rig.right.height, rig.right.width, vpRGBa(0, 0, 0, 255));

@@ -11,6 +11,14 @@
     upper left to the right;
   - loss: the frames go blank for 0.5 s while the target moves 60 mm, then later the target
     jumps 50 mm and 8 degrees from one frame to the next.
+  On request only (allScenarioNames()):
+  - random6dof: a random smooth 6-DoF motion, rotations up to 45 deg;
+  - still-backdrop: the target sways and turns in front of a backdrop that stands still 50 mm
+    farther back, so that the background slides behind its outline;
+  - clutter: the slow sway with three other toys around the target, one of similar hue (the scene
+    must be made with sim::SceneParams::clutter on: Comparison does so);
+  - grasp: the target comes from 500 to 300 mm in front of the hand (a grasp approach seen from the
+    hand) with the gripper's fingers in view.
 */
 #include <string>
 #include <vector>
@@ -19,6 +27,7 @@
 
 #include "pm/core/Pose.h"
 #include "pm/core/StereoRig.h"
+#include "pm/rmga/SearchSpace.h"
 #include "pm/sim/Scene.h"
 
 namespace pm::compare {
@@ -32,6 +41,9 @@ struct ScenarioFrame
   bool occluded = false;     //!< the seaweed is in front of the toy
   double exposure = 1.0;     //!< the scene's exposure, a global brightness gain (sim::SceneParams::exposure)
   double lightX = -0.35;     //!< x of the direction toward the light (hand frame; y -0.6, z -1)
+  bool stillBackdrop = false; //!< the backdrop stands still where it stood at the first frame, farther back
+  bool clutter = false;      //!< other toys stand around the target (sim::SceneParams::clutter)
+  bool gripper = false;      //!< the gripper's fingers on the hand are in view (sim::SceneParams::gripper)
 };
 
 /*!
@@ -60,7 +72,7 @@ struct Scenario
 
 //! The scenarios' names, in the order pm-compare runs them by default.
 const std::vector<std::string> &scenarioNames();
-//! Those and the ones run on request only: random6dof (a random smooth 6-DoF motion, rotations up to 45 deg).
+//! Those and the ones run on request only: random6dof, still-backdrop, clutter, grasp (see Scenario.h).
 const std::vector<std::string> &allScenarioNames();
 
 /*!
@@ -72,8 +84,16 @@ Scenario makeScenario(const std::string &name, const std::vector<core::Phi> &tab
 std::vector<Scenario> makeScenarios(const std::vector<std::string> &names, const std::string &table2Path, int steps = 0);
 
 /*!
-  The images of frame \e k of \e s: the scene set as the frame says (exposure, light, occluder),
-  rendered (frame \e k's noise), or black for a blank frame. The scene's parameters stay as set.
+  What the scenarios \e names need of the scene and of the trackers' search: the clutter's toys
+  built (clutter: \e scene.clutter on; each frame then says whether they are drawn) and a search
+  that reaches 250 mm (grasp: \e space's lower z bound).
+*/
+void prepareForScenarios(const std::vector<std::string> &names, sim::SceneParams &scene, rmga::SearchSpace &space);
+
+/*!
+  The images of frame \e k of \e s: the scene set as the frame says (exposure, light, occluder, still
+  backdrop, clutter, gripper), rendered (frame \e k's noise), or black for a blank frame. The scene's
+  parameters stay as set. Throws pm::core::Error for a frame with clutter in a scene made without it.
 */
 sim::StereoImages renderScenarioFrame(sim::Scene &scene, const core::StereoRig &rig, const Scenario &s, std::size_t k);
 
