@@ -441,6 +441,106 @@ struct CrabAhead
 };
 } // namespace
 
+namespace {
+vpImage<vpRGBa> flat(unsigned char level, unsigned w = 64, unsigned h = 48)
+{
+  return vpImage<vpRGBa>(h, w, vpRGBa(level, level, level, 255));
+}
+double meanRed(const vpImage<vpRGBa> &I, unsigned u0, unsigned v0, unsigned u1, unsigned v1)
+{
+  double s = 0;
+  for (unsigned v = v0; v < v1; ++v)
+    for (unsigned u = u0; u < u1; ++u)
+      s += I[v][u].R;
+  return s / ((u1 - u0) * (v1 - v0));
+}
+//! Sum over the image of |I(u + 1, v) - I(u, v)| (along x) or |I(u, v + 1) - I(u, v)| (along y), red channel.
+double gradientEnergy(const vpImage<vpRGBa> &I, bool alongX)
+{
+  double s = 0;
+  for (unsigned v = 0; v + 1 < I.getHeight(); ++v)
+    for (unsigned u = 0; u + 1 < I.getWidth(); ++u)
+      s += std::abs(static_cast<int>(alongX ? I[v][u + 1].R : I[v + 1][u].R) - static_cast<int>(I[v][u].R));
+  return s;
+}
+} // namespace
+
+TEST(ImageVariation, EachPresetChangesTheImagesAsARealCameraWould)
+{
+  using pm::sim::imageVariation;
+  EXPECT_FALSE(pm::sim::ImageVariation().any());
+  EXPECT_FALSE(imageVariation("").any());
+  for (const std::string &name : pm::sim::imageVariationNames()) {
+    EXPECT_TRUE(imageVariation(name).any()) << name;
+    EXPECT_NO_THROW(imageVariation(name).validate()) << name;
+  }
+  EXPECT_THROW(imageVariation("defocus,nope"), pm::core::Error);
+  const pm::sim::ImageVariation both = imageVariation("defocus,jpeg");
+  EXPECT_GT(both.defocusSigmaPx, 0);
+  EXPECT_GT(both.jpegQuality, 0);
+  pm::sim::ImageVariation bad;
+  bad.gamma = 0;
+  EXPECT_THROW(bad.validate(), pm::core::Error);
+
+  // The tone: white balance (warm) and gamma on a mid grey, exactly.
+  vpImage<vpRGBa> g = flat(128);
+  imageVariation("white-balance").applyAfterSensor(g, 1);
+  EXPECT_EQ(g[10][10].R, 147); // 128 x 1.15
+  EXPECT_EQ(g[10][10].G, 128);
+  EXPECT_EQ(g[10][10].B, 109); // 128 x 0.85
+  g = flat(128);
+  imageVariation("gamma").applyAfterSensor(g, 1);
+  EXPECT_EQ(g[10][10].R, 102); // 255 (128 / 255)^(1 / 0.75)
+  // The shot noise grows as the square root of the signal: 0.6 sqrt(level) grey levels.
+  for (int level : {50, 200}) {
+    vpImage<vpRGBa> n = flat(static_cast<unsigned char>(level), 200, 200);
+    imageVariation("shot-noise").applyAfterSensor(n, 7);
+    double s = 0, s2 = 0;
+    for (unsigned k = 0; k < n.getSize(); ++k) {
+      s += n.bitmap[k].G;
+      s2 += static_cast<double>(n.bitmap[k].G) * n.bitmap[k].G;
+    }
+    const double m = s / n.getSize(), sd = std::sqrt(s2 / n.getSize() - m * m);
+    EXPECT_NEAR(m, level, 0.3);
+    EXPECT_NEAR(sd, 0.6 * std::sqrt(static_cast<double>(level)), 0.1 * 0.6 * std::sqrt(static_cast<double>(level))) << level;
+  }
+
+  // The optics and JPEG on a rendered image of the crab.
+  CrabAhead c;
+  const pm::sim::Scene scene(c.shape);
+  scene.render(c.r, c.rig.left, c.hMo, 0, 0, c.I);
+  const vpImage<vpRGBa> plain = c.I;
+  vpImage<vpRGBa> I = plain;
+  imageVariation("defocus").applyOptics(I); // softer in both directions
+  EXPECT_LT(gradientEnergy(I, true), 0.6 * gradientEnergy(plain, true));
+  EXPECT_LT(gradientEnergy(I, false), 0.6 * gradientEnergy(plain, false));
+  I = plain;
+  pm::sim::ImageVariation along;
+  along.motionBlurPx = 8; // along x: x's gradients fall much more than y's
+  along.applyOptics(I);
+  EXPECT_LT(gradientEnergy(I, true) / gradientEnergy(plain, true), 0.8 * gradientEnergy(I, false) / gradientEnergy(plain, false));
+  I = plain;
+  imageVariation("vignetting").applyOptics(I); // the corners 35 % darker, the centre as it was
+  EXPECT_NEAR(meanRed(I, 0, 0, 8, 8) / meanRed(plain, 0, 0, 8, 8), 0.65, 0.03);
+  EXPECT_NEAR(meanRed(I, 316, 236, 324, 244), meanRed(plain, 316, 236, 324, 244), 1.0);
+  I = plain;
+  imageVariation("jpeg").applyAfterSensor(I, 1); // lossy, but close
+  double se = 0;
+  for (unsigned k = 0; k < I.getSize(); ++k)
+    se += std::pow(I.bitmap[k].G - plain.bitmap[k].G, 2);
+  const double psnr = 10 * std::log10(255.0 * 255.0 / (se / I.getSize()));
+  EXPECT_GT(psnr, 28.0);
+  EXPECT_LT(psnr, 60.0);
+  // In a scene: none gives the renderer's images bit for bit; a variation changes them.
+  pm::sim::SceneParams p;
+  p.variation = imageVariation("");
+  pm::sim::Scene(c.shape, p).render(c.r, c.rig.left, c.hMo, 0, 0, I);
+  EXPECT_TRUE(I == plain);
+  p.variation = imageVariation("camera");
+  pm::sim::Scene(c.shape, p).render(c.r, c.rig.left, c.hMo, 0, 0, I);
+  EXPECT_FALSE(I == plain);
+}
+
 TEST(Scene, OccluderHidesPartOfTheTarget)
 {
   CrabAhead c;

@@ -72,6 +72,19 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p)
                                        "(docs/occlusion.md)")->group(g);
   app.add_flag("--gripper", p.gripper, "a gripper's two fingers on the hand, entering the bottom of both images "
                                        "(pm-servo --grasp closes the hand in on the target; docs/occlusion.md)")->group(g);
+  app.add_option_function<std::string>(
+         "--vary", [&p](const std::string &names) { p.variation = sim::imageVariation(names); },
+         "the images varied as another camera's: defocus, motion-blur, vignetting, shot-noise, white-balance, gamma, jpeg "
+         "or camera (a mild mix), several comma-separated (docs/occlusion.md)")
+      ->check([](const std::string &names) {
+        try {
+          sim::imageVariation(names);
+          return std::string();
+        } catch (const core::Error &e) {
+          return std::string(e.what());
+        }
+      })
+      ->group(g);
   app.add_option("--supersampling", p.supersampling, "samples per pixel along each axis (anti-aliasing)")
       ->check(CLI::Range(1u, 4u))->group(g);
   app.add_option("--seed", p.seed, "noise seed")->group(g);

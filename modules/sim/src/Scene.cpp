@@ -46,6 +46,7 @@ void SceneParams::validate() const
   check(barWidthMm > 0 && barTravelMm > 0 && barMmPerFrame > 0 && barDepthMm < 0,
         "sweeping bar: width, travel and speed must be positive, its depth negative (in front of the toy)");
   gripperShape.validate();
+  variation.validate();
   check(stillBackdropGapMm >= 0 && stillBackdropGapMm <= 500, "still backdrop: its gap must lie in [0, 500] mm");
   check(shadows == ShadowMode::Auto || shadows == ShadowMode::Off || shadows == ShadowMode::On,
         "shadow mode must be Auto, Off or On");
@@ -233,23 +234,33 @@ void Scene::setDistractor(const TargetShape &shape)
 void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget, const vpHomogeneousMatrix &oMb) const
 {
+  // Another camera's images (SceneParams::variation): the optics before the sensor's noise, its processing after.
+  const ImageVariation &variation = m_params.variation;
+  const bool vary = variation.any();
+  const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
   if (camera.distortion.isNone()) {
-    renderIdeal(raster, camera, hMo, frame, stream, out, withTarget, m_params.noiseSigma, oMb);
-    return;
+    renderIdeal(raster, camera, hMo, frame, stream, out, withTarget, vary ? 0.0 : m_params.noiseSigma, oMb);
+    if (!vary)
+      return;
+  } else {
+    const std::shared_ptr<const LensWarp> warp = m_lensCache->get(camera);
+    core::PinholeCamera ideal = camera;
+    ideal.cam = warp->canvasCam;
+    ideal.width = warp->canvasW;
+    ideal.height = warp->canvasH;
+    ideal.distortion = core::LensDistortion();
+    vpImage<vpRGBa> canvas;
+    renderIdeal(raster, ideal, hMo, frame, stream, canvas, withTarget, 0.0, oMb);
+    out.resize(camera.height, camera.width);
+    const cv::Mat src(static_cast<int>(canvas.getHeight()), static_cast<int>(canvas.getWidth()), CV_8UC4, canvas.bitmap);
+    cv::Mat dst(static_cast<int>(camera.height), static_cast<int>(camera.width), CV_8UC4, out.bitmap);
+    cv::remap(src, dst, warp->mapU, warp->mapV, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
   }
-  const std::shared_ptr<const LensWarp> warp = m_lensCache->get(camera);
-  core::PinholeCamera ideal = camera;
-  ideal.cam = warp->canvasCam;
-  ideal.width = warp->canvasW;
-  ideal.height = warp->canvasH;
-  ideal.distortion = core::LensDistortion();
-  vpImage<vpRGBa> canvas;
-  renderIdeal(raster, ideal, hMo, frame, stream, canvas, withTarget, 0.0, oMb);
-  out.resize(camera.height, camera.width);
-  const cv::Mat src(static_cast<int>(canvas.getHeight()), static_cast<int>(canvas.getWidth()), CV_8UC4, canvas.bitmap);
-  cv::Mat dst(static_cast<int>(camera.height), static_cast<int>(camera.width), CV_8UC4, out.bitmap);
-  cv::remap(src, dst, warp->mapU, warp->mapV, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  Rasterizer::addNoise(out, m_params.noiseSigma, hash64(m_params.seed ^ hash64(frame * 8 + stream)));
+  if (vary)
+    variation.applyOptics(out);
+  Rasterizer::addNoise(out, m_params.noiseSigma, noiseSeed);
+  if (vary)
+    variation.applyAfterSensor(out, hash64(noiseSeed ^ 0x5407u)); // the shot noise's own draws
 }
 
 void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,

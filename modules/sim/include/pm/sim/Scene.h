@@ -21,6 +21,7 @@
 
 #include "pm/core/StereoRig.h"
 #include "pm/sim/Gripper.h"
+#include "pm/sim/ImageVariation.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/sim/SeaBottom.h"
 #include "pm/sim/ShadowMap.h"
@@ -105,6 +106,11 @@ struct SceneParams
   */
   bool gripper = false;
   GripperParams gripperShape; //!< the fingers' shape and place on the hand
+  /*!
+    Another camera's images (ImageVariation.h: defocus, motion blur, vignetting, shot noise, white
+    balance, gamma, JPEG); none by default: the renderer's own images, bit for bit.
+  */
+  ImageVariation variation;
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
