@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include "TestSupport.h"
@@ -36,6 +37,18 @@ struct LabTarget
       : scene(pm::sim::makeTarget(code)), model(pm::lab::makeLabModel(scene, rig(), pm::lab::LabModelChoice()))
   {
   }
+  //! Its model with the toy's own outlines (pm::test::useTrueOutlines), made once: two landing cases share the crab's.
+  const pm::core::PhotoModel &withTrueOutlines() const
+  {
+    if (!m_true) {
+      m_true = std::make_unique<pm::core::PhotoModel>(model.build.model);
+      pm::test::useTrueOutlines(*m_true, scene, model.oMm, rig().left.cam);
+    }
+    return *m_true;
+  }
+
+private:
+  mutable std::unique_ptr<pm::core::PhotoModel> m_true;
 };
 const LabTarget &crab()
 {
@@ -213,8 +226,7 @@ TEST(PreciseStage, ItsOutlineTermOnTheTrueOutlinesLandsOnTheTruthFromAFewDegrees
   // 3 deg off, the stage ends within the static goal (1 mm and 0.5 deg) of the truth.
   std::mt19937 rng(7);
   for (const LandingCase &c : landingCases()) {
-    pm::core::PhotoModel model = c.target->model.build.model;
-    pm::test::useTrueOutlines(model, c.target->scene, c.target->model.oMm, rig().left.cam);
+    const pm::core::PhotoModel &model = c.target->withTrueOutlines();
     const pm::sim::StereoImages im = c.target->scene.renderStereo(rig(), c.hMo, 0);
     const pm::core::Phi truth = c.target->model.truth(c.hMo);
     pm::precise::PreciseParams outlineAlone;

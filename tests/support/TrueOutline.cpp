@@ -22,8 +22,10 @@ V3 unit(const V3 &a)
 }
 V3 cross(const V3 &a, const V3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 
-//! The toy's outline seen from camera centre \e C (model frame, mm) looking at the model's origin.
-std::vector<core::ContourPoint> trueContour(const sim::Mesh &toy, const vpHomogeneousMatrix &mMo, const double C[3], const vpCameraParameters &cam)
+//! The toy's outline seen from camera centre \e C (model frame, mm) looking at the model's origin, drawn
+//! with \e ras (reset to kW x kH, 4 x 4 samples: one renderer for every view, its 100 MB of buffers made once).
+std::vector<core::ContourPoint> trueContour(sim::Rasterizer &ras, const sim::Mesh &toy, const vpHomogeneousMatrix &mMo, const double C[3],
+                                            const vpCameraParameters &cam)
 {
   const V3 zc = unit({-C[0], -C[1], -C[2]});
   const V3 up = std::fabs(zc[1]) < 0.9 ? V3{0, 1, 0} : V3{1, 0, 0};
@@ -31,8 +33,6 @@ std::vector<core::ContourPoint> trueContour(const sim::Mesh &toy, const vpHomoge
   vpHomogeneousMatrix mMc;
   for (unsigned r = 0; r < 3; ++r)
     mMc[r][0] = xc[r], mMc[r][1] = yc[r], mMc[r][2] = zc[r], mMc[r][3] = C[r] * 1e-3;
-  sim::Rasterizer ras;
-  ras.reset(kW, kH, 4);
   ras.clear(0, 0, 0);
   ras.draw(toy, mMc.inverse() * mMo, cam, sim::Lighting(), 2);
   cv::Mat cov(kH, kW, CV_32F), mask(kH, kW, CV_8U);
@@ -117,11 +117,13 @@ void useTrueOutlines(core::PhotoModel &model, const sim::Scene &scene, const vpH
   const sim::Mesh toy = sim::buildTargetMesh(scene.target(), 0.5);
   const vpHomogeneousMatrix mMo = oMm.inverse();
   const V3 front = unit({model.cameraMm[0], model.cameraMm[1], model.cameraMm[2]});
-  model.contour = trueContour(toy, mMo, model.cameraMm, cam);
+  sim::Rasterizer ras;
+  ras.reset(kW, kH, 4);
+  model.contour = trueContour(ras, toy, mMo, model.cameraMm, cam);
   for (core::ModelView &v : model.views) {
     const V3 d = unit({v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]});
     if (d[0] * front[0] + d[1] * front[1] + d[2] * front[2] >= std::cos(withinDeg * M_PI / 180))
-      v.contour = trueContour(toy, mMo, v.cameraMm, cam);
+      v.contour = trueContour(ras, toy, mMo, v.cameraMm, cam);
   }
 }
 
