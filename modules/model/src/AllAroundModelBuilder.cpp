@@ -401,14 +401,15 @@ Vec3 occupiedCentroid(const VisualHull &g)
 
 //! Stage 4: which cameras see each vertex (the mesh's depth, the normal facing the camera, off the outline).
 std::vector<std::vector<std::uint16_t>> camerasSeeing(const std::vector<const HullView *> &usedCams, const HullMesh &mesh,
-                                                      const AllAroundParams &p, std::vector<float> &zbuf)
+                                                      const AllAroundParams &p, ViewpointScratch &scratch)
 {
   const std::vector<Vec3> &pts = mesh.vertices;
   const std::vector<Vec3> &normals = mesh.normals;
   std::vector<std::vector<std::uint16_t>> seenBy(pts.size());
   for (std::size_t ci = 0; ci < usedCams.size(); ++ci) {
     const HullView *vc = usedCams[ci];
-    mesh.depthMap(vc->cam, zbuf);
+    mesh.depthMap(vc->cam, scratch.zbuf, scratch.vertices);
+    const std::vector<float> &zbuf = scratch.zbuf;
     for (std::size_t i = 0; i < pts.size(); ++i) {
       double u, v, z;
       if (!vc->cam.project(pts[i], u, v, z))
@@ -473,7 +474,7 @@ float backgroundHueAround(const PassImages &im, const std::vector<vpImage<unsign
 //! Stage 7: the model's viewpoints along \e dirs at \e D mm (the first is the model's own view; out: M's points).
 void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs, double D, const vpHomogeneousMatrix &mMh0,
                       const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
-                      std::vector<float> &zbuf, AllAroundBuild &out)
+                      ViewpointScratch &scratch, AllAroundBuild &out)
 {
   const std::vector<Vec3> &mpts = mesh.vertices;
   const vpCameraParameters &ci = rig.left.cam;
@@ -490,7 +491,7 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
   for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
     const Vec3 C = hull::scaled(dirs[vi], D);
     const core::PinholeCamera::Projection cam = core::PinholeCamera::Projection::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
-    core::ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, zbuf);
+    core::ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, scratch);
     if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
       if (vi == 0)
         throw core::Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +
@@ -586,8 +587,8 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   const std::vector<Vec3> &normals = mesh.normals;
 
   // 4. Which cameras see each point.
-  std::vector<float> zbuf;
-  const std::vector<std::vector<std::uint16_t>> seenBy = camerasSeeing(usedCams, mesh, p, zbuf);
+  ViewpointScratch scratch; // the image-sized buffers, kept from one camera or viewpoint to the next
+  const std::vector<std::vector<std::uint16_t>> seenBy = camerasSeeing(usedCams, mesh, p, scratch);
   // 5. Photo-consistency: the hull bulges in front of flat and concave faces (no silhouette carves
   // them); where the target has texture, each point moves inward along its normal to the depth where
   // the patches of the cameras that see it agree best. The mesh follows its vertices.
@@ -629,7 +630,7 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   const Vec3 rest{1e3 * mMh0[0][3], 1e3 * mMh0[1][3], 1e3 * mMh0[2][3]};
   const double D = std::sqrt(dot(rest, rest));
   const std::vector<Vec3> dirs = capDirections(unit(rest), p.capDeg, p.viewpoints);
-  sampleViewpoints(rig, dirs, D, mMh0, mesh, edge, bgHue, p, zbuf, out);
+  sampleViewpoints(rig, dirs, D, mMh0, mesh, edge, bgHue, p, scratch, out);
   core::PhotoModel &M = out.model;
   // 8. The colours of the target and around it, for the precise stage's posteriors.
   colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);

@@ -85,14 +85,23 @@ double HullMesh::volume() const
 
 void HullMesh::depthMap(const core::PinholeCamera::Projection &cam, std::vector<float> &zbuf) const
 {
+  std::vector<Projected> scratch;
+  depthMap(cam, zbuf, scratch);
+}
+
+void HullMesh::depthMap(const core::PinholeCamera::Projection &cam, std::vector<float> &zbuf, std::vector<Projected> &scratch) const
+{
   zbuf.assign(static_cast<std::size_t>(cam.w) * static_cast<std::size_t>(cam.h), std::numeric_limits<float>::infinity());
+  scratch.resize(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    Projected &q = scratch[i];
+    q.ok = cam.project(vertices[i], q.u, q.v, q.z);
+  }
   for (std::size_t f = 0; f < triangles.size(); ++f) {
-    double u[3], v[3], z[3];
-    bool ok = true;
-    for (int k = 0; k < 3 && ok; ++k)
-      ok = cam.project(vertices[triangles[f][static_cast<std::size_t>(k)]], u[k], v[k], z[k]);
-    if (!ok)
+    const Projected &p0 = scratch[triangles[f][0]], &p1 = scratch[triangles[f][1]], &p2 = scratch[triangles[f][2]];
+    if (!p0.ok || !p1.ok || !p2.ok)
       continue;
+    const double u[3] = {p0.u, p1.u, p2.u}, v[3] = {p0.v, p1.v, p2.v}, z[3] = {p0.z, p1.z, p2.z};
     const double area = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
     if (std::fabs(area) < 1e-12)
       continue;

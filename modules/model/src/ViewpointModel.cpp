@@ -32,6 +32,13 @@ void depthBuffer(const core::PinholeCamera::Projection &cam, const std::vector<V
 
 std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n)
 {
+  ViewpointScratch scratch;
+  return meshOutline(cam, mesh, mask.data(), n, scratch);
+}
+
+std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const unsigned char *mask, int n,
+                                            ViewpointScratch &scratch)
+{
   auto inMask = [&](double u, double v) {
     const int x = static_cast<int>(std::lround(u)), y = static_cast<int>(std::lround(v));
     return x >= 0 && y >= 0 && x < cam.w && y < cam.h && mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
@@ -43,10 +50,14 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
   };
   std::vector<Segment> segs;
   double total = 0;
+  std::vector<unsigned char> &facing = scratch.facing; // each face once, not once per edge around it
+  facing.resize(mesh.triangles.size());
+  for (std::size_t f = 0; f < facing.size(); ++f)
+    facing[f] = mesh.facing(f, cam.centre) ? 1 : 0;
   for (const MeshEdge &e : mesh.edges) {
     if (e.f1 < 0)
       continue;
-    const bool fa = mesh.facing(static_cast<std::size_t>(e.f0), cam.centre), fb = mesh.facing(static_cast<std::size_t>(e.f1), cam.centre);
+    const bool fa = facing[static_cast<std::size_t>(e.f0)] != 0, fb = facing[static_cast<std::size_t>(e.f1)] != 0;
     if (fa == fb)
       continue;
     const std::size_t front = static_cast<std::size_t>(fa ? e.f0 : e.f1);
@@ -79,7 +90,8 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
     return out;
   // The outline's normal from the coverage, blurred: a contour edge of the mesh zigzags across its
   // triangles, its own perpendicular is not the outline's.
-  cv::Mat cover(cam.h, cam.w, CV_32F);
+  cv::Mat &cover = scratch.cover;
+  cover.create(cam.h, cam.w, CV_32F);
   for (int y = 0; y < cam.h; ++y)
     for (int x = 0; x < cam.w; ++x)
       cover.at<float>(y, x) = mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)] ? 1.f : 0.f;
@@ -129,15 +141,14 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
 
 namespace {
 
-//! The hull's exact coverage in the view's image (255 where its surface is), from its depth map \e zbuf.
-cv::Mat coverageMask(const core::PinholeCamera::Projection &cam, const std::vector<float> &zbuf)
+//! The hull's exact coverage in the view's image (255 where its surface is), from its depth map \e zbuf, into \e mask.
+void coverageMask(const core::PinholeCamera::Projection &cam, const std::vector<float> &zbuf, cv::Mat &mask)
 {
-  cv::Mat mask(cam.h, cam.w, CV_8U, cv::Scalar(0));
+  mask.create(cam.h, cam.w, CV_8U);
   for (int y = 0; y < cam.h; ++y)
     for (int x = 0; x < cam.w; ++x)
-      if (std::isfinite(zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]))
-        mask.at<unsigned char>(y, x) = 255;
-  return mask;
+      mask.at<unsigned char>(y, x) =
+          std::isfinite(zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]) ? 255 : 0;
 }
 
 /*!
@@ -147,10 +158,9 @@ cv::Mat coverageMask(const core::PinholeCamera::Projection &cam, const std::vect
 */
 std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface,
                                           const std::vector<Vec3> &mpts, const std::vector<bool> &edge, const AllAroundParams &p,
-                                          const cv::Mat &mask, const std::vector<float> &zbuf)
+                                          const cv::Mat &mask, const std::vector<float> &zbuf, cv::Mat &inside)
 {
   constexpr long kEdgeKey = 1L << 40; // picks on an edge sort after the others, one per cell of their own
-  cv::Mat inside;
   cv::distanceTransform(mask, inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   const double area = cv::countNonZero(mask);
   const double step = std::max(1.0, std::sqrt(area / p.nIn));
@@ -266,17 +276,18 @@ std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection 
 
 core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
                                 const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
-                                std::vector<float> &zbuf)
+                                ViewpointScratch &scratch)
 {
-  mesh.depthMap(cam, zbuf); // the hull's exact coverage and depth
-  const cv::Mat mask = coverageMask(cam, zbuf);
+  std::vector<float> &zbuf = scratch.zbuf;
+  mesh.depthMap(cam, zbuf, scratch.vertices); // the hull's exact coverage and depth
+  cv::Mat &mask = scratch.mask;
+  coverageMask(cam, zbuf, mask);
   core::ModelView view;
   for (int k = 0; k < 3; ++k)
     view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
-  view.inner = sampleInner(cam, surface, mpts, edge, p, mask, zbuf);
+  view.inner = sampleInner(cam, surface, mpts, edge, p, mask, zbuf, scratch.inside);
   // The outline: the mesh's contour edges on the silhouette's boundary.
-  const std::vector<unsigned char> maskBytes(mask.datastart, mask.dataend);
-  view.contour = meshOutline(cam, mesh, maskBytes, p.nContour);
+  view.contour = meshOutline(cam, mesh, mask.ptr<unsigned char>(), p.nContour, scratch);
   view.outer = sampleOuter(cam, bgHue, p, mask, zbuf);
   return view;
 }

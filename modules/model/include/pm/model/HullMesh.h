@@ -80,6 +80,17 @@ struct HullMesh
     noise leaves no hole).
   */
   void depthMap(const core::PinholeCamera::Projection &cam, std::vector<float> &zbuf) const;
+  //! A vertex as a camera sees it (depthMap()'s scratch): its image position and depth, or not in front.
+  struct Projected
+  {
+    double u = 0, v = 0, z = 0; //!< image position (px) and depth (mm)
+    bool ok = false;            //!< in front of the camera (core::PinholeCamera::Projection::project())
+  };
+  /*!
+    The same, each vertex projected once (not once per face around it) into \e scratch, which a
+    caller drawing many views keeps from one to the next.
+  */
+  void depthMap(const core::PinholeCamera::Projection &cam, std::vector<float> &zbuf, std::vector<Projected> &scratch) const;
 };
 
 /*!

@@ -13,10 +13,12 @@
   - S_out: points offset outward from that outline by the strip (stripGapPx to stripGapPx +
     stripWidthPx), at the outline's depth, where the strip falls off the target.
 
-      std::vector<float> zbuf;
-      const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, zbuf);
+      pm::model::ViewpointScratch scratch; // kept from one viewpoint to the next
+      const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, scratch);
 */
 #include <vector>
+
+#include <opencv2/core.hpp>
 
 #include "pm/core/PhotoModel.h"
 #include "pm/model/HullGeometry.h"
@@ -34,15 +36,28 @@ struct SurfacePoint;
 void depthBuffer(const core::PinholeCamera::Projection &cam, const std::vector<hull::Vec3> &pts, int radius, std::vector<float> &zbuf);
 
 /*!
+  The buffers of sampleViewpoint() (each the size of the image or of the mesh), kept by the caller
+  from one viewpoint to the next: a model's 240 viewpoints would otherwise make them 240 times.
+*/
+struct ViewpointScratch
+{
+  std::vector<float> zbuf;                   //!< the hull's depth (HullMesh::depthMap)
+  std::vector<HullMesh::Projected> vertices; //!< the mesh's vertices as the camera sees them
+  std::vector<unsigned char> facing;         //!< per face: turned toward the camera
+  cv::Mat mask, inside, cover;               //!< the coverage, its distance inside, its blur (meshOutline)
+};
+
+/*!
   The viewpoint of camera \e cam (in the model frame; core::PinholeCamera::Projection::lookingAtOrigin) of a model whose
   surface is \e surface (model frame) and \e mesh (the same surface as triangles, model frame), its
   surface points also given as \e pts: S_in, S_out and the outline (see ViewpointModel.h). \e onEdge
-  marks the surface points on a hue edge (AllAroundParams::edgeShare); \e zbuf is scratch. S_out
-  points carry \e bgHue. The view's cameraMm is the camera's centre.
+  marks the surface points on a hue edge (AllAroundParams::edgeShare); \e scratch holds the buffers
+  (its zbuf then the hull's depth seen by \e cam). S_out points carry \e bgHue. The view's cameraMm
+  is the camera's centre.
 */
 core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
                           const HullMesh &mesh, const std::vector<bool> &onEdge, float bgHue, const AllAroundParams &p,
-                          std::vector<float> &zbuf);
+                          ViewpointScratch &scratch);
 
 /*!
   The outline of \e mesh seen by \e cam (see ViewpointModel.h): \e n points evenly along the contour
@@ -50,5 +65,8 @@ core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, cons
   it). For the precise stage's lines and for S_out.
 */
 std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n);
+//! The same, \e mask w x h bytes (row-major), with \e scratch's facing and cover as buffers.
+std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const unsigned char *mask, int n,
+                                            ViewpointScratch &scratch);
 
 } // namespace pm::model
