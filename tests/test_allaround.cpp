@@ -285,7 +285,9 @@ TEST(AllAround, AViewWithAWrongPoseIsNamedAndLeftOut)
 {
   std::vector<pm::model::PassView> views = crab().pass.views;
   views[5].fMh = views[5].fMh * vpHomogeneousMatrix(0.04, -0.03, 0, 0, 0, 0.2); // 50 mm and 11 deg off
-  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), views);
+  pm::model::AllAroundParams p;
+  p.viewpoints = 1; // which views are used is decided before the viewpoints (the build's last step): the front's alone
+  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), views, p);
   ASSERT_EQ(b.leftOut.size(), 1u);
   EXPECT_EQ(b.leftOut[0].rfind("view 05", 0), 0u) << b.leftOut[0];
   EXPECT_EQ(b.nViewsUsed, 15u);
@@ -383,6 +385,7 @@ TEST(AllAround, TheViewsStereoPairsBringTheBulgingHullBackToTheBoxsFaceAndBoundI
     pm::model::AllAroundParams p;
     p.fusion.enabled = fusion;
     p.refineDepthMm = refineMm;
+    p.viewpoints = 1; // the surface is measured, not the viewpoints sampled from it (the build's last step): the front's alone
     const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), pass.views, p);
     const vpHomogeneousMatrix cMm = (pass.views[0].fMh * rig().left.hMc).inverse() * b.fMm;
     std::vector<float> zbuf;
