@@ -83,7 +83,9 @@ struct HullMesh
   //! A vertex as a camera sees it (depthMap()'s scratch): its image position and depth, or not in front.
   struct Projected
   {
-    double u = 0, v = 0, z = 0; //!< image position (px) and depth (mm)
+    double u = 0; //!< image column (px)
+    double v = 0; //!< image row (px)
+    double z = 0; //!< depth (mm)
     bool ok = false;            //!< in front of the camera (core::PinholeCamera::Projection::project())
   };
   /*!

@@ -44,7 +44,9 @@ struct ViewpointScratch
   std::vector<float> zbuf;                   //!< the hull's depth (HullMesh::depthMap)
   std::vector<HullMesh::Projected> vertices; //!< the mesh's vertices as the camera sees them
   std::vector<unsigned char> facing;         //!< per face: turned toward the camera
-  cv::Mat mask, inside, cover;               //!< the coverage, its distance inside, its blur (meshOutline)
+  cv::Mat mask;                              //!< the coverage (meshOutline)
+  cv::Mat inside;                            //!< its distance inside (meshOutline)
+  cv::Mat cover;                             //!< its blur (meshOutline)
 };
 
 /*!
