@@ -14,6 +14,7 @@
 #include "pm/lab/ModelMaking.h"
 #include "pm/lab/SimulatedCalibration.h"
 #include "pm/report/CalibrationOutputs.h"
+#include "pm/report/PlotUtil.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
 
@@ -52,6 +53,18 @@ pm::report::RigCalibrationOutputs calibrationOutputs()
 }
 
 } // namespace
+
+TEST(PlotUtil, AxisNumbersKeepTheirDigits)
+{
+  EXPECT_EQ(pm::report::tickLabel(250), "250");
+  EXPECT_EQ(pm::report::tickLabel(3), "3");
+  EXPECT_EQ(pm::report::tickLabel(0.25), "0.25");
+  EXPECT_EQ(pm::report::tickLabel(0.005), "0.005"); // a quaternion component's ticks ("0.00" before)
+  EXPECT_EQ(pm::report::tickLabel(-0.0025), "-0.0025");
+  const std::vector<double> t = pm::report::niceTicks(-0.004, 0.012, 5);
+  for (std::size_t k = 1; k < t.size(); ++k) // every tick named apart from the next
+    EXPECT_NE(pm::report::tickLabel(t[k]), pm::report::tickLabel(t[k - 1]));
+}
 
 TEST(RigCalibrationOutputs, TheRigItsErrorsToTheTruthAndTheLeftOutPairAreWritten)
 {

@@ -12,8 +12,10 @@ std::string tickLabel(double v)
   char b[32];
   if (std::fabs(v) >= 100 || v == std::floor(v))
     std::snprintf(b, sizeof b, "%.0f", v);
-  else
+  else if (std::fabs(v) >= 0.1)
     std::snprintf(b, sizeof b, "%.2f", v);
+  else // small ticks keep their digits (0.005, not 0.00)
+    std::snprintf(b, sizeof b, "%.2g", v);
   return b;
 }
 

@@ -13,7 +13,7 @@
 
 namespace pm::report {
 
-//! A number for an axis: no decimals for large or whole values (|v| >= 100 or whole: "250", "3"), else two ("0.25").
+//! A number for an axis: no decimals for large or whole values (|v| >= 100 or whole: "250", "3"), else two ("0.25"), two significant digits under 0.1 ("0.005").
 std::string tickLabel(double v);
 /*!
   About \e n round tick values over [a, b].
