@@ -4,7 +4,6 @@
 #include <memory>
 
 #include "pm/core/Error.h"
-#include "pm/sim/Noise.h"
 
 namespace pm::sim {
 
@@ -23,21 +22,9 @@ constexpr float kMetalS0 = 1, kMetalS1 = 6, kPadS0 = 9, kPadS1 = 14;
 
 std::shared_ptr<Texture> gripperTexture()
 {
-  auto tex = std::make_shared<Texture>();
-  tex->width = 16;
-  tex->height = 16;
-  tex->rgb.resize(3 * 16 * 16);
-  for (int j = 0; j < 16; ++j)
-    for (int i = 0; i < 16; ++i) {
-      const bool pad = i >= 8;
-      const double n = 0.9 + 0.2 * latticeValue(i, j, 11);
-      const double r = pad ? 28 : 104, g = pad ? 28 : 106, b = pad ? 30 : 112;
-      std::uint8_t *o = &tex->rgb[3 * static_cast<std::size_t>(j * 16 + i)];
-      o[0] = static_cast<std::uint8_t>(std::min(255.0, r * n));
-      o[1] = static_cast<std::uint8_t>(std::min(255.0, g * n));
-      o[2] = static_cast<std::uint8_t>(std::min(255.0, b * n));
-    }
-  return tex;
+  return speckledTexture(16, 16, 11, 0.9, 0.2, [](int i, int) {
+    return i >= 8 ? std::array<double, 3>{28, 28, 30} : std::array<double, 3>{104, 106, 112};
+  });
 }
 
 //! Appends the quad a, b, c, d (mm, counter-clockwise or not: shading is two-sided) of normal n, textured from s0 to s1.

@@ -183,18 +183,9 @@ Scene::Scene(const TargetShape &target, const SceneParams &params)
 Mesh Scene::makeFlatQuad(double xMm, double yMm, double zMm, double widthMm, double heightMm, int r, int g, int b)
 {
   // A flat quad facing the hand (-z), of colour (r, g, b) with a little texture.
-  auto tex = std::make_shared<Texture>();
-  tex->width = 8;
-  tex->height = 64;
-  tex->rgb.resize(3 * 8 * 64);
-  for (int j = 0; j < 64; ++j)
-    for (int i = 0; i < 8; ++i) {
-      const double n = 0.8 + 0.4 * latticeValue(i, j, 5);
-      std::uint8_t *o = &tex->rgb[3 * static_cast<std::size_t>(j * 8 + i)];
-      o[0] = static_cast<std::uint8_t>(std::min(255.0, r * n));
-      o[1] = static_cast<std::uint8_t>(std::min(255.0, g * n));
-      o[2] = static_cast<std::uint8_t>(std::min(255.0, b * n));
-    }
+  const std::shared_ptr<Texture> tex = speckledTexture(8, 64, 5, 0.8, 0.4, [&](int, int) {
+    return std::array<double, 3>{static_cast<double>(r), static_cast<double>(g), static_cast<double>(b)};
+  });
   const float cx = static_cast<float>(xMm * 1e-3), cy = static_cast<float>(yMm * 1e-3), cz = static_cast<float>(zMm * 1e-3);
   const float hw = static_cast<float>(widthMm / 2e3), hh = static_cast<float>(heightMm / 2e3);
   Mesh m;

@@ -8,6 +8,7 @@
 */
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -77,5 +78,16 @@ struct Mesh
   float specular = 0.f;  //!< specular strength (glossy plastic of a toy); 0 = matte
   float shininess = 20.f; //!< Blinn-Phong exponent of the highlight
 };
+
+/*!
+  A width x height texture of the colour \e colourAt(i, j) (r, g, b in [0, 255]) speckled by the
+  lattice noise of \e seed: each texel its colour times lo + amp * latticeValue(i, j, seed), at most
+  255 (the flat quads' and the gripper's a little textured surfaces).
+  \code
+  auto olive = pm::sim::speckledTexture(8, 64, 5, 0.8, 0.4, [](int, int) { return std::array<double, 3>{60, 120, 40}; });
+  \endcode
+*/
+std::shared_ptr<Texture> speckledTexture(int width, int height, std::uint64_t seed, double lo, double amp,
+                                         const std::function<std::array<double, 3>(int i, int j)> &colourAt);
 
 } // namespace pm::sim
