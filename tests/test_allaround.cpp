@@ -26,7 +26,9 @@
 #include "pm/lab/LabPass.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PassPlanner.h"
+#include "pm/model/BackgroundSubtraction.h"
 #include "pm/model/Silhouette.h"
+#include "pm/sim/ImageVariation.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/sim/RobotPA10.h"
 #include "pm/sim/TargetCatalog.h"
@@ -192,6 +194,38 @@ TEST(Silhouette, KeepsTheReliefToysAndDropsTheirCastShadows)
     EXPECT_FALSE(st.touchesBorder);
     }
   }
+}
+
+TEST(Silhouette, ASensorsShotNoiseIsNotAChangeOfBackground)
+{
+  // A sensor whose noise grows with the signal (ImageVariation's shot-noise preset, 0.6 sqrt(level))
+  // flags a third of the sea bottom's pixels one by one; the crab's silhouette in its pass's view 01
+  // is still found, as exact as without the noise, and a background of another view is still refused.
+  const pm::model::PassView &view = crab().pass.views[1];
+  pm::sim::ImageVariation noise;
+  noise.shotNoise = 0.6;
+  vpImage<vpRGBa> bg = view.backgroundRight, photo = view.right, otherBg = crab().pass.views[12].backgroundRight;
+  noise.applyAfterSensor(bg, 11);
+  noise.applyAfterSensor(photo, 12);
+  noise.applyAfterSensor(otherBg, 13);
+  const cv::Mat raw = pm::model::subtractBackground(photo, bg, pm::model::BackgroundParams());
+  long rawBorder = 0;
+  for (int u = 0; u < raw.cols; ++u)
+    rawBorder += raw.at<unsigned char>(raw.rows - 1, u) != 0;
+  EXPECT_GT(rawBorder, raw.cols / 4) << "the noise flags the border's pixels one by one";
+  const vpImage<unsigned char> clean = pm::model::silhouette(view.right, view.backgroundRight, pm::model::SilhouetteParams());
+  pm::model::SilhouetteStats st;
+  const vpImage<unsigned char> noisy = pm::model::silhouette(photo, bg, pm::model::SilhouetteParams(), &st, "view 01 (right)");
+  long both = 0, either = 0;
+  for (unsigned i = 0; i < clean.getSize(); ++i) {
+    both += clean.bitmap[i] && noisy.bitmap[i];
+    either += clean.bitmap[i] || noisy.bitmap[i];
+  }
+  EXPECT_GT(static_cast<double>(both) / static_cast<double>(either), 0.98);
+  EXPECT_FALSE(st.touchesBorder);
+  const std::string e = pm::test::errorOf([&] { (void)pm::model::silhouette(photo, otherBg, pm::model::SilhouetteParams(), nullptr, "view 01 (right)"); });
+  EXPECT_NE(e.find("view 01 (right): "), std::string::npos) << e;
+  EXPECT_NE(e.find("background does not match"), std::string::npos) << e;
 }
 
 TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)

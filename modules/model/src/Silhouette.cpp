@@ -29,22 +29,25 @@ void SilhouetteParams::validate() const
 namespace {
 
 /*!
-  The raw mask of target pixels cleaned as the header says (the image's frame checked first, then
-  opening and closing, the regions kept, their holes filled), as a vpImage; errors name \e name.
+  The raw mask of target pixels cleaned as the header says (the image's frame checked first, on
+  \e frameMask when given, else on \e mask; then opening and closing, the regions kept, their holes
+  filled), as a vpImage; errors name \e name.
 */
-vpImage<unsigned char> cleaned(cv::Mat &mask, const SilhouetteParams &p, SilhouetteStats *stats, const std::string &name)
+vpImage<unsigned char> cleaned(cv::Mat &mask, const SilhouetteParams &p, SilhouetteStats *stats, const std::string &name,
+                               const cv::Mat *frameMask = nullptr)
 {
   const int h = mask.rows, w = mask.cols;
   // The image's frame (8 px along the borders) shows the backdrop whatever the view, but where the
   // target crosses it: when most of it changed, the background is not this photo's.
   {
+    const cv::Mat &fm = frameMask ? *frameMask : mask;
     long frame = 0, changedFrame = 0;
     const int bw = std::min(8, std::min(w, h) / 4);
     for (int v = 0; v < h; ++v)
       for (int u = 0; u < w; ++u)
         if (u < bw || v < bw || u >= w - bw || v >= h - bw) {
           ++frame;
-          changedFrame += mask.at<unsigned char>(v, u) != 0;
+          changedFrame += fm.at<unsigned char>(v, u) != 0;
         }
     if (changedFrame > frame / 3)
       throw core::Error(name + ": " + std::to_string(100 * changedFrame / frame) +
@@ -85,6 +88,16 @@ vpImage<unsigned char> cleaned(cv::Mat &mask, const SilhouetteParams &p, Silhoue
   return r;
 }
 
+//! \e image with each pixel the mean of its 3 x 3 neighbours (OpenCV's box filter, the border reflected).
+vpImage<vpRGBa> boxMean3(const vpImage<vpRGBa> &image)
+{
+  vpImage<vpRGBa> out(image.getHeight(), image.getWidth());
+  const cv::Mat in(static_cast<int>(image.getHeight()), static_cast<int>(image.getWidth()), CV_8UC4, const_cast<vpRGBa *>(image.bitmap));
+  cv::Mat o(in.rows, in.cols, CV_8UC4, out.bitmap);
+  cv::blur(in, o, cv::Size(3, 3));
+  return out;
+}
+
 } // namespace
 
 vpImage<unsigned char> silhouette(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &background,
@@ -97,7 +110,11 @@ vpImage<unsigned char> silhouette(const vpImage<vpRGBa> &photo, const vpImage<vp
   cv::Mat mask = subtractBackground(photo, background, p.background, &shadow);
   if (stats)
     stats->shadowPx = shadow;
-  return cleaned(mask, p, stats, name);
+  // The frame's test on the means of 3 x 3 pixels: a sensor's noise that grows with the signal
+  // (0.6 sqrt(level) grey levels) flags a third of a dark backdrop's pixels one by one, and the mean
+  // of nine divides it by three; another view's background differs in whole patches, mean or not.
+  const cv::Mat frame = subtractBackground(boxMean3(photo), boxMean3(background), p.background);
+  return cleaned(mask, p, stats, name, &frame);
 }
 
 vpImage<unsigned char> silhouetteOnBackdrop(const vpImage<vpRGBa> &photo, double backdropHueDeg, const SilhouetteParams &p,
