@@ -21,6 +21,7 @@
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
+#include "pm/sim/ImageVariation.h"
 
 using pm::compare::LabelledFrame;
 
@@ -31,6 +32,8 @@ struct Options
 {
   std::string out, rigPath = pm::app::dataPath("rig/pa10_stereo.json"), trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
   std::vector<std::string> scenarios = pm::compare::scenarioNames();
+  std::vector<std::string> variations;
+  std::string heldOut;
   int steps = 0;
   bool quick = false, fit = false, quiet = false, allAround = false, stereo = false, precise = true;
   double maxFalseAccept = 0.001;
@@ -52,6 +55,13 @@ void addOptions(CLI::App &app, Options &o)
   app.add_flag("--stereo", o.stereo, "every run's model is the stereo one (the rig's two photos, with their relief) instead of the flat "
                "one; the tracker weighs the cues with the stereo coefficients")->excludes(aa);
   app.add_flag("--precise,!--no-precise", o.precise, "the tracker's precise last stage after RM-GA (all-around models: --all-around)");
+  app.add_option("--vary", o.variations, "also the crab and the head through these other cameras, one pass each "
+                 "(the model made through the same camera): defocus, motion-blur, vignetting, shot-noise, white-balance, gamma, jpeg, camera")
+      ->delimiter(',')
+      ->check(CLI::IsMember(pm::sim::imageVariationNames()));
+  app.add_option("--hold-out", o.heldOut, "with --fit: leave the runs through this camera (one of --vary) out of the fit, and report "
+                 "how the fitted confidence does on them")
+      ->check(CLI::IsMember(pm::sim::imageVariationNames()));
   app.add_flag("--quiet", o.quiet, "no progress, no table on stdout");
 }
 
@@ -60,7 +70,7 @@ std::size_t totalFrames(const Options &o)
 {
   std::size_t total = 0;
   for (const auto &s : pm::compare::makeScenarios(o.scenarios, o.trajectoryPath, o.steps))
-    total += s.frames.size() * pm::compare::confidencePasses(o.quick).size();
+    total += s.frames.size() * pm::compare::confidencePasses(o.quick, o.variations).size();
   return total;
 }
 
@@ -75,11 +85,24 @@ pm::compare::ConfidenceStudy study(const Options &o, const pm::core::StereoRig &
   cs.allAround = o.allAround;
   cs.stereo = o.stereo;
   cs.precise = o.precise;
+  cs.variations = o.variations;
   cs.dataDir = pm::app::dataDir();
   pm::app::Progress progress("rendering and tracking", total, o.quiet);
   pm::compare::ConfidenceStudy st = pm::compare::runConfidenceStudy(defaultRig, cs, [&] { progress.step(); });
   progress.finish();
   return st;
+}
+
+//! --hold-out: how the fitted confidence does on the runs left out of the fit (null: none).
+nlohmann::json heldOutJson(const pm::compare::ConfidenceFit::HeldOut &h)
+{
+  if (h.variation.empty())
+    return nullptr;
+  const std::size_t rightFrames = h.frames - h.wrong;
+  return {{"camera", h.variation}, {"runs", h.runs}, {"frames", h.frames}, {"wrong_frames", h.wrong}, {"auroc", h.auroc},
+          {"trusted_right_frames", h.trustedRight}, {"trusted_wrong_frames", h.trustedWrong},
+          {"true_accept_rate", rightFrames ? static_cast<double>(h.trustedRight) / static_cast<double>(rightFrames) : 0.0},
+          {"worst_run_true_accept_rate", h.worstRunTrustedShare}};
 }
 
 //! --fit: the logistic model of the run's kind of photo-model fitted anew, as JSON.
@@ -90,14 +113,15 @@ nlohmann::json fitJson(const Options &o, const pm::compare::ConfidenceStudy &st)
                                                        : pm::tracker::ConfidenceKind::Flat;
   pm::compare::ConfidenceFit f;
   try {
-    f = pm::compare::fitConfidence(st, kind, o.maxFalseAccept);
+    f = pm::compare::fitConfidence(st, kind, o.maxFalseAccept, o.heldOut);
   } catch (const pm::core::Error &e) {
     throw pm::core::Error(std::string("--fit: ") + e.what());
   }
   return {{"kind", pm::tracker::toString(kind)}, {"auroc_cross_validated", f.aurocCrossValidated}, {"auroc", f.auroc},
           {"weights", f.model.weights}, {"bias", f.model.bias}, {"threshold", f.model.threshold},
           {"operating_threshold_unshifted", f.operatingThreshold}, {"trusted_right_frames", f.trustedRight},
-          {"trusted_wrong_frames", f.trustedWrong}, {"features", pm::tracker::ConfidenceCues::featureNames()}, {"iterations", f.iterations}};
+          {"trusted_wrong_frames", f.trustedWrong}, {"features", pm::tracker::ConfidenceCues::featureNames()}, {"iterations", f.iterations},
+          {"held_out", heldOutJson(f.heldOut)}};
 }
 
 //! The ROC, whole and near its left edge, in percent; the dotted line: the trusted frames' false accept rate.
@@ -156,6 +180,13 @@ void printSummary(const Options &o, const pm::compare::ConfidenceStudy &st, cons
             << " (true accept " << rep.atMaxFalseAccept.trueAcceptRate << ")\n";
   if (o.fit)
     std::cout << "  fitted: " << fit.dump() << "\n";
+  if (o.fit && !fit["held_out"].is_null()) {
+    const nlohmann::json &h = fit["held_out"];
+    std::cout << "  held out of the fit, the runs through " << h["camera"].get<std::string>() << ": " << h["frames"].get<std::size_t>()
+              << " frames (" << h["wrong_frames"].get<std::size_t>() << " wrong), AUROC " << h["auroc"].get<double>()
+              << ", right frames trusted " << h["true_accept_rate"].get<double>() << " (worst run "
+              << h["worst_run_true_accept_rate"].get<double>() << "), wrong frames trusted " << h["trusted_wrong_frames"].get<std::size_t>() << "\n";
+  }
   std::cout << "  written to " << dir << "/ (frames.csv, roc.png, summary.json)" << std::endl;
 }
 
@@ -176,6 +207,8 @@ int main(int argc, char **argv)
   addOptions(app, o);
 
   return pm::app::run(app, argc, argv, [&] {
+    if (!o.heldOut.empty() && (!o.fit || std::find(o.variations.begin(), o.variations.end(), o.heldOut) == o.variations.end()))
+      throw pm::core::Error("--hold-out " + o.heldOut + " needs --fit and the same camera in --vary");
     const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
     const std::size_t total = totalFrames(o);
     pm::io::StagedFiles files(o.out);

@@ -13,6 +13,7 @@
 
 #include "TestSupport.h"
 #include "pm/compare/Comparison.h"
+#include "pm/compare/ConfidenceFit.h"
 #include "pm/compare/ConfidenceStudy.h"
 #include "pm/compare/Metrics.h"
 #include "pm/compare/OutlineModel.h"
@@ -453,6 +454,75 @@ TEST(PmConfidence, ItsFiguresOnASmallSetAndItsErrors)
   EXPECT_EQ(f.status, 1);
   EXPECT_NE(f.err.find("error: --fit"), std::string::npos) << f.err;
   EXPECT_FALSE(std::filesystem::exists(e.file("o") + "/summary.json"));
+  // A camera held out of a fit that is not made, or that is not in the set; an unknown camera.
+  for (const char *args : {"--hold-out jpeg --vary jpeg", "--fit --hold-out jpeg --vary defocus"}) {
+    const auto h = runProgram("pm-confidence", std::string("--quick --scenarios loss --quiet ") + args + " --out " + e.file("o"));
+    EXPECT_EQ(h.status, 1) << args;
+    EXPECT_NE(h.err.find("error: --hold-out jpeg needs --fit and the same camera in --vary"), std::string::npos) << h.err;
+  }
+  EXPECT_EQ(runProgram("pm-confidence", "--quick --vary sepia --out " + e.file("o")).status, 2);
+  EXPECT_FALSE(std::filesystem::exists(e.file("o") + "/summary.json"));
+}
+
+TEST(ConfidenceFit, TheRunsThroughAHeldOutCameraAreLeftOutOfTheFitAndScoredAfterIt)
+{
+  // Six runs of 200 frames: four through the renderer's camera, two through "jpeg", where the right
+  // frames' cues sit lower (a softer outline) and the wrong ones as usual. Right frames: quality
+  // and the worse camera's near 0.8, wrong ones near 0.3 (seeded noise).
+  pm::compare::ConfidenceStudy st;
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 0.08);
+  for (std::size_t run = 0; run < 6; ++run) {
+    st.runNames.push_back("run " + std::to_string(run));
+    st.runVariation.push_back(run >= 4 ? "jpeg" : "");
+    for (int k = 0; k < 200; ++k) {
+      pm::compare::LabelledFrame f;
+      f.run = run;
+      f.right = k % 4 != 0;
+      const double q = (f.right ? (run >= 4 ? 0.65 : 0.8) : 0.3) + noise(rng);
+      f.cues.quality = q;
+      f.cues.qualityMin = q - 0.05;
+      f.cues.inMatchMin = q;
+      f.cues.outBackgroundMin = 0.9;
+      f.cues.competitorMargin = f.right ? 0.3 : 0.0;
+      f.cues.framesTracked = 30;
+      f.cues.tracking = f.cues.verified = true;
+      f.state = pm::tracker::TrackState::Tracking;
+      st.frames.push_back(f);
+      st.runOf.push_back(run);
+    }
+  }
+  const auto kind = pm::tracker::ConfidenceKind::Flat;
+  const pm::compare::ConfidenceFit all = pm::compare::fitConfidence(st, kind, 0.001);
+  const pm::compare::ConfidenceFit held = pm::compare::fitConfidence(st, kind, 0.001, "jpeg");
+  EXPECT_TRUE(all.heldOut.variation.empty());
+  EXPECT_EQ(held.heldOut.variation, "jpeg");
+  EXPECT_EQ(held.heldOut.runs, 2u);
+  EXPECT_EQ(held.heldOut.frames, 400u);
+  EXPECT_EQ(held.heldOut.wrong, 100u);
+  // The fit's own figures are over the four other runs only (600 right frames), the held-out ones
+  // counted by hand with the fitted model.
+  EXPECT_LE(held.trustedRight, 600u);
+  std::size_t right = 0, wrong = 0, rightOf[2] = {0, 0};
+  std::vector<double> conf;
+  std::vector<bool> label;
+  for (std::size_t k = 0; k < st.frames.size(); ++k)
+    if (st.runOf[k] >= 4) {
+      const double c = held.model.confidence(st.frames[k].cues);
+      conf.push_back(c);
+      label.push_back(st.frames[k].right);
+      right += st.frames[k].right && c >= held.model.threshold;
+      rightOf[st.runOf[k] - 4] += st.frames[k].right && c >= held.model.threshold;
+      wrong += !st.frames[k].right && c >= held.model.threshold;
+    }
+  EXPECT_EQ(held.heldOut.trustedRight, right);
+  EXPECT_EQ(held.heldOut.trustedWrong, wrong);
+  EXPECT_DOUBLE_EQ(held.heldOut.auroc, pm::compare::auroc(conf, label));
+  EXPECT_GT(held.heldOut.auroc, 0.99);
+  EXPECT_DOUBLE_EQ(held.heldOut.worstRunTrustedShare, static_cast<double>(std::min(rightOf[0], rightOf[1])) / 150.0); // 150 right frames a run
+  // A camera no run was filmed through.
+  const std::string e = pm::test::errorOf([&] { (void)pm::compare::fitConfidence(st, kind, 0.001, "defocus"); });
+  EXPECT_NE(e.find("held-out camera 'defocus'"), std::string::npos) << e;
 }
 
 TEST(PmUncertainty, BadRunsAreRefusedAndNothingIsWritten)

@@ -9,37 +9,56 @@
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
 #include "pm/lab/LabModel.h"
+#include "pm/sim/ImageVariation.h"
 #include "pm/sim/TargetCatalog.h"
 
 namespace pm::compare {
 
-std::vector<ConfidencePass> confidencePasses(bool quick)
+namespace {
+
+//! The study's scenes and runs through the renderer's own camera.
+std::vector<ConfidencePass> mainPasses()
 {
-  if (quick)
-    return {{"C12", "C12", 2, {{"C12", 1900, 1}, {"C05", 600, 2}}, "", ""}};
-  return {{"C12", "C12", 2, {{"C12", 1900, 1}, {"C12", 600, 2}, {"C12", 300, 3}, {"C12", 1900, 4, 0.25}, {"C05", 1900, 5}}, "", ""},
-          {"C12, supersampling 1", "C12", 1, {{"C12", 600, 6}, {"C12", 1900, 7}}, "", ""},
-          {"C08", "C08", 2, {{"C08", 1900, 8}, {"C08", 600, 9}}, "", ""},
-          {"C12 beside a C05 squid (similar hue)", "C12", 2, {{"C12", 1900, 10}, {"C12", 600, 11}}, "C05", ""},
+  return {{"C12", "C12", 2, {{"C12", 1900, 1}, {"C12", 600, 2}, {"C12", 300, 3}, {"C12", 1900, 4, 0.25}, {"C05", 1900, 5}}, "", "", false, ""},
+          {"C12, supersampling 1", "C12", 1, {{"C12", 600, 6}, {"C12", 1900, 7}}, "", "", false, ""},
+          {"C08", "C08", 2, {{"C08", 1900, 8}, {"C08", 600, 9}}, "", "", false, ""},
+          {"C12 beside a C05 squid (similar hue)", "C12", 2, {{"C12", 1900, 10}, {"C12", 600, 11}}, "C05", "", false, ""},
           // Conditions the lab's kind toys do not show: steep relief with cast shadows and
           // highlights, the stereo model, a lens, an identical twin.
-          {"R2 (relief, cast shadows, highlights)", "R2", 2, {{"R2", 1900, 12}, {"R2", 600, 13}}, "", ""},
-          {"R1 (relief, cast shadows, highlights)", "R1", 2, {{"R1", 1900, 14, 1.0, true}, {"R1", 600, 15}}, "", ""},
-          {"C12 through a lens (k1 -0.25, k2 0.08)", "C12", 2, {{"C12", 1900, 16}, {"C12", 600, 17}}, "", "rig/pa10_stereo_lens.json"},
-          {"C12 beside its twin", "C12", 2, {{"C12", 1900, 18}, {"C12", 600, 19}}, "C12", ""},
+          {"R2 (relief, cast shadows, highlights)", "R2", 2, {{"R2", 1900, 12}, {"R2", 600, 13}}, "", "", false, ""},
+          {"R1 (relief, cast shadows, highlights)", "R1", 2, {{"R1", 1900, 14, 1.0, true}, {"R1", 600, 15}}, "", "", false, ""},
+          {"C12 through a lens (k1 -0.25, k2 0.08)", "C12", 2, {{"C12", 1900, 16}, {"C12", 600, 17}}, "", "rig/pa10_stereo_lens.json", false, ""},
+          {"C12 beside its twin", "C12", 2, {{"C12", 1900, 18}, {"C12", 600, 19}}, "C12", "", false, ""},
           // A strand of seaweed in front of the toy all along (pm-servo --occluder), since issue 37.
-          {"C12 behind a strand of seaweed", "C12", 2, {{"C12", 1900, 20}, {"C12", 600, 21}}, "", "", true},
-          {"R2 behind a strand of seaweed", "R2", 2, {{"R2", 1900, 22}}, "", "", true}};
+          {"C12 behind a strand of seaweed", "C12", 2, {{"C12", 1900, 20}, {"C12", 600, 21}}, "", "", true, ""},
+          {"R2 behind a strand of seaweed", "R2", 2, {{"R2", 1900, 22}}, "", "", true, ""}};
+}
+
+} // namespace
+
+std::vector<ConfidencePass> confidencePasses(bool quick, const std::vector<std::string> &variations)
+{
+  std::vector<ConfidencePass> passes = quick ? std::vector<ConfidencePass>{{"C12", "C12", 2, {{"C12", 1900, 1}, {"C05", 600, 2}}, "", "", false, ""}}
+                                             : mainPasses();
+  std::uint64_t seed = 40;
+  for (const std::string &v : variations) {
+    (void)sim::imageVariation(v); // an unknown name: the error names the presets
+    for (const char *toy : {"C12", "R2"})
+      passes.push_back({std::string(toy) + " through another camera (" + v + ")", toy, 2, {{toy, 1900, seed++}}, "", "", false, v});
+  }
+  return passes;
 }
 
 ConfidenceStudy runConfidenceStudy(const core::StereoRig &defaultRig, const ConfidenceStudyParams &params, const std::function<void()> &onFrame)
 {
   const std::vector<Scenario> seqs = makeScenarios(params.scenarios, params.trajectoryPath, params.steps);
   ConfidenceStudy study;
-  for (const ConfidencePass &pass : confidencePasses(params.quick)) {
+  for (const ConfidencePass &pass : confidencePasses(params.quick, params.variations)) {
     const core::StereoRig rig = pass.rig.empty() ? defaultRig : io::loadRig(params.dataDir + "/" + pass.rig);
     sim::SceneParams sp;
     sp.supersampling = pass.supersampling;
+    if (!pass.variation.empty())
+      sp.variation = sim::imageVariation(pass.variation);
     if (!pass.strand)
       sp.occluderSizeMm[0] = 40; // pm-compare's strand
     rmga::SearchSpace space;
@@ -53,7 +72,9 @@ ConfidenceStudy runConfidenceStudy(const core::StereoRig &defaultRig, const Conf
     }
     std::deque<sim::SimulatedPhotoModel> models; // never relocated: ViSP 3.5 copies an empty vpImage with memcpy(nullptr)
     for (const auto &r : pass.runs) {
-      const sim::Scene own(sim::makeTarget(r.model));
+      sim::SceneParams ownParams;
+      ownParams.variation = sp.variation; // the model through the same camera
+      const sim::Scene own(sim::makeTarget(r.model), ownParams);
       lab::LabModelChoice choice;
       choice.stereo = (r.stereo || params.stereo) && !params.allAround;
       choice.flat = !choice.stereo && !params.allAround;
@@ -77,6 +98,7 @@ ConfidenceStudy runConfidenceStudy(const core::StereoRig &defaultRig, const Conf
                ", " + std::to_string(r.budget) + " evaluations, seed " + std::to_string(r.seed) + (r.steady < 1 ? ", steady frames 25 %" : "");
       runs.push_back(c);
       study.runNames.push_back(c.name);
+      study.runVariation.push_back(pass.variation);
     }
     for (Scenario s : seqs) {
       for (ScenarioFrame &f : s.frames)

@@ -16,6 +16,7 @@
   \endcode
 */
 #include <cstddef>
+#include <string>
 
 #include "pm/compare/ConfidenceStudy.h"
 #include "pm/tracker/TrackConfidence.h"
@@ -32,6 +33,18 @@ struct ConfidenceFit
   std::size_t trustedRight = 0;     //!< right frames \e model would trust (tracking, verified, confidence >= 0.95)
   std::size_t trustedWrong = 0;     //!< wrong frames it would trust
   int iterations = 0;               //!< Newton steps of the fit
+  //! The runs through one camera left out of the fit (fitConfidence()'s \e heldOut), scored by \e model.
+  struct HeldOut
+  {
+    std::string variation;          //!< the camera (ConfidencePass::variation; empty: none held out)
+    std::size_t runs = 0;           //!< its runs
+    std::size_t frames = 0;         //!< their frames
+    std::size_t wrong = 0;          //!< the wrong ones among them
+    std::size_t trustedRight = 0;   //!< right frames \e model trusts
+    std::size_t trustedWrong = 0;   //!< wrong frames it trusts
+    double auroc = 1;               //!< AUROC of their frames (1 when they are all right or all wrong)
+    double worstRunTrustedShare = 1; //!< the lowest share of a run's right frames trusted (runs with right frames)
+  } heldOut;
 };
 
 /*!
@@ -39,8 +52,13 @@ struct ConfidenceFit
   lowest threshold at which at most \e maxFalseAccept of the wrong frames are trusted. The figures
   are those of the frames as the runs tracked them (the fitted confidence, had it been the
   tracker's, might have changed its re-verifications: run the study again with it to know).
-  Throws pm::core::Error for an empty set, a set of one class, or the kind Auto or Custom.
+  With \e heldOut (a camera among the study's variations), the runs through it are left out of the
+  fit and scored by its model afterwards (ConfidenceFit::heldOut): how the confidence does on a
+  camera it was not fitted on.
+  Throws pm::core::Error for an empty set, a set of one class, the kind Auto or Custom, or a held-out
+  camera no run was filmed through.
 */
-ConfidenceFit fitConfidence(const ConfidenceStudy &study, tracker::ConfidenceKind kind, double maxFalseAccept);
+ConfidenceFit fitConfidence(const ConfidenceStudy &study, tracker::ConfidenceKind kind, double maxFalseAccept,
+                            const std::string &heldOut = "");
 
 } // namespace pm::compare

@@ -40,10 +40,20 @@ struct ConfidencePass
   std::string distractor;      //!< a look-alike beside the toy (empty: none), swaying 40 mm sideways at 0.2 Hz
   std::string rig;             //!< a rig file under the data folder instead of the default rig (e.g. one with a lens)
   bool strand = false;         //!< pm-servo's strand of seaweed (22 mm wide) in front of the toy on every frame, instead of pm-compare's passing one
+  /*!
+    Another camera's images (sim::imageVariation()'s preset names, comma-separated; empty: the
+    renderer's): the scene is filmed through it, and each run's model is made through it too (the
+    model's photos or pass are taken by the same camera, as they would be).
+  */
+  std::string variation;
 };
 
-//! The study's scenes and runs (\e quick: two runs on C12 only, for tests).
-std::vector<ConfidencePass> confidencePasses(bool quick);
+/*!
+  The study's scenes and runs (\e quick: two runs on C12 only, for tests), and for each name of
+  \e variations (sim::imageVariation()'s presets) the crab and the head through that camera, one
+  run each.
+*/
+std::vector<ConfidencePass> confidencePasses(bool quick, const std::vector<std::string> &variations = {});
 
 //! What the study runs.
 struct ConfidenceStudyParams
@@ -56,6 +66,7 @@ struct ConfidenceStudyParams
   bool stereo = false;         //!< every run's model is the stereo one (unless allAround)
   bool precise = true;         //!< the tracker's precise stage (tracker::PreciseRefinementParams::enabled; all-around models only)
   std::string dataDir;         //!< where a pass's rig file is found
+  std::vector<std::string> variations; //!< other cameras' images, one pass of C12 and one of R2 each (confidencePasses())
 };
 
 //! The labelled set: one frame per scenario frame and run.
@@ -64,6 +75,7 @@ struct ConfidenceStudy
   std::vector<LabelledFrame> frames;  //!< the labelled frames
   std::vector<std::string> runNames;  //!< every run, over all passes
   std::vector<std::size_t> runOf;     //!< each frame's index in runNames
+  std::vector<std::string> runVariation; //!< each run's camera (ConfidencePass::variation; empty: the renderer's)
 };
 
 /*!
