@@ -216,7 +216,7 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::getline(lines, header);
   std::getline(lines, row);
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 47); // 48 columns: 28, 6 sigmas and 14 joints
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 48); // 49 columns: 29, 6 sigmas and 14 joints
   EXPECT_NE(row.find(",1.25,"), std::string::npos) << row;
   EXPECT_NE(row.find(",oracle,"), std::string::npos) << row;
   EXPECT_NE(row.find(",,,,,,"), std::string::npos) << row; // an unknown uncertainty: six empty cells
@@ -247,6 +247,14 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   for (int i = 0; i < col("visible_share"); ++i)
     b = vs.find(',', b) + 1;
   EXPECT_EQ(vs.substr(b, vs.find(',', b) - b), "0.75");
+  f.track.backgroundHueDeg = 212.5; // the background's hue the frame was scored with, under its header
+  std::ostringstream hue;
+  pm::lab::writeLoopCsvRow(hue, f, true);
+  const std::string hs = hue.str();
+  b = 0;
+  for (int i = 0; i < col("background_hue_deg"); ++i)
+    b = hs.find(',', b) + 1;
+  EXPECT_EQ(hs.substr(b, hs.find(',', b) - b), "212.5");
   // A 6-joint arm (ViSP's Viper850 and Afma6): 12 joint columns, and a row of its 6 joints fits them.
   std::ostringstream six;
   pm::lab::writeLoopCsvHeader(six, 6);
@@ -256,8 +264,8 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::istringstream sixLines(six.str());
   std::getline(sixLines, header);
   std::getline(sixLines, row);
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 45);
-  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 45);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 46);
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 46);
   EXPECT_EQ(header.find(",q7"), std::string::npos);
 }
 

@@ -554,6 +554,49 @@ TEST(Scene, OccluderHidesPartOfTheTarget)
   EXPECT_LT(static_cast<double>(hidden), 0.95 * static_cast<double>(open));
 }
 
+TEST(Scene, ABackdropWhoseHueDriftsTurnsOnlyTheBackdropByTheDriftAndNotForThePass)
+{
+  // 1 deg a second: 30 s into a run (frame 900) the backdrop's hue has turned 30 deg, its
+  // brightness kept; the toy is untouched; the pass's scene (targetAlone) sees it as it was.
+  CrabAhead c;
+  pm::sim::SceneParams p;
+  p.noiseSigma = 0;
+  vpImage<vpRGBa> still, turned;
+  pm::sim::Scene(c.shape, p).render(c.r, c.rig.left, c.hMo, 900, 0, still);
+  p.backdropHueDriftDegPerS = 1;
+  const pm::sim::Scene drifting(c.shape, p);
+  drifting.render(c.r, c.rig.left, c.hMo, 900, 0, turned);
+  std::vector<double> turns;
+  long toy = 0, toySame = 0, lighter = 0;
+  for (unsigned v = 0; v < turned.getHeight(); ++v)
+    for (unsigned u = 0; u < turned.getWidth(); ++u) {
+      const vpRGBa a = still[v][u], b = turned[v][u];
+      if (c.r.coverage(u, v, 2) >= 1) {
+        ++toy;
+        toySame += a.R == b.R && a.G == b.G && a.B == b.B;
+      } else if (c.r.coverage(u, v, 1) >= 1) {
+        const pm::core::Hsv ha = pm::core::rgbToHsv(a), hb = pm::core::rgbToHsv(b);
+        if (ha.s > 0.3 && ha.v > 0.2 && hb.s > 0.3) {
+          double d = hb.h - ha.h;
+          d -= 360 * std::round(d / 360);
+          turns.push_back(d);
+        }
+        lighter += std::abs((b.R + b.G + b.B) - (a.R + a.G + a.B)) > 3;
+      }
+    }
+  ASSERT_GT(turns.size(), 10000u);
+  std::sort(turns.begin(), turns.end());
+  EXPECT_NEAR(turns[turns.size() / 2], 30.0, 3.0);
+  EXPECT_GT(toy, 5000);
+  EXPECT_EQ(toySame, toy);
+  EXPECT_LT(lighter, static_cast<long>(turns.size() / 100)); // the grey axis kept: brightness within rounding
+  vpImage<vpRGBa> pass;
+  drifting.targetAlone().render(c.r, c.rig.left, c.hMo, 900, 0, pass);
+  EXPECT_TRUE(pass == still);
+  p.backdropHueDriftDegPerS = 120;
+  EXPECT_NE(pm::test::errorOf([&] { pm::sim::Scene(c.shape, p); }).find("backdrop hue drift"), std::string::npos);
+}
+
 TEST(Clutter, ThreeOtherToysOneOfTheNearestHueAroundTheTargetClearOfIt)
 {
   for (const char *code : {"C12", "R2", "C05"}) {

@@ -4,11 +4,13 @@
 
 #include "C12Scene.h"
 #include "TestSupport.h"
+#include "pm/core/Hue.h"
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/BackgroundLearning.h"
 #include "pm/tracker/FramePlan.h"
 #include "pm/tracker/Judgement.h"
 #include "pm/tracker/LockState.h"
@@ -371,4 +373,60 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   EXPECT_NEAR(u.cues.qualityDrop, 0.1, 1e-12);
   // As a first lock (one frame, unverified) it is less sure than as a long verified track.
   EXPECT_LT(judgement.firstLockConfidence(e, r.quality, false), r.confidence);
+}
+
+TEST(BackgroundLearning, ABackgroundThatTurnedIsLearntOnTrustedFramesAndTheSameOneChangesNothing)
+{
+  const Crab &c = crab();
+  // The renderer's own background: its hue stays within the switch of the model's, nothing changes.
+  Scored same(c);
+  pm::tracker::BackgroundLearning stays(pm::tracker::BackgroundParams(), same.fitness);
+  const double model = stays.modelDeg();
+  EXPECT_DOUBLE_EQ(model, same.fitness.backgroundHue());
+  for (int k = 0; k < 100; ++k)
+    EXPECT_FALSE(stays.learn(c.truth, true).has_value()) << k;
+  EXPECT_LT(pm::core::hueDistance(static_cast<float>(stays.learntDeg()), static_cast<float>(model)), 5.0f);
+  const double fSame = same.fitness.evaluate(c.truth);
+  // The backdrop turned 20 deg (--backdrop-drift 1, 20 s into a run): the right pose scores lower ...
+  pm::sim::SceneParams p = c.scene.params();
+  p.backdropHueDriftDegPerS = 1;
+  const pm::sim::StereoImages im = pm::sim::Scene(c.scene.target(), p).renderStereo(c.rig, c.hMo, 600);
+  pm::core::StereoFitness turned(c.rig, c.sm.build.model, pm::tracker::trackerFitnessDefaults());
+  turned.setImages(im.left, im.right);
+  const double fTurned = turned.evaluate(c.truth);
+  EXPECT_LT(fTurned, fSame - 0.05);
+  // ... untrusted frames teach nothing; trusted ones move the learnt hue to the background's, and
+  // the scoring takes it once it is 5 deg away.
+  pm::tracker::BackgroundLearning learns(pm::tracker::BackgroundParams(), turned);
+  for (int k = 0; k < 20; ++k)
+    EXPECT_FALSE(learns.learn(c.truth, false).has_value());
+  EXPECT_DOUBLE_EQ(learns.learntDeg(), model);
+  int switches = 0;
+  for (int k = 0; k < 60; ++k)
+    if (const std::optional<double> hue = learns.learn(c.truth, true)) {
+      turned.setBackgroundHue(*hue);
+      ++switches;
+    }
+  EXPECT_GE(switches, 1);
+  double moved = learns.learntDeg() - model;
+  moved -= 360 * std::round(moved / 360);
+  EXPECT_NEAR(moved, 20.0, 4.0);
+  EXPECT_NEAR(turned.backgroundHue(), learns.usedDeg(), 0.05);
+  EXPECT_LE(std::fabs(learns.learntDeg() - learns.usedDeg()), 5.0);
+  // The right pose scores nearly as on the photos' background again.
+  EXPECT_GT(turned.evaluate(c.truth), fTurned + 0.8 * (fSame - fTurned));
+  EXPECT_DOUBLE_EQ(learns.reset(), model);
+  EXPECT_DOUBLE_EQ(learns.usedDeg(), model);
+  // Off: the model's hue for good; parameters out of range.
+  pm::tracker::BackgroundParams off;
+  off.learn = false;
+  pm::tracker::BackgroundLearning never(off, turned);
+  EXPECT_FALSE(never.learn(c.truth, true).has_value());
+  pm::tracker::BackgroundParams bad;
+  bad.rate = 0;
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::BackgroundLearning b(bad, turned); }).find("learning rate"), std::string::npos);
+  bad = pm::tracker::BackgroundParams();
+  bad.switchDeg = 40;
+  EXPECT_NE(pm::test::errorOf([&] { bad.validate(); }).find("switch"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { turned.setBackgroundHue(360); }).find("[0, 360)"), std::string::npos);
 }

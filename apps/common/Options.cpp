@@ -70,6 +70,10 @@ void addSceneOptions(CLI::App &app, sim::SceneParams &p)
                                                     "target moves in front of it (docs/occlusion.md)")->group(g);
   app.add_flag("--clutter", p.clutter, "three other toys of the catalogue stand around the target, one of similar hue "
                                        "(docs/occlusion.md)")->group(g);
+  app.add_option("--backdrop-drift", p.backdropHueDriftDegPerS, "a background that changes: the backdrop's hue turns by "
+                 "this many degrees a second (the model's pass sees it as it was; docs/occlusion.md)")
+      ->check(CLI::Range(-90.0, 90.0))
+      ->group(g);
   app.add_flag("--gripper", p.gripper, "a gripper's two fingers on the hand, entering the bottom of both images "
                                        "(pm-servo --grasp closes the hand in on the target; docs/occlusion.md)")->group(g);
   app.add_option_function<std::string>(

@@ -1,5 +1,6 @@
 #include "pm/core/StereoFitness.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "FitnessKernels.h"
@@ -53,6 +54,35 @@ double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
     }
   }
   return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+void StereoFitness::setBackgroundHue(double deg)
+{
+  if (!(deg >= 0 && deg < 360))
+    throw Error("the background's hue must lie in [0, 360) degrees");
+  m_bgHue = kernels::deci(static_cast<float>(deg)) % 3600;
+}
+
+std::size_t StereoFitness::outerPointsMax() const
+{
+  std::size_t n = 0;
+  for (const View &v : m_views)
+    n = std::max(n, v.outEnd - v.outBegin);
+  return n;
+}
+
+std::size_t StereoFitness::outerHues(const Phi &phi, int camera, float *out, std::size_t capacity) const
+{
+  check(phi);
+  const Projection p = projectionOf(camera, phi);
+  const View &view = viewFor(p);
+  std::size_t n = 0;
+  for (std::size_t i = view.outBegin; i < view.outEnd && n < capacity; ++i) {
+    const std::int32_t h = m_hasDepth ? kernels::sampleScalar<true>(p, m_x[i], m_y[i], m_z[i]) : kernels::sampleScalar<false>(p, m_x[i], m_y[i], 0.f);
+    if (h >= 0)
+      out[n++] = static_cast<float>(h) / 10.f;
+  }
+  return n;
 }
 
 std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) const

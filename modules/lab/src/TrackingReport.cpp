@@ -95,7 +95,7 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
 {
   out << "t,true_x,true_y,true_z,true_e1,true_e2,true_e3,est_x,est_y,est_z,est_e1,est_e2,est_e3,err_x,err_y,err_z,"
-         "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving,confidence,trusted,visible_share"
+         "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving,confidence,trusted,visible_share,background_hue_deg"
       << uncertaintyCsvHeader() << "\n";
   out << std::setprecision(8);
   for (const TrackedFrame &f : frames) {
@@ -108,7 +108,7 @@ void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
       out << "," << (f.haveTruth ? f.result.phi[i] - f.truth[i] : NAN);
     out << "," << f.result.fitness << "," << f.result.quality << "," << toString(f.result.state) << ","
         << f.result.evaluations << "," << f.result.generations << "," << f.result.computeMs << "," << (f.moving ? 1 : 0) << ","
-        << f.result.confidence << "," << (f.result.trusted ? 1 : 0) << "," << f.result.visibleShare;
+        << f.result.confidence << "," << (f.result.trusted ? 1 : 0) << "," << f.result.visibleShare << "," << f.result.backgroundHueDeg;
     writeUncertaintyCells(out, f.result.uncertainty);
     out << "\n";
   }

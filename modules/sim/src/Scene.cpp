@@ -1,5 +1,6 @@
 #include "pm/sim/Scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -45,6 +46,8 @@ void SceneParams::validate() const
   check(occluderSizeMm[0] > 0 && occluderSizeMm[1] > 0, "occluder size must be positive");
   check(barWidthMm > 0 && barTravelMm > 0 && barMmPerFrame > 0 && barDepthMm < 0,
         "sweeping bar: width, travel and speed must be positive, its depth negative (in front of the toy)");
+  check(std::isfinite(backdropHueDriftDegPerS) && std::fabs(backdropHueDriftDegPerS) <= 90,
+        "backdrop hue drift must lie in [-90, 90] degrees a second");
   gripperShape.validate();
   variation.validate();
   check(stillBackdropGapMm >= 0 && stillBackdropGapMm <= 500, "still backdrop: its gap must lie in [0, 500] mm");
@@ -206,6 +209,7 @@ Scene Scene::targetAlone() const
   s.m_params.occluder = false;
   s.m_params.sweepingBar = false;
   s.m_params.gripper = false;
+  s.m_params.backdropHueDriftDegPerS = 0; // the pass sees the background as it was
   return s;
 }
 
@@ -226,12 +230,15 @@ void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const 
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget, const vpHomogeneousMatrix &oMb) const
 {
   // Another camera's images (SceneParams::variation): the optics before the sensor's noise, its processing after.
+  // A background that changes (SceneParams::backdropHueDriftDegPerS) is turned before the noise too.
   const ImageVariation &variation = m_params.variation;
-  const bool vary = variation.any();
+  const bool vary = variation.any(), drift = m_params.backdropHueDriftDegPerS != 0;
   const std::uint64_t noiseSeed = hash64(m_params.seed ^ hash64(frame * 8 + stream));
   if (camera.distortion.isNone()) {
-    renderIdeal(raster, camera, hMo, frame, stream, out, withTarget, vary ? 0.0 : m_params.noiseSigma, oMb);
-    if (!vary)
+    renderIdeal(raster, camera, hMo, frame, stream, out, withTarget, vary || drift ? 0.0 : m_params.noiseSigma, oMb);
+    if (drift)
+      driftBackdropHue(raster, frame, out);
+    if (!vary && !drift)
       return;
   } else {
     const std::shared_ptr<const LensWarp> warp = m_lensCache->get(camera);
@@ -242,6 +249,8 @@ void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const 
     ideal.distortion = core::LensDistortion();
     vpImage<vpRGBa> canvas;
     renderIdeal(raster, ideal, hMo, frame, stream, canvas, withTarget, 0.0, oMb);
+    if (drift)
+      driftBackdropHue(raster, frame, canvas);
     out.resize(camera.height, camera.width);
     const cv::Mat src(static_cast<int>(canvas.getHeight()), static_cast<int>(canvas.getWidth()), CV_8UC4, canvas.bitmap);
     cv::Mat dst(static_cast<int>(camera.height), static_cast<int>(camera.width), CV_8UC4, out.bitmap);
@@ -252,6 +261,28 @@ void Scene::render(Rasterizer &raster, const core::PinholeCamera &camera, const 
   Rasterizer::addNoise(out, m_params.noiseSigma, noiseSeed);
   if (vary)
     variation.applyAfterSensor(out, hash64(noiseSeed ^ 0x5407u)); // the shot noise's own draws
+}
+
+void Scene::driftBackdropHue(const Rasterizer &raster, std::uint64_t frame, vpImage<vpRGBa> &image) const
+{
+  // A turn of the colours about the grey axis (brightness kept): cos t I + (1 - cos t) / 3 J + sin t / sqrt(3) K,
+  // J all ones, K the cross product with (1, 1, 1); blended by the pixel's share of backdrop (its edges).
+  const double t = m_params.backdropHueDriftDegPerS * static_cast<double>(frame) / kLabFramesPerSecond * M_PI / 180.0;
+  const double c = std::cos(t), a = (1 - c) / 3, b = std::sin(t) / std::sqrt(3.0);
+  const double m[3][3] = {{c + a, a - b, a + b}, {a + b, c + a, a - b}, {a - b, a + b, c + a}};
+  for (unsigned v = 0; v < image.getHeight(); ++v)
+    for (unsigned u = 0; u < image.getWidth(); ++u) {
+      const double share = raster.coverage(u, v, 1);
+      if (share <= 0)
+        continue;
+      vpRGBa &p = image[v][u];
+      const double in[3] = {static_cast<double>(p.R), static_cast<double>(p.G), static_cast<double>(p.B)};
+      unsigned char *ch[3] = {&p.R, &p.G, &p.B};
+      for (int i = 0; i < 3; ++i) {
+        const double turned = m[i][0] * in[0] + m[i][1] * in[1] + m[i][2] * in[2];
+        *ch[i] = static_cast<unsigned char>(std::clamp(std::lround(share * turned + (1 - share) * in[i]), 0L, 255L));
+      }
+    }
 }
 
 void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,

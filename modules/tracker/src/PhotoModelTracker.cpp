@@ -60,7 +60,7 @@ PhotoModelTracker::PhotoModelTracker(const core::StereoRig &rig, const core::Pho
       m_search(m_params.search, m_fitness, m_scale), m_lock(m_params.lock), m_steady(m_params.steady),
       m_verifier(m_params.verifier, m_params.search, m_fitness, m_scale),
       m_refinement(m_params.refinement, rig, model, m_fitness, m_scale),
-      m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness, m_scale)
+      m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness, m_scale), m_background(m_params.background, m_fitness)
 {
   initialize();
 }
@@ -89,6 +89,9 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   m_search.apply(update);                                                // 8. RM-GA's changes, in one place
   m_verifier.afterJudgement(r.state, r.confidence, r.phi, m_search.ga());
   m_refinement.learn(r);
+  r.backgroundHueDeg = m_fitness.backgroundHue(); // what the frame was scored with
+  if (const std::optional<double> hue = m_background.learn(r.phi, r.trusted)) // 9. the background's hue as seen now
+    useBackgroundHue(*hue);
   r.computeMs = clock.ms();
   r.stageMs = {frame.hueMs, searchedMs - frame.hueMs, refinedMs - searchedMs, r.computeMs - refinedMs};
   m_steady.remember(m_last.phi, prev == TrackState::Tracking && r.state == TrackState::Tracking);
@@ -195,6 +198,13 @@ void PhotoModelTracker::reset(TrackState state, bool verified)
   m_steady.reset();
   m_verifier.reset(verified);
   m_refinement.reset();
+  useBackgroundHue(m_background.reset());
+}
+
+void PhotoModelTracker::useBackgroundHue(double deg)
+{
+  m_fitness.setBackgroundHue(deg);
+  m_refinement.setBackgroundHue(deg);
 }
 
 void PhotoModelTracker::initialize()

@@ -122,6 +122,13 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
             .value("doubt_confidence", p.lock.doubtConfidence)
             .value("doubt_frames", p.lock.doubtFrames);
       })
+      .section("background", [&](V &b) {
+        b.value("learn", p.background.learn)
+            .value("rate", p.background.rate)
+            .value("window_deg", p.background.windowDeg)
+            .value("switch_deg", p.background.switchDeg)
+            .value("min_samples", p.background.minSamples);
+      })
       .section("steady", [&](V &s) {
         s.value("budget_fraction", p.steady.budgetFraction)
             .value("after_frames", p.steady.afterFrames)

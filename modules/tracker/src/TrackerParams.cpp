@@ -11,6 +11,7 @@ void TrackerParams::validate() const
   verifier.validate();
   refinement.validate();
   judgement.validate();
+  background.validate();
 }
 
 } // namespace pm::tracker

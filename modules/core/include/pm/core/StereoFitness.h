@@ -267,6 +267,25 @@ public:
   */
   double visibleFraction(const Phi &phi, int camera) const;
 
+  /*!
+    The background's hue H_B the scores compare with (deg, in [0, 360)): the model's until set. The
+    tracker sets the hue it learnt on trusted frames (tracker::BackgroundLearning: a background
+    that changed since the photos). Set it between frames, as setImages(), not while evaluating.
+    Throws pm::core::Error outside [0, 360).
+  */
+  void setBackgroundHue(double deg);
+  //! The background's hue H_B the scores compare with now (deg).
+  double backgroundHue() const { return m_bgHue / 10.0; }
+  /*!
+    The image hues (deg) under the S_out points of the view scored in camera \e camera at \e phi, as
+    the hue planes hold them (points off the image, behind the camera or on a pixel without hue left
+    out): at most \e capacity of them written to \e out, their number returned (outerPointsMax() is
+    always enough). Allocates nothing; same contract as evaluate().
+  */
+  std::size_t outerHues(const Phi &phi, int camera, float *out, std::size_t capacity) const;
+  //! The most S_out points a view has (outerHues()' capacity).
+  std::size_t outerPointsMax() const;
+
   //! Camera \e camera's hue plane (0 left, 1 right), as the last setImages() (and addHueUnder()) left it.
   const HuePlane &huePlane(int camera) const { return m_planes[static_cast<std::size_t>(camera)]; }
   //! Number of points of the model's own S_in and S_out (those of further views not counted).

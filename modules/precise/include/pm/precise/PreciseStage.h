@@ -121,6 +121,12 @@ public:
     last refine() or learnColours() on them. Throws pm::core::Error if a size is not its camera's.
   */
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  //! The background's hue its hidden lines compare with (deg, [0, 360)): the model's until set (tracker::BackgroundLearning).
+  void setBackgroundHue(double deg)
+  {
+    if (m_occlusion)
+      m_occlusion->setBackgroundHue(deg);
+  }
   /*!
     Refines \e start on the images (see PreciseStage.h): with every scale, or, \e near (a start known
     to lie within a few pixels, e.g. the last frame's pose while tracking), with nearScales only;

@@ -22,6 +22,7 @@
       pm::precise::StereoOcclusion occlusion(model, pm::precise::StereoOcclusionParams());
       const bool h = occlusion.hidden(left, leftPose, leftCentre, right, rightPose, contourPoint, pxPerMm);
 */
+#include <cmath>
 #include <array>
 
 #include "pm/core/PhotoModel.h"
@@ -70,6 +71,8 @@ class StereoOcclusion
 public:
   //! Throws pm::core::Error for parameters out of range.
   StereoOcclusion(const core::PhotoModel &model, const StereoOcclusionParams &params);
+  //! The background's hue a probe is compared with (deg, [0, 360)): the model's until set (tracker::BackgroundLearning).
+  void setBackgroundHue(double deg) { m_backgroundHue = std::lround(deg * 10.0) % 3600; }
   /*!
     Whether the target just inside contour point \e q is hidden in camera \e self (the model at
     \e selfPose, its centre at \e selfCentre in the model frame, mm) and seen by camera \e other (at

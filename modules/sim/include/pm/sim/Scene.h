@@ -73,6 +73,14 @@ struct SceneParams
   */
   bool stillBackdrop = false;
   double stillBackdropGapMm = 50; //!< how much farther behind the toy's base the still panel stands (mm)
+  /*!
+    A background that changes: the backdrop's colours turn about the grey axis by this many degrees
+    a second of the lab's frames (render()'s frame number over kLabFramesPerSecond), as a light's
+    colour or a slowly changing background would turn its hue. The model's pass and photos see it
+    as it was (targetAlone()); the tracker sees the background's hue drift away from the photos'.
+    0: the renderer's images, bit for bit.
+  */
+  double backdropHueDriftDegPerS = 0;
   std::uint64_t seed = 1;                   //!< noise seed
   /*!
     On: the scene light (sceneLightDir, fixed in the target frame) replaces the hand light and
@@ -141,6 +149,9 @@ struct StereoImages
   }
   \endcode
 */
+//! The lab's frame rate (frames a second): render()'s frame number over it is the scene's time.
+constexpr double kLabFramesPerSecond = 30;
+
 class Scene
 {
 public:
@@ -198,7 +209,8 @@ public:
 
   /*!
     A copy of this scene with the target alone on its backdrop: no look-alike, clutter, strand, bar
-    or gripper (the all-around pass and the model's photos: a user photographs the target alone).
+    or gripper, the backdrop's colours as they were at the start (the all-around pass and the
+    model's photos: a user photographs the target alone).
   */
   Scene targetAlone() const;
 
@@ -232,6 +244,8 @@ private:
   std::shared_ptr<ShadowCache> m_shadowCache; // shared by copies; the map is rebuilt if the light changed
   struct LensCache;
   std::shared_ptr<LensCache> m_lensCache; // the distorted cameras' resampling maps, shared by copies
+  //! The backdrop's pixels of \e image (the raster's last render) turned in hue for \e frame (SceneParams::backdropHueDriftDegPerS).
+  void driftBackdropHue(const Rasterizer &raster, std::uint64_t frame, vpImage<vpRGBa> &image) const;
   void renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                    unsigned stream, vpImage<vpRGBa> &out, bool withTarget, double noiseSigma, const vpHomogeneousMatrix &oMb) const;
 };

@@ -20,7 +20,9 @@
       steadiness and the verification follow the state;
    7. judge: the confidence, the trust, the uncertainty;
    8. apply: what the parts asked of RM-GA's population (RmGaUpdate.h), in one place; a doubtful
-      lock is verified again; the precise stage learns the colours of a trusted frame.
+      lock is verified again; the precise stage learns the colours of a trusted frame;
+   9. background: a trusted frame teaches the background's hue as seen now (BackgroundLearning.h);
+      the scoring takes it when it has moved away from the photos'.
 
   Trust: "tracking" says the model fits somewhere, not that the pose is right. TrackResult::trusted
   (tracking, verified, confidence over its threshold) is what a robot should act on; with the
@@ -123,6 +125,8 @@ private:
   RmGaUpdate::Restart updateState(TrackResult &r, const Evidence &evidence);
   void judge(TrackResult &r, const Evidence &evidence, TrackState prev) const;
   void reset(TrackState state, bool verified);
+  //! The fitness and the precise stage compare with the background's hue \e deg from now on.
+  void useBackgroundHue(double deg);
 
   TrackerParams m_params;
   core::StereoFitness m_fitness; //!< the hue planes of the frame; every part scores with it
@@ -133,6 +137,7 @@ private:
   LockVerifier m_verifier;
   RefinementChain m_refinement;
   Judgement m_judgement;
+  BackgroundLearning m_background; //!< the background's hue as seen now (learnt on trusted frames)
   TrackResult m_last;
 };
 

@@ -74,6 +74,12 @@ public:
   bool refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
+  //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).
+  void setBackgroundHue(double deg)
+  {
+    if (m_stage)
+      m_stage->setBackgroundHue(deg);
+  }
   const precise::PreciseStage *stage() const { return m_stage.get(); } //!< the stage (its colours, its last lines); null when off
 
 private:

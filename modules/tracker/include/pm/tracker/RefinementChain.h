@@ -70,6 +70,8 @@ public:
   void transform(const vpHomogeneousMatrix &hNowMhPrev) { m_tilt.transform(hNowMhPrev); }
   //! A new start.
   void reset() { m_tilt.reset(); }
+  //! The background's hue learnt (BackgroundLearning): the precise stage's hidden lines compare with it.
+  void setBackgroundHue(double deg) { m_precise.setBackgroundHue(deg); }
 
   const PreciseRefinement &precise() const { return m_precise; } //!< stage 1
   const TiltFilterParams &tiltFilter() const { return m_tiltParams; } //!< stage 3's parameters for this model

@@ -62,6 +62,8 @@ struct TrackResult
     core::FitnessParams::stereoVisibility off).
   */
   double visibleShare = 1;
+  //! The background's hue the frame was scored with (deg): the model's, or the one learnt since (BackgroundLearning.h).
+  double backgroundHueDeg = 0;
   double confidence = 0;     //!< in (0, 1): how likely the estimate is within 2 cm and 5 deg (see TrackConfidence.h)
   bool verified = false;     //!< the lock survived its challenger search (VerifierParams::evaluations)
   bool switched = false;     //!< the challenger found a better pose elsewhere this frame and the tracker moved there

@@ -3,7 +3,7 @@
   \file TrackerParams.h
   Everything the tracker can be told, in one section per part of its frame (PhotoModelTracker.h):
   the fitness, the search, the lock state, the steady frames, the lock verifier, the refinement
-  chain and the judgement. The defaults are the measured ones that every program uses
+  chain, the judgement and the background's learnt hue. The defaults are the measured ones that every program uses
   (docs/rmga-tracker.md, "Which options"): 800 evaluations per frame, 15 % of them on steady frames
   with the hue within 24 px of the model, locks verified by 3,000 evaluations of a challenger; a
   configuration file (TrackerConfigFile.h) with no keys gives the same. PhotoModelTracker copies
@@ -27,6 +27,7 @@ int main()
   \endcode
 */
 #include "pm/core/StereoFitness.h"
+#include "pm/tracker/BackgroundLearning.h"
 #include "pm/tracker/Judgement.h"
 #include "pm/tracker/LockState.h"
 #include "pm/tracker/LockVerifier.h"
@@ -46,6 +47,7 @@ struct TrackerParams
   VerifierParams verifier;      //!< the lock's verification by a challenger (LockVerifier.h)
   RefinementParams refinement;  //!< the precise stage, the smooth ascent, the tilt filter (RefinementChain.h)
   JudgementParams judgement;    //!< the confidence, the trust, the uncertainty (Judgement.h)
+  BackgroundParams background;  //!< the background's hue learnt on trusted frames (BackgroundLearning.h)
 
   //! Throws core::Error naming the first parameter out of range.
   void validate() const;

@@ -1,0 +1,74 @@
+#include "pm/tracker/BackgroundLearning.h"
+
+#include <cmath>
+
+#include "pm/core/Error.h"
+
+namespace pm::tracker {
+
+namespace {
+
+//! \e d wrapped into (-180, 180] degrees.
+double wrapped(double d) { return d - 360.0 * std::ceil((d - 180.0) / 360.0); }
+
+//! \e h wrapped into [0, 360) degrees.
+double onCircle(double h)
+{
+  const double w = std::fmod(h, 360.0);
+  return w < 0 ? w + 360.0 : (w >= 360.0 ? 0.0 : w);
+}
+
+} // namespace
+
+void BackgroundParams::validate() const
+{
+  if (!(rate > 0 && rate <= 1))
+    throw core::Error("tracker: the background's learning rate must lie in (0, 1]");
+  if (!(windowDeg > 0 && windowDeg <= 90))
+    throw core::Error("tracker: the background's hue window must lie in (0, 90] degrees");
+  if (!(switchDeg >= 0 && switchDeg < windowDeg))
+    throw core::Error("tracker: the background's switch must lie in [0, its window) degrees");
+  if (minSamples < 1)
+    throw core::Error("tracker: the background's least samples must be at least 1");
+}
+
+BackgroundLearning::BackgroundLearning(const BackgroundParams &params, const core::StereoFitness &fitness)
+    : m_p((params.validate(), params)), m_fitness(fitness), m_model(fitness.backgroundHue()), m_learnt(m_model), m_used(m_model),
+      m_hues(fitness.outerPointsMax())
+{
+}
+
+std::optional<double> BackgroundLearning::learn(const core::Phi &phi, bool trusted)
+{
+  if (!m_p.learn || !trusted)
+    return std::nullopt;
+  // The circular mean of the background's hues, as offsets from the hue used now (within the window).
+  double sum = 0;
+  int n = 0;
+  for (int cam = 0; cam < 2; ++cam) {
+    const std::size_t k = m_fitness.outerHues(phi, cam, m_hues.data(), m_hues.size());
+    for (std::size_t i = 0; i < k; ++i) {
+      const double d = wrapped(static_cast<double>(m_hues[i]) - m_used);
+      if (std::fabs(d) <= m_p.windowDeg) {
+        sum += d;
+        ++n;
+      }
+    }
+  }
+  if (n < m_p.minSamples)
+    return std::nullopt;
+  const double seen = m_used + sum / n;
+  m_learnt = onCircle(m_learnt + m_p.rate * wrapped(seen - m_learnt));
+  if (std::fabs(wrapped(m_learnt - m_used)) <= m_p.switchDeg)
+    return std::nullopt;
+  m_used = m_learnt;
+  return m_used;
+}
+
+double BackgroundLearning::reset()
+{
+  m_learnt = m_used = m_model;
+  return m_model;
+}
+
+} // namespace pm::tracker
