@@ -14,4 +14,7 @@ esac
 pm_setup "$mode" "${PM_TEST_PACKAGES[@]}"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:${ASAN_OPTIONS:-}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
+# Two test programs at once, each with OpenMP's threads: waiting threads sleep instead of spinning
+# on the cores the other program needs (OMP_WAIT_POLICY; the results are the same).
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 ctest --test-dir "$PM_BUILD_DIR" --output-on-failure -j "$(nproc)"
