@@ -44,7 +44,8 @@ struct ConfidenceFit
     std::size_t trustedWrong = 0;   //!< wrong frames it trusts
     double auroc = 1;               //!< AUROC of their frames (1 when they are all right or all wrong)
     double worstRunTrustedShare = 1; //!< the lowest share of a run's right frames trusted (runs with right frames)
-  } heldOut;
+  };
+  HeldOut heldOut; //!< the held-out runs' figures (variation empty: none held out)
 };
 
 /*!

@@ -131,6 +131,9 @@ struct StereoImages
   vpImage<vpRGBa> left, right; //!< the right camera's image
 };
 
+//! The lab's frame rate (frames a second): render()'s frame number over it is the scene's time.
+constexpr double kLabFramesPerSecond = 30;
+
 /*!
   The simulated lab scene of one target (see Scene.h): renders what the rig's cameras see for a
   pose hMo of the target frame in the hand frame. A scene owns copies of the target and of its
@@ -149,9 +152,6 @@ struct StereoImages
   }
   \endcode
 */
-//! The lab's frame rate (frames a second): render()'s frame number over it is the scene's time.
-constexpr double kLabFramesPerSecond = 30;
-
 class Scene
 {
 public:
