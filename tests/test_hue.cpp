@@ -54,6 +54,26 @@ TEST(Hue, DistanceWrapsAround)
   }
 }
 
+TEST(Hue, SignedDifferenceAndOnTheCircle)
+{
+  EXPECT_DOUBLE_EQ(pm::core::hueDifference(10, 350), 20.0);
+  EXPECT_DOUBLE_EQ(pm::core::hueDifference(350, 10), -20.0);
+  EXPECT_DOUBLE_EQ(pm::core::hueDifference(190, 10), 180.0); // half way round: +180, never -180
+  EXPECT_DOUBLE_EQ(pm::core::hueDifference(10, 190), 180.0);
+  EXPECT_DOUBLE_EQ(pm::core::hueDifference(725, 0), 5.0);
+  for (double a = -400; a < 800; a += 37.5)
+    for (double b = 0; b < 360; b += 45) {
+      const double d = pm::core::hueDifference(a, b);
+      EXPECT_GT(d, -180.0);
+      EXPECT_LE(d, 180.0);
+      EXPECT_NEAR(pm::core::hueDistance(static_cast<float>(pm::core::hueOnCircle(a)), static_cast<float>(b)), std::fabs(d), 1e-4);
+    }
+  EXPECT_DOUBLE_EQ(pm::core::hueOnCircle(-30), 330.0);
+  EXPECT_DOUBLE_EQ(pm::core::hueOnCircle(720), 0.0);
+  EXPECT_DOUBLE_EQ(pm::core::hueOnCircle(359.5), 359.5);
+  EXPECT_DOUBLE_EQ(pm::core::hueOnCircle(-1e-20), 0.0); // never 360
+}
+
 TEST(Hue, CircularMeanAcrossZero)
 {
   EXPECT_NEAR(pm::core::hueDistance(pm::core::circularMeanHue({350.f, 10.f}), 0.f), 0.f, 1e-4f);

@@ -60,7 +60,7 @@ void StereoFitness::setBackgroundHue(double deg)
 {
   if (!(deg >= 0 && deg < 360))
     throw Error("the background's hue must lie in [0, 360) degrees");
-  m_bgHue = kernels::deci(static_cast<float>(deg)) % 3600;
+  m_bgHue = kernels::deci(deg) % 3600;
 }
 
 std::size_t StereoFitness::outerPointsMax() const

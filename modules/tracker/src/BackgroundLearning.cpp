@@ -3,22 +3,9 @@
 #include <cmath>
 
 #include "pm/core/Error.h"
+#include "pm/core/Hue.h"
 
 namespace pm::tracker {
-
-namespace {
-
-//! \e d wrapped into (-180, 180] degrees.
-double wrapped(double d) { return d - 360.0 * std::ceil((d - 180.0) / 360.0); }
-
-//! \e h wrapped into [0, 360) degrees.
-double onCircle(double h)
-{
-  const double w = std::fmod(h, 360.0);
-  return w < 0 ? w + 360.0 : (w >= 360.0 ? 0.0 : w);
-}
-
-} // namespace
 
 void BackgroundParams::validate() const
 {
@@ -48,7 +35,7 @@ std::optional<double> BackgroundLearning::learn(const core::Phi &phi, bool trust
   for (int cam = 0; cam < 2; ++cam) {
     const std::size_t k = m_fitness.outerHues(phi, cam, m_hues.data(), m_hues.size());
     for (std::size_t i = 0; i < k; ++i) {
-      const double d = wrapped(static_cast<double>(m_hues[i]) - m_used);
+      const double d = core::hueDifference(m_hues[i], m_used);
       if (std::fabs(d) <= m_p.windowDeg) {
         sum += d;
         ++n;
@@ -58,8 +45,8 @@ std::optional<double> BackgroundLearning::learn(const core::Phi &phi, bool trust
   if (n < m_p.minSamples)
     return std::nullopt;
   const double seen = m_used + sum / n;
-  m_learnt = onCircle(m_learnt + m_p.rate * wrapped(seen - m_learnt));
-  if (std::fabs(wrapped(m_learnt - m_used)) <= m_p.switchDeg)
+  m_learnt = core::hueOnCircle(m_learnt + m_p.rate * core::hueDifference(seen, m_learnt));
+  if (std::fabs(core::hueDifference(m_learnt, m_used)) <= m_p.switchDeg)
     return std::nullopt;
   m_used = m_learnt;
   return m_used;

@@ -66,6 +66,20 @@ inline float hueDistance(float a, float b)
   return d > 180.f ? 360.f - d : d;
 }
 
+//! \e a - \e b on the circle, in (-180, 180] degrees: how far and which way hue \e a lies from \e b.
+inline double hueDifference(double a, double b)
+{
+  const double d = a - b;
+  return d - 360.0 * std::ceil((d - 180.0) / 360.0);
+}
+
+//! \e h brought onto [0, 360) degrees.
+inline double hueOnCircle(double h)
+{
+  const double w = std::fmod(h, 360.0);
+  return w < 0 ? (w + 360.0 >= 360.0 ? 0.0 : w + 360.0) : w;
+}
+
 //! Mean of hues on the circle (degrees in [0, 360)); 0 for an empty or balanced set.
 inline float circularMeanHue(const std::vector<float> &hues)
 {
