@@ -54,12 +54,16 @@ void Precise_Refine(benchmark::State &s) { preciseRefine(s, true); }
 //! Its peer: the outline alone (PreciseParams::interiorPoints 0).
 void Precise_Refine_OutlineOnly(benchmark::State &s) { preciseRefine(s, false); }
 
-//! A steady tracked frame of the all-around model (the tracker's defaults), with the precise stage, and without it (its peer).
-void allAroundFrame(benchmark::State &state, bool precise)
+/*!
+  A steady tracked frame of the all-around model (the tracker's defaults), with the precise stage, and
+  its peers: without it, and without the background's learning (a trusted frame's S_out hues read).
+*/
+void allAroundFrame(benchmark::State &state, bool precise, bool learnBackground = true)
 {
   const AllAround &a = allAround();
   pm::tracker::TrackerParams p;
   p.refinement.precise.enabled = precise;
+  p.background.learn = learnBackground;
   pm::tracker::PhotoModelTracker tracker(setup().rig, a.model.build.model, p);
   tracker.initFromPose(pm::core::toHomogeneousMatrix(a.truth));
   for (int k = 0; k < 5; ++k) // a few frames: steady
@@ -71,6 +75,7 @@ void allAroundFrame(benchmark::State &state, bool precise)
 }
 void Tracker_Frame_Steady_AllAround(benchmark::State &s) { allAroundFrame(s, true); }
 void Tracker_Frame_Steady_AllAround_NoPrecise(benchmark::State &s) { allAroundFrame(s, false); }
+void Tracker_Frame_Steady_AllAround_NoBackgroundLearning(benchmark::State &s) { allAroundFrame(s, true, false); }
 
 } // namespace
 
@@ -78,3 +83,4 @@ BENCHMARK(Precise_Refine)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Precise_Refine_OutlineOnly)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround_NoPrecise)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_Steady_AllAround_NoBackgroundLearning)->Unit(benchmark::kMillisecond)->UseRealTime();
