@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "pm/compare/CadMesh.h"
 #include "pm/compare/Comparison.h"
 #include "pm/compare/ConfidenceFit.h"
 #include "pm/compare/ConfidenceStudy.h"
@@ -22,6 +23,7 @@
 #include "pm/compare/Trackers.h"
 #include "pm/core/Error.h"
 #include "pm/io/RigFile.h"
+#include "pm/sim/Rasterizer.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/sim/TargetCatalog.h"
@@ -300,6 +302,42 @@ TEST(Scenario, TheWorldAroundTheTargetOnRequestAStillBackdropClutterAndAGraspWit
   EXPECT_GT(changedShare(render(still, 0, true), render(still, 60, true), 0, 60), 0.1);
 }
 
+TEST(CadMesh, TheToysOwnMeshCutAlongItsOutlineFacesOutAndCoversWhatTheRendererDraws)
+{
+  // pm-compare --mbt-true-cad: the crab's own mesh as ViSP's CAD model. Seen from the rig's left
+  // camera near rest it covers the pixels the renderer covers with the toy (the mesh cut along the
+  // toy's outline as the renderer cuts it); its faces turn out, toward the cameras above the toy
+  // (the object frame's -z).
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12"));
+  const pm::model::HullMesh cad = pm::compare::toyCadMesh(pm::sim::buildTargetMesh(scene.target(), 1.0));
+  double up = 0, all = 0;
+  for (std::size_t f = 0; f < cad.triangles.size(); ++f) {
+    const auto &t = cad.triangles[f];
+    const pm::model::hull::Vec3 c = pm::model::hull::cross(pm::model::hull::sub(cad.vertices[t[1]], cad.vertices[t[0]]),
+                                                           pm::model::hull::sub(cad.vertices[t[2]], cad.vertices[t[0]]));
+    const double area = 0.5 * std::sqrt(pm::model::hull::dot(c, c));
+    all += area;
+    up += cad.faceNormals[f][2] < 0 ? area : 0;
+  }
+  EXPECT_GT(up / all, 0.6);
+  const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const vpHomogeneousMatrix hMo(0.01, -0.005, 0.5, 0.1, 0.15, 0);
+  pm::sim::Rasterizer r;
+  vpImage<vpRGBa> photo;
+  scene.render(r, rig.left, hMo, 1, 2, photo, true);
+  std::vector<float> zbuf;
+  cad.depthMap(pm::core::PinholeCamera::Projection(hMo.inverse() * rig.left.hMc, rig.left.cam, rig.left.width, rig.left.height), zbuf);
+  long both = 0, either = 0;
+  for (unsigned v = 0; v < rig.left.height; ++v)
+    for (unsigned u = 0; u < rig.left.width; ++u) {
+      const bool drawn = r.coverage(u, v, 2) >= 0.5, cadCovers = std::isfinite(zbuf[v * rig.left.width + u]);
+      both += drawn && cadCovers;
+      either += drawn || cadCovers;
+    }
+  ASSERT_GT(either, 5000);
+  EXPECT_GT(static_cast<double>(both) / static_cast<double>(either), 0.98);
+}
+
 TEST(ComparedTrackers, ViSPsTrackersStartedAtTheTruthStayNearItOnSlowMotion)
 {
   // The .cao model and the template are right if ViSP's trackers, started at the true pose,
@@ -418,6 +456,10 @@ TEST(PmCompare, BadInputIsAClearError)
   const auto c = runProgram("pm-compare", "--scenarios loss --trackers mbt-edge --mbt-mesh-cell-mm 0 --mbt-config " + d.file("bad.xml") + " --out " + d.file("o"));
   EXPECT_EQ(c.status, 1) << c.err;
   EXPECT_EQ(c.err.rfind("error: ", 0), 0u) << c.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("o/summary.json")));
+  const auto e = runProgram("pm-compare", "--scenarios loss --trackers mbt-edge --mbt-true-cad --mbt-mesh-cell-mm 0 --out " + d.file("o"));
+  EXPECT_EQ(e.status, 1) << e.err;
+  EXPECT_NE(e.err.find("error: compare: the true CAD model is decimated"), std::string::npos) << e.err;
   EXPECT_FALSE(std::filesystem::exists(d.file("o/summary.json")));
 }
 

@@ -74,14 +74,16 @@ struct Comparison::Setup
   sim::SimulatedPhotoModel flat, stereo, allAround;
   model::AllAroundBuild allAroundBuild;      //!< its build (the surface's mesh for ViSP's trackers)
   model::HullMesh cad;                        //!< ViSP's trackers' CAD model (empty: the flat outline)
+  bool cadIsTrue = false;                     //!< ... the toy's own mesh, in the toy's frame
+  vpHomogeneousMatrix toyFrame;               //!< the toy's own frame in itself (the true CAD model's)
   std::vector<vpPoint> outline;
   std::vector<Scenario> scenarios;
   Setup(const sim::TargetShape &target, const sim::SceneParams &params) : scene(target, params) {}
   // The truth of a tracker's own model frame: each model has its own (the 3-D centroid of S_in, ...).
   const vpHomogeneousMatrix &ownFrame(const std::string &key) const
   {
-    if (key.rfind("mbt", 0) == 0 && !cad.triangles.empty()) // ViSP's MBT on the all-around model's surface
-      return allAround.oMm;
+    if (key.rfind("mbt", 0) == 0 && !cad.triangles.empty()) // ViSP's MBT on the all-around model's surface, or the toy's
+      return cadIsTrue ? toyFrame : allAround.oMm;
     return key == "ours-3d" ? stereo.oMm : key.rfind("ours-aa", 0) == 0 ? allAround.oMm : flat.oMm;
   }
 };
@@ -105,17 +107,27 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
   bool mbt = false;
   for (const std::string &k : m_p.trackers)
     mbt = mbt || k.rfind("mbt", 0) == 0;
-  if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || (mbt && m_p.mbtMeshCellMm > 0))
+  if (m_p.mbtTrueCad && !(m_p.mbtMeshCellMm > 0))
+    throw core::Error("compare: the true CAD model is decimated to cells of --mbt-mesh-cell-mm, which must be above 0");
+  const bool aaForMbt = mbt && m_p.mbtMeshCellMm > 0 && !m_p.mbtTrueCad;
+  if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || aaForMbt)
     m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, model::PassPlan(), "pa10", m_p.distanceMm,
                                                       model::AllAroundParams(), &m_s->allAroundBuild);
-  if (mbt && m_p.mbtMeshCellMm > 0)
+  if (aaForMbt)
     m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);
+  if (mbt && m_p.mbtTrueCad) {
+    m_s->cad = toyCadMesh(sim::buildTargetMesh(m_s->scene.target(), 1.0)).decimated(m_p.mbtMeshCellMm);
+    m_s->cadIsTrue = true;
+  }
 }
 
 Comparison::~Comparison() = default;
 
 std::string Comparison::caoText() const
 {
+  if (m_s->cadIsTrue)
+    return meshCaoText(m_s->cad, "the true mesh of " + m_p.target + " (the lab's), decimated to " + std::to_string(m_s->cad.triangles.size()) +
+                                     " triangles, metres, the toy's own frame");
   if (!m_s->cad.triangles.empty())
     return meshCaoText(m_s->cad, "surface of " + m_p.target + " from its all-around photo-model, " + std::to_string(m_s->cad.triangles.size()) +
                                      " triangles, metres, the all-around model's frame");
