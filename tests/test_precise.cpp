@@ -14,6 +14,7 @@
 #include "pm/io/RigFile.h"
 #include "pm/lab/LabModel.h"
 #include "pm/model/HullMesh.h"
+#include "pm/model/OutlineRefinement.h"
 #include "pm/model/ViewpointModel.h"
 #include "pm/precise/PoseUncertainty.h"
 #include "pm/precise/PreciseStage.h"
@@ -314,27 +315,37 @@ TEST(PreciseStage, RefusesWhatItCannotUse)
   EXPECT_NE(pm::test::errorOf([&] { s.setImages(small, small); }).find("100x100"), std::string::npos);
 }
 
-TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
+namespace {
+
+//! The mesh (surface nets on 1 mm cells) of a sphere of radius \e r (mm) about the origin.
+pm::model::HullMesh sphereMesh(double r)
 {
-  // A sphere of radius 30 mm sampled on 1 mm cells: the mesh's vertices within a tenth of a cell of
-  // it, closed (every edge between two faces), its volume within 1 %; seen from 500 mm its outline
-  // points project on the sphere's circle of silhouette, their normals pointing out.
   pm::model::VisualHull g;
   g.cell = 1;
   g.n = 80;
   g.origin = {-40, -40, -40};
   g.occ.assign(static_cast<std::size_t>(g.n) * g.n * g.n, 0);
-  const double R = 30;
   for (int z = 0; z < g.n; ++z)
     for (int y = 0; y < g.n; ++y)
       for (int x = 0; x < g.n; ++x) {
         const pm::model::hull::Vec3 c = g.centre(x, y, z);
-        g.occ[g.idx(x, y, z)] = std::sqrt(pm::model::hull::dot(c, c)) <= R ? 1 : 0;
+        g.occ[g.idx(x, y, z)] = std::sqrt(pm::model::hull::dot(c, c)) <= r ? 1 : 0;
       }
-  const pm::model::HullMesh mesh = pm::model::meshField(g, [&](int x, int y, int z) {
+  return pm::model::meshField(g, [&](int x, int y, int z) {
     const pm::model::hull::Vec3 c = g.corner(x, y, z);
-    return R - std::sqrt(pm::model::hull::dot(c, c));
+    return r - std::sqrt(pm::model::hull::dot(c, c));
   });
+}
+
+} // namespace
+
+TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
+{
+  // A sphere of radius 30 mm sampled on 1 mm cells: the mesh's vertices within a tenth of a cell of
+  // it, closed (every edge between two faces), its volume within 1 %; seen from 500 mm its outline
+  // points project on the sphere's circle of silhouette, their normals pointing out.
+  const double R = 30;
+  const pm::model::HullMesh mesh = sphereMesh(R);
   double worst = 0;
   for (const pm::model::hull::Vec3 &v : mesh.vertices)
     worst = std::max(worst, std::fabs(std::sqrt(pm::model::hull::dot(v, v)) - R));
@@ -365,6 +376,80 @@ TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
             << std::acos(worstCos) * 180 / M_PI << " deg of radial\n";
   EXPECT_LT(worstPx, 0.3);
   EXPECT_GT(worstCos, std::cos(vpMath::rad(10)));
+}
+
+TEST(OutlineRefinement, ASphereMeshedTooSmallGrowsOntoTheViewsOutlinesAndOnAViewBetweenThem)
+{
+  // A sphere of radius 30 mm, its mesh made 0.5 mm too small (the hull's inward bias, exaggerated);
+  // 16 cameras of a pass (at rest, rings at 20 and 40 deg) at 500 mm see the true sphere (its
+  // silhouette's signed distance, exact). After the refinement the mesh's outline lies on the true
+  // circle from a direction between the pass's cameras too; its back, unseen, stays.
+  const double R = 30, meshed = 29.5, D = 500, f = 754;
+  pm::model::HullMesh mesh = sphereMesh(meshed);
+  const vpCameraParameters cam(f, f, 320, 240);
+  const double rPx = f * std::tan(std::asin(R / D));
+  auto direction = [](double tiltDeg, double azimuthDeg) {
+    const double t = vpMath::rad(tiltDeg), a = vpMath::rad(azimuthDeg);
+    return pm::model::hull::Vec3{std::sin(t) * std::cos(a), std::sin(t) * std::sin(a), -std::cos(t)};
+  };
+  std::vector<pm::model::hull::HullView> views;
+  std::vector<pm::model::hull::Vec3> dirs{direction(0, 0)};
+  for (int k = 0; k < 5; ++k)
+    dirs.push_back(direction(20, 72 * k));
+  for (int k = 0; k < 10; ++k)
+    dirs.push_back(direction(40, 36 * k + 18));
+  for (const pm::model::hull::Vec3 &d : dirs) {
+    pm::model::hull::HullView v;
+    v.cam = pm::core::PinholeCamera::Projection::lookingAtOrigin(pm::model::hull::scaled(d, D), cam, 640, 480);
+    v.signedDist.create(480, 640, CV_32F);
+    for (int y = 0; y < 480; ++y)
+      for (int x = 0; x < 640; ++x)
+        v.signedDist.at<float>(y, x) = static_cast<float>(rPx - std::hypot(x - 320.0, y - 240.0));
+    views.push_back(std::move(v));
+  }
+  std::vector<const pm::model::hull::HullView *> cams;
+  for (const auto &v : views)
+    cams.push_back(&v);
+  // The outline seen from between the pass's cameras (30 deg, between two of the ring's azimuths).
+  const pm::core::PinholeCamera::Projection between = pm::core::PinholeCamera::Projection::lookingAtOrigin(pm::model::hull::scaled(direction(30, 36), D), cam, 640, 480);
+  auto outlineOffPx = [&](const pm::model::HullMesh &m) {
+    std::vector<float> zbuf;
+    m.depthMap(between, zbuf);
+    std::vector<unsigned char> mask(zbuf.size());
+    for (std::size_t i = 0; i < zbuf.size(); ++i)
+      mask[i] = std::isfinite(zbuf[i]) ? 255 : 0;
+    double sum = 0;
+    const std::vector<pm::core::ContourPoint> outline = pm::model::meshOutline(between, m, mask, 300);
+    for (const pm::core::ContourPoint &c : outline) {
+      double u = 0, v = 0, z = 0;
+      EXPECT_TRUE(between.project({c.x, c.y, c.z}, u, v, z));
+      sum += std::hypot(u - 320, v - 240) - rPx;
+    }
+    return sum / static_cast<double>(outline.size());
+  };
+  const double before = outlineOffPx(mesh);
+  const pm::model::OutlineRefinementStats st = pm::model::refineOutlines(mesh, cams, pm::model::OutlineRefinementParams());
+  const double after = outlineOffPx(mesh);
+  // The sphere's back, which no camera's outline reaches, stays where it was.
+  double back = 0;
+  int nBack = 0;
+  for (const pm::model::hull::Vec3 &v : mesh.vertices)
+    if (v[2] > 25)
+      back += std::sqrt(pm::model::hull::dot(v, v)), ++nBack;
+  back /= nBack;
+  std::cout << "the pass's outlines " << st.meanBeforePx << " px inside (rms " << st.rmsBeforePx << ") -> " << st.meanAfterPx << " (rms " << st.rmsAfterPx
+            << "); from between them " << before << " -> " << after << " px; the back at " << back << " mm\n";
+  EXPECT_GT(st.meanBeforePx, 0.6); // 0.5 mm at 500 mm: 0.75 px
+  EXPECT_LT(std::fabs(st.meanAfterPx), 0.05);
+  EXPECT_LT(st.rmsAfterPx, 0.1);
+  EXPECT_LT(before, -0.6);
+  EXPECT_LT(std::fabs(after), 0.1);
+  EXPECT_NEAR(back, meshed, 0.1);
+  for (const pm::model::MeshEdge &e : mesh.edges)
+    ASSERT_GE(e.f1, 0) << "an open edge";
+  pm::model::OutlineRefinementParams bad;
+  bad.rounds = 30;
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::refineOutlines(mesh, cams, bad); }).find("rounds must lie in [0, 20]"), std::string::npos);
 }
 
 TEST(ModelFile, VersionFiveKeepsOutlinesColoursAndHistograms)

@@ -49,6 +49,8 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
                  "a plain backdrop of this hue (deg) instead of a second pass without the toy")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", c.allAroundParams.viewpoints, "simulator, all-around model: the model's viewing directions (K)")
       ->check(CLI::Range(1, 5000));
+  app.add_flag("--refine-outlines", c.allAroundParams.refineOutlines, "simulator, all-around model: the outlines to a fraction of a "
+               "pixel (sub-pixel silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
 }
 
 void addRobotOption(CLI::App &app, std::string &arm)

@@ -16,6 +16,8 @@
 #include "pm/core/Hue.h"
 #include "pm/core/UndistortMap.h"
 #include "pm/model/HullMesh.h"
+#include "pm/model/SubpixelOutline.h"
+#include "pm/model/OutlineRefinement.h"
 #include "pm/model/ViewpointModel.h"
 #include "pm/model/VisualHull.h"
 
@@ -25,6 +27,7 @@ void AllAroundParams::validate() const
 {
   silhouette.validate();
   fusion.validate();
+  outline.validate();
   auto check = [](bool ok, const char *what) {
     if (!ok)
       throw core::Error(std::string("all-around model parameter ") + what);
@@ -370,7 +373,7 @@ PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassV
       HullView vc;
       vc.cam = core::PinholeCamera::Projection(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height);
       vc.photo = std::move(photo);
-      vc.signedDist = hull::signedDistance(mask);
+      vc.signedDist = p.refineOutlines ? hull::subpixelSignedDistance(mask, vc.photo, plain ? nullptr : &back) : hull::signedDistance(mask);
       vc.view = static_cast<int>(k);
       cams.push_back(std::move(vc));
       backgrounds.push_back(std::move(back));
@@ -582,6 +585,13 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
     const double px = hull::field(usedCams, X), f = px * mmPerPx;
     return p.fusion.enabled ? std::min(f, evidence.fieldInside(X, px)) : f;
   });
+  // The outline on every view's at once, where the least of their distances left it inside.
+  if (p.refineOutlines) {
+    const OutlineRefinementStats refined = refineOutlines(mesh, usedCams, p.outline);
+    out.outlineResidualBeforePx = refined.meanBeforePx;
+    out.outlineResidualPx = refined.meanAfterPx;
+    out.outlineResidualRmsPx = refined.rmsAfterPx;
+  }
   const Vec3 mean = occupiedCentroid(g);
   std::vector<Vec3> &pts = mesh.vertices;
   const std::vector<Vec3> &normals = mesh.normals;

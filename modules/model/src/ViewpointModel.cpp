@@ -37,8 +37,10 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
 }
 
 std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const unsigned char *mask, int n,
-                                            ViewpointScratch &scratch)
+                                            ViewpointScratch &scratch, std::vector<OutlineOrigin> *origins)
 {
+  if (origins)
+    origins->clear();
   auto inMask = [&](double u, double v) {
     const int x = static_cast<int>(std::lround(u)), y = static_cast<int>(std::lround(v));
     return x >= 0 && y >= 0 && x < cam.w && y < cam.h && mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
@@ -47,6 +49,7 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
   {
     Vec3 a, b;
     double ua, va, ub, vb, nu, nv, len;
+    std::uint32_t ia, ib;
   };
   std::vector<Segment> segs;
   double total = 0;
@@ -63,6 +66,7 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
     const std::size_t front = static_cast<std::size_t>(fa ? e.f0 : e.f1);
     Segment s;
     s.a = mesh.vertices[e.a], s.b = mesh.vertices[e.b];
+    s.ia = e.a, s.ib = e.b;
     double za, zb, u3, v3, z3;
     if (!cam.project(s.a, s.ua, s.va, za) || !cam.project(s.b, s.ub, s.vb, zb))
       continue;
@@ -116,7 +120,7 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
       const double t = (next - walked) / s.len;
       const Vec3 X{s.a[0] + t * (s.b[0] - s.a[0]), s.a[1] + t * (s.b[1] - s.a[1]), s.a[2] + t * (s.b[2] - s.a[2])};
       const double u = s.ua + t * (s.ub - s.ua), v = s.va + t * (s.vb - s.va);
-      double uu, vv, z;
+      double uu = u, vv = v, z = 0;
       cam.project(X, uu, vv, z);
       double gu = coverAt(u - 1, v) - coverAt(u + 1, v), gv = coverAt(u, v - 1) - coverAt(u, v + 1);
       const double gn = std::hypot(gu, gv);
@@ -133,6 +137,8 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
       c.insideMm = static_cast<float>(run(u, v, -gu, -gv, 1.0, true) * mmPerPx);
       c.outsideMm = static_cast<float>(run(u, v, gu, gv, 1.0, false) * mmPerPx);
       out.push_back(c);
+      if (origins)
+        origins->push_back({s.ia, s.ib, t, uu, vv, z});
     }
     walked += s.len;
   }

@@ -27,6 +27,7 @@ namespace pm::model::hull {
 
 // The 3-vectors (mm) and the camera's projection are core's.
 using core::add;
+using core::add;
 using core::cross;
 using core::dot;
 using core::scaled;

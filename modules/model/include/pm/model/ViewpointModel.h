@@ -16,6 +16,7 @@
       pm::model::ViewpointScratch scratch; // kept from one viewpoint to the next
       const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, scratch);
 */
+#include <cstdint>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -67,8 +68,22 @@ core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, cons
   it). For the precise stage's lines and for S_out.
 */
 std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n);
-//! The same, \e mask w x h bytes (row-major), with \e scratch's facing and cover as buffers.
+//! Where a point of meshOutline() lies on the mesh: on the edge from vertex \e a to \e b, at \e t (0 at a, 1 at b).
+struct OutlineOrigin
+{
+  std::uint32_t a = 0; //!< the edge's first vertex
+  std::uint32_t b = 0; //!< its second vertex
+  double t = 0;        //!< how far along it
+  double u = 0;        //!< the point's image column (px)
+  double v = 0;        //!< its image row (px)
+  double z = 0;        //!< its depth (mm)
+};
+
+/*!
+  The same, \e mask w x h bytes (row-major), with \e scratch's facing and cover as buffers; with
+  \e origins, where each point lies on the mesh (one per point returned, in order).
+*/
 std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const unsigned char *mask, int n,
-                                            ViewpointScratch &scratch);
+                                            ViewpointScratch &scratch, std::vector<OutlineOrigin> *origins = nullptr);
 
 } // namespace pm::model
