@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "pm/core/Error.h"
 #include "pm/model/HullGeometry.h"
 
 namespace pm::model::hull {
@@ -62,6 +63,8 @@ double targetShare(const Rgb &pixel, const Rgb &t, const Rgb &b)
 double edgeDistanceFromCoverage(double alpha, double nx, double ny)
 {
   const double n = std::hypot(nx, ny);
+  if (!(n > 0))
+    return std::clamp(alpha, 0.0, 1.0) - 0.5; // no direction: as if across a column
   double gx = std::fabs(nx) / n, gy = std::fabs(ny) / n;
   if (gy > gx)
     std::swap(gx, gy);
@@ -83,6 +86,9 @@ cv::Mat subpixelSignedDistance(const vpImage<unsigned char> &mask, const vpImage
 {
   const cv::Mat binary = signedDistance(mask);
   const int h = binary.rows, w = binary.cols;
+  if (photo.getWidth() != static_cast<unsigned>(w) || photo.getHeight() != static_cast<unsigned>(h) ||
+      (background && (background->getWidth() != photo.getWidth() || background->getHeight() != photo.getHeight())))
+    throw core::Error("sub-pixel outline: the mask, the photo and the background must have one size");
   cv::Mat gx, gy;
   cv::Sobel(binary, gx, CV_32F, 1, 0, 3);
   cv::Sobel(binary, gy, CV_32F, 0, 1, 3);

@@ -34,7 +34,7 @@ double edgeDistanceFromCoverage(double alpha, double nx, double ny);
   from the light does; against \e background at the pixel, or two pixels outside when \e background
   is null: a plain backdrop) and the pixels around it are placed from there; elsewhere the mask's
   distance, with its border's half pixel taken off. Where target and background have the same colour
-  the mask's border stays.
+  the mask's border stays. Throws pm::core::Error when the images are not of one size.
 */
 cv::Mat subpixelSignedDistance(const vpImage<unsigned char> &mask, const vpImage<vpRGBa> &photo,
                                const vpImage<vpRGBa> *background);
