@@ -271,6 +271,9 @@ TEST(SubpixelOutline, ADiscsOutlineToAHundredthOfAPixelAndItsShadowLeftOut)
     EXPECT_LT(rms, plain ? 0.08 : 0.05);
     EXPECT_GT(rmsBinary, 0.2); // the mask alone: a quarter of a pixel
   }
+  const vpImage<vpRGBa> small(100, 100);
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::hull::subpixelSignedDistance(mask, small, nullptr); }).find("one size"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::hull::subpixelSignedDistance(mask, photo, &small); }).find("one size"), std::string::npos);
 }
 
 TEST(Silhouette, ASensorsShotNoiseIsNotAChangeOfBackground)
