@@ -392,12 +392,14 @@ TEST(OutlineRefinement, ASphereMeshedTooSmallGrowsOntoTheViewsOutlinesAndOnAView
     const double t = vpMath::rad(tiltDeg), a = vpMath::rad(azimuthDeg);
     return pm::model::hull::Vec3{std::sin(t) * std::cos(a), std::sin(t) * std::sin(a), -std::cos(t)};
   };
-  std::vector<pm::model::hull::HullView> views;
   std::vector<pm::model::hull::Vec3> dirs{direction(0, 0)};
   for (int k = 0; k < 5; ++k)
     dirs.push_back(direction(20, 72 * k));
   for (int k = 0; k < 10; ++k)
     dirs.push_back(direction(40, 36 * k + 18));
+  // No reallocation: ViSP 3.5 copies an empty vpImage (the views' photos) with memcpy(nullptr).
+  std::vector<pm::model::hull::HullView> views;
+  views.reserve(dirs.size());
   for (const pm::model::hull::Vec3 &d : dirs) {
     pm::model::hull::HullView v;
     v.cam = pm::core::PinholeCamera::Projection::lookingAtOrigin(pm::model::hull::scaled(d, D), cam, 640, 480);
