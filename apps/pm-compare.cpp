@@ -81,6 +81,8 @@ void addOptions(CLI::App &app, Options &o)
   app.add_option("--mbt-mesh-cell-mm", cp.mbtMeshCellMm, "ViSP's MBT trackers' CAD model: the all-around model's surface "
                  "decimated to cells of this size (mm); 0: the flat model's outline, one face")
       ->check(CLI::Range(0.0, 100.0));
+  app.add_flag("--refine-outlines", cp.refineOutlines, "the all-around model's outlines to a fraction of a pixel (sub-pixel "
+               "silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
   app.add_flag("--mbt-true-cad", cp.mbtTrueCad, "ViSP's MBT trackers given the toy's true mesh (the lab knows it), decimated to "
                "--mbt-mesh-cell-mm, instead of the surface of our all-around photo-model: ours from photos against ViSP with the exact CAD");
   app.add_option("--outline-tolerance-px", cp.outlineTolPx, "simplification of the outline for ViSP's trackers (px of the photo)")

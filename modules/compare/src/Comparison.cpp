@@ -110,9 +110,11 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
   if (m_p.mbtTrueCad && !(m_p.mbtMeshCellMm > 0))
     throw core::Error("compare: the true CAD model is decimated to cells of --mbt-mesh-cell-mm, which must be above 0");
   const bool aaForMbt = mbt && m_p.mbtMeshCellMm > 0 && !m_p.mbtTrueCad;
+  model::AllAroundParams aa;
+  aa.refineOutlines = m_p.refineOutlines;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || aaForMbt)
-    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, model::PassPlan(), "pa10", m_p.distanceMm,
-                                                      model::AllAroundParams(), &m_s->allAroundBuild);
+    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, model::PassPlan(), "pa10", m_p.distanceMm, aa,
+                                                      &m_s->allAroundBuild);
   if (aaForMbt)
     m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);
   if (mbt && m_p.mbtTrueCad) {
