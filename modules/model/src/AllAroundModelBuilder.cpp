@@ -525,49 +525,19 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
 
 } // namespace
 
-AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
+//! Stage 3: the hull carved (coarse to fine, then by the views' depths) and its surface as a mesh, its outlines refined when asked (out: volumes, fusion counts, residuals).
+HullMesh carvedSurface(const core::StereoRig &rig, const PassImages &im, const std::vector<bool> &used,
+                       const std::vector<const HullView *> &usedCams, const Vec3 &centre, const AllAroundParams &p, VisualHull &g,
+                       AllAroundBuild &out)
 {
-  const auto t0 = std::chrono::steady_clock::now();
-  p.validate();
-  rig.validate();
-  if (pass.size() < p.minViews)
-    throw core::Error("all-around model: the pass holds " + std::to_string(pass.size()) + " views; at least " +
-                std::to_string(p.minViews) + " are needed");
-  AllAroundBuild out;
-  out.nViews = pass.size();
-
-  // 1. Silhouettes in the ideal images.
-  const PassImages im = silhouettesOfPass(rig, pass, p, out);
   const std::vector<HullView> &cams = im.cams;
-  const std::vector<vpImage<vpRGBa>> &backgrounds = im.backgrounds;
-  const std::vector<std::string> &names = im.names;
-
-  // 2. The box around the target, and the views that disagree with the others.
-  Vec3 centre;
-  double radius;
-  hullBox(cams, out.silhouettes, centre, radius);
-  VisualHull g = hullGrid(centre, radius, p.finestMm);
-  out.cellMm = g.cell;
-  const int coarse = std::max(1, static_cast<int>(std::lround(4.0 / g.cell)));
-  const std::vector<bool> used =
-      agreeingViews(cams, pass.size(), g.origin, (g.n + coarse - 1) / coarse, coarse * g.cell, p.outlierCarveFraction, names, out.leftOut);
-  out.nViewsUsed = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
-  if (out.nViewsUsed < p.minViews)
-    throw core::Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
-                std::to_string(p.minViews) + " are needed (" + (out.leftOut.empty() ? "" : out.leftOut[0]) + ")");
-  std::vector<const HullView *> usedCams;
-  for (const HullView &vc : cams)
-    if (used[static_cast<std::size_t>(vc.view)])
-      usedCams.push_back(&vc);
-
-  // 3. Carving, coarse to fine, and the hull's surface as a mesh.
   carveVisualHull(usedCams, g, p.coarsestMm);
   out.hullVolumeCm3 = g.volumeCm3();
   DepthEvidence evidence;
   if (p.fusion.enabled) {
     core::StereoRig ideal = rig; // the photos are ideal already
     ideal.left.distortion = ideal.right.distortion = core::LensDistortion();
-    evidence = measureStereo(ideal, cams, out.silhouettes, backgrounds, used, p.backdropHueDeg >= 0, g, p.fusion);
+    evidence = measureStereo(ideal, cams, out.silhouettes, im.backgrounds, used, p.backdropHueDeg >= 0, g, p.fusion);
     out.fusionCarvedCells = evidence.carve(g, usedCams);
     evidence.counts(out.matchedTargetPx, out.matchedBackdropPx);
     if (g.occupied() < 8)
@@ -592,6 +562,45 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
     out.outlineResidualPx = refined.meanAfterPx;
     out.outlineResidualRmsPx = refined.rmsAfterPx;
   }
+  return mesh;
+}
+
+AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  p.validate();
+  rig.validate();
+  if (pass.size() < p.minViews)
+    throw core::Error("all-around model: the pass holds " + std::to_string(pass.size()) + " views; at least " +
+                std::to_string(p.minViews) + " are needed");
+  AllAroundBuild out;
+  out.nViews = pass.size();
+
+  // 1. Silhouettes in the ideal images.
+  const PassImages im = silhouettesOfPass(rig, pass, p, out);
+  const std::vector<HullView> &cams = im.cams;
+  const std::vector<std::string> &names = im.names;
+
+  // 2. The box around the target, and the views that disagree with the others.
+  Vec3 centre;
+  double radius;
+  hullBox(cams, out.silhouettes, centre, radius);
+  VisualHull g = hullGrid(centre, radius, p.finestMm);
+  out.cellMm = g.cell;
+  const int coarse = std::max(1, static_cast<int>(std::lround(4.0 / g.cell)));
+  const std::vector<bool> used =
+      agreeingViews(cams, pass.size(), g.origin, (g.n + coarse - 1) / coarse, coarse * g.cell, p.outlierCarveFraction, names, out.leftOut);
+  out.nViewsUsed = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
+  if (out.nViewsUsed < p.minViews)
+    throw core::Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
+                std::to_string(p.minViews) + " are needed (" + (out.leftOut.empty() ? "" : out.leftOut[0]) + ")");
+  std::vector<const HullView *> usedCams;
+  for (const HullView &vc : cams)
+    if (used[static_cast<std::size_t>(vc.view)])
+      usedCams.push_back(&vc);
+
+  // 3. Carving, coarse to fine, the views' depths, and the surface as a mesh.
+  HullMesh mesh = carvedSurface(rig, im, used, usedCams, centre, p, g, out);
   const Vec3 mean = occupiedCentroid(g);
   std::vector<Vec3> &pts = mesh.vertices;
   const std::vector<Vec3> &normals = mesh.normals;
