@@ -15,6 +15,7 @@
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/tracker/StaticDetection.h"
+#include "pm/tracker/MotionPrediction.h"
 #include "pm/tracker/TiltFilter.h"
 
 #include <visp3/core/vpThetaUVector.h>
@@ -586,6 +587,90 @@ TEST(TiltFilter, SmoothsTheTiltOnlyFollowsASteadyTurnAndRestartsOnAJump)
   bad = pm::tracker::TiltFilterParams();
   bad.gateDeg = -1;
   EXPECT_THROW(pm::tracker::TiltFilter{bad}, pm::core::Error);
+}
+
+TEST(MotionPrediction, CarriesAConstantMotionOnFollowsTheHandAndForgetsJumpsAndSearches)
+{
+  // A target moving on at 1.2 mm and turning 1.5 deg a frame about a tilted axis through its origin.
+  const auto truthAt = [](int k) {
+    const vpThetaUVector turn(vpMath::rad(1.5 * k) * 0.6, vpMath::rad(1.5 * k) * 0.8, 0);
+    vpHomogeneousMatrix M;
+    M.insert(vpRotationMatrix(turn) * vpRotationMatrix(vpThetaUVector(0.2, -0.1, 0.3)));
+    M.insert(vpTranslationVector(0.010 + 0.0010 * k, -0.020 + 0.0006 * k, 0.500 - 0.0003 * k));
+    return M;
+  };
+  const auto tracked = [](const vpHomogeneousMatrix &hMo, bool precise = true) {
+    pm::tracker::TrackResult r;
+    r.hMo = hMo;
+    r.phi = pm::core::fromHomogeneousMatrix(hMo);
+    r.state = pm::tracker::TrackState::Tracking;
+    r.precise = precise;
+    return r;
+  };
+  const auto phiOf = [](const vpHomogeneousMatrix &M) { return pm::core::fromHomogeneousMatrix(M); };
+  // (Rotations compared within 1e-4 deg: rotationDistanceDeg's acos near 1 resolves about 2e-6 deg.)
+  pm::tracker::MotionPrediction m; // gain 1
+  m.remember(tracked(truthAt(0)));
+  EXPECT_FALSE(m.moving()); // one pose: nothing to predict from
+  EXPECT_EQ(m.predict(phiOf(truthAt(0))).x, phiOf(truthAt(0)).x);
+  for (int k = 1; k < 6; ++k) {
+    m.remember(tracked(truthAt(k)));
+    ASSERT_TRUE(m.moving());
+    const pm::core::Phi p = m.predict(phiOf(truthAt(k))), next = phiOf(truthAt(k + 1));
+    EXPECT_LT(pm::core::translationDistanceMm(p, next), 1e-6) << k;
+    EXPECT_LT(pm::core::rotationDistanceDeg(p, next), 1e-4) << k;
+    EXPECT_GT(pm::core::rotationDistanceDeg(phiOf(truthAt(k)), next), 1.4); // the last pose itself is 1.5 deg behind
+  }
+  // The hand moves by M between frames: the target's own motion is still predicted, in the new hand frame.
+  const vpHomogeneousMatrix M(0.004, -0.002, 0.003, vpMath::rad(2), vpMath::rad(-1), vpMath::rad(3));
+  m.transform(M);
+  const pm::core::Phi p = m.predict(phiOf(M * truthAt(5))), next = phiOf(M * truthAt(6));
+  EXPECT_LT(pm::core::translationDistanceMm(p, next), 1e-6);
+  EXPECT_LT(pm::core::rotationDistanceDeg(p, next), 1e-4);
+  // Another pose than the last remembered (one the lock verifier moved to) is returned as it is.
+  const pm::core::Phi other{5, 5, 450, 0.1, 0, 0};
+  EXPECT_EQ(m.predict(other).z, other.z);
+  // A frame the precise stage did not make forgets the motion; so does a lost frame.
+  pm::tracker::MotionPrediction f;
+  f.remember(tracked(truthAt(0)));
+  f.remember(tracked(truthAt(1)));
+  ASSERT_TRUE(f.moving());
+  f.remember(tracked(truthAt(2), false));
+  f.remember(tracked(truthAt(3)));
+  EXPECT_FALSE(f.moving());
+  pm::tracker::TrackResult lost = tracked(truthAt(4));
+  lost.state = pm::tracker::TrackState::Lost;
+  f.remember(tracked(truthAt(4)));
+  ASSERT_TRUE(f.moving());
+  f.remember(lost);
+  EXPECT_FALSE(f.moving());
+  // A step past the largest turn (6 deg) is a jump: no prediction.
+  pm::tracker::MotionPrediction j;
+  j.remember(tracked(truthAt(0)));
+  j.remember(tracked(truthAt(5))); // 7.5 deg in one frame
+  EXPECT_FALSE(j.moving());
+  EXPECT_EQ(j.predict(phiOf(truthAt(5))).e1, phiOf(truthAt(5)).e1);
+  // Gain 0: off; half the gain, half the step; bad parameters refused.
+  pm::tracker::MotionPredictionParams half;
+  half.gain = 0.5;
+  pm::tracker::MotionPrediction h(half);
+  h.remember(tracked(truthAt(0)));
+  h.remember(tracked(truthAt(2)));
+  const pm::core::Phi ph = h.predict(phiOf(truthAt(2)));
+  EXPECT_LT(pm::core::translationDistanceMm(ph, phiOf(truthAt(3))), 1e-6);
+  EXPECT_LT(pm::core::rotationDistanceDeg(ph, phiOf(truthAt(3))), 1e-4);
+  pm::tracker::MotionPredictionParams off;
+  off.gain = 0;
+  pm::tracker::MotionPrediction o(off);
+  o.remember(tracked(truthAt(0)));
+  o.remember(tracked(truthAt(1)));
+  EXPECT_FALSE(o.moving());
+  pm::tracker::MotionPredictionParams bad;
+  bad.gain = -0.1;
+  EXPECT_THROW(pm::tracker::MotionPrediction{bad}, pm::core::Error);
+  bad = pm::tracker::MotionPredictionParams();
+  bad.maxStepDeg = 0;
+  EXPECT_THROW(pm::tracker::MotionPrediction{bad}, pm::core::Error);
 }
 
 TEST(Tracker, SearchingFramesScoreManyPosesCoarselyAndReportTheExactFitness)

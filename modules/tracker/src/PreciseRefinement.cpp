@@ -32,7 +32,8 @@ PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, cons
   m_stage = std::make_unique<precise::PreciseStage>(rig, model, stage);
 }
 
-bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const core::Phi &predicted, const vpImage<vpRGBa> &left,
+                               const vpImage<vpRGBa> &right)
 {
   m_stage->setImages(left, right);
   const double minF = r.fitness - m_scale.fitnessSpan(m_p.maxDropQ);
@@ -49,15 +50,16 @@ bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const vp
   const bool lookForHidden = std::min(seen.countsLeft.visibleShare(), seen.countsRight.visibleShare()) < m_p.lookForHiddenBelow;
   m_lookedForHidden = lookForHidden;
   const bool haveLast = last.state == TrackState::Tracking && last.precise && last.phi.isValid();
-  const bool near = haveLast && core::translationDistanceMm(r.phi, last.phi) <= m_p.restartMm &&
-                    core::rotationDistanceDeg(r.phi, last.phi) <= m_p.restartDeg;
+  const bool near = haveLast && core::translationDistanceMm(r.phi, predicted) <= m_p.restartMm &&
+                    core::rotationDistanceDeg(r.phi, predicted) <= m_p.restartDeg;
   precise::PreciseResult best;
   double bestF = 0;
   bool found = false;
   if (haveLast) {
-    const precise::PreciseResult fromLast = m_stage->refine(last.phi, true, lookForHidden); // the target moves little between frames
+    // The target moves little between frames: the stage starts where the last frames say it is now.
+    const precise::PreciseResult fromLast = m_stage->refine(predicted, true, lookForHidden);
     r.preciseResult = fromLast;
-    found = acceptable(fromLast, last.phi, bestF);
+    found = acceptable(fromLast, predicted, bestF);
     if (found)
       best = fromLast;
   }

@@ -5,6 +5,7 @@ namespace pm::tracker {
 void RefinementParams::validate() const
 {
   precise.validate();
+  motion.validate();
   ascent.validate();
   tiltFilter.validate();
   tiltFilterAllAround.validate();
@@ -13,7 +14,7 @@ void RefinementParams::validate() const
 RefinementChain::RefinementChain(const RefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
                                  const core::StereoFitness &fitness, const QualityScale &scale)
     : m_precise(params.precise, rig, model, fitness, scale), m_ascent(params.ascent, fitness),
-      m_tiltParams(model.isAllAround() ? params.tiltFilterAllAround : params.tiltFilter), m_tilt(m_tiltParams), m_fitness(fitness)
+      m_tiltParams(model.isAllAround() ? params.tiltFilterAllAround : params.tiltFilter), m_tilt(m_tiltParams), m_motion(params.motion), m_fitness(fitness)
 {
 }
 
@@ -22,7 +23,7 @@ std::optional<RmGaUpdate::Inject> RefinementChain::refine(TrackResult &r, const 
 {
   // 1. The precise stage: a pose it keeps is final.
   if (locked && m_precise.active()) {
-    r.precise = m_precise.refine(r, last, left, right);
+    r.precise = m_precise.refine(r, last, m_motion.predict(last.phi), left, right);
     if (r.precise) {
       m_tilt.reset();
       return RmGaUpdate::Inject{r.phi, r.fitness};
@@ -47,6 +48,7 @@ void RefinementChain::learn(const TrackResult &r)
 {
   if (r.precise && r.trusted) // the scene's colours along the outline, where the pose is trusted
     m_precise.learnColours(r.phi);
+  m_motion.remember(r);
 }
 
 } // namespace pm::tracker

@@ -55,7 +55,9 @@ template <typename V> void refinementKeys(V &v, RefinementParams &r)
                .value("interior_sigma", q.interiorSigma)
                .value("interior_weight", q.interiorWeight);
          });
-   }).section("ascent", [&](V &a) {
+   }).section("motion_prediction", [&](V &m) {
+    m.value("gain", r.motion.gain).value("max_step_mm", r.motion.maxStepMm).value("max_step_deg", r.motion.maxStepDeg);
+  }).section("ascent", [&](V &a) {
     a.value("max_evaluations", r.ascent.climb.maxEvaluations)
         .value("first_step_px", r.ascent.climb.firstStepPx)
         .value("max_step_px", r.ascent.climb.maxStepPx)

@@ -4,8 +4,9 @@
   The refinement chain's first stage: the precise stage (precise::PreciseStage: Gauss-Newton steps
   on the outline's correspondence lines in both cameras, and the interior's colours) on every frame
   whose q reaches the lock, for a model that carries outlines (an all-around model). It starts from
-  the frame's pose (RM-GA's best, or the pose the lock verifier moved to), or from the last frame's
-  pose when the target was tracked and the frame's pose lies within restartMm and restartDeg of it
+  the frame's pose (RM-GA's best, or the pose the lock verifier moved to), or from the pose the last
+  frames predict (MotionPrediction.h: the last frame's pose moved on by its step) when the target was
+  tracked and the frame's pose lies within restartMm and restartDeg of it
   (else from both, the lower residual kept; and from the frame's pose when the last frame's start
   gives nothing acceptable).
 
@@ -16,7 +17,7 @@
 
   \code
     pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, fitness, scale);
-    if (stage.active() && stage.refine(r, last, IL, IR))
+    if (stage.active() && stage.refine(r, last, motion.predict(last.phi), IL, IR))
       search.inject(r.phi, r.fitness); // the frame's pose is the stage's
   \endcode
 */
@@ -68,10 +69,13 @@ public:
 
   bool active() const { return m_stage != nullptr; } //!< the stage runs
   /*!
-    Refines \e r (a locked frame's pose) on the images, from it or from \e last's; true when the
-    result is kept (then \e r's phi and fitness are the stage's). \e r.preciseResult: what it found either way.
+    Refines \e r (a locked frame's pose) on the images, from it or, when \e last was tracked by the
+    stage, from \e predicted (\e last's pose moved on by the target's motion, or \e last's own); true
+    when the result is kept (then \e r's phi and fitness are the stage's). \e r.preciseResult: what it
+    found either way.
   */
-  bool refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  bool refine(TrackResult &r, const TrackResult &last, const core::Phi &predicted, const vpImage<vpRGBa> &left,
+              const vpImage<vpRGBa> &right);
   //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
   //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).

@@ -21,6 +21,7 @@
 #include <optional>
 
 #include "pm/tracker/AscentRefinement.h"
+#include "pm/tracker/MotionPrediction.h"
 #include "pm/tracker/PreciseRefinement.h"
 #include "pm/tracker/RmGaUpdate.h"
 #include "pm/tracker/TiltFilter.h"
@@ -31,6 +32,7 @@ namespace pm::tracker {
 struct RefinementParams
 {
   PreciseRefinementParams precise; //!< 1. the precise stage
+  MotionPredictionParams motion;   //!< 1. where the precise stage starts on a tracked target: the pose the last frames predict
   AscentParams ascent;             //!< 2. the smooth ascent
   /*!
     3. The tilt filter for a model of one or a few views (flat, a stereo snapshot); alpha 1 and beta 0: off.
@@ -62,14 +64,22 @@ public:
   */
   std::optional<RmGaUpdate::Inject> refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left,
                                            const vpImage<vpRGBa> &right, bool locked);
-  //! The pose jumped (the lock verifier moved the tracker): the tilt filter restarts.
-  void restart() { m_tilt.reset(); }
-  //! After the judgement: the precise stage learns the colours along the outline of a trusted pose.
+  //! The pose jumped (the lock verifier moved the tracker): the tilt filter and the motion restart.
+  void restart() { reset(); }
+  //! After the judgement: the precise stage learns the colours along the outline of a trusted pose; the motion remembers the pose.
   void learn(const TrackResult &r);
-  //! The hand moved by \e hNowMhPrev: the tilt filter's state follows.
-  void transform(const vpHomogeneousMatrix &hNowMhPrev) { m_tilt.transform(hNowMhPrev); }
+  //! The hand moved by \e hNowMhPrev: the tilt filter's state and the motion's poses follow.
+  void transform(const vpHomogeneousMatrix &hNowMhPrev)
+  {
+    m_tilt.transform(hNowMhPrev);
+    m_motion.transform(hNowMhPrev);
+  }
   //! A new start.
-  void reset() { m_tilt.reset(); }
+  void reset()
+  {
+    m_tilt.reset();
+    m_motion.reset();
+  }
   //! The background's hue learnt (BackgroundLearning): the precise stage's hidden lines compare with it.
   void setBackgroundHue(double deg) { m_precise.setBackgroundHue(deg); }
 
@@ -81,6 +91,7 @@ private:
   AscentRefinement m_ascent;
   TiltFilterParams m_tiltParams;
   TiltFilter m_tilt;
+  MotionPrediction m_motion;
   const core::StereoFitness &m_fitness;
 };
 
