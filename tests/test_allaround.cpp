@@ -26,7 +26,10 @@
 #include "pm/lab/LabPass.h"
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/PassLandings.h"
 #include "pm/model/PassPlanner.h"
+#include "pm/precise/ModelErrorFloor.h"
+#include "pm/precise/PreciseStage.h"
 #include "pm/model/BackgroundSubtraction.h"
 #include "pm/model/Silhouette.h"
 #include "pm/model/SubpixelOutline.h"
@@ -377,6 +380,76 @@ TEST(AllAround, RefinedOutlinesLieOnThePassViewsAndOnTheToysBetweenThem)
     EXPECT_LT(std::fabs(after.outlines[band].meanPx), 0.1);
     EXPECT_LT(after.outlines[band].rmsPx, before.outlines[band].rmsPx);
   }
+}
+
+TEST(AllAround, ThePassLandingsAreTheModelsOwnErrorAtEachViewAndOtherRendersThereAgree)
+{
+  // The precise stage on each pass view, from the pose the arm knows: 16 landings, each a few tenths
+  // of a millimetre and a degree off (the model's outline, not a failure).
+  const CrabPass &c = crab();
+  const std::vector<pm::core::PassLanding> &L = c.build.model.passLandings;
+  ASSERT_EQ(L.size(), 16u);
+  double sumDeg2 = 0;
+  for (const pm::core::PassLanding &l : L)
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_LT(std::fabs(l.offsetMm[i]), 1.0);
+      EXPECT_LT(std::fabs(l.offsetDeg[i]), 1.0);
+      sumDeg2 += l.offsetDeg[i] * l.offsetDeg[i];
+    }
+  EXPECT_GT(std::sqrt(sumDeg2 / 48), 0.05); // measured, not zeros
+  // Rendered again at the pose of every third view (other noise), the stage lands where the view's
+  // landing says, within about a tenth of a degree: the landing is the model's error at that view,
+  // not the view's noise. And the floor there, in the hand's axes, is the landing's size.
+  pm::precise::PreciseStage stage(rig(), c.build.model);
+  const pm::precise::ModelErrorFloor floor(L, rig().left.hMc, 1.0); // 1 deg wide: the view's own landing alone
+  double raw2 = 0, diff2 = 0;
+  for (std::size_t v = 0; v < c.pass.views.size(); v += 3) {
+    const vpHomogeneousMatrix hMo = c.pass.views[v].fMh.inverse() * c.pass.fMo, hMm = hMo * c.oMm;
+    const pm::sim::StereoImages im = c.scene.renderStereo(rig(), hMo, 500 + v);
+    stage.setImages(im.left, im.right);
+    const pm::precise::PreciseResult r = stage.refine(pm::core::fromHomogeneousMatrix(hMm), true);
+    ASSERT_TRUE(r.ok);
+    const vpHomogeneousMatrix hMe = pm::core::toHomogeneousMatrix(r.phi);
+    const vpThetaUVector turn(vpRotationMatrix(hMe.getRotationMatrix() * hMm.getRotationMatrix().t()));
+    const vpRotationMatrix hRm = hMm.getRotationMatrix();
+    vpColVector w(3);
+    for (unsigned i = 0; i < 3; ++i)
+      w[i] = L[v].offsetDeg[i];
+    const vpColVector expected = hRm * w; // the landing in this view's hand axes
+    const std::array<double, 6> f = floor.at(hMm);
+    for (unsigned i = 0; i < 3; ++i) {
+      raw2 += vpMath::sqr(vpMath::deg(turn[i]));
+      diff2 += vpMath::sqr(vpMath::deg(turn[i]) - expected[i]);
+      EXPECT_NEAR(f[3 + i], std::fabs(expected[i]), 0.01) << v;
+    }
+  }
+  std::cout << "stage on renders at the pass's poses: " << std::sqrt(raw2 / 18) << " deg rms per axis, " << std::sqrt(diff2 / 18)
+            << " deg less the pass's landings\n";
+  EXPECT_LT(std::sqrt(diff2), 0.5 * std::sqrt(raw2));
+  // Saved and read back: the same landings (to 0.001); a landing out of range or of the wrong shape is refused.
+  pm::test::TempDir dir("landings");
+  pm::io::savePhotoModel(c.build.model, dir.file("m.json"));
+  const std::string text = pm::test::readText(dir.file("m.json"));
+  const pm::core::PhotoModel back = pm::io::loadPhotoModel(dir.file("m.json"));
+  ASSERT_EQ(back.passLandings.size(), L.size());
+  for (std::size_t k = 0; k < L.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(back.passLandings[k].offsetDeg[i], L[k].offsetDeg[i], 0.0006);
+      EXPECT_NEAR(back.passLandings[k].cameraMm[i], L[k].cameraMm[i], 0.0006);
+    }
+  const std::size_t at = text.find("\"pass_landings\":[[");
+  ASSERT_NE(at, std::string::npos);
+  std::string turned = text, shape = text;
+  turned.insert(at + 18, "0,0,-500,0,0,0,90,0,0],[");
+  shape.insert(at + 18, "1,2,3],[");
+  for (const auto &[bad, expect] : {std::pair<std::string, std::string>{turned, "pass landing 1"}, {shape, "pass_landings"}}) {
+    pm::test::writeText(dir.file("bad.json"), bad);
+    const std::string e = pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad.json")); });
+    EXPECT_NE(e.find(expect), std::string::npos) << e;
+  }
+  // The views' flags must match the views.
+  EXPECT_NE(pm::test::errorOf([&] { pm::model::measurePassLandings(rig(), c.build.model, c.pass.views, {true}, c.build.fMm); }).find("1 flags"),
+            std::string::npos);
 }
 
 TEST(AllAround, BothKernelsAgreeAndTheModelFileKeepsEveryView)

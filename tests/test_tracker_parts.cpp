@@ -333,7 +333,7 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   const pm::tracker::QualityScale &scale = scored.scale;
   const pm::tracker::JudgementParams params = pm::tracker::JudgementParams().forModel(c.sm.build.model);
   EXPECT_EQ(params.confidence.kind, pm::tracker::ConfidenceKind::Flat); // the coefficients of the model's kind
-  const pm::tracker::Judgement judgement(params, 5.0, fitness, scale);
+  const pm::tracker::Judgement judgement(params, 5.0, fitness, scale, pm::precise::ModelErrorFloor({}, vpHomogeneousMatrix()));
   pm::core::Phi seen[8];
   EXPECT_EQ(judgement.competitors(c.truth, seen), 8u); // turned about its axis (7) and its tilt mirrored, all valid here
   pm::tracker::TrackResult r;

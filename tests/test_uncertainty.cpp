@@ -10,6 +10,7 @@
 
 #include "pm/compare/UncertaintyCalibration.h"
 #include "pm/core/Error.h"
+#include "pm/precise/ModelErrorFloor.h"
 #include "pm/precise/PoseUncertainty.h"
 
 namespace {
@@ -94,6 +95,67 @@ TEST(PoseUncertainty, AScaleThatIsNotPositiveOrAFloorThatIsNegativeIsRefused)
   m = pm::precise::UncertaintyModel();
   m.scale[0] = std::numeric_limits<double>::infinity();
   EXPECT_THROW(m.validate(), pm::core::Error);
+}
+
+TEST(PoseUncertainty, TheModelsOwnErrorIsAddedInQuadratureTimesItsGain)
+{
+  pm::precise::UncertaintyModel m;
+  m.scale = {1, 1, 1, 1, 1, 1};
+  m.floor = {0, 0, 0, 0, 0, 0};
+  m.modelErrorGain = 2;
+  const std::array<double, 6> lines{0.3, 0.3, 0.3, 0.2, 0.2, 0.2}, model{0.4, 0, 0, 0, 0.1, 0};
+  const pm::precise::PoseUncertainty u = m.uncertainty(lines, 1.0, model);
+  EXPECT_NEAR(u.sigmaMm[0], std::hypot(0.3, 0.8), 1e-12);
+  EXPECT_NEAR(u.sigmaMm[1], 0.3, 1e-12);
+  EXPECT_NEAR(u.sigmaDeg[1], std::hypot(0.2, 0.2), 1e-12);
+  m.modelErrorGain = -1;
+  EXPECT_THROW(m.validate(), pm::core::Error);
+  m.modelErrorGain = 1;
+  m.modelErrorWidthDeg = 0;
+  EXPECT_THROW(m.validate(), pm::core::Error);
+}
+
+TEST(ModelErrorFloor, IsTheRmsOfTheNearPassViewsOffsetsInTheHandsAxes)
+{
+  // Two pass views: one straight behind the model (camera at -z), one 90 deg away (camera at +x).
+  pm::core::PassLanding a, b;
+  a.cameraMm[2] = -500;
+  a.offsetMm[0] = 0.4;
+  a.offsetDeg[1] = 0.3;
+  b.cameraMm[0] = 500;
+  b.offsetMm[2] = -0.6;
+  b.offsetDeg[0] = 0.5;
+  const vpHomogeneousMatrix hMc; // the camera at the hand's origin
+  const pm::precise::ModelErrorFloor floor({a, b}, hMc, 10);
+  ASSERT_FALSE(floor.empty());
+  // Looking along view a (the model 0.5 m ahead, axes as the hand's): a's offsets, b's weight nil.
+  std::array<double, 6> f = floor.at(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0));
+  EXPECT_NEAR(f[0], 0.4, 1e-9);
+  EXPECT_NEAR(f[2], 0.0, 1e-9);
+  EXPECT_NEAR(f[4], 0.3, 1e-9);
+  EXPECT_NEAR(f[3], 0.0, 1e-9);
+  // The hand turned 90 deg about its z axis: the model's x is the hand's y.
+  f = floor.at(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, M_PI / 2));
+  EXPECT_NEAR(f[0], 0.0, 1e-9);
+  EXPECT_NEAR(f[1], 0.4, 1e-9);
+  EXPECT_NEAR(f[3], 0.3, 1e-9); // the model's y turned onto the hand's -x
+  // Half way between the two views (45 deg from each): equal weights, the rms of both.
+  const vpHomogeneousMatrix between(0, 0, 0.5, 0, M_PI / 4, 0); // the camera seen from the model at 45 deg between -z and +x
+  const vpHomogeneousMatrix mMc = between.inverse();
+  ASSERT_NEAR(mMc[0][3], -mMc[2][3], 1e-9);
+  ASSERT_GT(mMc[0][3], 0);
+  f = floor.at(between);
+  const vpRotationMatrix R = between.getRotationMatrix();
+  const double x2 = 0.5 * (vpMath::sqr(R[0][0] * 0.4) + vpMath::sqr(R[0][2] * 0.6));
+  EXPECT_NEAR(f[0], std::sqrt(x2), 1e-9);
+  // Far from every view (the camera at the model's -x: 90 deg from a, 180 from b): the nearest view's, a's.
+  f = floor.at(vpHomogeneousMatrix(0, 0, 0.5, 0, -M_PI / 2, 0));
+  EXPECT_NEAR(f[4], 0.3, 1e-9);
+  EXPECT_NEAR(f[3], 0.0, 1e-9);
+  // No landings: no floor; a width that is not positive is refused.
+  EXPECT_TRUE(pm::precise::ModelErrorFloor({}, hMc).empty());
+  EXPECT_EQ(pm::precise::ModelErrorFloor({}, hMc).at(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0))[4], 0.0);
+  EXPECT_THROW(pm::precise::ModelErrorFloor({a}, hMc, 0), pm::core::Error);
 }
 
 TEST(UncertaintyCalibration, TheFitFindsTheTrueScaleOfGaussianErrorsAndPuts68PercentWithinOneSigma)

@@ -5,6 +5,7 @@
 
 #include "pm/compare/Scenario.h"
 #include "pm/core/Error.h"
+#include "pm/precise/ModelErrorFloor.h"
 #include "pm/lab/LabModel.h"
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/PhotoModelTracker.h"
@@ -22,7 +23,9 @@ double within(const std::vector<UncertaintySample> &samples, const precise::Unce
     return 0;
   std::size_t n = 0;
   for (const UncertaintySample &s : samples)
-    n += std::fabs(s.error[axis]) <= multiple * model.sigma(axis, s.lineSigma[axis], s.residualPx) ? 1 : 0;
+    n += std::fabs(s.error[axis]) <= multiple * std::hypot(model.sigma(axis, s.lineSigma[axis], s.residualPx), model.modelErrorGain * s.modelError[axis])
+             ? 1
+             : 0;
   return static_cast<double>(n) / static_cast<double>(samples.size());
 }
 
@@ -37,6 +40,7 @@ std::vector<UncertaintySample> collectUncertaintySamples(const core::StereoRig &
   p.search.ga.seed = run.seed;
   p.search.budgetEvaluations = run.budget;
   tracker::PhotoModelTracker tracker(rig, m.build.model, p);
+  const precise::ModelErrorFloor modelError(m.build.model.passLandings, rig.left.hMc, p.judgement.uncertainty.modelErrorWidthDeg);
   if (!tracker.hasPreciseStage())
     throw core::Error("uncertainty calibration: the model of " + run.target + " has no outlines for the precise stage");
   std::vector<UncertaintySample> out;
@@ -60,6 +64,7 @@ std::vector<UncertaintySample> collectUncertaintySamples(const core::StereoRig &
     }
     u.lineSigma = precise::lineSigmas(r.preciseResult.information);
     u.residualPx = r.preciseResult.residualPx;
+    u.modelError = modelError.at(hMe);
     if (std::all_of(u.lineSigma.begin(), u.lineSigma.end(), [](double v) { return std::isfinite(v); }))
       out.push_back(u);
   }

@@ -65,6 +65,21 @@ bool PhotoModel::hasDepth() const
   return false;
 }
 
+std::array<double, 6> rmsOffsets(const std::vector<PassLanding> &landings)
+{
+  std::array<double, 6> r{};
+  if (landings.empty())
+    return r;
+  for (const PassLanding &l : landings)
+    for (std::size_t i = 0; i < 3; ++i) {
+      r[i] += l.offsetMm[i] * l.offsetMm[i];
+      r[3 + i] += l.offsetDeg[i] * l.offsetDeg[i];
+    }
+  for (double &v : r)
+    v = std::sqrt(v / static_cast<double>(landings.size()));
+  return r;
+}
+
 void PhotoModel::validate(const std::string &source) const
 {
   const std::string where = "photo-model " + source + ": ";
@@ -90,6 +105,15 @@ void PhotoModel::validate(const std::string &source) const
     }
     if (h->size() != bins || !(std::fabs(sum - 1.0) < 1e-3))
       throw Error(where + "a colour histogram must hold " + std::to_string(bins) + " bins summing to 1");
+  }
+  for (std::size_t k = 0; k < passLandings.size(); ++k) {
+    const PassLanding &l = passLandings[k];
+    bool ok = validCamera(l.cameraMm);
+    for (int i = 0; i < 3; ++i)
+      ok = ok && std::fabs(l.offsetMm[i]) <= 50 && std::fabs(l.offsetDeg[i]) <= 45; // false for NaN too
+    if (!ok)
+      throw Error(where + "pass landing " + std::to_string(k + 1) +
+                  ": its camera centre must be finite and at least 1 mm from the origin, its offsets finite and within 50 mm and 45 deg");
   }
   if (views.empty())
     return;

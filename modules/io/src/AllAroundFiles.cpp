@@ -1,6 +1,7 @@
 #include "pm/io/AllAroundFiles.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <sstream>
 
@@ -114,6 +115,10 @@ std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vecto
   std::size_t nPoints = b.model.size();
   for (const core::ModelView &v : b.model.views)
     nPoints += v.inner.size() + v.outer.size();
+  // The model's own error at its pass views (the precise stage from each view's known pose): rms per axis of the model frame.
+  const std::array<double, 6> rms = core::rmsOffsets(b.model.passLandings);
+  const nlohmann::json landings{
+      {"n", b.model.passLandings.size()}, {"rms_mm", {rms[0], rms[1], rms[2]}}, {"rms_deg", {rms[3], rms[4], rms[5]}}};
   nlohmann::json summary{{"source", source},
                                {"kind", "all-around"},
                                {"fMo", fMo},
@@ -134,6 +139,7 @@ std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vecto
                                {"outline_residual_before_px", b.outlineResidualBeforePx},
                                {"outline_residual_px", b.outlineResidualPx},
                                {"outline_residual_rms_px", b.outlineResidualRmsPx},
+                               {"pass_landings", landings},
                                {"n_contour_points", b.model.contour.size()},
                                {"cell_mm", b.cellMm},
                                {"n_refined_points", b.nRefined},

@@ -150,6 +150,34 @@ void writeViewpointModel(const core::PhotoModel &m, json &j, bool v5)
     j["colour_histograms"] = {{"bins_per_channel", core::PhotoModel::kColourBins},
                               {"foreground", histogramToJson(m.foregroundHistogram)},
                               {"background", histogramToJson(m.backgroundHistogram)}};
+  if (v5 && !m.passLandings.empty()) {
+    const auto r = [](double x) { return std::round(x * 1000.0) / 1000.0; }; // to 0.001 mm and deg
+    json a = json::array();
+    for (const core::PassLanding &l : m.passLandings)
+      a.push_back({r(l.cameraMm[0]), r(l.cameraMm[1]), r(l.cameraMm[2]), r(l.offsetMm[0]), r(l.offsetMm[1]), r(l.offsetMm[2]),
+                   r(l.offsetDeg[0]), r(l.offsetDeg[1]), r(l.offsetDeg[2])});
+    j["pass_landings"] = a;
+  }
+}
+
+//! "pass_landings": [[camera x, y, z (mm), offset x, y, z (mm), rotation x, y, z (deg)], ...] (version 5, optional).
+std::vector<core::PassLanding> passLandingsFromJson(const json &a)
+{
+  if (!a.is_array())
+    throw core::Error("\"pass_landings\" must be an array of [camera x, y, z, offset x, y, z, rotation x, y, z]");
+  std::vector<core::PassLanding> out;
+  for (const json &e : a) {
+    if (!e.is_array() || e.size() != 9)
+      throw core::Error("every entry of \"pass_landings\" must be [camera x, y, z (mm), offset x, y, z (mm), rotation x, y, z (deg)]");
+    core::PassLanding l;
+    for (std::size_t i = 0; i < 3; ++i) {
+      l.cameraMm[i] = e[i].get<double>();
+      l.offsetMm[i] = e[3 + i].get<double>();
+      l.offsetDeg[i] = e[6 + i].get<double>();
+    }
+    out.push_back(l);
+  }
+  return out;
 }
 
 std::vector<core::ModelPoint> indexedPoints(const json &a, const std::vector<core::ModelPoint> &surface, const char *name)
@@ -322,6 +350,8 @@ core::PhotoModel loadPhotoModel(const std::string &path)
         m.foregroundHistogram = histogramFromJson(h.at("foreground"), bins, "foreground");
         m.backgroundHistogram = histogramFromJson(h.at("background"), bins, "background");
       }
+      if (j.contains("pass_landings"))
+        m.passLandings = passLandingsFromJson(j.at("pass_landings"));
     }
   } catch (const core::Error &e) {
     throw core::Error("photo-model file '" + path + "' is corrupt: " + e.what());

@@ -1,4 +1,5 @@
 #include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/PassLandings.h"
 
 #include <algorithm>
 #include <array>
@@ -655,6 +656,9 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);
   out.mesh = std::move(mesh);
   M.hasColours = true;
+  // 9. The model's own error at each view of the pass: the precise stage from the view's known pose.
+  if (p.passLandings)
+    M.passLandings = measurePassLandings(rig, M, pass, used, out.fMm);
   M.validate("the all-around model");
   out.buildS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -34,9 +34,10 @@ std::array<double, 6> lineSigmas(const std::array<double, 36> &information)
 }
 
 UncertaintyModel::UncertaintyModel()
-    // Fitted by `pm-uncertainty --fit` on random6dof with C12 and R2 (docs/trust.md). Along z the
-    // lines say little of the error (the model's depth bias, about 0.3 mm): a floor alone (0.53 mm).
-    : scale{1.9138, 0.9050, 0.05, 1.2836, 0.7791, 1.4184}, floor{0.0312, 0.1751, 0.5324, 0.0312, 0.1972, 0.0}
+    // Fitted by `pm-uncertainty --fit` on random6dof with C12 and R2 (docs/trust.md), the model's own
+    // error near each view (its pass landings, ModelErrorFloor.h) added with gain 1. Along z the lines
+    // say little of the error (the model's depth bias): mostly a floor (0.40 mm).
+    : scale{0.5225, 1.2836, 0.1657, 0.7411, 0.4971, 0.5774}, floor{0.0943, 0.0838, 0.4032, 0.0426, 0.1531, 0.0}
 {
 }
 
@@ -45,14 +46,14 @@ PoseUncertainty UncertaintyModel::uncertainty(const std::array<double, 36> &info
   return uncertainty(lineSigmas(information), residualPx);
 }
 
-PoseUncertainty UncertaintyModel::uncertainty(const std::array<double, 6> &s, double residualPx) const
+PoseUncertainty UncertaintyModel::uncertainty(const std::array<double, 6> &s, double residualPx, const std::array<double, 6> &modelError) const
 {
   PoseUncertainty u;
   u.known = std::isfinite(residualPx) && residualPx >= 0 && std::all_of(s.begin(), s.end(), [](double v) { return std::isfinite(v); });
   if (!u.known)
     return u;
   for (std::size_t i = 0; i < 6; ++i) {
-    const double v = sigma(i, s[i], residualPx);
+    const double v = std::hypot(sigma(i, s[i], residualPx), modelErrorGain * modelError[i]);
     (i < 3 ? u.sigmaMm[i] : u.sigmaDeg[i - 3]) = v;
   }
   return u;
@@ -63,6 +64,8 @@ void UncertaintyModel::validate() const
   for (std::size_t i = 0; i < 6; ++i)
     if (!(std::isfinite(scale[i]) && scale[i] > 0 && std::isfinite(floor[i]) && floor[i] >= 0))
       throw core::Error("uncertainty model: every scale must be positive and every floor non-negative (and finite)");
+  if (!(std::isfinite(modelErrorGain) && modelErrorGain >= 0) || !(std::isfinite(modelErrorWidthDeg) && modelErrorWidthDeg > 0))
+    throw core::Error("uncertainty model: the model error's gain must be non-negative and its width positive (and finite)");
 }
 
 } // namespace pm::precise

@@ -85,6 +85,12 @@ std::string describeAllAroundModel(const model::AllAroundBuild &b, const std::st
       << " S_out points and " << b.model.contour.size() << " outline points from the first\n";
   for (const std::string &s : b.leftOut)
     out << "  left out: " << s << "\n";
+  if (!b.model.passLandings.empty()) {
+    const std::array<double, 6> r = core::rmsOffsets(b.model.passLandings);
+    out << std::setprecision(2) << "  its own error at " << b.model.passLandings.size()
+        << " pass views (the precise stage from the poses the arm knew), rms along x, y, z: " << r[0] << ", " << r[1] << ", " << r[2]
+        << " mm; about them: " << r[3] << ", " << r[4] << ", " << r[5] << " deg\n";
+  }
   out << "  written to " << dir << "/ (model.json, model.ply, contact.png, silhouettes.png, summary.json"
       << (withViews ? ", views/" : "") << ") in " << std::setprecision(2) << b.buildS << " s\n";
   return out.str();

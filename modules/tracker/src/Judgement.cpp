@@ -24,8 +24,9 @@ void JudgementParams::validate() const
   uncertainty.validate();
 }
 
-Judgement::Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale)
-    : m_p(params), m_competitorMinDeg(competitorMinDeg), m_fitness(fitness), m_scale(scale)
+Judgement::Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale,
+                     const precise::ModelErrorFloor &modelError)
+    : m_p(params), m_competitorMinDeg(competitorMinDeg), m_fitness(fitness), m_scale(scale), m_modelError(modelError)
 {
 }
 
@@ -118,7 +119,7 @@ void Judgement::judge(TrackResult &r, const Evidence &e, const JudgedState &stat
   c.verified = state.verified;
   c.tracking = r.state == TrackState::Tracking;
   if (r.precise)
-    r.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, r.preciseResult.residualPx);
+    r.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, r.preciseResult.residualPx, m_modelError.at(r.hMo));
   r.verified = state.verified;
   r.visibleShare = e.visibleShare;
   r.confidence = m_p.confidence.confidence(c);

@@ -60,7 +60,9 @@ PhotoModelTracker::PhotoModelTracker(const core::StereoRig &rig, const core::Pho
       m_search(m_params.search, m_fitness, m_scale), m_lock(m_params.lock), m_steady(m_params.steady),
       m_verifier(m_params.verifier, m_params.search, m_fitness, m_scale),
       m_refinement(m_params.refinement, rig, model, m_fitness, m_scale),
-      m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness, m_scale), m_background(m_params.background, m_fitness)
+      m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness, m_scale,
+                  precise::ModelErrorFloor(model.passLandings, rig.left.hMc, m_params.judgement.uncertainty.modelErrorWidthDeg)),
+      m_background(m_params.background, m_fitness)
 {
   initialize();
 }

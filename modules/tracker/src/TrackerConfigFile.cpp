@@ -156,7 +156,12 @@ template <typename V> void eachKey(V &v, TrackerParams &p)
                .value("weights", p.judgement.confidence.weights)
                .value("bias", p.judgement.confidence.bias)
                .value("threshold", p.judgement.confidence.threshold);
-         }).section("uncertainty", [&](V &u) { u.value("scale", p.judgement.uncertainty.scale).value("floor", p.judgement.uncertainty.floor); });
+         }).section("uncertainty", [&](V &u) { 
+           u.value("scale", p.judgement.uncertainty.scale)
+               .value("floor", p.judgement.uncertainty.floor)
+               .value("model_error_gain", p.judgement.uncertainty.modelErrorGain)
+               .value("model_error_width_deg", p.judgement.uncertainty.modelErrorWidthDeg);
+         });
       });
 }
 

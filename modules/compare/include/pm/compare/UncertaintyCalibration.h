@@ -35,6 +35,7 @@ struct UncertaintySample
   std::array<double, 6> error{};      //!< estimate minus truth: mm along x, y, z, then deg about them (hand frame)
   std::array<double, 6> lineSigma{};  //!< the lines' own 1-sigma (lineSigmas()), mm then deg
   double residualPx = 0;              //!< PreciseResult::residualPx
+  std::array<double, 6> modelError{}; //!< the model's own error near the view (ModelErrorFloor::at(), from its pass landings), mm then deg
 };
 
 //! One random 6-DoF run.
@@ -50,7 +51,8 @@ std::vector<UncertaintySample> collectUncertaintySamples(const core::StereoRig &
                                                          const std::function<void()> &onFrame = {});
 
 /*!
-  Per axis, the scale and floor (on a grid) whose share of errors within 1 sigma is nearest 68 % on
+  Per axis, the scale and floor (on a grid; the model's own error added in quadrature with the
+  shipped model's gain, as the tracker adds it) whose share of errors within 1 sigma is nearest 68 % on
   the worst of \e runs, a quarter of the worst distance of the share within 2 sigma from 95 %
   added (it settles the trade between scale and floor). Throws pm::core::Error if a run has no sample.
 */

@@ -24,6 +24,7 @@
       if (m.hasDepth()) std::cout << "relief " << m.depthRangeMm[0] << " to " << m.depthRangeMm[1] << " mm\n";
 */
 #include <string>
+#include <array>
 #include <vector>
 
 namespace pm::core {
@@ -85,6 +86,22 @@ struct ModelView
 };
 
 /*!
+  Where the precise stage lands on one of the pass's own views, whose pose is known (the hand's, from
+  the arm): how far the model's own outline and colours put the pose off at that view, the model's
+  error there. An all-around model holds one per view of its pass (AllAroundModelBuilder.h); the
+  tracker's uncertainty takes those near the camera's direction as its floor (ModelErrorFloor.h).
+*/
+struct PassLanding
+{
+  double cameraMm[3] = {0, 0, 0}; //!< the left camera's centre in the model frame at that view (mm)
+  double offsetMm[3] = {0, 0, 0}; //!< where the stage put the model's origin less where it is, in the model frame's axes (mm)
+  double offsetDeg[3] = {0, 0, 0};//!< the stage's rotation less the true one (rotation vector, model frame's axes, deg)
+};
+
+//! The root mean square of \e landings' offsets per axis of the model frame: mm along x, y, z, then deg about them (zeros for none).
+std::array<double, 6> rmsOffsets(const std::vector<PassLanding> &landings);
+
+/*!
   A photo-model: the target as the fitness looks for it (see PhotoModel.h). StereoFitness copies
   the points it needs, so a model may go once the fitness is built.
   \code
@@ -135,6 +152,7 @@ struct PhotoModel
   std::vector<float> backgroundHistogram; //!< the surroundings' colour histogram
   static constexpr int kColourBins = 16; //!< bins per colour channel of the histograms
   bool hasColours = false;              //!< the S_in points carry the surface's colour (ModelPoint::r, g, b), for the precise stage's interior term
+  std::vector<PassLanding> passLandings; //!< the precise stage on the pass's own views (all-around models; empty: not measured)
 
   //! True when every view (the model's own included) carries its outline: the precise stage can run.
   bool hasContours() const;
@@ -148,7 +166,7 @@ struct PhotoModel
   /*!
     Throws pm::core::Error if the model cannot be used: S_in empty, a non-finite coordinate or
     hue outside [0, 360), a non-positive distance or focal length, views on a flat model or a view
-    without S_in or camera centre. \e source names the file or the origin for the message.
+    without S_in or camera centre, a pass landing not finite or over 50 mm / 45 deg off. \e source names the file or the origin for the message.
   */
   void validate(const std::string &source) const;
 };

@@ -90,6 +90,7 @@ struct AllAroundParams
   double stripWidthPx = 8;          //!< ... the last this much farther
   int stripRows = 2;                //!< rows of S_out points across the strip
   int nContour = 200;               //!< outline points per viewpoint, for the precise stage (ContourPoint)
+  bool passLandings = true;         //!< the precise stage on the pass's own views, the model's error there (PassLandings.h; the tracker's uncertainty floor)
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;

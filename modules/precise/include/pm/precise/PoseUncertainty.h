@@ -9,8 +9,9 @@
   not independent (neighbours see the same blur and the same patch of background) and the model's
   outline is itself a little off. On the lab's random 6-DoF run the true errors were 1.3 to 3.3
   times that sigma. So each axis's sigma is that of the lines times the frame's residual (px, as
-  least squares scales its covariance by the residual's variance) times a scale, with a floor
-  added in quadrature (what no line sees: the model's own error); scales and floors are fitted by
+  least squares scales its covariance by the residual's variance) times a scale, with a floor and
+  the model's own error near the view (ModelErrorFloor.h: what no line sees) added in quadrature;
+  scales and floors are fitted by
   `pm-uncertainty --fit` (docs/trust.md) so that about 68 % of the true errors fall within 1 sigma
   on each axis.
 
@@ -67,6 +68,13 @@ struct UncertaintyModel
 {
   std::array<double, 6> scale{};  //!< per axis (x, y, z, then about x, y, z): the lines' sigma times the residual times this (1/px)
   std::array<double, 6> floor{};  //!< per axis, added in quadrature (mm, then deg)
+  /*!
+    The model's own error near the view (ModelErrorFloor.h, from the model's pass landings) times
+    this, added in quadrature too (0: left out); \e modelErrorWidthDeg: how far around the camera's
+    direction the pass's views count.
+  */
+  double modelErrorGain = 1.0;
+  double modelErrorWidthDeg = 10; //!< the Gaussian weights' width on the angle between directions (deg)
   //! The shipped model.
   UncertaintyModel();
   /*!
@@ -74,11 +82,12 @@ struct UncertaintyModel
     (PreciseResult::information and residualPx); known: false when the information is singular.
   */
   PoseUncertainty uncertainty(const std::array<double, 36> &information, double residualPx) const;
-  //! The same from the lines' own sigmas (lineSigmas()).
-  PoseUncertainty uncertainty(const std::array<double, 6> &lineSigma, double residualPx) const;
+  //! The same from the lines' own sigmas (lineSigmas()); with \e modelError (ModelErrorFloor::at()) times modelErrorGain added in quadrature.
+  PoseUncertainty uncertainty(const std::array<double, 6> &lineSigma, double residualPx,
+                              const std::array<double, 6> &modelError = std::array<double, 6>{}) const;
   //! The sigma on \e axis (0..5: x, y, z, about x, y, z) of a line sigma \e lineSigma (mm or deg) and a residual \e residualPx.
   double sigma(std::size_t axis, double lineSigma, double residualPx) const { return std::hypot(scale[axis] * residualPx * lineSigma, floor[axis]); }
-  //! Throws pm::core::Error if a scale is not positive or a floor negative or not finite.
+  //! Throws pm::core::Error if a scale is not positive, a floor or the model error's gain negative or not finite, or its width not positive.
   void validate() const;
 };
 

@@ -27,6 +27,7 @@
 #include "pm/precise/PoseUncertainty.h"
 #include "pm/tracker/QualityScale.h"
 #include "pm/tracker/TrackConfidence.h"
+#include "pm/precise/ModelErrorFloor.h"
 #include "pm/tracker/TrackResult.h"
 
 namespace pm::tracker {
@@ -72,9 +73,11 @@ class Judgement
 public:
   /*!
     \e params as resolved for the model (JudgementParams::forModel); \e competitorMinDeg: competing
-    poses turned less than this are the same pose (VerifierParams::farDeg).
+    poses turned less than this are the same pose (VerifierParams::farDeg); \e modelError: the model's
+    own error near each view, the uncertainty's floor there (the model's pass landings).
   */
-  Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale);
+  Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale,
+            const precise::ModelErrorFloor &modelError);
 
   //! The competing poses of \e phi it scores (turned about its z axis, its tilt mirrored), valid ones only; returns their number.
   std::size_t competitors(const core::Phi &phi, core::Phi *out) const;
@@ -92,6 +95,7 @@ private:
   double m_competitorMinDeg;
   const core::StereoFitness &m_fitness;
   QualityScale m_scale;
+  precise::ModelErrorFloor m_modelError;
 };
 
 } // namespace pm::tracker

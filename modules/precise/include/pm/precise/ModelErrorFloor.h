@@ -1,0 +1,52 @@
+#pragma once
+/*!
+  \file ModelErrorFloor.h
+  The model's own error near the camera's direction, as a floor for the pose's 1-sigma: what the
+  precise stage's lines cannot see, since it is the model's outline that is off, not the image.
+  An all-around model holds where the stage landed on each view of its pass, the pose known
+  (core::PassLanding, model::measurePassLandings): a steady offset of 0.1-0.5 deg and 0.1-0.7 mm that
+  changes from one view to the next. At a pose, the floor is the root mean square of those offsets
+  over the pass's views near the camera's direction (Gaussian weights of \e widthDeg on the angle
+  between the directions), turned into the hand frame's axes: the error to expect at that view,
+  its sign unknown between the pass's views.
+
+  \code
+    const pm::precise::ModelErrorFloor floor(model.passLandings, rig.left.hMc); // 10 deg wide
+    if (!floor.empty()) {
+      const std::array<double, 6> f = floor.at(hMm);  // mm along x, y, z; deg about them (hand frame)
+      std::cout << "the model's own error here: " << f[4] << " deg about y\n";
+    }
+  \endcode
+*/
+#include <array>
+#include <vector>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+
+#include "pm/core/PhotoModel.h"
+
+namespace pm::precise {
+
+//! The model's error near a view (see the file's description); holds a copy of the landings. at() allocates nothing.
+class ModelErrorFloor
+{
+public:
+  /*!
+    From \e landings (core::PhotoModel::passLandings; none: empty() and at() gives zeros), the left
+    camera at \e hMc in the hand frame (its direction is the view's), weights \e widthDeg wide.
+    Throws pm::core::Error unless \e widthDeg is positive.
+  */
+  ModelErrorFloor(const std::vector<core::PassLanding> &landings, const vpHomogeneousMatrix &hMc, double widthDeg = 10);
+
+  bool empty() const { return m_landings.empty(); } //!< no landings: no floor
+  //! At the model's pose \e hMm (hand frame, metres): the floor per axis, mm along the hand's x, y, z then deg about them.
+  std::array<double, 6> at(const vpHomogeneousMatrix &hMm) const;
+
+private:
+  std::vector<core::PassLanding> m_landings;
+  std::vector<std::array<double, 3>> m_dirs; //!< each landing's camera direction (unit, model frame)
+  vpHomogeneousMatrix m_hMc;
+  double m_width; //!< rad
+};
+
+} // namespace pm::precise
