@@ -116,6 +116,10 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
                              "(the default for --target; kept for older command lines)");
   pm::app::addRobotOption(app, o.robotName);
   app.add_option("--pass-views", o.plan.views, "all-around, simulator: hand poses of the pass")->check(CLI::Range(6, 200));
+  app.add_option("--pass-rings-deg", o.plan.ringsDeg, "all-around, simulator: the pass's rings, their angles from the rest axis (deg; "
+                 "the views spread over them in proportion to the angle)")
+      ->delimiter(',')
+      ->check(CLI::Range(1.0, 80.0));
   app.add_option("--backdrop-hue", o.ap.backdropHueDeg, "all-around: a plain backdrop of this hue (deg) replaces the "
                  "background images (none needed in --views; the lab makes no second pass)")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", o.ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));

@@ -43,6 +43,10 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
   aa->excludes(fl);
   aa->excludes(st);
   app.add_option("--pass-views", c.passViews, "simulator, all-around model: hand poses of the pass")->check(CLI::Range(6, 200));
+  app.add_option("--pass-rings-deg", c.passRingsDeg, "simulator, all-around model: the pass's rings, their angles from the rest "
+                 "axis (deg; the views spread over them in proportion to the angle)")
+      ->delimiter(',')
+      ->check(CLI::Range(1.0, 80.0));
   app.add_option("--refine-depth-mm", c.allAroundParams.refineDepthMm, "simulator, all-around model: how far photo-consistency may "
                  "move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   app.add_option("--backdrop-hue", c.allAroundParams.backdropHueDeg, "simulator, all-around model: segment the pass against "

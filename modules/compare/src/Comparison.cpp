@@ -113,7 +113,7 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
   model::AllAroundParams aa;
   aa.refineOutlines = m_p.refineOutlines;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || aaForMbt)
-    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, model::PassPlan(), "pa10", m_p.distanceMm, aa,
+    m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, m_p.pass, "pa10", m_p.distanceMm, aa,
                                                       &m_s->allAroundBuild);
   if (aaForMbt)
     m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);

@@ -20,6 +20,7 @@
 #include "pm/compare/Metrics.h"
 #include "pm/compare/Scenario.h"
 #include "pm/core/StereoRig.h"
+#include "pm/model/PassPlanner.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
 #include "pm/tracker/PhotoModelTracker.h"
@@ -48,6 +49,7 @@ struct ComparisonParams
   double mbtMeshCellMm = 8;
   bool mbtTrueCad = false;                    //!< ViSP's MBT given the toy's own mesh (the lab knows it; CadMesh.h), decimated the same way
   bool refineOutlines = false;                //!< the all-around model's outlines refined (model::AllAroundParams::refineOutlines)
+  model::PassPlan pass;                       //!< the all-around model's pass (its views and rings)
   double viewTurnDeg = 0;                     //!< ours-3d: the stereo model's further pairs (deg; 0: one pair)
   double steadyVariant = 0.25;                //!< ours-steady: the fraction of the budget on steady frames
   sim::SceneParams scene;                     //!< the lab's scene
