@@ -24,6 +24,7 @@
 #include "pm/io/CameraXml.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
+#include "pm/model/HullGeometry.h"
 #include "pm/lab/SimulatedCalibration.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
@@ -127,6 +128,56 @@ TEST(UndistortMap, EachIdealPixelLooksWhereTheLensPutsIt)
   for (std::size_t i = 0; i < id.nearest().size(); i += 997)
     EXPECT_EQ(id.nearest()[i], static_cast<std::int32_t>(i));
   EXPECT_DOUBLE_EQ(id.coverage(), 1.0);
+}
+
+TEST(UndistortMap, ASignedDistanceResampledKeepsItsZeroLineWhereAResampledMaskMovesOutward)
+{
+  // A disc in the raw image, off the image's centre where the lens bends it. Its silhouette's signed
+  // distance resampled into the ideal image has its zero line on the disc's edge as the lens maps it
+  // (within a tenth of a pixel on average over the edge); the mask itself resampled and thresholded
+  // low (as a background subtraction counts a fifth-covered pixel as target) lies outward.
+  const pm::core::StereoRig rig = pm::lab::labRigWithLens(kBarrel);
+  const pm::core::UndistortMap map(rig.left);
+  const double cu = 470, cv = 330, R = 40;
+  vpImage<unsigned char> mask(480, 640, 0);
+  for (unsigned v = 0; v < 480; ++v)
+    for (unsigned u = 0; u < 640; ++u)
+      mask[v][u] = std::hypot(u - cu, v - cv) <= R ? 255 : 0;
+  cv::Mat dist = pm::model::hull::signedDistance(mask);
+  std::vector<float> ideal(640 * 480), rawMask(640 * 480), idealMask(640 * 480);
+  map.undistortField(dist.ptr<float>(), ideal.data(), -1e3f);
+  for (std::size_t i = 0; i < rawMask.size(); ++i)
+    rawMask[i] = mask.bitmap[i] ? 1.f : 0.f;
+  map.undistortField(rawMask.data(), idealMask.data(), 0.f);
+  const auto at = [](const std::vector<float> &f, double u, double v) { // bilinear
+    const int u0 = static_cast<int>(std::floor(u)), v0 = static_cast<int>(std::floor(v));
+    const double a = u - u0, b = v - v0;
+    const auto p = [&](int uu, int vv) { return static_cast<double>(f[static_cast<std::size_t>(vv) * 640 + static_cast<std::size_t>(uu)]); };
+    return (1 - a) * (1 - b) * p(u0, v0) + a * (1 - b) * p(u0 + 1, v0) + (1 - a) * b * p(u0, v0 + 1) + a * b * p(u0 + 1, v0 + 1);
+  };
+  double fieldOffset = 0, maskOffset = 0;
+  const int n = 360;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * k / n;
+    // The edge in the ideal image, and the outward normal there (through the lens).
+    const vpImagePoint e = kBarrel.undistort(rig.left.cam, vpImagePoint(cv + R * std::sin(t), cu + R * std::cos(t)));
+    const vpImagePoint o = kBarrel.undistort(rig.left.cam, vpImagePoint(cv + (R + 1) * std::sin(t), cu + (R + 1) * std::cos(t)));
+    const double nu = o.get_u() - e.get_u(), nv = o.get_v() - e.get_v(), len = std::hypot(nu, nv);
+    // Along the normal: where the resampled field crosses 0, and where the resampled mask crosses 0.2.
+    double zero = 0, low = 0;
+    for (double s = -3; s <= 3; s += 0.01) {
+      const double u = e.get_u() + s * nu / len, v = e.get_v() + s * nv / len;
+      if (at(ideal, u, v) > 0)
+        zero = s;
+      if (at(idealMask, u, v) > 0.2)
+        low = s;
+    }
+    fieldOffset += zero / n;
+    maskOffset += low / n;
+  }
+  std::cout << "the edge through the lens: signed distance resampled " << fieldOffset << " px, mask resampled (0.2) " << maskOffset << " px\n";
+  EXPECT_LT(std::fabs(fieldOffset), 0.1);
+  EXPECT_GT(maskOffset, fieldOffset + 0.2);
 }
 
 TEST(UndistortMap, TheSimulatorRendersThroughTheLensWhereItProjects)

@@ -53,6 +53,15 @@ void UndistortMap::undistort(const vpImage<vpRGBa> &raw, vpImage<vpRGBa> &ideal)
   cv::remap(src, dst, mu, mv, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0, 0, 0, 255));
 }
 
+void UndistortMap::undistortField(const float *raw, float *ideal, float outside) const
+{
+  const cv::Mat src(static_cast<int>(m_h), static_cast<int>(m_w), CV_32F, const_cast<float *>(raw));
+  cv::Mat dst(static_cast<int>(m_h), static_cast<int>(m_w), CV_32F, ideal);
+  const cv::Mat mu(static_cast<int>(m_h), static_cast<int>(m_w), CV_32F, const_cast<float *>(m_mapU.data()));
+  const cv::Mat mv(static_cast<int>(m_h), static_cast<int>(m_w), CV_32F, const_cast<float *>(m_mapV.data()));
+  cv::remap(src, dst, mu, mv, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(outside));
+}
+
 double UndistortMap::coverage() const
 {
   std::size_t in = 0;

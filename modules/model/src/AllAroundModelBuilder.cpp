@@ -336,6 +336,20 @@ struct PassImages
   std::vector<std::string> names;              //!< each view's name
 };
 
+//! A raw image's signed distance \e dist resampled into the ideal image through \e map (in place); returns the ideal mask (255 where positive).
+vpImage<unsigned char> idealSilhouette(const core::UndistortMap &map, cv::Mat &dist)
+{
+  if (!dist.isContinuous())
+    dist = dist.clone();
+  cv::Mat ideal(dist.rows, dist.cols, CV_32F);
+  map.undistortField(dist.ptr<float>(), ideal.ptr<float>(), -1e3f);
+  dist = ideal;
+  vpImage<unsigned char> mask(static_cast<unsigned>(dist.rows), static_cast<unsigned>(dist.cols), 0);
+  for (unsigned i = 0; i < mask.getSize(); ++i)
+    mask.bitmap[i] = ideal.ptr<float>()[i] > 0 ? 255 : 0;
+  return mask;
+}
+
 //! Stage 1: the silhouettes in the ideal images (out: silhouettes, shadowPx). Throws pm::core::Error.
 PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p, AllAroundBuild &out)
 {
@@ -361,20 +375,24 @@ PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassV
           throw core::Error(name + ": a " + side + " image is " + std::to_string(im->getWidth()) + "x" +
                       std::to_string(im->getHeight()) + " but the rig's " + side + " camera is " +
                       std::to_string(rc[c]->width) + "x" + std::to_string(rc[c]->height));
-      vpImage<vpRGBa> photo = und[c] ? und[c]->undistorted(*ph[c]) : *ph[c];
-      // Against a plain backdrop the photo serves as its own background (H_B around the silhouette).
-      vpImage<vpRGBa> back = plain ? photo : und[c] ? und[c]->undistorted(*bg[c]) : *bg[c];
+      // The silhouette and its signed distance in the raw images; through a lens the distance is
+      // resampled into the ideal image (a mask resampled would move its edge outward), the photos
+      // too for their colours.
+      const vpImage<vpRGBa> &rawBack = plain ? *ph[c] : *bg[c]; // against a plain backdrop the photo is its own background
       SilhouetteStats st;
-      vpImage<unsigned char> mask = plain ? silhouetteOnBackdrop(photo, p.backdropHueDeg, p.silhouette, &st, name + " (" + side + ")")
-                                          : silhouette(photo, back, p.silhouette, &st, name + " (" + side + ")");
+      vpImage<unsigned char> mask = plain ? silhouetteOnBackdrop(*ph[c], p.backdropHueDeg, p.silhouette, &st, name + " (" + side + ")")
+                                          : silhouette(*ph[c], rawBack, p.silhouette, &st, name + " (" + side + ")");
       if (st.touchesBorder)
         throw core::Error(name + ": the target is cut by the " + std::string(side) +
                     " image's border: every view must see the whole target");
       out.shadowPx += st.shadowPx;
       HullView vc;
       vc.cam = core::PinholeCamera::Projection(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height);
-      vc.photo = std::move(photo);
-      vc.signedDist = p.refineOutlines ? hull::subpixelSignedDistance(mask, vc.photo, plain ? nullptr : &back) : hull::signedDistance(mask);
+      vc.signedDist = p.refineOutlines ? hull::subpixelSignedDistance(mask, *ph[c], plain ? nullptr : &rawBack) : hull::signedDistance(mask);
+      vpImage<vpRGBa> back = und[c] ? und[c]->undistorted(rawBack) : rawBack;
+      vc.photo = und[c] ? und[c]->undistorted(*ph[c]) : *ph[c];
+      if (und[c])
+        mask = idealSilhouette(*und[c], vc.signedDist);
       vc.view = static_cast<int>(k);
       cams.push_back(std::move(vc));
       backgrounds.push_back(std::move(back));

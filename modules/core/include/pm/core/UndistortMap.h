@@ -7,7 +7,8 @@
   - nearest(): the raw pixel index under each ideal pixel (-1 off the raw image), which the
     fitness's hue planes gather through (HuePlane::compute): one lookup per pixel per frame;
   - undistort(): the raw image resampled bilinearly into the ideal one, for the model builders
-    and the calibration check, which work on whole photos once.
+    and the calibration check, which work on whole photos once; undistortField() the same for a
+    field of floats (a silhouette's signed distance, found in the raw image).
   With barrel distortion the raw image's corners fall outside the ideal image and are not used.
 
       const pm::core::UndistortMap map(rig.left);           // once
@@ -51,6 +52,14 @@ public:
     undistort(raw, ideal);
     return ideal;
   }
+  /*!
+    A field of the raw image (\e raw: width() x height() floats, row-major, e.g. a silhouette's signed
+    distance) resampled bilinearly into the ideal image (\e ideal, as many floats; \e outside where the
+    ideal pixel falls off the raw image). A signed distance's zero line stays where it was: a mask
+    resampled would move its edge by where the resampling's blur crosses its threshold (0.2-0.3 px
+    outward through the lab's lens: docs/model-outline.md).
+  */
+  void undistortField(const float *raw, float *ideal, float outside) const;
   //! Fraction of the ideal image that the raw image covers.
   double coverage() const;
 
