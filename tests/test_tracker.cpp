@@ -644,15 +644,16 @@ TEST(MotionPrediction, CarriesAConstantMotionOnFollowsTheHandAndForgetsJumpsAndS
   ASSERT_TRUE(f.moving());
   f.remember(lost);
   EXPECT_FALSE(f.moving());
-  // A step past the largest turn (6 deg) is a jump: no prediction.
+  // A step past the largest turn (3 deg) is a jump: no prediction.
   pm::tracker::MotionPrediction j;
   j.remember(tracked(truthAt(0)));
-  j.remember(tracked(truthAt(5))); // 7.5 deg in one frame
+  j.remember(tracked(truthAt(3))); // 4.5 deg in one frame
   EXPECT_FALSE(j.moving());
-  EXPECT_EQ(j.predict(phiOf(truthAt(5))).e1, phiOf(truthAt(5)).e1);
+  EXPECT_EQ(j.predict(phiOf(truthAt(3))).e1, phiOf(truthAt(3)).e1);
   // Gain 0: off; half the gain, half the step; bad parameters refused.
   pm::tracker::MotionPredictionParams half;
   half.gain = 0.5;
+  half.maxStepDeg = 6; // the two frames below are 3 deg apart
   pm::tracker::MotionPrediction h(half);
   h.remember(tracked(truthAt(0)));
   h.remember(tracked(truthAt(2)));
