@@ -19,6 +19,7 @@
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/robot/ArmCatalog.h"
+#include "pm/robot/ArmPassPlan.h"
 #include "pm/robot/SteppedArm.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
@@ -151,6 +152,9 @@ int makeAllAround(const Options &o)
   pm::robot::SteppedArm arm(pm::robot::makeArmModel(o.robotName));
   const pm::lab::LabPass lp = pm::lab::runLabPass(scene, rig, o.plan, arm, vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), o.ap.backdropHueDeg < 0);
   const std::string source = "simulator, target " + shape.info.code + " (" + shape.info.name + "), " + arm.model().title() + " pass";
+  if (!o.quiet)
+    for (const pm::model::PassDirection &d : lp.leftOut)
+      std::cout << "pass: " << pm::robot::describeLeftOut(d, arm.model().title()) << "\n";
   const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, lp.views, o.ap);
   const pm::lab::SurfaceTruth truth = pm::lab::checkSurface(scene, b, lp.fMo.inverse() * b.fMm, rig.left.cam);
   pm::io::writeAllAroundModel(b, lp.views, rig, o.out, source, true, pm::lab::surfaceTruthJson(truth));

@@ -21,6 +21,7 @@
 #include "pm/lab/LabPass.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/robot/ArmCatalog.h"
+#include "pm/robot/ArmPassPlan.h"
 #include "pm/robot/InverseKinematics.h"
 #include "pm/robot/SteppedArm.h"
 #include "pm/robot/ViSPRobotArm.h"
@@ -222,6 +223,37 @@ TEST(Arm, TheHandJacobianMovesTheRigMountedOffTheFlangeAsCommanded)
       EXPECT_NEAR(v[3 + k], w[k] / dt, 1e-5) << name;
     }
   }
+}
+
+TEST(ArmPassPlan, AnOuterRingOutOfReachIsLeftOutAndSaid)
+{
+  // The PA-10 at 500 mm reaches 20 and 40 deg all around but not the whole 55-deg ring: the views
+  // it cannot reach are left out (their directions said), the rest made as planned.
+  const auto arm = pm::robot::makeArmModel("pa10");
+  pm::model::PassPlan plan;
+  plan.views = 24;
+  plan.ringsDeg = {20, 40, 55};
+  std::vector<pm::model::PassDirection> leftOut;
+  const std::vector<pm::robot::ArmPassView> views = pm::robot::planArmPass(*arm, arm->restJoints(), vpHomogeneousMatrix(), plan, 500, &leftOut);
+  ASSERT_FALSE(leftOut.empty());
+  EXPECT_EQ(views.size() + leftOut.size(), 24u);
+  for (const pm::model::PassDirection &d : leftOut)
+    EXPECT_EQ(d.tiltDeg, 55.0);
+  const std::vector<pm::model::PassDirection> planned = pm::model::passDirections(plan);
+  const vpHomogeneousMatrix fMe0 = arm->fMe(arm->restJoints());
+  for (const pm::robot::ArmPassView &v : views) {
+    const int k = std::stoi(v.name.substr(5)); // "view NN": the plan's number
+    ASSERT_LT(k, 24);
+    EXPECT_LE(v.direction.tiltDeg, planned[k].tiltDeg) << v.name;
+    const vpHomogeneousMatrix want = fMe0 * pm::model::passPose(v.direction, 500);
+    EXPECT_LT((arm->fMe(v.q).getTranslationVector() - want.getTranslationVector()).frobeniusNorm(), 1e-4) << v.name;
+  }
+  EXPECT_NE(pm::robot::describeLeftOut(leftOut.front(), arm->title()).find("deg: out of the PA-10's reach, left out of the pass"),
+            std::string::npos);
+  // Its innermost ring out of reach is still an error: a pass without it would not be a pass.
+  plan.ringsDeg = {55};
+  EXPECT_NE(errorOf([&] { pm::robot::planArmPass(*arm, arm->restJoints(), vpHomogeneousMatrix(), plan, 500); }).find("out of the PA-10's reach"),
+            std::string::npos);
 }
 
 TEST(LabPass, EachArmReachesThePassAndItsViewsFolderMakesTheSameModel)

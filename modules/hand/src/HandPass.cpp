@@ -27,7 +27,11 @@ std::vector<model::PassView> recordPass(robot::Arm &arm, capture::StereoSource &
   if (recording.backgrounds && !recording.ask)
     throw core::Error("pass: the backgrounds need someone to remove the target (PassRecording::ask)");
   const vpColVector q0 = arm.q();
-  const std::vector<robot::ArmPassView> planned = robot::planArmPass(arm.model(), q0, arm.eMh(), plan, plan.distanceMm);
+  std::vector<model::PassDirection> leftOut;
+  const std::vector<robot::ArmPassView> planned = robot::planArmPass(arm.model(), q0, arm.eMh(), plan, plan.distanceMm, &leftOut);
+  if (recording.note)
+    for (const model::PassDirection &d : leftOut)
+      recording.note(robot::describeLeftOut(d, arm.model().title()));
   const std::size_t total = planned.size() * (recording.backgrounds ? 2 : 1);
   std::vector<model::PassView> views(planned.size());
   std::size_t done = 0;

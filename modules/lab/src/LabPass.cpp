@@ -17,7 +17,7 @@ LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const 
   const vpColVector q0 = arm.q();
   out.fMh0 = arm.fMh(q0);
   out.fMo = out.fMh0 * h0Mo;
-  const std::vector<robot::ArmPassView> planned = robot::planArmPass(arm.model(), q0, arm.eMh(), plan, plan.distanceMm);
+  const std::vector<robot::ArmPassView> planned = robot::planArmPass(arm.model(), q0, arm.eMh(), plan, plan.distanceMm, &out.leftOut);
   sim::Rasterizer r;
   // No reallocation: a view without backgrounds would be copied, and ViSP 3.5 copies an empty
   // vpImage with memcpy(nullptr) (its move constructor is not noexcept).

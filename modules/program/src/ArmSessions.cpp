@@ -111,6 +111,7 @@ void runPassSession(robot::Arm &arm, const CameraOptions &cameras, const PassOpt
     std::string line;
     std::getline(std::cin, line);
   };
+  rec.note = [&](const std::string &what) { out << "pass: " << what << std::endl; };
   InterruptScope ctrlC; // Ctrl-C ends the pass at the next stop, the arm stopped and nothing written
   rec.progress = [&](std::size_t done, std::size_t total) {
     if (!pass.quiet)

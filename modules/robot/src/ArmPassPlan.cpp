@@ -1,5 +1,6 @@
 #include "pm/robot/ArmPassPlan.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "pm/core/Error.h"
@@ -8,12 +9,13 @@
 namespace pm::robot {
 
 std::vector<ArmPassView> planArmPass(const ArmModel &arm, const vpColVector &q0, const vpHomogeneousMatrix &eMh,
-                                     const model::PassPlan &plan, double distanceMm)
+                                     const model::PassPlan &plan, double distanceMm, std::vector<model::PassDirection> *leftOut)
 {
   arm.requireJoints(q0, "rest joint values");
   const std::vector<model::PassDirection> dirs = model::passDirections(plan);
   const vpHomogeneousMatrix fMh0 = arm.fMe(q0) * eMh, hMe = eMh.inverse();
   const auto flangeGoal = [&](const model::PassDirection &d) { return fMh0 * model::passPose(d, distanceMm) * hMe; };
+  const double innermost = *std::min_element(plan.ringsDeg.begin(), plan.ringsDeg.end());
   std::vector<ArmPassView> out;
   vpColVector q = q0;
   for (std::size_t k = 0; k < dirs.size(); ++k) {
@@ -34,6 +36,11 @@ std::vector<ArmPassView> planArmPass(const ArmModel &arm, const vpColVector &q0,
       if (ik.reached)
         break;
     }
+    if (!ik.reached && dirs[k].tiltDeg > innermost) { // an outer ring's view: left out, said
+      if (leftOut)
+        leftOut->push_back(dirs[k]);
+      continue;
+    }
     if (!ik.reached) {
       ik = inverseKinematics(arm, flangeGoal(dirs[k]), q); // to name the joint in the way
       throw core::Error(std::string(name) + " of the pass (" + std::to_string(static_cast<int>(dirs[k].tiltDeg)) + " deg toward " +
@@ -46,6 +53,14 @@ std::vector<ArmPassView> planArmPass(const ArmModel &arm, const vpColVector &q0,
     out.push_back({name, d, q});
   }
   return out;
+}
+
+std::string describeLeftOut(const model::PassDirection &d, const std::string &armTitle)
+{
+  char s[160];
+  std::snprintf(s, sizeof s, "view at %.0f deg toward %.0f deg: out of the %s's reach, left out of the pass", d.tiltDeg, d.azimuthDeg,
+                armTitle.c_str());
+  return s;
 }
 
 } // namespace pm::robot

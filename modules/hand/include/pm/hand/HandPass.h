@@ -33,11 +33,14 @@ struct PassRecording
   */
   std::function<void(const std::string &)> ask;
   std::function<void(std::size_t done, std::size_t total)> progress; //!< after each pair kept (may be empty)
+  //! Told, before the arm moves, of each outer-ring view the arm cannot reach and the pass leaves out (may be empty).
+  std::function<void(const std::string &)> note;
 };
 
 /*!
   Makes the pass of \e plan with \e arm from where it is, the plan's pivot \e plan.distanceMm ahead
-  of the hand, and takes the pairs from \e source (see HandPass.h). Throws pm::core::Error naming the first
+  of the hand, and takes the pairs from \e source (see HandPass.h). Outer-ring views out of the arm's
+  reach are left out (PassRecording::note). Throws pm::core::Error naming the first innermost-ring
   view out of reach and the joint in the way (before any motion), when the source ends, or when
   the arm fails (the arm is then stopped).
   \code

@@ -35,6 +35,7 @@ struct LabPass
   std::vector<model::PassView> views;     //!< the views, named "view 00", "view 01", ... (hand pose fMh, the pairs with and without the toy)
   std::vector<vpColVector> joints; //!< the arm's joints at each view
   std::vector<model::PassDirection> directions; //!< each view's direction as reached (tilted less where the plan's was out of reach)
+  std::vector<model::PassDirection> leftOut; //!< the plan's outer-ring directions the arm could not reach (no view there)
   vpHomogeneousMatrix fMo;         //!< the toy in the base frame during the pass (ground truth, metres)
   vpHomogeneousMatrix fMh0;        //!< the hand at rest, in the base frame (where the arm was when the pass began)
 };
@@ -43,8 +44,9 @@ struct LabPass
   Runs the pass of \e plan with \e arm from where it is (its rest) and the toy at \e h0Mo in the
   hand frame there (the plan's pivot is put on the toy's origin); the arm is left at the last
   view. Without \e backgrounds the second pass (the toy removed) is not made (a plain backdrop).
-  Throws pm::core::Error naming the first view the arm cannot reach within its joint limits, and the
-  joint in the way.
+  Views of the plan's outer rings the arm cannot reach are left out (LabPass::leftOut). Throws
+  pm::core::Error naming the first view of the innermost ring the arm cannot reach within its joint
+  limits, and the joint in the way.
 */
 LabPass runLabPass(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan, robot::Arm &arm,
                    const vpHomogeneousMatrix &h0Mo = vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), bool backgrounds = true);

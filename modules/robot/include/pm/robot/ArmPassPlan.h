@@ -5,8 +5,10 @@
   of each view, found by inverse kinematics from the rest joints or the last view's, within the
   joint limits. A view out of reach is tilted less, 5 deg at a time down to half its ring's
   angle; still out of reach, it is turned about the hand's axis (a wrist's last joint may not
-  turn far enough; the view sees the target the same) and tilted less again. The lab's pass and
-  a real arm's both move through these joints.
+  turn far enough; the view sees the target the same) and tilted less again. A view of an outer
+  ring still out of reach is left out (the pass covers those tilts where the arm reaches them);
+  the rest view and the innermost ring's must be reached. The lab's pass and a real arm's both
+  move through these joints.
 */
 #include <string>
 #include <vector>
@@ -29,8 +31,10 @@ struct ArmPassView
 
 /*!
   The views of \e plan for \e arm from joints \e q0, the rig mounted at \e eMh on the flange and
-  the plan's pivot \e distanceMm ahead of the hand at q0. Throws pm::core::Error naming the first view
-  out of reach and the joint in the way.
+  the plan's pivot \e distanceMm ahead of the hand at q0. Views of the outer rings out of reach are
+  left out (their directions appended to \e leftOut when given; the views keep the plan's numbers).
+  Throws pm::core::Error naming the first view of the innermost ring (or the rest view) out of
+  reach and the joint in the way.
   \code
     const auto arm = pm::robot::makeArmModel("viper850");
     const std::vector<pm::robot::ArmPassView> views =
@@ -38,6 +42,10 @@ struct ArmPassView
   \endcode
 */
 std::vector<ArmPassView> planArmPass(const ArmModel &arm, const vpColVector &q0, const vpHomogeneousMatrix &eMh,
-                                     const model::PassPlan &plan, double distanceMm);
+                                     const model::PassPlan &plan, double distanceMm,
+                                     std::vector<model::PassDirection> *leftOut = nullptr);
+
+//! "view at 55 deg toward 65 deg: out of the PA-10's reach, left out of the pass" for a direction planArmPass() left out.
+std::string describeLeftOut(const model::PassDirection &d, const std::string &armTitle);
 
 } // namespace pm::robot
