@@ -5,7 +5,8 @@
 #      build tree), with bash -euo pipefail: a command that fails fails the check;
 #   2. checks every command line shown in README.md and docs/*.md (code blocks and `pm-...` spans):
 #      the program exists and each --option it names is in that program's --help;
-#   3. checks that every ```cpp block of docs/ is a verbatim part of a source file in examples/.
+#   3. checks that every ```cpp block of docs/ is a verbatim part of a source file in examples/, and
+#      every ```python block a verbatim part of a script in examples/python/.
 # A tutorial that runs on sample data of a Debian package says so in a line of its own,
 #   <!-- docs-check: needs PATH (PACKAGE) -->
 # and is skipped, with a line that says why, when PATH is missing (a machine without that package).
@@ -63,18 +64,27 @@ done
 echo "docs: $checked command lines checked against the programs' --help"
 
 # --- 3. code shown is code built -----------------------------------------------------------------
-for page in "$root"/docs/*.md; do
-  awk '/^```cpp/ { n++; on = 1; next } /^```/ { on = 0 } on { print > (OUT "." n) }' OUT="$scratch/cpp" "$page"
-  for block in "$scratch"/cpp.*; do
-    [ -e "$block" ] || continue
-    found=0
-    while IFS= read -r src; do
-      grep -qzF -- "$(cat "$block")" "$src" && { found=1; break; }
-    done < <(find "$root/examples" -name '*.cpp' -o -name 'CMakeLists.txt')
-    [ "$found" = 1 ] || fail "${page#$root/}: a cpp block is not in any file of examples/ (docs drifted from the code)"
-    rm -f "$block"
+# shown_in_examples LANG FILES...: every ```LANG block of docs/ is a verbatim part of one of FILES.
+shown_in_examples() {
+  local lang="$1" page block src found
+  shift
+  for page in "$root"/docs/*.md; do
+    awk -v L="$lang" '$0 == "```" L { n++; on = 1; next } /^```/ { on = 0 } on { print > (OUT "." n) }' OUT="$scratch/$lang" "$page"
+    for block in "$scratch/$lang".*; do
+      [ -e "$block" ] || continue
+      found=0
+      for src in "$@"; do
+        grep -qzF -- "$(cat "$block")" "$src" && { found=1; break; }
+      done
+      [ "$found" = 1 ] || fail "${page#$root/}: a $lang block is not in any file of examples/ (docs drifted from the code)"
+      rm -f "$block"
+    done
   done
-done
+}
+mapfile -t cpp_sources < <(find "$root/examples" -name '*.cpp' -o -name 'CMakeLists.txt')
+mapfile -t python_sources < <(find "$root/examples/python" -name '*.py')
+shown_in_examples cpp "${cpp_sources[@]}"
+shown_in_examples python "${python_sources[@]}"
 
 # --- 1. run the tutorials --------------------------------------------------------------------------
 for page in "$root"/docs/tutorial-*.md; do

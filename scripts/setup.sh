@@ -2,12 +2,13 @@
 # pm_setup [release|sanitize|fuzz] [optional packages...]  ->  sets PM_BUILD_DIR to the built tree.
 
 PM_DEBIAN_PACKAGES=(build-essential cmake ninja-build pkg-config libvisp-dev libopencv-dev libeigen3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libxml2-dev libapriltag-dev libyaml-cpp-dev)
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libjpeg-dev libxml2-dev libapriltag-dev libyaml-cpp-dev
+  pybind11-dev python3-dev python3-numpy)
 
 # Only for the tests: ViSP's images (the AprilTag benchmark test is skipped without them) and OpenCV's
 # sample data (real stereo chessboard pairs and a calibration file; their tests are skipped without them);
 # Doxygen and Graphviz for the API pages (the test docs_api builds them).
-PM_TEST_PACKAGES=(visp-images-data opencv-doc xvfb doxygen graphviz)
+PM_TEST_PACKAGES=(visp-images-data opencv-doc xvfb doxygen graphviz python3-pytest python3-opencv)
 
 # Only for the fuzz targets (scripts/fuzz.sh): clang, its libFuzzer runtime, its OpenMP.
 PM_FUZZ_PACKAGES=(clang libclang-rt-14-dev libomp-dev)

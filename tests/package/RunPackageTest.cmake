@@ -21,4 +21,17 @@ message(STATUS "${out}")
 if(rc)
   message(FATAL_ERROR "the consumer failed")
 endif()
+# The Python module as installed: imported from the prefix's dist-packages, with its stubs beside it.
+if(PYTHON_EXE)
+  if(NOT EXISTS ${WORK_DIR}/prefix/${PYTHON_DIR}/visp_photomodel-stubs/__init__.pyi)
+    message(FATAL_ERROR "the Python module's stubs are not installed in ${PYTHON_DIR}")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${WORK_DIR}/prefix/${PYTHON_DIR}
+                          ${PYTHON_EXE} -c "import visp_photomodel as pm; print('python:', pm.__file__, pm.load_rig(pm.data_path('rig/pa10_stereo.json')))"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "${out}${err}")
+  if(rc OR NOT out MATCHES "prefix/${PYTHON_DIR}/visp_photomodel")
+    message(FATAL_ERROR "the installed Python module does not import from the prefix")
+  endif()
+endif()
 file(REMOVE_RECURSE ${WORK_DIR})

@@ -1,0 +1,121 @@
+"""The tracker from Python: the same poses as the C++ programs on the same frames, NumPy images read where they lie,
+the GIL released, bad input raised, never a crash."""
+import csv
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import visp_photomodel as pm
+from conftest import run_app
+
+
+def hand_pose(k: int) -> np.ndarray:
+    """The toy 500 mm ahead, sliding 2 mm and turning 0.5 deg about y a frame."""
+    a = np.radians(0.5 * k)
+    M = np.eye(4)
+    M[:3, :3] = [[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]]
+    M[:3, 3] = [0.002 * k, 0, 0.5]
+    return M
+
+
+@pytest.fixture(scope="module")
+def frames(rig):
+    scene = pm.lab.Scene("C12", seed=3)
+    return [scene.render(rig, hand_pose(k), k) for k in range(24)]
+
+
+def test_the_same_frames_give_the_same_poses_as_pm_track(rig, made_model, model, frames, tmp_path):
+    for k, (left, right) in enumerate(frames):
+        pm.write_image(left, str(tmp_path / f"L_{k:04d}.png"))
+        pm.write_image(right, str(tmp_path / f"R_{k:04d}.png"))
+    run_app("pm-track", "--left", str(tmp_path / "L_%04d.png"), "--right", str(tmp_path / "R_%04d.png"), "--model",
+            str(made_model / "model.json"), "--out", str(tmp_path / "out"), "--quiet")
+    rows = list(csv.DictReader(open(tmp_path / "out" / "frames.csv")))
+    assert len(rows) == len(frames)
+    tracker = pm.Tracker(rig, model)  # the defaults pm-track uses: seed 1, 800 evaluations a frame
+    tracker.initialize()  # as pm-track does: a new random population
+    tracked = 0
+    for (left, right), row in zip(frames, rows):
+        r = tracker.track(left, right)
+        assert r.state == row["state"]
+        assert r.evaluations == int(row["evaluations"])
+        # frames.csv holds 8 significant digits: equal to them (half a unit of the 8th digit: 5e-8 at most).
+        want = [float(row[k]) for k in ("est_x", "est_y", "est_z", "est_e1", "est_e2", "est_e3")]
+        np.testing.assert_allclose(r.phi, want, rtol=5.1e-8, atol=1e-12)
+        tracked += r.state == "tracking"
+    assert tracked > len(frames) // 2  # a real run: the crab found and followed
+
+
+def test_bgr_as_opencv_gives_the_same_poses_as_rgba(rig, model, frames):
+    a, b = pm.Tracker(rig, model, seed=5), pm.Tracker(rig, model, seed=5)
+    for left, right in frames[:12]:
+        ra = a.track(left, right)
+        rb = b.track(np.ascontiguousarray(left[..., 2::-1]), np.ascontiguousarray(right[..., 2::-1]))
+        np.testing.assert_array_equal(ra.pose, rb.pose)
+        assert (ra.state, ra.confidence, ra.trusted) == (rb.state, rb.confidence, rb.trusted)
+
+
+def test_rgba_is_read_where_it_lies_and_bgr_converted_into_one_kept_buffer(rig, model, frames):
+    t = pm.Tracker(rig, model)
+    for left, right in frames[:3]:
+        t.track(left, right)
+        assert t.pixels_read == (left.ctypes.data, right.ctypes.data)  # the arrays' own buffers: no copy
+    kept = None
+    for left, right in frames[:3]:
+        bl, br = np.ascontiguousarray(left[..., 2::-1]), np.ascontiguousarray(right[..., 2::-1])
+        t.track(bl, br)
+        assert t.pixels_read[0] not in (bl.ctypes.data, left.ctypes.data)
+        kept = kept or t.pixels_read
+        assert t.pixels_read == kept  # one buffer per camera, reused: no allocation per frame
+
+
+def test_the_result_carries_what_a_robot_needs(rig, model, frames):
+    t = pm.Tracker(rig, model)
+    for left, right in frames:
+        r = t.track(left, right)
+    assert r.state == "tracking" and r.trusted and 0.9 < r.confidence < 1
+    assert r.pose.shape == (4, 4) and np.allclose(r.pose[3], [0, 0, 0, 1])
+    assert len(r.sigma) == 6 and all(0 < s < 5 for s in r.sigma)
+    assert 0.9 <= r.visible_share <= 1
+    np.testing.assert_array_equal(t.pose, r.pose)
+    t.init_from_pose(r.pose)
+    assert t.state == "tracking"
+
+
+def test_the_gil_is_released_while_it_tracks(rig, model, frames):
+    t = pm.Tracker(rig, model, budget_evaluations=40000)  # a long frame: about half a second of search
+    left, right = frames[0]
+    worker = threading.Thread(target=lambda: t.track(left, right))
+    stamps = [time.perf_counter()]
+    worker.start()
+    while worker.is_alive():
+        stamps.append(time.perf_counter())  # this thread runs only while the tracker does not hold the GIL
+    took = stamps[-1] - stamps[0]
+    gaps = np.diff(stamps)
+    assert took > 0.1
+    assert gaps.max() < 0.5 * took, f"the main thread stood still {gaps.max():.3f} s of {took:.3f} s"
+
+
+def test_bad_input_raises_and_never_crashes(rig, model, frames, tmp_path):
+    t = pm.Tracker(rig, model)
+    left, right = frames[0]
+    with pytest.raises(TypeError, match="uint8"):
+        t.track(left.astype(np.float32), right)
+    with pytest.raises(ValueError, match="H x W x 3"):
+        t.track(np.ascontiguousarray(left[..., 0]), right)
+    with pytest.raises(ValueError, match="contiguous"):
+        t.track(left[:, :, :3], right[:, :, :3])
+    with pytest.raises(pm.Error, match="640x480"):
+        t.track(np.ascontiguousarray(left[::2, ::2]), np.ascontiguousarray(right[::2, ::2]))
+    with pytest.raises(TypeError):
+        t.track(None, right)
+    with pytest.raises(ValueError, match="rigid"):
+        t.init_from_pose(np.zeros((4, 4)))
+    with pytest.raises(pm.Error, match="no_config.json"):
+        pm.Tracker(rig, model, config=str(tmp_path / "no_config.json"))
+    with pytest.raises(ValueError, match="seed"):
+        pm.Tracker(rig, model, seed=-1)
+    # After all that, it still tracks.
+    assert t.track(left, right).evaluations > 0
