@@ -45,7 +45,8 @@ void bindTracker(py::module_ &m)
 
   py::class_<Tracker>(m, "Tracker",
                       "The photo-model tracker (pm::tracker::PhotoModelTracker): a stereo pair in, the pose of the model in the hand frame out, "
-                      "with its state, confidence, trust and uncertainty. It starts searching from scratch.\n\n"
+                      "with its state, confidence, trust and uncertainty. It starts searching from scratch. One thread at a time per "
+                      "tracker (it releases the GIL while it tracks: other threads run, but must not call the same tracker).\n\n"
                       "    tracker = Tracker(rig, model)\n"
                       "    result = tracker.track(left, right)   # uint8, H x W x 3 BGR or H x W x 4 RGBA\n"
                       "    if result.trusted: act_on(result.pose)")
