@@ -18,6 +18,7 @@
 
 #include "pm/compare/ComparedTracker.h"
 #include "pm/compare/Metrics.h"
+#include "pm/model/AllAroundModelBuilder.h"
 #include "pm/compare/Scenario.h"
 #include "pm/core/StereoRig.h"
 #include "pm/model/PassPlanner.h"
@@ -49,6 +50,7 @@ struct ComparisonParams
   double mbtMeshCellMm = 8;
   bool mbtTrueCad = false;                    //!< ViSP's MBT given the toy's own mesh (the lab knows it; CadMesh.h), decimated the same way
   bool refineOutlines = false;                //!< the all-around model's outlines refined (model::AllAroundParams::refineOutlines)
+  int viewpoints = model::AllAroundParams().viewpoints; //!< the all-around model's viewing directions (model::AllAroundParams::viewpoints)
   model::PassPlan pass;                       //!< the all-around model's pass (its views and rings)
   double viewTurnDeg = 0;                     //!< ours-3d: the stereo model's further pairs (deg; 0: one pair)
   double steadyVariant = 0.25;                //!< ours-steady: the fraction of the budget on steady frames
