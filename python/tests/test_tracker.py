@@ -119,3 +119,25 @@ def test_bad_input_raises_and_never_crashes(rig, model, frames, tmp_path):
         pm.Tracker(rig, model, seed=-1)
     # After all that, it still tracks.
     assert t.track(left, right).evaluations > 0
+
+
+def test_the_hand_motion_moves_the_pose_and_keeps_the_lock(rig, model):
+    """Eye-in-hand: the toy stays, the hand slides 2 mm a frame; told each motion, the tracker follows."""
+    scene = pm.lab.Scene("C12", seed=4)
+    t = pm.Tracker(rig, model)
+    step = np.eye(4)
+    step[0, 3] = -0.002  # the previous hand frame seen from the new one: the hand moved +2 mm along x
+    hMo = np.eye(4)
+    hMo[2, 3] = 0.5
+    poses = []
+    for k in range(40):
+        if k > 0:
+            before = t.pose
+            t.apply_hand_motion(step)
+            np.testing.assert_allclose(t.pose, step @ before, atol=1e-9)  # the pose follows the hand exactly
+            hMo = step @ hMo
+        r = t.track(*scene.render(rig, hMo, k))
+        poses.append(r.pose)
+    assert r.state == "tracking" and r.trusted
+    # From frame 10 on, the estimate moved as the hand did: 29 steps of 2 mm, within 2 mm.
+    np.testing.assert_allclose(poses[39][:3, 3] - poses[10][:3, 3], [-0.058, 0, 0], atol=0.002)
