@@ -12,6 +12,7 @@
 #include <visp3/core/vpException.h>
 
 #include "pm/core/Error.h"
+#include "pm/io/DataDir.h"
 
 #ifndef PM_SOURCE_DATA_DIR
 #define PM_SOURCE_DATA_DIR ""
@@ -87,16 +88,7 @@ int run(CLI::App &app, int argc, char **argv, const std::function<int()> &body, 
   return 1;
 }
 
-std::string dataDir()
-{
-  namespace fs = std::filesystem;
-  if (const char *env = std::getenv("PM_DATA_DIR"); env && *env)
-    return env;
-  for (const char *d : {PM_SOURCE_DATA_DIR, PM_INSTALL_DATA_DIR})
-    if (*d && fs::is_directory(d))
-      return d;
-  return "data";
-}
+std::string dataDir() { return io::dataDir(PM_SOURCE_DATA_DIR, PM_INSTALL_DATA_DIR); }
 
 std::string dataPath(const std::string &relative) { return dataDir() + "/" + relative; }
 

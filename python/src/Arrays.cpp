@@ -54,8 +54,11 @@ py::array_t<std::uint8_t> toArray(const vpImage<vpRGBa> &I)
 vpImage<vpRGBa> toImage(const py::array &a, const char *what)
 {
   vpImage<vpRGBa> view, converted;
-  const vpImage<vpRGBa> &I = imageOf(a, checkImage(a, what), view, converted);
-  return vpImage<vpRGBa>(I); // a copy that owns its pixels
+  const PixelLayout layout = checkImage(a, what);
+  const vpImage<vpRGBa> &I = imageOf(a, layout, view, converted);
+  if (layout == PixelLayout::Bgr)
+    return converted;         // the conversion owns its pixels (moved out)
+  return vpImage<vpRGBa>(I);  // a copy of the array's pixels
 }
 
 py::array_t<double> toArray(const vpHomogeneousMatrix &M)

@@ -1,12 +1,10 @@
 // The Python module visp_photomodel (python/README in docs/tutorial-python.md): the model, the
 // tracker and the servo loop from Python, with NumPy images.
-#include <cstdlib>
-#include <filesystem>
-
 #include <visp3/core/vpException.h>
 
 #include "Bindings.h"
 #include "pm/core/Error.h"
+#include "pm/io/DataDir.h"
 
 PYBIND11_MODULE(visp_photomodel, m)
 {
@@ -28,18 +26,7 @@ PYBIND11_MODULE(visp_photomodel, m)
   });
   m.def(
       "data_path",
-      [](const std::string &relative) {
-        std::string dir = "data";
-        if (const char *env = std::getenv("PM_DATA_DIR"); env && *env)
-          dir = env;
-        else
-          for (const char *d : {PM_SOURCE_DATA_DIR, PM_INSTALL_DATA_DIR})
-            if (*d && std::filesystem::is_directory(d)) {
-              dir = d;
-              break;
-            }
-        return dir + "/" + relative;
-      },
+      [](const std::string &relative) { return pm::io::dataDir(PM_SOURCE_DATA_DIR, PM_INSTALL_DATA_DIR) + "/" + relative; },
       pybind11::arg("relative"),
       "The path of a shipped data file (e.g. 'rig/pa10_stereo.json'), where the programs find it: $PM_DATA_DIR, the source "
       "tree's data/, or the installed share/visp-photomodel/.");
