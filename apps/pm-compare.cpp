@@ -84,6 +84,7 @@ void addOptions(CLI::App &app, Options &o)
   app.add_flag("--refine-outlines", cp.refineOutlines, "the all-around model's outlines to a fraction of a pixel (sub-pixel "
                "silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
   app.add_option("--viewpoints", cp.viewpoints, "the all-around model's viewing directions (K)")->check(CLI::Range(1, 5000));
+  app.add_option("--min-inside-px", cp.minInsidePx, "the all-around model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")->check(CLI::Range(0.0, 50.0));
   app.add_option("--pass-views", cp.pass.views, "the all-around model's pass: hand poses, the rest view included")->check(CLI::Range(6, 200));
   app.add_option("--pass-rings-deg", cp.pass.ringsDeg, "the all-around model's pass: its rings' angles from the rest axis (deg; "
                  "views spread over them in proportion to the angle)")

@@ -124,6 +124,7 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
   app.add_option("--backdrop-hue", o.ap.backdropHueDeg, "all-around: a plain backdrop of this hue (deg) replaces the "
                  "background images (none needed in --views; the lab makes no second pass)")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", o.ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
+  app.add_option("--min-inside-px", o.ap.inMinInsidePx, "all-around: the model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")->check(CLI::Range(0.0, 50.0));
   app.add_flag("--refine-outlines", o.ap.refineOutlines, "all-around: the outlines to a fraction of a pixel (sub-pixel "
                "silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
   app.add_option("--refine-depth-mm", o.ap.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));

@@ -24,6 +24,7 @@
 #include "pm/io/ViewsFolder.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/lab/LabPass.h"
+#include "pm/lab/SimulatedHandEye.h"
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PassLandings.h"
@@ -32,6 +33,7 @@
 #include "pm/precise/PreciseStage.h"
 #include "pm/model/BackgroundSubtraction.h"
 #include "pm/model/Silhouette.h"
+#include "pm/model/EdgeBlur.h"
 #include "pm/model/SubpixelOutline.h"
 #include <opencv2/imgproc.hpp>
 #include "pm/sim/ImageVariation.h"
@@ -236,29 +238,45 @@ TEST(SubpixelOutline, AStraightOutlineIsPlacedFromThePixelsCoverage)
     }
 }
 
+namespace {
+
+//! A disc of radius 40.3 px at (100.37, 97.61) in 200 x 200 images, its pixels' areas mixing its colour and a speckled background's (seed \e seed), the background at 55 % in a ring 6 px wide outside it when \e shadow; its mask where it covers half a pixel.
+struct Disc
+{
+  static constexpr int w = 200, h = 200;
+  static constexpr double cx = 100.37, cy = 97.61, R = 40.3;
+  vpImage<vpRGBa> bg{h, w}, photo{h, w};
+  vpImage<unsigned char> mask{h, w, 0};
+  Disc(unsigned seed, bool shadow)
+  {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> speck(-25, 25);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const double B[3] = {40.0 + speck(rng), 70.0 + speck(rng), 170.0 + speck(rng)}, T[3] = {210, 90, 50};
+        int in = 0;
+        for (int i = 0; i < 16; ++i)
+          for (int j = 0; j < 16; ++j)
+            in += std::hypot(x - 0.5 + (i + 0.5) / 16 - cx, y - 0.5 + (j + 0.5) / 16 - cy) <= R;
+        const double a = in / 256.0, r = std::hypot(x - cx, y - cy), shade = shadow && r > R && r < R + 6 ? 0.55 : 1.0;
+        auto mix = [&](int c) { return static_cast<unsigned char>(std::lround(a * T[c] + (1 - a) * shade * B[c])); };
+        bg[y][x] = vpRGBa(static_cast<unsigned char>(B[0]), static_cast<unsigned char>(B[1]), static_cast<unsigned char>(B[2]));
+        photo[y][x] = vpRGBa(mix(0), mix(1), mix(2));
+        mask[y][x] = a >= 0.5 ? 255 : 0;
+      }
+  }
+};
+
+} // namespace
+
 TEST(SubpixelOutline, ADiscsOutlineToAHundredthOfAPixelAndItsShadowLeftOut)
 {
   // A disc of radius 40.3 px, its pixels' areas mixing its colour and a speckled background's; a cast
   // shadow (the background at 55 %) in a ring outside it. The mask's border lies up to half a pixel off.
-  const int w = 200, h = 200;
-  const double cx = 100.37, cy = 97.61, R = 40.3;
-  std::mt19937 rng(5);
-  std::uniform_int_distribution<int> speck(-25, 25);
-  vpImage<vpRGBa> bg(h, w), photo(h, w);
-  vpImage<unsigned char> mask(h, w, 0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const double B[3] = {40.0 + speck(rng), 70.0 + speck(rng), 170.0 + speck(rng)}, T[3] = {210, 90, 50};
-      int in = 0;
-      for (int i = 0; i < 16; ++i)
-        for (int j = 0; j < 16; ++j)
-          in += std::hypot(x - 0.5 + (i + 0.5) / 16 - cx, y - 0.5 + (j + 0.5) / 16 - cy) <= R;
-      const double a = in / 256.0, r = std::hypot(x - cx, y - cy), shade = r > R && r < R + 6 ? 0.55 : 1.0;
-      auto mix = [&](int c) { return static_cast<unsigned char>(std::lround(a * T[c] + (1 - a) * shade * B[c])); };
-      bg[y][x] = vpRGBa(static_cast<unsigned char>(B[0]), static_cast<unsigned char>(B[1]), static_cast<unsigned char>(B[2]));
-      photo[y][x] = vpRGBa(mix(0), mix(1), mix(2));
-      mask[y][x] = a >= 0.5 ? 255 : 0;
-    }
+  const Disc disc(5, true);
+  const double cx = Disc::cx, cy = Disc::cy, R = Disc::R;
+  const vpImage<vpRGBa> &bg = disc.bg, &photo = disc.photo;
+  const vpImage<unsigned char> &mask = disc.mask;
   const cv::Mat binary = pm::model::hull::signedDistance(mask);
   for (int plain = 0; plain < 2; ++plain) {
     const cv::Mat sd = pm::model::hull::subpixelSignedDistance(mask, photo, plain ? nullptr : &bg);
@@ -277,6 +295,58 @@ TEST(SubpixelOutline, ADiscsOutlineToAHundredthOfAPixelAndItsShadowLeftOut)
   const vpImage<vpRGBa> small(100, 100);
   EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::hull::subpixelSignedDistance(mask, small, nullptr); }).find("one size"), std::string::npos);
   EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::hull::subpixelSignedDistance(mask, photo, &small); }).find("one size"), std::string::npos);
+}
+
+TEST(EdgeBlur, ADiscsOutlineRisesAsItsBlurSays)
+{
+  // A disc whose pixels integrate their area (a sharp camera) on a speckled background, then both
+  // the photo and the background blurred by a Gaussian of sigma: the 25-75 % rise of the target's
+  // share across the outline is 1.349 times the spread of what blurs it: sharp, the pixel's area
+  // and the bilinear reading (a unit box and a unit tent: sigma 0.5 px), blurred, that and the
+  // Gaussian together.
+  const Disc disc(7, false);
+  const vpImage<vpRGBa> &bg = disc.bg, &photo = disc.photo;
+  const vpImage<unsigned char> &mask = disc.mask;
+  for (double sigma : {0.0, 0.6, 1.2}) {
+    const vpImage<vpRGBa> p = pm::lab::defocused(photo, sigma), b = pm::lab::defocused(bg, sigma);
+    const double expected = 1.349 * std::sqrt(0.5 * 0.5 + sigma * sigma);
+    for (int plain = 0; plain < 2; ++plain) {
+      const pm::model::EdgeWidth e = pm::model::edgeWidth(mask, p, plain ? nullptr : &b);
+      std::cout << "sigma " << sigma << (plain ? ", without" : ", with") << " the background image: rise " << e.widthPx << " px over "
+                << e.samples << " points (expected " << expected << ")\n";
+      EXPECT_GT(e.samples, 150u);
+      EXPECT_NEAR(e.widthPx, expected, plain ? 0.12 : 0.08);
+    }
+  }
+  const vpImage<vpRGBa> small(100, 100);
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::edgeWidth(mask, small, nullptr); }).find("one size"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::model::edgeWidth(mask, photo, &small); }).find("one size"), std::string::npos);
+  EXPECT_EQ(pm::model::edgeWidth(vpImage<unsigned char>(Disc::h, Disc::w, 0), photo, &bg).samples, 0u); // no outline: nothing read
+}
+
+TEST(AllAround, ASoftCamerasModelKeepsItsInteriorPointsFartherInside)
+{
+  // The crab's pass seen through a camera that blurs (a Gaussian of 1.2 px on every photo and
+  // background): the builder reads the softer outline and keeps S_in over 3.5 px inside it; the
+  // lab's sharp pass keeps the default 2 px (the model as before).
+  const pm::model::AllAroundBuild &sharp = crab().build;
+  EXPECT_GT(sharp.edgeWidthPx, 0.6);
+  EXPECT_LT(sharp.edgeWidthPx, 0.9);
+  EXPECT_EQ(sharp.minInsidePx, pm::model::AllAroundParams().inMinInsidePx);
+  std::vector<pm::model::PassView> soft = crab().pass.views;
+  for (pm::model::PassView &v : soft)
+    for (vpImage<vpRGBa> *im : {&v.left, &v.right, &v.backgroundLeft, &v.backgroundRight})
+      *im = pm::lab::defocused(*im, 1.2);
+  pm::model::AllAroundParams p;
+  p.passLandings = false;
+  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), soft, p);
+  std::cout << "the outline rises over " << sharp.edgeWidthPx << " px sharp, " << b.edgeWidthPx << " px through the soft camera: S_in "
+            << b.minInsidePx << " px inside\n";
+  EXPECT_GT(b.edgeWidthPx, 1.5);
+  EXPECT_GT(b.minInsidePx, 3.5);
+  p.blurInsideGain = 0; // the user's choice: never
+  p.viewpoints = 12;
+  EXPECT_EQ(pm::model::buildAllAroundModel(rig(), soft, p).minInsidePx, p.inMinInsidePx);
 }
 
 TEST(Silhouette, ASensorsShotNoiseIsNotAChangeOfBackground)

@@ -113,6 +113,7 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
   model::AllAroundParams aa;
   aa.refineOutlines = m_p.refineOutlines;
   aa.viewpoints = m_p.viewpoints;
+  aa.inMinInsidePx = m_p.minInsidePx;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || aaForMbt)
     m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, m_p.pass, "pa10", m_p.distanceMm, aa,
                                                       &m_s->allAroundBuild);

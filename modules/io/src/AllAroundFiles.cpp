@@ -146,6 +146,8 @@ std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vecto
                                {"n_highlight_points", b.nHighlight},
                                {"n_highlight_samples", b.nHighlightSamples},
                                {"shadow_px", b.shadowPx},
+                               {"edge_width_px", b.edgeWidthPx},
+                               {"s_in_min_inside_px", b.minInsidePx},
                                {"background_hue_deg", b.model.backgroundHue},
                                {"distance_mm", b.model.distanceMm},
                                {"build_s", b.buildS}};

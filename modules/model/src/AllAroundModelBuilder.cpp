@@ -16,6 +16,7 @@
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 #include "pm/core/UndistortMap.h"
+#include "pm/model/EdgeBlur.h"
 #include "pm/model/HullMesh.h"
 #include "pm/model/SubpixelOutline.h"
 #include "pm/model/OutlineRefinement.h"
@@ -55,6 +56,9 @@ void AllAroundParams::validate() const
   check(stripWidthPx >= 0 && stripWidthPx <= 100, "strip width must lie in [0, 100] px");
   check(stripRows >= 1 && stripRows <= 10, "strip rows must lie in [1, 10]");
   check(inMinInsidePx >= 0 && inMinInsidePx <= 50, "S_in's distance inside the outline must lie in [0, 50] px");
+  check(blurInsideGain >= 0 && blurInsideGain <= 10, "S_in's distance per pixel of blur must lie in [0, 10]");
+  check(sharpEdgeWidthPx > 0 && sharpEdgeWidthPx <= 5 && blurDeadZonePx >= 0 && blurDeadZonePx <= 5,
+        "a sharp camera's outline width must lie in (0, 5] px and the blur ignored in [0, 5] px");
   check(nContour >= 8 && nContour <= 20000, "outline points per viewpoint must lie in [8, 20000]");
 }
 
@@ -334,7 +338,23 @@ struct PassImages
   std::vector<HullView> cams;                //!< two per view, left then right
   std::vector<vpImage<vpRGBa>> backgrounds;    //!< each camera's background (the photo against a plain backdrop)
   std::vector<std::string> names;              //!< each view's name
+  std::vector<double> edgeWidthsPx;            //!< the first view's outline's rise in each camera where read (EdgeBlur.h)
 };
+
+constexpr std::size_t kMinEdgeSamples = 50; //!< fewer outline points read: the camera's softness is not judged
+
+/*!
+  S_in's distance inside the outline for images whose outline rises over \e widthPx (EdgeBlur.h;
+  <= 0: not read): \e p's, plus blurInsideGain px per pixel of the blur's sigma beyond a sharp
+  camera's, once that is over blurDeadZonePx.
+*/
+double minInsideForBlur(const AllAroundParams &p, double widthPx)
+{
+  if (!(widthPx > p.sharpEdgeWidthPx))
+    return p.inMinInsidePx;
+  const double sigma = std::sqrt(widthPx * widthPx - p.sharpEdgeWidthPx * p.sharpEdgeWidthPx) / 1.349; // 25-75 % of a Gaussian: 1.349 sigma
+  return sigma < p.blurDeadZonePx ? p.inMinInsidePx : p.inMinInsidePx + p.blurInsideGain * sigma;
+}
 
 //! A raw image's signed distance \e dist resampled into the ideal image through \e map (in place); returns the ideal mask (255 where positive).
 vpImage<unsigned char> idealSilhouette(const core::UndistortMap &map, cv::Mat &dist)
@@ -386,6 +406,11 @@ PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassV
         throw core::Error(name + ": the target is cut by the " + std::string(side) +
                     " image's border: every view must see the whole target");
       out.shadowPx += st.shadowPx;
+      if (k == 0) { // how soft the camera's images are, across the first view's outline
+        const EdgeWidth ew = edgeWidth(mask, *ph[c], plain ? nullptr : &rawBack);
+        if (ew.samples >= kMinEdgeSamples)
+          images.edgeWidthsPx.push_back(ew.widthPx);
+      }
       HullView vc;
       vc.cam = core::PinholeCamera::Projection(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height);
       vc.signedDist = p.refineOutlines ? hull::subpixelSignedDistance(mask, *ph[c], plain ? nullptr : &rawBack) : hull::signedDistance(mask);
@@ -668,7 +693,11 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   const Vec3 rest{1e3 * mMh0[0][3], 1e3 * mMh0[1][3], 1e3 * mMh0[2][3]};
   const double D = std::sqrt(dot(rest, rest));
   const std::vector<Vec3> dirs = capDirections(unit(rest), p.capDeg, p.viewpoints);
-  sampleViewpoints(rig, dirs, D, mMh0, mesh, edge, bgHue, p, scratch, out);
+  AllAroundParams ps = p; // S_in kept farther inside a soft camera's outline (EdgeBlur.h)
+  if (!im.edgeWidthsPx.empty())
+    out.edgeWidthPx = std::accumulate(im.edgeWidthsPx.begin(), im.edgeWidthsPx.end(), 0.0) / static_cast<double>(im.edgeWidthsPx.size());
+  ps.inMinInsidePx = out.minInsidePx = minInsideForBlur(p, out.edgeWidthPx);
+  sampleViewpoints(rig, dirs, D, mMh0, mesh, edge, bgHue, ps, scratch, out);
   core::PhotoModel &M = out.model;
   // 8. The colours of the target and around it, for the precise stage's posteriors.
   colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);

@@ -83,6 +83,10 @@ std::string describeAllAroundModel(const model::AllAroundBuild &b, const std::st
       << b.mesh.triangles.size() << " triangles, " << b.cellMm << " mm cells)\n"
       << "  " << b.model.views.size() + 1 << " viewpoints, " << b.model.inner.size() << " S_in and " << b.model.outer.size()
       << " S_out points and " << b.model.contour.size() << " outline points from the first\n";
+  if (b.edgeWidthPx > 0)
+    out << std::setprecision(2) << "  the camera's outline rises over " << b.edgeWidthPx << " px (25-75 %): S_in at least " << b.minInsidePx
+        << " px inside it\n"
+        << std::setprecision(1);
   for (const std::string &s : b.leftOut)
     out << "  left out: " << s << "\n";
   if (!b.model.passLandings.empty()) {

@@ -51,6 +51,7 @@ struct ComparisonParams
   bool mbtTrueCad = false;                    //!< ViSP's MBT given the toy's own mesh (the lab knows it; CadMesh.h), decimated the same way
   bool refineOutlines = false;                //!< the all-around model's outlines refined (model::AllAroundParams::refineOutlines)
   int viewpoints = model::AllAroundParams().viewpoints; //!< the all-around model's viewing directions (model::AllAroundParams::viewpoints)
+  double minInsidePx = model::AllAroundParams().inMinInsidePx; //!< its S_in points this far inside the outline (model::AllAroundParams::inMinInsidePx)
   model::PassPlan pass;                       //!< the all-around model's pass (its views and rings)
   double viewTurnDeg = 0;                     //!< ours-3d: the stereo model's further pairs (deg; 0: one pair)
   double steadyVariant = 0.25;                //!< ours-steady: the fraction of the budget on steady frames

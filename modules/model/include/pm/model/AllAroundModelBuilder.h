@@ -83,7 +83,15 @@ struct AllAroundParams
   int viewpoints = 240;             //!< K, the viewpoints within the cap
   double capDeg = 75;               //!< viewpoints within this of the first view's direction
   int nIn = 400;                    //!< S_in points per viewpoint (fewer where fewer are seen)
-  double inMinInsidePx = 2;         //!< S_in points lie at least this far inside the viewpoint's outline (px)
+  double inMinInsidePx = 2;         //!< S_in points lie at least this far inside the viewpoint's outline (px), a sharp camera's
+  /*!
+    A soft camera's S_in farther inside (docs/model-outline.md, "Blur"): the first view's outline read
+    (EdgeBlur.h), the blur's sigma beyond a sharp camera's (\e sharpEdgeWidthPx, what the lab's
+    renders give) adds this many px per px once over \e blurDeadZonePx; 0: never.
+  */
+  double blurInsideGain = 2;
+  double sharpEdgeWidthPx = 0.75;   //!< a sharp camera's 25-75 % rise across the outline (px; the lab's renders 0.70-0.78)
+  double blurDeadZonePx = 0.5;      //!< a blur's sigma under this beyond a sharp camera's is not counted (px)
   double edgeShare = 0;             //!< of them at most this share on hue edges (a hue over 30 deg away within 3 mm; measured: README)
   int nOut = 160;                   //!< S_out points per viewpoint
   double stripGapPx = 5;            //!< S_out: the first row this far outside the outline (px; the hull's exact one, HullMesh.h)
@@ -144,6 +152,8 @@ struct AllAroundBuild
   int nHighlight = 0;               //!< surface points marked (views disagree)
   int nHighlightSamples = 0;        //!< colour samples left out as highlights
   long shadowPx = 0;                //!< changed pixels taken for shadow over all silhouettes
+  double edgeWidthPx = 0;           //!< the first view's outline's 25-75 % rise, mean of its cameras (px; 0: not read; EdgeBlur.h)
+  double minInsidePx = 0;           //!< S_in's distance inside the outline used (AllAroundParams::inMinInsidePx, raised for blur)
   double buildS = 0;                //!< wall time of the build (s)
 };
 
