@@ -1,32 +1,19 @@
 #include "pm/model/EdgeBlur.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
 
 #include "pm/core/Error.h"
+#include "pm/model/BilinearColour.h"
 
 namespace pm::model {
 
 namespace {
 
-//! \e im's colour at (\e x, \e y), bilinear; false off the image.
-bool colourAt(const vpImage<vpRGBa> &im, double x, double y, double out[3])
-{
-  const int w = static_cast<int>(im.getWidth()), h = static_cast<int>(im.getHeight());
-  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-  if (x0 < 0 || y0 < 0 || x0 + 1 >= w || y0 + 1 >= h)
-    return false;
-  const double fx = x - x0, fy = y - y0;
-  const vpRGBa &a = im[y0][x0], &b = im[y0][x0 + 1], &c = im[y0 + 1][x0], &d = im[y0 + 1][x0 + 1];
-  const double ca[3] = {double(a.R), double(a.G), double(a.B)}, cb[3] = {double(b.R), double(b.G), double(b.B)};
-  const double cc[3] = {double(c.R), double(c.G), double(c.B)}, cd[3] = {double(d.R), double(d.G), double(d.B)};
-  for (int k = 0; k < 3; ++k)
-    out[k] = (1 - fy) * ((1 - fx) * ca[k] + fx * cb[k]) + fy * ((1 - fx) * cc[k] + fx * cd[k]);
-  return true;
-}
 
 //! Where \e share first rises through \e level from index 0 (fractional index); -1 when it does not.
 double crossing(const std::vector<double> &share, double level)
@@ -43,19 +30,19 @@ constexpr double kStepPx = 0.125;
 //! The 25-75 % rise at border point (\e x, \e y) with inward normal (\e nx, \e ny); < 0 when not read.
 double riseAt(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> *background, double x, double y, double nx, double ny, double minContrast)
 {
-  double target[3], outside[3];
-  if (!colourAt(photo, x + kReachPx * nx, y + kReachPx * ny, target) || !colourAt(photo, x - kReachPx * nx, y - kReachPx * ny, outside))
-    return -1;
+  // Both ends on the image (each with a pixel to its right and below), so is every reading between.
+  const double w = photo.getWidth(), h = photo.getHeight();
+  for (double s : {-kReachPx, kReachPx}) {
+    const double u = x + s * nx, v = y + s * ny;
+    if (!(u >= 0 && v >= 0 && u < w - 1 && v < h - 1))
+      return -1;
+  }
+  const std::array<double, 3> target = bilinearColour(photo, x + kReachPx * nx, y + kReachPx * ny),
+                              outside = bilinearColour(photo, x - kReachPx * nx, y - kReachPx * ny);
   std::vector<double> share;
   for (double t = -kReachPx; t <= kReachPx + 1e-9; t += kStepPx) {
-    double c[3], b[3];
-    if (!colourAt(photo, x + t * nx, y + t * ny, c))
-      return -1;
-    if (background) {
-      if (!colourAt(*background, x + t * nx, y + t * ny, b))
-        return -1;
-    } else
-      std::copy(outside, outside + 3, b);
+    const std::array<double, 3> c = bilinearColour(photo, x + t * nx, y + t * ny);
+    const std::array<double, 3> b = background ? bilinearColour(*background, x + t * nx, y + t * ny) : outside;
     double d[3], n2 = 0, dot = 0;
     for (int k = 0; k < 3; ++k) {
       d[k] = target[k] - b[k];

@@ -1,4 +1,5 @@
 #include "pm/model/SubpixelOutline.h"
+#include "pm/model/BilinearColour.h"
 
 #include <algorithm>
 #include <array>
@@ -14,19 +15,7 @@ namespace {
 
 using Rgb = std::array<double, 3>;
 
-//! The colour at (\e u, \e v), bilinear, the image's border repeated.
-Rgb colourAt(const vpImage<vpRGBa> &im, double u, double v)
-{
-  const int w = static_cast<int>(im.getWidth()), h = static_cast<int>(im.getHeight());
-  u = std::clamp(u, 0.0, w - 1.0), v = std::clamp(v, 0.0, h - 1.0);
-  const int x = std::min(static_cast<int>(u), w - 2), y = std::min(static_cast<int>(v), h - 2);
-  const double fu = u - x, fv = v - y;
-  const vpRGBa &a = im[y][x], &b = im[y][x + 1], &c = im[y + 1][x], &d = im[y + 1][x + 1];
-  auto mix = [&](double pa, double pb, double pc, double pd) {
-    return (1 - fv) * ((1 - fu) * pa + fu * pb) + fv * ((1 - fu) * pc + fu * pd);
-  };
-  return {mix(a.R, b.R, c.R, d.R), mix(a.G, b.G, c.G, d.G), mix(a.B, b.B, c.B, d.B)};
-}
+Rgb colourAt(const vpImage<vpRGBa> &im, double u, double v) { return bilinearColour(im, u, v); }
 
 double dot3(const Rgb &a, const Rgb &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Rgb minus3(const Rgb &a, const Rgb &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
