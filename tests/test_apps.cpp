@@ -42,7 +42,7 @@ void expectOneLineError(const pm::test::RunResult &r, const std::string &fragmen
 TEST(Apps, HelpExitsZeroAndShowsDefaults)
 {
   for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
-                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-uncertainty", "pm-bench"}) {
+                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-uncertainty", "pm-export-scene", "pm-bench"}) {
     const auto r = runProgram(p, "--help");
     EXPECT_EQ(r.status, 0) << p;
     EXPECT_NE(r.out.find(std::string(p) == "pm-bench" ? "benchmark" : "--out"), std::string::npos) << p;
@@ -68,7 +68,7 @@ TEST(Apps, EveryProgramSpeaksTheSameVocabulary)
                                       "--output", "--out-dir", "--model-file", "--rig-file", "--random-seed", "--silent"};
   int withImages = 0, withRig = 0;
   for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
-                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-uncertainty"}) {
+                        "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-uncertainty", "pm-export-scene"}) {
     const auto r = runProgram(p, "--help");
     ASSERT_EQ(r.status, 0) << p;
     const std::set<std::string> o = options(r.out);
@@ -188,6 +188,8 @@ TEST(Apps, BadInputsAreOneLineErrorsAndLeaveNothing)
   expectOneLineError(runProgram("pm-render", "--target C01 --rig " + d.file("rig/rig.json") + out), "focal");
   expectOneLineError(runProgram("pm-render", "--target C99" + out), "C99");
   expectOneLineError(runProgram("pm-render", "--pose 0,0,500,0.9,0.9,0" + out), "|eps| <= 1");
+  expectOneLineError(runProgram("pm-export-scene", "--target C99" + out), "C99");
+  expectOneLineError(runProgram("pm-export-scene", "--target C01 --backdrop marble" + out), "marble");
 
   // Nothing was written by the failed runs, not even partial files.
   EXPECT_TRUE(pm::test::listFiles(d.file("out")).empty());

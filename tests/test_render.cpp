@@ -13,6 +13,7 @@
 #include "pm/core/Pose.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
+#include "pm/sim/MeshOutlineCut.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/sim/Clutter.h"
 #include "pm/sim/Scene.h"
@@ -786,4 +787,45 @@ TEST(Scene, BadParametersAreRefused)
   p = pm::sim::SceneParams();
   p.exposure = 0;
   EXPECT_THROW(p.validate(), pm::core::Error);
+}
+
+// The toy's mesh cut along its outline for another renderer: a triangle's part where its linear mask
+// is <= 0 and nothing else, so the cut mesh covers exactly the region the rasterizer keeps.
+TEST(MeshOutlineCut, KeepsExactlyTheRegionInsideTheMask)
+{
+  // A flat 40 x 40 mm grid of 1 mm cells, masked by the distance to a circle of radius 15 mm.
+  pm::sim::Mesh grid;
+  grid.useMask = true;
+  const int n = 41;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const float x = static_cast<float>(i - 20), y = static_cast<float>(j - 20);
+      pm::sim::MeshVertex v{x * 1e-3f, y * 1e-3f, 0, 0, 0, -1, x, y, std::sqrt(x * x + y * y) - 15.f};
+      grid.vertices.push_back(v);
+    }
+  for (std::uint32_t j = 0; j + 1 < n; ++j)
+    for (std::uint32_t i = 0; i + 1 < n; ++i) {
+      const std::uint32_t a = j * n + i, b = a + 1, c = a + n + 1, d = a + n;
+      grid.triangles.push_back({a, b, c});
+      grid.triangles.push_back({a, c, d});
+    }
+  const pm::sim::Mesh cut = pm::sim::cutAlongOutline(grid);
+  EXPECT_FALSE(cut.useMask);
+  double area = 0, maxRadius = 0;
+  for (const auto &t : cut.triangles) {
+    const auto &a = cut.vertices[t[0]], &b = cut.vertices[t[1]], &c = cut.vertices[t[2]];
+    area += 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)) * 1e6; // mm^2
+    for (const auto *v : {&a, &b, &c}) {
+      EXPECT_LE(v->mask, 0.f);
+      maxRadius = std::max(maxRadius, std::hypot(v->x, v->y) * 1e3);
+    }
+  }
+  // The linear mask's zero line is a polygon inscribed in the circle, within 0.02 mm of it on 1 mm cells.
+  EXPECT_LE(maxRadius, 15.0 + 1e-4);
+  EXPECT_NEAR(area, M_PI * 15 * 15, 0.01 * M_PI * 15 * 15);
+  EXPECT_GT(area, 0.99 * M_PI * 15 * 15);
+  // A mesh without a mask comes back as it is.
+  pm::sim::Mesh plain = grid;
+  plain.useMask = false;
+  EXPECT_EQ(pm::sim::cutAlongOutline(plain).triangles.size(), grid.triangles.size());
 }
