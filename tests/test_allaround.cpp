@@ -352,8 +352,10 @@ TEST(AllAround, ASoftCamerasModelKeepsItsInteriorPointsFartherInside)
 TEST(Silhouette, ASensorsShotNoiseIsNotAChangeOfBackground)
 {
   // A sensor whose noise grows with the signal (ImageVariation's shot-noise preset, 0.6 sqrt(level))
-  // flags a third of the sea bottom's pixels one by one; the crab's silhouette in its pass's view 01
-  // is still found, as exact as without the noise, and a background of another view is still refused.
+  // flags some of the sea bottom's pixels one by one (the test of the shadow's line tolerates 10 grey
+  // levels: under a seventh of the border's pixels, where a chromaticity test flagged over a quarter);
+  // the crab's silhouette in its pass's view 01 is still found, as exact as without the noise, and a
+  // background of another view is still refused.
   const pm::model::PassView &view = crab().pass.views[1];
   pm::sim::ImageVariation noise;
   noise.shotNoise = 0.6;
@@ -365,7 +367,8 @@ TEST(Silhouette, ASensorsShotNoiseIsNotAChangeOfBackground)
   long rawBorder = 0;
   for (int u = 0; u < raw.cols; ++u)
     rawBorder += raw.at<unsigned char>(raw.rows - 1, u) != 0;
-  EXPECT_GT(rawBorder, raw.cols / 4) << "the noise flags the border's pixels one by one";
+  EXPECT_GT(rawBorder, 0) << "the noise flags some of the border's pixels one by one";
+  EXPECT_LT(rawBorder, raw.cols / 7) << "but under a seventh of them";
   const vpImage<unsigned char> clean = pm::model::silhouette(view.right, view.backgroundRight, pm::model::SilhouetteParams());
   pm::model::SilhouetteStats st;
   const vpImage<unsigned char> noisy = pm::model::silhouette(photo, bg, pm::model::SilhouetteParams(), &st, "view 01 (right)");
@@ -769,6 +772,6 @@ TEST(SubpixelOutline, TheRenderersToysOutlinesWithinATenthOfAPixel)
     std::cout << code << ": the outline " << mean << " px outside the toy's, " << rms << " px rms (the mask's " << meanMask << ")\n";
     EXPECT_LT(std::fabs(mean), 0.1) << code;
     EXPECT_LT(rms, 0.2) << code;
-    EXPECT_GT(meanMask, 0.25) << code;
+    EXPECT_LT(std::fabs(mean), 0.5 * meanMask) << code; // the mask's last pixels lie outside by a fraction of a pixel; the outline does not
   }
 }

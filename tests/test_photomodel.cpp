@@ -11,7 +11,9 @@
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 #include "pm/core/ViewpointIndex.h"
+#include "pm/model/BackgroundSubtraction.h"
 #include "pm/model/PhotoModelBuilder.h"
+#include "pm/model/Silhouette.h"
 #include "pm/model/StereoPhotoModelBuilder.h"
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
@@ -357,7 +359,7 @@ TEST(StereoPhotoModel, FileVersionsTwoAndThreeKeepDepthAndViewsAndAFlatModelStay
   const std::string flat = pm::io::photoModelToJson(pm::model::buildPhotoModel(d.bg, d.tg, kCam, 500).model);
   EXPECT_NE(flat.find("\"version\":1"), std::string::npos);
   EXPECT_EQ(flat.find("origin_in_hand_mm"), std::string::npos);
-  // Refused with pm::core::Error: a version 6; a version 3 file called version 4 (no shared surface);
+  // Refused with pm::core::Error: a version 7; a version 3 file called version 4 (no shared surface);
   // a version 3 without views or without a view's camera; a version 2 file with points of five numbers.
   const std::string v3 = pm::test::readText(dir.file("m.json"));
   auto refused = [&](std::string text, const std::string &from, const std::string &to) {
@@ -369,7 +371,7 @@ TEST(StereoPhotoModel, FileVersionsTwoAndThreeKeepDepthAndViewsAndAFlatModelStay
     pm::test::writeText(dir.file("bad.json"), text);
     return pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad.json")); });
   };
-  EXPECT_NE(refused(v3, "\"version\":3", "\"version\":6").find("version"), std::string::npos);
+  EXPECT_NE(refused(v3, "\"version\":3", "\"version\":7").find("version"), std::string::npos);
   EXPECT_NE(refused(v3, "\"version\":3", "\"version\":4").find("surface"), std::string::npos);
   EXPECT_NE(refused(v3, "\"views\":[", "\"viewz\":[").find("views"), std::string::npos);
   EXPECT_NE(refused(v3, "\"camera_mm\":[", "\"camera_mm\":[0,0,0],\"unused\":[").find("camera"), std::string::npos);
@@ -547,4 +549,61 @@ TEST(ViewpointIndex, IsTheModelsOwnViewsInOrder)
   EXPECT_EQ(index.nearest(front), 0u);
   EXPECT_EQ(index.nearest(behind), 1u);
   EXPECT_NEAR(index.direction(1)[2], 1.0, 1e-12);
+}
+
+// The one background subtraction under a soft light: the umbra where a toy rests and its penumbra
+// keep the backdrop's colour, however dark, and stay background; the toy's own colour stays the
+// toy however dark its shaded side; black (under darkRatio of the backdrop) is the toy.
+TEST(BackgroundSubtraction, ASoftLightsUmbraStaysBackgroundAndAnotherColourHoweverDarkIsTheTarget)
+{
+  // A strip of columns in the middle rows of a 160 x 60 image, the rest the backdrop as it was.
+  const unsigned w = 160, h = 60, top = 20, rows = 20, left = 20;
+  vpImage<vpRGBa> bg(h, w), photo(h, w);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0, 2.0);
+  auto px = [&](double r, double g, double b) {
+    auto c = [&](double v) { return static_cast<unsigned char>(std::clamp(std::lround(v + noise(rng)), 0L, 255L)); };
+    return vpRGBa(c(r), c(g), c(b), 255);
+  };
+  const double B[3] = {40, 90, 140}; // the sea bottom's blue
+  // Columns: 0-19 the umbra (12 % of the light), 20-59 a penumbra from 12 to 100 %, 60-79 a penumbra tinted by
+  // light bounced off a red toy, 80-99 the red toy's shaded side, 100-109 black, 110-119 a grey part of the toy.
+  for (unsigned v = 0; v < h; ++v)
+    for (unsigned x = 0; x < w; ++x) {
+      bg[v][x] = px(B[0], B[1], B[2]);
+      if (v < top || v >= top + rows || x < left || x >= left + 120) {
+        photo[v][x] = px(B[0], B[1], B[2]);
+        continue;
+      }
+      const unsigned u = x - left;
+      double k = 1;
+      if (u < 20)
+        k = 0.12;
+      else if (u < 60)
+        k = 0.12 + 0.88 * (u - 20) / 40.0;
+      photo[v][x] = u < 60    ? px(k * B[0], k * B[1], k * B[2])
+                    : u < 80  ? px(0.5 * B[0] + 9, 0.5 * B[1], 0.5 * B[2])
+                    : u < 100 ? px(38, 7, 6)
+                    : u < 110 ? px(2, 2, 2)
+                              : px(90, 90, 90);
+    }
+  // The raw subtraction on the toy's columns; the silhouette (its specks of noise cleaned) on the backdrop's.
+  pm::model::SilhouetteStats st;
+  const vpImage<unsigned char> sil = pm::model::silhouette(photo, bg, pm::model::SilhouetteParams(), &st);
+  const cv::Mat m = pm::model::subtractBackground(photo, bg, pm::model::BackgroundParams());
+  auto share = [&](unsigned u0, unsigned u1, bool cleaned) {
+    int n = 0;
+    for (unsigned v = top; v < top + rows; ++v)
+      for (unsigned u = left + u0; u < left + u1; ++u)
+        n += cleaned ? sil[v][u] != 0 : m.at<unsigned char>(static_cast<int>(v), static_cast<int>(u)) != 0;
+    return static_cast<double>(n) / (rows * (u1 - u0));
+  };
+  EXPECT_EQ(share(0, 20, true), 0.0);    // the umbra
+  EXPECT_EQ(share(20, 60, true), 0.0);   // the penumbra
+  EXPECT_EQ(share(60, 78, true), 0.0);   // the penumbra tinted by the toy (the cleaning's closing may reach 2 px)
+  EXPECT_LE(share(0, 80, false), 0.02);  // before the cleaning, specks of noise at most
+  EXPECT_EQ(share(80, 100, false), 1.0); // the toy's dark side
+  EXPECT_EQ(share(100, 110, false), 1.0); // black
+  EXPECT_EQ(share(110, 120, false), 1.0); // grey
+  EXPECT_GT(st.shadowPx, 20 * static_cast<int>(rows)); // the darkened backdrop counted as shadow
 }

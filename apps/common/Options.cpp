@@ -16,9 +16,9 @@ void addModelOptions(CLI::App &app, model::PhotoModelParams &p)
   app.add_option("--strip-width-px", p.stripWidthPx, "width of the S_out strip beyond its first row (px)")
       ->check(CLI::Range(0.0, 200.0))->group(g);
   app.add_option("--strip-rows", p.stripRows, "rows of points across the S_out strip")->check(CLI::Range(1, 20))->group(g);
-  app.add_option("--region-chroma-tol", p.background.chromaTol, "chromaticity change that marks a target pixel (each of r, g "
-                 "over r + g + b; the model builders' one background subtraction)")
-      ->check(CLI::Range(0.001, 0.999))->group(g);
+  app.add_option("--region-colour-tol", p.background.colourTolGrey, "grey levels off the background's own colour (as a shadow "
+                 "dims it) that mark a target pixel (the model builders' one background subtraction)")
+      ->check(CLI::Range(0.5, 254.0))->group(g);
   app.add_option("--min-saturation", p.minSaturation, "photo pixels less saturated carry no hue")->check(CLI::Range(0.0, 0.99))->group(g);
 }
 

@@ -14,13 +14,14 @@ void BackgroundParams::validate() const
     if (!ok)
       throw core::Error(std::string("background subtraction parameter ") + what);
   };
-  check(chromaTol > 0 && chromaTol < 1, "chroma tolerance must lie in (0, 1)");
-  check(darkRatio > 0 && darkRatio < 1, "dark ratio must lie in (0, 1)");
+  check(colourTolGrey > 0 && colourTolGrey < 255, "colour tolerance must lie in (0, 255) grey levels");
+  check(colourTolShare >= 0 && colourTolShare < 1, "colour tolerance's share must lie in [0, 1)");
+  check(darkRatio >= 0 && darkRatio < 1, "dark ratio must lie in [0, 1)");
   check(brightRatio > 1 && brightRatio < 10, "bright ratio must lie in (1, 10)");
-  check(minBrightness >= 0 && minBrightness < 255, "minimum brightness must lie in [0, 255)");
 }
 
-cv::Mat subtractBackground(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &background, const BackgroundParams &p, int *shadowPx)
+cv::Mat subtractBackground(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &background, const BackgroundParams &p, int *shadowPx,
+                           cv::Mat *changed)
 {
   const int h = static_cast<int>(photo.getHeight()), w = static_cast<int>(photo.getWidth());
   // Both images as float RGBA, not smoothed: a blur widens the silhouette by a pixel all around (on R2 a
@@ -30,30 +31,34 @@ cv::Mat subtractBackground(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &
   a.convertTo(af, CV_32FC4);
   b.convertTo(bf, CV_32FC4);
   cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  if (changed)
+    *changed = cv::Mat(h, w, CV_8U, cv::Scalar(0));
   int shadow = 0;
   for (int v = 0; v < h; ++v) {
     const cv::Vec4f *pa = af.ptr<cv::Vec4f>(v), *pb = bf.ptr<cv::Vec4f>(v);
     unsigned char *m = mask.ptr<unsigned char>(v);
+    unsigned char *c = changed ? changed->ptr<unsigned char>(v) : nullptr;
     for (int u = 0; u < w; ++u) {
       // vpRGBa is R, G, B, A in memory.
       const float sa = pa[u][0] + pa[u][1] + pa[u][2], sb = pb[u][0] + pb[u][1] + pb[u][2];
       const double ratio = (sa + 3.0) / (sb + 3.0);
       bool target = ratio < p.darkRatio || ratio > p.brightRatio;
-      bool changed = target;
-      // Chromaticity where the background has some light: a dark photo pixel's is noisier (its
-      // tolerance grows as its brightness falls), but a dark target on a lit backdrop (dark hair on
-      // blue) differs in it where a shadow does not (R2: 33 missed pixels of hair to 0).
-      if (!target && sb > 3 * p.minBrightness && sa > 24) {
-        const double dr = pa[u][0] / sa - pb[u][0] / sb, dg = pa[u][1] / sa - pb[u][1] / sb;
-        const double tol = p.chromaTol * std::max(1.0, 3 * p.minBrightness / sa);
-        target = std::max(std::fabs(dr), std::fabs(dg)) > tol;
+      if (!target) {
+        // The background's colour dimmed by a shadow lies on the line a * B (0 <= a <= 1): the photo's
+        // distance from that line, in grey levels, against the sensor's noise and a share of the light.
+        const double bb = pb[u][0] * pb[u][0] + pb[u][1] * pb[u][1] + pb[u][2] * pb[u][2];
+        const double pb_ = pa[u][0] * pb[u][0] + pa[u][1] * pb[u][1] + pa[u][2] * pb[u][2];
+        const double dim = bb > 0 ? std::clamp(pb_ / bb, 0.0, 1.0) : 0.0;
+        const double dr = pa[u][0] - dim * pb[u][0], dg = pa[u][1] - dim * pb[u][1], db = pa[u][2] - dim * pb[u][2];
+        const double tol = p.colourTolGrey + p.colourTolShare * dim * std::sqrt(bb);
+        target = dr * dr + dg * dg + db * db > tol * tol;
       }
-      if (!target && ratio < 1.0 / p.brightRatio)
-        changed = true; // darker with the same chromaticity: a shadow
+      const bool dimmed = !target && ratio < 1.0 / p.brightRatio; // darker along the background's own colour: a shadow
       if (target)
         m[u] = 255;
-      else if (changed)
-        ++shadow;
+      shadow += dimmed;
+      if (c && (target || dimmed))
+        c[u] = 255;
     }
   }
   if (shadowPx)

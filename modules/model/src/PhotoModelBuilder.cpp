@@ -106,9 +106,9 @@ PhotoModelBuild buildPhotoModel(const vpImage<vpRGBa> &background, const vpImage
   const cv::Mat region = regionMask(background, withTarget, params);
   const cv::Moments mo = cv::moments(region, true);
   if (mo.m00 < 1)
-    throw core::Error("photo-model: no pixel of the target photo differs in colour from the background photo (chromaticity by "
-                "more than " + std::to_string(params.background.chromaTol) + ", or brightness): S_in would be empty (is the "
-                "target in the photo, and of another colour than the background?)");
+    throw core::Error("photo-model: no pixel of the target photo differs in colour from the background photo (by more than " +
+                      std::to_string(params.background.colourTolGrey) + " grey levels off the background's own colour, or in "
+                      "brightness): S_in would be empty (is the target in the photo, and of another colour than the background?)");
   m.centroidU = mo.m10 / mo.m00;
   m.centroidV = mo.m01 / mo.m00;
   const double sx = distanceMm / m.px, sy = distanceMm / m.py;

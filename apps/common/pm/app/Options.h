@@ -16,7 +16,7 @@
 
 namespace pm::app {
 
-//! --step-px, --strip-gap-px, --strip-width-px, --strip-rows, --region-chroma-tol, --min-saturation
+//! --step-px, --strip-gap-px, --strip-width-px, --strip-rows, --region-colour-tol, --min-saturation
 void addModelOptions(CLI::App &app, model::PhotoModelParams &p);
 //! --noise, --exposure, --occluder, --supersampling, --seed
 void addSceneOptions(CLI::App &app, sim::SceneParams &p);

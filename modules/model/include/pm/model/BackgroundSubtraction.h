@@ -5,12 +5,16 @@
   same view with the target removed. The all-around model's silhouettes (Silhouette.h) and the flat
   and stereo models' target regions (PhotoModelBuilder.h) both start from it, each cleaning it its own way.
 
-  A pixel differs when its chromaticity (r, g, b divided by their sum) moved by more than
-  \e chromaTol, or its brightness changed by a ratio outside [\e darkRatio, \e brightRatio]. A cast
-  shadow dims the backdrop and keeps its chromaticity: a pixel darker than the background by a
-  ratio in [\e darkRatio, 1) with its chromaticity kept is shadow, not target. White and grey
-  parts of a target differ from a coloured backdrop in chromaticity, and from a grey one in
-  brightness upward (a shadow never brightens).
+  A cast shadow dims the backdrop along its own colour: the photo's pixel P lies near the line a B
+  (0 <= a <= 1) through the background's pixel B. A pixel is the target when it lies farther from that
+  line than the sensor's noise and a share of the light allow (colourTolGrey + colourTolShare |a B|:
+  another colour, however dark), when it is brighter than the background by more than brightRatio (no
+  shadow brightens), or darker than darkRatio of it (black, not a shadow: a soft light's umbra keeps
+  more). A shadow's penumbra, and the umbra where the toy rests, keep the backdrop's colour and stay
+  background, however dark (a chromaticity test reads a dark pixel's noise as colour, and took an area
+  light's umbra for the target: on a second renderer's crab, 13 % of its area added). What this cannot
+  tell: a part of the target of the backdrop's own colour, darker than it, reads as shadow (a hue
+  method cannot use such a part either).
 
   \code
     int shadow = 0;
@@ -27,10 +31,10 @@ namespace pm::model {
 //! The per-pixel test of subtractBackground() (see the file's description); validate() checks it.
 struct BackgroundParams
 {
-  double chromaTol = 0.035;   //!< chromaticity change (each of r, g over r + g + b) that marks the target
-  double darkRatio = 0.35;    //!< darker than this ratio of the background: the target (a shadow keeps more light)
+  double colourTolGrey = 10;  //!< a photo pixel farther than this from the background's shadow line is the target (grey levels: the noise)
+  double colourTolShare = 0.06; //!< ... plus this share of the dimmed background's length (light bounced off the toy tints its shadow)
+  double darkRatio = 0.08;    //!< darker than this ratio of the background: the target (black; a soft light's umbra keeps more)
   double brightRatio = 1.12;  //!< brighter than this ratio: the target (no shadow brightens)
-  double minBrightness = 30;  //!< a background darker than this (mean of r, g, b) has no chromaticity to compare: brightness alone decides
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
@@ -38,10 +42,12 @@ struct BackgroundParams
 
 /*!
   CV_8U, 255 where \e photo differs from \e background as the target does, 0 elsewhere (no cleaning);
-  \e shadowPx (when given): the pixels that changed but were taken for shadow. The images must be
-  of the same size (the caller checks, naming them).
+  \e shadowPx (when given): the pixels that changed but were taken for shadow (darker than
+  1 / brightRatio of the background along its colour); \e changed (when given): CV_8U, 255 where the
+  photo is the target or such a shadow (a background of another view changes most of the image's
+  border, mostly in brightness). The images must be of the same size (the caller checks, naming them).
 */
 cv::Mat subtractBackground(const vpImage<vpRGBa> &photo, const vpImage<vpRGBa> &background, const BackgroundParams &params,
-                           int *shadowPx = nullptr);
+                           int *shadowPx = nullptr, cv::Mat *changed = nullptr);
 
 } // namespace pm::model
