@@ -23,7 +23,12 @@
 #include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/io/StagedFiles.h"
+#include "pm/io/ViewsFolder.h"
 #include "pm/lab/LabSequence.h"
+#include "pm/lab/RenderedScene.h"
+#include "pm/lab/SilhouetteTruth.h"
+#include "pm/lab/SurfaceTruth.h"
+#include "pm/model/AllAroundModelBuilder.h"
 #include "pm/lab/RunFigures.h"
 #include "pm/lab/TrackingReport.h"
 #include "pm/tracker/TrackerConfigFile.h"
@@ -44,11 +49,14 @@ struct Options
   int firstFrame = 0, steps = 0;
   bool quiet = false, display = false, savePairs = false;
   std::string leftSource, rightSource;
+  std::string sceneDir;   //!< a scene rendered elsewhere (pm-export-scene, scripts/cycles)
+  bool scenePeer = false; //!< ... through our own renderer instead (its lab_views/, lab_sequence/)
   pm::capture::VideoCaptureParams vcp;
   pm::app::LabModelChoice labModel;
   pm::sim::SceneParams sp;
   bool live() const { return !leftSource.empty(); }
   bool recorded() const { return !leftImages.empty() || live(); }
+  bool scene() const { return !sceneDir.empty(); }
   long maxFrames() const { return durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0; }
 };
 
@@ -81,7 +89,12 @@ void addOptions(CLI::App &app, Options &o)
   optR->needs(optL);
   optT->needs(optL);
   app.add_option("--first-frame", o.firstFrame, "recorded sequence: index of the first frame")->check(CLI::Range(0, 100000000));
-  app.add_option("--rig", o.rigPath, "stereo rig file");
+  auto *optRig = app.add_option("--rig", o.rigPath, "stereo rig file");
+  auto *optScene = app.add_option("--scene", o.sceneDir, "a scene rendered by another renderer (pm-export-scene, then "
+                                  "scripts/cycles/render.py): the model is built from its pass (views/), as pm-make-model --views "
+                                  "builds it, and its sequence is tracked against its truth");
+  app.add_flag("--peer", o.scenePeer, "with --scene: the same scene through our own renderer (lab_views/, lab_sequence/)")->needs(optScene);
+  optScene->excludes(optTarget)->excludes(optL)->excludes(optLS)->excludes(optM)->excludes(optRig);
   pm::app::addLabModelOptions(app, o.labModel);
   pm::app::addModelOptions(app, o.labModel.photo);
   pm::app::addSceneOptions(app, o.sp);
@@ -124,6 +137,31 @@ Input openRecordedOrLive(const Options &o, const pm::core::StereoRig &rig)
   else
     in.frames = o.maxFrames();
   in.description = in.source->describe();
+  return in;
+}
+
+//! A scene rendered elsewhere: the model from its pass, its sequence, its truth in the model's frame.
+Input openScene(const Options &o, const pm::core::StereoRig &rig)
+{
+  const pm::lab::RenderedScene scene = pm::lab::openRenderedScene(o.sceneDir, o.scenePeer);
+  const pm::model::AllAroundParams &ap = o.labModel.allAroundParams;
+  const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(scene.viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
+  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, ap);
+  if (!o.quiet) { // the model against the toy it was made of (the renderer's truth)
+    const pm::sim::Scene toy(pm::sim::makeTarget(scene.target));
+    std::cout << "model of " << scene.description << " against the toy:\n"
+              << pm::lab::checkSilhouettes(toy, pass, scene.fMo, b, rig).text
+              << pm::lab::checkSurface(toy, b, scene.fMo.inverse() * b.fMm, rig.left.cam).text << std::flush;
+  }
+  Input in;
+  in.model = b.model;
+  const std::vector<pm::core::Phi> truth = scene.truthInModelFrame(b.fMm);
+  for (std::size_t k = 0; k < truth.size(); ++k)
+    in.truthByFrame[static_cast<long>(k)] = truth[k];
+  in.source = std::make_unique<pm::capture::ImageSequenceSource>(scene.leftPattern, scene.rightPattern, 0, o.fps, rig.left.width,
+                                                                 rig.left.height, o.maxFrames());
+  in.frames = static_cast<const pm::capture::ImageSequenceSource &>(*in.source).length();
+  in.description = scene.description;
   return in;
 }
 
@@ -276,12 +314,12 @@ int main(int argc, char **argv)
 
   return pm::app::run(app, argc, argv, [&] {
     const pm::tracker::TrackerParams tp = trackerOptions.resolve();
-    const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
+    const pm::core::StereoRig rig = pm::io::loadRig(o.scene() ? pm::lab::openRenderedScene(o.sceneDir, o.scenePeer).rigPath : o.rigPath);
     if (pm::app::isImagePattern(o.leftImages)) // check both patterns before anything else
       pm::app::frameFileName(o.leftImages.front(), 0);
     if (pm::app::isImagePattern(o.rightImages))
       pm::app::frameFileName(o.rightImages.front(), 0);
-    Input in = o.recorded() ? openRecordedOrLive(o, rig) : openSimulated(o, rig);
+    Input in = o.scene() ? openScene(o, rig) : o.recorded() ? openRecordedOrLive(o, rig) : openSimulated(o, rig);
     pm::tracker::PhotoModelTracker tracker(rig, in.model, tp);
     tracker.initialize(); // no initial pose: a random population
     pm::io::StagedFiles files(o.out);

@@ -46,11 +46,12 @@ struct SceneExportParams
   std::string arm = "pa10"; //!< the arm that makes the pass (pm::robot::makeArmModel())
   /*!
     The toy's poses in the hand frame the sequence passes through (the hand still at its rest), each
-    held holdS, moves of moveS between them: small moves of up to 40 mm and 10 deg.
+    held holdS, moves of moveS between them: moves of up to 60 mm and 10 deg, 121 frames (4 s).
   */
-  std::vector<core::Phi> waypoints{{0, 0, 500, 0, 0, 0},           {30, -15, 505, 0, 0, 0.07},    {15, 20, 540, 0.06, -0.05, 0},
-                                   {-30, 10, 480, -0.05, 0.07, -0.06}, {-10, -20, 520, 0.03, 0.04, 0.05}, {0, 0, 500, 0, 0, 0}};
-  double holdS = 0.1;  //!< each waypoint held (s)
+  std::vector<core::Phi> waypoints{{0, 0, 500, 0, 0, 0},          {30, -15, 505, 0, 0, 0.07},     {15, 20, 540, 0.06, -0.05, 0},
+                                   {-30, 10, 480, -0.05, 0.07, -0.06}, {-10, -20, 520, 0.03, 0.04, 0.05}, {25, 5, 470, -0.04, -0.03, 0.04},
+                                   {-20, -10, 530, 0.05, 0.05, -0.05}, {0, 0, 500, 0, 0, 0}};
+  double holdS = 0.15;  //!< each waypoint held (s)
   double moveS = 0.4; //!< each move (s)
   double fps = 30;     //!< the sequence's frame rate
   //! The area light's centre in the toy's frame at the pass (mm): upper left, in front, 40 deg off the view axis, 900 mm away.
