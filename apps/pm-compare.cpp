@@ -81,6 +81,8 @@ void addOptions(CLI::App &app, Options &o)
   app.add_option("--mbt-mesh-cell-mm", cp.mbtMeshCellMm, "ViSP's MBT trackers' CAD model: the all-around model's surface "
                  "decimated to cells of this size (mm); 0: the flat model's outline, one face")
       ->check(CLI::Range(0.0, 100.0));
+  app.add_flag("--no-trust-calibration", [&cp](std::int64_t) { cp.calibrateTrust = false; },
+               "the all-around model's trust not calibrated from its pass (the shipped confidence and sigmas; faster)");
   app.add_flag("--refine-outlines", cp.refineOutlines, "the all-around model's outlines to a fraction of a pixel (sub-pixel "
                "silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
   app.add_option("--viewpoints", cp.viewpoints, "the all-around model's viewing directions (K)")->check(CLI::Range(1, 5000));

@@ -3,6 +3,9 @@
 #include <iostream>
 
 #include "pm/app/App.h"
+#include "pm/app/Progress.h"
+#include "pm/lab/SilhouetteTruth.h"
+#include "pm/trust/PassCalibration.h"
 #include "pm/app/Options.h"
 #include "pm/report/ModelOutputs.h"
 #include "pm/capture/VideoCaptureSource.h"
@@ -41,6 +44,7 @@ struct Options
   std::string viewsDir, robotName = "pa10";
   pm::model::PassPlan plan;
   pm::model::AllAroundParams ap;
+  bool noTrustCalibration = false;
 };
 
 //! The options of the flat model's photos, the stereo model's pairs (files or live) and the simulator's targets; returns those the all-around options exclude.
@@ -125,6 +129,9 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
                  "background images (none needed in --views; the lab makes no second pass)")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", o.ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
   app.add_option("--min-inside-px", o.ap.inMinInsidePx, "all-around: the model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")->check(CLI::Range(0.0, 50.0));
+  app.add_flag("--no-trust-calibration", o.noTrustCalibration, "all-around: the model's trust not calibrated from its pass (the "
+               "shipped confidence and sigmas; faster). By default the pass's views, each held out of a model built without it, "
+               "teach the confidence what right poses read through this camera (trust_tries.csv, docs/trust.md)");
   app.add_flag("--refine-outlines", o.ap.refineOutlines, "all-around: the outlines to a fraction of a pixel (sub-pixel "
                "silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
   app.add_option("--refine-depth-mm", o.ap.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
@@ -134,6 +141,31 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
   optViews->excludes(optAA)->excludes(others.back());
 }
 
+//! The model's trust calibrated from its own pass (pm::trust); returns the tries as a table (trust_tries.csv).
+std::string calibrate(const Options &o, const pm::core::StereoRig &rig, const std::vector<pm::model::PassView> &pass, pm::model::AllAroundBuild &b,
+                      const pm::model::PassMeasurements &measured)
+{
+  if (o.noTrustCalibration)
+    return "";
+  pm::app::Progress progress("calibrating trust", pm::trust::calibrationSteps(pass.size()), o.quiet);
+  std::vector<pm::trust::PassTry> tries;
+  std::string why;
+  b.model.trust = pm::trust::calibrateFromPass(rig, pass, o.ap, measured, pm::tracker::TrackerParams(), pm::trust::CalibrationParams(),
+                                               [&] { progress.step(); }, &why, &tries);
+  progress.finish();
+  if (!b.model.trust.measured && !o.quiet)
+    std::cerr << "note: trust not calibrated from the pass: " << why << " (the shipped confidence is used)" << std::endl;
+  return pm::trust::triesCsv(tries, b.model.trust);
+}
+
+//! trust_tries.csv when the trust was calibrated.
+std::vector<std::pair<std::string, std::string>> moreFiles(const std::string &tries)
+{
+  if (tries.empty())
+    return {};
+  return {{"trust_tries.csv", tries}};
+}
+
 //! The all-around model from a views folder, or from the lab's pass (then checked against the toy).
 int makeAllAround(const Options &o)
 {
@@ -141,10 +173,12 @@ int makeAllAround(const Options &o)
   if (!o.viewsDir.empty()) {
     const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(o.viewsDir, rig, o.ap.minViews, o.ap.backdropHueDeg < 0);
     const std::string source = "views " + o.viewsDir;
-    const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, o.ap);
-    pm::io::writeAllAroundModel(b, pass, rig, o.out, source, false);
+    pm::model::PassMeasurements measured;
+    pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, o.ap, measured);
+    const std::string tries = calibrate(o, rig, pass, b, measured);
+    pm::io::writeAllAroundModel(b, pass, rig, o.out, source, false, "", moreFiles(tries));
     if (!o.quiet)
-      std::cout << pm::report::describeAllAroundModel(b, source, o.out, false) << std::flush;
+      std::cout << pm::report::describeAllAroundModel(b, source, o.out, false) << "  " << pm::trust::describe(b.model.trust) << "\n" << std::flush;
     return 0;
   }
   // The lab: the arm's pass, the model, and the model checked against the toy (the renderer's truth).
@@ -156,11 +190,15 @@ int makeAllAround(const Options &o)
   if (!o.quiet)
     for (const pm::model::PassDirection &d : lp.leftOut)
       std::cout << "pass: " << pm::robot::describeLeftOut(d, arm.model().title()) << "\n";
-  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, lp.views, o.ap);
+  pm::model::PassMeasurements measured;
+  pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, lp.views, o.ap, measured);
+  const std::string tries = calibrate(o, rig, lp.views, b, measured);
   const pm::lab::SurfaceTruth truth = pm::lab::checkSurface(scene, b, lp.fMo.inverse() * b.fMm, rig.left.cam);
-  pm::io::writeAllAroundModel(b, lp.views, rig, o.out, source, true, pm::lab::surfaceTruthJson(truth));
+  const std::string silhouettes = pm::lab::checkSilhouettes(scene, lp.views, lp.fMo, b, rig).text;
+  pm::io::writeAllAroundModel(b, lp.views, rig, o.out, source, true, pm::lab::surfaceTruthJson(truth), moreFiles(tries));
   if (!o.quiet)
-    std::cout << pm::report::describeAllAroundModel(b, source, o.out, true) << truth.text << std::flush;
+    std::cout << pm::report::describeAllAroundModel(b, source, o.out, true) << silhouettes << truth.text << "  " << pm::trust::describe(b.model.trust) << "\n"
+              << std::flush;
   return 0;
 }
 

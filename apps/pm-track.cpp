@@ -36,6 +36,7 @@
 #include "pm/sim/TargetCatalog.h"
 #include "pm/sim/Trajectory.h"
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/trust/PassCalibration.h"
 
 namespace {
 
@@ -146,12 +147,16 @@ Input openScene(const Options &o, const pm::core::StereoRig &rig)
   const pm::lab::RenderedScene scene = pm::lab::openRenderedScene(o.sceneDir, o.scenePeer);
   const pm::model::AllAroundParams &ap = o.labModel.allAroundParams;
   const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(scene.viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
-  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, ap);
+  pm::model::PassMeasurements measured;
+  pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, ap, measured);
+  if (o.labModel.calibrateTrust)
+    b.model.trust = pm::trust::calibrateFromPass(rig, pass, ap, measured);
   if (!o.quiet) { // the model against the toy it was made of (the renderer's truth)
     const pm::sim::Scene toy(pm::sim::makeTarget(scene.target));
     std::cout << "model of " << scene.description << " against the toy:\n"
               << pm::lab::checkSilhouettes(toy, pass, scene.fMo, b, rig).text
-              << pm::lab::checkSurface(toy, b, scene.fMo.inverse() * b.fMm, rig.left.cam).text << std::flush;
+              << pm::lab::checkSurface(toy, b, scene.fMo.inverse() * b.fMm, rig.left.cam).text << "  " << pm::trust::describe(b.model.trust)
+              << std::endl;
   }
   Input in;
   in.model = b.model;
@@ -240,7 +245,8 @@ Run track(const Options &o, const pm::core::StereoRig &rig, Input &in, pm::track
     if (o.display) {
       std::ostringstream status;
       status << std::fixed << std::setprecision(2) << pm::tracker::toString(f.result.state) << ", q " << f.result.quality << ", "
-             << std::setprecision(1) << f.result.computeMs << " ms, frame " << k;
+             << std::setprecision(1) << f.result.computeMs << " ms, frame " << k << (f.result.trusted ? ", trusted" : ", held: ")
+             << (f.result.heldBy && !f.result.trusted ? f.result.heldBy : "");
       view.show(sf.left, sf.right, tracker.pointScores(0), tracker.pointScores(1), status.str());
     }
     // Keep the pair without copying it: ViSP's own swap() trades the pixel buffers (both images own

@@ -3,7 +3,7 @@
 # Blender's Cycles (scripts/cycles/render.py) into a views folder and a sequence with its truth.
 #   bash scripts/render-cycles.sh [DIR] [SCENE...]
 # DIR: where the set is kept, outside the repository (default: $PM_CYCLES_DIR, else
-# ~/.cache/visp-photomodel/cycles). SCENE: some of the names below (default: all). About 25 minutes
+# ~/.cache/visp-photomodel/cycles). SCENE: some of the names below (default: all). About 20 minutes
 # a scene on 2 cores; an interrupted run resumes where it stopped. Needs a Release build (bash
 # scripts/test.sh) and Blender (apt-get install blender). The tests that read the set find it at
 # $PM_CYCLES_DIR or the default, and skip with a reason when it is absent.
@@ -36,7 +36,7 @@ for n in "${names[@]}"; do
     build/apps/pm-export-scene --out "$dir/$n" ${scenes[$n]}
   fi
   echo "rendering $n with Cycles into $dir/$n" >&2
-  blender -b --factory-startup -P scripts/cycles/render.py -- "$dir/$n" 2>&1 | grep -E "^(pass view|sequence frame|rendered|error)" || {
+  blender -b --factory-startup -P scripts/cycles/render.py -- "$dir/$n" --samples 16 2>&1 | grep -E "^(pass view|sequence frame|rendered|error)" || {
     echo "error: Blender failed on $n (run: blender -b --factory-startup -P scripts/cycles/render.py -- $dir/$n)" >&2; exit 1; }
 done
 echo "the set is in $dir" >&2

@@ -216,7 +216,7 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::getline(lines, header);
   std::getline(lines, row);
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 48); // 49 columns: 29, 6 sigmas and 14 joints
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 67); // 68 columns: 30, 6 sigmas, 18 cues and 14 joints
   EXPECT_NE(row.find(",1.25,"), std::string::npos) << row;
   EXPECT_NE(row.find(",oracle,"), std::string::npos) << row;
   EXPECT_NE(row.find(",,,,,,"), std::string::npos) << row; // an unknown uncertainty: six empty cells
@@ -255,6 +255,21 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   for (int i = 0; i < col("background_hue_deg"); ++i)
     b = hs.find(',', b) + 1;
   EXPECT_EQ(hs.substr(b, hs.find(',', b) - b), "212.5");
+  // Why the arm was held, and the cue's reading, under their headers.
+  f.heldBy = "precise_residual_px";
+  f.track.cues.precise = true;
+  f.track.cues.preciseResidualPx = 1.75;
+  std::ostringstream held;
+  pm::lab::writeLoopCsvRow(held, f, true);
+  const std::string hb = held.str();
+  const auto cellOf = [&](const std::string &line, int c) {
+    std::size_t at = 0;
+    for (int i = 0; i < c; ++i)
+      at = line.find(',', at) + 1;
+    return line.substr(at, line.find(',', at) - at);
+  };
+  EXPECT_EQ(cellOf(hb, col(",held_by") + 1), "precise_residual_px");
+  EXPECT_EQ(cellOf(hb, col(",cue_precise_residual_px") + 1), "1.75");
   // A 6-joint arm (ViSP's Viper850 and Afma6): 12 joint columns, and a row of its 6 joints fits them.
   std::ostringstream six;
   pm::lab::writeLoopCsvHeader(six, 6);
@@ -264,8 +279,8 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::istringstream sixLines(six.str());
   std::getline(sixLines, header);
   std::getline(sixLines, row);
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 46);
-  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 46);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 65);
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 65);
   EXPECT_EQ(header.find(",q7"), std::string::npos);
 }
 

@@ -55,6 +55,8 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
       ->check(CLI::Range(1, 5000));
   app.add_option("--min-inside-px", c.allAroundParams.inMinInsidePx, "simulator, all-around model: the model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")
       ->check(CLI::Range(0.0, 50.0));
+  app.add_flag("--no-trust-calibration", [&c](std::int64_t) { c.calibrateTrust = false; },
+               "simulator, all-around model: its trust not calibrated from its pass (the shipped confidence and sigmas; faster)");
   app.add_flag("--refine-outlines", c.allAroundParams.refineOutlines, "simulator, all-around model: the outlines to a fraction of a "
                "pixel (sub-pixel silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
 }

@@ -116,7 +116,7 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
   aa.inMinInsidePx = m_p.minInsidePx;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || aaForMbt)
     m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, m_p.pass, "pa10", m_p.distanceMm, aa,
-                                                      &m_s->allAroundBuild);
+                                                      &m_s->allAroundBuild, m_p.calibrateTrust);
   if (aaForMbt)
     m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);
   if (mbt && m_p.mbtTrueCad) {

@@ -31,15 +31,40 @@ void GuardedServo::moveDesired(const vpHomogeneousMatrix &hdMo)
   m_sp.hdMo = hdMo;
 }
 
-bool GuardedServo::certainEnough(const precise::PoseUncertainty &u) const
+const char *GuardedServo::uncertainAxis(const precise::PoseUncertainty &u) const
 {
-  return !u.known || ((m_gp.maxSigmaMm <= 0 || u.maxMm() <= m_gp.maxSigmaMm) && (m_gp.maxSigmaDeg <= 0 || u.maxDeg() <= m_gp.maxSigmaDeg));
+  static const char *const kAxes[6] = {"sigma_x_mm", "sigma_y_mm", "sigma_z_mm", "sigma_rx_deg", "sigma_ry_deg", "sigma_rz_deg"};
+  if (!u.known)
+    return nullptr;
+  const char *worst = nullptr;
+  double over = 1;
+  for (std::size_t a = 0; a < 6; ++a) {
+    const double bound = a < 3 ? m_gp.maxSigmaMm : m_gp.maxSigmaDeg, s = a < 3 ? u.sigmaMm[a] : u.sigmaDeg[a - 3];
+    if (bound > 0 && s / bound > over) {
+      over = s / bound;
+      worst = kAxes[a];
+    }
+  }
+  return worst;
 }
 
-bool GuardedServo::usable(const tracker::TrackResult &track, bool frozen) const
+const char *GuardedServo::heldBy(const tracker::TrackResult &track, bool frozen) const
 {
-  return track.trusted && !frozen && track.quality >= m_lostQuality && track.quality >= m_qRef - m_gp.qualityDrop &&
-         track.phi.isValid() && certainEnough(track.uncertainty) && m_space.contains(track.phi);
+  if (!track.trusted)
+    return track.heldBy ? track.heldBy : "confidence";
+  if (frozen)
+    return "frozen_images";
+  if (track.quality < m_lostQuality)
+    return "quality";
+  if (track.quality < m_qRef - m_gp.qualityDrop)
+    return "quality_drop";
+  if (!track.phi.isValid())
+    return "pose";
+  if (const char *axis = uncertainAxis(track.uncertainty))
+    return axis;
+  if (!m_space.contains(track.phi))
+    return "search_space";
+  return nullptr;
 }
 
 GuardedCommand GuardedServo::step(const tracker::TrackResult &track, bool frozen, const vpColVector &q, const vpHomogeneousMatrix &fMh,
@@ -47,7 +72,8 @@ GuardedCommand GuardedServo::step(const tracker::TrackResult &track, bool frozen
 {
   GuardedCommand c;
   m_qRef -= m_gp.qualityMemoryPerS * dt;
-  const bool ok = oracle || usable(track, frozen);
+  const char *held = oracle ? nullptr : heldBy(track, frozen);
+  const bool ok = held == nullptr;
   if (ok)
     m_qRef = std::max(m_qRef, track.quality);
   vpColVector twist;
@@ -70,8 +96,10 @@ GuardedCommand GuardedServo::step(const tracker::TrackResult &track, bool frozen
                                             twist.size() == 6 ? &twist : nullptr);
     } catch (const core::Error &) { // a pose vpServo must not see
       c.servoing = false;
+      held = "servo";
     }
   }
+  c.heldBy = held;
   if (!c.servoing)
     wanted = m_servo->stop(m_arm.dof()); // fail-safe: SafeCommand ramps down to it
   c.qdot = m_safe.next(wanted, dt);

@@ -104,7 +104,8 @@ void writeAllAroundPictures(const model::AllAroundBuild &b, const std::vector<mo
 }
 
 std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vector<model::PassView> &pass, const core::StereoRig &rig,
-                                const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson)
+                                const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson,
+                                const std::vector<std::pair<std::string, std::string>> &moreFiles)
 {
   StagedFiles out(dir);
   savePhotoModel(b.model, out.stage("model.json"));
@@ -153,6 +154,10 @@ std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vecto
                                {"build_s", b.buildS}};
   if (!truthJson.empty())
     summary["truth"] = nlohmann::json::parse(truthJson);
+  if (b.model.trust.measured)
+    summary["trust_calibration"] = nlohmann::json::parse(trustCalibrationToJson(b.model.trust));
+  for (const auto &[name, content] : moreFiles)
+    writeTextFile(out.stage(name), content);
   const std::string text = summary.dump(2) + "\n";
   writeTextFile(out.stage("summary.json"), text);
   out.commit();

@@ -51,6 +51,79 @@ std::vector<core::ModelPoint> pointsFromJson(const json &a, const char *name, bo
   return pts;
 }
 
+//! A named list of numbers as a JSON object (the order kept by the names' own).
+json namedToJson(const std::vector<std::pair<std::string, double>> &v)
+{
+  json o = json::object();
+  for (const auto &[name, x] : v)
+    o[name] = x;
+  return o;
+}
+
+std::vector<std::pair<std::string, double>> namedFromJson(const json &o, const char *name)
+{
+  if (!o.is_object())
+    throw core::Error(std::string("\"trust_calibration\": \"") + name + "\" must be an object of names and numbers");
+  std::vector<std::pair<std::string, double>> v;
+  for (const auto &[k, x] : o.items()) {
+    if (!x.is_number() || !std::isfinite(x.get<double>()))
+      throw core::Error(std::string("\"trust_calibration\": \"") + name + "\": \"" + k + "\" must be a finite number");
+    v.emplace_back(k, x.get<double>());
+  }
+  return v;
+}
+
+//! "trust_calibration" (version 6): what the pass taught the confidence and the uncertainty (TrustCalibration.h).
+json trustToJson(const core::TrustCalibration &t)
+{
+  return {{"cue_shifts", namedToJson(t.cueShifts)},
+          {"right_readings", namedToJson(t.rightReadings)},
+          {"sigma_gain", t.sigmaGain},
+          {"guard", t.guard},
+          {"held_out_views", t.heldOutViews},
+          {"right_examples", t.rightExamples},
+          {"wrong_examples", t.wrongExamples},
+          {"auroc", t.auroc},
+          {"right_trusted", t.rightTrusted},
+          {"right_trusted_shipped", t.rightTrustedShipped},
+          {"wrong_trusted", t.wrongTrusted},
+          {"wrong_max_confidence", t.wrongMaxConfidence},
+          {"within_sigma", t.withinSigma},
+          {"seconds", t.seconds}};
+}
+
+core::TrustCalibration trustFromJson(const json &j)
+{
+  core::TrustCalibration t;
+  t.measured = true;
+  t.cueShifts = namedFromJson(j.at("cue_shifts"), "cue_shifts");
+  t.rightReadings = namedFromJson(j.at("right_readings"), "right_readings");
+  const auto gain = j.at("sigma_gain").get<std::vector<double>>();
+  if (gain.size() != 6)
+    throw core::Error("\"trust_calibration\": \"sigma_gain\" must be six numbers (x, y, z, about x, y, z)");
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!(gain[i] > 0 && gain[i] < 100))
+      throw core::Error("\"trust_calibration\": every \"sigma_gain\" must lie in (0, 100)");
+    t.sigmaGain[i] = gain[i];
+  }
+  t.guard = j.at("guard").get<double>();
+  t.heldOutViews = j.value("held_out_views", 0);
+  t.rightExamples = j.value("right_examples", 0);
+  t.wrongExamples = j.value("wrong_examples", 0);
+  t.auroc = j.value("auroc", 0.0);
+  t.rightTrusted = j.value("right_trusted", 0.0);
+  t.rightTrustedShipped = j.value("right_trusted_shipped", 0.0);
+  t.wrongTrusted = j.value("wrong_trusted", 0);
+  t.wrongMaxConfidence = j.value("wrong_max_confidence", 0.0);
+  if (j.contains("within_sigma")) {
+    const auto w = j.at("within_sigma").get<std::vector<double>>();
+    for (std::size_t i = 0; i < std::min<std::size_t>(6, w.size()); ++i)
+      t.withinSigma[i] = w[i];
+  }
+  t.seconds = j.value("seconds", 0.0);
+  return t;
+}
+
 //! Rounded to 0.01 (a double, so that it is written short): what is read back is what was deduplicated.
 double rounded(float x) { return std::round(static_cast<double>(x) * 100.0) / 100.0; }
 
@@ -158,6 +231,8 @@ void writeViewpointModel(const core::PhotoModel &m, json &j, bool v5)
                    r(l.offsetDeg[0]), r(l.offsetDeg[1]), r(l.offsetDeg[2])});
     j["pass_landings"] = a;
   }
+  if (v5 && m.trust.measured)
+    j["trust_calibration"] = trustToJson(m.trust);
 }
 
 //! "pass_landings": [[camera x, y, z (mm), offset x, y, z (mm), rotation x, y, z (deg)], ...] (version 5, optional).
@@ -215,12 +290,14 @@ std::vector<core::ModelPoint> positionPoints(const json &a, float hue, const cha
 
 } // namespace
 
+std::string trustCalibrationToJson(const core::TrustCalibration &t) { return trustToJson(t).dump(1); }
+
 std::string photoModelToJson(const core::PhotoModel &m)
 {
   const bool depth = m.hasDepth();
   const bool v5 = m.views.size() >= kViewpointViews && m.hasContours() && m.hasColours;
   json j{{"format", kFormat},
-         {"version", v5 ? 5 : m.views.size() >= kViewpointViews ? 4 : !m.views.empty() ? 3 : depth ? 2 : 1},
+         {"version", v5 ? (m.trust.measured ? 6 : 5) : m.views.size() >= kViewpointViews ? 4 : !m.views.empty() ? 3 : depth ? 2 : 1},
          {"distance_mm", m.distanceMm},
          {"camera", {{"px", m.px}, {"py", m.py}, {"u0", m.u0}, {"v0", m.v0}, {"width", m.photoWidth}, {"height", m.photoHeight}}},
          {"centroid_px", {m.centroidU, m.centroidV}},
@@ -258,7 +335,7 @@ core::PhotoModel loadPhotoModel(const std::string &path)
   core::PhotoModel m;
   try {
     const json j = json::parse(f);
-    const int version = detail::checkFormat(j, kFormat, 5);
+    const int version = detail::checkFormat(j, kFormat, 6);
     m.distanceMm = j.at("distance_mm").get<double>();
     const json &c = j.at("camera");
     m.px = c.at("px").get<double>();
@@ -353,6 +430,8 @@ core::PhotoModel loadPhotoModel(const std::string &path)
       if (j.contains("pass_landings"))
         m.passLandings = passLandingsFromJson(j.at("pass_landings"));
     }
+    if (version >= 6)
+      m.trust = trustFromJson(j.at("trust_calibration"));
   } catch (const core::Error &e) {
     throw core::Error("photo-model file '" + path + "' is corrupt: " + e.what());
   } catch (const json::exception &e) {

@@ -77,6 +77,7 @@ LoopFrame ClosedLoop::step()
   const hand::GuardedCommand c = m_guard.step(f.track, f.frozen, q, fMh, hJe, 1.0 / m_lp.fps, m_lp.oracle ? &f.hMmTrue : nullptr);
   f.hMmUsed = c.hMoUsed;
   f.servoing = c.servoing;
+  f.heldBy = c.heldBy;
   m_arm->setJointVelocity(c.qdot);
   f.qdot = m_arm->commanded(); // as clamped by the arm
   m_arm->advance(1.0 / m_lp.fps);

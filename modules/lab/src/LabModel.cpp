@@ -12,7 +12,7 @@ sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::Stere
     model::PassPlan plan;
     plan.views = c.passViews;
     plan.ringsDeg = c.passRingsDeg;
-    return makeSimulatedAllAroundModel(scene, rig, plan, c.arm, c.distanceMm, c.allAroundParams);
+    return makeSimulatedAllAroundModel(scene, rig, plan, c.arm, c.distanceMm, c.allAroundParams, nullptr, c.calibrateTrust);
   }
   if (c.stereo) {
     model::StereoModelParams sp;

@@ -1,5 +1,7 @@
 #include "pm/lab/LabPass.h"
 
+#include "pm/trust/PassCalibration.h"
+
 #include "pm/robot/ArmCatalog.h"
 #include "pm/robot/ArmPassPlan.h"
 #include "pm/robot/SteppedArm.h"
@@ -46,11 +48,15 @@ LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const 
 
 sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan,
                                                      const std::string &armName, double distanceMm, const model::AllAroundParams &params,
-                                                     model::AllAroundBuild *build)
+                                                     model::AllAroundBuild *build, bool calibrateTrust)
 {
   robot::SteppedArm arm(robot::makeArmModel(armName));
   const LabPass pass = runLabPass(scene, rig, plan, arm, vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0), params.backdropHueDeg < 0);
-  model::AllAroundBuild b = model::buildAllAroundModel(rig, pass.views, params);
+  model::PassMeasurements measured;
+  model::AllAroundBuild b = calibrateTrust ? model::buildAllAroundModel(rig, pass.views, params, measured)
+                                           : model::buildAllAroundModel(rig, pass.views, params);
+  if (calibrateTrust)
+    b.model.trust = trust::calibrateFromPass(rig, pass.views, params, measured);
   sim::SimulatedPhotoModel s;
   s.stereo = true;
   s.oMm = pass.fMo.inverse() * b.fMm;

@@ -78,6 +78,8 @@ void RunLog::add(const LoopFrame &f)
   if (f.track.state == tracker::TrackState::Tracking)
     m_byDistance[static_cast<std::size_t>(std::clamp(distanceMm / 10, 0.0, 199.0))].add(f.estimateErrorMm, f.estimateErrorDeg);
   m_held += f.servoing ? 0 : 1;
+  if (!f.servoing)
+    ++m_heldBy[f.heldBy ? f.heldBy : "oracle"];
   m_servoed += f.servoing ? 1 : 0;
 
   if (m_inBucket == 0) {

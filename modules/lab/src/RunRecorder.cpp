@@ -43,7 +43,8 @@ void RunRecorder::record(long k, const LoopFrame &f, const ClosedLoop &loop, con
   std::ostringstream label;
   label << std::fixed << std::setprecision(1) << "t " << f.t << " s  " << (m_oracle ? "oracle" : toString(f.track.state))
         << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg  visible " << std::setprecision(0)
-        << 100 * f.track.visibleShare << " % (magenta: hidden)";
+        << 100 * f.track.visibleShare << " % (magenta: hidden)  " << (f.servoing ? "servoing" : "held: ")
+        << (f.servoing ? "" : f.heldBy ? f.heldBy : "oracle");
   vpImage<vpRGBa> left = report::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str());
   vpImage<vpRGBa> right = report::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right");
   if (const precise::PreciseStage *stage = loop.tracker().preciseStage(); stage && f.track.precise) {

@@ -50,6 +50,7 @@ std::string runSummaryJson(const RunLog &log, const RunInfo &info)
       {"joint_limit_violations", info.jointLimitViolations},
       {"frames_servoed", log.framesServoed()},
       {"frames_held", log.framesHeld()},
+      {"held_by", log.heldBy()},
       {"frames_servoed_on_wrong_pose", log.framesServoedOnWrongPose()},
       {"frames_servoed_on_wrong_raw_estimate", log.framesServoedOnWrongRawEstimate()},
       {"wrong_pose", "the pose the servo used (the filtered estimate) more than 20 mm or 5 deg from the truth; "
@@ -65,6 +66,18 @@ std::string runSummaryJson(const RunLog &log, const RunInfo &info)
       {"overlays", info.overlays},
       {"video", info.video}};
   return summary.dump(2) + "\n";
+}
+
+std::string heldByText(const std::map<std::string, long> &heldBy)
+{
+  std::vector<std::pair<long, std::string>> v;
+  for (const auto &[why, n] : heldBy)
+    v.emplace_back(n, why);
+  std::sort(v.begin(), v.end(), [](const auto &a, const auto &b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+  std::ostringstream out;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out << (i ? ", " : "") << v[i].second << " " << v[i].first;
+  return v.empty() ? "none" : out.str();
 }
 
 std::string runSummaryText(const RunLog &log, const RunInfo &info)
@@ -87,7 +100,7 @@ std::string runSummaryText(const RunLog &log, const RunInfo &info)
       << "  joint limit violations " << info.jointLimitViolations << ", tracker " << log.meanComputeMs() << " ms per frame\n"
       << "  servoed on " << log.framesServoed() << " frames ("
       << 100.0 * static_cast<double>(log.framesServoed()) / static_cast<double>(std::max(1L, log.frames())) << " %), held on "
-      << log.framesHeld() << " (estimate not trusted), servoed on a wrong pose on " << log.framesServoedOnWrongPose()
+      << log.framesHeld() << " (" << heldByText(log.heldBy()) << "), servoed on a wrong pose on " << log.framesServoedOnWrongPose()
       << " (the raw estimate wrong on " << log.framesServoedOnWrongRawEstimate() << ")\n"
       << "  by tenth of the run, rms error (mm):";
   for (const auto &t : log.tenths())

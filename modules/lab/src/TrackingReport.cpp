@@ -11,6 +11,10 @@
 #include "pm/core/Error.h"
 #include "pm/core/Statistics.h"
 #include "pm/lab/Convergence.h"
+#include "pm/lab/RunSummary.h"
+
+#include <visp3/core/vpRotationMatrix.h>
+#include <visp3/core/vpThetaUVector.h>
 
 namespace pm::lab {
 
@@ -82,7 +86,31 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
     evals += static_cast<double>(f.result.evaluations);
     ++r.states[toString(f.result.state)];
     r.preciseFrames += f.result.precise ? 1 : 0;
+    r.trustedFrames += f.result.trusted ? 1 : 0;
+    if (!f.result.trusted)
+      ++r.heldBy[f.result.heldBy ? f.result.heldBy : "confidence"];
+    if (f.haveTruth) {
+      const double mm = core::translationDistanceMm(f.result.phi, f.truth), deg = core::rotationDistanceDeg(f.result.phi, f.truth);
+      const bool right = mm <= kRightMm && deg <= kRightDeg, wrong = mm > kWrongMm || deg > kWrongDeg;
+      r.rightFrames += right;
+      r.rightTrusted += right && f.result.trusted;
+      r.wrongFrames += wrong;
+      r.wrongTrusted += wrong && f.result.trusted;
+    }
   }
+  // The reported 1-sigma against the true errors, along and about the hand's axes.
+  std::array<long, 6> within{};
+  for (std::size_t k = from; k < frames.size(); ++k) {
+    const TrackedFrame &f = frames[k];
+    if (!f.haveTruth || !f.result.uncertainty.known || f.result.state != tracker::TrackState::Tracking)
+      continue;
+    const std::array<double, 6> e = handFrameErrors(f.result.phi, f.truth);
+    for (std::size_t a = 0; a < 6; ++a)
+      within[a] += std::fabs(e[a]) <= (a < 3 ? f.result.uncertainty.sigmaMm[a] : f.result.uncertainty.sigmaDeg[a - 3]);
+    ++r.sigmaFrames;
+  }
+  for (std::size_t a = 0; a < 6 && r.sigmaFrames > 0; ++a)
+    r.withinSigma[a] = static_cast<double>(within[a]) / static_cast<double>(r.sigmaFrames);
   double sum = 0;
   for (double v : ms)
     sum += v;
@@ -92,11 +120,21 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
   return r;
 }
 
+std::array<double, 6> handFrameErrors(const core::Phi &estimate, const core::Phi &truth)
+{
+  const vpHomogeneousMatrix hMe = core::toHomogeneousMatrix(estimate), hMt = core::toHomogeneousMatrix(truth);
+  vpRotationMatrix Re, Rt;
+  hMe.extract(Re);
+  hMt.extract(Rt);
+  const vpThetaUVector tu(Re * Rt.t());
+  return {estimate.x - truth.x, estimate.y - truth.y, estimate.z - truth.z, tu[0] * 180 / M_PI, tu[1] * 180 / M_PI, tu[2] * 180 / M_PI};
+}
+
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
 {
   out << "t,true_x,true_y,true_z,true_e1,true_e2,true_e3,est_x,est_y,est_z,est_e1,est_e2,est_e3,err_x,err_y,err_z,"
-         "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving,confidence,trusted,visible_share,background_hue_deg"
-      << uncertaintyCsvHeader() << "\n";
+         "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving,confidence,trusted,held_by,visible_share,background_hue_deg"
+      << uncertaintyCsvHeader() << cuesCsvHeader() << "\n";
   out << std::setprecision(8);
   for (const TrackedFrame &f : frames) {
     out << f.t;
@@ -108,12 +146,28 @@ void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
       out << "," << (f.haveTruth ? f.result.phi[i] - f.truth[i] : NAN);
     out << "," << f.result.fitness << "," << f.result.quality << "," << toString(f.result.state) << ","
         << f.result.evaluations << "," << f.result.generations << "," << f.result.computeMs << "," << (f.moving ? 1 : 0) << ","
-        << f.result.confidence << "," << (f.result.trusted ? 1 : 0) << "," << f.result.visibleShare << "," << f.result.backgroundHueDeg;
+        << f.result.confidence << "," << (f.result.trusted ? 1 : 0) << "," << (f.result.heldBy ? f.result.heldBy : "") << ","
+        << f.result.visibleShare << "," << f.result.backgroundHueDeg;
     writeUncertaintyCells(out, f.result.uncertainty);
+    writeCueCells(out, f.result.cues);
     out << "\n";
   }
   if (!out)
     throw core::Error("cannot write the frames' table");
+}
+
+std::string cuesCsvHeader()
+{
+  std::string h;
+  for (const char *n : tracker::ConfidenceCues::featureNames())
+    h += std::string(",cue_") + n;
+  return h;
+}
+
+void writeCueCells(std::ostream &out, const tracker::ConfidenceCues &c)
+{
+  for (double x : c.features())
+    out << "," << x;
 }
 
 const char *uncertaintyCsvHeader() { return ",sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg"; }
@@ -150,6 +204,14 @@ std::string trackingSummaryJson(const TrackingReport &report, const TrackingRunI
                          {"position_error_mm", {{"rms", report.positionRmsMm}, {"max", report.positionMaxMm}}},
                          {"rotation_error_deg", {{"rms", report.rotationRmsDeg}, {"max", report.rotationMaxDeg}}},
                          {"precise_frames", report.preciseFrames},
+                         {"trusted_frames", report.trustedFrames},
+                         {"held_by", report.heldBy},
+                         {"right_frames", {{"n", report.rightFrames}, {"trusted", report.rightTrusted},
+                                           {"over", "estimates within 5 mm and 2 deg of the truth"}}},
+                         {"wrong_frames", {{"n", report.wrongFrames}, {"trusted", report.wrongTrusted},
+                                           {"over", "estimates more than 20 mm or 5 deg from the truth"}}},
+                         {"within_sigma", {{"share", report.withinSigma}, {"frames", report.sigmaFrames},
+                                           {"axes", "along the hand's x, y, z, about them; tracked frames after convergence"}}},
                          {"mean_frame_ms", report.meanMs},
                          {"p99_frame_ms", report.p99Ms},
                          {"mean_evaluations_per_frame", report.meanEvaluations},
@@ -180,6 +242,19 @@ std::string trackingSummaryText(const TrackingReport &report, const TrackingRunI
     out << std::setprecision(2) << "  pose error: rms " << report.positionRmsMm << " mm and " << report.rotationRmsDeg << " deg, max "
         << report.positionMaxMm << " mm and " << report.rotationMaxDeg << " deg\n";
   out << "  precise stage: " << report.preciseFrames << " of " << info.frames << " frames\n";
+  out << "  trusted on " << report.trustedFrames << " frames, held on " << static_cast<long>(info.frames) - report.trustedFrames << " ("
+      << heldByText(report.heldBy) << ")\n";
+  if (report.haveTruth) {
+    out << std::setprecision(1) << "  right estimates (within 5 mm and 2 deg) " << report.rightFrames << ", trusted "
+        << report.rightTrusted << " (" << 100.0 * static_cast<double>(report.rightTrusted) / static_cast<double>(std::max(1L, report.rightFrames))
+        << " %); wrong (over 20 mm or 5 deg) " << report.wrongFrames << ", trusted " << report.wrongTrusted << "\n";
+    if (report.sigmaFrames > 0) {
+      out << std::setprecision(0) << "  true errors within 1 sigma (x, y, z, about x, y, z):";
+      for (double w : report.withinSigma)
+        out << " " << 100 * w << " %";
+      out << " over " << report.sigmaFrames << " frames\n";
+    }
+  }
   out << std::setprecision(2) << "  compute per frame: mean " << report.meanMs << " ms, p99 " << report.p99Ms << " ms (" << info.budget
       << " budget)\n";
   return out.str();

@@ -572,16 +572,22 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
 //! Stage 3: the hull carved (coarse to fine, then by the views' depths) and its surface as a mesh, its outlines refined when asked (out: volumes, fusion counts, residuals).
 HullMesh carvedSurface(const core::StereoRig &rig, const PassImages &im, const std::vector<bool> &used,
                        const std::vector<const HullView *> &usedCams, const Vec3 &centre, const AllAroundParams &p, VisualHull &g,
-                       AllAroundBuild &out)
+                       AllAroundBuild &out, const DepthEvidence *measured, DepthEvidence *keep)
 {
   const std::vector<HullView> &cams = im.cams;
   carveVisualHull(usedCams, g, p.coarsestMm);
   out.hullVolumeCm3 = g.volumeCm3();
   DepthEvidence evidence;
   if (p.fusion.enabled) {
-    core::StereoRig ideal = rig; // the photos are ideal already
-    ideal.left.distortion = ideal.right.distortion = core::LensDistortion();
-    evidence = measureStereo(ideal, cams, out.silhouettes, im.backgrounds, used, p.backdropHueDeg >= 0, g, p.fusion);
+    if (measured) { // the views' depths measured already, on the whole pass: those of the views used here
+      evidence = measured->only(used);
+    } else {
+      core::StereoRig ideal = rig; // the photos are ideal already
+      ideal.left.distortion = ideal.right.distortion = core::LensDistortion();
+      evidence = measureStereo(ideal, cams, out.silhouettes, im.backgrounds, used, p.backdropHueDeg >= 0, g, p.fusion);
+      if (keep)
+        *keep = evidence;
+    }
     out.fusionCarvedCells = evidence.carve(g, usedCams);
     evidence.counts(out.matchedTargetPx, out.matchedBackdropPx);
     if (g.occupied() < 8)
@@ -609,7 +615,23 @@ HullMesh carvedSurface(const core::StereoRig &rig, const PassImages &im, const s
   return mesh;
 }
 
-AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
+//! What the builder measured of each view (PassMeasurements).
+struct PassMeasurements::Data
+{
+  PassImages images;                                //!< each camera's ideal photo, silhouette field, background
+  std::vector<vpImage<unsigned char>> silhouettes;  //!< the silhouettes (AllAroundBuild::silhouettes)
+  long shadowPx = 0;                                //!< AllAroundBuild::shadowPx
+  DepthEvidence evidence;                           //!< the stereo depths of every view used (empty without fusion)
+};
+
+namespace {
+
+/*!
+  The build of the file's description, of \e pass without its views \e heldOut: from \e shared (the views
+  measured already) or measuring them, then into \e keep when given.
+*/
+AllAroundBuild build(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p,
+                     const PassMeasurements::Data *shared, PassMeasurements::Data *keep, const std::vector<std::size_t> &heldOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   p.validate();
@@ -620,8 +642,15 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   AllAroundBuild out;
   out.nViews = pass.size();
 
-  // 1. Silhouettes in the ideal images.
-  const PassImages im = silhouettesOfPass(rig, pass, p, out);
+  // 1. Silhouettes in the ideal images (measured already, or now).
+  PassImages own;
+  if (shared) {
+    out.silhouettes = shared->silhouettes;
+    out.shadowPx = shared->shadowPx;
+  } else {
+    own = silhouettesOfPass(rig, pass, p, out);
+  }
+  const PassImages &im = shared ? shared->images : own;
   const std::vector<HullView> &cams = im.cams;
   const std::vector<std::string> &names = im.names;
 
@@ -632,8 +661,10 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   VisualHull g = hullGrid(centre, radius, p.finestMm);
   out.cellMm = g.cell;
   const int coarse = std::max(1, static_cast<int>(std::lround(4.0 / g.cell)));
-  const std::vector<bool> used =
+  std::vector<bool> used =
       agreeingViews(cams, pass.size(), g.origin, (g.n + coarse - 1) / coarse, coarse * g.cell, p.outlierCarveFraction, names, out.leftOut);
+  for (std::size_t k : heldOut)
+    used[k] = false;
   out.nViewsUsed = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
   if (out.nViewsUsed < p.minViews)
     throw core::Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
@@ -644,7 +675,7 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
       usedCams.push_back(&vc);
 
   // 3. Carving, coarse to fine, the views' depths, and the surface as a mesh.
-  HullMesh mesh = carvedSurface(rig, im, used, usedCams, centre, p, g, out);
+  HullMesh mesh = carvedSurface(rig, im, used, usedCams, centre, p, g, out, shared ? &shared->evidence : nullptr, keep ? &keep->evidence : nullptr);
   const Vec3 mean = occupiedCentroid(g);
   std::vector<Vec3> &pts = mesh.vertices;
   const std::vector<Vec3> &normals = mesh.normals;
@@ -707,9 +738,43 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
   if (p.passLandings)
     M.passLandings = measurePassLandings(rig, M, pass, used, out.fMm);
   M.validate("the all-around model");
+  if (keep) {
+    keep->silhouettes = out.silhouettes;
+    keep->shadowPx = out.shadowPx;
+    keep->images = std::move(own); // the last use of its cameras is above
+  }
   out.buildS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
+
+} // namespace
+
+AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p)
+{
+  return build(rig, pass, p, nullptr, nullptr, {});
+}
+
+AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p,
+                                   PassMeasurements &measured)
+{
+  auto data = std::make_shared<PassMeasurements::Data>();
+  AllAroundBuild b = build(rig, pass, p, nullptr, data.get(), {});
+  measured = PassMeasurements(std::move(data));
+  return b;
+}
+
+AllAroundBuild buildAllAroundModelWithout(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &p,
+                                          const PassMeasurements &measured, const std::vector<std::size_t> &heldOut)
+{
+  if (measured.empty() || measured.data()->silhouettes.size() != 2 * pass.size())
+    throw core::Error("all-around model: the pass's views were not measured (buildAllAroundModel() with its measurements first)");
+  for (std::size_t k : heldOut)
+    if (k == 0 || k >= pass.size())
+      throw core::Error("all-around model: view " + std::to_string(k) + " cannot be held out (the first view, or none of the pass's " +
+                        std::to_string(pass.size()) + ")");
+  return build(rig, pass, p, measured.data().get(), nullptr, heldOut);
+}
+
 
 vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
                             const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask)

@@ -101,6 +101,16 @@ long DepthEvidence::carve(VisualHull &g, const std::vector<const hull::HullView 
   return removed;
 }
 
+DepthEvidence DepthEvidence::only(const std::vector<bool> &used) const
+{
+  DepthEvidence e;
+  e.params = params;
+  for (const View &v : views)
+    if (v.view >= 0 && static_cast<std::size_t>(v.view) < used.size() && used[static_cast<std::size_t>(v.view)])
+      e.views.push_back(v);
+  return e;
+}
+
 void DepthEvidence::counts(long &target, long &backdrop) const
 {
   target = backdrop = 0;
@@ -151,6 +161,7 @@ DepthEvidence measureStereo(const core::StereoRig &rig, const std::vector<hull::
       continue;
     DepthEvidence::View view;
     view.cam = L.cam;
+    view.view = L.view;
     view.silhouette = L.signedDist;
     // The target inside its silhouette, eroded (the edge mixes target and backdrop).
     vpImage<unsigned char> region = masks[i];

@@ -53,7 +53,7 @@ PoseUncertainty UncertaintyModel::uncertainty(const std::array<double, 6> &s, do
   if (!u.known)
     return u;
   for (std::size_t i = 0; i < 6; ++i) {
-    const double v = std::hypot(sigma(i, s[i], residualPx), modelErrorGain * modelError[i]);
+    const double v = gain[i] * std::hypot(sigma(i, s[i], residualPx), modelErrorGain * modelError[i]);
     (i < 3 ? u.sigmaMm[i] : u.sigmaDeg[i - 3]) = v;
   }
   return u;
@@ -62,8 +62,8 @@ PoseUncertainty UncertaintyModel::uncertainty(const std::array<double, 6> &s, do
 void UncertaintyModel::validate() const
 {
   for (std::size_t i = 0; i < 6; ++i)
-    if (!(std::isfinite(scale[i]) && scale[i] > 0 && std::isfinite(floor[i]) && floor[i] >= 0))
-      throw core::Error("uncertainty model: every scale must be positive and every floor non-negative (and finite)");
+    if (!(std::isfinite(scale[i]) && scale[i] > 0 && std::isfinite(floor[i]) && floor[i] >= 0 && std::isfinite(gain[i]) && gain[i] > 0))
+      throw core::Error("uncertainty model: every scale and gain must be positive and every floor non-negative (and finite)");
   if (!(std::isfinite(modelErrorGain) && modelErrorGain >= 0) || !(std::isfinite(modelErrorWidthDeg) && modelErrorWidthDeg > 0))
     throw core::Error("uncertainty model: the model error's gain must be non-negative and its width positive (and finite)");
 }

@@ -14,7 +14,11 @@ JudgementParams JudgementParams::forModel(const core::PhotoModel &model) const
     const ConfidenceKind kind = model.isAllAround() ? ConfidenceKind::AllAround : model.hasDepth() ? ConfidenceKind::Stereo : ConfidenceKind::Flat;
     p.confidence = ConfidenceModel::shipped(kind);
     p.confidence.threshold = confidence.threshold;
+    if (model.trust.measured) // read through the camera of the model's pass (core::TrustCalibration)
+      p.confidence = p.confidence.calibrated(model.trust);
   }
+  if (model.trust.measured)
+    p.uncertainty.gain = model.trust.sigmaGain;
   return p;
 }
 
@@ -124,6 +128,7 @@ void Judgement::judge(TrackResult &r, const Evidence &e, const JudgedState &stat
   r.visibleShare = e.visibleShare;
   r.confidence = m_p.confidence.confidence(c);
   r.trusted = c.tracking && r.verified && r.confidence >= m_p.confidence.threshold;
+  r.heldBy = r.trusted ? nullptr : !c.tracking ? toString(r.state) : !r.verified ? "verification" : m_p.confidence.weakestCueName(c);
 }
 
 } // namespace pm::tracker

@@ -29,6 +29,8 @@ std::array<double, ConfidenceCues::kFeatures> ConfidenceCues::features() const
           precise ? std::log1p(std::max(0.0, cameraDisagreementPx)) : 0.0};
 }
 
+bool ConfidenceCues::measured(std::size_t i) const { return i < kFirstPreciseFeature || precise; }
+
 const std::array<const char *, ConfidenceCues::kFeatures> &ConfidenceCues::featureNames()
 {
   static const std::array<const char *, kFeatures> names{"quality",       "quality_min",   "in_match_min",   "out_background_min",
@@ -80,11 +82,26 @@ std::array<bool, ConfidenceCues::kFeatures> ConfidenceModel::featuresUsed(Confid
   return used;
 }
 
+namespace {
+
+/*!
+  What right poses read in the lab (ConfidenceModel::reference): for the cues of the image, the median
+  of seven lab toys' medians (C01, C05, C08, C12, R1, R2, R3) over the right tries on their passes'
+  held-out views as steady locks (pm-make-model --target T, its trust_tries.csv; docs/trust.md); for
+  the state's, a steady verified lock moving a little (2 mm, 1 deg a frame).
+*/
+constexpr std::array<double, ConfidenceCues::kFeatures> kLabRightReading{
+    0.9930, 0.9910, 0.9925, 1.0000, 0.0, 0.2635, 0.0, 1.0986, 0.6931, 1.0, 1.0, 1.0, // log1p(2 mm), log1p(1 deg)
+    1.0,    0.7098, 0.2192, 0.3050, 0.9118, 0.3316};
+
+} // namespace
+
 ConfidenceModel ConfidenceModel::shipped(ConfidenceKind kind)
 {
   ConfidenceModel m{Blank{}};
   m.kind = kind;
   m.threshold = 0.95;
+  m.reference = kLabRightReading;
   switch (kind) {
   case ConfidenceKind::Flat:
     // Fitted by `pm-confidence --fit` on its labelled set (28,809 frames, 11 runs; docs/trust.md);
@@ -116,15 +133,51 @@ double ConfidenceModel::confidence(const ConfidenceCues &c) const
   const auto x = c.features();
   double s = bias;
   for (std::size_t i = 0; i < x.size(); ++i)
-    s += weights[i] * x[i];
+    s += weights[i] * (x[i] + (c.measured(i) ? shift[i] : 0.0));
   return 1.0 / (1.0 + std::exp(-s));
+}
+
+std::size_t ConfidenceModel::weakestCue(const ConfidenceCues &c) const
+{
+  const auto x = c.features();
+  std::size_t weakest = ConfidenceCues::kFeatures;
+  double lowest = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!c.measured(i))
+      continue;
+    const double d = weights[i] * (x[i] + shift[i] - reference[i]);
+    if (d < lowest) {
+      lowest = d;
+      weakest = i;
+    }
+  }
+  return weakest;
+}
+
+const char *ConfidenceModel::weakestCueName(const ConfidenceCues &c) const
+{
+  const std::size_t i = weakestCue(c);
+  return i < ConfidenceCues::kFeatures ? ConfidenceCues::featureNames()[i] : "confidence";
+}
+
+ConfidenceModel ConfidenceModel::calibrated(const core::TrustCalibration &t) const
+{
+  ConfidenceModel m = *this;
+  const auto &names = ConfidenceCues::featureNames();
+  for (const auto &[name, value] : t.cueShifts) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end())
+      throw core::Error("trust calibration: \"" + name + "\" is not a cue of the confidence");
+    m.shift[static_cast<std::size_t>(it - names.begin())] += value;
+  }
+  return m;
 }
 
 void ConfidenceModel::validate() const
 {
   bool finite = std::isfinite(bias);
-  for (double w : weights)
-    finite = finite && std::isfinite(w);
+  for (std::size_t i = 0; i < weights.size(); ++i)
+    finite = finite && std::isfinite(weights[i]) && std::isfinite(shift[i]) && std::isfinite(reference[i]);
   if (!finite)
     throw core::Error("confidence model: every weight and the bias must be finite");
   if (!(threshold > 0 && threshold < 1))

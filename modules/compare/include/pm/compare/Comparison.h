@@ -50,6 +50,7 @@ struct ComparisonParams
   double mbtMeshCellMm = 8;
   bool mbtTrueCad = false;                    //!< ViSP's MBT given the toy's own mesh (the lab knows it; CadMesh.h), decimated the same way
   bool refineOutlines = false;                //!< the all-around model's outlines refined (model::AllAroundParams::refineOutlines)
+  bool calibrateTrust = true; //!< the all-around model's trust calibrated from its pass (pm::trust; the shipped confidence otherwise)
   int viewpoints = model::AllAroundParams().viewpoints; //!< the all-around model's viewing directions (model::AllAroundParams::viewpoints)
   double minInsidePx = model::AllAroundParams().inMinInsidePx; //!< its S_in points this far inside the outline (model::AllAroundParams::inMinInsidePx)
   model::PassPlan pass;                       //!< the all-around model's pass (its views and rings)

@@ -27,6 +27,8 @@
 #include <array>
 #include <vector>
 
+#include "pm/core/TrustCalibration.h"
+
 namespace pm::core {
 
 /*!
@@ -153,6 +155,7 @@ struct PhotoModel
   static constexpr int kColourBins = 16; //!< bins per colour channel of the histograms
   bool hasColours = false;              //!< the S_in points carry the surface's colour (ModelPoint::r, g, b), for the precise stage's interior term
   std::vector<PassLanding> passLandings; //!< the precise stage on the pass's own views (all-around models; empty: not measured)
+  TrustCalibration trust;               //!< what the pass taught the confidence and the uncertainty (all-around models; pm::trust)
 
   //! True when every view (the model's own included) carries its outline: the precise stage can run.
   bool hasContours() const;

@@ -66,6 +66,7 @@ struct GuardedCommand
   bool servoing = false;      //!< the servo ran on the estimate (else the arm is being stopped)
   vpHomogeneousMatrix hMoUsed; //!< the pose the servo used: the (filtered) estimate, or the truth in oracle mode
   vpColVector qdot;           //!< the joint velocity to command for the next frame (after SafeCommand)
+  const char *heldBy = nullptr; //!< why the arm was being stopped (GuardedServo::heldBy(); null while servoing)
 };
 
 /*!
@@ -107,9 +108,18 @@ public:
   //! Whether the estimate is filtered (GuardParams::filter, Auto resolved for the tracker).
   bool filtering() const { return m_filtering; }
   //! False when \e u is known and over GuardParams::maxSigmaMm or maxSigmaDeg (each when positive).
-  bool certainEnough(const precise::PoseUncertainty &u) const;
+  bool certainEnough(const precise::PoseUncertainty &u) const { return uncertainAxis(u) == nullptr; }
+  //! The name of the axis whose sigma is farthest over its bound ("sigma_x_mm" ... "sigma_rz_deg"), or null when none is.
+  const char *uncertainAxis(const precise::PoseUncertainty &u) const;
   //! Whether \e track is usable (see GuardedServo.h) against the recent best quality as it stands.
-  bool usable(const tracker::TrackResult &track, bool frozen) const;
+  bool usable(const tracker::TrackResult &track, bool frozen) const { return heldBy(track, frozen) == nullptr; }
+  /*!
+    Why \e track is not usable (null: it is), a static string: the tracker's reason when it is not
+    trusted (TrackResult::heldBy), else "frozen_images", "quality" (under the lost threshold),
+    "quality_drop" (under the recent best by more than GuardParams::qualityDrop), "pose" (not valid),
+    the axis whose sigma is over its bound ("sigma_x_mm" ... "sigma_rz_deg"), or "search_space".
+  */
+  const char *heldBy(const tracker::TrackResult &track, bool frozen) const;
 
 private:
   servo::ServoParams m_sp;

@@ -37,9 +37,12 @@ void writeAllAroundPictures(const model::AllAroundBuild &build, const std::vecto
   \e keepViews, the pass itself in views/ (the layout loadViewsFolder reads; written after the rest
   has appeared, so that its failure leaves the model in place). \e source says where the pass
   came from (summary.json); \e truthJson (a JSON object, when not empty: the lab's check against the
-  toy) goes into the summary as "truth". Returns the summary's text.
+  toy) goes into the summary as "truth". The model's trust calibration (core::TrustCalibration), when
+  measured, goes into the summary as "trust_calibration"; \e moreFiles (name, text) are written with
+  the rest. Returns the summary's text.
 */
 std::string writeAllAroundModel(const model::AllAroundBuild &build, const std::vector<model::PassView> &pass, const core::StereoRig &rig,
-                                const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson = "");
+                                const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson = "",
+                                const std::vector<std::pair<std::string, std::string>> &moreFiles = {});
 
 } // namespace pm::io

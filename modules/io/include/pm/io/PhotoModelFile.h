@@ -64,6 +64,20 @@
         "colour_histograms": { "bins_per_channel": 16, "foreground": [[bin, p], ...], "background": [...] }
       }
 
+  An all-around model calibrated from its pass (pm::trust, core::TrustCalibration) is written as
+  version 6: version 5 and what the pass taught the confidence and the uncertainty through the
+  user's camera (a model of version 5 loads with none: the shipped confidence and sigmas):
+
+      {
+        "format": "visp-photomodel-model", "version": 6,
+        ... as version 5, and:
+        "trust_calibration": { "cue_shifts": {"out_background_min": 0.06, ...},   // added to each feature
+                               "right_readings": {"quality": 0.71, ...},          // the pass's right poses' medians
+                               "sigma_gain": [gx, gy, gz, grx, gry, grz], "guard": 1,
+                               "held_out_views": 15, "right_examples": 45, "wrong_examples": 260, "auroc": 0.998,
+                               "right_trusted": 0.93, "right_trusted_shipped": 0.4, "wrong_trusted": 0, ... }
+      }
+
   A model with every z = 0 is written as version 1, byte for byte as before; version 1 files
   load as flat models and behave exactly as they always did.
 */
@@ -95,5 +109,8 @@ core::PhotoModel loadPhotoModel(const std::string &path);
 std::string photoModelToJson(const core::PhotoModel &m);
 //! Writes a model (through a temporary file). Throws pm::core::Error.
 void savePhotoModel(const core::PhotoModel &m, const std::string &path);
+
+//! \e t as model.json's "trust_calibration" object (JSON text; pm-make-model's summary.json keeps it too).
+std::string trustCalibrationToJson(const core::TrustCalibration &t);
 
 } // namespace pm::io

@@ -84,6 +84,7 @@ struct LoopFrame
   CameraFault fault = CameraFault::None; //!< the fault injected at this frame
   bool frozen = false;           //!< the images were the very same as the last ones
   bool servoing = false;         //!< the servo ran on the estimate (else the arm was being stopped)
+  const char *heldBy = nullptr;  //!< why it was stopped (hand::GuardedServo::heldBy(): the tracker's cue, the state, the uncertainty...; null while servoing)
   //! The arm's joints after the frame (rad or m).
   vpColVector q, qdot;           //!< the joint velocity commanded during the frame (rad/s or m/s, after SafeCommand and the arm's clamp)
   double translationErrorMm = 0; //!< true relative pose against the desired one: translation (mm) ...

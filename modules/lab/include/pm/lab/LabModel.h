@@ -30,6 +30,7 @@ struct LabModelChoice
   int passViews = 16;       //!< hand poses of the all-around model's pass
   std::vector<double> passRingsDeg{20, 40}; //!< its rings' angles from the rest axis (deg; PassPlan::ringsDeg)
   model::AllAroundParams allAroundParams; //!< the all-around build (refinement depth, viewpoints, backdrop)
+  bool calibrateTrust = true; //!< the all-around model's trust calibrated from its pass (pm::trust; off: the shipped confidence and sigmas)
 };
 
 /*!

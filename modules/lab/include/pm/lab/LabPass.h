@@ -55,11 +55,13 @@ LabPass runLabPass(const sim::Scene &scene, const core::StereoRig &rig, const mo
   The lab's all-around model of \e scene's toy: the pass of \e plan by \e arm (a pm::robot::makeArmModel()
   name, stepped in our loop from its rest joints, the rig on its flange) with the toy at
   (0, 0, \e distanceMm) in the hand frame at rest, then buildAllAroundModel(); with the model frame
-  in the toy's frame (oMm) for ground truth. \e build (when given) receives the whole build.
+  in the toy's frame (oMm) for ground truth. \e build (when given) receives the whole build. With
+  \e calibrateTrust, the model's trust is calibrated from the pass as pm-make-model calibrates it
+  (pm::trust::calibrateFromPass(), its default parameters).
 */
 sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan,
                                                      const std::string &arm = "pa10", double distanceMm = 500,
                                                      const model::AllAroundParams &params = model::AllAroundParams(),
-                                                     model::AllAroundBuild *build = nullptr);
+                                                     model::AllAroundBuild *build = nullptr, bool calibrateTrust = false);
 
 } // namespace pm::lab

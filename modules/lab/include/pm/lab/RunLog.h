@@ -14,6 +14,8 @@
   \endcode
 */
 #include <array>
+#include <map>
+#include <string>
 #include <cstddef>
 #include <vector>
 
@@ -107,6 +109,8 @@ public:
   long framesServoedOnWrongRawEstimate() const { return m_servoedOnWrongRaw; }
   //! Frames the arm was held (stopped or stopping: the estimate not usable).
   long framesHeld() const { return m_held; }
+  //! The frames held, by why (LoopFrame::heldBy: the tracker's cue, its state, the uncertainty's axis...).
+  const std::map<std::string, long> &heldBy() const { return m_heldBy; }
   //! Frames the servo acted on (LoopFrame::servoing).
   long framesServoed() const { return m_servoed; }
   //! The tracker's own estimate against the truth over the tracked frames from convergence on (ErrorStats: rms and max).
@@ -151,6 +155,7 @@ private:
   double m_nearestMm = 1e9;
   std::array<ErrorStats, 200> m_byDistance{}; //!< the tracked frames' estimate errors in 10 mm bands of distance (0 to 2 m)
   long m_servoedOnWrong = 0, m_servoedOnWrongRaw = 0, m_held = 0, m_servoed = 0, m_precise = 0;
+  std::map<std::string, long> m_heldBy; //!< the frames held, by why
   ErrorStats m_estimate;
   std::vector<RunSample> m_samples;
   RunSample m_open;

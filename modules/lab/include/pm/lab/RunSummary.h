@@ -5,6 +5,7 @@
   at rest and while moving, by tenth of the run, joints, frames servoed, held and servoed on a
   wrong pose, time, memory) and the same figures as a few lines of text.
 */
+#include <map>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,8 @@ struct RunInfo
 std::string runSummaryJson(const RunLog &log, const RunInfo &info);
 //! The figures as text, one line each (what pm-servo prints).
 std::string runSummaryText(const RunLog &log, const RunInfo &info);
+
+//! The frames held by why, most first: "verification 8, precise_residual_px 3" ("none" for none).
+std::string heldByText(const std::map<std::string, long> &heldBy);
 
 } // namespace pm::lab

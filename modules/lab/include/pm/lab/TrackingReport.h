@@ -59,9 +59,27 @@ struct TrackingReport
       \var TrackingReport::rotationRmsDeg
       \brief rms angle between the estimate's rotation and the truth's (deg) */
   double positionRmsMm = 0, positionMaxMm = 0, rotationRmsDeg = 0, rotationMaxDeg = 0; //!< its largest value (deg)
+  long trustedFrames = 0;     //!< frames trusted (TrackResult::trusted)
+  std::map<std::string, long> heldBy; //!< the frames not trusted, by why (TrackResult::heldBy)
+  long rightFrames = 0;       //!< frames whose estimate is within 5 mm and 2 deg of the truth
+  long rightTrusted = 0;      //!< ... of them trusted
+  long wrongFrames = 0;       //!< frames whose estimate is over 20 mm or 5 deg off
+  long wrongTrusted = 0;      //!< ... of them trusted (a robot would have acted on them)
+  /*!
+    The share of the true errors within the reported 1-sigma, per axis (along the hand's x, y, z, about
+    them), over the tracked frames after convergence with a known uncertainty; sigmaFrames of them.
+  */
+  std::array<double, 6> withinSigma{};
+  long sigmaFrames = 0;       //!< frames the shares are over
   //! The names of the pose variables, in the order of \e errors.
   static const std::array<const char *, 6> &names();
 };
+
+//! A right estimate lies within these of the truth (mm, deg), a wrong one beyond kWrongMm or kWrongDeg.
+constexpr double kRightMm = 5, kRightDeg = 2, kWrongMm = 20, kWrongDeg = 5;
+
+//! Estimate less truth along the hand's x, y, z (mm) and about them (deg, the rotation Re Rt^T's theta-u).
+std::array<double, 6> handFrameErrors(const core::Phi &estimate, const core::Phi &truth);
 
 //! Table 2's goals: 5, 5, 8 mm on x, y, z; 0.02 on each eps.
 std::array<double, 6> table2Goals();
@@ -87,6 +105,10 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
 */
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames);
 
+//! ",cue_quality,...": the confidence's features (ConfidenceCues::features(), as it weighs them) for a CSV header.
+std::string cuesCsvHeader();
+//! \e c's features as CSV cells, each preceded by a comma.
+void writeCueCells(std::ostream &out, const tracker::ConfidenceCues &c);
 //! The uncertainty's columns of a frames.csv: ",sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg".
 const char *uncertaintyCsvHeader();
 //! Its six cells of one frame, each after a comma; empty when the uncertainty is unknown (TrackResult::uncertainty).

@@ -37,6 +37,7 @@
       pm::io::savePhotoModel(b.model, "model.json");
       std::cout << b.surface.size() << " surface points, hull " << b.hullVolumeCm3 << " cm3\n";
 */
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -187,6 +188,42 @@ int main()
 */
 AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass,
                                    const AllAroundParams &params = AllAroundParams());
+
+/*!
+  What buildAllAroundModel() measured of each view of a pass, whatever views a model is built from:
+  the silhouettes, the ideal photos and backgrounds, the views' stereo depths. A model built again
+  without some of the views (buildAllAroundModelWithout()) reuses them instead of measuring them again:
+  pm::trust's held-out models, at two fifths of a build each. Shared and immutable (a copy is cheap).
+*/
+class PassMeasurements
+{
+public:
+  struct Data; //!< what was measured (AllAroundModelBuilder.cpp)
+  //! True when nothing was measured (a default-constructed one).
+  bool empty() const { return !m_data; }
+  //! What was measured (null when empty()).
+  const std::shared_ptr<const Data> &data() const { return m_data; }
+  //! Holds \e d.
+  explicit PassMeasurements(std::shared_ptr<const Data> d = nullptr) : m_data(std::move(d)) {}
+
+private:
+  std::shared_ptr<const Data> m_data;
+};
+
+//! buildAllAroundModel(), and what it measured of each view into \e measured (for buildAllAroundModelWithout()).
+AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &params,
+                                   PassMeasurements &measured);
+
+/*!
+  The all-around model of \e pass without its views \e heldOut (indices into \e pass; the first view
+  cannot be held out: the model's frame and viewpoints come from it), from what \e measured holds of
+  the views (measured by buildAllAroundModel() on the same \e pass with the same \e params): the same
+  model as buildAllAroundModel() of the other views, but that the stereo depths' search spans the whole
+  pass's hull. Throws pm::core::Error for an empty \e measured, a held-out first view or index out of
+  range, and as buildAllAroundModel() (too few views left, ...).
+*/
+AllAroundBuild buildAllAroundModelWithout(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &params,
+                                          const PassMeasurements &measured, const std::vector<std::size_t> &heldOut);
 
 /*!
   The hull's surface drawn by a camera at \e mMc (its pose in the model frame, metres) with

@@ -74,9 +74,13 @@ public:
     cv::Mat backdrop;  //!< CV_32F, the backdrop's depth, NaN elsewhere (empty: none)
     cv::Mat silhouette; //!< CV_32F, its silhouette's signed distance (px, HullView::signedDist)
     cv::Mat weight;    //!< CV_32F, each depth's weight, from how squarely the view sees the surface there
+    int view = -1;     //!< the pass view it belongs to (HullView::view)
   };
   FusionParams params; //!< the fusion's parameters
   std::vector<View> views; //!< the cameras with their depths
+
+  //! This evidence with the views of \e used only (used[HullView::view]: a model built without some of the pass's views).
+  DepthEvidence only(const std::vector<bool> &used) const;
 
   /*!
     The evidence's field at \e X (mm, as the hull's: positive inside): the least of the surface's

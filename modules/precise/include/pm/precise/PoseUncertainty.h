@@ -75,6 +75,12 @@ struct UncertaintyModel
   */
   double modelErrorGain = 1.0;
   double modelErrorWidthDeg = 10; //!< the Gaussian weights' width on the angle between directions (deg)
+  /*!
+    Each axis's sigma, all terms together, times this: 1 for the shipped model; a model calibrated from
+    its pass sets it so that 68 % of its held-out views' true errors fall within 1 sigma through the
+    user's own camera (core::TrustCalibration::sigmaGain).
+  */
+  std::array<double, 6> gain{1, 1, 1, 1, 1, 1};
   //! The shipped model.
   UncertaintyModel();
   /*!
@@ -87,7 +93,7 @@ struct UncertaintyModel
                               const std::array<double, 6> &modelError = std::array<double, 6>{}) const;
   //! The sigma on \e axis (0..5: x, y, z, about x, y, z) of a line sigma \e lineSigma (mm or deg) and a residual \e residualPx.
   double sigma(std::size_t axis, double lineSigma, double residualPx) const { return std::hypot(scale[axis] * residualPx * lineSigma, floor[axis]); }
-  //! Throws pm::core::Error if a scale is not positive, a floor or the model error's gain negative or not finite, or its width not positive.
+  //! Throws pm::core::Error if a scale or gain is not positive, a floor or the model error's gain negative or not finite, or its width not positive.
   void validate() const;
 };
 

@@ -40,6 +40,8 @@
 #include <array>
 #include <string>
 
+#include "pm/core/TrustCalibration.h"
+
 namespace pm::tracker {
 
 //! The cues of one frame (see the file's description); the tracker fills them in TrackResult::cues.
@@ -77,6 +79,10 @@ struct ConfidenceCues
     separation and the disagreement, each 0 when the flag is 0).
   */
   std::array<double, kFeatures> features() const;
+  //! The precise stage's features begin here (the flag "precise", then its cues).
+  static constexpr std::size_t kFirstPreciseFeature = 13;
+  //! Whether feature \e i was measured on this frame: the precise stage's cues only when its pose is the frame's.
+  bool measured(std::size_t i) const;
   //! The features' names, in the order of features() ("quality", "quality_min", ..., "tracking").
   static const std::array<const char *, kFeatures> &featureNames();
 };
@@ -133,6 +139,16 @@ struct ConfidenceModel
     the bias with those shipped for its model's kind (the threshold stays); Custom: as given.
   */
   ConfidenceKind kind = ConfidenceKind::Auto;
+  /*!
+    Added to each feature before it is weighed: zeros for the shipped reading; a model calibrated from
+    its pass moves the cues its camera reads worse at right poses than the lab's (calibrated()).
+  */
+  std::array<double, ConfidenceCues::kFeatures> shift{};
+  /*!
+    What a right pose reads, feature by feature, after the shift: the lab's right poses for the
+    shipped coefficients (their median), the reference heldBy() measures a frame against.
+  */
+  std::array<double, ConfidenceCues::kFeatures> reference{};
 
   //! The flat model's shipped coefficients, kind Auto, threshold 0.95.
   ConfidenceModel();
@@ -144,9 +160,22 @@ struct ConfidenceModel
   static ConfidenceModel shipped(ConfidenceKind kind);
   //! The features a model of \e kind weighs (the others' weights are 0): Flat the first 12, Stereo those but the tilt, AllAround also the precise stage's.
   static std::array<bool, ConfidenceCues::kFeatures> featuresUsed(ConfidenceKind kind);
-  //! 1 / (1 + exp(-(w . x + b))) with x = c.features(): in (0, 1).
+  //! 1 / (1 + exp(-(w . (x + shift) + b))) with x = c.features(), a feature not measured on the frame not shifted: in (0, 1).
   double confidence(const ConfidenceCues &c) const;
-  //! Throws pm::core::Error if a coefficient is not finite or the threshold is outside (0, 1).
+  /*!
+    The feature that lowers \e c's confidence most below a right pose's: the index j of the most
+    negative w_j (x_j + shift_j - reference_j) over the features measured on the frame
+    (ConfidenceCues::featureNames() names it; kFeatures when none lowers it).
+  */
+  std::size_t weakestCue(const ConfidenceCues &c) const;
+  //! The name of weakestCue() (ConfidenceCues::featureNames()), or "confidence" when no measured cue reads below a right pose's.
+  const char *weakestCueName(const ConfidenceCues &c) const;
+  /*!
+    These coefficients read through the camera of a model's pass (core::TrustCalibration): its
+    cueShifts added to the shift. Throws pm::core::Error naming a cue that is not a feature.
+  */
+  ConfidenceModel calibrated(const core::TrustCalibration &t) const;
+  //! Throws pm::core::Error if a coefficient, shift or reference is not finite or the threshold is outside (0, 1).
   void validate() const;
 
 private:

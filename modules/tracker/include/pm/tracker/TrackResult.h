@@ -69,6 +69,14 @@ struct TrackResult
   bool switched = false;     //!< the challenger found a better pose elsewhere this frame and the tracker moved there
   //! Tracking, verified and confidence at or above the threshold: a pose a robot may act on.
   bool trusted = false;
+  /*!
+    Why a frame is not trusted, for the user whose arm waits (null when trusted): the state
+    ("searching", "lost"), "verification" (a new lock awaits its challenger's search), or the cue
+    that lowers the confidence most below what a right pose reads (ConfidenceModel::weakestCue(): one
+    of ConfidenceCues::featureNames(), "precise_residual_px", "separation", ...; "confidence" when no
+    cue reads below a right pose's). A static string.
+  */
+  const char *heldBy = nullptr;
 };
 
 } // namespace pm::tracker

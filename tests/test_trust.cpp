@@ -1,0 +1,270 @@
+// trust: the pass's calibration of the confidence and the uncertainty (issue 56): the held-out views, the shifts that read the cues as the lab's right poses read them, the guard that keeps every
+// wrong try away from the threshold, the sigmas' gains, the calibration in model.json, and what the
+// tracker reads of it (the shifted confidence, the gained sigmas, the cue that holds a frame). The whole
+// calibration on the lab's crab pass is in test_allaround.cpp (its costly fixture).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+#include "TestSupport.h"
+#include "pm/io/PhotoModelFile.h"
+#include "pm/tracker/Judgement.h"
+#include "pm/trust/HeldOutViews.h"
+#include "pm/trust/PassCalibration.h"
+
+namespace {
+
+using pm::tracker::ConfidenceCues;
+
+//! A steady lock's cues as the precise stage reads them: \e residualPx, \e separation, \e outBackground.
+ConfidenceCues cues(double residualPx, double separation, double outBackground, double quality = 0.995)
+{
+  ConfidenceCues c;
+  c.quality = c.qualityMin = c.inMatchMin = quality;
+  c.outBackgroundMin = outBackground;
+  c.competitorMargin = 0.3;
+  c.framesTracked = 30;
+  c.verified = c.tracking = c.precise = true;
+  c.preciseResidualPx = residualPx;
+  c.preciseSigmaMm = 0.2;
+  c.preciseSigmaDeg = 0.3;
+  c.separation = separation;
+  c.cameraDisagreementPx = 0.5;
+  return c;
+}
+
+pm::trust::PassTry tryOf(const ConfidenceCues &c, double errorMm, std::size_t view)
+{
+  pm::trust::PassTry t;
+  t.view = view;
+  t.start = "near";
+  t.cues = c;
+  t.errorMm = errorMm;
+  t.error[0] = errorMm;
+  return t;
+}
+
+//! The smallest all-around model a file writes as version 5: 17 viewpoints, each a point of S_in and S_out and an outline point.
+pm::core::PhotoModel smallAllAroundModel()
+{
+  pm::core::PhotoModel m;
+  m.distanceMm = 500;
+  m.px = m.py = 754;
+  m.u0 = 320, m.v0 = 240;
+  m.photoWidth = 640, m.photoHeight = 480;
+  m.centroidU = 320, m.centroidV = 240;
+  m.backgroundHue = 205;
+  m.targetHue = 10;
+  m.inner.push_back({0.f, 0.f, -5.f, 10.f, 0.f, 0.f});
+  m.inner.back().r = 200;
+  m.outer.push_back({40.f, 0.f, 0.f, 205.f, 0.f, 0.f});
+  m.contour.push_back({30.f, 0.f, 0.f, 1.f, 0.f, 0.f, 5.f, 5.f});
+  m.cameraMm[2] = -500;
+  m.hasColours = true;
+  for (int k = 0; k < 17; ++k) {
+    pm::core::ModelView v;
+    v.cameraMm[0] = 10.0 * k;
+    v.cameraMm[2] = -500;
+    v.inner = m.inner;
+    v.outer = m.outer;
+    v.contour = m.contour;
+    m.views.push_back(v);
+  }
+  return m;
+}
+
+double shiftOf(const pm::core::TrustCalibration &t, const std::string &name)
+{
+  for (const auto &[n, v] : t.cueShifts)
+    if (n == name)
+      return v;
+  return 0;
+}
+
+} // namespace
+
+TEST(HeldOutViews, AFewViewsSpreadOverThePassEachHeldOutAlone)
+{
+  const auto folds = pm::trust::heldOutFolds(16, 6);
+  ASSERT_EQ(folds.size(), 6u);
+  std::set<std::size_t> seen;
+  for (const auto &f : folds) {
+    ASSERT_EQ(f.size(), 1u); // a model built without that view alone
+    seen.insert(f[0]);
+  }
+  EXPECT_EQ(seen.size(), 6u);
+  EXPECT_EQ(seen.count(0), 0u); // the model's frame and viewpoints come from view 0
+  EXPECT_LE(*seen.begin(), 3u);  // spread from the first ring ...
+  EXPECT_GE(*seen.rbegin(), 13u); // ... to the last views
+  EXPECT_EQ(pm::trust::heldOutFolds(4, 8).size(), 3u); // at most every view but the first
+  EXPECT_TRUE(pm::trust::heldOutFolds(1, 4).empty());
+  EXPECT_TRUE(pm::trust::heldOutFolds(16, 0).empty());
+}
+
+TEST(PassCalibration, ACameraThatReadsRightPosesWorseIsReadAsTheLabWithoutTrustingAWrongTry)
+{
+  // Right tries through a soft camera: a residual of 1.4 px, a separation of 0.85, S_out 97 % on the
+  // background (the lab's toys read 0.71 px, 0.91, 100 %); wrong tries far below.
+  std::vector<pm::trust::PassTry> tries;
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n(0, 1);
+  for (std::size_t k = 0; k < 40; ++k)
+    tries.push_back(tryOf(cues(1.4 + 0.1 * n(rng), 0.85 + 0.01 * n(rng), 0.97 + 0.005 * n(rng)), 1.0, k % 15 + 1));
+  for (std::size_t k = 0; k < 60; ++k)
+    tries.push_back(tryOf(cues(3.6 + 0.2 * n(rng), 0.70 + 0.02 * n(rng), 0.72 + 0.03 * n(rng), 0.85), 35.0, k % 15 + 1));
+  const pm::tracker::ConfidenceModel shipped = pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::AllAround);
+  const pm::core::TrustCalibration t = pm::trust::calibrateTrust(tries, shipped, pm::trust::CalibrationParams());
+  ASSERT_TRUE(t.measured);
+  EXPECT_EQ(t.rightExamples, 40);
+  EXPECT_EQ(t.wrongExamples, 60);
+  EXPECT_EQ(t.heldOutViews, 15);
+  // Each deficit made up, within the spread of its median; the shape's cues never moved.
+  EXPECT_NEAR(shiftOf(t, "precise_residual_px"), shipped.reference[13] - 1.4, 0.05);
+  EXPECT_NEAR(shiftOf(t, "separation"), shipped.reference[16] - 0.85, 0.005);
+  EXPECT_NEAR(shiftOf(t, "out_background_min"), shipped.reference[3] - 0.97, 0.003);
+  EXPECT_EQ(shiftOf(t, "competitor_margin"), 0.0);
+  EXPECT_EQ(shiftOf(t, "log1p_precise_sigma_mm"), 0.0);
+  EXPECT_EQ(shiftOf(t, "quality"), 0.0); // it reads 0.995, over the lab's
+  EXPECT_EQ(t.guard, 1.0);
+  // The right tries read as the lab's worst toy reads right poses: their confidence that one's, not the soft camera's.
+  std::vector<double> before, after;
+  for (const auto &x : tries)
+    if (x.right()) {
+      before.push_back(shipped.confidence(x.cues));
+      after.push_back(shipped.calibrated(t).confidence(x.cues));
+    }
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
+  const double atReference = shipped.confidence(cues(shipped.reference[13], shipped.reference[16], shipped.reference[3]));
+  EXPECT_LT(before[before.size() / 2], shipped.threshold);
+  EXPECT_GT(atReference, 0.9);
+  EXPECT_NEAR(after[after.size() / 2], atReference, 0.01);
+  EXPECT_GE(t.rightTrusted, t.rightTrustedShipped);
+  EXPECT_EQ(t.wrongTrusted, 0);
+  EXPECT_GT(t.auroc, 0.99);
+  // A camera far worse: the shifts scaled down together, adding no more than maxLogitGain to the logit.
+  std::vector<pm::trust::PassTry> worse = tries;
+  for (auto &x : worse)
+    if (x.right())
+      x.cues.preciseResidualPx += 1.5;
+  const pm::core::TrustCalibration capped = pm::trust::calibrateTrust(worse, shipped, pm::trust::CalibrationParams());
+  double gain = 0;
+  for (const auto &[name, v] : capped.cueShifts)
+    gain += shipped.weights[static_cast<std::size_t>(std::find(pm::tracker::ConfidenceCues::featureNames().begin(),
+                                                               pm::tracker::ConfidenceCues::featureNames().end(), name) -
+                                                     pm::tracker::ConfidenceCues::featureNames().begin())] * v;
+  EXPECT_NEAR(gain, pm::trust::CalibrationParams().maxLogitGain * capped.guard, 1e-9);
+  // The tracker reads the same shifts from the model: a right try's confidence as the calibration said.
+  pm::core::PhotoModel m;
+  m.trust = t;
+  const pm::tracker::JudgementParams jp = pm::tracker::JudgementParams().forModel(m);
+  EXPECT_DOUBLE_EQ(jp.confidence.shift[13], shiftOf(t, "precise_residual_px"));
+  EXPECT_GT(jp.confidence.confidence(tries[0].cues), shipped.confidence(tries[0].cues));
+}
+
+TEST(PassCalibration, TheGuardShrinksTheShiftsUntilNoWrongTryComesNearTheThreshold)
+{
+  // As above, and one wrong try that reads almost as a right one (a near miss 25 mm off): the full
+  // shifts would lift it over the ceiling, so they are shrunk until it stays under.
+  std::vector<pm::trust::PassTry> tries;
+  for (std::size_t k = 0; k < 30; ++k)
+    tries.push_back(tryOf(cues(1.4, 0.85, 0.97), 1.0, k % 10 + 1));
+  tries.push_back(tryOf(cues(1.5, 0.85, 0.97), 25.0, 3));
+  const pm::tracker::ConfidenceModel shipped = pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::AllAround);
+  const pm::trust::CalibrationParams p;
+  const pm::core::TrustCalibration t = pm::trust::calibrateTrust(tries, shipped, p);
+  ASSERT_TRUE(t.measured);
+  EXPECT_LT(t.guard, 1.0);
+  EXPECT_LE(t.wrongMaxConfidence, std::max(p.wrongCeiling, shipped.confidence(tries.back().cues)) + 1e-12);
+  EXPECT_EQ(t.wrongTrusted, 0);
+  // No right try: nothing is measured, the shipped confidence stays.
+  const pm::core::TrustCalibration none = pm::trust::calibrateTrust({tries.back()}, shipped, p);
+  EXPECT_FALSE(none.measured);
+}
+
+TEST(PassCalibration, TheSigmasWidenToHoldTheHeldOutErrorsAndNeverNarrow)
+{
+  std::vector<pm::trust::PassTry> tries;
+  std::mt19937 rng(9);
+  std::normal_distribution<double> n(0, 1);
+  for (std::size_t k = 0; k < 400; ++k) {
+    pm::trust::PassTry t = tryOf(cues(1.0, 0.9, 1.0), 1.0, k % 15 + 1);
+    t.uncertainty.known = true;
+    t.uncertainty.sigmaMm = {1.0, 1.0, 1.0};
+    t.uncertainty.sigmaDeg = {0.5, 0.5, 0.5};
+    t.error = {2.0 * n(rng), 0.3 * n(rng), 1.0 * n(rng), 0.5 * n(rng), 0.1 * n(rng), 1.5 * n(rng)};
+    t.errorMm = 0.5;
+    tries.push_back(t);
+  }
+  const pm::core::TrustCalibration t =
+      pm::trust::calibrateTrust(tries, pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::AllAround), pm::trust::CalibrationParams());
+  EXPECT_NEAR(t.sigmaGain[0], 2.0, 0.2); // errors twice the sigma: widened twice
+  EXPECT_EQ(t.sigmaGain[1], 1.0);        // errors well within: never narrowed
+  EXPECT_NEAR(t.sigmaGain[2], 1.0, 0.1);
+  EXPECT_NEAR(t.sigmaGain[5], 3.0, 0.3);
+  for (std::size_t a : {0u, 2u, 5u})
+    EXPECT_NEAR(t.withinSigma[a], 0.6827, 0.05) << a;
+  EXPECT_GT(t.withinSigma[1], 0.99);
+  pm::core::PhotoModel m;
+  m.trust = t;
+  EXPECT_EQ(pm::tracker::JudgementParams().forModel(m).uncertainty.gain, t.sigmaGain);
+}
+
+TEST(PassCalibration, TheModelFileKeepsItAndAnOlderModelLoadsWithNone)
+{
+  pm::test::TempDir dir("trust_file");
+  const pm::core::PhotoModel m = smallAllAroundModel();
+  pm::io::savePhotoModel(m, dir.file("v5.json"));
+  EXPECT_NE(pm::test::readText(dir.file("v5.json")).find("\"version\":5"), std::string::npos);
+  EXPECT_FALSE(pm::io::loadPhotoModel(dir.file("v5.json")).trust.measured);
+  pm::core::PhotoModel c = m;
+  c.trust.measured = true;
+  c.trust.cueShifts = {{"precise_residual_px", -0.4}, {"separation", 0.02}};
+  c.trust.rightReadings = {{"quality", 0.98}};
+  c.trust.sigmaGain = {1.5, 1, 1, 1.2, 1, 1};
+  c.trust.guard = 0.7;
+  c.trust.auroc = 0.99;
+  pm::io::savePhotoModel(c, dir.file("v6.json"));
+  const std::string text = pm::test::readText(dir.file("v6.json"));
+  EXPECT_NE(text.find("\"version\":6"), std::string::npos);
+  const pm::core::PhotoModel back = pm::io::loadPhotoModel(dir.file("v6.json"));
+  ASSERT_TRUE(back.trust.measured);
+  EXPECT_EQ(back.trust.sigmaGain, c.trust.sigmaGain);
+  EXPECT_DOUBLE_EQ(back.trust.guard, 0.7);
+  ASSERT_EQ(back.trust.cueShifts.size(), 2u);
+  EXPECT_DOUBLE_EQ(shiftOf(back.trust, "precise_residual_px"), -0.4);
+  // A cue the confidence does not know, and a gain out of range, are refused naming them.
+  std::string bad = text;
+  bad.replace(bad.find("precise_residual_px"), 19, "precise_resdual_px!");
+  pm::test::writeText(dir.file("bad.json"), bad);
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::JudgementParams().forModel(pm::io::loadPhotoModel(dir.file("bad.json"))); }).find("precise_resdual_px!"),
+            std::string::npos);
+  bad = text;
+  bad.replace(bad.find("\"sigma_gain\":[1.5"), 17, "\"sigma_gain\":[-1.5");
+  pm::test::writeText(dir.file("bad2.json"), bad);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad2.json")); }).find("sigma_gain"), std::string::npos);
+}
+
+TEST(Judgement, AFrameNotTrustedNamesTheCueThatHeldIt)
+{
+  const pm::tracker::ConfidenceModel m = pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::AllAround);
+  ConfidenceCues c = cues(0.6, 0.95, 1.0);
+  EXPECT_STREQ(m.weakestCueName(c), "confidence"); // reads as well as a right pose on every cue
+  c.preciseResidualPx = 2.5;
+  EXPECT_STREQ(m.weakestCueName(c), "precise_residual_px");
+  c.preciseResidualPx = 1.5;
+  c.outBackgroundMin = 0.3;
+  EXPECT_STREQ(m.weakestCueName(c), "out_background_min"); // 4.34 x 0.7 outweighs 2.19 x 0.79
+  c = cues(0.6, 0.95, 1.0);
+  c.framesTracked = 2;
+  EXPECT_STREQ(m.weakestCueName(c), "frames_tracked");
+  // A frame without the precise stage's pose: its cues are not read (nor shifted).
+  c = cues(0.6, 0.95, 1.0);
+  c.precise = false;
+  pm::tracker::ConfidenceModel shifted = m;
+  shifted.shift[13] = -1;
+  EXPECT_DOUBLE_EQ(shifted.confidence(c), m.confidence(c));
+  EXPECT_STREQ(m.weakestCueName(c), "precise");
+}
