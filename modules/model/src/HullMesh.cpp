@@ -109,18 +109,20 @@ void HullMesh::depthMap(const core::PinholeCamera::Projection &cam, std::vector<
               x1 = std::min(cam.w - 1, static_cast<int>(std::floor(std::max({u[0], u[1], u[2]})))),
               y0 = std::max(0, static_cast<int>(std::ceil(std::min({v[0], v[1], v[2]})))),
               y1 = std::min(cam.h - 1, static_cast<int>(std::floor(std::max({v[0], v[1], v[2]}))));
-    for (int y = y0; y <= y1; ++y)
+    const double inv = 1.0 / area, iz[3] = {1.0 / z[0], 1.0 / z[1], 1.0 / z[2]};
+    for (int y = y0; y <= y1; ++y) {
+      float *row = zbuf.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w);
       for (int x = x0; x <= x1; ++x) {
         // Barycentric weights of the pixel centre (x, y); inside when all of one sign as the area's.
-        const double w0 = ((u[1] - x) * (v[2] - y) - (u[2] - x) * (v[1] - y)) / area;
-        const double w1 = ((u[2] - x) * (v[0] - y) - (u[0] - x) * (v[2] - y)) / area;
+        const double w0 = ((u[1] - x) * (v[2] - y) - (u[2] - x) * (v[1] - y)) * inv;
+        const double w1 = ((u[2] - x) * (v[0] - y) - (u[0] - x) * (v[2] - y)) * inv;
         const double w2 = 1.0 - w0 - w1;
         if (w0 < 0 || w1 < 0 || w2 < 0)
           continue;
-        const float d = static_cast<float>(1.0 / (w0 / z[0] + w1 / z[1] + w2 / z[2])); // perspective-correct depth
-        float &b = zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
-        b = std::min(b, d);
+        const float d = static_cast<float>(1.0 / (w0 * iz[0] + w1 * iz[1] + w2 * iz[2])); // perspective-correct depth
+        row[x] = std::min(row[x], d);
       }
+    }
   }
 }
 
