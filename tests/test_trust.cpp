@@ -85,22 +85,32 @@ double shiftOf(const pm::core::TrustCalibration &t, const std::string &name)
 
 } // namespace
 
-TEST(HeldOutViews, AFewViewsSpreadOverThePassEachHeldOutAlone)
+TEST(HeldOutViews, AFewViewsSpreadOverThePassHeldOutInPairsFarApart)
 {
-  const auto folds = pm::trust::heldOutFolds(16, 6);
-  ASSERT_EQ(folds.size(), 6u);
+  const auto alone = pm::trust::heldOutFolds(16, 6);
+  ASSERT_EQ(alone.size(), 6u);
+  for (const auto &f : alone)
+    EXPECT_EQ(f.size(), 1u); // a model built without that view alone
+  const auto folds = pm::trust::heldOutFolds(16, 6, 2);
+  ASSERT_EQ(folds.size(), 3u);
   std::set<std::size_t> seen;
-  for (const auto &f : folds) {
-    ASSERT_EQ(f.size(), 1u); // a model built without that view alone
-    seen.insert(f[0]);
+  for (std::size_t i = 0; i < folds.size(); ++i) {
+    ASSERT_EQ(folds[i].size(), 2u);
+    EXPECT_EQ(folds[i][0], alone[i][0]); // the same views as one a model ...
+    EXPECT_EQ(folds[i][1], alone[i + 3][0]);
+    EXPECT_GE(folds[i][1] - folds[i][0], 6u); // ... two a model, far apart: each keeps its neighbours
+    seen.insert(folds[i].begin(), folds[i].end());
   }
   EXPECT_EQ(seen.size(), 6u);
   EXPECT_EQ(seen.count(0), 0u); // the model's frame and viewpoints come from view 0
   EXPECT_LE(*seen.begin(), 3u);  // spread from the first ring ...
   EXPECT_GE(*seen.rbegin(), 13u); // ... to the last views
   EXPECT_EQ(pm::trust::heldOutFolds(4, 8).size(), 3u); // at most every view but the first
+  EXPECT_EQ(pm::trust::heldOutFolds(16, 5, 2).size(), 3u); // an odd count: the last model holds one out
   EXPECT_TRUE(pm::trust::heldOutFolds(1, 4).empty());
   EXPECT_TRUE(pm::trust::heldOutFolds(16, 0).empty());
+  EXPECT_TRUE(pm::trust::heldOutFolds(16, 6, 0).empty());
+  EXPECT_EQ(pm::trust::calibrationSteps(16), 6u + 6u); // a step a model built and one a view tried
 }
 
 TEST(PassCalibration, ACameraThatReadsRightPosesWorseIsReadAsTheLabWithoutTrustingAWrongTry)

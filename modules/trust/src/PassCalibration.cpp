@@ -141,6 +141,7 @@ void CalibrationParams::validate() const
       throw core::Error(std::string("trust calibration: ") + what);
   };
   check(heldOutViews >= 1 && heldOutViews <= 200, "the views held out must number 1 to 200");
+  check(viewsPerModel >= 1 && viewsPerModel <= heldOutViews, "each model must hold out 1 to all of the views held out");
   check(tries.nearStarts >= 1 && tries.nearFrames >= 1 && tries.wrongFrames >= 1 && tries.searches >= 0 && tries.searchFrames >= 1,
         "at least one near start and one frame per try");
   check(wrongCeiling > 0 && wrongCeiling < 1, "the wrong tries' ceiling must lie in (0, 1)");
@@ -235,8 +236,11 @@ core::TrustCalibration calibrateTrust(const std::vector<PassTry> &tries, const t
 
 std::size_t calibrationSteps(std::size_t views, const CalibrationParams &p)
 {
-  const std::vector<std::vector<std::size_t>> folds = heldOutFolds(views, p.heldOutViews);
-  return folds.size() + (views > 0 ? views - 1 : 0);
+  const std::vector<std::vector<std::size_t>> folds = heldOutFolds(views, p.heldOutViews, p.viewsPerModel);
+  std::size_t steps = folds.size(); // a step a model built, and one a view tried
+  for (const std::vector<std::size_t> &f : folds)
+    steps += f.size();
+  return steps;
 }
 
 namespace {
@@ -299,7 +303,7 @@ core::TrustCalibration calibrateFromPass(const core::StereoRig &rig, const std::
   const auto t0 = std::chrono::steady_clock::now();
   model::AllAroundParams foldParams = params;
   foldParams.minViews = std::min(params.minViews, pass.size() > 4 ? pass.size() - 4 : std::size_t{1});
-  const std::vector<std::vector<std::size_t>> folds = heldOutFolds(pass.size(), p.heldOutViews);
+  const std::vector<std::vector<std::size_t>> folds = heldOutFolds(pass.size(), p.heldOutViews, p.viewsPerModel);
   std::vector<std::string> errors;
   const std::vector<std::optional<FoldModel>> models = buildFolds(rig, pass, foldParams, measured, folds, errors, onStep);
   std::vector<PassTry> tries;

@@ -2,9 +2,9 @@
 /*!
   \file HeldOutViews.h
   The pass's views held out of the models they are tried on: a few of the views but the first (the
-  model's frame and its viewpoints' cap come from it), each held out of a model built from the pass
-  without it alone (model::buildAllAroundModelWithout(), the same parameters, the
-  views' silhouettes and stereo depths measured once for all). A right
+  model's frame and its viewpoints' cap come from it), held out of models built from the pass without
+  them (one a model by default, or a few far apart in the pass; model::buildAllAroundModelWithout(), the same
+  parameters, the views' silhouettes and stereo depths measured once for all). A right
   pose tried on a held-out view is then tried as the tracker meets a new view at run time: through
   an outline and colours the model did not take from that view.
 
@@ -29,10 +29,12 @@
 namespace pm::trust {
 
 /*!
-  min(\e count, views - 1) of views 1 .. \e views - 1, spread evenly over them, each a group of its own
-  (a model built without it alone); view 0 is never held out. Empty for fewer than 2 views or a count of 0.
+  min(\e count, views - 1) of views 1 .. \e views - 1, spread evenly over them, in groups of
+  \e perModel (a model built without each group; the views of a group as far apart in the pass as
+  the count allows, so that the model keeps the neighbours of each); view 0 is never held out.
+  Empty for fewer than 2 views, a count of 0 or a group of 0.
 */
-std::vector<std::vector<std::size_t>> heldOutFolds(std::size_t views, std::size_t count);
+std::vector<std::vector<std::size_t>> heldOutFolds(std::size_t views, std::size_t count, std::size_t perModel = 1);
 
 //! A model built without some of the pass's views, and its frame in the pass's world frame.
 struct FoldModel
