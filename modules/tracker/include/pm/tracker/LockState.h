@@ -32,7 +32,7 @@ namespace pm::tracker {
 struct LockParams
 {
   double quality = 0.35;     //!< q at or above which the target is tracked ...
-  double confidence = 0.05;  //!< ... when its confidence as a first, unverified lock reaches this (0: every pose over quality locks)
+  double confidence = 0.2;   //!< ... when its confidence as a first, unverified lock reaches this (0: every pose over quality locks)
   double lostQuality = 0.2;  //!< q below which, for lostFrames frames, it is lost
   int lostFrames = 3;        //!< frames in a row under lostQuality that make a tracked target lost (>= 1)
   int dropAfterFrames = 10;  //!< judged frames in a row of a lock never trusted under \e confidence that drop it (0: never)
