@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The docs check (CTest runs it as docs_commands; CI through scripts/test.sh):
-#   1. runs the ```sh blocks of every docs/tutorial-*.md as written, page by page, each page in a
+#   1. runs the ```sh blocks of every docs/tutorial-*.md as written, two pages at a time, each page in a
 #      fresh folder that holds data/, examples/ and build/ (links to the repository's and to the
 #      build tree), with bash -euo pipefail: a command that fails fails the check;
 #   2. checks every command line shown in README.md and docs/*.md (code blocks and `pm-...` spans):
@@ -87,6 +87,18 @@ shown_in_examples cpp "${cpp_sources[@]}"
 shown_in_examples python "${python_sources[@]}"
 
 # --- 1. run the tutorials --------------------------------------------------------------------------
+# Two pages at a time (each in its own folder; the lab's programs build their models, which takes
+# most of the time): the pages' outcomes are reported in their order once all have run.
+run_page() { # run_page NAME DIR: the page's blocks in DIR; DIR/status holds "ran SECONDS" or "failed"
+  local start
+  start=$(date +%s)
+  if (cd "$2" && bash run.sh > "$2/log" 2>&1); then
+    echo "ran $(($(date +%s) - start))" > "$2/status"
+  else
+    echo failed > "$2/status"
+  fi
+}
+pages=()
 for page in "$root"/docs/tutorial-*.md; do
   name="$(basename "$page" .md)"
   [ -z "$only" ] || [ "$only" = "$name.md" ] || continue
@@ -107,9 +119,16 @@ for page in "$root"/docs/tutorial-*.md; do
     echo 'set -euo pipefail'
     awk '/^```sh/ { on = 1; n++; print "echo \"--- block " n "\" >&2"; next } /^```/ { on = 0 } on' "$page"
   } > "$dir/run.sh"
-  start=$(date +%s)
-  if (cd "$dir" && bash run.sh > "$dir/log" 2>&1); then
-    echo "docs: $name.md ran ($(($(date +%s) - start)) s)"
+  while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n || true; done
+  run_page "$name" "$dir" &
+  pages+=("$name")
+done
+wait
+for name in "${pages[@]}"; do
+  dir="$scratch/$name"
+  status="$(cat "$dir/status" 2>/dev/null || echo failed)"
+  if [ "${status%% *}" = ran ]; then
+    echo "docs: $name.md ran (${status#ran } s)"
   else
     tail -20 "$dir/log" >&2
     fail "$name.md: a command failed (its output above)"

@@ -777,13 +777,14 @@ TEST(SubpixelOutline, TheRenderersToysOutlinesWithinATenthOfAPixel)
   }
 }
 
-TEST(AllAround, ThePassCalibratesTrustAndASoftCameraIsReadAsTheLab)
+TEST(AllAround, ThePassCalibratesTrustAndASoftCameraWidensTheSigmasWithoutTrustingAWrongTry)
 {
-  // The crab's pass, its views held out of models built without them and the tracker tried on them
-  // (two near starts a view, to keep the test short): through the lab's camera the cues read as the
-  // lab's (no shift of note), right and wrong tries separate, no wrong try is trusted. Through a camera that
-  // blurs 2 px the right poses read worse than any lab toy's: the calibration moves the cues back,
-  // trusts more of the right tries than the shipped confidence, and still no wrong one.
+  // The crab's pass, six of its views held out of models built without them and the tracker tried on
+  // them (two near starts a view, to keep the test short): through the lab's camera the cues read as the
+  // lab's (the calibration trusts about what the shipped confidence trusts), right and wrong tries
+  // separate, no wrong try is trusted. Through a camera that blurs 2 px the right poses land farther
+  // off: the sigmas widen; a wrong try comes near (a pose tilted back to 6 deg off, confidence 0.82),
+  // and the guard keeps every shift that would lift it: never a wrong try trusted, never fewer right ones.
   pm::trust::CalibrationParams cp;
   cp.tries.nearStarts = 2;
   pm::model::PassMeasurements measured;
@@ -792,16 +793,13 @@ TEST(AllAround, ThePassCalibratesTrustAndASoftCameraIsReadAsTheLab)
                                                                         pm::tracker::TrackerParams(), cp);
   std::cout << pm::trust::describe(sharp) << "\n";
   ASSERT_TRUE(sharp.measured);
-  EXPECT_EQ(sharp.heldOutViews, 15);
+  EXPECT_EQ(sharp.heldOutViews, 6);
   EXPECT_GT(sharp.rightExamples, 60);
   EXPECT_GT(sharp.wrongExamples, 10);
   EXPECT_GT(sharp.auroc, 0.95);
   EXPECT_EQ(sharp.wrongTrusted, 0);
-  double sharpResidual = 0;
-  for (const auto &[name, v] : sharp.cueShifts)
-    if (name == "precise_residual_px")
-      sharpResidual = v;
-  EXPECT_GT(sharpResidual, -0.15); // the crab is the lab's toy of the largest residual: its own reading, within the tries' spread
+  EXPECT_GE(sharp.rightTrusted, sharp.rightTrustedShipped);
+  EXPECT_LT(sharp.rightTrusted - sharp.rightTrustedShipped, 0.1); // the lab's camera: read as the lab's
   for (double g : sharp.sigmaGain) {
     EXPECT_GE(g, 1.0);
     EXPECT_LE(g, 3.0);
@@ -814,7 +812,11 @@ TEST(AllAround, ThePassCalibratesTrustAndASoftCameraIsReadAsTheLab)
   const pm::core::TrustCalibration t = pm::trust::calibrateFromPass(rig(), soft, pm::model::AllAroundParams(), measured, pm::tracker::TrackerParams(), cp);
   std::cout << pm::trust::describe(t) << "\n";
   ASSERT_TRUE(t.measured);
-  EXPECT_FALSE(t.cueShifts.empty());
-  EXPECT_GT(t.rightTrusted, t.rightTrustedShipped + 0.05);
   EXPECT_EQ(t.wrongTrusted, 0);
+  EXPECT_GE(t.rightTrusted, t.rightTrustedShipped);
+  EXPECT_LT(t.wrongMaxConfidence, 0.9); // the nearest wrong try well under the threshold
+  double sharpMm = 0, softMm = 0; // the sigmas' gains along x, y, z
+  for (std::size_t a = 0; a < 3; ++a)
+    sharpMm += sharp.sigmaGain[a], softMm += t.sigmaGain[a];
+  EXPECT_GT(softMm, sharpMm); // a softer camera: right poses land farther off, and the sigmas say so
 }

@@ -214,12 +214,20 @@ TEST(SweepingBar, GoesToAndFroAcrossTheTargetAndIsDrawnInFrontOfIt)
   EXPECT_GT(r.coverage(static_cast<unsigned>(u), row, kToy), 0.5);
 }
 
+//! The lab's all-around model, its trust not calibrated (what these tests read is the fitness and the precise stage's).
+pm::lab::LabModelChoice uncalibrated()
+{
+  pm::lab::LabModelChoice c;
+  c.calibrateTrust = false;
+  return c;
+}
+
 //! The crab's all-around lab model (made of the target alone) and the truth of the strand case in its frame.
 struct LabCase
 {
   const StrandCase &c = strandCase();
   pm::sim::Scene alone{pm::sim::makeTarget("C12"), c.sp};
-  pm::sim::SimulatedPhotoModel model = pm::lab::makeLabModel(alone, c.rig, pm::lab::LabModelChoice());
+  pm::sim::SimulatedPhotoModel model = pm::lab::makeLabModel(alone, c.rig, uncalibrated());
   pm::core::Phi truth = model.truth(c.hMo);
 };
 
@@ -296,8 +304,10 @@ TEST(StereoOcclusion, BehindTheStrandThePreciseStageLandsAndJudgesAsInTheOpen)
 {
   // The precise stage from the crab's pose: behind the strand, without what it finds hidden (lines
   // and interior points), it lands as in the open and its lines split target from background as
-  // sharply (the separation, a cue of the confidence); with every line and point, the strand's
-  // chromaticity pulls it off by twice as much and the lines crossing it blur the split.
+  // sharply (the separation, a cue of the confidence); with every line and point, the lines crossing
+  // the strand blur the split. (How far the strand pulls the pose off with every line depends on the
+  // model: 0.97 deg against 0.55 without what is hidden with the lab's model before issue 56's
+  // background subtraction, 0.79 against 0.74 after it; not a property, not asserted.)
   const LabCase &l = labCase();
   const StrandCase &c = l.c;
   auto at = [&](const vpImage<vpRGBa> *pair, bool on) {
@@ -313,8 +323,9 @@ TEST(StereoOcclusion, BehindTheStrandThePreciseStageLandsAndJudgesAsInTheOpen)
   EXPECT_GT(open.separation - all.separation, 0.05);
   const double deg[3] = {pm::core::rotationDistanceDeg(open.phi, l.truth), pm::core::rotationDistanceDeg(hidden.phi, l.truth),
                          pm::core::rotationDistanceDeg(all.phi, l.truth)};
+  std::cout << "from the truth: " << deg[0] << " deg in the open, " << deg[1] << " behind the strand without what is hidden, " << deg[2]
+            << " with every line and point\n";
   EXPECT_LT(deg[1], deg[0] + 0.25) << deg[0] << " in the open";
-  EXPECT_GT(deg[2], deg[1] + 0.2) << deg[1] << " without the hidden";
   EXPECT_LT(pm::core::translationDistanceMm(hidden.phi, l.truth), 1.0);
 }
 

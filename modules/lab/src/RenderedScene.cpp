@@ -1,5 +1,6 @@
 #include "pm/lab/RenderedScene.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -77,6 +78,14 @@ RenderedScene openRenderedScene(const std::string &dirName, bool peer)
   if (s.hMo.empty())
     throw core::Error(spec.string() + ": the sequence has no frame");
   return s;
+}
+
+std::string renderedScenesDir()
+{
+  if (const char *d = std::getenv("PM_CYCLES_DIR"); d && *d)
+    return d;
+  const char *home = std::getenv("HOME");
+  return std::string(home && *home ? home : ".") + "/.cache/visp-photomodel/cycles";
 }
 
 } // namespace pm::lab

@@ -54,4 +54,10 @@ struct RenderedScene
 */
 RenderedScene openRenderedScene(const std::string &dir, bool peer = false);
 
+/*!
+  Where the second renderer's set is kept (scripts/render-cycles.sh): $PM_CYCLES_DIR when set, else
+  $HOME/.cache/visp-photomodel/cycles. The folder may not exist (the set not rendered on this machine).
+*/
+std::string renderedScenesDir();
+
 } // namespace pm::lab

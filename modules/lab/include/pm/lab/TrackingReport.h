@@ -75,8 +75,10 @@ struct TrackingReport
   static const std::array<const char *, 6> &names();
 };
 
-//! A right estimate lies within these of the truth (mm, deg), a wrong one beyond kWrongMm or kWrongDeg.
-constexpr double kRightMm = 5, kRightDeg = 2, kWrongMm = 20, kWrongDeg = 5;
+constexpr double kRightMm = 5;   //!< a right estimate lies within this of the truth (mm) ...
+constexpr double kRightDeg = 2;  //!< ... and within this (deg)
+constexpr double kWrongMm = 20;  //!< a wrong one lies beyond this (mm) ...
+constexpr double kWrongDeg = 5;  //!< ... or beyond this (deg)
 
 //! Estimate less truth along the hand's x, y, z (mm) and about them (deg, the rotation Re Rt^T's theta-u).
 std::array<double, 6> handFrameErrors(const core::Phi &estimate, const core::Phi &truth);
