@@ -20,6 +20,7 @@
 #include "pm/lab/LabPass.h"
 #include "pm/lab/ModelMaking.h"
 #include "pm/lab/SurfaceTruth.h"
+#include "pm/lab/TrustCache.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/robot/ArmCatalog.h"
 #include "pm/robot/ArmPassPlan.h"
@@ -141,21 +142,19 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
   optViews->excludes(optAA)->excludes(others.back());
 }
 
-//! The model's trust calibrated from its own pass (pm::trust); returns the tries as a table (trust_tries.csv).
+//! The model's trust calibrated from its own pass (pm::trust, through the test suite's cache when PM_TRUST_CACHE is set); returns the tries as a table (trust_tries.csv).
 std::string calibrate(const Options &o, const pm::core::StereoRig &rig, const std::vector<pm::model::PassView> &pass, pm::model::AllAroundBuild &b,
                       const pm::model::PassMeasurements &measured)
 {
   if (o.noTrustCalibration)
     return "";
   pm::app::Progress progress("calibrating trust", pm::trust::calibrationSteps(pass.size()), o.quiet);
-  std::vector<pm::trust::PassTry> tries;
-  std::string why;
-  b.model.trust = pm::trust::calibrateFromPass(rig, pass, o.ap, measured, pm::tracker::TrackerParams(), pm::trust::CalibrationParams(),
-                                               [&] { progress.step(); }, &why, &tries);
+  const pm::lab::LabTrust t = pm::lab::calibrateLabTrust(rig, pass, o.ap, measured, b.model, [&] { progress.step(); });
   progress.finish();
-  if (!b.model.trust.measured && !o.quiet)
-    std::cerr << "note: trust not calibrated from the pass: " << why << " (the shipped confidence is used)" << std::endl;
-  return pm::trust::triesCsv(tries, b.model.trust);
+  b.model.trust = t.trust;
+  if (!t.trust.measured && !o.quiet)
+    std::cerr << "note: trust not calibrated from the pass: " << t.why << " (the shipped confidence is used)" << std::endl;
+  return t.triesCsv;
 }
 
 //! trust_tries.csv when the trust was calibrated.

@@ -31,6 +31,7 @@
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/lab/RunFigures.h"
 #include "pm/lab/TrackingReport.h"
+#include "pm/lab/TrustCache.h"
 #include "pm/tracker/TrackerConfigFile.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
@@ -150,7 +151,7 @@ Input openScene(const Options &o, const pm::core::StereoRig &rig)
   pm::model::PassMeasurements measured;
   pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, ap, measured);
   if (o.labModel.calibrateTrust)
-    b.model.trust = pm::trust::calibrateFromPass(rig, pass, ap, measured);
+    b.model.trust = pm::lab::calibrateLabTrust(rig, pass, ap, measured, b.model).trust;
   if (!o.quiet) { // the model against the toy it was made of (the renderer's truth)
     const pm::sim::Scene toy(pm::sim::makeTarget(scene.target));
     std::cout << "model of " << scene.description << " against the toy:\n"

@@ -17,4 +17,8 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
 # Two test programs at once, each with OpenMP's threads: waiting threads sleep instead of spinning
 # on the cores the other program needs (OMP_WAIT_POLICY; the results are the same).
 export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
+# The lab models' trust calibrations made once per run and kept for the run's other tests
+# (pm::lab::TrustCache: the same pass, rig and model give the same calibration to the last bit).
+export PM_TRUST_CACHE="$PM_BUILD_DIR/trust-cache"
+rm -rf "$PM_TRUST_CACHE"
 ctest --test-dir "$PM_BUILD_DIR" --output-on-failure -j "$(nproc)"

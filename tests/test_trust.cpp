@@ -10,6 +10,7 @@
 
 #include "TestSupport.h"
 #include "pm/io/PhotoModelFile.h"
+#include "pm/lab/TrustCache.h"
 #include "pm/tracker/Judgement.h"
 #include "pm/trust/HeldOutViews.h"
 #include "pm/trust/PassCalibration.h"
@@ -255,6 +256,74 @@ TEST(PassCalibration, TheModelFileKeepsItAndAnOlderModelLoadsWithNone)
   bad.replace(bad.find("\"sigma_gain\":[1.5"), 17, "\"sigma_gain\":[-1.5");
   pm::test::writeText(dir.file("bad2.json"), bad);
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad2.json")); }).find("sigma_gain"), std::string::npos);
+}
+
+TEST(TrustCache, GivesBackWhatWasStoredForTheSamePassRigAndModelOnlyAndNeverFails)
+{
+  pm::test::TempDir dir("trust_cache");
+  const pm::core::StereoRig rig =
+      pm::core::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, pm::core::StereoRig::toeInFor(0.323, 0.5));
+  std::vector<pm::model::PassView> pass(2);
+  for (std::size_t k = 0; k < pass.size(); ++k) {
+    pm::model::PassView &v = pass[k];
+    v.name = "view " + std::to_string(k);
+    v.fMh = vpHomogeneousMatrix(0.01 * static_cast<double>(k), 0, 0, 0, 0.1, 0);
+    for (vpImage<vpRGBa> *I : {&v.left, &v.right, &v.backgroundLeft, &v.backgroundRight})
+      I->resize(48, 64, vpRGBa(40, 90, 160));
+  }
+  const pm::core::PhotoModel model = smallAllAroundModel();
+  pm::lab::LabTrust t;
+  t.trust.measured = true;
+  t.trust.cueShifts = {{"separation", 0.1 / 3}, {"precise_residual_px", -0.4}}; // not in the names' order
+  t.trust.rightReadings = {{"quality", 0.98}, {"in_match_min", 0.9}};
+  t.trust.sigmaGain = {1.5, 1, 1, 1.2, 1, 1};
+  t.trust.guard = 0.7;
+  t.trust.auroc = 1 / 3.0;
+  t.triesCsv = "view,start\n3,near\n";
+  const pm::lab::TrustCache cache(dir.file("cache"));
+  const std::string key = pm::lab::TrustCache::keyOf(rig, pass, model);
+  EXPECT_EQ(key.size(), 16u);
+  EXPECT_FALSE(cache.find(key));
+  cache.store(key, t);
+  const std::optional<pm::lab::LabTrust> back = cache.find(key);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->trust.cueShifts, t.trust.cueShifts); // to the last bit, in its order
+  EXPECT_EQ(back->trust.rightReadings, t.trust.rightReadings);
+  EXPECT_EQ(back->trust.sigmaGain, t.trust.sigmaGain);
+  EXPECT_EQ(back->trust.auroc, t.trust.auroc);
+  EXPECT_EQ(back->triesCsv, t.triesCsv);
+  // Anything the calibration reads changes the key: a pixel, a hand pose, the rig, the model.
+  std::vector<pm::model::PassView> other = pass;
+  other[1].backgroundRight[47][63] = vpRGBa(40, 90, 161);
+  EXPECT_NE(pm::lab::TrustCache::keyOf(rig, other, model), key);
+  other = pass;
+  other[0].fMh[0][3] += 1e-9;
+  EXPECT_NE(pm::lab::TrustCache::keyOf(rig, other, model), key);
+  pm::core::StereoRig soft = rig;
+  soft.right.distortion.coefficients = {-0.01, 0, 0, 0, 0};
+  EXPECT_NE(pm::lab::TrustCache::keyOf(soft, pass, model), key);
+  pm::core::PhotoModel moved = model;
+  moved.views[16].inner[0].x += 0.5f;
+  EXPECT_NE(pm::lab::TrustCache::keyOf(rig, pass, moved), key);
+  // The model's own trust is not part of what it was calibrated from.
+  pm::core::PhotoModel trusted = model;
+  trusted.trust = t.trust;
+  EXPECT_EQ(pm::lab::TrustCache::keyOf(rig, pass, trusted), key);
+  // An entry that does not read is none; a calibration that found no right pose is not kept; no
+  // folder, or one that cannot be made, is a cache that finds and keeps nothing.
+  pm::test::writeText(dir.file("cache/" + key + ".json"), "{\"trust_calibration\": 3}");
+  EXPECT_FALSE(cache.find(key));
+  pm::lab::LabTrust none;
+  cache.store("00000000000000aa", none);
+  EXPECT_FALSE(cache.find("00000000000000aa"));
+  const pm::lab::TrustCache off("");
+  EXPECT_FALSE(off.enabled());
+  off.store(key, t);
+  EXPECT_FALSE(off.find(key));
+  pm::test::writeText(dir.file("a_file"), "x");
+  const pm::lab::TrustCache blocked(dir.file("a_file/cache"));
+  EXPECT_NO_THROW(blocked.store(key, t));
+  EXPECT_FALSE(blocked.find(key));
 }
 
 TEST(Judgement, AFrameNotTrustedNamesTheCueThatHeldIt)

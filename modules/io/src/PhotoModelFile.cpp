@@ -292,6 +292,15 @@ std::vector<core::ModelPoint> positionPoints(const json &a, float hue, const cha
 
 std::string trustCalibrationToJson(const core::TrustCalibration &t) { return trustToJson(t).dump(1); }
 
+core::TrustCalibration trustCalibrationFromJson(const std::string &text)
+{
+  try {
+    return trustFromJson(json::parse(text));
+  } catch (const json::exception &e) {
+    throw core::Error(std::string("\"trust_calibration\": ") + e.what());
+  }
+}
+
 std::string photoModelToJson(const core::PhotoModel &m)
 {
   const bool depth = m.hasDepth();

@@ -1,6 +1,6 @@
 #include "pm/lab/LabPass.h"
 
-#include "pm/trust/PassCalibration.h"
+#include "pm/lab/TrustCache.h"
 
 #include "pm/robot/ArmCatalog.h"
 #include "pm/robot/ArmPassPlan.h"
@@ -56,7 +56,7 @@ sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, co
   model::AllAroundBuild b = calibrateTrust ? model::buildAllAroundModel(rig, pass.views, params, measured)
                                            : model::buildAllAroundModel(rig, pass.views, params);
   if (calibrateTrust)
-    b.model.trust = trust::calibrateFromPass(rig, pass.views, params, measured);
+    b.model.trust = calibrateLabTrust(rig, pass.views, params, measured, b.model).trust;
   sim::SimulatedPhotoModel s;
   s.stereo = true;
   s.oMm = pass.fMo.inverse() * b.fMm;

@@ -112,5 +112,7 @@ void savePhotoModel(const core::PhotoModel &m, const std::string &path);
 
 //! \e t as model.json's "trust_calibration" object (JSON text; pm-make-model's summary.json keeps it too).
 std::string trustCalibrationToJson(const core::TrustCalibration &t);
+//! The calibration that trustCalibrationToJson() wrote. Throws pm::core::Error naming what is wrong.
+core::TrustCalibration trustCalibrationFromJson(const std::string &text);
 
 } // namespace pm::io
