@@ -708,8 +708,13 @@ TEST(AllAround, PmMakeModelFromTheLabsPassAndFromItsViewsFolder)
   for (const char *key : {"\"fMo\"", "\"n_views\": 16", "\"n_views_used\": 16", "\"n_surface_points\"", "\"n_viewpoints\"",
                           "\"hull_volume_cm3\"", "\"build_s\""})
     EXPECT_NE(summary.find(key), std::string::npos) << key;
-  const pm::test::RunResult user = pm::test::runProgram("pm-make-model", "--views " + dir.file("lab/views") + " --out " + dir.file("user"));
+  EXPECT_TRUE(fs::exists(dir.file("lab/trust_tries.csv")));
+  // From its views folder, as a user's rig writes one (the trust not calibrated again: faster).
+  const pm::test::RunResult user =
+      pm::test::runProgram("pm-make-model", "--views " + dir.file("lab/views") + " --no-trust-calibration --out " + dir.file("user"));
   ASSERT_EQ(user.status, 0) << user.err;
+  EXPECT_FALSE(fs::exists(dir.file("user/trust_tries.csv")));
+  EXPECT_FALSE(pm::io::loadPhotoModel(dir.file("user/model.json")).trust.measured);
   EXPECT_EQ(pm::io::loadPhotoModel(dir.file("user/model.json")).views.size(),
             pm::io::loadPhotoModel(dir.file("lab/model.json")).views.size());
   // A broken folder: one line naming the view, exit 1, nothing written.
