@@ -12,7 +12,7 @@
     const pm::compare::ConfidenceFit f = pm::compare::fitConfidence(s, pm::tracker::ConfidenceKind::AllAround, 0.001);
     std::cout << "cross-validated AUROC " << f.aurocCrossValidated << "\n";
     pm::tracker::TrackerParams p;
-    p.confidence = f.model; // kind Custom: used as it is
+    p.judgement.confidence = f.model; // kind Custom: used as it is
   \endcode
 */
 #include <cstddef>

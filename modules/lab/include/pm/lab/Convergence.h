@@ -18,7 +18,7 @@ constexpr double kConvergedDeg = 2.0; //!< the rotation bound of convergence (de
   \code
     pm::lab::Convergence c(30); // 1 s at 30 fps
     for (long k = 0; k < n; ++k)
-      c.add(k, k / 30.0, errMm[k] <= pm::lab::kConvergedMm && errDeg[k] <= pm::lab::kConvergedDeg);
+      c.add(k, static_cast<double>(k) / 30.0, errMm[k] <= pm::lab::kConvergedMm && errDeg[k] <= pm::lab::kConvergedDeg);
     c.finish();
     if (c.converged())
       std::cout << "converged after " << c.time() << " s (frame " << c.frame() << ")\n";

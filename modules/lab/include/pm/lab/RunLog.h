@@ -6,12 +6,7 @@
   joint checks, tracker time) and a decimated record for the plots (at most \e maxSamples
   samples; each keeps the largest errors of the frames it stands for, so no peak is lost).
 
-  \code
-    pm::lab::RunLog log(nFrames, fps, robot);
-    for (long k = 0; k < nFrames; ++k) { const LoopFrame f = loop.step(); writeCsvRow(f); log.add(f); }
-    log.finish();
-    log.convergedAfterS(); log.atRest(); log.samples();
-  \endcode
+  (A usage example at the class RunLog.)
 */
 #include <array>
 #include <map>

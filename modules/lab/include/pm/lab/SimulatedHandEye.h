@@ -45,7 +45,7 @@ struct HandEyeResult
   Throws pm::core::Error when fewer than 3 poses are usable or ViSP's calibration fails.
 
   \code
-    const pm::calib::ChessBoard board(6, 9, 20);
+    const pm::calib::ChessBoard board; // 6 x 9 inner corners, 20 mm squares
     pm::sim::Scene scene(pm::sim::flatPrint(board.render(8.0), board.widthMm(), "board"));
     const pm::lab::HandEyeResult r = pm::lab::simulatedHandEye(scene, rig, rig, board, 30, 1, 0.7);
     std::cout << r.left.translationErrorMm << " mm\n";

@@ -21,6 +21,7 @@
     const std::string key = pm::lab::TrustCache::keyOf(rig, pass, b.model);
     std::optional<pm::lab::LabTrust> t = cache.find(key);
     if (!t) {
+      std::vector<pm::trust::PassTry> tries;
       t = pm::lab::LabTrust();
       t->trust = pm::trust::calibrateFromPass(rig, pass, params, measured, pm::tracker::TrackerParams(), pm::trust::CalibrationParams(),
                                               nullptr, nullptr, &tries);

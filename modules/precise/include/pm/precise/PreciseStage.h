@@ -91,6 +91,8 @@ struct PreciseResult
   The precise stage (see PreciseStage.h). Copies what it needs of the rig and the model; holds the
   colour histograms from frame to frame. refine() allocates nothing. Not thread-safe.
   \code
+#include <iostream>
+#include <pm/io/ImageFile.h>
 #include <pm/io/PhotoModelFile.h>
 #include <pm/io/RigFile.h>
 #include <pm/precise/PreciseStage.h>

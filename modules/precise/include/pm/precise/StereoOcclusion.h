@@ -62,7 +62,7 @@ struct ModelInCamera
   const pm::precise::StereoOcclusion occlusion(model, pm::precise::StereoOcclusionParams());
   // cams[k]: the rig's cameras as the lines see them; poses[k]: the model in each camera's frame;
   // centre: the left camera's centre in the model frame (precise::cameraInModel)
-  if (occlusion.hidden(cams[0], poses[0], centre, cams[1], poses[1], model.contours[i], cams[0].px / depthMm))
+  if (occlusion.hidden(cams[0], poses[0], centre, cams[1], poses[1], model.contour[i], cams[0].px / depthMm))
     std::cout << "contour point " << i << " is hidden in the left camera\n";
   \endcode
 */

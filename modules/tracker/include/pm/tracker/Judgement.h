@@ -10,13 +10,19 @@
   are read from it with the tracker's state of the moment.
 
   \code
-    pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, fitness, scale);
+    pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, fitness, scale, modelError);
     const pm::tracker::Evidence e = judgement.measure(r);
     const bool refused = lock.wouldLock(r.quality) &&
-                         judgement.firstLockConfidence(e, steady.recentBestQ(), verifiedAtOnce) < params.lock.confidence;
-    ...
-    judgement.judge(r, e, {lastPose, recentBestQ, framesTracked, verified});
-    if (r.trusted) use(r.hMo);
+                         judgement.firstLockConfidence(e, steady.recentBestQ(), params.verifier.evaluations == 0) < params.lock.confidence;
+    // ... the lock's state from q and refused (LockState.h), then:
+    pm::tracker::JudgedState state;
+    state.last = &last.phi; // the last frame's pose, when it was tracked
+    state.recentBestQ = steady.recentBestQ();
+    state.framesTracked = lock.framesTracked();
+    state.verified = verifier.verified();
+    judgement.judge(r, e, state);
+    if (r.trusted)
+      use(r.hMo);
   \endcode
 */
 #include <array>

@@ -18,9 +18,11 @@
 
   \code
     pm::tracker::LockState lock(params.lock);
-    const bool refused = lock.wouldLock(q) && judgement.firstLockConfidence(...) < params.lock.confidence;
-    const pm::tracker::LockState::Change c = lock.update(q, refused);
-    if (c.lost) search.restart();
+    // refused: the first lock's confidence under params.lock.confidence (Judgement::firstLockConfidence)
+    const bool refused = lock.wouldLock(q) && firstLockConfidence < params.lock.confidence;
+    pm::tracker::RmGaUpdate update;
+    update.restart = lock.update(q, refused); // search again around the best (lost) or away from it (refused)
+    search.apply(update);
   \endcode
 */
 #include "pm/tracker/RmGaUpdate.h"

@@ -23,10 +23,11 @@
   \code
     pm::tracker::LockVerifier verifier(params.verifier, params.search, fitness, scale);
     if (verifier.verifying(lastState)) {
-      const auto better = verifier.challenge(plan.challenger, r.phi, r.fitness, search.ga());
-      if (better) moveTo(*better);            // a wrong first lock
+      const auto better = verifier.challenge(plan.challenger, r.phi, r.fitness, search.ga(), work);
+      if (better)
+        moveTo(*better); // a wrong first lock
     }
-    verifier.onState(prev, r.state, r.phi, search.ga());   // a new lock is verified on the next frames
+    verifier.onState(prev, r.state, r.phi, search.ga());                 // a new lock is verified on the next frames
     verifier.afterJudgement(r.state, r.confidence, r.phi, search.ga()); // a doubtful lock again
   \endcode
 */

@@ -17,8 +17,11 @@
 
   \code
     pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, fitness, scale);
-    if (stage.active() && stage.refine(r, last, motion.predict(last.phi), IL, IR))
-      search.inject(r.phi, r.fitness); // the frame's pose is the stage's
+    if (stage.refine(r, last, motion.predict(last.phi), IL, IR)) {
+      pm::tracker::RmGaUpdate u;
+      u.inject = pm::tracker::RmGaUpdate::Inject{r.phi, r.fitness}; // the frame's pose is the stage's: it joins RM-GA
+      search.apply(u);
+    }
   \endcode
 */
 #include <memory>

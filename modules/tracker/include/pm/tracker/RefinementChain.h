@@ -14,8 +14,9 @@
 
   \code
     pm::tracker::RefinementChain chain(params.refinement, rig, model, fitness, scale);
-    const auto inject = chain.refine(r, last, IL, IR, locked); // r.phi: the chain's pose
-    if (inject) search.inject(*inject);                     // the precise stage's pose joins RM-GA
+    pm::tracker::RmGaUpdate u;
+    u.inject = chain.refine(r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
+    search.apply(u);
   \endcode
 */
 #include <optional>

@@ -15,13 +15,15 @@
 
   \code
     pm::tracker::SteadyFramePolicy steady(params.steady);
-    pm::tracker::FramePlan plan = steady.plan(verifying);         // before the frame
+    const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
     if (plan.windowed)
       fitness.setImages(IL, IR, steady.windows(fitness, lastPose));
-    ...
-    if (plan.steady && steady.escalates(q))  // after the steady search
-      moreSearch();
-    steady.update(state, q);                 // after the frame's state
+    else
+      fitness.setImages(IL, IR);
+    const pm::rmga::FrameResult r = search.evolve(plan.main, false);
+    if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
+      search.evolve(plan.mainWhole, false, true);                   // (on the whole images)
+    steady.update(state, scale.quality(r.fitness));                // after the frame's state
   \endcode
 */
 #include <array>

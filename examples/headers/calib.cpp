@@ -1,0 +1,28 @@
+// The usage examples of pm::calib's headers, each as its header shows it: this file is compiled
+// (never run), and scripts/header-examples.py checks that every example of a header is part of a file
+// here. What an example takes as given is its function's parameters.
+#include "pm/calib/BaselineCheck.h"
+#include "pm/calib/ChessBoard.h"
+#include "pm/calib/RigCalibration.h"
+#include "pm/calib/StereoBaseline.h"
+#include "pm/calib/TagBoard.h"
+
+#include <iostream>
+#include "pm/io/ImageFile.h"
+#include "pm/io/RigFile.h"
+namespace pm_examples {
+
+// BaselineCheck.h
+void exampleBaselineCheck()
+{
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
+  const pm::calib::TagBoard board;
+  pm::calib::BaselineCheck check(rig, board);
+  for (int k = 0; k < 10; ++k)
+    check.add(pm::io::readColorImage("L_" + std::to_string(k) + ".png"),
+              pm::io::readColorImage("R_" + std::to_string(k) + ".png"), "pair " + std::to_string(k));
+  const pm::calib::BaselineResult r = check.result();
+  std::cout << r.baselineMm << " mm, " << r.rotationErrorDeg << " deg from the rig file" << std::endl;
+}
+
+} // namespace pm_examples

@@ -1,0 +1,170 @@
+// The usage examples of pm::core's headers, each as its header shows it: this file is compiled (not
+// run), and scripts/header-examples.py checks that every example of a header is part of a file here.
+// What an example takes as given (a fitness, a model) is its function's parameters.
+#include <cmath>
+#include <iostream>
+
+#include <visp3/core/vpMath.h>
+#include <visp3/io/vpImageIo.h>
+
+#include "pm/core/BatchPool.h"
+#include "pm/core/FitnessMap.h"
+#include "pm/core/Hue.h"
+#include "pm/core/HuePlane.h"
+#include "pm/core/PhotoModel.h"
+#include "pm/core/PinholeCamera.h"
+#include "pm/core/Pose.h"
+#include "pm/core/Statistics.h"
+#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoRig.h"
+#include "pm/core/TargetHues.h"
+#include "pm/core/ViewpointIndex.h"
+#include "pm/io/PhotoModelFile.h"
+#include "pm/io/RigFile.h"
+
+namespace pm_examples {
+
+// BatchPool.h
+void exampleBatchPool()
+{
+  std::vector<double> out(20);
+  pm::core::BatchPool::shared().run(out.size(), [&](std::size_t i) { out[i] = std::sqrt(static_cast<double>(i)); });
+  // every out[i] is set here, whichever thread computed it
+}
+
+// FitnessMap.h
+void exampleFitnessMap(const pm::core::StereoFitness &fitness, const pm::core::Phi &truth)
+{
+  // fitness: a pm::core::StereoFitness given its images; truth: the pm::core::Phi to map around
+  const std::vector<pm::core::FitnessMapSpec> specs = pm::core::paperFitnessMaps();
+  const pm::core::FitnessMap map = pm::core::computeFitnessMap(fitness, truth, specs[0]); // F over x-y, 1 mm steps
+  std::cout << "peak at x = " << map.peakA << " mm, y = " << map.peakB << " mm\n";
+}
+
+// Hue.h
+void exampleHue()
+{
+  const pm::core::Hsv c = pm::core::rgbToHsv(255, 128, 0);                  // orange: h = 30.1 deg, s = 1, v = 1
+  const float d = pm::core::hueDistance(c.h, pm::core::hueDeg(vpRGBa(255, 0, 0))); // 30.1 deg from red
+}
+
+// HuePlane.h
+void exampleHuePlane()
+{
+  vpImage<vpRGBa> I;
+  vpImageIo::read(I, "left.png");
+  pm::core::HuePlane plane;
+  plane.compute(I, 0.1f);                        // pixels of saturation < 0.1 get kNoHue
+  const std::uint16_t h = plane.at(320, 240);    // tenths of a degree
+  if (h != pm::core::HuePlane::kNoHue)
+    std::cout << "hue " << h / 10.0 << " deg\n";
+  plane.compute(I, 0.1f, pm::core::PixelRect{100, 80, 300, 240}); // only columns [100, 300), rows [80, 240)
+}
+
+// PhotoModel.h
+void examplePhotoModel()
+{
+  pm::core::PhotoModel m;                         // by hand: one red point, one point of background
+  m.distanceMm = 500;
+  m.px = m.py = 800;
+  m.backgroundHue = 200;
+  m.inner.push_back({0.f, 0.f, 0.f, 0.f, 320.f, 240.f});   // x, y, z (mm), hue (deg), u, v (px)
+  m.outer.push_back({50.f, 0.f, 0.f, 200.f, 400.f, 240.f});
+  m.validate("hand-made model");            // throws pm::core::Error if it cannot be used
+  std::cout << m.size() << " points, " << (m.hasDepth() ? "3-D" : "flat") << "\n";
+}
+
+// PinholeCamera.h
+void examplePinholeCamera()
+{
+  pm::core::PinholeCamera c;
+  c.cam.initPersProjWithoutDistortion(754, 754, 320, 240); // px, py, u0, v0
+  c.width = 640;
+  c.height = 480;
+  c.hMc.buildFrom(0.16, 0, 0, 0, -0.31, 0);                // on the hand: 160 mm to the right, toed in
+  c.validate();
+  const pm::core::PinholeCamera::Projection p = c.projection(); // placed in the hand frame
+  double u, v, z;
+  if (p.project({0, 0, 500}, u, v, z))                     // a point 500 mm ahead of the hand
+    std::cout << u << " " << v << " at depth " << z << " mm\n";
+}
+
+// Pose.h
+void examplePose()
+{
+  pm::core::Phi phi;
+  phi.z = 500;                                       // 500 mm ahead of the hand
+  phi.e3 = std::sin(0.5 * vpMath::rad(30));          // turned 30 deg about the hand's z axis
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix(phi); // translation in metres
+  const pm::core::StereoRig rig = pm::core::StereoRig::symmetric(vpCameraParameters(800, 800, 320, 240), 640, 480, 0.1, 0.0);
+  const vpHomogeneousMatrix cMo = rig.left.cMh() * hMo;         // the model in the left camera
+  const pm::core::Phi back = pm::core::fromHomogeneousMatrix(hMo);
+  std::cout << back.toString() << ", " << pm::core::rotationDistanceDeg(phi, back) << " deg apart\n";
+}
+
+// Statistics.h
+void exampleStatistics()
+{
+  const double p99 = pm::core::percentile({1.0, 2.0, 3.0, 4.0}, 0.99); // 4
+  const double median = pm::core::percentile({1.0, 2.0, 3.0, 4.0}, 0.5); // 2
+}
+
+// StereoFitness.h
+void exampleStereoFitness()
+{
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");              // pm/io/RigFile.h
+  const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json");  // pm/io/PhotoModelFile.h
+  pm::core::StereoFitness fitness(rig, model);       // the paper's parameters
+  vpImage<vpRGBa> IL, IR;
+  vpImageIo::read(IL, "left.png");
+  vpImageIo::read(IR, "right.png");
+  fitness.setImages(IL, IR);                   // a new pair: the hue planes
+  pm::core::Phi phi;                                 // hMo: the model 500 mm ahead of the hand,
+  phi.z = 500;                                 // its axes those of the hand
+  const double F = fitness.evaluate(phi);      // the higher, the better phi fits the pair
+  const pm::core::FitnessDetail d = fitness.evaluateDetail(phi);
+  std::cout << "F = " << F << " (left " << d.left << ", right " << d.right << ")\n";
+}
+
+// StereoFitness.h
+void exampleStereoFitness2(const pm::core::StereoFitness &fitness, const pm::core::Phi *children, std::size_t n, double *F, double worstSurvivor,
+                           double margin, double *cost)
+{
+  fitness.evaluate(children, n, F, worstSurvivor - margin, cost); // a GA's children
+}
+
+// StereoFitness.h
+void exampleStereoFitness3(const pm::core::StereoFitness &fitness, const pm::core::Phi &phi)
+{
+  double g[6], M[36];
+  const double s = fitness.evaluateSmoothGradient(phi, g, M); // climb along M^-1 g (SmoothAscent)
+}
+
+// StereoRig.h
+void exampleStereoRig()
+{
+  const vpCameraParameters cam(800, 800, 320, 240);            // px, py, u0, v0 (pixels)
+  const double baseline = 0.1;                                 // metres
+  pm::core::StereoRig rig = pm::core::StereoRig::symmetric(cam, 640, 480, baseline, pm::core::StereoRig::toeInFor(baseline, 0.5));
+  rig.left.distortion.coefficients = {-0.27, 0.05, 0.001, 0.0, 0.0}; // the left lens (OpenCV's order)
+  rig.validate();                                              // throws pm::core::Error naming what is wrong
+  const vpHomogeneousMatrix cLMcR = rig.cLMcR();               // the right camera in the left one
+}
+
+// TargetHues.h
+void exampleTargetHues(const pm::core::PhotoModel &model)
+{
+  const pm::core::TargetHues hues(model);
+  const std::uint16_t h = pm::core::hueDeci(vpRGBa(200, 40, 30), 0.f);
+  std::cout << (hues.has(h) ? "the target's" : "not the target's") << "\n";
+}
+
+// ViewpointIndex.h
+void exampleViewpointIndex(const pm::core::PhotoModel &model)
+{
+  const pm::core::ViewpointIndex views(model);
+  const double camera[3] = {0, 0, -500};          // a camera 500 mm in front of the model's origin
+  const std::size_t k = views.nearest(camera);    // 0: the model's own view
+}
+
+} // namespace pm_examples

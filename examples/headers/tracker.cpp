@@ -1,0 +1,221 @@
+// The usage examples of pm::tracker's headers, each as its header shows it: this file is compiled
+// (never run), and scripts/header-examples.py checks that every example of a header is part of a file
+// here. What an example takes as given is its function's parameters.
+#include "pm/tracker/AscentRefinement.h"
+#include "pm/tracker/BackgroundLearning.h"
+#include "pm/tracker/FramePlan.h"
+#include "pm/tracker/Judgement.h"
+#include "pm/tracker/LockState.h"
+#include "pm/tracker/LockVerifier.h"
+#include "pm/tracker/MotionPrediction.h"
+#include "pm/tracker/PhotoModelTracker.h"
+#include "pm/tracker/PoseSearch.h"
+#include "pm/tracker/PreciseRefinement.h"
+#include "pm/tracker/QualityScale.h"
+#include "pm/tracker/RefinementChain.h"
+#include "pm/tracker/RmGaUpdate.h"
+#include "pm/tracker/StaticDetection.h"
+#include "pm/tracker/SteadyFramePolicy.h"
+#include "pm/tracker/TrackConfidence.h"
+#include "pm/tracker/TrackResult.h"
+#include "pm/tracker/TrackerConfigFile.h"
+#include "pm/tracker/TrackerParams.h"
+
+#include <fstream>
+#include <iostream>
+#include "pm/tracker/PhotoModelTracker.h"
+namespace pm_examples {
+
+// What an example leaves to its reader (declared, never defined: this file is compiled, never linked).
+void use(const vpHomogeneousMatrix &hMo);
+void moveTo(const std::pair<pm::core::Phi, double> &better);
+pm::tracker::TrackResult trackFrom(const pm::core::Phi &start);
+
+// AscentRefinement.h
+void exampleAscentRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, pm::tracker::TrackResult &r, const pm::tracker::TrackResult &last)
+{
+  pm::tracker::AscentRefinement ascent(params.refinement.ascent, fitness);
+  if (ascent.active())
+    ascent.refine(r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
+}
+
+// BackgroundLearning.h
+void exampleBackgroundLearning(const pm::tracker::TrackerParams &params, pm::core::StereoFitness &fitness, const pm::tracker::TrackResult &result)
+{
+  pm::tracker::BackgroundLearning bg(params.background, fitness);
+  // after each frame's judgement:
+  if (const std::optional<double> hue = bg.learn(result.phi, result.trusted))
+    fitness.setBackgroundHue(*hue);
+}
+
+// FramePlan.h
+void exampleFramePlan(const pm::tracker::TrackerParams &params, const pm::tracker::SteadyFramePolicy &steady, const pm::tracker::LockVerifier &verifier, pm::tracker::TrackState state, double hueMs,
+                      pm::rmga::RmGa &ga, pm::rmga::FitnessFunction &objective)
+{
+  pm::tracker::FramePlan plan = steady.plan(verifier.verifying(state));
+  plan.hueMs = hueMs;
+  plan.setBudgets(params.search, params.steady, params.verifier);
+  const pm::rmga::FrameResult r = ga.evolve(objective, plan.main);
+}
+
+// Judgement.h
+void exampleJudgement(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, const pm::precise::ModelErrorFloor &modelError,
+                      pm::tracker::TrackResult &r, const pm::tracker::TrackResult &last, const pm::tracker::LockState &lock, const pm::tracker::SteadyFramePolicy &steady,
+                      const pm::tracker::LockVerifier &verifier)
+{
+  pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, fitness, scale, modelError);
+  const pm::tracker::Evidence e = judgement.measure(r);
+  const bool refused = lock.wouldLock(r.quality) &&
+                       judgement.firstLockConfidence(e, steady.recentBestQ(), params.verifier.evaluations == 0) < params.lock.confidence;
+  // ... the lock's state from q and refused (LockState.h), then:
+  pm::tracker::JudgedState state;
+  state.last = &last.phi; // the last frame's pose, when it was tracked
+  state.recentBestQ = steady.recentBestQ();
+  state.framesTracked = lock.framesTracked();
+  state.verified = verifier.verified();
+  judgement.judge(r, e, state);
+  if (r.trusted)
+    use(r.hMo);
+}
+
+// LockState.h
+void exampleLockState(const pm::tracker::TrackerParams &params, double q, double firstLockConfidence, pm::tracker::PoseSearch &search)
+{
+  pm::tracker::LockState lock(params.lock);
+  // refused: the first lock's confidence under params.lock.confidence (Judgement::firstLockConfidence)
+  const bool refused = lock.wouldLock(q) && firstLockConfidence < params.lock.confidence;
+  pm::tracker::RmGaUpdate update;
+  update.restart = lock.update(q, refused); // search again around the best (lost) or away from it (refused)
+  search.apply(update);
+}
+
+// LockVerifier.h
+void exampleLockVerifier(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, pm::tracker::TrackState lastState, pm::tracker::TrackState prev, const pm::tracker::FramePlan &plan,
+                         const pm::tracker::TrackResult &r, pm::tracker::TrackResult &work, const pm::tracker::PoseSearch &search)
+{
+  pm::tracker::LockVerifier verifier(params.verifier, params.search, fitness, scale);
+  if (verifier.verifying(lastState)) {
+    const auto better = verifier.challenge(plan.challenger, r.phi, r.fitness, search.ga(), work);
+    if (better)
+      moveTo(*better); // a wrong first lock
+  }
+  verifier.onState(prev, r.state, r.phi, search.ga());                 // a new lock is verified on the next frames
+  verifier.afterJudgement(r.state, r.confidence, r.phi, search.ga()); // a doubtful lock again
+}
+
+// MotionPrediction.h
+void exampleMotionPrediction(const pm::tracker::TrackResult &last, const vpHomogeneousMatrix &hNowMhPrev)
+{
+  pm::tracker::MotionPrediction motion;              // gain 1
+  for (;;) {
+    const pm::core::Phi start = motion.predict(last.phi); // last.phi moved on, or as it is
+    pm::tracker::TrackResult r = trackFrom(start);
+    motion.remember(r);                              // at the frame's end
+    motion.transform(hNowMhPrev);                    // the hand moved
+  }
+}
+
+// PoseSearch.h
+void examplePoseSearch(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, const pm::tracker::FramePlan &plan)
+{
+  pm::tracker::PoseSearch search(params.search, fitness, scale);
+  search.initialize();                                   // a random population
+  const pm::rmga::FrameResult r = search.evolve(plan.main, false);  // tracked: every point
+  pm::tracker::RmGaUpdate u;
+  u.anchor = r.best;                                     // trusted
+  search.apply(u);
+}
+
+// PreciseRefinement.h
+void examplePreciseRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
+                               const pm::tracker::TrackResult &last, const pm::tracker::MotionPrediction &motion, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, pm::tracker::PoseSearch &search)
+{
+  pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, fitness, scale);
+  if (stage.refine(r, last, motion.predict(last.phi), IL, IR)) {
+    pm::tracker::RmGaUpdate u;
+    u.inject = pm::tracker::RmGaUpdate::Inject{r.phi, r.fitness}; // the frame's pose is the stage's: it joins RM-GA
+    search.apply(u);
+  }
+}
+
+// QualityScale.h
+void exampleQualityScale(const pm::core::PhotoModel &model, const pm::core::StereoFitness &fitness, const pm::core::Phi &phi, double F)
+{
+  const pm::tracker::QualityScale scale(model, pm::tracker::trackerFitnessDefaults());
+  const double q = scale.quality(fitness.evaluate(phi));
+  const double minF = F - scale.fitnessSpan(0.02); // F lower by 0.02 in q
+}
+
+// RefinementChain.h
+void exampleRefinementChain(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
+                            const pm::tracker::TrackResult &last, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, bool locked, pm::tracker::PoseSearch &search)
+{
+  pm::tracker::RefinementChain chain(params.refinement, rig, model, fitness, scale);
+  pm::tracker::RmGaUpdate u;
+  u.inject = chain.refine(r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
+  search.apply(u);
+}
+
+// RmGaUpdate.h
+void exampleRmGaUpdate(const pm::core::Phi &betterPose, const pm::core::Phi &trustedPose, pm::tracker::PoseSearch &search)
+{
+  pm::tracker::RmGaUpdate u;
+  u.reseed = pm::tracker::RmGaUpdate::Reseed{betterPose, 0.02};
+  u.anchor = trustedPose;
+  search.apply(u);
+}
+
+// StaticDetection.h
+void exampleStaticDetection(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+{
+  pm::tracker::PhotoModelTracker tracker(rig, model);
+  tracker.initialize();
+  const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, left, right, pm::tracker::DetectionParams());
+  std::cout << d.best.phi.toString() << " after " << d.convergedS << " s\n";
+}
+
+// SteadyFramePolicy.h
+void exampleSteadyFramePolicy(const pm::tracker::TrackerParams &params, bool verifying, pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, const pm::core::Phi &lastPose,
+                              pm::tracker::PoseSearch &search, pm::tracker::TrackState state)
+{
+  pm::tracker::SteadyFramePolicy steady(params.steady);
+  const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
+  if (plan.windowed)
+    fitness.setImages(IL, IR, steady.windows(fitness, lastPose));
+  else
+    fitness.setImages(IL, IR);
+  const pm::rmga::FrameResult r = search.evolve(plan.main, false);
+  if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
+    search.evolve(plan.mainWhole, false, true);                   // (on the whole images)
+  steady.update(state, scale.quality(r.fitness));                // after the frame's state
+}
+
+// TrackConfidence.h
+void exampleTrackConfidence(const pm::tracker::ConfidenceCues &cues, const vpHomogeneousMatrix &pose)
+{
+  pm::tracker::ConfidenceModel m;                 // the shipped coefficients
+  const double c = m.confidence(cues);   // in (0, 1)
+  if (c >= m.threshold) use(pose);
+}
+
+// TrackResult.h
+void exampleTrackResult(pm::tracker::PhotoModelTracker &tracker, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR)
+{
+  const pm::tracker::TrackResult r = tracker.track(IL, IR);
+  std::cout << pm::tracker::toString(r.state) << " q " << r.quality << " confidence " << r.confidence << "\n";
+  if (r.trusted)          // tracking, verified, confident: a pose to act on
+    use(r.hMo);
+}
+
+// TrackerConfigFile.h
+void exampleTrackerConfigFile()
+{
+  std::string notice;
+  pm::tracker::TrackerParams p = pm::tracker::loadTrackerConfig("tracker.json", pm::tracker::TrackerParams(), &notice);
+  if (!notice.empty())
+    std::cerr << "notice: " << notice << "\n";   // a file of version 1
+  p.search.ga.seed = 7;
+  std::ofstream("mine.json") << pm::tracker::trackerConfigToJson(p);
+}
+
+} // namespace pm_examples
