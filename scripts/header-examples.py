@@ -5,6 +5,7 @@
                                                    that has its file examples/headers/<module>.cpp is a
                                                    verbatim part (line by line, indentation aside) of a
                                                    file there, which the build compiles
+    python3 scripts/header-examples.py --missing M   print a function for each block of module M not found yet
     python3 scripts/header-examples.py --skeleton M  print a file for module M with each of its blocks
                                                    in a function of its own (a start for examples/headers/M.cpp)
 Exit status 1 naming each block not found (header and line), 2 for a usage error.
@@ -75,6 +76,20 @@ def dedented(lines):
     return [l[ind:].rstrip() for l in lines]
 
 
+def missing(module):
+    """The functions (as skeleton() writes them) of module's blocks not yet in examples/headers/."""
+    folder = ROOT / "examples" / "headers"
+    sources = [normal(p.read_text().splitlines()) for p in sorted(folder.glob("*.cpp"))]
+    for h in headers(module):
+        for k, (start, lines) in enumerate(blocks(h)):
+            if any(contains(src, normal(lines)) for src in sources):
+                continue
+            print(f"\n// {h.stem}.h\nvoid example{h.stem}{k + 1 if k else ''}()\n{{")
+            for l in dedented(lines):
+                print(("  " + l).rstrip())
+            print("}")
+
+
 def skeleton(module):
     """A start for examples/headers/<module>.cpp on stdout; a whole program (one with main()) is written
     to examples/headers/<module>_<Header>.cpp as it is (the library compiles it as it is, never links it)."""
@@ -105,6 +120,9 @@ def skeleton(module):
 if __name__ == "__main__":
     if len(sys.argv) == 1:
         sys.exit(check())
+    if len(sys.argv) == 3 and sys.argv[1] == "--missing":
+        missing(sys.argv[2])
+        sys.exit(0)
     if len(sys.argv) == 3 and sys.argv[1] == "--skeleton":
         skeleton(sys.argv[2])
         sys.exit(0)

@@ -10,6 +10,7 @@
 #include <iostream>
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
+#include "pm/calib/RigComparison.h"
 namespace pm_examples {
 
 // BaselineCheck.h
@@ -23,6 +24,26 @@ void exampleBaselineCheck()
               pm::io::readColorImage("R_" + std::to_string(k) + ".png"), "pair " + std::to_string(k));
   const pm::calib::BaselineResult r = check.result();
   std::cout << r.baselineMm << " mm, " << r.rotationErrorDeg << " deg from the rig file" << std::endl;
+}
+
+// RigCalibration.h
+void exampleRigCalibration(const std::vector<pm::calib::StereoImagePair> &pairs)
+{
+  // pairs: a std::vector<pm::calib::StereoImagePair>, raw images as the cameras give them
+  pm::calib::ChessBoard board;
+  board.innerRows = 6;
+  board.innerCols = 9;
+  board.squareMm = 25;
+  const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+  pm::io::saveRig(c.rig, "rig.json", "rig.xml"); // then pm-calib-baseline, pm-make-model, pm-track
+}
+
+// RigComparison.h
+void exampleRigComparison(const std::vector<pm::calib::StereoImagePair> &pairs, const pm::calib::Pattern &board)
+{
+  const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+  const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, pm::io::loadRig("rig.json"));
+  std::cout << e.baselineErrorMm << " mm, " << e.rotationErrorDeg << " deg" << std::endl;
 }
 
 } // namespace pm_examples

@@ -5,6 +5,8 @@
 #include "pm/capture/StereoSource.h"
 #include "pm/capture/VideoCaptureSource.h"
 
+#include <iostream>
+#include "pm/tracker/PhotoModelTracker.h"
 namespace pm_examples {
 
 // ImageSequenceSource.h
@@ -47,6 +49,25 @@ void exampleVideoCaptureSource()
   while (src.next(f))
     std::cout << f.index << ": " << f.timeS << " s, skew " << f.skewMs << " ms\n";
   std::cout << src.stats().describe() << "\n";
+}
+
+// StereoSource.h
+void exampleStereoSourceFile(pm::tracker::PhotoModelTracker &tracker)
+{
+  std::unique_ptr<pm::capture::StereoSource> src = std::make_unique<pm::capture::VideoCaptureSource>("0", "1");
+  pm::capture::StereoFrame f;
+  while (src->next(f))
+    tracker.track(f.left, f.right);
+  std::cout << src->stats().describe() << "\n";
+}
+
+// VideoCaptureSource.h
+void exampleVideoCaptureSourceFile(pm::tracker::PhotoModelTracker &tracker)
+{
+  pm::capture::VideoCaptureSource src("/dev/video0", "/dev/video2");
+  pm::capture::StereoFrame f;
+  while (src.next(f))
+    tracker.track(f.left, f.right);
 }
 
 } // namespace pm_examples

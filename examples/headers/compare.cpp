@@ -17,6 +17,7 @@
 #include "pm/compare/Trackers.h"
 #include "pm/io/StagedFiles.h"
 #include "pm/sim/SimulatedPhotoModel.h"
+#include "pm/sim/Mesh.h"
 namespace pm_examples {
 
 // What an example leaves to its reader (declared, never defined: this file is compiled, never linked).
@@ -159,6 +160,13 @@ void exampleUncertaintyCalibration(const pm::core::StereoRig &rig)
   const auto r2 = pm::compare::collectUncertaintySamples(rig, {"R2", 1});
   const pm::precise::UncertaintyModel m = pm::compare::fitUncertainty({c12, r2});
   const std::array<double, 6> within = pm::compare::shareWithin(c12, m, 1.0); // about 0.68 each
+}
+
+// CadMesh.h
+void exampleCadMeshFile(const pm::model::AllAroundBuild &build, const pm::sim::TargetShape &target)
+{
+  const std::string cao = pm::compare::meshCaoText(build.mesh.decimated(6.0), "C12, all-around surface");
+  const std::string exact = pm::compare::meshCaoText(pm::compare::toyCadMesh(pm::sim::buildTargetMesh(target, 1.0)).decimated(6.0), "C12, true");
 }
 
 } // namespace pm_examples

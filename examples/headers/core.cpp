@@ -22,6 +22,9 @@
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
 
+#include "pm/core/LensDistortion.h"
+#include "pm/core/UndistortMap.h"
+#include "pm/core/Vec3.h"
 namespace pm_examples {
 
 // BatchPool.h
@@ -165,6 +168,46 @@ void exampleViewpointIndex(const pm::core::PhotoModel &model)
   const pm::core::ViewpointIndex views(model);
   const double camera[3] = {0, 0, -500};          // a camera 500 mm in front of the model's origin
   const std::size_t k = views.nearest(camera);    // 0: the model's own view
+}
+
+// LensDistortion.h
+void exampleLensDistortion(const vpCameraParameters &cam, const vpImagePoint &ideal)
+{
+  pm::core::LensDistortion d{{-0.27, 0.05, 0.001, 0.0, 0.0}};
+  d.validate(cam, 640, 480, "left camera");            // throws if it folds the image
+  const vpImagePoint raw = d.distort(cam, ideal);     // where an ideal pixel lands in the raw image
+  const vpImagePoint back = d.undistort(cam, raw);    // and back
+}
+
+// PhotoModel.h
+void examplePhotoModelFile()
+{
+  pm::core::PhotoModel m = pm::io::loadPhotoModel("model.json");   // version 1 (flat), 2 or 3 (depth)
+  if (m.hasDepth()) std::cout << "relief " << m.depthRangeMm[0] << " to " << m.depthRangeMm[1] << " mm\n";
+}
+
+// TargetHues.h
+void exampleTargetHuesFile(const pm::core::PhotoModel &model, const vpRGBa &pixel)
+{
+  const pm::core::TargetHues hues(model);
+  if (hues.has(pm::core::hueDeci(pixel, 0.f)))
+    std::cout << "a colour of the target's own\n";
+}
+
+// UndistortMap.h
+void exampleUndistortMap(const pm::core::StereoRig &rig, const vpImage<vpRGBa> &rawLeft, pm::core::HuePlane &plane)
+{
+  const pm::core::UndistortMap map(rig.left);           // once
+  vpImage<vpRGBa> ideal;
+  map.undistort(rawLeft, ideal);                  // a photo for the builder
+  plane.compute(rawLeft, 0.1f, map);              // the hue plane in the ideal image
+}
+
+// Vec3.h
+void exampleVec3()
+{
+  const pm::core::Vec3 a{0, 0, 500}, b{10, 0, 500};
+  const double d = std::sqrt(pm::core::dot(pm::core::sub(b, a), pm::core::sub(b, a))); // 10 mm
 }
 
 } // namespace pm_examples

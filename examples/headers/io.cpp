@@ -8,13 +8,56 @@
 #include "pm/io/StagedFiles.h"
 #include "pm/io/WellFormedXml.h"
 
+#include "pm/io/AllAroundFiles.h"
+#include "pm/io/DataDir.h"
+#include "pm/io/PoseFile.h"
+#include "pm/io/ViewsFolder.h"
 namespace pm_examples {
+
+// The build defines these for its programs (apps/CMakeLists.txt): the source tree's data and the installed one's.
+#define PM_SOURCE_DATA_DIR "data"
+#define PM_INSTALL_DATA_DIR "/usr/local/share/visp-photomodel"
 
 // WellFormedXml.h
 void exampleWellFormedXml()
 {
   pm::io::requireWellFormedXml("<opencv_storage><a>1</a></opencv_storage>"); // fine
   pm::io::requireWellFormedXml("<opencv_storage><a type_id=");                // throws
+}
+
+// AllAroundFiles.h
+void exampleAllAroundFiles(const pm::model::AllAroundBuild &build, const std::vector<pm::model::PassView> &pass, const pm::core::StereoRig &rig)
+{
+  pm::io::StagedFiles out("model_dir");
+  pm::io::writeAllAroundPictures(build, pass, rig, out);
+  out.commit();
+}
+
+// CameraFile.h
+void exampleCameraFile(pm::core::StereoRig &rig)
+{
+  const pm::io::CameraFile c = pm::io::readCameraFile("left.yml", "left", 640, 480);
+  rig.left.cam = c.camera.cam;  rig.left.distortion = c.camera.distortion;
+}
+
+// DataDir.h
+void exampleDataDir()
+{
+  const std::string rig = pm::io::dataDir(PM_SOURCE_DATA_DIR, PM_INSTALL_DATA_DIR) + "/rig/pa10_stereo.json";
+}
+
+// PoseFile.h
+void examplePoseFile()
+{
+  const vpHomogeneousMatrix fMh = pm::io::readPoseYaml("views/pose_fPh_00.yaml");
+  pm::io::writePoseYaml(fMh, "copy.yaml");
+}
+
+// ViewsFolder.h
+void exampleViewsFolder(const pm::core::StereoRig &rig)
+{
+  const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig);
+  pm::io::saveViewsFolder(pass, "copy");   // all files appear together, or none
 }
 
 } // namespace pm_examples

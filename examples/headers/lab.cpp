@@ -31,6 +31,14 @@
 #include "pm/sim/TargetCatalog.h"
 #include "pm/sim/TcRobot.h"
 #include "pm/trust/PassCalibration.h"
+#include "pm/calib/RigComparison.h"
+#include "pm/lab/LabPass.h"
+#include "pm/lab/ModelMaking.h"
+#include "pm/lab/SilhouetteTruth.h"
+#include "pm/lab/SimulatedCalibration.h"
+#include "pm/lab/SurfaceTruth.h"
+#include "pm/lab/TargetRendering.h"
+#include "pm/report/ModelOutputs.h"
 namespace pm_examples {
 
 // ArmCameraSource.h
@@ -216,6 +224,60 @@ void exampleTrustCache(const pm::core::StereoRig &rig, const std::vector<pm::mod
     t->triesCsv = pm::trust::triesCsv(tries, t->trust);
     cache.store(key, *t);
   }
+}
+
+// LabPass.h
+void exampleLabPass(const pm::sim::Scene &scene, const pm::core::StereoRig &rig)
+{
+  pm::robot::SteppedArm arm(pm::robot::makeArmModel("viper850"));
+  const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig, pm::model::PassPlan(), arm);
+  const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views);
+  const vpHomogeneousMatrix oMm = pass.fMo.inverse() * b.fMm;   // ground truth of the model frame
+}
+
+// ModelMaking.h
+void exampleModelMaking()
+{
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
+  pm::capture::ModelPairs pairs;
+  pairs.background = {pm::io::readColorImage("bgL.png"), pm::io::readColorImage("bgR.png")};
+  pairs.photo = {pm::io::readColorImage("toyL.png"), pm::io::readColorImage("toyR.png")};
+  pm::report::ModelOutputs m = pm::lab::stereoModelFromPhotos(rig, pairs, pm::model::StereoModelParams(), "my toy");
+  pm::report::writeModelOutputs("model", m, 0);
+}
+
+// SilhouetteTruth.h
+void exampleSilhouetteTruth(const pm::sim::Scene &toyScene, const std::vector<pm::model::PassView> &pass, const vpHomogeneousMatrix &fMo,
+                            const pm::model::AllAroundBuild &build, const pm::core::StereoRig &rig)
+{
+  const pm::lab::SilhouetteTruth t = pm::lab::checkSilhouettes(toyScene, pass, fMo, build, rig);
+  std::cout << t.text;
+}
+
+// SimulatedCalibration.h
+void exampleSimulatedCalibration(const pm::calib::Pattern &board)
+{
+  const pm::core::StereoRig truth = pm::lab::labRigWithLens(pm::core::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
+  const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 20, pm::lab::SimulatedCalibrationParams());
+  const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
+  const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, truth);
+}
+
+// SurfaceTruth.h
+void exampleSurfaceTruth(const pm::sim::Scene &scene, const pm::model::AllAroundBuild &build, const vpHomogeneousMatrix &oMm, const pm::core::StereoRig &rig)
+{
+  const pm::lab::SurfaceTruth t = pm::lab::checkSurface(scene, build, oMm, rig.left.cam, 10);
+  std::cout << "depth error median " << t.views[0].medianMm << " mm\n";
+}
+
+// TargetRendering.h
+void exampleTargetRendering()
+{
+  const pm::core::StereoRig rig = pm::io::loadRig("data/rig/pa10_stereo.json");
+  const pm::sim::TargetShape shape = pm::sim::makeTarget("C12");
+  const pm::sim::Scene scene(shape);
+  const pm::lab::RenderedTarget t = pm::lab::renderTarget(scene, shape, rig, pm::core::Phi{0, 0, 500, 0, 0, 0}, 5);
+  pm::lab::writeRenderedTargets("render", {t}, pm::core::Phi{0, 0, 500, 0, 0, 0}, pm::sim::SceneParams(), false);
 }
 
 } // namespace pm_examples

@@ -12,7 +12,12 @@
 #include <iostream>
 #include "pm/precise/CorrespondenceLines.h"
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/precise/InteriorTerm.h"
+#include "pm/precise/OutlineViews.h"
 namespace pm_examples {
+
+// What an example leaves to its reader (declared, never defined: this file is compiled, never linked).
+void use(const pm::core::ContourPoint &p);
 
 // ColourHistograms.h
 void exampleColourHistograms(const std::vector<vpRGBa> &targetPixels, const std::vector<vpRGBa> &backgroundPixels)
@@ -72,6 +77,62 @@ void exampleStereoOcclusion(const pm::core::PhotoModel &model, const pm::precise
   // centre: the left camera's centre in the model frame (precise::cameraInModel)
   if (occlusion.hidden(cams[0], poses[0], centre, cams[1], poses[1], model.contour[i], cams[0].px / depthMm))
     std::cout << "contour point " << i << " is hidden in the left camera\n";
+}
+
+// ColourHistograms.h
+void exampleColourHistogramsFile(const pm::core::PhotoModel &model)
+{
+  pm::precise::ColourHistograms h;
+  h.start(model.foregroundHistogram, model.backgroundHistogram);   // the model's photos
+  h.addForeground(vpRGBa(200, 40, 30)); h.addBackground(vpRGBa(30, 60, 200));
+  h.update(0.2, 0.2);                                               // a frame's colours blended in
+  const float pf = h.posterior(vpRGBa(190, 50, 30));               // near 1: the target's colour
+}
+
+// CorrespondenceLines.h
+void exampleCorrespondenceLines(const pm::precise::LineCamera &camera, const pm::precise::OutlineViews &outlines, const pm::core::Phi &phi,
+                                const pm::precise::LineShape &shape, const pm::precise::ColourHistograms &colours, double weight)
+{
+  pm::precise::CorrespondenceLines lines(200, 19, 6);
+  lines.measure(camera, outlines, phi, shape, colours, 2, 150, 3.0);
+  double g[6] = {0}, H[36] = {0};
+  lines.accumulate(camera, phi, weight, g, H, nullptr);
+}
+
+// InteriorTerm.h
+void exampleInteriorTermFile(const pm::core::PhotoModel &model, const pm::precise::LineCamera &camera, std::size_t view, const pm::core::Phi &phi,
+                             pm::precise::InteriorSamples &samples, double g[6], double H[36])
+{
+  pm::precise::InteriorTerm interior(model, 200);
+  interior.measure(camera, view, phi, 1.0, samples);          // at each step
+  pm::precise::InteriorTerm::accumulate(camera, phi, samples, 0.05, 1.0, g, H, nullptr); // each step
+}
+
+// OutlineViews.h
+void exampleOutlineViewsFile(const pm::core::PhotoModel &model, const double cameraInModelMm[3])
+{
+  const pm::precise::OutlineViews outlines(model);             // throws unless model.hasContours()
+  const std::size_t k = outlines.nearest(cameraInModelMm);
+  for (std::size_t i = outlines.view(k).begin; i < outlines.view(k).end; ++i) use(outlines.point(i));
+}
+
+// PreciseStage.h
+void examplePreciseStageFile(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR,
+                             const pm::core::Phi &rmgaBest, pm::core::Phi &phi)
+{
+  pm::precise::PreciseStage precise(rig, model);           // the model must carry outlines (version 5)
+  precise.setImages(IL, IR);                      // the frame (kept by pointer until the next)
+  const pm::precise::PreciseResult r = precise.refine(rmgaBest);
+  if (r.ok) { phi = r.phi; precise.learnColours(phi); }
+}
+
+// StereoOcclusion.h
+void exampleStereoOcclusionFile(const pm::core::PhotoModel &model, const pm::precise::LineCamera &left, const pm::precise::ModelInCamera &leftPose,
+                                const double leftCentre[3], const pm::precise::LineCamera &right, const pm::precise::ModelInCamera &rightPose,
+                                const pm::core::ContourPoint &contourPoint, double pxPerMm)
+{
+  pm::precise::StereoOcclusion occlusion(model, pm::precise::StereoOcclusionParams());
+  const bool h = occlusion.hidden(left, leftPose, leftCentre, right, rightPose, contourPoint, pxPerMm);
 }
 
 } // namespace pm_examples

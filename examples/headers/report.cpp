@@ -142,4 +142,12 @@ void exampleTimePlot()
   pm::io::writeImage(figure, "errors.png");        // pm/io/ImageFile.h
 }
 
+// ObjectiveProfiles.h
+void exampleObjectiveProfilesFile(pm::io::StagedFiles &files, const pm::core::StereoFitness &fitness, pm::precise::PreciseStage &precise,
+                                  const pm::core::Phi &truth)
+{
+  const pm::report::ProfileResult r = pm::report::writeObjectiveProfiles(files, fitness, precise, truth, 6.0, 0.25);
+  std::cout << "F peaks " << r.axes[0].fitnessPeakDeg << " deg off the truth about x\n";
+}
+
 } // namespace pm_examples

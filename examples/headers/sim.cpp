@@ -13,6 +13,7 @@
 #include "pm/sim/Trajectory.h"
 
 #include <iostream>
+#include "pm/sim/SimulatedPhotoModel.h"
 namespace pm_examples {
 
 // Clutter.h
@@ -135,6 +136,13 @@ void exampleTrajectory()
     if (traj.moving(t))
       std::cout << "t = " << t << " s: moving to step " << traj.stepAt(t) + 1 << "\n";
   }
+}
+
+// SimulatedPhotoModel.h
+void exampleSimulatedPhotoModel(const pm::sim::Scene &scene, const pm::core::StereoRig &rig, const vpHomogeneousMatrix &hMo)
+{
+  const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
+  const pm::core::Phi truth = sm.truth(hMo);   // the model's true pose for a toy at hMo
 }
 
 } // namespace pm_examples

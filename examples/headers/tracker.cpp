@@ -24,7 +24,11 @@
 #include <fstream>
 #include <iostream>
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/tracker/TiltFilter.h"
 namespace pm_examples {
+
+pm::core::Phi estimate();
+void use(const pm::core::Phi &pose);
 
 // What an example leaves to its reader (declared, never defined: this file is compiled, never linked).
 void use(const vpHomogeneousMatrix &hMo);
@@ -216,6 +220,17 @@ void exampleTrackerConfigFile()
     std::cerr << "notice: " << notice << "\n";   // a file of version 1
   p.search.ga.seed = 7;
   std::ofstream("mine.json") << pm::tracker::trackerConfigToJson(p);
+}
+
+// TiltFilter.h
+void exampleTiltFilter(const vpHomogeneousMatrix &hNowMhPrev)
+{
+  pm::tracker::TiltFilter filter;              // alpha 0.2, beta 0.02
+  for (;;) {
+    const pm::core::Phi raw = estimate();   // this frame's best pose
+    use(filter.update(raw));          // its tilt smoothed
+    filter.transform(hNowMhPrev);     // the hand moved (eye-in-hand)
+  }
 }
 
 } // namespace pm_examples

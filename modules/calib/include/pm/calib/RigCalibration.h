@@ -18,10 +18,15 @@
   than maxEdgeWidthPx), a pair when its images differ in size from the first pair's; fewer than
   minPairs pairs usable for the stereo pose (or views for a camera) is an error.
 
-      std::vector<pm::calib::StereoImagePair> pairs = ...;   // raw images, as the cameras give them
-      pm::calib::ChessBoard board;  board.innerRows = 6;  board.innerCols = 9;  board.squareMm = 25;
+  \code
+      // pairs: a std::vector<pm::calib::StereoImagePair>, raw images as the cameras give them
+      pm::calib::ChessBoard board;
+      board.innerRows = 6;
+      board.innerCols = 9;
+      board.squareMm = 25;
       const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
-      pm::io::saveRig(c.rig, "rig.json", ...);   // then pm-calib-baseline, pm-make-model, pm-track
+      pm::io::saveRig(c.rig, "rig.json", "rig.xml"); // then pm-calib-baseline, pm-make-model, pm-track
+  \endcode
 */
 #include <string>
 #include <vector>

@@ -5,9 +5,11 @@
   pictures (in the lab), or against the rig file it should replace. Frame-free: it compares the
   right camera's pose in the left one (cLMcR) and each camera's map from raw pixels to rays.
 
+  \code
       const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
       const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, pm::io::loadRig("rig.json"));
       std::cout << e.baselineErrorMm << " mm, " << e.rotationErrorDeg << " deg" << std::endl;
+  \endcode
 */
 #include "pm/core/StereoRig.h"
 

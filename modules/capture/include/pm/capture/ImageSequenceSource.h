@@ -6,7 +6,9 @@
   is not the expected one, is skipped and counted (stats().problems says why); the times follow
   \e fps.
 
+  \code
       pm::capture::ImageSequenceSource src("rec/L_%04d.png", "rec/R_%04d.png", 0, 30.0, 640, 480);
+  \endcode
 */
 #include <string>
 #include <vector>

@@ -6,11 +6,13 @@
   A source hands out pairs in order and counts what it could not pair or read; the programs only
   loop over next().
 
+  \code
       std::unique_ptr<pm::capture::StereoSource> src = std::make_unique<pm::capture::VideoCaptureSource>("0", "1");
       pm::capture::StereoFrame f;
       while (src->next(f))
         tracker.track(f.left, f.right);
       std::cout << src->stats().describe() << "\n";
+  \endcode
 */
 #include <string>
 #include <vector>

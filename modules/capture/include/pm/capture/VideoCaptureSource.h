@@ -14,9 +14,12 @@
   (a device or a pipeline) is read by a thread of its own each time, so that a driver that never
   returns is given up on; a file is read directly.
 
+  \code
       pm::capture::VideoCaptureSource src("/dev/video0", "/dev/video2");
       pm::capture::StereoFrame f;
-      while (src.next(f)) { ... }
+      while (src.next(f))
+        tracker.track(f.left, f.right);
+  \endcode
 */
 #include <memory>
 #include "pm/capture/StereoSource.h"

@@ -9,8 +9,10 @@
   `--mbt-true-cad`, the toy's own mesh (the lab knows it), decimated the same way: ours from photos
   against ViSP with the exact CAD model, as a ViSP user with the object's drawings would run it.
 
+  \code
       const std::string cao = pm::compare::meshCaoText(build.mesh.decimated(6.0), "C12, all-around surface");
       const std::string exact = pm::compare::meshCaoText(pm::compare::toyCadMesh(pm::sim::buildTargetMesh(target, 1.0)).decimated(6.0), "C12, true");
+  \endcode
 */
 #include <string>
 

@@ -12,10 +12,12 @@
   calibration check undistorts its corners. The raw image is what the camera delivers. With no
   coefficients (or all zero) nothing is resampled: a pinhole rig keeps its results bit for bit.
 
+  \code
       pm::core::LensDistortion d{{-0.27, 0.05, 0.001, 0.0, 0.0}};
       d.validate(cam, 640, 480, "left camera");            // throws if it folds the image
       const vpImagePoint raw = d.distort(cam, ideal);     // where an ideal pixel lands in the raw image
       const vpImagePoint back = d.undistort(cam, raw);    // and back
+  \endcode
 */
 #include <string>
 #include <vector>

@@ -20,8 +20,10 @@
   camera's projection with the view taken from the direction nearest to that camera's (the toy's
   outline and sides as that camera sees them), like the view-based models of DLR's trackers.
 
+  \code
       pm::core::PhotoModel m = pm::io::loadPhotoModel("model.json");   // version 1 (flat), 2 or 3 (depth)
       if (m.hasDepth()) std::cout << "relief " << m.depthRangeMm[0] << " to " << m.depthRangeMm[1] << " mm\n";
+  \endcode
 */
 #include <string>
 #include <array>

@@ -7,8 +7,11 @@
   the fitness's stereo visibility (StereoFitness.h) and by the precise stage's hidden lines
   (precise::StereoOcclusion).
 
+  \code
       const pm::core::TargetHues hues(model);
-      if (hues.has(pm::core::hueDeci(pixel, 0.f))) ... // a colour of the target's own
+      if (hues.has(pm::core::hueDeci(pixel, 0.f)))
+        std::cout << "a colour of the target's own\n";
+  \endcode
 */
 #include <cstdint>
 #include <vector>

@@ -11,10 +11,12 @@
     field of floats (a silhouette's signed distance, found in the raw image).
   With barrel distortion the raw image's corners fall outside the ideal image and are not used.
 
+  \code
       const pm::core::UndistortMap map(rig.left);           // once
       vpImage<vpRGBa> ideal;
       map.undistort(rawLeft, ideal);                  // a photo for the builder
       plane.compute(rawLeft, 0.1f, map);              // the hue plane in the ideal image
+  \endcode
 */
 #include <cstdint>
 #include <vector>

@@ -4,8 +4,10 @@
   A point or a direction in millimetres, and the few operations on it that the cameras' projection
   and the model builders use.
 
+  \code
       const pm::core::Vec3 a{0, 0, 500}, b{10, 0, 500};
       const double d = std::sqrt(pm::core::dot(pm::core::sub(b, a), pm::core::sub(b, a))); // 10 mm
+  \endcode
 */
 #include <array>
 #include <cmath>

@@ -11,9 +11,11 @@
   - silhouettes.png: every view's left photo with its silhouette (green) and the hull's outline
     from that camera (red) over it.
 
+  \code
       pm::io::StagedFiles out("model_dir");
       pm::io::writeAllAroundPictures(build, pass, rig, out);
       out.commit();
+  \endcode
 */
 #include <string>
 #include <vector>

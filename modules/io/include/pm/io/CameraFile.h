@@ -10,8 +10,10 @@
   - ROS camera_info YAML: camera_matrix and distortion_coefficients as {rows, cols, data},
     distortion_model plumb_bob or rational_polynomial.
 
+  \code
       const pm::io::CameraFile c = pm::io::readCameraFile("left.yml", "left", 640, 480);
       rig.left.cam = c.camera.cam;  rig.left.distortion = c.camera.distortion;
+  \endcode
 */
 #include <string>
 #include <visp3/core/vpCameraParameters.h>

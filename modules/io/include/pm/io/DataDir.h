@@ -4,7 +4,9 @@
   Where the shipped data (rigs, trajectories, calibration boards) is found: the programs' and the
   Python module's one rule.
 
+  \code
       const std::string rig = pm::io::dataDir(PM_SOURCE_DATA_DIR, PM_INSTALL_DATA_DIR) + "/rig/pa10_stereo.json";
+  \endcode
 */
 #include <string>
 

@@ -18,8 +18,10 @@
   ViSP's own reader (vpArray2D::loadYAML) checks neither the sizes nor the values; this one does
   (yaml-cpp), and refuses anything else with an error naming the file.
 
+  \code
       const vpHomogeneousMatrix fMh = pm::io::readPoseYaml("views/pose_fPh_00.yaml");
       pm::io::writePoseYaml(fMh, "copy.yaml");
+  \endcode
 */
 #include <string>
 

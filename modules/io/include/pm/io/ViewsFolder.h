@@ -11,8 +11,10 @@
   the pass. The lab writes its passes in exactly this layout (pm-make-model --all-around), so the
   lab's views and a user's go through one code path.
 
+  \code
       const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig);
       pm::io::saveViewsFolder(pass, "copy");   // all files appear together, or none
+  \endcode
 */
 #include <string>
 #include <vector>

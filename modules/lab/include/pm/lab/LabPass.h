@@ -9,10 +9,12 @@
   frame is the world frame f). The views are what a user's rig writes into a views folder
   (pm::io::saveViewsFolder), so the lab and a user's files go through one builder.
 
+  \code
       pm::robot::SteppedArm arm(pm::robot::makeArmModel("viper850"));
       const pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig, pm::model::PassPlan(), arm);
       const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views);
       const vpHomogeneousMatrix oMm = pass.fMo.inverse() * b.fMm;   // ground truth of the model frame
+  \endcode
 */
 #include <vector>
 

@@ -7,12 +7,14 @@
   capture::grabModelPairs), and the simulator's photos of a lab target or of a user's image.
   Each returns a report::ModelOutputs ready for report::writeModelOutputs().
 
+  \code
       const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
       pm::capture::ModelPairs pairs;
       pairs.background = {pm::io::readColorImage("bgL.png"), pm::io::readColorImage("bgR.png")};
       pairs.photo = {pm::io::readColorImage("toyL.png"), pm::io::readColorImage("toyR.png")};
       pm::report::ModelOutputs m = pm::lab::stereoModelFromPhotos(rig, pairs, pm::model::StereoModelParams(), "my toy");
       pm::report::writeModelOutputs("model", m, 0);
+  \endcode
 */
 #include <string>
 

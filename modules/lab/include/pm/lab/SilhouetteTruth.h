@@ -8,8 +8,10 @@
   not make (another renderer's soft shadows, RenderedScene.h), where the truth is the same toy at the
   same poses.
 
+  \code
       const pm::lab::SilhouetteTruth t = pm::lab::checkSilhouettes(toyScene, pass, fMo, build, rig);
       std::cout << t.text;
+  \endcode
 */
 #include <string>
 #include <vector>

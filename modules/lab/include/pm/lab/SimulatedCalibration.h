@@ -5,10 +5,12 @@
   known lens distortion; how far a calibration of them lands from that rig is
   pm::calib::compareRigs().
 
+  \code
       const pm::core::StereoRig truth = pm::lab::labRigWithLens(pm::core::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
       const auto pairs = pm::lab::renderCalibrationPairs(truth, board, 20, pm::lab::SimulatedCalibrationParams());
       const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
       const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, truth);
+  \endcode
 */
 #include <functional>
 #include <vector>

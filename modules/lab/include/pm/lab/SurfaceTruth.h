@@ -12,8 +12,10 @@
     within 8 px): the mean (signed: positive outside the toy) and rms distance (px), by the viewpoint's
     angle from the rest direction (0-15, 15-30, 30-45, 45-75 deg), and the share of points farther than 8 px.
 
+  \code
       const pm::lab::SurfaceTruth t = pm::lab::checkSurface(scene, build, oMm, rig.left.cam, 10);
       std::cout << "depth error median " << t.views[0].medianMm << " mm\n";
+  \endcode
 */
 #include <array>
 #include <string>

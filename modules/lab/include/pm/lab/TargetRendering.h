@@ -5,11 +5,13 @@
   renderer takes for it, and its relief seen from three sides; then the pictures and the summary
   of one or several targets (a gallery for several).
 
+  \code
       const pm::core::StereoRig rig = pm::io::loadRig("data/rig/pa10_stereo.json");
       const pm::sim::TargetShape shape = pm::sim::makeTarget("C12");
       const pm::sim::Scene scene(shape);
       const pm::lab::RenderedTarget t = pm::lab::renderTarget(scene, shape, rig, pm::core::Phi{0, 0, 500, 0, 0, 0}, 5);
       pm::lab::writeRenderedTargets("render", {t}, pm::core::Phi{0, 0, 500, 0, 0, 0}, pm::sim::SceneParams(), false);
+  \endcode
 */
 #include <cstddef>
 #include <functional>

@@ -32,10 +32,12 @@
   The model frame: origin at the hull's centroid, axes those of the hand at the first view, so a
   tracker starting near the first view's pose sees the model turned by little.
 
+  \code
       const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig, 6);
       const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass);
       pm::io::savePhotoModel(b.model, "model.json");
       std::cout << b.surface.size() << " surface points, hull " << b.hullVolumeCm3 << " cm3\n";
+  \endcode
 */
 #include <memory>
 #include <string>

@@ -4,7 +4,9 @@
   A photo's colour between its pixels, for the model builder's readings across an outline
   (SubpixelOutline.h, EdgeBlur.h).
 
+  \code
       const std::array<double, 3> rgb = pm::model::bilinearColour(photo, 120.25, 64.5);
+  \endcode
 */
 #include <algorithm>
 #include <array>

@@ -11,8 +11,10 @@
   inside the outline when the images are soft (AllAroundParams::blurInsideGain): a blurred outline
   mixes the background into them (docs/model-outline.md, "Blur").
 
+  \code
       const pm::model::EdgeWidth w = pm::model::edgeWidth(mask, photo, &background);
       if (w.samples >= 50) std::cout << "the outline rises over " << w.widthPx << " px\n";
+  \endcode
 */
 #include <cstddef>
 

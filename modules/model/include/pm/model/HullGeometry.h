@@ -6,11 +6,13 @@
   its ideal photo and its silhouette's signed distance), the signed distance of a silhouette, and the
   hull's cells. The 3-vectors in millimetres are core's (core::Vec3).
 
+  \code
       pm::model::hull::HullView v;
       v.cam = pm::core::PinholeCamera::Projection(wMc, rig.left.cam, 640, 480); // wMc in metres
       v.signedDist = pm::model::hull::signedDistance(mask);
       double u, z, w;
       if (v.cam.project({0, 0, 500}, u, w, z) && v.sd(u, w) > 0) std::cout << "inside the silhouette\n";
+  \endcode
 */
 #include <array>
 #include <cmath>

@@ -13,8 +13,10 @@
   direction is found exactly: the edges between a face turned toward the camera and one turned
   away (ViewpointModel.h).
 
+  \code
       const pm::model::HullMesh mesh = pm::model::meshVisualHull(hull, cams);
       std::cout << mesh.vertices.size() << " vertices, " << mesh.triangles.size() << " triangles\n";
+  \endcode
 */
 #include <array>
 #include <cstdint>

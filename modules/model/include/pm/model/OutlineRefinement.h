@@ -13,8 +13,10 @@
   the vertices between outlines follow their neighbours and every move is smoothed against its
   neighbours' (a regularised least squares); a few rounds, as the outlines move.
 
+  \code
       pm::model::OutlineRefinementStats st = pm::model::refineOutlines(mesh, usedCams, pm::model::OutlineRefinementParams());
       std::cout << "outline residual " << st.meanBeforePx << " -> " << st.meanAfterPx << " px\n";
+  \endcode
 */
 #include <vector>
 

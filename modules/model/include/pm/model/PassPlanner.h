@@ -7,8 +7,10 @@
   ringsDeg from the rest axis, all around. The pivot stays on the hand's z axis at the same
   distance, so the target stays in view at the tracking distance.
 
+  \code
       const std::vector<vpHomogeneousMatrix> h0Mh = pm::model::planPass(pm::model::PassPlan());  // 16 poses
       // a robot: fMh_k = fMh0 * h0Mh[k], reached (and refused if not) by its own kinematics
+  \endcode
 */
 #include <vector>
 

@@ -10,8 +10,10 @@
   then 01, ...) and as the lab's simulated PA-10 makes them (pm::lab::runPass). The all-around
   builder (buildAllAroundModel) takes it.
 
+  \code
       std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig);
       std::cout << pass.size() << " views, the first from " << pass[0].fMh.getTranslationVector().t() << "\n";
+  \endcode
 */
 #include <string>
 

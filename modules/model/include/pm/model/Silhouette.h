@@ -6,9 +6,11 @@
   with OpenCV's image operations: opening and closing (\e cleanRadiusPx), the connected regions of at
   least \e minRegionFraction of the largest one, their holes filled.
 
+  \code
       pm::model::SilhouetteStats st;
       const vpImage<unsigned char> mask = pm::model::silhouette(view.left, view.backgroundLeft, pm::model::SilhouetteParams(), &st);
       std::cout << st.shadowPx << " shadow pixels dropped\n";
+  \endcode
 */
 #include <string>
 

@@ -8,8 +8,10 @@
   neighbouring disparities agree. The stereo photo-model (StereoPhotoModelBuilder.h) and the
   all-around model's surface (SurfaceFusion.h) both measure with it.
 
+  \code
       const pm::model::stereo::Rectification rect(rig);                  // once per rig (pinhole cameras)
       const cv::Mat z = pm::model::stereo::leftDepth(rect, L, R, region, 400, 600, pm::model::stereo::MatchParams());
+  \endcode
 */
 #include <vector>
 

@@ -26,9 +26,11 @@
   refused, not faked: a flat model at a guessed depth is what the stereo model replaces, and the
   user can still choose it knowingly (buildPhotoModel; pm-make-model --background --photo --distance-mm).
 
+  \code
       const pm::model::StereoPhotoModelBuild b = pm::model::buildStereoPhotoModel(rig, bgL, bgR, L, R);
       pm::io::savePhotoModel(b.model, "model.json");            // version 2: z per point
       std::cout << "origin in the hand frame " << b.hMm.getTranslationVector().t() << "\n";
+  \endcode
 */
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
@@ -141,9 +143,11 @@ struct StereoViewPair
   nearest its own (StereoFitness). Throws pm::core::Error as the one-pair build, naming the pair.
   The build's regions, depth map, dropped points and counts are those of the first pair.
 
+  \code
       std::vector<pm::model::StereoViewPair> more(1);
       more[0] = {bgL, bgR, turnedL, turnedR, hMo_turned * hMo.inverse()};
       const pm::model::StereoPhotoModelBuild b = pm::model::buildStereoPhotoModel(rig, bgL, bgR, L, R, more);
+  \endcode
 */
 StereoPhotoModelBuild buildStereoPhotoModel(const core::StereoRig &rig, const vpImage<vpRGBa> &bgL,
                                             const vpImage<vpRGBa> &bgR, const vpImage<vpRGBa> &L,

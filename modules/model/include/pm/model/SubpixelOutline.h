@@ -10,8 +10,10 @@
   of a symmetric blur. The mixture is read perpendicular to the background's colour, so a cast
   shadow (the background darker, its colour kept) counts as background.
 
+  \code
       cv::Mat sd = pm::model::hull::subpixelSignedDistance(mask, view.left, &view.backgroundLeft);
       // sd(y, x): px, positive inside; its zero level is the photo's outline, to a tenth of a pixel
+  \endcode
 */
 #include <opencv2/core.hpp>
 #include <visp3/core/vpImage.h>

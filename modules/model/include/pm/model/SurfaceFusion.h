@@ -22,8 +22,11 @@
   The hull's field and this evidence make one field (the least of them, in mm), carved and meshed
   as the hull alone was (HullMesh.h).
 
-      const pm::model::DepthEvidence ev = pm::model::measureStereo(idealRig, cams, masks, backgrounds, used, false, hull, params);
-      const long removed = ev.carve(hull);
+  \code
+      // views: the pass's cameras (hull::HullView); cams: pointers to those used
+      const pm::model::DepthEvidence ev = pm::model::measureStereo(idealRig, views, masks, backgrounds, used, false, hull, params);
+      const long removed = ev.carve(hull, cams);
+  \endcode
 */
 #include <algorithm>
 #include <vector>

@@ -13,8 +13,10 @@
   - S_out: points offset outward from that outline by the strip (stripGapPx to stripGapPx +
     stripWidthPx), at the outline's depth, where the strip falls off the target.
 
+  \code
       pm::model::ViewpointScratch scratch; // kept from one viewpoint to the next
       const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, scratch);
+  \endcode
 */
 #include <cstdint>
 #include <vector>

@@ -6,10 +6,16 @@
   the continuous field whose zero level is the hull's surface (the least of the silhouettes' signed
   distances where a point projects), from which HullMesh.h takes the surface to a fraction of a cell.
 
-      const pm::model::hull::Vec3 c = pm::model::hull::silhouettesMeet(cams);
+  \code
+      // views: the pass's cameras (hull::HullView), masks: their silhouettes
+      const pm::model::hull::Vec3 c = pm::model::hull::silhouettesMeet(views, masks);
+      std::vector<const pm::model::hull::HullView *> cams;
+      for (const pm::model::hull::HullView &v : views)
+        cams.push_back(&v);
       pm::model::VisualHull hull = pm::model::hullGrid(c, radiusMm, 1.0);
       pm::model::carveVisualHull(cams, hull, 16.0);
       std::cout << hull.volumeCm3() << " cm3\n";
+  \endcode
 */
 #include <cstdint>
 #include <string>

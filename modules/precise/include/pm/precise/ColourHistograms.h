@@ -9,11 +9,13 @@
   or from a first frame, and follow the scene while tracking: each frame's colours along the
   correspondence lines are blended in at a learning rate.
 
+  \code
       pm::precise::ColourHistograms h;
       h.start(model.foregroundHistogram, model.backgroundHistogram);   // the model's photos
       h.addForeground(vpRGBa(200, 40, 30)); h.addBackground(vpRGBa(30, 60, 200));
       h.update(0.2, 0.2);                                               // a frame's colours blended in
       const float pf = h.posterior(vpRGBa(190, 50, 30));               // near 1: the target's colour
+  \endcode
 */
 #include <array>
 #include <cstdint>

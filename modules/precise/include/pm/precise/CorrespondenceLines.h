@@ -17,10 +17,12 @@
   rad, in the hand frame) come from the point's projection Jacobian. Smooth in the pose, and as
   sensitive to a turn as to a shift: a turn moves the outline.
 
+  \code
       pm::precise::CorrespondenceLines lines(200, 19, 6);
       lines.measure(camera, outlines, phi, shape, colours, 2, 150, 3.0);
       double g[6] = {0}, H[36] = {0};
       lines.accumulate(camera, phi, weight, g, H, nullptr);
+  \endcode
 */
 #include <array>
 #include <cstdint>

@@ -11,9 +11,11 @@
   (the texture varies over a pixel or two); a Huber weight bounds what a shadow, a highlight or an
   occluder can do.
 
+  \code
       pm::precise::InteriorTerm interior(model, 200);
       interior.measure(camera, view, phi, 1.0, samples);          // at each step
       pm::precise::InteriorTerm::accumulate(camera, phi, samples, 0.05, 1.0, g, H, nullptr); // each step
+  \endcode
 */
 #include <cstddef>
 #include <vector>

@@ -9,9 +9,11 @@
   outline seen a few degrees away still project onto the outline, since the contour generator of a
   smooth surface moves with the square of the angle.
 
+  \code
       const pm::precise::OutlineViews outlines(model);             // throws unless model.hasContours()
       const std::size_t k = outlines.nearest(cameraInModelMm);
       for (std::size_t i = outlines.view(k).begin; i < outlines.view(k).end; ++i) use(outlines.point(i));
+  \endcode
 */
 #include <cstddef>
 #include <vector>

@@ -15,10 +15,12 @@
   them. The colour posteriors come from the model's photos (PhotoModel::foregroundHistogram) and
   follow the scene: learnColours() blends in each frame's colours along the outline.
 
+  \code
       pm::precise::PreciseStage precise(rig, model);           // the model must carry outlines (version 5)
       precise.setImages(IL, IR);                      // the frame (kept by pointer until the next)
       const pm::precise::PreciseResult r = precise.refine(rmgaBest);
       if (r.ok) { phi = r.phi; precise.learnColours(phi); }
+  \endcode
 */
 #include <array>
 #include <memory>

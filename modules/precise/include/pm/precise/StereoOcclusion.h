@@ -19,8 +19,10 @@
   than maxHiddenShare of its lines, when all are kept (as DLR's M3T brings its lines back when too
   few remain).
 
+  \code
       pm::precise::StereoOcclusion occlusion(model, pm::precise::StereoOcclusionParams());
       const bool h = occlusion.hidden(left, leftPose, leftCentre, right, rightPose, contourPoint, pxPerMm);
+  \endcode
 */
 #include <cmath>
 #include <array>

@@ -7,8 +7,10 @@
   profiles.png (a panel per axis, both curves scaled to [0, 1], 1 the best of each) and
   profiles.csv.
 
+  \code
       const pm::report::ProfileResult r = pm::report::writeObjectiveProfiles(files, fitness, precise, truth, 6.0, 0.25);
       std::cout << "F peaks " << r.axes[0].fitnessPeakDeg << " deg off the truth about x\n";
+  \endcode
 */
 #include <array>
 #include <string>

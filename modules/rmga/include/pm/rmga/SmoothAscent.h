@@ -13,10 +13,12 @@
   \e shrink after one that did not; it stops when the step length falls under \e minStepPx or the
   evaluations are spent. Allocates nothing.
 
+  \code
       pm::rmga::StereoObjective f(fitness);
       const pm::core::Phi starts[2] = {gaBest, lastPose};
       const pm::rmga::SmoothAscentResult r = pm::rmga::climbSmooth(f, starts, 2, pm::rmga::SmoothAscentParams());
       use(r.best); // r.score >= the best start's
+  \endcode
 */
 #include <cstddef>
 

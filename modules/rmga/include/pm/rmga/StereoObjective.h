@@ -5,9 +5,11 @@
   batch on two cores), or F estimated on a quarter of the model's points (a coarse search), and the
   smooth score with its gradient for climbSmooth (StereoFitness::evaluateSmoothGradient).
 
+  \code
       pm::rmga::StereoObjective f(fitness);                                     // F, for RM-GA
       const pm::rmga::FrameResult r = ga.evolve(f, pm::rmga::FrameBudget::evals(1900));
       const pm::rmga::SmoothAscentResult a = pm::rmga::climbSmooth(f, &r.best, 1, pm::rmga::SmoothAscentParams());
+  \endcode
 */
 #include "pm/core/StereoFitness.h"
 #include "pm/rmga/RmGa.h"

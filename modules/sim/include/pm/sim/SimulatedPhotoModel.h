@@ -9,8 +9,10 @@
   \e distanceMm ahead (its base, facing the hand), the backdrop pair then the photo pair, then
   buildStereoPhotoModel(). No distance is given to the builder: it measures it.
 
+  \code
       const auto sm = pm::sim::makeSimulatedStereoPhotoModel(scene, rig);
       const pm::core::Phi truth = sm.truth(hMo);   // the model's true pose for a toy at hMo
+  \endcode
 */
 #include "pm/model/PhotoModelBuilder.h"
 #include "pm/model/StereoPhotoModelBuilder.h"

@@ -11,12 +11,14 @@
   whose tilt lies farther than \e gateDeg from the prediction (a jump, a switch to another pose)
   restarts it.
 
+  \code
       pm::tracker::TiltFilter filter;              // alpha 0.2, beta 0.02
       for (;;) {
         const pm::core::Phi raw = estimate();   // this frame's best pose
         use(filter.update(raw));          // its tilt smoothed
         filter.transform(hNowMhPrev);     // the hand moved (eye-in-hand)
       }
+  \endcode
 */
 #include <visp3/core/vpHomogeneousMatrix.h>
 
