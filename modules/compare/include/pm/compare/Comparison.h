@@ -44,8 +44,7 @@ struct ComparisonParams
   double outlineTolPx = 1.5;                  //!< simplification of the outline for ViSP's trackers (px)
   /*!
     ViSP's model-based trackers' CAD model: the all-around model's surface, decimated to cells of
-    this size (mm; CadMesh.h), the shape ours follows; 0: the flat model's outline (one face, as
-    before issue 36).
+    this size (mm; CadMesh.h), the shape ours follows; 0: the flat model's outline (one face).
   */
   double mbtMeshCellMm = 8;
   bool mbtTrueCad = false;                    //!< ViSP's MBT given the toy's own mesh (the lab knows it; CadMesh.h), decimated the same way

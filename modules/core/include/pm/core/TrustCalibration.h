@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file TrustCalibration.h
-  What the pass taught the tracker about trust through the user's own camera (pm::trust, issue 56),
+  What the pass taught the tracker about trust through the user's own camera (pm::trust),
   as a photo-model carries it (model.json's "trust_calibration"): how its confidence's cues read at
   right poses there, and how its uncertainty's sigmas compare with the true errors there. Plain data:
   pm::trust measures it when the model is made, the tracker reads it (JudgementParams::forModel()).

@@ -9,28 +9,34 @@
   at the outline's depth. StereoFitness scores each camera with the viewpoint nearest its own
   direction, so the model has the right outline at every orientation the pass covers.
 
-  1. Silhouettes (pm::model::silhouette, or pm::model::silhouetteOnBackdrop with backdropHueDeg) of both cameras
-     of every view; a silhouette cut by the image border is an error naming the view.
-  2. The visual hull: cells of a cube around the target (found from the silhouettes' centroids)
-     carved coarse to fine (coarsestMm down to finestMm) against each silhouette's signed distance
-     transform; a cell whose projection lies wholly outside one silhouette is carved, wholly inside
-     all of them kept, otherwise split. A view whose silhouettes alone carve away more than
-     outlierCarveFraction of what the others keep disagrees with them: it is named and left out.
-  3. Surface points: the hull's cells with an empty neighbour, their outward normals from the
-     hull's occupancy around them. A hull carved from a cap of directions bulges in front of flat
-     and concave faces: a point seen by 3 or more cameras moves inward along its normal (up to
-     refineDepthMm) to where their 5x5 patches agree best (photo-consistency), when clearly better.
-     Each then takes the colour of the views that see it (a depth buffer of the hull, the normal
-     facing the camera): the median hue; samples brighter and paler than the point's others are
-     highlights and left out; a point whose views still disagree over maxHueSpreadDeg is marked
-     and not used as S_in (both counted).
-  4. K viewpoints over the directions within capDeg of the pass's first view (a Fibonacci
-     lattice), at the pass's distance: the surface points the virtual camera sees (depth buffer),
-     nIn of them spread over the image, and nOut points of the hull's outline there, offset outward
-     by the strip as the flat model's S_out.
-
-  The model frame: origin at the hull's centroid, axes those of the hand at the first view, so a
-  tracker starting near the first view's pose sees the model turned by little.
+  The build runs nine stages, in this order (AllAroundModelBuilder.cpp, build()):
+  1. Silhouettes (pm::model::silhouette, or pm::model::silhouetteOnBackdrop with backdropHueDeg) of
+     both cameras of every view, in the ideal (undistorted) images; a silhouette cut by the image
+     border is an error naming the view.
+  2. The box: a cube around the target (where the silhouettes meet); a view whose silhouettes alone
+     carve away more than outlierCarveFraction of what the others keep disagrees with them: it is
+     named and left out. Fewer than minViews views left: an error.
+  3. The hull and its surface: cells carved coarse to fine (coarsestMm down to finestMm) against each
+     silhouette's signed distance (a cell wholly outside one silhouette carved, wholly inside all
+     kept, otherwise split); then, with fusion (the default), carved again by the views' stereo
+     depths and the backdrop (SurfaceFusion.h); the surface as a mesh of the hull's field (HullMesh.h),
+     moved onto every view's outline when refineOutlines.
+  4. Which cameras see each surface point: a depth buffer of the mesh, the normal facing the camera.
+  5. Without fusion only: photo-consistency. A point seen by 3 or more cameras moves inward along its
+     normal (up to refineDepthMm) to where their 5x5 patches agree best, when clearly better (a
+     hull carved from a cap of directions bulges in front of flat and concave faces).
+  6. Colours and the model frame: each point takes the median hue of the views that see it
+     (samples brighter and paler than its others are highlights, left out; a point whose views
+     disagree over maxHueSpreadDeg is marked, not used as S_in); the background's hue around the
+     silhouettes. The model frame: origin at the hull's centroid, axes those of the hand at the first
+     view used, so a tracker starting near that view's pose sees the model turned by little.
+  7. K viewpoints over the directions within capDeg of the first view's (a Fibonacci lattice), at
+     the pass's distance: the surface points the virtual camera sees (nIn, spread over the image,
+     at least inMinInsidePx inside the outline, farther for a soft camera), nOut points of the
+     outline offset outward by the strip (S_out), and nContour outline points for the precise stage.
+  8. The colours of the target and around it (histograms for the precise stage's posteriors).
+  9. With passLandings: the precise stage from each pass view's known pose, the model's own error
+     there (PassLandings.h; the tracker's uncertainty floor).
 
   \code
       const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig, 6);
@@ -68,11 +74,9 @@ struct AllAroundParams
   double visibilityTolMm = 3;       //!< a surface point is seen when within this of the depth buffer (mm)
   FusionParams fusion;              //!< the surface from the views' stereo pairs and the backdrop (SurfaceFusion.h)
   /*!
-    The outlines to a fraction of a pixel (issue 44): each silhouette's distance from the photo's own
-    outline (SubpixelOutline.h) and the surface moved until its outline lies on every view's
-    (OutlineRefinement.h, \e outline). Off by default: measured better against the toys (the
-    outlines' bias gone, their rms a fifth to a third lower) and in rotation at rest, but the
-    precise stage lands one start in 18 of its capture test 1.5 mm off (docs/model-outline.md).
+    The outlines to a fraction of a pixel: each silhouette's distance from the photo's own outline
+    (SubpixelOutline.h) and the surface moved until its outline lies on every view's
+    (OutlineRefinement.h, \e outline). Off by default (why, with the figures: docs/model-outline.md).
   */
   bool refineOutlines = false;
   OutlineRefinementParams outline;  //!< the refinement, when refineOutlines
@@ -93,9 +97,9 @@ struct AllAroundParams
     renders give) adds this many px per px once over \e blurDeadZonePx; 0: never.
   */
   double blurInsideGain = 2;
-  double sharpEdgeWidthPx = 0.75;   //!< a sharp camera's 25-75 % rise across the outline (px; the lab's renders 0.70-0.78)
+  double sharpEdgeWidthPx = 0.75;   //!< a sharp camera's 25-75 % rise across the outline (px)
   double blurDeadZonePx = 0.5;      //!< a blur's sigma under this beyond a sharp camera's is not counted (px)
-  double edgeShare = 0;             //!< of them at most this share on hue edges (a hue over 30 deg away within 3 mm; measured: README)
+  double edgeShare = 0;             //!< of them at most this share on hue edges (a hue over 30 deg away within 3 mm; 0: no limit)
   int nOut = 160;                   //!< S_out points per viewpoint
   double stripGapPx = 5;            //!< S_out: the first row this far outside the outline (px; the hull's exact one, HullMesh.h)
   double stripWidthPx = 8;          //!< ... the last this much farther

@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file OutlineRefinement.h
-  The model's surface moved until its outline lies on every pass view's outline at once (issue 44):
+  The model's surface moved until its outline lies on every pass view's outline at once:
   a small adjustment with the views' poses fixed. The hull is the least of the views' silhouette
   distances, so where several views graze the surface nearly together (everywhere on a smooth
   target: the views whose directions lie near the plane across its normal) the most inward of

@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file SubpixelOutline.h
-  A silhouette's signed distance to a fraction of a pixel (issue 44): the binary mask puts the
+  A silhouette's signed distance to a fraction of a pixel: the binary mask puts the
   outline on a pixel border, up to half a pixel from the image's own edge, and the hull, the least
   of every view's distance, keeps the innermost of those errors. A pixel the outline crosses holds
   a mixture of the target's colour and the background's: its share of the target (alpha) and the

@@ -7,9 +7,9 @@
 
   The lines' own covariance, the inverse of their information, is over-confident: the lines are
   not independent (neighbours see the same blur and the same patch of background) and the model's
-  outline is itself a little off. On the lab's random 6-DoF run the true errors were 1.3 to 3.3
-  times that sigma. So each axis's sigma is that of the lines times the frame's residual (px, as
-  least squares scales its covariance by the residual's variance) times a scale, with a floor and
+  outline is itself a little off (the true errors against it: docs/trust.md). So each axis's sigma
+  is that of the lines times the frame's residual (px, as least squares scales its covariance by the
+  residual's variance) times a scale, with a floor and
   the model's own error near the view (ModelErrorFloor.h: what no line sees) added in quadrature;
   scales and floors are fitted by
   `pm-uncertainty --fit` (docs/trust.md) so that about 68 % of the true errors fall within 1 sigma

@@ -2,7 +2,7 @@
 /*!
   \file StereoOcclusion.h
   Which correspondence lines are hidden: what a stereo rig sees of what stands in front of the
-  target (issue 43; the fitness's stereo visibility, core::FitnessParams::stereoVisibility, for the
+  target (the fitness's stereo visibility, core::FitnessParams::stereoVisibility, for the
   precise stage's lines). A line of camera k starts at a contour point X of the model; just inside
   the outline, at a few probe points X - d n (n the outline's outward normal, d a few pixels at X's
   depth), lies the target's volume, which both cameras see as the target wherever nothing hides it

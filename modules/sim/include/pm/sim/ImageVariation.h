@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file ImageVariation.h
-  The lab's images varied as real cameras vary them (issue 43: trust outside our renderer): the
+  The lab's images varied as real cameras vary them (so that trust is tested outside our renderer): the
   optics (defocus, motion blur, vignetting) before the sensor's noise, then a signal-dependent
   (shot) noise, and what the camera's processing does after it (white balance, gamma, JPEG). The
   renderer's own images are one camera; these are others. Scene::render() applies

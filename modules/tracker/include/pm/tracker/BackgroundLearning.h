@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file BackgroundLearning.h
-  The background's hue as the tracker sees it now, learnt on trusted frames (issue 43). The
+  The background's hue as the tracker sees it now, learnt on trusted frames. The
   photo-model carries the hue of the background it was photographed on (H_B, the fitness's S_out
   test); the world's changes: another light's colour, a target carried in front of another wall, a
   backdrop that turns as the hand moves. On each trusted frame the image hues under the S_out

@@ -4,9 +4,8 @@
   Where the target will be on this frame, from where it was on the last two: the position moves on
   by the last frame's step and the rotation turns on by the last frame's turn (about the hand's axes,
   at the target's origin), both scaled by \e gain. The precise stage (PreciseRefinement.h) starts
-  there: without it the stage starts from the last frame's pose and a target turning 2 deg a frame
-  leaves its few near-start iterations short of the turn, the estimate lagging behind (Table 2's
-  steps: 3.6-3.8 deg, issue 44).
+  there, so that its few near-start iterations need not cover a turning target's whole turn (the
+  lag they leave without it: docs/model-outline.md, "Moving").
 
   Only the frames whose pose the precise stage made (TrackResult::precise) are remembered, two in a
   row; any other frame forgets them (a search's pose is too rough to take a velocity from). A step
@@ -37,9 +36,7 @@ struct MotionPredictionParams
   double gain = 1.0;        //!< share of the last frame's step and turn carried on (0: off, the last pose as it is)
   /*!
     A last step longer than this (mm) or a turn larger than maxStepDeg is not carried on: a jump, or
-    a motion too fast to extrapolate. Measured (pm-compare, C12): with 20 mm and 6 deg the "fast"
-    scenario fell from 95 / 94 % to 92 / 90 % within 5 cm 5 deg / 1 cm 2 deg; with 10 mm and 3 deg it
-    stays at 95 / 94 % and Table 2's steps (up to 2 deg a frame) keep the whole gain.
+    a motion too fast to extrapolate (the limits chosen, with their figures: docs/model-outline.md).
   */
   double maxStepMm = 10;
   double maxStepDeg = 3;    //!< see maxStepMm (deg)

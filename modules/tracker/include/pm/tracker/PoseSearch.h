@@ -30,12 +30,12 @@ namespace pm::tracker {
 //! have no hue (a blank, grey or black frame would otherwise have hue 0, red, and match a red target).
 core::FitnessParams trackerFitnessDefaults();
 
-//! RM-GA as the tracker runs it, by measurement (issues 4 and 18): motion prediction, restarts after 30 generations without gain.
+//! RM-GA as the tracker runs it: motion prediction, restarts after 30 generations without gain (chosen: docs/rmga-tracker.md).
 rmga::RmGaParams trackerGaDefaults();
 
 /*!
-  The search's parameters: where and how RM-GA searches, and the frame budget (800 evaluations,
-  measured: docs/rmga-tracker.md). validate() checks them.
+  The search's parameters: where and how RM-GA searches, and the frame budget (800 evaluations;
+  chosen: docs/rmga-tracker.md). validate() checks them.
 */
 struct SearchParams
 {

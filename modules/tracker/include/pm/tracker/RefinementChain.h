@@ -41,9 +41,8 @@ struct RefinementParams
   TiltFilterParams tiltFilter;
   /*!
     3. The same for an all-around model (core::PhotoModel::isAllAround), whose outline changes with
-    the tilt as the toy's does: lighter smoothing. Measured on the main job (C12, seeds 1-5): the
-    one-view filter (alpha 0.2, beta 0.02) lags the tilted steps by 5-6 deg and servoed 97 frames on
-    a wrong pose in all; alpha 0.5, beta 0: 17 (docs/all-around-model.md).
+    the tilt as the toy's does: a lighter smoothing, so that a tilted step is not lagged (the
+    figures that chose it: docs/all-around-model.md).
   */
   TiltFilterParams tiltFilterAllAround{0.5, 0.0, 5.0};
 

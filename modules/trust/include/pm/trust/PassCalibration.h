@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file PassCalibration.h
-  Trust calibrated from the pass, when the model is made (issue 56): the pass is labelled data from
+  Trust calibrated from the pass, when the model is made: the pass is labelled data from
   the user's own camera, light and backdrop, at hand poses the arm knows. Its views are held out of
   models built without them (HeldOutViews.h), the tracker is tried on them from right and wrong
   starts (PassTries.h), and what the tries read sets the model's core::TrustCalibration:
