@@ -9,7 +9,6 @@
 #include <limits>
 #include <memory>
 #include <numeric>
-#include <unordered_map>
 
 #include <opencv2/imgproc.hpp>
 
@@ -49,7 +48,6 @@ void AllAroundParams::validate() const
   check(viewpoints >= 1 && viewpoints <= 5000, "viewpoints must lie in [1, 5000]");
   check(capDeg > 0 && capDeg <= 180, "cap must lie in (0, 180] deg");
   check(nIn >= 8 && nIn <= 20000, "S_in points per viewpoint must lie in [8, 20000]");
-  check(edgeShare >= 0 && edgeShare <= 1, "edge share must lie in [0, 1]");
   check(backdropHueDeg < 360, "the backdrop's hue must lie in [0, 360) degrees (negative: background images)");
   check(nOut >= 8 && nOut <= 20000, "S_out points per viewpoint must lie in [8, 20000]");
   check(stripGapPx >= 1 && stripGapPx <= 100, "strip gap must lie in [1, 100] px");
@@ -190,39 +188,6 @@ int refineByPhotoConsistency(const std::vector<const HullView *> &cams, const st
   }
   pts.swap(moved);
   return n;
-}
-
-//! For each surface point with a hue: whether a point with a hue within \e radiusMm differs from it by over \e hueDeg.
-std::vector<bool> hueEdges(const std::vector<SurfacePoint> &s, double radiusMm, double hueDeg)
-{
-  std::unordered_map<long long, std::vector<std::size_t>> cells;
-  auto cellOf = [radiusMm](float x) { return static_cast<long long>(std::floor(x / radiusMm)); };
-  auto key = [](long long x, long long y, long long z) { return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL); };
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (s[i].hasHue)
-      cells[key(cellOf(s[i].x), cellOf(s[i].y), cellOf(s[i].z))].push_back(i);
-  std::vector<bool> edge(s.size(), false);
-  const double r2 = radiusMm * radiusMm;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (!s[i].hasHue)
-      continue;
-    const long long cx = cellOf(s[i].x), cy = cellOf(s[i].y), cz = cellOf(s[i].z);
-    for (long long dz = -1; dz <= 1 && !edge[i]; ++dz)
-      for (long long dy = -1; dy <= 1 && !edge[i]; ++dy)
-        for (long long dx = -1; dx <= 1 && !edge[i]; ++dx) {
-          const auto it = cells.find(key(cx + dx, cy + dy, cz + dz));
-          if (it == cells.end())
-            continue;
-          for (std::size_t j : it->second) {
-            const double ex = s[j].x - s[i].x, ey = s[j].y - s[i].y, ez = s[j].z - s[i].z;
-            if (ex * ex + ey * ey + ez * ez <= r2 && core::hueDistance(s[i].hue, s[j].hue) > hueDeg) {
-              edge[i] = true;
-              break;
-            }
-          }
-        }
-  }
-  return edge;
 }
 
 /*!
@@ -520,7 +485,7 @@ float backgroundHueAround(const PassImages &im, const std::vector<vpImage<unsign
 
 //! Stage 7: the model's viewpoints along \e dirs at \e D mm (the first is the model's own view; out: M's points).
 void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs, double D, const vpHomogeneousMatrix &mMh0,
-                      const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
+                      const HullMesh &mesh, float bgHue, const AllAroundParams &p,
                       ViewpointScratch &scratch, AllAroundBuild &out)
 {
   const std::vector<Vec3> &mpts = mesh.vertices;
@@ -538,7 +503,7 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
   for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
     const Vec3 C = hull::scaled(dirs[vi], D);
     const core::PinholeCamera::Projection cam = core::PinholeCamera::Projection::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
-    core::ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, edge, bgHue, p, scratch);
+    core::ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, bgHue, p, scratch);
     if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
       if (vi == 0)
         throw core::Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +
@@ -715,8 +680,6 @@ AllAroundBuild build(const core::StereoRig &rig, const std::vector<PassView> &pa
   }
   out.surfaceVolumeCm3 = std::fabs(mesh.volume()) * 1e-3;
 
-  // Hue edges: a point with a hue whose neighbours within 3 mm include one of a hue over 30 deg away.
-  const std::vector<bool> edge = p.edgeShare > 0 ? hueEdges(out.surface, 3.0, 30.0) : std::vector<bool>(out.surface.size(), false);
 
   // 7. The viewpoints: a Fibonacci lattice over the sphere, those within the cap.
   const vpHomogeneousMatrix mMf = out.fMm.inverse();
@@ -728,7 +691,7 @@ AllAroundBuild build(const core::StereoRig &rig, const std::vector<PassView> &pa
   if (!im.edgeWidthsPx.empty())
     out.edgeWidthPx = std::accumulate(im.edgeWidthsPx.begin(), im.edgeWidthsPx.end(), 0.0) / static_cast<double>(im.edgeWidthsPx.size());
   ps.inMinInsidePx = out.minInsidePx = minInsideForBlur(p, out.edgeWidthPx);
-  sampleViewpoints(rig, dirs, D, mMh0, mesh, edge, bgHue, ps, scratch, out);
+  sampleViewpoints(rig, dirs, D, mMh0, mesh, bgHue, ps, scratch, out);
   core::PhotoModel &M = out.model;
   // 8. The colours of the target and around it, for the precise stage's posteriors.
   colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);

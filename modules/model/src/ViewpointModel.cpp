@@ -159,14 +159,12 @@ void coverageMask(const core::PinholeCamera::Projection &cam, const std::vector<
 
 /*!
   S_in: visible points with a hue at least minInsidePx inside the outline (at the outline a pixel
-  mixes target and background), one per cell of a grid over the image and of each kind (on a hue
-  edge, elsewhere); edgeShare of nIn from the edges, the rest elsewhere, each thinned evenly.
+  mixes target and background), one per cell of a grid over the image, thinned evenly to nIn.
 */
 std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface,
-                                          const std::vector<Vec3> &mpts, const std::vector<bool> &edge, const AllAroundParams &p,
+                                          const std::vector<Vec3> &mpts, const AllAroundParams &p,
                                           const cv::Mat &mask, const std::vector<float> &zbuf, cv::Mat &inside)
 {
-  constexpr long kEdgeKey = 1L << 40; // picks on an edge sort after the others, one per cell of their own
   cv::distanceTransform(mask, inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   const double area = cv::countNonZero(mask);
   const double step = std::max(1.0, std::sqrt(area / p.nIn));
@@ -195,31 +193,24 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
       continue;
     const long cx = static_cast<long>(std::floor(u / step)), cy = static_cast<long>(std::floor(v / step));
     const double ddx = u - (static_cast<double>(cx) + 0.5) * step, ddy = v - (static_cast<double>(cy) + 0.5) * step;
-    picks.push_back({cy * 100000 + cx + (p.edgeShare > 0 && edge[i] ? kEdgeKey : 0), ddx * ddx + ddy * ddy, i, static_cast<float>(u),
-                     static_cast<float>(v)});
+    picks.push_back({cy * 100000 + cx, ddx * ddx + ddy * ddy, i, static_cast<float>(u), static_cast<float>(v)});
   }
   std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
-  std::vector<core::ModelPoint> onEdge, plain;
+  std::vector<core::ModelPoint> inner;
   for (std::size_t j = 0; j < picks.size(); ++j) {
     if (j > 0 && picks[j].key == picks[j - 1].key)
       continue;
     const SurfacePoint &s = surface[picks[j].i];
-    (picks[j].key >= kEdgeKey ? onEdge : plain).push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v, s.r, s.g, s.b});
+    inner.push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v, s.r, s.g, s.b});
   }
-  auto thin = [](std::vector<core::ModelPoint> &v, std::size_t n) {
-    if (v.size() <= n)
-      return;
-    std::vector<core::ModelPoint> t;
-    const double r = static_cast<double>(v.size()) / static_cast<double>(n);
-    for (std::size_t j = 0; j < n; ++j)
-      t.push_back(v[static_cast<std::size_t>(static_cast<double>(j) * r)]);
-    v.swap(t);
-  };
-  const std::size_t nEdge = std::min(onEdge.size(), static_cast<std::size_t>(std::lround(p.edgeShare * p.nIn)));
-  thin(onEdge, nEdge);
-  thin(plain, static_cast<std::size_t>(p.nIn) - onEdge.size());
-  onEdge.insert(onEdge.end(), plain.begin(), plain.end());
-  return onEdge;
+  const std::size_t n = static_cast<std::size_t>(p.nIn);
+  if (inner.size() <= n)
+    return inner;
+  std::vector<core::ModelPoint> thinned; // every (size / n)-th
+  const double r = static_cast<double>(inner.size()) / static_cast<double>(n);
+  for (std::size_t j = 0; j < n; ++j)
+    thinned.push_back(inner[static_cast<std::size_t>(static_cast<double>(j) * r)]);
+  return thinned;
 }
 
 /*!
@@ -281,7 +272,7 @@ std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection 
 } // namespace
 
 core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
-                                const HullMesh &mesh, const std::vector<bool> &edge, float bgHue, const AllAroundParams &p,
+                                const HullMesh &mesh, float bgHue, const AllAroundParams &p,
                                 ViewpointScratch &scratch)
 {
   std::vector<float> &zbuf = scratch.zbuf;
@@ -291,7 +282,7 @@ core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, cons
   core::ModelView view;
   for (int k = 0; k < 3; ++k)
     view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
-  view.inner = sampleInner(cam, surface, mpts, edge, p, mask, zbuf, scratch.inside);
+  view.inner = sampleInner(cam, surface, mpts, p, mask, zbuf, scratch.inside);
   // The outline: the mesh's contour edges on the silhouette's boundary.
   view.contour = meshOutline(cam, mesh, mask.ptr<unsigned char>(), p.nContour, scratch);
   view.outer = sampleOuter(cam, bgHue, p, mask, zbuf);

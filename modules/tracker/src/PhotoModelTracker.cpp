@@ -153,7 +153,7 @@ void PhotoModelTracker::challenge(const FramePlan &frame, TrackResult &r, RmGaUp
   r.fitness = better->second;
   r.switched = true;
   update.reseed = RmGaUpdate::Reseed{better->first, m_params.search.initSpread};
-  m_refinement.restart();
+  m_refinement.reset(); // the pose jumped: the tilt filter and the motion start again
 }
 
 void PhotoModelTracker::completeHue(const FramePlan &frame, const TrackResult &r, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)

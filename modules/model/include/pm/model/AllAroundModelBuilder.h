@@ -99,7 +99,6 @@ struct AllAroundParams
   double blurInsideGain = 2;
   double sharpEdgeWidthPx = 0.75;   //!< a sharp camera's 25-75 % rise across the outline (px)
   double blurDeadZonePx = 0.5;      //!< a blur's sigma under this beyond a sharp camera's is not counted (px)
-  double edgeShare = 0;             //!< of them at most this share on hue edges (a hue over 30 deg away within 3 mm; 0: no limit)
   int nOut = 160;                   //!< S_out points per viewpoint
   double stripGapPx = 5;            //!< S_out: the first row this far outside the outline (px; the hull's exact one, HullMesh.h)
   double stripWidthPx = 8;          //!< ... the last this much farther

@@ -15,7 +15,7 @@
 
   \code
       pm::model::ViewpointScratch scratch; // kept from one viewpoint to the next
-      const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, onEdge, bgHue, params, scratch);
+      const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, bgHue, params, scratch);
   \endcode
 */
 #include <cstdint>
@@ -55,13 +55,12 @@ struct ViewpointScratch
 /*!
   The viewpoint of camera \e cam (in the model frame; core::PinholeCamera::Projection::lookingAtOrigin) of a model whose
   surface is \e surface (model frame) and \e mesh (the same surface as triangles, model frame), its
-  surface points also given as \e pts: S_in, S_out and the outline (see ViewpointModel.h). \e onEdge
-  marks the surface points on a hue edge (AllAroundParams::edgeShare); \e scratch holds the buffers
+  surface points also given as \e pts: S_in, S_out and the outline (see ViewpointModel.h); \e scratch holds the buffers
   (its zbuf then the hull's depth seen by \e cam). S_out points carry \e bgHue. The view's cameraMm
   is the camera's centre.
 */
 core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
-                          const HullMesh &mesh, const std::vector<bool> &onEdge, float bgHue, const AllAroundParams &p,
+                          const HullMesh &mesh, float bgHue, const AllAroundParams &p,
                           ViewpointScratch &scratch);
 
 /*!

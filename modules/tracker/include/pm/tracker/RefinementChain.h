@@ -64,8 +64,6 @@ public:
   */
   std::optional<RmGaUpdate::Inject> refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left,
                                            const vpImage<vpRGBa> &right, bool locked);
-  //! The pose jumped (the lock verifier moved the tracker): the tilt filter and the motion restart.
-  void restart() { reset(); }
   //! After the judgement: the precise stage learns the colours along the outline of a trusted pose; the motion remembers the pose.
   void learn(const TrackResult &r);
   //! The hand moved by \e hNowMhPrev: the tilt filter's state and the motion's poses follow.
