@@ -5,6 +5,7 @@
   Same definition as vpImageConvert::RGBaToHSV (which gives H in [0, 1)), without its
   double-precision image pass. Hue distances wrap around: 0 and 359 degrees are 1 apart.
 */
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -50,6 +51,21 @@ inline Hsv rgbToHsv(unsigned char r, unsigned char g, unsigned char b)
     h -= 360.f;
   o.h = h;
   return o;
+}
+
+/*!
+  The colour of hue \e h (degrees, any: taken modulo 360), saturation \e s and value \e v (each
+  clamped to [0, 1]) as R, G, B in [0, 1]: rgbToHsv()'s inverse, in doubles.
+*/
+inline void hsvToRgb(double h, double s, double v, double rgb[3])
+{
+  const double hh = std::fmod(std::fmod(h, 360.0) + 360.0, 360.0) / 60.0;
+  s = std::clamp(s, 0.0, 1.0);
+  v = std::clamp(v, 0.0, 1.0);
+  const int i = static_cast<int>(std::floor(hh)) % 6;
+  const double f = hh - std::floor(hh), p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+  const double tab[6][3] = {{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}};
+  rgb[0] = tab[i][0], rgb[1] = tab[i][1], rgb[2] = tab[i][2];
 }
 
 //! HSV of a ViSP pixel (its alpha ignored).
