@@ -27,6 +27,7 @@
 #include "pm/lab/SimulatedHandEye.h"
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/SurfaceDrawing.h"
 #include "pm/model/PassLandings.h"
 #include "pm/model/PassPlanner.h"
 #include "pm/precise/ModelErrorFloor.h"

@@ -12,6 +12,7 @@
 #include "pm/core/UndistortMap.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
+#include "pm/model/SurfaceDrawing.h"
 #include "pm/io/ViewsFolder.h"
 
 namespace pm::io {

@@ -230,12 +230,4 @@ AllAroundBuild buildAllAroundModel(const core::StereoRig &rig, const std::vector
 AllAroundBuild buildAllAroundModelWithout(const core::StereoRig &rig, const std::vector<PassView> &pass, const AllAroundParams &params,
                                           const PassMeasurements &measured, const std::vector<std::size_t> &heldOut);
 
-/*!
-  The hull's surface drawn by a camera at \e mMc (its pose in the model frame, metres) with
-  intrinsics \e cam, \e w x \e h: each surface point in its colour (nearest first), the rest black.
-  \e mask (when given) gets 255 where the hull covers the image. For pictures.
-*/
-vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
-                            const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask = nullptr);
-
 } // namespace pm::model
