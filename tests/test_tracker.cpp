@@ -358,6 +358,36 @@ TEST(Tracker, WeighsTheCuesWithTheCoefficientsOfItsModelsKindUnlessGivenItsOwn)
   EXPECT_THROW(pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Custom), pm::core::Error);
 }
 
+TEST(TrackerConfig, KeysGivenAsTextAreTheFilesKeysTheHeaderLeftOut)
+{
+  pm::tracker::TrackerParams p;
+  p.search.budgetEvaluations = 777;
+  p.refinement.tiltFilter.alpha = 0.3;
+  p.judgement.uncertainty.floor[1] = 0.25;
+  // The whole configuration as a file writes it, header and all, and its keys alone: the same parameters.
+  const std::string file = pm::tracker::trackerConfigToJson(p);
+  nlohmann::json keys = nlohmann::json::parse(file);
+  keys.erase("format");
+  keys.erase("version");
+  for (const std::string &text : {file, keys.dump()}) {
+    const pm::tracker::TrackerParams q = pm::tracker::trackerParamsFromJson(text);
+    EXPECT_EQ(q.search.budgetEvaluations, 777);
+    EXPECT_DOUBLE_EQ(q.refinement.tiltFilter.alpha, 0.3);
+    EXPECT_DOUBLE_EQ(q.judgement.uncertainty.floor[1], 0.25);
+    EXPECT_EQ(pm::tracker::trackerConfigToJson(q), file);
+  }
+  // A few keys over the caller's defaults; the rest kept.
+  const pm::tracker::TrackerParams r = pm::tracker::trackerParamsFromJson(R"({"search": {"budget_evaluations": 400}})", p);
+  EXPECT_EQ(r.search.budgetEvaluations, 400);
+  EXPECT_DOUBLE_EQ(r.refinement.tiltFilter.alpha, 0.3);
+  // An unknown key, a value out of range, not JSON, not an object: refused, naming what is wrong.
+  EXPECT_NE(pm::test::errorOf([] { pm::tracker::trackerParamsFromJson(R"({"search": {"budget_evalutions": 400}})"); }).find("budget_evalutions"),
+            std::string::npos);
+  EXPECT_NE(pm::test::errorOf([] { pm::tracker::trackerParamsFromJson(R"({"search": {"budget_evaluations": -4}})"); }), "");
+  EXPECT_NE(pm::test::errorOf([] { pm::tracker::trackerParamsFromJson("{"); }).find("not valid JSON"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([] { pm::tracker::trackerParamsFromJson("[1, 2]"); }).find("object"), std::string::npos);
+}
+
 TEST(TrackerConfig, FileRoundTripAndErrors)
 {
   pm::test::TempDir d("config");

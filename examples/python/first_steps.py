@@ -24,7 +24,7 @@ for k in range(60):
     left, right = scene.render(rig, hMo, k)  # H x W x 4 RGBA uint8, as ViSP holds images
     result = tracker.track(left, right)
 
-print(result.state, "confidence %.3f" % result.confidence, "trusted" if result.trusted else "not trusted")
+print(result.state.name.lower(), "confidence %.3f" % result.confidence, "trusted" if result.trusted else "not trusted")
 hMm_true = hMo @ oMm                         # where the model truly is (the lab knows)
 error_mm = 1e3 * np.linalg.norm(result.pose[:3, 3] - hMm_true[:3, 3])
 print("pose (m):\n", np.round(result.pose, 4))

@@ -17,7 +17,7 @@ while loop.time <= min(seconds, loop.duration):
     wrong += frame.servoed_on_wrong_pose
     if round(frame.t * 30) % 30 == 0:  # once a second
         print("t %4.1f s  %-9s  hand off by %6.2f mm %5.2f deg  estimate off by %5.2f mm %5.2f deg" % (
-            frame.t, frame.result.state, frame.error_mm, frame.error_deg, frame.estimate_error_mm, frame.estimate_error_deg))
+            frame.t, frame.result.state.name.lower(), frame.error_mm, frame.error_deg, frame.estimate_error_mm, frame.estimate_error_deg))
 left, right = loop.images()
 pm.write_image(left, "servo_last_left.png")
 print("servoed on %d frames, %d on a wrong pose; the last left image in servo_last_left.png" % (servoed, wrong))

@@ -39,7 +39,7 @@ def main() -> int:
         result = tracker.track(left, right)  # read once where the tracker first reads its pixels
         x, y, z = 1e3 * result.pose[:3, 3]
         print("frame %3d  %-9s  confidence %.3f  %s  model at %7.1f %7.1f %7.1f mm" % (
-            k, result.state, result.confidence, "trusted" if result.trusted else "-------", x, y, z))
+            k, result.state.name.lower(), result.confidence, "trusted" if result.trusted else "-------", x, y, z))
         k += 1
     print("%d pairs tracked" % k)
     return 0 if k > 0 else 1

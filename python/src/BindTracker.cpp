@@ -12,13 +12,17 @@ namespace pmpy {
 void bindTracker(py::module_ &m)
 {
   using pm::tracker::TrackResult;
+  using pm::tracker::TrackState;
+  py::enum_<TrackState>(m, "TrackState", "The tracker's state: SEARCHING (no lock yet), TRACKING (locked), LOST (the lock lost).")
+      .value("SEARCHING", TrackState::Searching)
+      .value("TRACKING", TrackState::Tracking)
+      .value("LOST", TrackState::Lost);
   py::class_<TrackResult>(m, "TrackResult", "What the tracker says about a frame (pm::tracker::TrackResult).")
       .def_property_readonly("pose", [](const TrackResult &r) { return toArray(r.hMo); }, "hMo: the model in the hand frame (4 x 4, metres)")
       .def_property_readonly(
-          "phi", [](const TrackResult &r) { return std::array<double, 6>{r.phi.x, r.phi.y, r.phi.z, r.phi.e1, r.phi.e2, r.phi.e3}; },
+          "phi", [](const TrackResult &r) { return py::make_tuple(r.phi.x, r.phi.y, r.phi.z, r.phi.e1, r.phi.e2, r.phi.e3); },
           "the same pose as the programs write it: x, y, z (mm) and the quaternion's vector e1, e2, e3")
-      .def_property_readonly("state", [](const TrackResult &r) { return std::string(pm::tracker::toString(r.state)); },
-                             "'searching', 'tracking' or 'lost'")
+      .def_readonly("state", &TrackResult::state, "TrackState: SEARCHING, TRACKING or LOST")
       .def_readonly("fitness", &TrackResult::fitness, "F, the stereo fitness at the pose")
       .def_readonly("quality", &TrackResult::quality, "q, the normalised fitness")
       .def_readonly("confidence", &TrackResult::confidence, "in (0, 1): how likely the pose is within 2 cm and 5 deg")
@@ -28,11 +32,11 @@ void bindTracker(py::module_ &m)
       .def_readonly("precise", &TrackResult::precise, "the precise stage's pose is the frame's")
       .def_property_readonly(
           "sigma",
-          [](const TrackResult &r) -> std::optional<std::array<double, 6>> {
+          [](const TrackResult &r) -> py::object {
             if (!r.uncertainty.known)
-              return std::nullopt;
+              return py::none();
             const auto &u = r.uncertainty;
-            return std::array<double, 6>{u.sigmaMm[0], u.sigmaMm[1], u.sigmaMm[2], u.sigmaDeg[0], u.sigmaDeg[1], u.sigmaDeg[2]};
+            return py::make_tuple(u.sigmaMm[0], u.sigmaMm[1], u.sigmaMm[2], u.sigmaDeg[0], u.sigmaDeg[1], u.sigmaDeg[2]);
           },
           "the pose's 1-sigma along the hand's x, y, z (mm) and about them (deg), or None where it is not known (no precise stage)")
       .def_readonly("evaluations", &TrackResult::evaluations, "RM-GA's work this frame (whole evaluations)")
@@ -51,15 +55,21 @@ void bindTracker(py::module_ &m)
                       "    result = tracker.track(left, right)   # uint8, H x W x 3 BGR or H x W x 4 RGBA\n"
                       "    if result.trusted: act_on(result.pose)")
       .def(py::init([](const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, std::optional<long> seed,
-                       std::optional<long> budget) {
+                       std::optional<long> budget, std::optional<py::dict> params) {
              if ((seed && *seed < 0) || (budget && *budget < 0))
                throw py::value_error(seed && *seed < 0 ? "seed: a number >= 0 is needed" : "budget_evaluations: a number >= 0 is needed");
-             return std::make_unique<Tracker>(rig, model, config, seed.value_or(-1), budget.value_or(-1));
+             std::string keys;
+             if (params) // the configuration's one key list, as a file holds it (pm::tracker::trackerParamsFromJson)
+               keys = py::module_::import("json").attr("dumps")(*params).cast<std::string>();
+             return std::make_unique<Tracker>(rig, model, config, keys, seed.value_or(-1), budget.value_or(-1));
            }),
            py::arg("rig"), py::arg("model"), py::arg("config") = "", py::arg("seed") = py::none(), py::arg("budget_evaluations") = py::none(),
-           "config: a tracker configuration file (pm-track --config's; empty: the defaults every program uses); seed: RM-GA's "
-           "seed; budget_evaluations: the frame's search budget in evaluations (0: the wall-time budget). Raises Error if the "
-           "rig, the model or the configuration is invalid, or the model does not fit the rig.")
+           py::arg("params") = py::none(),
+           "config: a tracker configuration file (pm-track --config's; empty: the defaults every program uses); params: its "
+           "keys as a dict, over the file's or the defaults (e.g. {'search': {'budget_evaluations': 400}}: the keys of "
+           "docs/file-formats.md); seed: RM-GA's seed; budget_evaluations: the frame's search budget in evaluations (0: the "
+           "wall-time budget). Raises Error if the rig, the model or the configuration is invalid (an unknown key named), or "
+           "the model does not fit the rig.")
       .def("initialize", [](Tracker &t) { t.tracker().initialize(); }, "Searches from scratch (state: searching).")
       .def(
           "init_from_pose", [](Tracker &t, const py::array_t<double, py::array::c_style | py::array::forcecast> &hMo) { t.tracker().initFromPose(toMatrix(hMo, "hMo")); },
@@ -75,11 +85,10 @@ void bindTracker(py::module_ &m)
           "The hand moved since the last frame: hNowMhPrev is the previous hand frame seen from the current one (4 x 4, metres, "
           "from the robot's odometry).")
       .def_property_readonly("pose", [](const Tracker &t) { return toArray(t.tracker().getPose()); }, "hMo of the last frame (4 x 4, metres)")
-      .def_property_readonly("state", [](const Tracker &t) { return std::string(pm::tracker::toString(t.tracker().getState())); },
-                             "the state after the last frame")
+      .def_property_readonly("state", [](const Tracker &t) { return t.tracker().getState(); }, "the state after the last frame (TrackState)")
       .def_property_readonly("last_result", [](const Tracker &t) { return t.tracker().lastResult(); }, "what the last track() returned")
       .def_property_readonly(
-          "pixels_read",
+          "_pixels_read", // a test hook (the tests read where track() read the pixels), not the API
           [](const Tracker &t) {
             const auto a = t.pixelsRead();
             return py::make_tuple(reinterpret_cast<std::uintptr_t>(a[0]), reinterpret_cast<std::uintptr_t>(a[1]));

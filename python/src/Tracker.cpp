@@ -7,9 +7,11 @@ namespace pmpy {
 
 namespace {
 
-pm::tracker::TrackerParams paramsOf(const std::string &config, long seed, long budgetEvaluations)
+pm::tracker::TrackerParams paramsOf(const std::string &config, const std::string &keys, long seed, long budgetEvaluations)
 {
   pm::tracker::TrackerParams p = config.empty() ? pm::tracker::TrackerParams() : pm::tracker::loadTrackerConfig(config);
+  if (!keys.empty())
+    p = pm::tracker::trackerParamsFromJson(keys, p);
   if (seed >= 0)
     p.search.ga.seed = static_cast<std::uint64_t>(seed);
   if (budgetEvaluations >= 0)
@@ -19,9 +21,9 @@ pm::tracker::TrackerParams paramsOf(const std::string &config, long seed, long b
 
 } // namespace
 
-Tracker::Tracker(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, long seed,
-                 long budgetEvaluations)
-    : m_tracker(rig, model, paramsOf(config, seed, budgetEvaluations))
+Tracker::Tracker(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, const std::string &keys,
+                 long seed, long budgetEvaluations)
+    : m_tracker(rig, model, paramsOf(config, keys, seed, budgetEvaluations))
 {
 }
 

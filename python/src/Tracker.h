@@ -23,12 +23,13 @@ class Tracker
 {
 public:
   /*!
-    \e config: a tracker configuration file (empty: the defaults every program uses); \e seed and
-    \e budgetEvaluations (when not negative) replace RM-GA's seed and the frame's evaluation budget.
-    Throws pm::core::Error as PhotoModelTracker and loadTrackerConfig() do.
+    \e config: a tracker configuration file (empty: the defaults every program uses); \e keys: some
+    of its keys as JSON text, over the file's (empty: none); \e seed and \e budgetEvaluations (when
+    not negative) replace RM-GA's seed and the frame's evaluation budget. Throws pm::core::Error as
+    PhotoModelTracker, loadTrackerConfig() and trackerParamsFromJson() do.
   */
-  Tracker(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, long seed,
-          long budgetEvaluations);
+  Tracker(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, const std::string &keys,
+          long seed, long budgetEvaluations);
 
   //! One frame: the two images as NumPy arrays (checked; see Arrays.h), the GIL released while it runs.
   pm::tracker::TrackResult track(const pybind11::array &left, const pybind11::array &right);

@@ -29,7 +29,7 @@ def test_the_servo_loop_runs_frame_by_frame_and_never_servoes_on_a_wrong_pose(ri
     assert [f.t for f in frames] == pytest.approx([k / 30 for k in range(45)])
     assert not any(f.servoed_on_wrong_pose for f in frames)
     last = frames[-1]
-    assert last.result.state == "tracking" and last.servoing
+    assert last.result.state == pm.TrackState.TRACKING and last.servoing
     assert last.estimate_error_mm < 3 and last.estimate_error_deg < 1.5
     assert len(last.joints) == 7  # the PA-10
     left, right = loop.images()

@@ -1,6 +1,7 @@
 """The tracker from Python: the same poses as the C++ programs on the same frames, NumPy images read where they lie,
 the GIL released, bad input raised, never a crash."""
 import csv
+import json
 import threading
 import time
 
@@ -39,12 +40,12 @@ def test_the_same_frames_give_the_same_poses_as_pm_track(rig, made_model, model,
     tracked = 0
     for (left, right), row in zip(frames, rows):
         r = tracker.track(left, right)
-        assert r.state == row["state"]
+        assert r.state.name.lower() == row["state"]
         assert r.evaluations == int(row["evaluations"])
         # frames.csv holds 8 significant digits: equal to them (half a unit of the 8th digit: 5e-8 at most).
         want = [float(row[k]) for k in ("est_x", "est_y", "est_z", "est_e1", "est_e2", "est_e3")]
         np.testing.assert_allclose(r.phi, want, rtol=5.1e-8, atol=1e-12)
-        tracked += r.state == "tracking"
+        tracked += r.state == pm.TrackState.TRACKING
     assert tracked > len(frames) // 2  # a real run: the crab found and followed
 
 
@@ -61,27 +62,40 @@ def test_rgba_is_read_where_it_lies_and_bgr_converted_into_one_kept_buffer(rig, 
     t = pm.Tracker(rig, model)
     for left, right in frames[:3]:
         t.track(left, right)
-        assert t.pixels_read == (left.ctypes.data, right.ctypes.data)  # the arrays' own buffers: no copy
+        assert t._pixels_read == (left.ctypes.data, right.ctypes.data)  # the arrays' own buffers: no copy
     kept = None
     for left, right in frames[:3]:
         bl, br = np.ascontiguousarray(left[..., 2::-1]), np.ascontiguousarray(right[..., 2::-1])
         t.track(bl, br)
-        assert t.pixels_read[0] not in (bl.ctypes.data, left.ctypes.data)
-        kept = kept or t.pixels_read
-        assert t.pixels_read == kept  # one buffer per camera, reused: no allocation per frame
+        assert t._pixels_read[0] not in (bl.ctypes.data, left.ctypes.data)
+        kept = kept or t._pixels_read
+        assert t._pixels_read == kept  # one buffer per camera, reused: no allocation per frame
+
+
+def test_the_parameters_as_a_dict_are_the_configuration_files_keys(rig, model, frames, tmp_path):
+    keys = {"search": {"budget_evaluations": 300, "rmga": {"seed": 9}}}
+    (tmp_path / "t.json").write_text('{"format": "visp-photomodel-tracker", "version": 2, ' + json.dumps(keys)[1:])
+    by_file, by_dict = pm.Tracker(rig, model, config=str(tmp_path / "t.json")), pm.Tracker(rig, model, params=keys)
+    default = pm.Tracker(rig, model)
+    for left, right in frames[:4]:
+        a, b = by_file.track(left, right), by_dict.track(left, right)
+        assert a.evaluations == b.evaluations < default.track(left, right).evaluations  # 300 a frame, not 800
+        assert a.phi == b.phi and isinstance(a.phi, tuple)
+    with pytest.raises(pm.Error, match="budget_evalutions"):
+        pm.Tracker(rig, model, params={"search": {"budget_evalutions": 300}})
 
 
 def test_the_result_carries_what_a_robot_needs(rig, model, frames):
     t = pm.Tracker(rig, model)
     for left, right in frames:
         r = t.track(left, right)
-    assert r.state == "tracking" and r.trusted and 0.9 < r.confidence < 1
+    assert r.state == pm.TrackState.TRACKING and r.trusted and 0.9 < r.confidence < 1
     assert r.pose.shape == (4, 4) and np.allclose(r.pose[3], [0, 0, 0, 1])
     assert len(r.sigma) == 6 and all(0 < s < 5 for s in r.sigma)
     assert 0.9 <= r.visible_share <= 1
     np.testing.assert_array_equal(t.pose, r.pose)
     t.init_from_pose(r.pose)
-    assert t.state == "tracking"
+    assert t.state == pm.TrackState.TRACKING
 
 
 def test_the_gil_is_released_while_it_tracks(rig, model, frames):
@@ -138,6 +152,6 @@ def test_the_hand_motion_moves_the_pose_and_keeps_the_lock(rig, model):
             hMo = step @ hMo
         r = t.track(*scene.render(rig, hMo, k))
         poses.append(r.pose)
-    assert r.state == "tracking" and r.trusted
+    assert r.state == pm.TrackState.TRACKING and r.trusted
     # From frame 10 on, the estimate moved as the hand did: 29 steps of 2 mm, within 2 mm.
     np.testing.assert_allclose(poses[39][:3, 3] - poses[10][:3, 3], [-0.058, 0, 0], atol=0.002)

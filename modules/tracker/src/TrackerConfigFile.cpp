@@ -297,15 +297,23 @@ json fromVersion1(json j, std::string &notice)
 }
 } // namespace
 
-TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults, std::string *notice)
+namespace {
+
+/*!
+  The configuration \e j over \e defaults, named \e source in errors. \e header: "format" and
+  "version" required (a file); without, they may be left out (the current version's keys).
+*/
+TrackerParams fromJson(json j, const TrackerParams &defaults, const std::string &source, bool header, std::string *notice)
 {
-  std::ifstream f(path);
-  if (!f)
-    throw core::Error("tracker configuration '" + path + "' does not exist or cannot be read");
   TrackerParams p = defaults;
   try {
-    json j = json::parse(f);
-    if (!j.is_object() || j.value("format", "") != kFormat)
+    if (!j.is_object())
+      throw core::Error("it must be an object of keys");
+    if (!header && !j.contains("format"))
+      j["format"] = kFormat;
+    if (!header && !j.contains("version"))
+      j["version"] = kVersion;
+    if (j.value("format", "") != kFormat)
       throw core::Error(std::string("\"format\" must be \"") + kFormat + "\"");
     const json version = j.value("version", json());
     if (!version.is_number_integer() || (version.get<long long>() != 1 && version.get<long long>() != kVersion))
@@ -322,13 +330,40 @@ TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &de
       p.judgement.confidence.kind = ConfidenceKind::Custom; // weights written by hand are meant to be used
     p.validate();
     if (notice)
-      *notice = upgraded.empty() ? std::string() : "tracker configuration '" + path + "': " + upgraded;
+      *notice = upgraded.empty() ? std::string() : source + ": " + upgraded;
   } catch (const core::Error &e) {
-    throw core::Error("tracker configuration '" + path + "': " + e.what());
+    throw core::Error(source + ": " + e.what());
+  } catch (const json::exception &e) {
+    throw core::Error(source + " is not valid: " + e.what());
+  }
+  return p;
+}
+
+} // namespace
+
+TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults, std::string *notice)
+{
+  std::ifstream f(path);
+  if (!f)
+    throw core::Error("tracker configuration '" + path + "' does not exist or cannot be read");
+  json j;
+  try {
+    j = json::parse(f);
   } catch (const json::exception &e) {
     throw core::Error("tracker configuration '" + path + "' is not valid: " + e.what());
   }
-  return p;
+  return fromJson(std::move(j), defaults, "tracker configuration '" + path + "'", true, notice);
+}
+
+TrackerParams trackerParamsFromJson(const std::string &text, const TrackerParams &defaults)
+{
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::exception &e) {
+    throw core::Error(std::string("tracker parameters are not valid JSON: ") + e.what());
+  }
+  return fromJson(std::move(j), defaults, "tracker parameters", false, nullptr);
 }
 
 std::string trackerConfigToJson(const TrackerParams &params)

@@ -5,7 +5,7 @@ and the simulated lab (stereo pairs of a toy at a pose, the servo loop frame by 
 Poses are 4 x 4 NumPy arrays in metres (hMo: the model in the hand frame). Errors raise Error with the one-line
 message the programs print after 'error: '. docs/tutorial-python.md walks through it.
 """
-from typing import List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -155,6 +155,18 @@ def build_model_from_folder(rig: StereoRig, folder: str, backdrop_hue_deg: Optio
     """The same from a views folder (left_NN.png, right_NN.png, background_*_NN.png, pose_fPh_NN.yaml), as
     pm-make-model --views does."""
 
+class TrackState:
+    """The tracker's state (an enumeration): SEARCHING (no lock yet), TRACKING (locked), LOST (the lock lost)."""
+    SEARCHING: TrackState
+    TRACKING: TrackState
+    LOST: TrackState
+    @property
+    def name(self) -> str:
+        """'SEARCHING', 'TRACKING' or 'LOST'."""
+    @property
+    def value(self) -> int:
+        """0, 1 or 2."""
+
 class TrackResult:
     """What the tracker says about a frame (pm::tracker::TrackResult)."""
     @property
@@ -164,8 +176,8 @@ class TrackResult:
     def phi(self) -> Tuple[float, float, float, float, float, float]:
         """The same pose as the programs write it: x, y, z (mm) and the quaternion's vector e1, e2, e3."""
     @property
-    def state(self) -> str:
-        """'searching', 'tracking' or 'lost'."""
+    def state(self) -> TrackState:
+        """SEARCHING, TRACKING or LOST."""
     @property
     def fitness(self) -> float:
         """F, the stereo fitness at the pose."""
@@ -207,10 +219,12 @@ class Tracker:
         if result.trusted: act_on(result.pose)
     """
     def __init__(self, rig: StereoRig, model: PhotoModel, config: str = "", seed: Optional[int] = None,
-                 budget_evaluations: Optional[int] = None) -> None:
-        """config: a tracker configuration file (pm-track --config's; empty: the defaults every program uses); seed:
-        RM-GA's seed; budget_evaluations: the frame's search budget in evaluations (0: the wall-time budget). Raises
-        Error if the rig, the model or the configuration is invalid, or the model does not fit the rig."""
+                 budget_evaluations: Optional[int] = None, params: Optional[Dict[str, Any]] = None) -> None:
+        """config: a tracker configuration file (pm-track --config's; empty: the defaults every program uses); params:
+        its keys as a dict, over the file's or the defaults (e.g. {'search': {'budget_evaluations': 400}}: the keys of
+        docs/file-formats.md); seed: RM-GA's seed; budget_evaluations: the frame's search budget in evaluations (0: the
+        wall-time budget). Raises Error if the rig, the model or the configuration is invalid (an unknown key named),
+        or the model does not fit the rig."""
     def initialize(self) -> None:
         """Searches from scratch (state: searching)."""
     def init_from_pose(self, hMo: Pose) -> None:
@@ -226,15 +240,11 @@ class Tracker:
     def pose(self) -> Pose:
         """hMo of the last frame (4 x 4, metres)."""
     @property
-    def state(self) -> str:
+    def state(self) -> TrackState:
         """The state after the last frame."""
     @property
     def last_result(self) -> TrackResult:
         """What the last track() returned."""
-    @property
-    def pixels_read(self) -> Tuple[int, int]:
-        """The addresses of the pixels the last track() read, left and right: an RGBA array's own buffer (no copy), or
-        the one buffer a BGR array is converted into (kept from frame to frame)."""
     @property
     def has_precise_stage(self) -> bool:
         """The precise stage runs (a model with outlines): the results carry a sigma."""

@@ -40,6 +40,12 @@ namespace pm::tracker {
   (when given) receives one line for a file of version 1, else an empty string.
 */
 TrackerParams loadTrackerConfig(const std::string &path, const TrackerParams &defaults = TrackerParams(), std::string *notice = nullptr);
+/*!
+  The keys of a configuration given as JSON text (as a file holds them; "format" and "version" may
+  be left out: the current version's keys) over \e defaults: the one key list of files, the
+  programs and Python's Tracker(params=...). Throws core::Error naming the key.
+*/
+TrackerParams trackerParamsFromJson(const std::string &text, const TrackerParams &defaults = TrackerParams());
 //! Every key of \e p, as loadTrackerConfig reads them (version 2).
 std::string trackerConfigToJson(const TrackerParams &p);
 
