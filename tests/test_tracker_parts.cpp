@@ -252,7 +252,7 @@ TEST(PoseSearch, TheFramesChangesAreAppliedInOnePlaceInTheirOrder)
   pm::tracker::PoseSearch search(p, fitness, scale);
   search.initialize();
   EXPECT_FALSE(search.ga().hasAnchor());
-  search.evolve(pm::rmga::FrameBudget::evals(200), true);
+  search.evolve(pm::rmga::FrameBudget::evals(200), pm::tracker::PoseSearch::Scoring::Coarse);
   // A reseed, then an injected pose: the population is around the reseed, with the pose among it.
   RmGaUpdate u;
   u.reseed = RmGaUpdate::Reseed{c.truth, 0.0};

@@ -124,7 +124,7 @@ void examplePoseSearch(const pm::tracker::TrackerParams &params, const pm::core:
 {
   pm::tracker::PoseSearch search(params.search, fitness, scale);
   search.initialize();                                   // a random population
-  const pm::rmga::FrameResult r = search.evolve(plan.main, false);  // tracked: every point
+  const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact); // tracked: every point
   pm::tracker::RmGaUpdate u;
   u.anchor = r.best;                                     // trusted
   search.apply(u);
@@ -188,9 +188,9 @@ void exampleSteadyFramePolicy(const pm::tracker::TrackerParams &params, bool ver
     fitness.setImages(IL, IR, steady.windows(fitness, lastPose));
   else
     fitness.setImages(IL, IR);
-  const pm::rmga::FrameResult r = search.evolve(plan.main, false);
+  const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact);
   if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
-    search.evolve(plan.mainWhole, false, true);                   // (on the whole images)
+    search.evolve(plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);
   steady.update(state, scale.quality(r.fitness));                // after the frame's state
 }
 

@@ -115,7 +115,8 @@ FramePlan PhotoModelTracker::plan(const vpImage<vpRGBa> &left, const vpImage<vpR
 
 TrackResult PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock)
 {
-  rmga::FrameResult fr = m_search.evolve(frame.main, m_lock.state() != TrackState::Tracking); // coarse until tracked
+  const PoseSearch::Scoring scoring = m_lock.state() == TrackState::Tracking ? PoseSearch::Scoring::Exact : PoseSearch::Scoring::Coarse;
+  rmga::FrameResult fr = m_search.evolve(frame.main, scoring); // coarse until tracked
   TrackResult r;
   if (frame.steady && m_steady.escalates(m_scale.quality(fr.fitness))) {
     // The steady frame went wrong: the rest of the whole budget at once, on the whole images.
@@ -127,7 +128,7 @@ TrackResult PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRG
       rest.evaluations = std::max<long>(m_params.search.ga.population, rest.evaluations - fr.evaluations);
     else
       rest.milliseconds = std::max(0.05, rest.milliseconds - (clock.ms() - frame.hueMs));
-    const rmga::FrameResult more = m_search.evolve(rest, false, true);
+    const rmga::FrameResult more = m_search.evolve(rest, PoseSearch::Scoring::Exact, PoseSearch::Generations::SameFrame);
     fr.best = more.best;
     fr.fitness = more.fitness;
     fr.evaluations += more.evaluations;
@@ -191,8 +192,9 @@ void PhotoModelTracker::judge(TrackResult &r, const Evidence &evidence, TrackSta
   m_judgement.judge(r, evidence, s);
 }
 
-void PhotoModelTracker::reset(TrackState state, bool verified)
+void PhotoModelTracker::reset(TrackState state, Start start)
 {
+  const bool verified = start == Start::Verified;
   m_last = TrackResult();
   m_last.state = state;
   m_last.verified = verified;
@@ -212,14 +214,14 @@ void PhotoModelTracker::useBackgroundHue(double deg)
 void PhotoModelTracker::initialize()
 {
   m_search.initialize();
-  reset(TrackState::Searching, false);
+  reset(TrackState::Searching, Start::Unverified);
 }
 
 void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
 {
   const core::Phi p = core::fromHomogeneousMatrix(hMo);
   m_search.initFromPose(p);
-  reset(TrackState::Tracking, true); // a pose given is taken as verified
+  reset(TrackState::Tracking, Start::Verified); // a pose given is taken as verified
   m_last.hMo = hMo;
   m_last.phi = p;
 }

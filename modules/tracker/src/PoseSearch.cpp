@@ -62,10 +62,10 @@ void PoseSearch::initFromPose(const core::Phi &p)
 
 void PoseSearch::transform(const std::function<core::Phi(const core::Phi &)> &moved) { m_ga.transform(moved); }
 
-rmga::FrameResult PoseSearch::evolve(const rmga::FrameBudget &budget, bool coarse, bool sameFrame)
+rmga::FrameResult PoseSearch::evolve(const rmga::FrameBudget &budget, Scoring scoring, Generations generations)
 {
-  const bool c = coarse && m_params.coarse;
-  rmga::FrameResult r = m_ga.evolve(c ? m_coarse : m_objective, budget, sameFrame);
+  const bool c = scoring == Scoring::Coarse && m_params.coarse;
+  rmga::FrameResult r = m_ga.evolve(c ? m_coarse : m_objective, budget, generations == Generations::SameFrame);
   if (c) { // the estimate of the best, then F itself
     r.fitness = m_fitness.evaluate(r.best);
     ++r.evaluations;

@@ -124,7 +124,8 @@ private:
   void completeHue(const FramePlan &plan, const TrackResult &r, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   RmGaUpdate::Restart updateState(TrackResult &r, const Evidence &evidence);
   void judge(TrackResult &r, const Evidence &evidence, TrackState prev) const;
-  void reset(TrackState state, bool verified);
+  enum class Start { Unverified, Verified }; //!< how reset() takes its first pose: a search's, or one given (verified)
+  void reset(TrackState state, Start start);
   //! The fitness and the precise stage compare with the background's hue \e deg from now on.
   void useBackgroundHue(double deg);
 

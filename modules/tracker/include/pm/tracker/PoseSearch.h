@@ -10,7 +10,7 @@
   \code
     pm::tracker::PoseSearch search(params.search, fitness, scale);
     search.initialize();                                   // a random population
-    const pm::rmga::FrameResult r = search.evolve(plan.main, false);  // tracked: every point
+    const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact); // tracked: every point
     pm::tracker::RmGaUpdate u;
     u.anchor = r.best;                                     // trusted
     search.apply(u);
@@ -87,12 +87,20 @@ public:
   void initFromPose(const core::Phi &p); //!< a population around \e p, which is the anchor
   //! Moves the population (and its anchor and motion history) by \e moved: the hand moved.
   void transform(const std::function<core::Phi(const core::Phi &)> &moved);
-  /*!
-    RM-GA on the frame within \e budget: coarse when \e coarse (and SearchParams::coarse), its best
-    then scored on every point. \e sameFrame: more generations on the frame of the last call
-    (rmga::RmGa::evolve), scored on every point.
-  */
-  rmga::FrameResult evolve(const rmga::FrameBudget &budget, bool coarse, bool sameFrame = false);
+  //! How evolve() scores the candidates.
+  enum class Scoring
+  {
+    Coarse, //!< on the first quarter of the model's points (when SearchParams::coarse), the frame's best then on every point
+    Exact   //!< on every point
+  };
+  //! Which frame evolve() searches.
+  enum class Generations
+  {
+    NewFrame,  //!< a new frame (rmga::RmGa::evolve's first call on it)
+    SameFrame  //!< more generations on the frame of the last call
+  };
+  //! RM-GA on the frame within \e budget, scored as \e scoring says.
+  rmga::FrameResult evolve(const rmga::FrameBudget &budget, Scoring scoring, Generations generations = Generations::NewFrame);
   //! The frame's changes, in their order: reseed, inject, restart or scatter, anchor.
   void apply(const RmGaUpdate &update);
 

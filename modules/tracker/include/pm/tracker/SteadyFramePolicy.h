@@ -20,9 +20,9 @@
       fitness.setImages(IL, IR, steady.windows(fitness, lastPose));
     else
       fitness.setImages(IL, IR);
-    const pm::rmga::FrameResult r = search.evolve(plan.main, false);
+    const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact);
     if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
-      search.evolve(plan.mainWhole, false, true);                   // (on the whole images)
+      search.evolve(plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);
     steady.update(state, scale.quality(r.fitness));                // after the frame's state
   \endcode
 */
