@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <thread>
+#include <chrono>
+#include <atomic>
 #include <random>
 #include <set>
 
@@ -324,6 +327,33 @@ TEST(TrustCache, GivesBackWhatWasStoredForTheSamePassRigAndModelOnlyAndNeverFail
   const pm::lab::TrustCache blocked(dir.file("a_file/cache"));
   EXPECT_NO_THROW(blocked.store(key, t));
   EXPECT_FALSE(blocked.find(key));
+}
+
+TEST(TrustCache, AKeysLockMakesASecondCalibrationOfTheSamePassWait)
+{
+  pm::test::TempDir dir("trust_lock");
+  const pm::lab::TrustCache cache(dir.file("cache"));
+  std::atomic<bool> firstDone{false}, secondIn{false};
+  bool secondSawFirstDone = false;
+  std::thread second;
+  {
+    const pm::lab::TrustCache::KeyLock first(cache, "00000000000000ab");
+    second = std::thread([&] {
+      const pm::lab::TrustCache::KeyLock mine(cache, "00000000000000ab"); // waits for the first
+      secondSawFirstDone = firstDone.load();
+      secondIn = true;
+    });
+    // Another key is not held by it.
+    { const pm::lab::TrustCache::KeyLock other(cache, "00000000000000cd"); }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_FALSE(secondIn.load());
+    firstDone = true;
+  }
+  second.join();
+  EXPECT_TRUE(secondSawFirstDone);
+  // A cache with no folder locks nothing (and never blocks).
+  const pm::lab::TrustCache off("");
+  const pm::lab::TrustCache::KeyLock a(off, "k"), b(off, "k");
 }
 
 TEST(Judgement, AFrameNotTrustedNamesTheCueThatHeldIt)

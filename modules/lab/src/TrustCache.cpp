@@ -9,6 +9,8 @@
 #include <sstream>
 #include <thread>
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -172,14 +174,43 @@ void TrustCache::store(const std::string &key, const LabTrust &t) const
     fs::remove(tmp, ec);
 }
 
+TrustCache::KeyLock::KeyLock(const TrustCache &cache, const std::string &key)
+{
+  if (!cache.enabled())
+    return;
+  std::error_code ec;
+  fs::create_directories(cache.m_dir, ec);
+  m_fd = ::open((fs::path(cache.m_dir) / ("." + key + ".lock")).c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+  if (m_fd >= 0 && ::flock(m_fd, LOCK_EX) != 0) {
+    ::close(m_fd);
+    m_fd = -1; // no lock: the calibration is made twice, never wrong
+  }
+}
+
+TrustCache::KeyLock::~KeyLock()
+{
+  if (m_fd >= 0) {
+    ::flock(m_fd, LOCK_UN);
+    ::close(m_fd);
+  }
+}
+
 LabTrust calibrateLabTrust(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                            const model::PassMeasurements &measured, const core::PhotoModel &model, const std::function<void()> &onStep)
 {
   const TrustCache cache = TrustCache::fromEnvironment();
   const std::string key = cache.enabled() ? TrustCache::keyOf(rig, pass, model) : "";
-  if (std::optional<LabTrust> found = cache.find(key)) {
+  auto stepAll = [&] {
     for (std::size_t k = trust::calibrationSteps(pass.size()); k > 0 && onStep; --k)
       onStep();
+  };
+  if (std::optional<LabTrust> found = cache.find(key)) {
+    stepAll();
+    return *found;
+  }
+  const TrustCache::KeyLock lock(cache, key); // another program making it now: wait for it
+  if (std::optional<LabTrust> found = cache.find(key)) {
+    stepAll();
     return *found;
   }
   LabTrust t;

@@ -14,6 +14,8 @@
     there), calibrated with the default tracker and calibration parameters (the lab's).
   - It returns what the calibration returned, to the last bit (JSON keeps a double's 17 digits).
   - It never fails a run: a folder that cannot be read or written is a cache that finds nothing.
+  - Two programs that need the same calibration at once make it once: the second waits on the
+    key's lock (KeyLock) and then finds what the first stored.
 
   \code
     // what calibrateLabTrust() does:
@@ -66,6 +68,19 @@ public:
   std::optional<LabTrust> find(const std::string &key) const;
   //! Stores \e t under \e key when it was measured (through a temporary file, so that a reader never sees half of it).
   void store(const std::string &key, const LabTrust &t) const;
+
+  //! Holds \e key's lock (flock) while it lives: another process or thread locking the same key waits.
+  class KeyLock
+  {
+  public:
+    KeyLock(const TrustCache &cache, const std::string &key);
+    ~KeyLock();
+    KeyLock(const KeyLock &) = delete;
+    KeyLock &operator=(const KeyLock &) = delete;
+
+  private:
+    int m_fd = -1;
+  };
   bool enabled() const { return !m_dir.empty(); }
 
 private:
