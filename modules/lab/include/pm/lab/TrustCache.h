@@ -73,7 +73,9 @@ public:
   class KeyLock
   {
   public:
+    //! Waits for \e key's lock in \e cache's folder and takes it (nothing for a cache without a folder).
     KeyLock(const TrustCache &cache, const std::string &key);
+    //! Releases the lock.
     ~KeyLock();
     KeyLock(const KeyLock &) = delete;
     KeyLock &operator=(const KeyLock &) = delete;
@@ -81,6 +83,7 @@ public:
   private:
     int m_fd = -1;
   };
+  //! True when it has a folder (false: it finds and keeps nothing).
   bool enabled() const { return !m_dir.empty(); }
 
 private:
