@@ -279,7 +279,7 @@ TEST(PoseSearch, TheFramesChangesAreAppliedInOnePlaceInTheirOrder)
   EXPECT_GT(far, p.ga.population / 2);
   // ... and the best is avoided: the next frames' best is elsewhere, for its frames.
   EXPECT_EQ(search.ga().avoidedCount(), 1u);
-  const pm::rmga::FrameResult elsewhere = search.evolve(pm::rmga::FrameBudget::evals(400), false);
+  const pm::rmga::FrameResult elsewhere = search.evolve(pm::rmga::FrameBudget::evals(400), pm::tracker::PoseSearch::Scoring::Exact);
   EXPECT_TRUE(pm::core::translationDistanceMm(elsewhere.best, c.truth) > p.avoidMm - 1 ||
               pm::core::rotationDistanceDeg(elsewhere.best, c.truth) > p.avoidDeg - 1);
 }
