@@ -341,13 +341,13 @@ TEST(AllAround, ASoftCamerasModelKeepsItsInteriorPointsFartherInside)
       *im = pm::lab::defocused(*im, 1.2);
   pm::model::AllAroundParams p;
   p.passLandings = false;
+  p.viewpoints = 12; // the outline's rise and the inside distance are read before the viewpoints are sampled
   const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), soft, p);
   std::cout << "the outline rises over " << sharp.edgeWidthPx << " px sharp, " << b.edgeWidthPx << " px through the soft camera: S_in "
             << b.minInsidePx << " px inside\n";
   EXPECT_GT(b.edgeWidthPx, 1.5);
   EXPECT_GT(b.minInsidePx, 3.5);
   p.blurInsideGain = 0; // the user's choice: never
-  p.viewpoints = 12;
   EXPECT_EQ(pm::model::buildAllAroundModel(rig(), soft, p).minInsidePx, p.inMinInsidePx);
 }
 
