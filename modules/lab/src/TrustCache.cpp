@@ -7,7 +7,6 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
-#include <thread>
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -17,6 +16,7 @@
 
 #include "pm/core/Error.h"
 #include "pm/io/PhotoModelFile.h"
+#include "pm/io/StagedFiles.h"
 #include "pm/trust/PassCalibration.h"
 
 namespace pm::lab {
@@ -158,20 +158,11 @@ void TrustCache::store(const std::string &key, const LabTrust &t) const
                             {"tries_csv", t.triesCsv}};
   std::error_code ec;
   fs::create_directories(m_dir, ec);
-  const fs::path to = fs::path(m_dir) / (key + ".json");
-  const fs::path tmp = fs::path(m_dir) / (".partial-" + key + "-" + std::to_string(::getpid()) + "-" +
-                                          std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())));
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << j.dump();
-    if (!f) {
-      fs::remove(tmp, ec);
-      return;
-    }
+  try {
+    io::writeTextFile((fs::path(m_dir) / (key + ".json")).string(), j.dump());
+  } catch (const core::Error &) {
+    // a folder that cannot be written is a cache that keeps nothing
   }
-  fs::rename(tmp, to, ec);
-  if (ec)
-    fs::remove(tmp, ec);
 }
 
 TrustCache::KeyLock::KeyLock(const TrustCache &cache, const std::string &key)

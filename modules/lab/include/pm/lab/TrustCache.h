@@ -66,7 +66,7 @@ public:
   static std::string keyOf(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const core::PhotoModel &model);
   //! The calibration stored under \e key, if any (an entry that does not read is none).
   std::optional<LabTrust> find(const std::string &key) const;
-  //! Stores \e t under \e key when it was measured (through a temporary file, so that a reader never sees half of it).
+  //! Stores \e t under \e key when it was measured (io::writeTextFile: a reader never sees half of it; hold the key's lock).
   void store(const std::string &key, const LabTrust &t) const;
 
   //! Holds \e key's lock (flock) while it lives: another process or thread locking the same key waits.
