@@ -142,7 +142,7 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
   optViews->excludes(optAA)->excludes(others.back());
 }
 
-//! The model's trust calibrated from its own pass (pm::trust, through the test suite's cache when PM_TRUST_CACHE is set); returns the tries as a table (trust_tries.csv).
+//! The model's trust calibrated from its own pass (pm::trust, through the test suite's cache when PM_LAB_CACHE is set); returns the tries as a table (trust_tries.csv).
 std::string calibrate(const Options &o, const pm::core::StereoRig &rig, const std::vector<pm::model::PassView> &pass, pm::model::AllAroundBuild &b,
                       const pm::model::PassMeasurements &measured)
 {

@@ -17,11 +17,12 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
 # Two test programs at once, each with OpenMP's threads: waiting threads sleep instead of spinning
 # on the cores the other program needs (OMP_WAIT_POLICY; the results are the same).
 export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
-# The lab models' trust calibrations made once and read back by the other tests (pm::lab::TrustCache:
-# found only for the same pass, rig and model), in a folder named by the sources, so that a change of
-# code starts an empty one and the release and sanitizer runs of one tree share it (CI runs both).
+# The lab's models and trust calibrations made once and read back by the other tests (pm::lab::LabCache:
+# found only for the same pass, rig and parameters), in a folder named by the sources, so that a change
+# of code starts an empty one and the release and sanitizer runs of one tree share it (CI runs both).
 fingerprint=$(find modules apps data cmake CMakeLists.txt -type f -print0 | sort -z | xargs -0 sha1sum | sha1sum | cut -c1-16)
-export PM_TRUST_CACHE="$PWD/.trust-cache/$fingerprint"
-mkdir -p .trust-cache
-find .trust-cache -mindepth 1 -maxdepth 1 ! -name "$fingerprint" -exec rm -rf {} +
+export PM_LAB_CACHE="$PWD/.lab-cache/$fingerprint"
+rm -rf .trust-cache
+mkdir -p .lab-cache
+find .lab-cache -mindepth 1 -maxdepth 1 ! -name "$fingerprint" -exec rm -rf {} +
 ctest --test-dir "$PM_BUILD_DIR" --output-on-failure -j "$(nproc)"

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <thread>
 #include <chrono>
 #include <atomic>
@@ -13,6 +14,7 @@
 
 #include "TestSupport.h"
 #include "pm/io/PhotoModelFile.h"
+#include "pm/lab/ModelCache.h"
 #include "pm/lab/TrustCache.h"
 #include "pm/tracker/Judgement.h"
 #include "pm/trust/HeldOutViews.h"
@@ -85,6 +87,26 @@ double shiftOf(const pm::core::TrustCalibration &t, const std::string &name)
     if (n == name)
       return v;
   return 0;
+}
+
+//! The lab's rig (as data/rig/pa10_stereo.json: 323 mm baseline, toed in on 500 mm).
+pm::core::StereoRig labRig()
+{
+  return pm::core::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, pm::core::StereoRig::toeInFor(0.323, 0.5));
+}
+
+//! A pass of two small plain views at two hand poses (what a cache's key reads, not a model's).
+std::vector<pm::model::PassView> plainPass()
+{
+  std::vector<pm::model::PassView> pass(2);
+  for (std::size_t k = 0; k < pass.size(); ++k) {
+    pm::model::PassView &v = pass[k];
+    v.name = "view " + std::to_string(k);
+    v.fMh = vpHomogeneousMatrix(0.01 * static_cast<double>(k), 0, 0, 0, 0.1, 0);
+    for (vpImage<vpRGBa> *I : {&v.left, &v.right, &v.backgroundLeft, &v.backgroundRight})
+      I->resize(48, 64, vpRGBa(40, 90, 160));
+  }
+  return pass;
 }
 
 } // namespace
@@ -264,16 +286,8 @@ TEST(PassCalibration, TheModelFileKeepsItAndAnOlderModelLoadsWithNone)
 TEST(TrustCache, GivesBackWhatWasStoredForTheSamePassRigAndModelOnlyAndNeverFails)
 {
   pm::test::TempDir dir("trust_cache");
-  const pm::core::StereoRig rig =
-      pm::core::StereoRig::symmetric(vpCameraParameters(754, 754, 320, 240), 640, 480, 0.323, pm::core::StereoRig::toeInFor(0.323, 0.5));
-  std::vector<pm::model::PassView> pass(2);
-  for (std::size_t k = 0; k < pass.size(); ++k) {
-    pm::model::PassView &v = pass[k];
-    v.name = "view " + std::to_string(k);
-    v.fMh = vpHomogeneousMatrix(0.01 * static_cast<double>(k), 0, 0, 0, 0.1, 0);
-    for (vpImage<vpRGBa> *I : {&v.left, &v.right, &v.backgroundLeft, &v.backgroundRight})
-      I->resize(48, 64, vpRGBa(40, 90, 160));
-  }
+  const pm::core::StereoRig rig = labRig();
+  const std::vector<pm::model::PassView> pass = plainPass();
   const pm::core::PhotoModel model = smallAllAroundModel();
   pm::lab::LabTrust t;
   t.trust.measured = true;
@@ -283,7 +297,7 @@ TEST(TrustCache, GivesBackWhatWasStoredForTheSamePassRigAndModelOnlyAndNeverFail
   t.trust.guard = 0.7;
   t.trust.auroc = 1 / 3.0;
   t.triesCsv = "view,start\n3,near\n";
-  const pm::lab::TrustCache cache(dir.file("cache"));
+  const pm::lab::TrustCache cache(pm::lab::LabCache(dir.file("cache")));
   const std::string key = pm::lab::TrustCache::keyOf(rig, pass, model);
   EXPECT_EQ(key.size(), 16u);
   EXPECT_FALSE(cache.find(key));
@@ -314,37 +328,88 @@ TEST(TrustCache, GivesBackWhatWasStoredForTheSamePassRigAndModelOnlyAndNeverFail
   EXPECT_EQ(pm::lab::TrustCache::keyOf(rig, pass, trusted), key);
   // An entry that does not read is none; a calibration that found no right pose is not kept; no
   // folder, or one that cannot be made, is a cache that finds and keeps nothing.
-  pm::test::writeText(dir.file("cache/" + key + ".json"), "{\"trust_calibration\": 3}");
+  pm::test::writeText(dir.file("cache/" + key + ".trust.json"), "{\"trust_calibration\": 3}");
   EXPECT_FALSE(cache.find(key));
   pm::lab::LabTrust none;
   cache.store("00000000000000aa", none);
   EXPECT_FALSE(cache.find("00000000000000aa"));
-  const pm::lab::TrustCache off("");
-  EXPECT_FALSE(off.enabled());
+  const pm::lab::TrustCache off;
+  EXPECT_FALSE(off.folder().enabled());
   off.store(key, t);
   EXPECT_FALSE(off.find(key));
   pm::test::writeText(dir.file("a_file"), "x");
-  const pm::lab::TrustCache blocked(dir.file("a_file/cache"));
+  const pm::lab::TrustCache blocked(pm::lab::LabCache(dir.file("a_file/cache")));
   EXPECT_NO_THROW(blocked.store(key, t));
   EXPECT_FALSE(blocked.find(key));
 }
 
-TEST(TrustCache, AKeysLockMakesASecondCalibrationOfTheSamePassWait)
+TEST(ModelCache, GivesBackTheModelItsFrameAndSilhouetteForTheSamePassRigAndParametersOnly)
 {
-  pm::test::TempDir dir("trust_lock");
-  const pm::lab::TrustCache cache(dir.file("cache"));
+  pm::test::TempDir dir("model_cache");
+  const pm::core::StereoRig rig = labRig();
+  const std::vector<pm::model::PassView> pass = plainPass();
+  pm::lab::CachedModel m;
+  m.model = smallAllAroundModel();
+  m.fMm = vpHomogeneousMatrix(0.1 / 3, -0.2, 0.5, 0.1, 1 / 7.0, -0.3);
+  m.region.resize(48, 64, 0);
+  for (unsigned i = 10; i < 30; ++i)
+    for (unsigned j = 20 + i % 3; j < 50; ++j)
+      m.region[i][j] = 255;
+  m.region[0][0] = 7;
+  const pm::model::AllAroundParams params;
+  const pm::lab::ModelCache cache(pm::lab::LabCache(dir.file("cache")));
+  const std::string key = pm::lab::ModelCache::keyOf(rig, pass, params, true);
+  EXPECT_EQ(key.size(), 16u);
+  EXPECT_FALSE(cache.find(key));
+  cache.store(key, m);
+  const std::optional<pm::lab::CachedModel> back = cache.find(key);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(pm::io::photoModelToJson(back->model, pm::io::ModelDigits::Exact), pm::io::photoModelToJson(m.model, pm::io::ModelDigits::Exact)); // to the last bit
+  for (unsigned k = 0; k < 16; ++k)
+    EXPECT_EQ(back->fMm[k / 4][k % 4], m.fMm[k / 4][k % 4]);
+  ASSERT_EQ(back->region.getSize(), m.region.getSize());
+  EXPECT_TRUE(std::equal(m.region.bitmap, m.region.bitmap + m.region.getSize(), back->region.bitmap));
+  // A pixel of the pass, a field of any section of the parameters, the trust's choice change the key.
+  std::vector<pm::model::PassView> other = pass;
+  other[0].right[3][4] = vpRGBa(41, 90, 160);
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, other, params, true), key);
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, params, false), key);
+  pm::model::AllAroundParams p = params;
+  p.fusion.blockPx += 2;
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
+  p = params;
+  p.silhouette.background.darkRatio += 1e-12;
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
+  p = params;
+  p.outline.rounds += 1;
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
+  // A silhouette that does not read, or no model file, is no entry; no folder finds and keeps nothing.
+  pm::test::writeText(dir.file("cache/" + key + ".frame.json"), "{\"fMm\": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], \"region_runs\": [64, 48, 0, 5]}");
+  EXPECT_FALSE(cache.find(key));
+  cache.store(key, m);
+  std::filesystem::remove(dir.file("cache/" + key + ".model.json"));
+  EXPECT_FALSE(cache.find(key));
+  const pm::lab::ModelCache off;
+  off.store(key, m);
+  EXPECT_FALSE(off.find(key));
+}
+
+TEST(LabCache, AKeysLockMakesASecondMakerOfTheSameEntryWait)
+{
+  pm::test::TempDir dir("cache_lock");
+  const pm::lab::LabCache cache(dir.file("cache"));
   std::atomic<bool> firstDone{false}, secondIn{false};
   bool secondSawFirstDone = false;
   std::thread second;
   {
-    const pm::lab::TrustCache::KeyLock first(cache, "00000000000000ab");
+    const pm::lab::LabCache::KeyLock first(cache, "00000000000000ab");
     second = std::thread([&] {
-      const pm::lab::TrustCache::KeyLock mine(cache, "00000000000000ab"); // waits for the first
+      const pm::lab::LabCache::KeyLock mine(cache, "00000000000000ab"); // waits for the first
       secondSawFirstDone = firstDone.load();
       secondIn = true;
     });
     // Another key is not held by it.
-    { const pm::lab::TrustCache::KeyLock other(cache, "00000000000000cd"); }
+    { const pm::lab::LabCache::KeyLock other(cache, "00000000000000cd"); }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     EXPECT_FALSE(secondIn.load());
     firstDone = true;
@@ -352,8 +417,8 @@ TEST(TrustCache, AKeysLockMakesASecondCalibrationOfTheSamePassWait)
   second.join();
   EXPECT_TRUE(secondSawFirstDone);
   // A cache with no folder locks nothing (and never blocks).
-  const pm::lab::TrustCache off("");
-  const pm::lab::TrustCache::KeyLock a(off, "k"), b(off, "k");
+  const pm::lab::LabCache off("");
+  const pm::lab::LabCache::KeyLock a(off, "k"), b(off, "k");
 }
 
 TEST(Judgement, AFrameNotTrustedNamesTheCueThatHeldIt)

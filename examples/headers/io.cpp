@@ -9,6 +9,7 @@
 #include "pm/io/WellFormedXml.h"
 
 #include "pm/io/AllAroundFiles.h"
+#include "pm/io/AllAroundParamsJson.h"
 #include "pm/io/DataDir.h"
 #include "pm/io/PoseFile.h"
 #include "pm/io/ViewsFolder.h"
@@ -23,6 +24,14 @@ void exampleWellFormedXml()
 {
   pm::io::requireWellFormedXml("<opencv_storage><a>1</a></opencv_storage>"); // fine
   pm::io::requireWellFormedXml("<opencv_storage><a type_id=");                // throws
+}
+
+// AllAroundParamsJson.h
+void exampleAllAroundParamsJson()
+{
+  pm::model::AllAroundParams p;
+  p.viewpoints = 120;
+  const std::string json = pm::io::allAroundParamsToJson(p); // {"backdrop_hue_deg":-1.0, ..., "viewpoints":120, ...}
 }
 
 // AllAroundFiles.h

@@ -17,6 +17,8 @@
 #include "pm/lab/SimulatedHandEye.h"
 #include "pm/lab/StillPair.h"
 #include "pm/lab/TrackingReport.h"
+#include "pm/lab/LabCache.h"
+#include "pm/lab/ModelCache.h"
 #include "pm/lab/TrustCache.h"
 
 #include <fstream>
@@ -215,7 +217,7 @@ void exampleTrustCache(const pm::core::StereoRig &rig, const std::vector<pm::mod
   // what calibrateLabTrust() does:
   const pm::lab::TrustCache cache = pm::lab::TrustCache::fromEnvironment();
   const std::string key = pm::lab::TrustCache::keyOf(rig, pass, b.model);
-  std::optional<pm::lab::LabTrust> t = cache.find(key);
+  std::optional<pm::lab::LabTrust> t = cache.find(key); // (and again under pm::lab::LabCache::KeyLock(cache.folder(), key))
   if (!t) {
     std::vector<pm::trust::PassTry> tries;
     t = pm::lab::LabTrust();
@@ -223,6 +225,37 @@ void exampleTrustCache(const pm::core::StereoRig &rig, const std::vector<pm::mod
                                             nullptr, nullptr, &tries);
     t->triesCsv = pm::trust::triesCsv(tries, t->trust);
     cache.store(key, *t);
+  }
+}
+
+// LabCache.h
+void exampleLabCache(const pm::core::StereoRig &rig, const std::vector<pm::model::PassView> &pass)
+{
+  const pm::lab::LabCache cache = pm::lab::LabCache::fromEnvironment();
+  const std::string key = pm::lab::CacheKey("my entry 1").rig(rig).pass(pass).hex();
+  std::optional<std::string> text = cache.read(key + ".txt");
+  if (!text) {
+    const pm::lab::LabCache::KeyLock lock(cache, key); // another program making it: wait for it
+    text = cache.read(key + ".txt");
+    if (!text) {
+      text = std::string("what was made");
+      cache.write(key + ".txt", *text);
+    }
+  }
+}
+
+// ModelCache.h
+void exampleModelCache(const pm::core::StereoRig &rig, const pm::lab::LabPass &pass, const pm::model::AllAroundParams &params,
+                       bool calibrateTrust)
+{
+  // what makeSimulatedAllAroundModel() does:
+  const pm::lab::ModelCache cache = pm::lab::ModelCache::fromEnvironment();
+  const std::string key = pm::lab::ModelCache::keyOf(rig, pass.views, params, calibrateTrust);
+  std::optional<pm::lab::CachedModel> m = cache.find(key); // (and again under pm::lab::LabCache::KeyLock(cache.folder(), key))
+  if (!m) {
+    const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views, params);
+    m = pm::lab::CachedModel{b.model, b.fMm, b.silhouettes[0]};
+    cache.store(key, *m);
   }
 }
 

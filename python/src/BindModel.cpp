@@ -63,7 +63,8 @@ void bindModel(py::module_ &m)
       .def_readonly("background_hue_deg", &PhotoModel::backgroundHue, "the background's hue in its photos (deg)")
       .def_readonly("target_hue_deg", &PhotoModel::targetHue, "the target's mean hue (deg)")
       .def("save", &pm::io::savePhotoModel, py::arg("path"), "Writes model.json (the current version). Nothing is left half-written.")
-      .def("to_json", &pm::io::photoModelToJson, "The model as the text of model.json.")
+      .def(
+          "to_json", [](const PhotoModel &model) { return pm::io::photoModelToJson(model); }, "The model as the text of model.json.")
       .def("__repr__", [](const PhotoModel &pm) {
         return "<PhotoModel " + std::string(pm.isAllAround() ? "all-around" : "flat or stereo") + ", " + std::to_string(pm.views.size() + 1) +
                " viewpoints, " + std::to_string(pm.inner.size()) + " S_in points>";

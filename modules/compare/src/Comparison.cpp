@@ -72,7 +72,7 @@ struct Comparison::Setup
 {
   sim::Scene scene;
   sim::SimulatedPhotoModel flat, stereo, allAround;
-  model::AllAroundBuild allAroundBuild;      //!< its build (the surface's mesh for ViSP's trackers)
+  model::AllAroundBuild allAroundBuild;      //!< its build, when ViSP's trackers are given its surface's mesh (else empty)
   model::HullMesh cad;                        //!< ViSP's trackers' CAD model (empty: the flat outline)
   bool cadIsTrue = false;                     //!< ... the toy's own mesh, in the toy's frame
   vpHomogeneousMatrix toyFrame;               //!< the toy's own frame in itself (the true CAD model's)
@@ -116,7 +116,7 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
   aa.inMinInsidePx = m_p.minInsidePx;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || aaForMbt)
     m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, m_p.pass, "pa10", m_p.distanceMm, aa,
-                                                      &m_s->allAroundBuild, m_p.calibrateTrust);
+                                                      aaForMbt ? &m_s->allAroundBuild : nullptr, m_p.calibrateTrust); // the build kept only for its mesh
   if (aaForMbt)
     m_s->cad = m_s->allAroundBuild.mesh.decimated(m_p.mbtMeshCellMm);
   if (mbt && m_p.mbtTrueCad) {

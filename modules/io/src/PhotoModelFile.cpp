@@ -124,16 +124,29 @@ core::TrustCalibration trustFromJson(const json &j)
   return t;
 }
 
-//! Rounded to 0.01 (a double, so that it is written short): what is read back is what was deduplicated.
-double rounded(float x) { return std::round(static_cast<double>(x) * 100.0) / 100.0; }
+//! How a model's numbers are written (ModelDigits): rounded to the format's steps, or every bit of them.
+class Digits
+{
+public:
+  explicit Digits(ModelDigits d) : m_exact(d == ModelDigits::Exact) {}
+  //! A position, hue or distance to 0.01 (a double, so that it is written short): what is read back is what was deduplicated.
+  double rounded(float x) const { return m_exact ? static_cast<double>(x) : std::round(static_cast<double>(x) * 100.0) / 100.0; }
+  //! A normal's component to 0.0001.
+  double normal(float x) const { return m_exact ? static_cast<double>(x) : std::round(static_cast<double>(x) * 1e4) / 1e4; }
+  //! A pass landing's mm and deg to 0.001.
+  double landing(double x) const { return m_exact ? x : std::round(x * 1000.0) / 1000.0; }
+
+private:
+  bool m_exact;
+};
 
 //! A contour's points as [x, y, z, nx, ny, nz, inside_mm, outside_mm] (positions to 0.01 mm, normals to 0.0001).
-json contourToJson(const std::vector<core::ContourPoint> &c)
+json contourToJson(const std::vector<core::ContourPoint> &c, const Digits &d)
 {
   json a = json::array();
-  auto n4 = [](float x) { return std::round(static_cast<double>(x) * 1e4) / 1e4; };
   for (const core::ContourPoint &p : c)
-    a.push_back({rounded(p.x), rounded(p.y), rounded(p.z), n4(p.nx), n4(p.ny), n4(p.nz), rounded(p.insideMm), rounded(p.outsideMm)});
+    a.push_back({d.rounded(p.x), d.rounded(p.y), d.rounded(p.z), d.normal(p.nx), d.normal(p.ny), d.normal(p.nz), d.rounded(p.insideMm),
+                 d.rounded(p.outsideMm)});
   return a;
 }
 
@@ -179,15 +192,15 @@ std::vector<float> histogramFromJson(const json &a, std::size_t bins, const char
 }
 
 //! Version 4: the S_in points of every view in one cloud, each view by index; S_out as positions. Version 5 adds each surface point's colour, the outlines and the colour histograms.
-void writeViewpointModel(const core::PhotoModel &m, json &j, bool v5)
+void writeViewpointModel(const core::PhotoModel &m, json &j, bool v5, const Digits &d)
 {
   std::map<std::array<double, 7>, std::size_t> index;
   json surface = json::array();
   auto indices = [&](const std::vector<core::ModelPoint> &pts) {
     json a = json::array();
     for (const core::ModelPoint &p : pts) {
-      const double hue = rounded(p.hue) >= 360.0 ? 0.0 : rounded(p.hue); // 359.996 rounds to 360: the same as 0
-      const std::array<double, 7> key{rounded(p.x), rounded(p.y), rounded(p.z), hue, v5 ? p.r : 0.0, v5 ? p.g : 0.0, v5 ? p.b : 0.0};
+      const double hue = d.rounded(p.hue) >= 360.0 ? 0.0 : d.rounded(p.hue); // 359.996 rounds to 360: the same as 0
+      const std::array<double, 7> key{d.rounded(p.x), d.rounded(p.y), d.rounded(p.z), hue, v5 ? p.r : 0.0, v5 ? p.g : 0.0, v5 ? p.b : 0.0};
       auto it = index.find(key);
       if (it == index.end()) {
         it = index.emplace(key, surface.size()).first;
@@ -200,21 +213,21 @@ void writeViewpointModel(const core::PhotoModel &m, json &j, bool v5)
     }
     return a;
   };
-  auto positions = [](const std::vector<core::ModelPoint> &pts) {
+  auto positions = [&d](const std::vector<core::ModelPoint> &pts) {
     json a = json::array();
     for (const core::ModelPoint &p : pts)
-      a.push_back({rounded(p.x), rounded(p.y), rounded(p.z)});
+      a.push_back({d.rounded(p.x), d.rounded(p.y), d.rounded(p.z)});
     return a;
   };
   j["s_in"] = indices(m.inner);
   j["s_out"] = positions(m.outer);
   if (v5)
-    j["contour"] = contourToJson(m.contour);
+    j["contour"] = contourToJson(m.contour, d);
   json views = json::array();
   for (const core::ModelView &v : m.views) {
     json e{{"camera_mm", {v.cameraMm[0], v.cameraMm[1], v.cameraMm[2]}}, {"s_in", indices(v.inner)}, {"s_out", positions(v.outer)}};
     if (v5)
-      e["contour"] = contourToJson(v.contour);
+      e["contour"] = contourToJson(v.contour, d);
     views.push_back(e);
   }
   j["views"] = views;
@@ -224,7 +237,7 @@ void writeViewpointModel(const core::PhotoModel &m, json &j, bool v5)
                               {"foreground", histogramToJson(m.foregroundHistogram)},
                               {"background", histogramToJson(m.backgroundHistogram)}};
   if (v5 && !m.passLandings.empty()) {
-    const auto r = [](double x) { return std::round(x * 1000.0) / 1000.0; }; // to 0.001 mm and deg
+    const auto r = [&d](double x) { return d.landing(x); };
     json a = json::array();
     for (const core::PassLanding &l : m.passLandings)
       a.push_back({r(l.cameraMm[0]), r(l.cameraMm[1]), r(l.cameraMm[2]), r(l.offsetMm[0]), r(l.offsetMm[1]), r(l.offsetMm[2]),
@@ -301,7 +314,7 @@ core::TrustCalibration trustCalibrationFromJson(const std::string &text)
   }
 }
 
-std::string photoModelToJson(const core::PhotoModel &m)
+std::string photoModelToJson(const core::PhotoModel &m, ModelDigits digits)
 {
   const bool depth = m.hasDepth();
   const bool v5 = m.views.size() >= kViewpointViews && m.hasContours() && m.hasColours;
@@ -321,7 +334,7 @@ std::string photoModelToJson(const core::PhotoModel &m)
   }
   if (m.views.size() >= kViewpointViews) {
     j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
-    writeViewpointModel(m, j, v5);
+    writeViewpointModel(m, j, v5, Digits(digits));
   } else if (!m.views.empty()) {
     j["camera_mm"] = {m.cameraMm[0], m.cameraMm[1], m.cameraMm[2]};
     json views = json::array();

@@ -1,5 +1,6 @@
 #include "pm/lab/LabPass.h"
 
+#include "pm/lab/ModelCache.h"
 #include "pm/lab/TrustCache.h"
 
 #include "pm/robot/ArmCatalog.h"
@@ -46,27 +47,57 @@ LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const 
   return out;
 }
 
+namespace {
+
+//! The build of \e pass (its trust calibrated from it when asked); the whole build into \e build when given.
+CachedModel labBuild(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+                     bool calibrateTrust, model::AllAroundBuild *build)
+{
+  model::PassMeasurements measured;
+  model::AllAroundBuild b = calibrateTrust ? model::buildAllAroundModel(rig, pass, params, measured) : model::buildAllAroundModel(rig, pass, params);
+  if (calibrateTrust)
+    b.model.trust = calibrateLabTrust(rig, pass, params, measured, b.model).trust;
+  CachedModel m{b.model, b.fMm, b.silhouettes[0]};
+  if (build)
+    *build = std::move(b);
+  return m;
+}
+
+//! labBuild() through the cache of the environment (ModelCache.h): each pass built once in a run of the suite.
+CachedModel cachedLabBuild(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+                           bool calibrateTrust)
+{
+  const ModelCache cache = ModelCache::fromEnvironment();
+  if (!cache.folder().enabled())
+    return labBuild(rig, pass, params, calibrateTrust, nullptr);
+  const std::string key = ModelCache::keyOf(rig, pass, params, calibrateTrust);
+  if (std::optional<CachedModel> found = cache.find(key))
+    return *found;
+  const LabCache::KeyLock lock(cache.folder(), key); // another program building it now: wait for it
+  if (std::optional<CachedModel> found = cache.find(key))
+    return *found;
+  CachedModel m = labBuild(rig, pass, params, calibrateTrust, nullptr);
+  cache.store(key, m);
+  return m;
+}
+
+} // namespace
+
 sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan,
                                                      const std::string &armName, double distanceMm, const model::AllAroundParams &params,
                                                      model::AllAroundBuild *build, bool calibrateTrust)
 {
   robot::SteppedArm arm(robot::makeArmModel(armName));
   const LabPass pass = runLabPass(scene, rig, plan, arm, vpHomogeneousMatrix(0, 0, distanceMm * 1e-3, 0, 0, 0), params.backdropHueDeg < 0);
-  model::PassMeasurements measured;
-  model::AllAroundBuild b = calibrateTrust ? model::buildAllAroundModel(rig, pass.views, params, measured)
-                                           : model::buildAllAroundModel(rig, pass.views, params);
-  if (calibrateTrust)
-    b.model.trust = calibrateLabTrust(rig, pass.views, params, measured, b.model).trust;
+  const CachedModel m = build ? labBuild(rig, pass.views, params, calibrateTrust, build) : cachedLabBuild(rig, pass.views, params, calibrateTrust);
   sim::SimulatedPhotoModel s;
   s.stereo = true;
-  s.oMm = pass.fMo.inverse() * b.fMm;
+  s.oMm = pass.fMo.inverse() * m.fMm;
   s.photoHMo = pass.fMh0.inverse() * pass.fMo;
   s.background = params.backdropHueDeg < 0 ? pass.views[0].backgroundLeft : pass.views[0].left;
   s.photo = pass.views[0].left;
-  s.build.region = b.silhouettes[0];
-  s.build.model = b.model;
-  if (build)
-    *build = std::move(b);
+  s.build.region = m.region;
+  s.build.model = m.model;
   return s;
 }
 

@@ -105,8 +105,14 @@ int main()
   \endcode
 */
 core::PhotoModel loadPhotoModel(const std::string &path);
+//! How photoModelToJson() writes a model's numbers.
+enum class ModelDigits
+{
+  Format, //!< positions and hues to 0.01, normals to 0.0001, pass landings to 0.001 (model.json: short, and what is read back is what was written)
+  Exact   //!< every bit of each number (a cache that must give back the very model: pm::lab::ModelCache)
+};
 //! Serialises a model to the JSON text above.
-std::string photoModelToJson(const core::PhotoModel &m);
+std::string photoModelToJson(const core::PhotoModel &m, ModelDigits digits = ModelDigits::Format);
 //! Writes a model (through a temporary file). Throws pm::core::Error.
 void savePhotoModel(const core::PhotoModel &m, const std::string &path);
 

@@ -1,27 +1,21 @@
 #pragma once
 /*!
   \file TrustCache.h
-  The trust calibrations a run of the test suite has made already, so that the suite's many lab
-  models of the same pass calibrate their trust once (pm::trust::calibrateFromPass() builds six
-  held-out models: two thirds of a lab model's time). Off unless the environment variable
-  PM_TRUST_CACHE names a folder; CTest names one in the build tree and empties it before every run
-  (the trust_cache fixture of tests/CMakeLists.txt), so that a cached calibration is always one the
-  code under test made.
+  The trust calibrations a run of the test suite has made already (a LabCache folder, LabCache.h),
+  so that the suite's many lab models of the same pass calibrate their trust once
+  (pm::trust::calibrateFromPass() builds six held-out models: two thirds of a lab model's time).
 
-  The rules it holds:
+  Besides the folder's rules (LabCache.h):
   - An entry is found only for the same pass (every image and hand pose of every view), the same rig
     and the same model built from them (its every point: a change of the build's parameters shows
     there), calibrated with the default tracker and calibration parameters (the lab's).
   - It returns what the calibration returned, to the last bit (JSON keeps a double's 17 digits).
-  - It never fails a run: a folder that cannot be read or written is a cache that finds nothing.
-  - Two programs that need the same calibration at once make it once: the second waits on the
-    key's lock (KeyLock) and then finds what the first stored.
 
   \code
     // what calibrateLabTrust() does:
     const pm::lab::TrustCache cache = pm::lab::TrustCache::fromEnvironment();
     const std::string key = pm::lab::TrustCache::keyOf(rig, pass, b.model);
-    std::optional<pm::lab::LabTrust> t = cache.find(key);
+    std::optional<pm::lab::LabTrust> t = cache.find(key); // (and again under pm::lab::LabCache::KeyLock(cache.folder(), key))
     if (!t) {
       std::vector<pm::trust::PassTry> tries;
       t = pm::lab::LabTrust();
@@ -40,6 +34,7 @@
 #include "pm/core/PhotoModel.h"
 #include "pm/core/StereoRig.h"
 #include "pm/core/TrustCalibration.h"
+#include "pm/lab/LabCache.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PassView.h"
 
@@ -53,41 +48,26 @@ struct LabTrust
   std::string why;              //!< when not measured, why
 };
 
-//! A folder of trust calibrations keyed by what they were made from (see TrustCache.h).
+//! Trust calibrations in a LabCache folder, keyed by what they were made from (see TrustCache.h).
 class TrustCache
 {
 public:
-  //! The folder PM_TRUST_CACHE names, or none (a cache that finds and keeps nothing).
+  //! The folder of LabCache::fromEnvironment() (PM_LAB_CACHE), or none.
   static TrustCache fromEnvironment();
-  //! \e dir (created when something is stored; empty: none).
-  explicit TrustCache(std::string dir = "");
+  //! In \e folder.
+  explicit TrustCache(LabCache folder = LabCache()) : m_folder(std::move(folder)) {}
 
   //! The key of the calibration of \e model, built from \e pass taken by \e rig (16 hex digits).
   static std::string keyOf(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const core::PhotoModel &model);
   //! The calibration stored under \e key, if any (an entry that does not read is none).
   std::optional<LabTrust> find(const std::string &key) const;
-  //! Stores \e t under \e key when it was measured (io::writeTextFile: a reader never sees half of it; hold the key's lock).
+  //! Stores \e t under \e key when it was measured (hold the key's lock: LabCache::KeyLock).
   void store(const std::string &key, const LabTrust &t) const;
-
-  //! Holds \e key's lock (flock) while it lives: another process or thread locking the same key waits.
-  class KeyLock
-  {
-  public:
-    //! Waits for \e key's lock in \e cache's folder and takes it (nothing for a cache without a folder).
-    KeyLock(const TrustCache &cache, const std::string &key);
-    //! Releases the lock.
-    ~KeyLock();
-    KeyLock(const KeyLock &) = delete;
-    KeyLock &operator=(const KeyLock &) = delete;
-
-  private:
-    int m_fd = -1;
-  };
-  //! True when it has a folder (false: it finds and keeps nothing).
-  bool enabled() const { return !m_dir.empty(); }
+  //! The folder it keeps its entries in.
+  const LabCache &folder() const { return m_folder; }
 
 private:
-  std::string m_dir;
+  LabCache m_folder;
 };
 
 /*!
