@@ -9,6 +9,7 @@
 #include <thread>
 #include <chrono>
 #include <atomic>
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -419,6 +420,43 @@ TEST(LabCache, AKeysLockMakesASecondMakerOfTheSameEntryWait)
   // A cache with no folder locks nothing (and never blocks).
   const pm::lab::LabCache off("");
   const pm::lab::LabCache::KeyLock a(off, "k"), b(off, "k");
+}
+
+TEST(LabCache, FindOrMakeMakesAnEntryOnceWhoeverAsksAndOnlyWithAFolder)
+{
+  pm::test::TempDir dir("cache_find_or_make");
+  const pm::lab::LabCache cache(dir.file("cache"));
+  std::atomic<int> made{0}, stored{0};
+  const auto find = [&](const std::string &k) { return cache.read(k + ".txt"); };
+  const auto make = [&] {
+    ++made;
+    std::this_thread::sleep_for(std::chrono::milliseconds(30)); // long enough for the others to ask meanwhile
+    return std::string("entry ") + std::to_string(made.load());
+  };
+  const auto store = [&](const std::string &k, const std::string &text) {
+    ++stored;
+    cache.write(k + ".txt", text);
+  };
+  // Four askers at once: one makes and stores, the three others find what it stored.
+  std::vector<std::string> got(4);
+  std::vector<std::thread> askers;
+  for (std::size_t i = 0; i < got.size(); ++i)
+    askers.emplace_back([&, i] { got[i] = pm::lab::findOrMake<std::string>(cache, "00000000000000ef", find, make, store); });
+  for (std::thread &t : askers)
+    t.join();
+  EXPECT_EQ(made.load(), 1);
+  EXPECT_EQ(stored.load(), 1);
+  for (const std::string &g : got)
+    EXPECT_EQ(g, "entry 1");
+  // Later: found, not made. Another key: made.
+  EXPECT_EQ(pm::lab::findOrMake<std::string>(cache, "00000000000000ef", find, make, store), "entry 1");
+  EXPECT_EQ(made.load(), 1);
+  EXPECT_EQ(pm::lab::findOrMake<std::string>(cache, "00000000000000f0", find, make, store), "entry 2");
+  // Without a folder: made every time, never stored.
+  const pm::lab::LabCache off("");
+  EXPECT_EQ(pm::lab::findOrMake<std::string>(off, "00000000000000ef", find, make, store), "entry 3");
+  EXPECT_EQ(made.load(), 3);
+  EXPECT_EQ(stored.load(), 2);
 }
 
 TEST(Judgement, AFrameNotTrustedNamesTheCueThatHeldIt)

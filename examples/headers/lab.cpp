@@ -217,15 +217,17 @@ void exampleTrustCache(const pm::core::StereoRig &rig, const std::vector<pm::mod
   // what calibrateLabTrust() does:
   const pm::lab::TrustCache cache = pm::lab::TrustCache::fromEnvironment();
   const std::string key = pm::lab::TrustCache::keyOf(rig, pass, b.model);
-  std::optional<pm::lab::LabTrust> t = cache.find(key); // (and again under pm::lab::LabCache::KeyLock(cache.folder(), key))
-  if (!t) {
-    std::vector<pm::trust::PassTry> tries;
-    t = pm::lab::LabTrust();
-    t->trust = pm::trust::calibrateFromPass(rig, pass, params, measured, pm::tracker::TrackerParams(), pm::trust::CalibrationParams(),
-                                            nullptr, nullptr, &tries);
-    t->triesCsv = pm::trust::triesCsv(tries, t->trust);
-    cache.store(key, *t);
-  }
+  const pm::lab::LabTrust t = pm::lab::findOrMake<pm::lab::LabTrust>(
+      cache.folder(), key, [&](const std::string &k) { return cache.find(k); },
+      [&] {
+        std::vector<pm::trust::PassTry> tries;
+        pm::lab::LabTrust made;
+        made.trust = pm::trust::calibrateFromPass(rig, pass, params, measured, pm::tracker::TrackerParams(),
+                                                  pm::trust::CalibrationParams(), nullptr, nullptr, &tries);
+        made.triesCsv = pm::trust::triesCsv(tries, made.trust);
+        return made;
+      },
+      [&](const std::string &k, const pm::lab::LabTrust &made) { cache.store(k, made); });
 }
 
 // LabCache.h
@@ -233,15 +235,10 @@ void exampleLabCache(const pm::core::StereoRig &rig, const std::vector<pm::model
 {
   const pm::lab::LabCache cache = pm::lab::LabCache::fromEnvironment();
   const std::string key = pm::lab::CacheKey("my entry 1").rig(rig).pass(pass).hex();
-  std::optional<std::string> text = cache.read(key + ".txt");
-  if (!text) {
-    const pm::lab::LabCache::KeyLock lock(cache, key); // another program making it: wait for it
-    text = cache.read(key + ".txt");
-    if (!text) {
-      text = std::string("what was made");
-      cache.write(key + ".txt", *text);
-    }
-  }
+  const std::string text = pm::lab::findOrMake<std::string>(
+      cache, key, [&](const std::string &k) { return cache.read(k + ".txt"); },
+      [] { return std::string("what was made"); },
+      [&](const std::string &k, const std::string &made) { cache.write(k + ".txt", made); });
 }
 
 // ModelCache.h
@@ -251,12 +248,13 @@ void exampleModelCache(const pm::core::StereoRig &rig, const pm::lab::LabPass &p
   // what makeSimulatedAllAroundModel() does:
   const pm::lab::ModelCache cache = pm::lab::ModelCache::fromEnvironment();
   const std::string key = pm::lab::ModelCache::keyOf(rig, pass.views, params, calibrateTrust);
-  std::optional<pm::lab::CachedModel> m = cache.find(key); // (and again under pm::lab::LabCache::KeyLock(cache.folder(), key))
-  if (!m) {
-    const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views, params);
-    m = pm::lab::CachedModel{b.model, b.fMm, b.silhouettes[0]};
-    cache.store(key, *m);
-  }
+  const pm::lab::CachedModel m = pm::lab::findOrMake<pm::lab::CachedModel>(
+      cache.folder(), key, [&](const std::string &k) { return cache.find(k); },
+      [&] {
+        const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views, params);
+        return pm::lab::CachedModel{b.model, b.fMm, b.silhouettes[0]};
+      },
+      [&](const std::string &k, const pm::lab::CachedModel &made) { cache.store(k, made); });
 }
 
 // LabPass.h

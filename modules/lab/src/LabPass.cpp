@@ -68,17 +68,11 @@ CachedModel cachedLabBuild(const core::StereoRig &rig, const std::vector<model::
                            bool calibrateTrust)
 {
   const ModelCache cache = ModelCache::fromEnvironment();
-  if (!cache.folder().enabled())
-    return labBuild(rig, pass, params, calibrateTrust, nullptr);
-  const std::string key = ModelCache::keyOf(rig, pass, params, calibrateTrust);
-  if (std::optional<CachedModel> found = cache.find(key))
-    return *found;
-  const LabCache::KeyLock lock(cache.folder(), key); // another program building it now: wait for it
-  if (std::optional<CachedModel> found = cache.find(key))
-    return *found;
-  CachedModel m = labBuild(rig, pass, params, calibrateTrust, nullptr);
-  cache.store(key, m);
-  return m;
+  const std::string key = cache.folder().enabled() ? ModelCache::keyOf(rig, pass, params, calibrateTrust) : "";
+  return findOrMake<CachedModel>(
+      cache.folder(), key, [&](const std::string &k) { return cache.find(k); },
+      [&] { return labBuild(rig, pass, params, calibrateTrust, nullptr); },
+      [&](const std::string &k, const CachedModel &m) { cache.store(k, m); });
 }
 
 } // namespace

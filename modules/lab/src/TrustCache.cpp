@@ -87,22 +87,21 @@ LabTrust calibrateLabTrust(const core::StereoRig &rig, const std::vector<model::
     for (std::size_t k = trust::calibrationSteps(pass.size()); k > 0 && onStep; --k)
       onStep();
   };
-  if (std::optional<LabTrust> found = cache.find(key)) {
-    stepAll();
-    return *found;
-  }
-  const LabCache::KeyLock lock(cache.folder(), key); // another program making it now: wait for it
-  if (std::optional<LabTrust> found = cache.find(key)) {
-    stepAll();
-    return *found;
-  }
-  LabTrust t;
-  std::vector<trust::PassTry> tries;
-  t.trust = trust::calibrateFromPass(rig, pass, params, measured, tracker::TrackerParams(), trust::CalibrationParams(), onStep, &t.why, &tries);
-  if (t.trust.measured)
-    t.triesCsv = trust::triesCsv(tries, t.trust);
-  cache.store(key, t);
-  return t;
+  const auto find = [&](const std::string &k) {
+    std::optional<LabTrust> found = cache.find(k);
+    if (found)
+      stepAll(); // the progress a calibration would have shown
+    return found;
+  };
+  const auto make = [&] {
+    LabTrust t;
+    std::vector<trust::PassTry> tries;
+    t.trust = trust::calibrateFromPass(rig, pass, params, measured, tracker::TrackerParams(), trust::CalibrationParams(), onStep, &t.why, &tries);
+    if (t.trust.measured)
+      t.triesCsv = trust::triesCsv(tries, t.trust);
+    return t;
+  };
+  return findOrMake<LabTrust>(cache.folder(), key, find, make, [&](const std::string &k, const LabTrust &t) { cache.store(k, t); });
 }
 
 } // namespace pm::lab

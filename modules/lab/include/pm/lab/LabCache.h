@@ -18,20 +18,16 @@
   \code
     const pm::lab::LabCache cache = pm::lab::LabCache::fromEnvironment();
     const std::string key = pm::lab::CacheKey("my entry 1").rig(rig).pass(pass).hex();
-    std::optional<std::string> text = cache.read(key + ".txt");
-    if (!text) {
-      const pm::lab::LabCache::KeyLock lock(cache, key); // another program making it: wait for it
-      text = cache.read(key + ".txt");
-      if (!text) {
-        text = std::string("what was made");
-        cache.write(key + ".txt", *text);
-      }
-    }
+    const std::string text = pm::lab::findOrMake<std::string>(
+        cache, key, [&](const std::string &k) { return cache.read(k + ".txt"); },
+        [] { return std::string("what was made"); },
+        [&](const std::string &k, const std::string &made) { cache.write(k + ".txt", made); });
   \endcode
 */
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <visp3/core/vpHomogeneousMatrix.h>
@@ -106,5 +102,26 @@ public:
 private:
   std::string m_dir;
 };
+
+/*!
+  Entry \e key of \e cache, of type T: what \e find(key) gives back (a std::optional<T>); else, with
+  the key's lock held, what it gives back now (another program made it meanwhile); else what
+  \e make() makes, handed to \e store(key, made) before it is returned. Without a folder: \e make()
+  alone. The one way the lab's caches look up an entry (the rules of LabCache.h).
+*/
+template <class T, class Find, class Make, class Store>
+T findOrMake(const LabCache &cache, const std::string &key, const Find &find, const Make &make, const Store &store)
+{
+  if (!cache.enabled())
+    return make();
+  if (std::optional<T> found = find(key))
+    return std::move(*found);
+  const LabCache::KeyLock lock(cache, key); // another program making it now: wait for it
+  if (std::optional<T> found = find(key))
+    return std::move(*found);
+  T made = make();
+  store(key, made);
+  return made;
+}
 
 } // namespace pm::lab

@@ -16,12 +16,13 @@
     // what makeSimulatedAllAroundModel() does:
     const pm::lab::ModelCache cache = pm::lab::ModelCache::fromEnvironment();
     const std::string key = pm::lab::ModelCache::keyOf(rig, pass.views, params, calibrateTrust);
-    std::optional<pm::lab::CachedModel> m = cache.find(key); // (and again under pm::lab::LabCache::KeyLock(cache.folder(), key))
-    if (!m) {
-      const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views, params);
-      m = pm::lab::CachedModel{b.model, b.fMm, b.silhouettes[0]};
-      cache.store(key, *m);
-    }
+    const pm::lab::CachedModel m = pm::lab::findOrMake<pm::lab::CachedModel>(
+        cache.folder(), key, [&](const std::string &k) { return cache.find(k); },
+        [&] {
+          const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass.views, params);
+          return pm::lab::CachedModel{b.model, b.fMm, b.silhouettes[0]};
+        },
+        [&](const std::string &k, const pm::lab::CachedModel &made) { cache.store(k, made); });
   \endcode
 */
 #include <optional>

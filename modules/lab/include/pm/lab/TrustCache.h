@@ -15,15 +15,17 @@
     // what calibrateLabTrust() does:
     const pm::lab::TrustCache cache = pm::lab::TrustCache::fromEnvironment();
     const std::string key = pm::lab::TrustCache::keyOf(rig, pass, b.model);
-    std::optional<pm::lab::LabTrust> t = cache.find(key); // (and again under pm::lab::LabCache::KeyLock(cache.folder(), key))
-    if (!t) {
-      std::vector<pm::trust::PassTry> tries;
-      t = pm::lab::LabTrust();
-      t->trust = pm::trust::calibrateFromPass(rig, pass, params, measured, pm::tracker::TrackerParams(), pm::trust::CalibrationParams(),
-                                              nullptr, nullptr, &tries);
-      t->triesCsv = pm::trust::triesCsv(tries, t->trust);
-      cache.store(key, *t);
-    }
+    const pm::lab::LabTrust t = pm::lab::findOrMake<pm::lab::LabTrust>(
+        cache.folder(), key, [&](const std::string &k) { return cache.find(k); },
+        [&] {
+          std::vector<pm::trust::PassTry> tries;
+          pm::lab::LabTrust made;
+          made.trust = pm::trust::calibrateFromPass(rig, pass, params, measured, pm::tracker::TrackerParams(),
+                                                    pm::trust::CalibrationParams(), nullptr, nullptr, &tries);
+          made.triesCsv = pm::trust::triesCsv(tries, made.trust);
+          return made;
+        },
+        [&](const std::string &k, const pm::lab::LabTrust &made) { cache.store(k, made); });
   \endcode
 */
 #include <functional>
