@@ -186,7 +186,7 @@ TEST(SteadyFramePolicy, ItsWindowsHoldTheModelAtTheLastAndThePredictedPose)
   s.remember(before, true);
   pm::core::Phi next = last;
   next.x += 30;
-  const std::array<pm::core::PixelRect, 2> w = s.windows(fitness, last);
+  const std::array<pm::core::PixelRect, 2> w = s.windows(fitness.scorer(), last);
   for (int cam = 0; cam < 2; ++cam) {
     for (const pm::core::Phi &q : {last, next}) {
       const pm::core::PixelRect f = fitness.footprint(q, cam);
@@ -249,10 +249,10 @@ TEST(PoseSearch, TheFramesChangesAreAppliedInOnePlaceInTheirOrder)
   const pm::core::StereoFitness &fitness = scored.fitness;
   const pm::tracker::QualityScale &scale = scored.scale;
   pm::tracker::SearchParams p;
-  pm::tracker::PoseSearch search(p, fitness, scale);
+  pm::tracker::PoseSearch search(p, fitness.scorer(), scale);
   search.initialize();
   EXPECT_FALSE(search.ga().hasAnchor());
-  search.evolve(pm::rmga::FrameBudget::evals(200), pm::tracker::PoseSearch::Scoring::Coarse);
+  search.evolve(fitness.frame(), pm::rmga::FrameBudget::evals(200), pm::tracker::PoseSearch::Scoring::Coarse);
   // A reseed, then an injected pose: the population is around the reseed, with the pose among it.
   RmGaUpdate u;
   u.reseed = RmGaUpdate::Reseed{c.truth, 0.0};
@@ -279,7 +279,7 @@ TEST(PoseSearch, TheFramesChangesAreAppliedInOnePlaceInTheirOrder)
   EXPECT_GT(far, p.ga.population / 2);
   // ... and the best is avoided: the next frames' best is elsewhere, for its frames.
   EXPECT_EQ(search.ga().avoidedCount(), 1u);
-  const pm::rmga::FrameResult elsewhere = search.evolve(pm::rmga::FrameBudget::evals(400), pm::tracker::PoseSearch::Scoring::Exact);
+  const pm::rmga::FrameResult elsewhere = search.evolve(fitness.frame(), pm::rmga::FrameBudget::evals(400), pm::tracker::PoseSearch::Scoring::Exact);
   EXPECT_TRUE(pm::core::translationDistanceMm(elsewhere.best, c.truth) > p.avoidMm - 1 ||
               pm::core::rotationDistanceDeg(elsewhere.best, c.truth) > p.avoidDeg - 1);
 }
@@ -295,14 +295,14 @@ TEST(LockVerifier, AWrongLockIsChallengedAndARightOneVerified)
   pm::tracker::VerifierParams vp;
   vp.evaluations = 1200;
   // The right pose: no objection, verified once its evaluations are spent.
-  pm::tracker::LockVerifier right(vp, sp, fitness, scale);
+  pm::tracker::LockVerifier right(vp, sp, fitness.scorer(), scale);
   EXPECT_FALSE(right.verifying(TrackState::Tracking));
   right.onState(TrackState::Searching, TrackState::Tracking, c.truth, anchorless);
   EXPECT_TRUE(right.verifying(TrackState::Tracking));
   EXPECT_FALSE(right.verified());
   pm::tracker::TrackResult work;
   for (int k = 0; k < 6 && !right.verified(); ++k)
-    EXPECT_FALSE(right.challenge(pm::rmga::FrameBudget::evals(400), c.truth, fitness.evaluate(c.truth), anchorless, work));
+    EXPECT_FALSE(right.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), c.truth, fitness.evaluate(c.truth), anchorless, work));
   EXPECT_TRUE(right.verified());
   EXPECT_GT(work.evaluations, 0);
   EXPECT_FALSE(right.verifying(TrackState::Tracking));
@@ -310,11 +310,11 @@ TEST(LockVerifier, AWrongLockIsChallengedAndARightOneVerified)
   pm::core::Phi wrong = c.truth;
   wrong.x += 90;
   wrong.y -= 60;
-  pm::tracker::LockVerifier verifier(vp, sp, fitness, scale);
+  pm::tracker::LockVerifier verifier(vp, sp, fitness.scorer(), scale);
   verifier.onState(TrackState::Searching, TrackState::Tracking, wrong, anchorless);
   std::optional<std::pair<pm::core::Phi, double>> better;
   for (int k = 0; k < 20 && !better; ++k)
-    better = verifier.challenge(pm::rmga::FrameBudget::evals(400), wrong, fitness.evaluate(wrong), anchorless, work);
+    better = verifier.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), wrong, fitness.evaluate(wrong), anchorless, work);
   ASSERT_TRUE(better.has_value());
   EXPECT_LT(pm::core::translationDistanceMm(better->first, c.truth), 20.0);
   EXPECT_DOUBLE_EQ(better->second, fitness.evaluate(better->first));
@@ -333,7 +333,7 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   const pm::tracker::QualityScale &scale = scored.scale;
   const pm::tracker::JudgementParams params = pm::tracker::JudgementParams().forModel(c.sm.build.model);
   EXPECT_EQ(params.confidence.kind, pm::tracker::ConfidenceKind::Flat); // the coefficients of the model's kind
-  const pm::tracker::Judgement judgement(params, 5.0, fitness, scale, pm::precise::ModelErrorFloor({}, vpHomogeneousMatrix()));
+  const pm::tracker::Judgement judgement(params, 5.0, fitness.scorer(), scale, pm::precise::ModelErrorFloor({}, vpHomogeneousMatrix()));
   pm::core::Phi seen[8];
   EXPECT_EQ(judgement.competitors(c.truth, seen), 8u); // turned about its axis (7) and its tilt mirrored, all valid here
   pm::tracker::TrackResult r;
@@ -341,7 +341,7 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   r.fitness = fitness.evaluate(c.truth);
   r.quality = scale.quality(r.fitness);
   r.state = TrackState::Tracking;
-  const pm::tracker::Evidence e = judgement.measure(r);
+  const pm::tracker::Evidence e = judgement.measure(fitness.frame(), r);
   // The cues' q is over the points not hidden (the stereo visibility): never under the frame's q.
   const pm::core::FitnessDetail d = fitness.evaluateDetail(c.truth);
   EXPECT_DOUBLE_EQ(e.cues.quality, scale.quality(0.5 * (d.visibleLeft + d.visibleRight)));
@@ -380,11 +380,11 @@ TEST(BackgroundLearning, ABackgroundThatTurnedIsLearntOnTrustedFramesAndTheSameO
   const Crab &c = crab();
   // The renderer's own background: its hue stays within the switch of the model's, nothing changes.
   Scored same(c);
-  pm::tracker::BackgroundLearning stays(pm::tracker::BackgroundParams(), same.fitness);
+  pm::tracker::BackgroundLearning stays(pm::tracker::BackgroundParams(), same.fitness.scorer());
   const double model = stays.modelDeg();
   EXPECT_DOUBLE_EQ(model, same.fitness.backgroundHue());
   for (int k = 0; k < 100; ++k)
-    EXPECT_FALSE(stays.learn(c.truth, true).has_value()) << k;
+    EXPECT_FALSE(stays.learn(same.fitness.frame(), c.truth, true).has_value()) << k;
   EXPECT_LT(pm::core::hueDistance(static_cast<float>(stays.learntDeg()), static_cast<float>(model)), 5.0f);
   const double fSame = same.fitness.evaluate(c.truth);
   // The backdrop turned 20 deg (--backdrop-drift 1, 20 s into a run): the right pose scores lower ...
@@ -397,13 +397,13 @@ TEST(BackgroundLearning, ABackgroundThatTurnedIsLearntOnTrustedFramesAndTheSameO
   EXPECT_LT(fTurned, fSame - 0.05);
   // ... untrusted frames teach nothing; trusted ones move the learnt hue to the background's, and
   // the scoring takes it once it is 5 deg away.
-  pm::tracker::BackgroundLearning learns(pm::tracker::BackgroundParams(), turned);
+  pm::tracker::BackgroundLearning learns(pm::tracker::BackgroundParams(), turned.scorer());
   for (int k = 0; k < 20; ++k)
-    EXPECT_FALSE(learns.learn(c.truth, false).has_value());
+    EXPECT_FALSE(learns.learn(turned.frame(), c.truth, false).has_value());
   EXPECT_DOUBLE_EQ(learns.learntDeg(), model);
   int switches = 0;
   for (int k = 0; k < 60; ++k)
-    if (const std::optional<double> hue = learns.learn(c.truth, true)) {
+    if (const std::optional<double> hue = learns.learn(turned.frame(), c.truth, true)) {
       turned.setBackgroundHue(*hue);
       ++switches;
     }
@@ -420,11 +420,11 @@ TEST(BackgroundLearning, ABackgroundThatTurnedIsLearntOnTrustedFramesAndTheSameO
   // Off: the model's hue for good; parameters out of range.
   pm::tracker::BackgroundParams off;
   off.learn = false;
-  pm::tracker::BackgroundLearning never(off, turned);
-  EXPECT_FALSE(never.learn(c.truth, true).has_value());
+  pm::tracker::BackgroundLearning never(off, turned.scorer());
+  EXPECT_FALSE(never.learn(turned.frame(), c.truth, true).has_value());
   pm::tracker::BackgroundParams bad;
   bad.rate = 0;
-  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::BackgroundLearning b(bad, turned); }).find("learning rate"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::tracker::BackgroundLearning b(bad, turned.scorer()); }).find("learning rate"), std::string::npos);
   bad = pm::tracker::BackgroundParams();
   bad.switchDeg = 40;
   EXPECT_NE(pm::test::errorOf([&] { bad.validate(); }).find("switch"), std::string::npos);

@@ -16,6 +16,8 @@
 #include "pm/core/Pose.h"
 #include "pm/core/Statistics.h"
 #include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
+#include "pm/core/HueFrame.h"
 #include "pm/core/StereoRig.h"
 #include "pm/core/TargetHues.h"
 #include "pm/core/ViewpointIndex.h"
@@ -129,18 +131,51 @@ void exampleStereoFitness()
   std::cout << "F = " << F << " (left " << d.left << ", right " << d.right << ")\n";
 }
 
-// StereoFitness.h
-void exampleStereoFitness2(const pm::core::StereoFitness &fitness, const pm::core::Phi *children, std::size_t n, double *F, double worstSurvivor,
-                           double margin, double *cost)
+// StereoScorer.h
+void exampleStereoScorer()
 {
-  fitness.evaluate(children, n, F, worstSurvivor - margin, cost); // a GA's children
+  const pm::core::StereoRig rig = pm::io::loadRig("rig.json");              // pm/io/RigFile.h
+  const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json");  // pm/io/PhotoModelFile.h
+  const pm::core::StereoScorer scorer(rig, model); // the paper's parameters
+  pm::core::HueFrame frame = scorer.newFrame();
+  vpImage<vpRGBa> IL, IR;
+  vpImageIo::read(IL, "left.png");
+  vpImageIo::read(IR, "right.png");
+  scorer.setImages(frame, IL, IR);                 // a new pair: the frame's hue planes
+  pm::core::Phi phi;                               // hMo: the model 500 mm ahead of the hand,
+  phi.z = 500;                                     // its axes those of the hand
+  const double F = scorer.evaluate(frame, phi);    // the higher, the better phi fits the pair
 }
 
-// StereoFitness.h
-void exampleStereoFitness3(const pm::core::StereoFitness &fitness, const pm::core::Phi &phi)
+// StereoScorer.h
+void exampleStereoScorer2(const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::core::Phi *children, std::size_t n,
+                          double *F, double worstSurvivor, double margin, double *cost)
+{
+  scorer.evaluate(frame, children, n, F, worstSurvivor - margin, cost); // a GA's children
+}
+
+// StereoScorer.h
+void exampleStereoScorer3(const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::core::Phi &phi)
 {
   double g[6], M[36];
-  const double s = fitness.evaluateSmoothGradient(phi, g, M); // climb along M^-1 g (SmoothAscent)
+  const double s = scorer.evaluateSmoothGradient(frame, phi, g, M); // climb along M^-1 g (SmoothAscent)
+}
+
+// HueFrame.h
+void exampleHueFrame(const pm::core::StereoScorer &scorer, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, const pm::core::Phi &phi)
+{
+  pm::core::HueFrame frame = scorer.newFrame(); // the model's background hue, no images yet
+  scorer.setImages(frame, IL, IR);               // this pair's hue planes
+  frame.setBackgroundHue(200);                   // a background that changed since the photos
+  const double F = scorer.evaluate(frame, phi);
+}
+
+// HueFrame.h
+void exampleHueFrame2(const pm::core::StereoScorer &scorer, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR)
+{
+  pm::core::HueFrame frame = scorer.newFrame();
+  scorer.setImages(frame, IL, IR);
+  std::cout << frame.plane(0).width() << " px wide, background hue " << frame.backgroundHue() << " deg\n";
 }
 
 // StereoRig.h

@@ -34,9 +34,9 @@ void exampleSmoothAscent(const pm::core::StereoFitness &fitness, const pm::core:
 }
 
 // StereoObjective.h
-void exampleStereoObjective(const pm::core::StereoFitness &fitness, pm::rmga::RmGa &ga)
+void exampleStereoObjective(const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, pm::rmga::RmGa &ga)
 {
-  pm::rmga::StereoObjective f(fitness);                                     // F, for RM-GA
+  pm::rmga::StereoObjective f(scorer, frame);                               // F on this frame, for RM-GA
   const pm::rmga::FrameResult r = ga.evolve(f, pm::rmga::FrameBudget::evals(1900));
   const pm::rmga::SmoothAscentResult a = pm::rmga::climbSmooth(f, &r.best, 1, pm::rmga::SmoothAscentParams());
 }

@@ -36,20 +36,20 @@ void moveTo(const std::pair<pm::core::Phi, double> &better);
 pm::tracker::TrackResult trackFrom(const pm::core::Phi &start);
 
 // AscentRefinement.h
-void exampleAscentRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, pm::tracker::TrackResult &r, const pm::tracker::TrackResult &last)
+void exampleAscentRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, pm::tracker::TrackResult &r, const pm::tracker::TrackResult &last)
 {
-  pm::tracker::AscentRefinement ascent(params.refinement.ascent, fitness);
+  pm::tracker::AscentRefinement ascent(params.refinement.ascent, scorer);
   if (ascent.active())
-    ascent.refine(r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
+    ascent.refine(frame, r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
 }
 
 // BackgroundLearning.h
-void exampleBackgroundLearning(const pm::tracker::TrackerParams &params, pm::core::StereoFitness &fitness, const pm::tracker::TrackResult &result)
+void exampleBackgroundLearning(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, pm::core::HueFrame &frame, const pm::tracker::TrackResult &result)
 {
-  pm::tracker::BackgroundLearning bg(params.background, fitness);
+  pm::tracker::BackgroundLearning bg(params.background, scorer);
   // after each frame's judgement:
-  if (const std::optional<double> hue = bg.learn(result.phi, result.trusted))
-    fitness.setBackgroundHue(*hue);
+  if (const std::optional<double> hue = bg.learn(frame, result.phi, result.trusted))
+    frame.setBackgroundHue(*hue);
 }
 
 // FramePlan.h
@@ -63,12 +63,12 @@ void exampleFramePlan(const pm::tracker::TrackerParams &params, const pm::tracke
 }
 
 // Judgement.h
-void exampleJudgement(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, const pm::precise::ModelErrorFloor &modelError,
+void exampleJudgement(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, const pm::precise::ModelErrorFloor &modelError,
                       pm::tracker::TrackResult &r, const pm::tracker::TrackResult &last, const pm::tracker::LockState &lock, const pm::tracker::SteadyFramePolicy &steady,
                       const pm::tracker::LockVerifier &verifier)
 {
-  pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, fitness, scale, modelError);
-  const pm::tracker::Evidence e = judgement.measure(r);
+  pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, scorer, scale, modelError);
+  const pm::tracker::Evidence e = judgement.measure(frame, r);
   const bool refused = lock.wouldLock(r.quality) &&
                        judgement.firstLockConfidence(e, steady.recentBestQ(), params.verifier.evaluations == 0) < params.lock.confidence;
   // ... the lock's state from q and refused (LockState.h), then:
@@ -94,12 +94,12 @@ void exampleLockState(const pm::tracker::TrackerParams &params, double q, double
 }
 
 // LockVerifier.h
-void exampleLockVerifier(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, pm::tracker::TrackState lastState, pm::tracker::TrackState prev, const pm::tracker::FramePlan &plan,
+void exampleLockVerifier(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, pm::tracker::TrackState lastState, pm::tracker::TrackState prev, const pm::tracker::FramePlan &plan,
                          const pm::tracker::TrackResult &r, pm::tracker::TrackResult &work, const pm::tracker::PoseSearch &search)
 {
-  pm::tracker::LockVerifier verifier(params.verifier, params.search, fitness, scale);
+  pm::tracker::LockVerifier verifier(params.verifier, params.search, scorer, scale);
   if (verifier.verifying(lastState)) {
-    const auto better = verifier.challenge(plan.challenger, r.phi, r.fitness, search.ga(), work);
+    const auto better = verifier.challenge(frame, plan.challenger, r.phi, r.fitness, search.ga(), work);
     if (better)
       moveTo(*better); // a wrong first lock
   }
@@ -120,22 +120,22 @@ void exampleMotionPrediction(const pm::tracker::TrackResult &last, const vpHomog
 }
 
 // PoseSearch.h
-void examplePoseSearch(const pm::tracker::TrackerParams &params, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, const pm::tracker::FramePlan &plan)
+void examplePoseSearch(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, const pm::tracker::FramePlan &plan)
 {
-  pm::tracker::PoseSearch search(params.search, fitness, scale);
+  pm::tracker::PoseSearch search(params.search, scorer, scale);
   search.initialize();                                   // a random population
-  const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact); // tracked: every point
+  const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact); // tracked: every point
   pm::tracker::RmGaUpdate u;
   u.anchor = r.best;                                     // trusted
   search.apply(u);
 }
 
 // PreciseRefinement.h
-void examplePreciseRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
+void examplePreciseRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
                                const pm::tracker::TrackResult &last, const pm::tracker::MotionPrediction &motion, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, pm::tracker::PoseSearch &search)
 {
-  pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, fitness, scale);
-  if (stage.refine(r, last, motion.predict(last.phi), IL, IR)) {
+  pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, scorer, scale);
+  if (stage.refine(frame, r, last, motion.predict(last.phi), IL, IR)) {
     pm::tracker::RmGaUpdate u;
     u.inject = pm::tracker::RmGaUpdate::Inject{r.phi, r.fitness}; // the frame's pose is the stage's: it joins RM-GA
     search.apply(u);
@@ -151,12 +151,12 @@ void exampleQualityScale(const pm::core::PhotoModel &model, const pm::core::Ster
 }
 
 // RefinementChain.h
-void exampleRefinementChain(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
+void exampleRefinementChain(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
                             const pm::tracker::TrackResult &last, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, bool locked, pm::tracker::PoseSearch &search)
 {
-  pm::tracker::RefinementChain chain(params.refinement, rig, model, fitness, scale);
+  pm::tracker::RefinementChain chain(params.refinement, rig, model, scorer, scale);
   pm::tracker::RmGaUpdate u;
-  u.inject = chain.refine(r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
+  u.inject = chain.refine(frame, r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
   search.apply(u);
 }
 
@@ -179,18 +179,18 @@ void exampleStaticDetection(const pm::core::StereoRig &rig, const pm::core::Phot
 }
 
 // SteadyFramePolicy.h
-void exampleSteadyFramePolicy(const pm::tracker::TrackerParams &params, bool verifying, pm::core::StereoFitness &fitness, const pm::tracker::QualityScale &scale, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, const pm::core::Phi &lastPose,
+void exampleSteadyFramePolicy(const pm::tracker::TrackerParams &params, bool verifying, const pm::core::StereoScorer &scorer, pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, const pm::core::Phi &lastPose,
                               pm::tracker::PoseSearch &search, pm::tracker::TrackState state)
 {
   pm::tracker::SteadyFramePolicy steady(params.steady);
   const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
   if (plan.windowed)
-    fitness.setImages(IL, IR, steady.windows(fitness, lastPose));
+    scorer.setImages(frame, IL, IR, steady.windows(scorer, lastPose));
   else
-    fitness.setImages(IL, IR);
-  const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact);
+    scorer.setImages(frame, IL, IR);
+  const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact);
   if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
-    search.evolve(plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);
+    search.evolve(frame, plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);
   steady.update(state, scale.quality(r.fitness));                // after the frame's state
 }
 

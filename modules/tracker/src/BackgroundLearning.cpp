@@ -19,13 +19,13 @@ void BackgroundParams::validate() const
     throw core::Error("tracker: the background's least samples must be at least 1");
 }
 
-BackgroundLearning::BackgroundLearning(const BackgroundParams &params, const core::StereoFitness &fitness)
-    : m_p((params.validate(), params)), m_fitness(fitness), m_model(fitness.backgroundHue()), m_learnt(m_model), m_used(m_model),
-      m_hues(fitness.outerPointsMax())
+BackgroundLearning::BackgroundLearning(const BackgroundParams &params, const core::StereoScorer &scorer)
+    : m_p((params.validate(), params)), m_scorer(scorer), m_model(scorer.modelBackgroundHue()), m_learnt(m_model), m_used(m_model),
+      m_hues(scorer.outerPointsMax())
 {
 }
 
-std::optional<double> BackgroundLearning::learn(const core::Phi &phi, bool trusted)
+std::optional<double> BackgroundLearning::learn(const core::HueFrame &frame, const core::Phi &phi, bool trusted)
 {
   if (!m_p.learn || !trusted)
     return std::nullopt;
@@ -33,7 +33,7 @@ std::optional<double> BackgroundLearning::learn(const core::Phi &phi, bool trust
   double sum = 0;
   int n = 0;
   for (int cam = 0; cam < 2; ++cam) {
-    const std::size_t k = m_fitness.outerHues(phi, cam, m_hues.data(), m_hues.size());
+    const std::size_t k = m_scorer.outerHues(frame, phi, cam, m_hues.data(), m_hues.size());
     for (std::size_t i = 0; i < k; ++i) {
       const double d = core::hueDifference(m_hues[i], m_used);
       if (std::fabs(d) <= m_p.windowDeg) {

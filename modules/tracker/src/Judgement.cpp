@@ -28,9 +28,9 @@ void JudgementParams::validate() const
   uncertainty.validate();
 }
 
-Judgement::Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale,
+Judgement::Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoScorer &scorer, const QualityScale &scale,
                      const precise::ModelErrorFloor &modelError)
-    : m_p(params), m_competitorMinDeg(competitorMinDeg), m_fitness(fitness), m_scale(scale), m_modelError(modelError)
+    : m_p(params), m_competitorMinDeg(competitorMinDeg), m_scorer(scorer), m_scale(scale), m_modelError(modelError)
 {
 }
 
@@ -52,11 +52,11 @@ std::size_t Judgement::competitors(const core::Phi &phi, core::Phi *out) const
   return n;
 }
 
-Evidence Judgement::measure(const TrackResult &r) const
+Evidence Judgement::measure(const core::HueFrame &frame, const TrackResult &r) const
 {
   Evidence e;
   ConfidenceCues &c = e.cues;
-  const core::FitnessDetail d = m_fitness.evaluateDetail(r.phi);
+  const core::FitnessDetail d = m_scorer.evaluateDetail(frame, r.phi);
   // Over the points not hidden: a right pose behind an occluder is judged as in the open.
   c.quality = m_scale.quality(0.5 * (d.visibleLeft + d.visibleRight));
   c.qualityMin = std::min(m_scale.quality(d.visibleLeft), m_scale.quality(d.visibleRight));
@@ -82,7 +82,7 @@ Evidence Judgement::measure(const TrackResult &r) const
   for (std::size_t k = 0; k < n; ++k)
     if (core::rotationDistanceDeg(all[k], phi) > m_competitorMinDeg) // a mirrored small tilt is the same pose
       rivals[nRivals++] = all[k];
-  m_fitness.evaluate(rivals.data(), nRivals, rivalF.data()); // one batch, on two cores
+  m_scorer.evaluate(frame, rivals.data(), nRivals, rivalF.data()); // one batch, on two cores
   double qAlt = -1e9;
   for (std::size_t k = 0; k < nRivals; ++k)
     qAlt = std::max(qAlt, m_scale.quality(rivalF[k]));

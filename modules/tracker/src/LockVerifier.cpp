@@ -27,12 +27,10 @@ rmga::RmGaParams challengerParams(rmga::RmGaParams p)
 }
 } // namespace
 
-LockVerifier::LockVerifier(const VerifierParams &params, const SearchParams &search, const core::StereoFitness &fitness,
+LockVerifier::LockVerifier(const VerifierParams &params, const SearchParams &search, const core::StereoScorer &scorer,
                            const QualityScale &scale)
-    : m_p(params), m_coarse(search.coarse), m_fitness(fitness), m_scale(scale),
-      m_objective(fitness, search.coarse ? rmga::StereoObjective::Score::Coarse : rmga::StereoObjective::Score::Fitness,
-                  search.rejectMarginQ < 0 ? -1.0 : scale.fitnessSpan(search.rejectMarginQ)),
-      m_challenger(search.space, challengerParams(search.ga))
+    : m_p(params), m_coarse(search.coarse), m_rejectMargin(search.rejectMarginQ < 0 ? -1.0 : scale.fitnessSpan(search.rejectMarginQ)),
+      m_scorer(scorer), m_scale(scale), m_challenger(search.space, challengerParams(search.ga))
 {
 }
 
@@ -54,12 +52,15 @@ void LockVerifier::start(const core::Phi &lock, const rmga::RmGa &ga)
   m_challenger.restart(1, 1000000);
 }
 
-std::optional<std::pair<core::Phi, double>> LockVerifier::challenge(const rmga::FrameBudget &budget, const core::Phi &pose,
-                                                                     double fitness, const rmga::RmGa &ga, TrackResult &work)
+std::optional<std::pair<core::Phi, double>> LockVerifier::challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget,
+                                                                     const core::Phi &pose, double fitness, const rmga::RmGa &ga,
+                                                                     TrackResult &work)
 {
-  rmga::FrameResult c = m_challenger.evolve(m_objective, budget);
+  rmga::StereoObjective objective(m_scorer, frame, m_coarse ? rmga::StereoObjective::Score::Coarse : rmga::StereoObjective::Score::Fitness,
+                                  m_rejectMargin);
+  rmga::FrameResult c = m_challenger.evolve(objective, budget);
   if (m_coarse) { // its best on every point, to compare with the tracker's F
-    c.fitness = m_fitness.evaluate(c.best);
+    c.fitness = m_scorer.evaluate(frame, c.best);
     ++c.evaluations;
     ++c.candidates;
   }

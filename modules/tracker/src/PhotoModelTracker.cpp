@@ -57,12 +57,12 @@ QualityScale scaleOnRig(const core::StereoFitness &fitness, const core::PhotoMod
 
 PhotoModelTracker::PhotoModelTracker(const core::StereoRig &rig, const core::PhotoModel &model, const TrackerParams &params)
     : m_params(resolved(params, model)), m_fitness(rig, model, params.fitness), m_scale(scaleOnRig(m_fitness, model, m_params)),
-      m_search(m_params.search, m_fitness, m_scale), m_lock(m_params.lock), m_steady(m_params.steady),
-      m_verifier(m_params.verifier, m_params.search, m_fitness, m_scale),
-      m_refinement(m_params.refinement, rig, model, m_fitness, m_scale),
-      m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness, m_scale,
+      m_search(m_params.search, m_fitness.scorer(), m_scale), m_lock(m_params.lock), m_steady(m_params.steady),
+      m_verifier(m_params.verifier, m_params.search, m_fitness.scorer(), m_scale),
+      m_refinement(m_params.refinement, rig, model, m_fitness.scorer(), m_scale),
+      m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness.scorer(), m_scale,
                   precise::ModelErrorFloor(model.passLandings, rig.left.hMc, m_params.judgement.uncertainty.modelErrorWidthDeg)),
-      m_background(m_params.background, m_fitness)
+      m_background(m_params.background, m_fitness.scorer())
 {
   initialize();
 }
@@ -70,18 +70,22 @@ PhotoModelTracker::PhotoModelTracker(const core::StereoRig &rig, const core::Pho
 TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
 {
   const Clock clock;
+  // What the frame sees (its hue planes, the background's hue) is m_fitness.frame(): made by plan (and
+  // by search on an escalation, by completeHue for the judgement), and given to every part that scores.
+  const core::HueFrame &hues = m_fitness.frame();
   const FramePlan frame = plan(left, right, clock);                      // 1. steady? the hue planes; the budgets
   RmGaUpdate update;
   TrackResult r = search(frame, left, right, clock);                     // 2. RM-GA (escalated if a steady frame falls)
   if (frame.verifying)
     challenge(frame, r, update);                                         // 3. the lock verifier's challenger
   const double searchedMs = clock.ms();
-  update.inject = m_refinement.refine(r, m_last, left, right, m_scale.quality(r.fitness) >= m_params.lock.quality); // 4.
+  const bool locked = m_scale.quality(r.fitness) >= m_params.lock.quality;
+  update.inject = m_refinement.refine(hues, r, m_last, left, right, locked); // 4. the refinement chain
   const double refinedMs = clock.ms();
   r.hMo = core::toHomogeneousMatrix(r.phi);
   r.quality = m_scale.quality(r.fitness);
   completeHue(frame, r, left, right);
-  const Evidence evidence = m_judgement.measure(r);                      // 5. the judgement's evidence, once
+  const Evidence evidence = m_judgement.measure(hues, r);                // 5. the judgement's evidence, once
   const TrackState prev = m_lock.state();
   update.restart = updateState(r, evidence);                             // 6. searching, tracking or lost
   judge(r, evidence, prev);                                              // 7. confidence, trust, uncertainty
@@ -92,7 +96,7 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   m_verifier.afterJudgement(r.state, r.confidence, r.phi, m_search.ga());
   m_refinement.learn(r);
   r.backgroundHueDeg = m_fitness.backgroundHue(); // what the frame was scored with
-  if (const std::optional<double> hue = m_background.learn(r.phi, r.trusted)) // 9. the background's hue as seen now
+  if (const std::optional<double> hue = m_background.learn(hues, r.phi, r.trusted)) // 9. the background's hue as seen now
     useBackgroundHue(*hue);
   r.computeMs = clock.ms();
   r.stageMs = {frame.hueMs, searchedMs - frame.hueMs, refinedMs - searchedMs, r.computeMs - refinedMs};
@@ -105,7 +109,7 @@ FramePlan PhotoModelTracker::plan(const vpImage<vpRGBa> &left, const vpImage<vpR
 {
   FramePlan frame = m_steady.plan(m_verifier.verifying(m_lock.state()));
   if (frame.windowed)
-    m_fitness.setImages(left, right, m_steady.windows(m_fitness, m_last.phi));
+    m_fitness.setImages(left, right, m_steady.windows(m_fitness.scorer(), m_last.phi));
   else
     m_fitness.setImages(left, right);
   frame.hueMs = clock.ms();
@@ -116,7 +120,7 @@ FramePlan PhotoModelTracker::plan(const vpImage<vpRGBa> &left, const vpImage<vpR
 TrackResult PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock)
 {
   const PoseSearch::Scoring scoring = m_lock.state() == TrackState::Tracking ? PoseSearch::Scoring::Exact : PoseSearch::Scoring::Coarse;
-  rmga::FrameResult fr = m_search.evolve(frame.main, scoring); // coarse until tracked
+  rmga::FrameResult fr = m_search.evolve(m_fitness.frame(), frame.main, scoring); // coarse until tracked
   TrackResult r;
   if (frame.steady && m_steady.escalates(m_scale.quality(fr.fitness))) {
     // The steady frame went wrong: the rest of the whole budget at once, on the whole images.
@@ -128,7 +132,7 @@ TrackResult PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRG
       rest.evaluations = std::max<long>(m_params.search.ga.population, rest.evaluations - fr.evaluations);
     else
       rest.milliseconds = std::max(0.05, rest.milliseconds - (clock.ms() - frame.hueMs));
-    const rmga::FrameResult more = m_search.evolve(rest, PoseSearch::Scoring::Exact, PoseSearch::Generations::SameFrame);
+    const rmga::FrameResult more = m_search.evolve(m_fitness.frame(), rest, PoseSearch::Scoring::Exact, PoseSearch::Generations::SameFrame);
     fr.best = more.best;
     fr.fitness = more.fitness;
     fr.evaluations += more.evaluations;
@@ -146,7 +150,7 @@ TrackResult PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRG
 
 void PhotoModelTracker::challenge(const FramePlan &frame, TrackResult &r, RmGaUpdate &update)
 {
-  const auto better = m_verifier.challenge(frame.challenger, r.phi, r.fitness, m_search.ga(), r);
+  const auto better = m_verifier.challenge(m_fitness.frame(), frame.challenger, r.phi, r.fitness, m_search.ga(), r);
   if (!better)
     return;
   // A clearly better pose elsewhere (a wrong first lock): the tracker moves there.

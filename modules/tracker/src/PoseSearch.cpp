@@ -41,10 +41,9 @@ void SearchParams::validate() const
     throw core::Error("tracker: the initial spread must lie in [0, 1]");
 }
 
-PoseSearch::PoseSearch(const SearchParams &params, const core::StereoFitness &fitness, const QualityScale &scale)
-    : m_params(params), m_fitness(fitness),
-      m_objective(fitness, rmga::StereoObjective::Score::Fitness, params.rejectMarginQ < 0 ? -1.0 : scale.fitnessSpan(params.rejectMarginQ)),
-      m_coarse(fitness, rmga::StereoObjective::Score::Coarse), m_ga(params.space, params.ga)
+PoseSearch::PoseSearch(const SearchParams &params, const core::StereoScorer &scorer, const QualityScale &scale)
+    : m_params(params), m_scorer(scorer), m_rejectMargin(params.rejectMarginQ < 0 ? -1.0 : scale.fitnessSpan(params.rejectMarginQ)),
+      m_ga(params.space, params.ga)
 {
 }
 
@@ -62,12 +61,15 @@ void PoseSearch::initFromPose(const core::Phi &p)
 
 void PoseSearch::transform(const std::function<core::Phi(const core::Phi &)> &moved) { m_ga.transform(moved); }
 
-rmga::FrameResult PoseSearch::evolve(const rmga::FrameBudget &budget, Scoring scoring, Generations generations)
+rmga::FrameResult PoseSearch::evolve(const core::HueFrame &frame, const rmga::FrameBudget &budget, Scoring scoring, Generations generations)
 {
   const bool c = scoring == Scoring::Coarse && m_params.coarse;
-  rmga::FrameResult r = m_ga.evolve(c ? m_coarse : m_objective, budget, generations == Generations::SameFrame);
+  // Coarse: F estimated on a quarter of the points; else F, children that cannot survive rejected early.
+  rmga::StereoObjective objective(m_scorer, frame, c ? rmga::StereoObjective::Score::Coarse : rmga::StereoObjective::Score::Fitness,
+                                  c ? -1.0 : m_rejectMargin);
+  rmga::FrameResult r = m_ga.evolve(objective, budget, generations == Generations::SameFrame);
   if (c) { // the estimate of the best, then F itself
-    r.fitness = m_fitness.evaluate(r.best);
+    r.fitness = m_scorer.evaluate(frame, r.best);
     ++r.evaluations;
     ++r.candidates;
   }

@@ -16,15 +16,15 @@ void PreciseRefinementParams::validate() const
 }
 
 PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
-                                     const core::StereoFitness &fitness, const QualityScale &scale)
-    : m_p(params), m_fitness(fitness), m_scale(scale)
+                                     const core::StereoScorer &scorer, const QualityScale &scale)
+    : m_p(params), m_scorer(scorer), m_scale(scale)
 {
   if (!params.enabled || !model.hasContours())
     return;
   // One rule for what the rig sees of an occluder: the fitness's stereo visibility (on or off, its
   // background tolerance, saturation and largest hidden share) decides the lines' too.
   precise::PreciseParams stage = params.stage;
-  const core::FitnessParams &f = fitness.params();
+  const core::FitnessParams &f = scorer.params();
   stage.occlusion.enabled = f.stereoVisibility;
   stage.occlusion.maxHiddenShare = f.maxHiddenShare;
   stage.occlusion.backgroundTolDeg = f.inBgTolDeg;
@@ -32,21 +32,21 @@ PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, cons
   m_stage = std::make_unique<precise::PreciseStage>(rig, model, stage);
 }
 
-bool PreciseRefinement::refine(TrackResult &r, const TrackResult &last, const core::Phi &predicted, const vpImage<vpRGBa> &left,
-                               const vpImage<vpRGBa> &right)
+bool PreciseRefinement::refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last, const core::Phi &predicted,
+                               const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
 {
   m_stage->setImages(left, right);
   const double minF = r.fitness - m_scale.fitnessSpan(m_p.maxDropQ);
   auto acceptable = [&](const precise::PreciseResult &p, const core::Phi &start, double &F) {
     if (!p.ok || core::translationDistanceMm(p.phi, start) > m_p.maxMoveMm || core::rotationDistanceDeg(p.phi, start) > m_p.maxMoveDeg)
       return false;
-    F = m_fitness.evaluate(p.phi);
+    F = m_scorer.evaluate(frame, p.phi);
     return F >= minF;
   };
   // The lines and interior points hidden by something in front are looked for only where the
   // fitness finds part of the target hidden at the search's pose (lookForHiddenBelow): on a clear
   // view the stage is the one it always was (and pays nothing for it).
-  const core::FitnessDetail seen = m_fitness.evaluateDetail(r.phi);
+  const core::FitnessDetail seen = m_scorer.evaluateDetail(frame, r.phi);
   const bool lookForHidden = std::min(seen.countsLeft.visibleShare(), seen.countsRight.visibleShare()) < m_p.lookForHiddenBelow;
   m_lookedForHidden = lookForHidden;
   const bool haveLast = last.state == TrackState::Tracking && last.precise && last.phi.isValid();

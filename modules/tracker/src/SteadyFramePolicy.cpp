@@ -23,7 +23,7 @@ FramePlan SteadyFramePolicy::plan(bool verifying) const
   return p;
 }
 
-std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoFitness &fitness, const core::Phi &last) const
+std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoScorer &scorer, const core::Phi &last) const
 {
   std::array<core::PixelRect, 2> w;
   core::Phi next = last; // constant velocity from the two last frames (else the last pose again)
@@ -34,8 +34,8 @@ std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoFitn
     next = last;
   for (int cam = 0; cam < 2; ++cam) {
     const std::size_t c = static_cast<std::size_t>(cam);
-    w[c] = fitness.footprint(last, cam).united(fitness.footprint(next, cam));
-    w[c] = w[c].grown(m_p.hueMarginPx, fitness.camera(cam).w, fitness.camera(cam).h);
+    w[c] = scorer.footprint(last, cam).united(scorer.footprint(next, cam));
+    w[c] = w[c].grown(m_p.hueMarginPx, scorer.camera(cam).w, scorer.camera(cam).h);
   }
   return w;
 }

@@ -4,7 +4,7 @@
   The refinement chain's second stage, for the frames the precise stage did not end: the top of F's
   plateau. RM-GA's F counts whole pixels, a staircase flat over a degree or two of tilt, and the
   GA's best wanders over the plateau from frame to frame; a climb of the smooth score along its
-  gradient (rmga::climbSmooth, core::StereoFitness::evaluateSmoothGradient) from the frame's pose or
+  gradient (rmga::climbSmooth, core::StereoScorer::evaluateSmoothGradient) from the frame's pose or
   the last frame's, whichever scores higher, reaches its top in a dozen evaluations, on top of the
   frame budget.
 
@@ -12,12 +12,12 @@
   maxDrop (F's units).
 
   \code
-    pm::tracker::AscentRefinement ascent(params.refinement.ascent, fitness);
+    pm::tracker::AscentRefinement ascent(params.refinement.ascent, scorer);
     if (ascent.active())
-      ascent.refine(r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
+      ascent.refine(frame, r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
   \endcode
 */
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 #include "pm/rmga/SmoothAscent.h"
 #include "pm/rmga/StereoObjective.h"
 #include "pm/tracker/TrackResult.h"
@@ -38,17 +38,16 @@ struct AscentParams
 class AscentRefinement
 {
 public:
-  //! Copies \e params; \e fitness scores the climb on its current hue planes.
-  AscentRefinement(const AscentParams &params, const core::StereoFitness &fitness);
+  //! Copies \e params; \e scorer scores the climb on the frame given to refine() (it must outlive the stage).
+  AscentRefinement(const AscentParams &params, const core::StereoScorer &scorer);
 
   bool active() const { return m_p.climb.maxEvaluations > 0; } //!< the stage runs
   //! Climbs from \e r's pose and, when \e last was tracked, from its pose; true when the climb's pose is kept.
-  bool refine(TrackResult &r, const TrackResult &last);
+  bool refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last);
 
 private:
   AscentParams m_p;
-  const core::StereoFitness &m_fitness;
-  rmga::StereoObjective m_objective; //!< the smooth score's gradient
+  const core::StereoScorer &m_scorer;
 };
 
 } // namespace pm::tracker

@@ -12,17 +12,17 @@
   background that does not change, nothing does.
 
   \code
-    pm::tracker::BackgroundLearning bg(params.background, fitness);
+    pm::tracker::BackgroundLearning bg(params.background, scorer);
     // after each frame's judgement:
-    if (const std::optional<double> hue = bg.learn(result.phi, result.trusted))
-      fitness.setBackgroundHue(*hue);
+    if (const std::optional<double> hue = bg.learn(frame, result.phi, result.trusted))
+      frame.setBackgroundHue(*hue);
   \endcode
 */
 #include <optional>
 #include <vector>
 
 #include "pm/core/Pose.h"
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 
 namespace pm::tracker {
 
@@ -39,19 +39,19 @@ struct BackgroundParams
   void validate() const;
 };
 
-//! The learnt background hue (see BackgroundLearning.h). Keeps a reference to the fitness: it must outlive it.
+//! The learnt background hue (see BackgroundLearning.h). Keeps a reference to the scorer: it must outlive it.
 class BackgroundLearning
 {
 public:
-  //! Starts from the hue \e fitness scores with (the model's).
-  BackgroundLearning(const BackgroundParams &params, const core::StereoFitness &fitness);
+  //! Starts from the model's hue (\e scorer's).
+  BackgroundLearning(const BackgroundParams &params, const core::StereoScorer &scorer);
 
   /*!
-    One frame: when \e trusted, the background hues under the S_out points at \e phi teach the
+    One frame: when \e trusted, the background hues of \e frame under the S_out points at \e phi teach the
     learnt hue. Returns the hue the scoring should use from now on when it changed (deg, [0, 360)).
     Allocates nothing.
   */
-  std::optional<double> learn(const core::Phi &phi, bool trusted);
+  std::optional<double> learn(const core::HueFrame &frame, const core::Phi &phi, bool trusted);
   //! Back to the model's hue (returned, for the scoring).
   double reset();
   double learntDeg() const { return m_learnt; } //!< the learnt hue (deg)
@@ -60,7 +60,7 @@ public:
 
 private:
   BackgroundParams m_p;
-  const core::StereoFitness &m_fitness;
+  const core::StereoScorer &m_scorer;
   double m_model, m_learnt, m_used;
   std::vector<float> m_hues; //!< one camera's S_out hues (sized once)
 };

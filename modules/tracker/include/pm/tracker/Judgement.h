@@ -10,8 +10,8 @@
   are read from it with the tracker's state of the moment.
 
   \code
-    pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, fitness, scale, modelError);
-    const pm::tracker::Evidence e = judgement.measure(r);
+    pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, scorer, scale, modelError);
+    const pm::tracker::Evidence e = judgement.measure(frame, r);
     const bool refused = lock.wouldLock(r.quality) &&
                          judgement.firstLockConfidence(e, steady.recentBestQ(), params.verifier.evaluations == 0) < params.lock.confidence;
     // ... the lock's state from q and refused (LockState.h), then:
@@ -29,7 +29,7 @@
 #include <cstddef>
 
 #include "pm/core/PhotoModel.h"
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 #include "pm/precise/PoseUncertainty.h"
 #include "pm/tracker/QualityScale.h"
 #include "pm/tracker/TrackConfidence.h"
@@ -73,7 +73,7 @@ struct JudgedState
   bool verified = false;           //!< LockVerifier::verified()
 };
 
-//! The judgement (see the file's description). Keeps a reference to the fitness: it must outlive the judgement.
+//! The judgement (see the file's description). Keeps a reference to the scorer: it must outlive the judgement.
 class Judgement
 {
 public:
@@ -82,13 +82,13 @@ public:
     poses turned less than this are the same pose (VerifierParams::farDeg); \e modelError: the model's
     own error near each view, the uncertainty's floor there (the model's pass landings).
   */
-  Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoFitness &fitness, const QualityScale &scale,
+  Judgement(const JudgementParams &params, double competitorMinDeg, const core::StereoScorer &scorer, const QualityScale &scale,
             const precise::ModelErrorFloor &modelError);
 
   //! The competing poses of \e phi it scores (turned about its z axis, its tilt mirrored), valid ones only; returns their number.
   std::size_t competitors(const core::Phi &phi, core::Phi *out) const;
-  //! The evidence of the frame's pose \e r (its phi, quality and precise stage's result) on the fitness's current hue planes.
-  Evidence measure(const TrackResult &r) const;
+  //! The evidence of the frame's pose \e r (its phi, quality and precise stage's result) on \e frame.
+  Evidence measure(const core::HueFrame &frame, const TrackResult &r) const;
   //! The confidence of \e e as a first, unverified lock (\e verifiedAtOnce: locks need no verification).
   double firstLockConfidence(const Evidence &e, double recentBestQ, bool verifiedAtOnce) const;
   //! Fills \e r's cues, confidence, verified, trusted and uncertainty from \e e and the tracker's \e state.
@@ -99,7 +99,7 @@ public:
 private:
   JudgementParams m_p;
   double m_competitorMinDeg;
-  const core::StereoFitness &m_fitness;
+  const core::StereoScorer &m_scorer;
   QualityScale m_scale;
   precise::ModelErrorFloor m_modelError;
 };

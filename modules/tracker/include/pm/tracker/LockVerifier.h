@@ -21,9 +21,9 @@
   verified and the count of doubtful frames.
 
   \code
-    pm::tracker::LockVerifier verifier(params.verifier, params.search, fitness, scale);
+    pm::tracker::LockVerifier verifier(params.verifier, params.search, scorer, scale);
     if (verifier.verifying(lastState)) {
-      const auto better = verifier.challenge(plan.challenger, r.phi, r.fitness, search.ga(), work);
+      const auto better = verifier.challenge(frame, plan.challenger, r.phi, r.fitness, search.ga(), work);
       if (better)
         moveTo(*better); // a wrong first lock
     }
@@ -33,7 +33,7 @@
 */
 #include <optional>
 
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/StereoObjective.h"
 #include "pm/tracker/PoseSearch.h"
@@ -64,22 +64,22 @@ struct VerifierParams
   void validate() const;
 };
 
-//! The lock verifier (see the file's description). Keeps a reference to the fitness: it must outlive the verifier.
+//! The lock verifier (see the file's description). Keeps a reference to the scorer: it must outlive the verifier.
 class LockVerifier
 {
 public:
-  //! The challenger: \e search's RM-GA with another seed and no motion prediction, on \e fitness.
-  LockVerifier(const VerifierParams &params, const SearchParams &search, const core::StereoFitness &fitness, const QualityScale &scale);
+  //! The challenger: \e search's RM-GA with another seed and no motion prediction, scored by \e scorer.
+  LockVerifier(const VerifierParams &params, const SearchParams &search, const core::StereoScorer &scorer, const QualityScale &scale);
 
   //! The challenger runs this frame: evaluations are left and the last state was tracking.
   bool verifying(TrackState lastState) const { return m_left > 0 && lastState == TrackState::Tracking; }
   /*!
-    The challenger's search on this frame within \e budget, against the tracker's pose \e pose of
+    The challenger's search on \e frame within \e budget, against the tracker's pose \e pose of
     fitness \e fitness. Returns a better pose elsewhere, with its F, when it takes over (verification
     then starts again from it, near \e ga's anchor); adds its work to \e work.
   */
-  std::optional<std::pair<core::Phi, double>> challenge(const rmga::FrameBudget &budget, const core::Phi &pose, double fitness,
-                                                         const rmga::RmGa &ga, TrackResult &work);
+  std::optional<std::pair<core::Phi, double>> challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget, const core::Phi &pose,
+                                                         double fitness, const rmga::RmGa &ga, TrackResult &work);
   //! After the frame's state: a new lock (\e prev not tracking) is verified on the next frames; a target not tracked is no longer verified.
   void onState(TrackState prev, TrackState state, const core::Phi &pose, const rmga::RmGa &ga);
   //! After the judgement: a verified, tracked lock of low \e confidence for long is verified again.
@@ -96,10 +96,10 @@ private:
   void start(const core::Phi &lock, const rmga::RmGa &ga);
 
   VerifierParams m_p;
-  bool m_coarse;
-  const core::StereoFitness &m_fitness;
+  bool m_coarse;           //!< the challenger scores its candidates on a quarter of the points (SearchParams::coarse)
+  double m_rejectMargin;   //!< else children that cannot survive by this much (F's units) are rejected early (negative: never)
+  const core::StereoScorer &m_scorer;
   QualityScale m_scale;
-  rmga::StereoObjective m_objective;
   rmga::RmGa m_challenger;
   long m_left = 0;          //!< evaluations of verification still to run
   bool m_verified = false;

@@ -7,7 +7,9 @@
   model in the hand frame, with the fitness, a state, a confidence and an uncertainty.
 
   A frame is one fixed list of steps, each done by a part that owns its state and its parameters
-  (docs/architecture.md draws it):
+  (docs/architecture.md draws it). What the frame sees (its hue planes, the background's hue: a
+  core::HueFrame) is made by the tracker alone and given to each step that scores; the parts keep
+  only the core::StereoScorer, the model on the rig, which nothing changes:
    1. plan: the steady-frame policy (SteadyFramePolicy.h) says whether the frame is steady, and
       the hue planes are computed (on a steady frame, only in the windows where the model can land);
    2. search: RM-GA (PoseSearch.h) within the frame's budget; a steady frame whose q falls escalates;
@@ -130,7 +132,7 @@ private:
   void useBackgroundHue(double deg);
 
   TrackerParams m_params;
-  core::StereoFitness m_fitness; //!< the hue planes of the frame; every part scores with it
+  core::StereoFitness m_fitness; //!< the scorer, which every part keeps (never changed), and the frame's hues, given to each step
   QualityScale m_scale;
   PoseSearch m_search;
   LockState m_lock;

@@ -8,9 +8,9 @@
   applied in one place (apply()).
 
   \code
-    pm::tracker::PoseSearch search(params.search, fitness, scale);
+    pm::tracker::PoseSearch search(params.search, scorer, scale);
     search.initialize();                                   // a random population
-    const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact); // tracked: every point
+    const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact); // tracked: every point
     pm::tracker::RmGaUpdate u;
     u.anchor = r.best;                                     // trusted
     search.apply(u);
@@ -18,7 +18,7 @@
 */
 #include <functional>
 
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/StereoObjective.h"
 #include "pm/tracker/QualityScale.h"
@@ -45,7 +45,7 @@ struct SearchParams
   double budgetMs = 24.0;       //!< ... or wall time, used when budgetEvaluations is 0 (the paper: 24 ms)
   /*!
     Early rejection: RM-GA's children that cannot survive (under the worst parent) are scored on
-    the first quarter of the model's points only (core::StereoFitness::evaluate with a threshold),
+    the first quarter of the model's points only (core::StereoScorer::evaluate with a threshold),
     when that share's estimate of q lies this much under the threshold's q; otherwise on every
     point. Negative: never (every child scored exactly).
   */
@@ -76,12 +76,12 @@ struct SearchParams
   void validate() const;
 };
 
-//! The search on the frame (see the file's description). Keeps a reference to the fitness: it must outlive the search.
+//! The search on the frame (see the file's description). Keeps a reference to the scorer: it must outlive the search.
 class PoseSearch
 {
 public:
-  //! \e fitness scores the poses on its current hue planes; \e scale turns the rejection margin into F's units.
-  PoseSearch(const SearchParams &params, const core::StereoFitness &fitness, const QualityScale &scale);
+  //! \e scorer scores the poses on the frame given to evolve(); \e scale turns the rejection margin into F's units.
+  PoseSearch(const SearchParams &params, const core::StereoScorer &scorer, const QualityScale &scale);
 
   void initialize();                     //!< a random population, no anchor
   void initFromPose(const core::Phi &p); //!< a population around \e p, which is the anchor
@@ -99,8 +99,9 @@ public:
     NewFrame,  //!< a new frame (rmga::RmGa::evolve's first call on it)
     SameFrame  //!< more generations on the frame of the last call
   };
-  //! RM-GA on the frame within \e budget, scored as \e scoring says.
-  rmga::FrameResult evolve(const rmga::FrameBudget &budget, Scoring scoring, Generations generations = Generations::NewFrame);
+  //! RM-GA on \e frame within \e budget, scored as \e scoring says.
+  rmga::FrameResult evolve(const core::HueFrame &frame, const rmga::FrameBudget &budget, Scoring scoring,
+                           Generations generations = Generations::NewFrame);
   //! The frame's changes, in their order: reseed, inject, restart or scatter, anchor.
   void apply(const RmGaUpdate &update);
 
@@ -108,9 +109,8 @@ public:
 
 private:
   SearchParams m_params;
-  const core::StereoFitness &m_fitness;
-  rmga::StereoObjective m_objective; //!< F, children that cannot survive rejected early
-  rmga::StereoObjective m_coarse;    //!< F estimated on a quarter of the points
+  const core::StereoScorer &m_scorer;
+  double m_rejectMargin; //!< children that cannot survive by this much (F's units) rejected early (negative: never)
   rmga::RmGa m_ga;
 };
 

@@ -16,8 +16,8 @@
   is final: the chain ends with it, and it joins RM-GA's population. Colours are learnt on trusted frames.
 
   \code
-    pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, fitness, scale);
-    if (stage.refine(r, last, motion.predict(last.phi), IL, IR)) {
+    pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, scorer, scale);
+    if (stage.refine(frame, r, last, motion.predict(last.phi), IL, IR)) {
       pm::tracker::RmGaUpdate u;
       u.inject = pm::tracker::RmGaUpdate::Inject{r.phi, r.fitness}; // the frame's pose is the stage's: it joins RM-GA
       search.apply(u);
@@ -30,7 +30,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/PhotoModel.h"
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 #include "pm/core/StereoRig.h"
 #include "pm/precise/PreciseStage.h"
 #include "pm/tracker/QualityScale.h"
@@ -68,17 +68,17 @@ class PreciseRefinement
 public:
   //! The stage runs when \e params.enabled and \e model has outlines (core::PhotoModel::hasContours).
   PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
-                    const core::StereoFitness &fitness, const QualityScale &scale);
+                    const core::StereoScorer &scorer, const QualityScale &scale);
 
   bool active() const { return m_stage != nullptr; } //!< the stage runs
   /*!
-    Refines \e r (a locked frame's pose) on the images, from it or, when \e last was tracked by the
+    Refines \e r (a locked frame's pose) on the images (\e frame: their hues, for F), from it or, when \e last was tracked by the
     stage, from \e predicted (\e last's pose moved on by the target's motion, or \e last's own); true
     when the result is kept (then \e r's phi and fitness are the stage's). \e r.preciseResult: what it
     found either way.
   */
-  bool refine(TrackResult &r, const TrackResult &last, const core::Phi &predicted, const vpImage<vpRGBa> &left,
-              const vpImage<vpRGBa> &right);
+  bool refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last, const core::Phi &predicted,
+              const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
   //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).
@@ -91,7 +91,7 @@ public:
 
 private:
   PreciseRefinementParams m_p;
-  const core::StereoFitness &m_fitness;
+  const core::StereoScorer &m_scorer;
   QualityScale m_scale;
   bool m_lookedForHidden = false; //!< the last refine() looked for hidden lines (the fitness found part of the target hidden)
   std::unique_ptr<precise::PreciseStage> m_stage;

@@ -13,9 +13,9 @@
   A frame under the lock skips the chain (the tilt filter restarts).
 
   \code
-    pm::tracker::RefinementChain chain(params.refinement, rig, model, fitness, scale);
+    pm::tracker::RefinementChain chain(params.refinement, rig, model, scorer, scale);
     pm::tracker::RmGaUpdate u;
-    u.inject = chain.refine(r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
+    u.inject = chain.refine(frame, r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
     search.apply(u);
   \endcode
 */
@@ -54,15 +54,15 @@ struct RefinementParams
 class RefinementChain
 {
 public:
-  //! The stages for \e model on \e rig (the precise stage only for a model with outlines), scoring with \e fitness.
+  //! The stages for \e model on \e rig (the precise stage only for a model with outlines), scoring with \e scorer (it must outlive the chain).
   RefinementChain(const RefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
-                  const core::StereoFitness &fitness, const QualityScale &scale);
+                  const core::StereoScorer &scorer, const QualityScale &scale);
 
   /*!
     The stages on \e r (\e locked: its q reaches the lock; \e last: the last frame's result). Returns
     the precise stage's pose, to join RM-GA's population, when it is the frame's.
   */
-  std::optional<RmGaUpdate::Inject> refine(TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left,
+  std::optional<RmGaUpdate::Inject> refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left,
                                            const vpImage<vpRGBa> &right, bool locked);
   //! After the judgement: the precise stage learns the colours along the outline of a trusted pose; the motion remembers the pose.
   void learn(const TrackResult &r);
@@ -90,7 +90,7 @@ private:
   TiltFilterParams m_tiltParams;
   TiltFilter m_tilt;
   MotionPrediction m_motion;
-  const core::StereoFitness &m_fitness;
+  const core::StereoScorer &m_scorer;
 };
 
 } // namespace pm::tracker

@@ -17,12 +17,12 @@
     pm::tracker::SteadyFramePolicy steady(params.steady);
     const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
     if (plan.windowed)
-      fitness.setImages(IL, IR, steady.windows(fitness, lastPose));
+      scorer.setImages(frame, IL, IR, steady.windows(scorer, lastPose));
     else
-      fitness.setImages(IL, IR);
-    const pm::rmga::FrameResult r = search.evolve(plan.main, pm::tracker::PoseSearch::Scoring::Exact);
+      scorer.setImages(frame, IL, IR);
+    const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact);
     if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
-      search.evolve(plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);
+      search.evolve(frame, plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);
     steady.update(state, scale.quality(r.fitness));                // after the frame's state
   \endcode
 */
@@ -31,7 +31,7 @@
 
 #include "pm/core/HuePlane.h"
 #include "pm/core/Pose.h"
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 #include "pm/tracker/FramePlan.h"
 #include "pm/tracker/TrackResult.h"
 
@@ -46,9 +46,9 @@ struct SteadyParams
   //! A steady frame whose q ends more than qualityDrop under the recent best gets the rest of the whole budget at once.
   bool escalation = true;
   /*!
-    On a steady frame the hue planes are computed only where the model can land (core::StereoFitness::
+    On a steady frame the hue planes are computed only where the model can land (core::StereoScorer::
     footprint at the last and the predicted pose), grown by this many pixels. The confidence's cues are
-    scored on the whole images all the same (core::StereoFitness::addHueUnder). 0: always the whole images.
+    scored on the whole images all the same (core::StereoScorer::addHueUnder). 0: always the whole images.
   */
   int hueMarginPx = 24;
 
@@ -66,7 +66,7 @@ public:
   //! This frame's plan (budgets not yet set): steady or not, windowed or not; \e verifying: the challenger runs (whole images).
   FramePlan plan(bool verifying) const;
   //! The hue windows of a steady frame in each camera: the model's footprint at \e last and at the predicted pose, grown.
-  std::array<core::PixelRect, 2> windows(const core::StereoFitness &fitness, const core::Phi &last) const;
+  std::array<core::PixelRect, 2> windows(const core::StereoScorer &scorer, const core::Phi &last) const;
   //! A steady frame whose search ended at \e q must escalate (SteadyParams::escalation).
   bool escalates(double q) const { return m_p.escalation && q < m_recentBestQ - m_p.qualityDrop; }
   //! The recent best q (the confidence's drop is measured from it).

@@ -1,4 +1,4 @@
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 
 #include <exception>
 #include <string>
@@ -9,14 +9,15 @@
 
 namespace pm::core {
 
-void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) const
 {
   const std::array<PixelRect, 2> whole = {PixelRect{0, 0, m_cams[0].w, m_cams[0].h},
                                           PixelRect{0, 0, m_cams[1].w, m_cams[1].h}};
-  setImages(left, right, whole);
+  setImages(f, left, right, whole);
 }
 
-void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::array<PixelRect, 2> &windows)
+void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right,
+                             const std::array<PixelRect, 2> &windows) const
 {
   const vpImage<vpRGBa> *im[2] = {&left, &right};
   for (int k = 0; k < 2; ++k)
@@ -29,9 +30,9 @@ void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa>
   BatchPool::shared().run(2, [&](std::size_t k) {
     try {
       if (const auto &map = m_undistort[k])
-        m_planes[k].compute(*im[k], m_params.minSaturation, *map);
+        f.m_planes[k].compute(*im[k], m_params.minSaturation, *map);
       else
-        m_planes[k].compute(*im[k], m_params.minSaturation, windows[k]);
+        f.m_planes[k].compute(*im[k], m_params.minSaturation, windows[k]);
     } catch (...) {
       error[k] = std::current_exception();
     }
@@ -39,23 +40,23 @@ void StereoFitness::setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa>
   for (const auto &e : error)
     if (e)
       std::rethrow_exception(e);
-  m_hasImages = true;
+  f.m_hasImages = true;
 }
 
-void StereoFitness::addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses, std::size_t n)
+void StereoScorer::addHueUnder(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses,
+                               std::size_t n) const
 {
   for (std::size_t k = 0; k < n; ++k)
-    check(poses[k]);
+    check(f, poses[k]);
   const vpImage<vpRGBa> *im[2] = {&left, &right};
   for (int cam = 0; cam < 2; ++cam)
-    if (im[cam]->getWidth() != m_planes[static_cast<std::size_t>(cam)].width() ||
-        im[cam]->getHeight() != m_planes[static_cast<std::size_t>(cam)].height())
+    if (im[cam]->getWidth() != f.plane(cam).width() || im[cam]->getHeight() != f.plane(cam).height())
       throw Error("fitness: the hue is added from images of another size than the last pair's");
   // The two cameras on two cores; addPixels cannot throw here (the sizes match, the pixels are in the image).
   BatchPool::shared().run(2, [&](std::size_t cam) {
     if (m_undistort[cam]) // its plane is the whole ideal image
       return;
-    std::vector<std::int64_t> &pixels = m_pixelScratch[cam];
+    std::vector<std::int64_t> &pixels = f.m_pixelScratch[cam];
     pixels.clear();
     for (std::size_t k = 0; k < n; ++k) {
       const Projection p = projectionOf(static_cast<int>(cam), poses[k]);
@@ -63,17 +64,17 @@ void StereoFitness::addHueUnder(const vpImage<vpRGBa> &left, const vpImage<vpRGB
 #ifdef PM_HAVE_X86
       const kernels::ModelSoA m{m_x.data(), m_y.data(), m_z.data(), m_hue.data()};
       if (m_avx2) // the counting kernel's projection, 8 points at a time
-        (m_hasDepth ? kernels::collectPixelsAvx2<true> : kernels::collectPixelsAvx2<false>)(p, m, view.inBegin, view.outEnd, m_planes[cam].window(), pixels);
+        (m_hasDepth ? kernels::collectPixelsAvx2<true> : kernels::collectPixelsAvx2<false>)(p, m, view.inBegin, view.outEnd, f.m_planes[cam].window(), pixels);
       else
 #endif
         (m_hasDepth ? kernels::collectPixels<true> : kernels::collectPixels<false>)(p, m_x.data(), m_y.data(), m_z.data(), view.inBegin,
-                                                                 view.outEnd, m_planes[cam].window(), pixels);
+                                                                 view.outEnd, f.m_planes[cam].window(), pixels);
     }
-    m_planes[cam].addPixels(*im[cam], m_params.minSaturation, pixels.data(), pixels.size());
+    f.m_planes[cam].addPixels(*im[cam], m_params.minSaturation, pixels.data(), pixels.size());
   });
 }
 
-PixelRect StereoFitness::footprint(const Phi &phi, int camera) const
+PixelRect StereoScorer::footprint(const Phi &phi, int camera) const
 {
   if (!phi.isValid())
     throw Error("footprint of an invalid pose " + phi.toString());

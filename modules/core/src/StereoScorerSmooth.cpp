@@ -1,4 +1,4 @@
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 
 #include <algorithm>
 
@@ -7,11 +7,11 @@
 
 namespace pm::core {
 
-void StereoFitness::smoothSumsScalar(const Projection &p, std::size_t b, std::size_t e, std::size_t inEnd, bool metric,
+void StereoScorer::smoothSumsScalar(const HueFrame &f, const Projection &p, std::size_t b, std::size_t e, std::size_t inEnd, bool metric,
                                      SmoothSums &out) const
 {
   const FitnessParams &q = m_params;
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
+  const kernels::Tolerances tol = tolerances(f);
   // A pixel's score for an S_in point of hue hm (or, hm < 0, for an S_out point): the classes of
   // Eqs. (8), (9) as the kernels count them.
   auto pixelScore = [&](std::int32_t h, std::int32_t hm) {
@@ -65,16 +65,16 @@ void StereoFitness::smoothSumsScalar(const Projection &p, std::size_t b, std::si
       out.M[k] += M[k];
 }
 
-double StereoFitness::smoothCamera(int cam, const Phi &phi, bool vectorised, bool metric, double *grad, double *metricOut,
+double StereoScorer::smoothCamera(const HueFrame &f, int cam, const Phi &phi, bool vectorised, bool metric, double *grad, double *metricOut,
                                    std::size_t *inside) const
 {
-  const Projection p = projectionOf(cam, phi);
+  const Projection p = projectionOf(cam, phi, &f);
   const View &view = viewFor(p);
   SmoothSums sums;
   std::size_t inRest = view.inBegin, outRest = view.outBegin;
 #ifdef PM_HAVE_X86
   if (vectorised && m_avx2) {
-    const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
+    const kernels::Tolerances tol = tolerances(f);
     const FitnessParams &q = m_params;
     const kernels::ClassScores cs{static_cast<float>(q.inMatch), static_cast<float>(q.inBackground), static_cast<float>(q.inOther),
                          static_cast<float>(q.outBackground), static_cast<float>(q.outOther), static_cast<float>(q.offImage)};
@@ -83,8 +83,8 @@ double StereoFitness::smoothCamera(int cam, const Phi &phi, bool vectorised, boo
     outRest = kernels::smoothSumsAvx2<false>(p, tol, cs, m, view.outBegin, view.outEnd, metric, sums);
   }
 #endif
-  smoothSumsScalar(p, inRest, view.inEnd, view.inEnd, metric, sums);
-  smoothSumsScalar(p, outRest, view.outEnd, view.inEnd, metric, sums);
+  smoothSumsScalar(f, p, inRest, view.inEnd, view.inEnd, metric, sums);
+  smoothSumsScalar(f, p, outRest, view.outEnd, view.inEnd, metric, sums);
   const std::size_t nIn = view.inEnd - view.inBegin, nOut = view.outEnd - view.outBegin;
   if (inside)
     *inside += sums.inside;
@@ -117,16 +117,16 @@ double StereoFitness::smoothCamera(int cam, const Phi &phi, bool vectorised, boo
   return normalised(sums.value, nIn, nOut);
 }
 
-double StereoFitness::evaluateSmoothGradient(const Phi &phi, double grad[6], double *metric) const
+double StereoScorer::evaluateSmoothGradient(const HueFrame &f, const Phi &phi, double grad[6], double *metric) const
 {
-  check(phi);
+  check(f, phi);
   // The two cameras on two cores, each into its own sums (BatchPool: on the caller alone when the other core is busy).
   double camG[2][6] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}}, camM[2][36], camS[2];
   std::size_t camInside[2] = {0, 0};
   BatchPool::shared().run(2, [&](std::size_t cam) {
     if (metric)
       std::fill(camM[cam], camM[cam] + 36, 0.0);
-    camS[cam] = smoothCamera(static_cast<int>(cam), phi, true, metric != nullptr, camG[cam], metric ? camM[cam] : nullptr, &camInside[cam]);
+    camS[cam] = smoothCamera(f, static_cast<int>(cam), phi, true, metric != nullptr, camG[cam], metric ? camM[cam] : nullptr, &camInside[cam]);
   });
   const double s = 0.5 * (camS[0] + camS[1]);
   const std::size_t inside = camInside[0] + camInside[1];
@@ -138,10 +138,10 @@ double StereoFitness::evaluateSmoothGradient(const Phi &phi, double grad[6], dou
   return s;
 }
 
-double StereoFitness::evaluateSmooth(const Phi &phi) const
+double StereoScorer::evaluateSmooth(const HueFrame &f, const Phi &phi) const
 {
-  check(phi);
-  return 0.5 * (smoothCamera(0, phi, false, false, nullptr, nullptr, nullptr) + smoothCamera(1, phi, false, false, nullptr, nullptr, nullptr));
+  check(f, phi);
+  return 0.5 * (smoothCamera(f, 0, phi, false, false, nullptr, nullptr, nullptr) + smoothCamera(f, 1, phi, false, false, nullptr, nullptr, nullptr));
 }
 
 } // namespace pm::core

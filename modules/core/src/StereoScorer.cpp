@@ -1,4 +1,4 @@
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 
 namespace pm::core {
 
-const char *StereoFitness::kernelName() const { return m_avx2 ? "avx2" : "scalar"; }
+const char *StereoScorer::kernelName() const { return m_avx2 ? "avx2" : "scalar"; }
 
-void StereoFitness::useScalarKernel(bool on) { m_avx2 = !on && kernels::cpuHasAvx2(); }
+void StereoScorer::useScalarKernel(bool on) { m_avx2 = !on && kernels::cpuHasAvx2(); }
 
 void FitnessParams::validate() const
 {
@@ -38,7 +38,7 @@ double FitnessCounts::visibleShare() const
   return onImage > 0 ? 1.0 - static_cast<double>(inHidden + outHidden) / onImage : 1.0;
 }
 
-StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params)
+StereoScorer::StereoScorer(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params)
     : m_params(params), m_avx2(kernels::cpuHasAvx2())
 {
   rig.validate();
@@ -90,22 +90,29 @@ StereoFitness::StereoFitness(const StereoRig &rig, const PhotoModel &model, cons
   m_y.resize(m_y.size() + 8, 0.f);
   m_z.resize(m_z.size() + 8, 0.f);
   m_hue.resize(m_hue.size() + 8, 0);
-  m_bgHue = kernels::deci(model.backgroundHue) % 3600;
+  m_modelBgHue = kernels::deci(model.backgroundHue) % 3600;
   m_tolIn = kernels::deci(params.inTolDeg);
   m_tolInBg = kernels::deci(params.inBgTolDeg);
   m_tolOutBg = kernels::deci(params.outBgTolDeg);
   m_targetHues = TargetHues(model);
 }
 
-void StereoFitness::check(const Phi &phi) const
+HueFrame StereoScorer::newFrame() const { return HueFrame(m_modelBgHue); }
+
+kernels::Tolerances StereoScorer::tolerances(const HueFrame &f) const
+{
+  return kernels::Tolerances{f.backgroundHueDeci(), m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
+}
+
+void StereoScorer::check(const HueFrame &f, const Phi &phi) const
 {
   if (!phi.isValid())
     throw Error("fitness of an invalid pose phi = " + phi.toString() + ": |eps| must be <= 1 and every value finite");
-  if (!m_hasImages)
+  if (!f.hasImages())
     throw Error("fitness: no stereo pair was given (call setImages first)");
 }
 
-Projection StereoFitness::projectionOf(int cam, const Phi &phi) const
+Projection StereoScorer::projectionOf(int cam, const Phi &phi, const HueFrame *f) const
 {
   const PinholeCamera::Projection &c = m_cams[cam];
   const Rot3 R = rotationOf(phi);
@@ -123,15 +130,15 @@ Projection StereoFitness::projectionOf(int cam, const Phi &phi) const
   p.v0 = static_cast<float>(c.v0);
   p.w = c.w;
   p.h = c.h;
-  p.hue = m_planes[static_cast<std::size_t>(cam)].data();
+  p.hue = f ? f->plane(cam).data() : nullptr;
   return p;
 }
 
-void StereoFitness::countView(const Projection &p, const Projection *other, const View &v, int stage, FitnessCounts &counts) const
+void StereoScorer::countView(const HueFrame &f, const Projection &p, const Projection *other, const View &v, int stage, FitnessCounts &counts) const
 {
   const std::size_t inB = stage == 2 ? v.inSplit : v.inBegin, inE = stage == 1 ? v.inSplit : v.inEnd;
   const std::size_t outB = stage == 2 ? v.outSplit : v.outBegin, outE = stage == 1 ? v.outSplit : v.outEnd;
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
+  const kernels::Tolerances tol = tolerances(f);
   const kernels::ModelSoA m{m_x.data(), m_y.data(), m_z.data(), m_hue.data()};
 #ifdef PM_HAVE_X86
   if (m_avx2) {
@@ -148,7 +155,7 @@ void StereoFitness::countView(const Projection &p, const Projection *other, cons
     kernels::countScalar<false>(p, other, tol, m, inB, inE, outB, outE, counts);
 }
 
-const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
+const StereoScorer::View &StereoScorer::viewFor(const Projection &p) const
 {
   if (m_views.size() == 1)
     return m_views[0];
@@ -160,22 +167,22 @@ const StereoFitness::View &StereoFitness::viewFor(const Projection &p) const
   return m_views[m_viewpoints.nearest(c)];
 }
 
-FitnessCounts StereoFitness::countCamera(int cam, const Phi &phi) const
+FitnessCounts StereoScorer::countCamera(const HueFrame &f, int cam, const Phi &phi) const
 {
-  const Projection p = projectionOf(cam, phi), o = projectionOf(1 - cam, phi);
+  const Projection p = projectionOf(cam, phi, &f), o = projectionOf(1 - cam, phi, &f);
   FitnessCounts counts;
-  countView(p, m_params.stereoVisibility ? &o : nullptr, viewFor(p), 0, counts);
+  countView(f, p, m_params.stereoVisibility ? &o : nullptr, viewFor(p), 0, counts);
   return counts;
 }
 
-double StereoFitness::stereoScoreOrReject(const Phi &phi, double rejectBelow, double &cost) const
+double StereoScorer::stereoScoreOrReject(const HueFrame &f, const Phi &phi, double rejectBelow, double &cost) const
 {
-  const Projection p[2] = {projectionOf(0, phi), projectionOf(1, phi)};
+  const Projection p[2] = {projectionOf(0, phi, &f), projectionOf(1, phi, &f)};
   const View *v[2] = {&viewFor(p[0]), &viewFor(p[1])};
   FitnessCounts c[2];
   double estimate = 0, done = 0, all = 0;
   for (int cam = 0; cam < 2; ++cam) {
-    countView(p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 1, c[cam]);
+    countView(f, p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 1, c[cam]);
     estimate += 0.5 * score(c[cam]); // the share's own mean score: an estimate of F_cam
     done += static_cast<double>((v[cam]->inSplit - v[cam]->inBegin) + (v[cam]->outSplit - v[cam]->outBegin));
     all += static_cast<double>((v[cam]->inEnd - v[cam]->inBegin) + (v[cam]->outEnd - v[cam]->outBegin));
@@ -185,12 +192,12 @@ double StereoFitness::stereoScoreOrReject(const Phi &phi, double rejectBelow, do
     return estimate;
   }
   for (int cam = 0; cam < 2; ++cam)
-    countView(p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 2, c[cam]);
+    countView(f, p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 2, c[cam]);
   cost = 1.0;
   return 0.5 * (score(c[0]) + score(c[1]));
 }
 
-void StereoFitness::cappedHidden(const FitnessCounts &c, int &inHidden, int &outHidden) const
+void StereoScorer::cappedHidden(const FitnessCounts &c, int &inHidden, int &outHidden) const
 {
   const int nIn = c.inMatch + c.inBackground + c.inOther + c.inOff + c.inHidden;
   const int nOut = c.outBackground + c.outOther + c.outOff + c.outHidden;
@@ -198,11 +205,11 @@ void StereoFitness::cappedHidden(const FitnessCounts &c, int &inHidden, int &out
   outHidden = std::min(c.outHidden, static_cast<int>(m_params.maxHiddenShare * nOut));
 }
 
-double StereoFitness::score(const FitnessCounts &c) const { return scoreOf(c, false); }
+double StereoScorer::score(const FitnessCounts &c) const { return scoreOf(c, false); }
 
-double StereoFitness::visibleScore(const FitnessCounts &c) const { return scoreOf(c, true); }
+double StereoScorer::visibleScore(const FitnessCounts &c) const { return scoreOf(c, true); }
 
-double StereoFitness::scoreOf(const FitnessCounts &c, bool visibleOnly) const
+double StereoScorer::scoreOf(const FitnessCounts &c, bool visibleOnly) const
 {
   const FitnessParams &q = m_params;
   // A hidden point scores 0, neither for the pose nor against it. F keeps it in the count, so that
@@ -217,7 +224,7 @@ double StereoFitness::scoreOf(const FitnessCounts &c, bool visibleOnly) const
   return normalised(sum, static_cast<std::size_t>(nIn), static_cast<std::size_t>(nOut));
 }
 
-double StereoFitness::normalised(double sum, std::size_t nIn, std::size_t nOut) const
+double StereoScorer::normalised(double sum, std::size_t nIn, std::size_t nOut) const
 {
   if (nIn == m_nIn && nOut == m_nOut) // the model's own view: Eq. (10) as the paper writes it, to the bit
     return sum / static_cast<double>(nIn + nOut);
@@ -230,34 +237,34 @@ double StereoFitness::normalised(double sum, std::size_t nIn, std::size_t nOut) 
   return sum * best0 / (q.inMatch * static_cast<double>(nIn) + q.outBackground * static_cast<double>(nOut));
 }
 
-double StereoFitness::evaluate(const Phi &phi) const
+double StereoScorer::evaluate(const HueFrame &f, const Phi &phi) const
 {
-  check(phi);
-  return stereoScore(phi);
+  check(f, phi);
+  return stereoScore(f, phi);
 }
 
-void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out) const
+void StereoScorer::evaluate(const HueFrame &f, const Phi *phis, std::size_t n, double *out) const
 {
   for (std::size_t i = 0; i < n; ++i) // first, so that nothing throws inside the parallel loop
-    check(phis[i]);
+    check(f, phis[i]);
   // On two cores (BatchPool: the caller never waits for the helper to start). Each result depends
   // on its pose only, so they are the same whoever computes them.
-  BatchPool::shared().run(n, [&](std::size_t i) { out[i] = stereoScore(phis[i]); });
+  BatchPool::shared().run(n, [&](std::size_t i) { out[i] = stereoScore(f, phis[i]); });
 }
 
-void StereoFitness::evaluate(const Phi *phis, std::size_t n, double *out, double rejectBelow, double *cost) const
+void StereoScorer::evaluate(const HueFrame &f, const Phi *phis, std::size_t n, double *out, double rejectBelow, double *cost) const
 {
   for (std::size_t i = 0; i < n; ++i)
-    check(phis[i]);
-  BatchPool::shared().run(n, [&](std::size_t i) { out[i] = stereoScoreOrReject(phis[i], rejectBelow, cost[i]); });
+    check(f, phis[i]);
+  BatchPool::shared().run(n, [&](std::size_t i) { out[i] = stereoScoreOrReject(f, phis[i], rejectBelow, cost[i]); });
 }
 
-FitnessDetail StereoFitness::evaluateDetail(const Phi &phi) const
+FitnessDetail StereoScorer::evaluateDetail(const HueFrame &f, const Phi &phi) const
 {
-  check(phi);
+  check(f, phi);
   FitnessDetail d;
-  d.countsLeft = countCamera(0, phi);
-  d.countsRight = countCamera(1, phi);
+  d.countsLeft = countCamera(f, 0, phi);
+  d.countsRight = countCamera(f, 1, phi);
   d.left = score(d.countsLeft);
   d.right = score(d.countsRight);
   d.fitness = 0.5 * (d.left + d.right);

@@ -1,4 +1,4 @@
-#include "pm/core/StereoFitness.h"
+#include "pm/core/StereoScorer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 namespace pm::core {
 
-double StereoFitness::visibleFraction(const Phi &phi, int camera) const
+double StereoScorer::visibleFraction(const Phi &phi, int camera) const
 {
   if (!phi.isValid())
     throw Error("visible fraction at an invalid pose " + phi.toString());
@@ -27,7 +27,7 @@ double StereoFitness::visibleFraction(const Phi &phi, int camera) const
   return static_cast<double>(in) / static_cast<double>(view.outEnd - view.inBegin);
 }
 
-double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
+double StereoScorer::reprojectionRms(const Phi &a, const Phi &b) const
 {
   if (!a.isValid() || !b.isValid())
     throw Error("reprojection between invalid poses " + a.toString() + " and " + b.toString());
@@ -56,14 +56,7 @@ double StereoFitness::reprojectionRms(const Phi &a, const Phi &b) const
   return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
 }
 
-void StereoFitness::setBackgroundHue(double deg)
-{
-  if (!(deg >= 0 && deg < 360))
-    throw Error("the background's hue must lie in [0, 360) degrees");
-  m_bgHue = kernels::deci(deg) % 3600;
-}
-
-std::size_t StereoFitness::outerPointsMax() const
+std::size_t StereoScorer::outerPointsMax() const
 {
   std::size_t n = 0;
   for (const View &v : m_views)
@@ -71,10 +64,10 @@ std::size_t StereoFitness::outerPointsMax() const
   return n;
 }
 
-std::size_t StereoFitness::outerHues(const Phi &phi, int camera, float *out, std::size_t capacity) const
+std::size_t StereoScorer::outerHues(const HueFrame &f, const Phi &phi, int camera, float *out, std::size_t capacity) const
 {
-  check(phi);
-  const Projection p = projectionOf(camera, phi);
+  check(f, phi);
+  const Projection p = projectionOf(camera, phi, &f);
   const View &view = viewFor(p);
   std::size_t n = 0;
   for (std::size_t i = view.outBegin; i < view.outEnd && n < capacity; ++i) {
@@ -85,12 +78,12 @@ std::size_t StereoFitness::outerHues(const Phi &phi, int camera, float *out, std
   return n;
 }
 
-std::vector<PointScore> StereoFitness::pointScores(const Phi &phi, int camera) const
+std::vector<PointScore> StereoScorer::pointScores(const HueFrame &f, const Phi &phi, int camera) const
 {
-  check(phi);
-  const Projection p = projectionOf(camera, phi), o = projectionOf(1 - camera, phi);
+  check(f, phi);
+  const Projection p = projectionOf(camera, phi, &f), o = projectionOf(1 - camera, phi, &f);
   const View &view = viewFor(p);
-  const kernels::Tolerances tol{m_bgHue, m_tolIn, m_tolInBg, m_tolOutBg, m_targetHues.data()};
+  const kernels::Tolerances tol = tolerances(f);
   std::vector<PointScore> out;
   for (std::size_t k = view.inBegin; k < view.outEnd; ++k) { // in the model's order
     const std::size_t i = m_order[k];
