@@ -1,7 +1,5 @@
 #include "pm/lab/LabCache.h"
 
-#include <cmath>
-#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -48,16 +46,6 @@ CacheKey &CacheKey::matrix(const vpHomogeneousMatrix &M)
   return *this;
 }
 
-CacheKey &CacheKey::handPose(const vpHomogeneousMatrix &M)
-{
-  for (unsigned r = 0; r < 4; ++r)
-    for (unsigned c = 0; c < 4; ++c) {
-      const std::int64_t n = std::llround(M[r][c] * 1e9);
-      bytes(&n, sizeof n);
-    }
-  return *this;
-}
-
 CacheKey &CacheKey::camera(const core::PinholeCamera &c)
 {
   text(c.name);
@@ -78,7 +66,7 @@ CacheKey &CacheKey::pass(const std::vector<model::PassView> &pass)
 {
   for (const model::PassView &v : pass) {
     text(v.name);
-    handPose(v.fMh);
+    matrix(v.fMh);
     for (const vpImage<vpRGBa> *I : {&v.left, &v.right, &v.backgroundLeft, &v.backgroundRight})
       image(*I);
   }

@@ -9,8 +9,7 @@
 
   The rules it holds:
   - A key (CacheKey) is a 64-bit FNV-1a hash of everything the entry was made from: the rig's
-    cameras, every image and hand pose of the pass (to a nanometre: CacheKey::handPose), the
-    parameters, named by what the entry is.
+    cameras, every image and hand pose of the pass, the parameters, named by what the entry is.
   - It never fails a run: a folder that cannot be read or written is a cache that finds nothing;
     an entry is written whole or not at all (io::writeTextFile), so a reader never sees half of one.
   - Two programs that need the same entry at once make it once: the second waits on the key's lock
@@ -58,13 +57,7 @@ public:
   CacheKey &matrix(const vpHomogeneousMatrix &M);
   //! Both cameras: name, intrinsics, image size, pose on the hand, lens distortion.
   CacheKey &rig(const core::StereoRig &rig);
-  /*!
-    Adds \e M's 16 numbers rounded to 1e-9 (a nanometre, a nanoradian): a hand pose, which the arm's
-    kinematics give to the last bit only in one build (the sanitizers' differs in the 16th digit,
-    and renders the same images from it).
-  */
-  CacheKey &handPose(const vpHomogeneousMatrix &M);
-  //! Every view: its name, hand pose (handPose) and the four images (with and without the target).
+  //! Every view: its name, hand pose and the four images (with and without the target).
   CacheKey &pass(const std::vector<model::PassView> &pass);
   //! 16 hex digits.
   std::string hex() const;
