@@ -16,6 +16,7 @@
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/tracker/StaticDetection.h"
 #include "pm/tracker/MotionPrediction.h"
+#include "pm/tracker/PoseHistory.h"
 #include "pm/tracker/TiltFilter.h"
 
 #include <visp3/core/vpThetaUVector.h>
@@ -651,69 +652,108 @@ TEST(MotionPrediction, CarriesAConstantMotionOnFollowsTheHandAndForgetsJumpsAndS
   };
   const auto phiOf = [](const vpHomogeneousMatrix &M) { return pm::core::fromHomogeneousMatrix(M); };
   // (Rotations compared within 1e-4 deg: rotationDistanceDeg's acos near 1 resolves about 2e-6 deg.)
-  pm::tracker::MotionPrediction m; // gain 1
-  m.remember(tracked(truthAt(0)));
-  EXPECT_FALSE(m.moving()); // one pose: nothing to predict from
-  EXPECT_EQ(m.predict(phiOf(truthAt(0))).x, phiOf(truthAt(0)).x);
+  const pm::tracker::MotionPrediction m; // gain 1
+  pm::tracker::PoseHistory h;
+  h.remember(tracked(truthAt(0)));
+  EXPECT_FALSE(m.moving(h)); // one pose: nothing to predict from
+  EXPECT_EQ(m.predict(h).x, phiOf(truthAt(0)).x);
   for (int k = 1; k < 6; ++k) {
-    m.remember(tracked(truthAt(k)));
-    ASSERT_TRUE(m.moving());
-    const pm::core::Phi p = m.predict(phiOf(truthAt(k))), next = phiOf(truthAt(k + 1));
+    h.remember(tracked(truthAt(k)));
+    ASSERT_TRUE(m.moving(h));
+    const pm::core::Phi p = m.predict(h), next = phiOf(truthAt(k + 1));
     EXPECT_LT(pm::core::translationDistanceMm(p, next), 1e-6) << k;
     EXPECT_LT(pm::core::rotationDistanceDeg(p, next), 1e-4) << k;
     EXPECT_GT(pm::core::rotationDistanceDeg(phiOf(truthAt(k)), next), 1.4); // the last pose itself is 1.5 deg behind
   }
   // The hand moves by M between frames: the target's own motion is still predicted, in the new hand frame.
   const vpHomogeneousMatrix M(0.004, -0.002, 0.003, vpMath::rad(2), vpMath::rad(-1), vpMath::rad(3));
-  m.transform(M);
-  const pm::core::Phi p = m.predict(phiOf(M * truthAt(5))), next = phiOf(M * truthAt(6));
+  h.transform(M);
+  const pm::core::Phi p = m.predict(h), next = phiOf(M * truthAt(6));
   EXPECT_LT(pm::core::translationDistanceMm(p, next), 1e-6);
   EXPECT_LT(pm::core::rotationDistanceDeg(p, next), 1e-4);
-  // Another pose than the last remembered (one the lock verifier moved to) is returned as it is.
-  const pm::core::Phi other{5, 5, 450, 0.1, 0, 0};
-  EXPECT_EQ(m.predict(other).z, other.z);
+  EXPECT_LT(pm::core::translationDistanceMm(h.last().phi, phiOf(M * truthAt(5))), 1e-6); // the last pose followed the hand too
+  // A jump to another pose (the lock verifier's) forgets the motion: the last pose as it is.
+  pm::tracker::PoseHistory jumped = h;
+  jumped.forgetMotion();
+  EXPECT_FALSE(m.moving(jumped));
+  EXPECT_EQ(m.predict(jumped).z, jumped.last().phi.z);
   // A frame the precise stage did not make forgets the motion; so does a lost frame.
-  pm::tracker::MotionPrediction f;
+  pm::tracker::PoseHistory f;
   f.remember(tracked(truthAt(0)));
   f.remember(tracked(truthAt(1)));
-  ASSERT_TRUE(f.moving());
+  ASSERT_TRUE(m.moving(f));
   f.remember(tracked(truthAt(2), false));
   f.remember(tracked(truthAt(3)));
-  EXPECT_FALSE(f.moving());
+  EXPECT_FALSE(m.moving(f));
   pm::tracker::TrackResult lost = tracked(truthAt(4));
   lost.state = pm::tracker::TrackState::Lost;
   f.remember(tracked(truthAt(4)));
-  ASSERT_TRUE(f.moving());
+  ASSERT_TRUE(m.moving(f));
   f.remember(lost);
-  EXPECT_FALSE(f.moving());
+  EXPECT_FALSE(m.moving(f));
   // A step past the largest turn (3 deg) is a jump: no prediction.
-  pm::tracker::MotionPrediction j;
+  pm::tracker::PoseHistory j;
   j.remember(tracked(truthAt(0)));
   j.remember(tracked(truthAt(3))); // 4.5 deg in one frame
-  EXPECT_FALSE(j.moving());
-  EXPECT_EQ(j.predict(phiOf(truthAt(3))).e1, phiOf(truthAt(3)).e1);
+  EXPECT_FALSE(m.moving(j));
+  EXPECT_EQ(m.predict(j).e1, phiOf(truthAt(3)).e1);
   // Gain 0: off; half the gain, half the step; bad parameters refused.
-  pm::tracker::MotionPredictionParams half;
-  half.gain = 0.5;
-  half.maxStepDeg = 6; // the two frames below are 3 deg apart
-  pm::tracker::MotionPrediction h(half);
-  h.remember(tracked(truthAt(0)));
-  h.remember(tracked(truthAt(2)));
-  const pm::core::Phi ph = h.predict(phiOf(truthAt(2)));
+  pm::tracker::MotionPredictionParams halfGain;
+  halfGain.gain = 0.5;
+  halfGain.maxStepDeg = 6; // the two frames below are 3 deg apart
+  pm::tracker::PoseHistory two;
+  two.remember(tracked(truthAt(0)));
+  two.remember(tracked(truthAt(2)));
+  const pm::core::Phi ph = pm::tracker::MotionPrediction(halfGain).predict(two);
   EXPECT_LT(pm::core::translationDistanceMm(ph, phiOf(truthAt(3))), 1e-6);
   EXPECT_LT(pm::core::rotationDistanceDeg(ph, phiOf(truthAt(3))), 1e-4);
   pm::tracker::MotionPredictionParams off;
   off.gain = 0;
-  pm::tracker::MotionPrediction o(off);
-  o.remember(tracked(truthAt(0)));
-  o.remember(tracked(truthAt(1)));
-  EXPECT_FALSE(o.moving());
+  EXPECT_FALSE(pm::tracker::MotionPrediction(off).moving(f));
+  EXPECT_FALSE(pm::tracker::MotionPrediction(off).moving(h));
   pm::tracker::MotionPredictionParams bad;
   bad.gain = -0.1;
   EXPECT_THROW(pm::tracker::MotionPrediction{bad}, pm::core::Error);
   bad = pm::tracker::MotionPredictionParams();
   bad.maxStepDeg = 0;
   EXPECT_THROW(pm::tracker::MotionPrediction{bad}, pm::core::Error);
+}
+
+TEST(PoseHistory, KeepsThePoseBeforeTheLastOnlyWhenBothWereTrackedAndFollowsTheHand)
+{
+  const auto frame = [](double x, pm::tracker::TrackState state) {
+    pm::tracker::TrackResult r;
+    r.phi = pm::core::Phi{x, -20, 500, 0.1, -0.05, 0.2};
+    r.hMo = pm::core::toHomogeneousMatrix(r.phi);
+    r.state = state;
+    return r;
+  };
+  pm::tracker::PoseHistory h;
+  EXPECT_EQ(h.last().state, pm::tracker::TrackState::Searching); // nothing seen yet
+  EXPECT_EQ(h.beforeLast(), nullptr);
+  h.remember(frame(10, pm::tracker::TrackState::Searching));
+  h.remember(frame(12, pm::tracker::TrackState::Tracking));
+  EXPECT_EQ(h.beforeLast(), nullptr); // the one before was not tracked
+  h.remember(frame(14, pm::tracker::TrackState::Tracking));
+  ASSERT_NE(h.beforeLast(), nullptr);
+  EXPECT_DOUBLE_EQ(h.beforeLast()->x, 12.0);
+  EXPECT_DOUBLE_EQ(h.last().phi.x, 14.0);
+  EXPECT_EQ(h.preciseCount(), 0); // none of them the precise stage's
+  // The hand moves 5 mm along its x axis: the target is 5 mm further along it, in both poses.
+  const vpHomogeneousMatrix M(0.005, 0, 0, 0, 0, 0);
+  h.transform(M);
+  EXPECT_NEAR(h.beforeLast()->x, 17.0, 1e-9);
+  EXPECT_NEAR(h.last().phi.x, 19.0, 1e-9);
+  EXPECT_NEAR(h.last().hMo[0][3], 0.019, 1e-12);
+  // A lost frame: nothing before it; a reset: its first frame, nothing before.
+  h.remember(frame(16, pm::tracker::TrackState::Lost));
+  EXPECT_EQ(h.beforeLast(), nullptr);
+  h.remember(frame(18, pm::tracker::TrackState::Tracking));
+  h.remember(frame(20, pm::tracker::TrackState::Tracking));
+  ASSERT_NE(h.beforeLast(), nullptr);
+  h.reset(frame(30, pm::tracker::TrackState::Tracking));
+  EXPECT_EQ(h.beforeLast(), nullptr);
+  EXPECT_DOUBLE_EQ(h.last().phi.x, 30.0);
 }
 
 TEST(Tracker, SearchingFramesScoreManyPosesCoarselyAndReportTheExactFitness)

@@ -183,10 +183,16 @@ TEST(SteadyFramePolicy, ItsWindowsHoldTheModelAtTheLastAndThePredictedPose)
   pm::tracker::SteadyFramePolicy s(p);
   pm::core::Phi before = c.truth, last = c.truth;
   before.x -= 30; // moving 30 mm a frame along x: the next pose is predicted 30 mm further
-  s.remember(before, true);
+  pm::tracker::TrackResult frame;
+  frame.state = TrackState::Tracking;
+  pm::tracker::PoseHistory history;
+  frame.phi = before;
+  history.remember(frame);
+  frame.phi = last;
+  history.remember(frame);
   pm::core::Phi next = last;
   next.x += 30;
-  const std::array<pm::core::PixelRect, 2> w = s.windows(fitness.scorer(), last);
+  const std::array<pm::core::PixelRect, 2> w = s.windows(fitness.scorer(), history);
   for (int cam = 0; cam < 2; ++cam) {
     for (const pm::core::Phi &q : {last, next}) {
       const pm::core::PixelRect f = fitness.footprint(q, cam);
@@ -300,11 +306,16 @@ TEST(LockVerifier, AWrongLockIsChallengedAndARightOneVerified)
   right.onState(TrackState::Searching, TrackState::Tracking, c.truth, anchorless);
   EXPECT_TRUE(right.verifying(TrackState::Tracking));
   EXPECT_FALSE(right.verified());
-  pm::tracker::TrackResult work;
-  for (int k = 0; k < 6 && !right.verified(); ++k)
-    EXPECT_FALSE(right.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), c.truth, fitness.evaluate(c.truth), anchorless, work));
+  pm::tracker::SearchWork work;
+  const pm::tracker::ScoredPose truth{c.truth, fitness.evaluate(c.truth)};
+  for (int k = 0; k < 6 && !right.verified(); ++k) {
+    const pm::tracker::LockVerifier::Challenge ch = right.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), truth, anchorless);
+    EXPECT_FALSE(ch.better.has_value());
+    EXPECT_GT(ch.run.evaluations, 0);
+    work = work.plus(ch.run);
+  }
   EXPECT_TRUE(right.verified());
-  EXPECT_GT(work.evaluations, 0);
+  EXPECT_GE(work.evaluations, vp.evaluations); // verified once its evaluations are spent
   EXPECT_FALSE(right.verifying(TrackState::Tracking));
   // A lock far off the crab: the challenger finds the crab, clearly better, and the tracker must move there.
   pm::core::Phi wrong = c.truth;
@@ -312,15 +323,16 @@ TEST(LockVerifier, AWrongLockIsChallengedAndARightOneVerified)
   wrong.y -= 60;
   pm::tracker::LockVerifier verifier(vp, sp, fitness.scorer(), scale);
   verifier.onState(TrackState::Searching, TrackState::Tracking, wrong, anchorless);
-  std::optional<std::pair<pm::core::Phi, double>> better;
+  std::optional<pm::tracker::ScoredPose> better;
+  const pm::tracker::ScoredPose off{wrong, fitness.evaluate(wrong)};
   for (int k = 0; k < 20 && !better; ++k)
-    better = verifier.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), wrong, fitness.evaluate(wrong), anchorless, work);
+    better = verifier.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), off, anchorless).better;
   ASSERT_TRUE(better.has_value());
-  EXPECT_LT(pm::core::translationDistanceMm(better->first, c.truth), 20.0);
-  EXPECT_DOUBLE_EQ(better->second, fitness.evaluate(better->first));
+  EXPECT_LT(pm::core::translationDistanceMm(better->phi, c.truth), 20.0);
+  EXPECT_DOUBLE_EQ(better->fitness, fitness.evaluate(better->phi));
   EXPECT_FALSE(verifier.verified()); // the new pose is verified in turn
   // A target no longer tracked is no longer verified, nor verifying.
-  verifier.onState(TrackState::Tracking, TrackState::Lost, better->first, anchorless);
+  verifier.onState(TrackState::Tracking, TrackState::Lost, better->phi, anchorless);
   EXPECT_FALSE(verifier.verifying(TrackState::Tracking));
   EXPECT_FALSE(verifier.verified());
 }
@@ -336,43 +348,49 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   const pm::tracker::Judgement judgement(params, 5.0, fitness.scorer(), scale, pm::precise::ModelErrorFloor({}, vpHomogeneousMatrix()));
   pm::core::Phi seen[8];
   EXPECT_EQ(judgement.competitors(c.truth, seen), 8u); // turned about its axis (7) and its tilt mirrored, all valid here
-  pm::tracker::TrackResult r;
-  r.phi = c.truth;
-  r.fitness = fitness.evaluate(c.truth);
-  r.quality = scale.quality(r.fitness);
-  r.state = TrackState::Tracking;
-  const pm::tracker::Evidence e = judgement.measure(fitness.frame(), r);
+  pm::tracker::RefinedPose refined;
+  refined.pose = pm::tracker::ScoredPose{c.truth, fitness.evaluate(c.truth)};
+  const double q = scale.quality(refined.pose.fitness);
+  const pm::tracker::Evidence e = judgement.measure(fitness.frame(), refined);
   // The cues' q is over the points not hidden (the stereo visibility): never under the frame's q.
   const pm::core::FitnessDetail d = fitness.evaluateDetail(c.truth);
   EXPECT_DOUBLE_EQ(e.cues.quality, scale.quality(0.5 * (d.visibleLeft + d.visibleRight)));
-  EXPECT_GE(e.cues.quality, r.quality);
+  EXPECT_GE(e.cues.quality, q);
   EXPECT_GT(e.cues.competitorMargin, 0.0); // the right pose stands above its turned copies
   EXPECT_GT(e.cues.inMatchMin, 0.5);
   EXPECT_FALSE(e.cues.precise); // a flat model: no precise stage
   // The state is the tracker's: the same evidence judged as a long verified track, and unverified.
   pm::tracker::JudgedState s;
-  s.recentBestQ = r.quality;
+  s.state = TrackState::Tracking;
+  s.recentBestQ = q;
   s.framesTracked = 30;
   s.verified = true;
-  judgement.judge(r, e, s);
+  const pm::tracker::Verdict r = judgement.judge(refined, e, s);
   EXPECT_EQ(r.cues.framesTracked, 30);
   EXPECT_TRUE(r.verified);
   EXPECT_EQ(r.trusted, r.confidence >= params.confidence.threshold);
-  pm::tracker::TrackResult u = r;
+  EXPECT_EQ(r.heldBy == nullptr, r.trusted);
   s.verified = false;
-  judgement.judge(u, e, s);
+  pm::tracker::Verdict u = judgement.judge(refined, e, s);
   EXPECT_FALSE(u.trusted); // never trusted unverified, whatever its confidence
+  EXPECT_STREQ(u.heldBy, "verification");
   EXPECT_LT(u.confidence, r.confidence);
   // The jump is measured from the last tracked pose, the drop from the recent best.
   pm::core::Phi last = c.truth;
   last.x -= 10;
   s.last = &last;
-  s.recentBestQ = r.quality + 0.1;
-  judgement.judge(u, e, s);
+  s.recentBestQ = q + 0.1;
+  u = judgement.judge(refined, e, s);
   EXPECT_NEAR(u.cues.jumpMm, 10.0, 1e-9);
   EXPECT_NEAR(u.cues.qualityDrop, 0.1, 1e-12);
+  // Not tracking: never trusted, held by the state.
+  s.state = TrackState::Lost;
+  s.verified = true;
+  u = judgement.judge(refined, e, s);
+  EXPECT_FALSE(u.trusted);
+  EXPECT_STREQ(u.heldBy, "lost");
   // As a first lock (one frame, unverified) it is less sure than as a long verified track.
-  EXPECT_LT(judgement.firstLockConfidence(e, r.quality, false), r.confidence);
+  EXPECT_LT(judgement.firstLockConfidence(e, q, false), r.confidence);
 }
 
 TEST(BackgroundLearning, ABackgroundThatTurnedIsLearntOnTrustedFramesAndTheSameOneChangesNothing)

@@ -4,11 +4,13 @@
 #include "pm/tracker/AscentRefinement.h"
 #include "pm/tracker/BackgroundLearning.h"
 #include "pm/tracker/FramePlan.h"
+#include "pm/tracker/FrameSteps.h"
 #include "pm/tracker/Judgement.h"
 #include "pm/tracker/LockState.h"
 #include "pm/tracker/LockVerifier.h"
 #include "pm/tracker/MotionPrediction.h"
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/tracker/PoseHistory.h"
 #include "pm/tracker/PoseSearch.h"
 #include "pm/tracker/PreciseRefinement.h"
 #include "pm/tracker/QualityScale.h"
@@ -32,15 +34,19 @@ void use(const pm::core::Phi &pose);
 
 // What an example leaves to its reader (declared, never defined: this file is compiled, never linked).
 void use(const vpHomogeneousMatrix &hMo);
-void moveTo(const std::pair<pm::core::Phi, double> &better);
+void moveTo(const pm::tracker::ScoredPose &better);
 pm::tracker::TrackResult trackFrom(const pm::core::Phi &start);
 
 // AscentRefinement.h
-void exampleAscentRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, pm::tracker::TrackResult &r, const pm::tracker::TrackResult &last)
+void exampleAscentRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame,
+                             const pm::tracker::ScoredPose &searched, const pm::tracker::PoseHistory &history, pm::tracker::ScoredPose &pose)
 {
   pm::tracker::AscentRefinement ascent(params.refinement.ascent, scorer);
-  if (ascent.active())
-    ascent.refine(frame, r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
+  if (ascent.active()) {
+    const pm::tracker::AscentRefinement::Climb c = ascent.refine(frame, searched, history);
+    if (c.kept)
+      pose = c.pose;                 // the climb's pose and F
+  }
 }
 
 // BackgroundLearning.h
@@ -50,6 +56,19 @@ void exampleBackgroundLearning(const pm::tracker::TrackerParams &params, const p
   // after each frame's judgement:
   if (const std::optional<double> hue = bg.learn(frame, result.phi, result.trusted))
     frame.setBackgroundHue(*hue);
+}
+
+// FrameSteps.h
+void exampleFrameSteps(const pm::core::Phi &phi, double F, const pm::tracker::SearchWork &work, pm::tracker::RefinementChain &chain,
+                       const pm::core::HueFrame &frame, const pm::tracker::PoseHistory &history, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR,
+                       bool locked, const pm::tracker::Judgement &judgement, const pm::tracker::JudgedState &state)
+{
+  const pm::tracker::SearchedPose searched{{phi, F}, work};
+  const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, IL, IR, locked);
+  const pm::tracker::Evidence e = judgement.measure(frame, refined);
+  const pm::tracker::Verdict verdict = judgement.judge(refined, e, state);
+  if (verdict.trusted)
+    use(pm::core::toHomogeneousMatrix(refined.pose.phi));
 }
 
 // FramePlan.h
@@ -64,22 +83,24 @@ void exampleFramePlan(const pm::tracker::TrackerParams &params, const pm::tracke
 
 // Judgement.h
 void exampleJudgement(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, const pm::precise::ModelErrorFloor &modelError,
-                      pm::tracker::TrackResult &r, const pm::tracker::TrackResult &last, const pm::tracker::LockState &lock, const pm::tracker::SteadyFramePolicy &steady,
+                      const pm::tracker::RefinedPose &refined, const pm::tracker::PoseHistory &history, const pm::tracker::LockState &lock, const pm::tracker::SteadyFramePolicy &steady,
                       const pm::tracker::LockVerifier &verifier)
 {
   pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, scorer, scale, modelError);
-  const pm::tracker::Evidence e = judgement.measure(frame, r);
-  const bool refused = lock.wouldLock(r.quality) &&
+  const pm::tracker::Evidence e = judgement.measure(frame, refined); // refined: the refinement chain's pose
+  const double q = scale.quality(refined.pose.fitness);
+  const bool refused = lock.wouldLock(q) &&
                        judgement.firstLockConfidence(e, steady.recentBestQ(), params.verifier.evaluations == 0) < params.lock.confidence;
   // ... the lock's state from q and refused (LockState.h), then:
   pm::tracker::JudgedState state;
-  state.last = &last.phi; // the last frame's pose, when it was tracked
+  state.state = lock.state();
+  state.last = &history.last().phi; // the last frame's pose, when it was tracked
   state.recentBestQ = steady.recentBestQ();
   state.framesTracked = lock.framesTracked();
   state.verified = verifier.verified();
-  judgement.judge(r, e, state);
-  if (r.trusted)
-    use(r.hMo);
+  const pm::tracker::Verdict verdict = judgement.judge(refined, e, state);
+  if (verdict.trusted)
+    use(pm::core::toHomogeneousMatrix(refined.pose.phi));
 }
 
 // LockState.h
@@ -95,27 +116,42 @@ void exampleLockState(const pm::tracker::TrackerParams &params, double q, double
 
 // LockVerifier.h
 void exampleLockVerifier(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, pm::tracker::TrackState lastState, pm::tracker::TrackState prev, const pm::tracker::FramePlan &plan,
-                         const pm::tracker::TrackResult &r, pm::tracker::TrackResult &work, const pm::tracker::PoseSearch &search)
+                         const pm::tracker::SearchedPose &searched, pm::tracker::SearchWork &work, const pm::tracker::ScoredPose &pose, pm::tracker::TrackState state,
+                         const pm::tracker::Verdict &verdict, const pm::tracker::PoseSearch &search)
 {
   pm::tracker::LockVerifier verifier(params.verifier, params.search, scorer, scale);
   if (verifier.verifying(lastState)) {
-    const auto better = verifier.challenge(frame, plan.challenger, r.phi, r.fitness, search.ga(), work);
-    if (better)
-      moveTo(*better); // a wrong first lock
+    const pm::tracker::LockVerifier::Challenge c = verifier.challenge(frame, plan.challenger, searched.pose, search.ga());
+    work = work.plus(c.run);
+    if (c.better)
+      moveTo(*c.better); // a wrong first lock
   }
-  verifier.onState(prev, r.state, r.phi, search.ga());                 // a new lock is verified on the next frames
-  verifier.afterJudgement(r.state, r.confidence, r.phi, search.ga()); // a doubtful lock again
+  verifier.onState(prev, state, pose.phi, search.ga());                      // a new lock is verified on the next frames
+  verifier.afterJudgement(state, verdict.confidence, pose.phi, search.ga()); // a doubtful lock again
 }
 
 // MotionPrediction.h
-void exampleMotionPrediction(const pm::tracker::TrackResult &last, const vpHomogeneousMatrix &hNowMhPrev)
+void exampleMotionPrediction(const vpHomogeneousMatrix &hNowMhPrev)
 {
-  pm::tracker::MotionPrediction motion;              // gain 1
+  const pm::tracker::MotionPrediction motion;        // gain 1
+  pm::tracker::PoseHistory history;
   for (;;) {
-    const pm::core::Phi start = motion.predict(last.phi); // last.phi moved on, or as it is
-    pm::tracker::TrackResult r = trackFrom(start);
-    motion.remember(r);                              // at the frame's end
-    motion.transform(hNowMhPrev);                    // the hand moved
+    const pm::core::Phi start = motion.predict(history); // the last pose moved on, or as it is
+    const pm::tracker::TrackResult r = trackFrom(start);
+    history.remember(r);                             // at the frame's end
+    history.transform(hNowMhPrev);                   // the hand moved
+  }
+}
+
+// PoseHistory.h
+pm::tracker::TrackResult trackFrame(const pm::tracker::PoseHistory &history);
+void examplePoseHistory(const vpHomogeneousMatrix &hNowMhPrev)
+{
+  pm::tracker::PoseHistory history;                 // nothing seen yet: last() is a searching frame
+  for (;;) {
+    const pm::tracker::TrackResult r = trackFrame(history); // the steps read history.last(), beforeLast(), ...
+    history.remember(r);                            // at the frame's end
+    history.transform(hNowMhPrev);                  // the hand moved
   }
 }
 
@@ -131,13 +167,15 @@ void examplePoseSearch(const pm::tracker::TrackerParams &params, const pm::core:
 }
 
 // PreciseRefinement.h
-void examplePreciseRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
-                               const pm::tracker::TrackResult &last, const pm::tracker::MotionPrediction &motion, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, pm::tracker::PoseSearch &search)
+void examplePreciseRefinement(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale,
+                              const pm::tracker::ScoredPose &searched, const pm::tracker::PoseHistory &history, const pm::tracker::MotionPrediction &motion, const vpImage<vpRGBa> &IL,
+                              const vpImage<vpRGBa> &IR, pm::tracker::PoseSearch &search)
 {
   pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, scorer, scale);
-  if (stage.refine(frame, r, last, motion.predict(last.phi), IL, IR)) {
+  const pm::tracker::PreciseRefinement::Attempt a = stage.refine(frame, searched, history, motion.predict(history), IL, IR);
+  if (a.kept) {
     pm::tracker::RmGaUpdate u;
-    u.inject = pm::tracker::RmGaUpdate::Inject{r.phi, r.fitness}; // the frame's pose is the stage's: it joins RM-GA
+    u.inject = pm::tracker::RmGaUpdate::Inject{a.pose.phi, a.pose.fitness}; // the frame's pose is the stage's: it joins RM-GA
     search.apply(u);
   }
 }
@@ -151,12 +189,15 @@ void exampleQualityScale(const pm::core::PhotoModel &model, const pm::core::Ster
 }
 
 // RefinementChain.h
-void exampleRefinementChain(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, pm::tracker::TrackResult &r,
-                            const pm::tracker::TrackResult &last, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, bool locked, pm::tracker::PoseSearch &search)
+void exampleRefinementChain(const pm::tracker::TrackerParams &params, const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale,
+                            const pm::tracker::SearchedPose &searched, const pm::tracker::PoseHistory &history, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, bool locked,
+                            pm::tracker::PoseSearch &search)
 {
   pm::tracker::RefinementChain chain(params.refinement, rig, model, scorer, scale);
+  const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, IL, IR, locked);
   pm::tracker::RmGaUpdate u;
-  u.inject = chain.refine(frame, r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
+  if (refined.precise) // the precise stage's pose joins RM-GA
+    u.inject = pm::tracker::RmGaUpdate::Inject{refined.pose.phi, refined.pose.fitness};
   search.apply(u);
 }
 
@@ -179,13 +220,13 @@ void exampleStaticDetection(const pm::core::StereoRig &rig, const pm::core::Phot
 }
 
 // SteadyFramePolicy.h
-void exampleSteadyFramePolicy(const pm::tracker::TrackerParams &params, bool verifying, const pm::core::StereoScorer &scorer, pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, const pm::core::Phi &lastPose,
+void exampleSteadyFramePolicy(const pm::tracker::TrackerParams &params, bool verifying, const pm::core::StereoScorer &scorer, pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR, const pm::tracker::PoseHistory &history,
                               pm::tracker::PoseSearch &search, pm::tracker::TrackState state)
 {
   pm::tracker::SteadyFramePolicy steady(params.steady);
   const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
   if (plan.windowed)
-    scorer.setImages(frame, IL, IR, steady.windows(scorer, lastPose));
+    scorer.setImages(frame, IL, IR, steady.windows(scorer, history));
   else
     scorer.setImages(frame, IL, IR);
   const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact);

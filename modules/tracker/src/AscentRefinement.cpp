@@ -16,20 +16,19 @@ AscentRefinement::AscentRefinement(const AscentParams &params, const core::Stere
 {
 }
 
-bool AscentRefinement::refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last)
+AscentRefinement::Climb AscentRefinement::refine(const core::HueFrame &frame, const ScoredPose &start, const PoseHistory &history) const
 {
   // The top of the smooth score near the frame's pose, or near the last frame's pose if that scores higher.
-  const core::Phi starts[2] = {r.phi, last.phi};
+  const TrackResult &last = history.last();
+  const core::Phi starts[2] = {start.phi, last.phi};
   const std::size_t n = last.state == TrackState::Tracking && last.phi.isValid() && m_p.climb.maxEvaluations > 1 ? 2 : 1;
   rmga::StereoObjective objective(m_scorer, frame); // the smooth score's gradient
   const rmga::SmoothAscentResult a = rmga::climbSmooth(objective, starts, n, m_p.climb);
-  r.ascentEvaluations = a.evaluations;
-  const double F = m_scorer.evaluate(frame, a.best);
-  if (!(F >= r.fitness - m_p.maxDrop))
-    return false;
-  r.phi = a.best;
-  r.fitness = F;
-  return true;
+  Climb c;
+  c.evaluations = a.evaluations;
+  c.pose = ScoredPose{a.best, m_scorer.evaluate(frame, a.best)};
+  c.kept = c.pose.fitness >= start.fitness - m_p.maxDrop;
+  return c;
 }
 
 } // namespace pm::tracker

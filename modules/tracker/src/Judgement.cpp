@@ -52,11 +52,12 @@ std::size_t Judgement::competitors(const core::Phi &phi, core::Phi *out) const
   return n;
 }
 
-Evidence Judgement::measure(const core::HueFrame &frame, const TrackResult &r) const
+Evidence Judgement::measure(const core::HueFrame &frame, const RefinedPose &refined) const
 {
   Evidence e;
+  const double quality = m_scale.quality(refined.pose.fitness);
   ConfidenceCues &c = e.cues;
-  const core::FitnessDetail d = m_scorer.evaluateDetail(frame, r.phi);
+  const core::FitnessDetail d = m_scorer.evaluateDetail(frame, refined.pose.phi);
   // Over the points not hidden: a right pose behind an occluder is judged as in the open.
   c.quality = m_scale.quality(0.5 * (d.visibleLeft + d.visibleRight));
   c.qualityMin = std::min(m_scale.quality(d.visibleLeft), m_scale.quality(d.visibleRight));
@@ -71,7 +72,7 @@ Evidence Judgement::measure(const core::HueFrame &frame, const TrackResult &r) c
   c.inMatchMin = std::min(inL, inR); // over the points not hidden: what is hidden leaves the confidence as it leaves F
   e.visibleShare = std::min(d.countsLeft.visibleShare(), d.countsRight.visibleShare());
   c.outBackgroundMin = std::min(outL, outR);
-  const core::Phi &phi = r.phi;
+  const core::Phi &phi = refined.pose.phi;
   const double r22 = 1.0 - 2.0 * (phi.e1 * phi.e1 + phi.e2 * phi.e2); // the model's z axis . the hand's
   c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;
   // Competing poses of the same object: turned about the model's z axis, or the tilt mirrored.
@@ -86,9 +87,9 @@ Evidence Judgement::measure(const core::HueFrame &frame, const TrackResult &r) c
   double qAlt = -1e9;
   for (std::size_t k = 0; k < nRivals; ++k)
     qAlt = std::max(qAlt, m_scale.quality(rivalF[k]));
-  c.competitorMargin = r.quality - qAlt;
-  if (r.precise) { // how well the precise stage's lines pin the pose (their sigmas, once), and how well they fit
-    const precise::PreciseResult &p = r.preciseResult;
+  c.competitorMargin = quality - qAlt;
+  if (refined.precise) { // how well the precise stage's lines pin the pose (their sigmas, once), and how well they fit
+    const precise::PreciseResult &p = refined.preciseResult;
     e.lineSigmas = precise::lineSigmas(p.information);
     const std::array<double, 6> &s = e.lineSigmas;
     c.precise = true;
@@ -112,23 +113,26 @@ double Judgement::firstLockConfidence(const Evidence &e, double recentBestQ, boo
   return m_p.confidence.confidence(lock);
 }
 
-void Judgement::judge(TrackResult &r, const Evidence &e, const JudgedState &state) const
+Verdict Judgement::judge(const RefinedPose &refined, const Evidence &e, const JudgedState &state) const
 {
-  ConfidenceCues &c = r.cues;
+  Verdict v;
+  ConfidenceCues &c = v.cues;
+  const core::Phi &phi = refined.pose.phi;
   c = e.cues;
-  c.qualityDrop = std::max(0.0, state.recentBestQ - r.quality);
-  c.jumpMm = state.last ? core::translationDistanceMm(r.phi, *state.last) : 0.0;
-  c.jumpDeg = state.last ? core::rotationDistanceDeg(r.phi, *state.last) : 0.0;
+  c.qualityDrop = std::max(0.0, state.recentBestQ - m_scale.quality(refined.pose.fitness));
+  c.jumpMm = state.last ? core::translationDistanceMm(phi, *state.last) : 0.0;
+  c.jumpDeg = state.last ? core::rotationDistanceDeg(phi, *state.last) : 0.0;
   c.framesTracked = state.framesTracked;
   c.verified = state.verified;
-  c.tracking = r.state == TrackState::Tracking;
-  if (r.precise)
-    r.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, r.preciseResult.residualPx, m_modelError.at(r.hMo));
-  r.verified = state.verified;
-  r.visibleShare = e.visibleShare;
-  r.confidence = m_p.confidence.confidence(c);
-  r.trusted = c.tracking && r.verified && r.confidence >= m_p.confidence.threshold;
-  r.heldBy = r.trusted ? nullptr : !c.tracking ? toString(r.state) : !r.verified ? "verification" : m_p.confidence.weakestCueName(c);
+  c.tracking = state.state == TrackState::Tracking;
+  if (refined.precise)
+    v.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, refined.preciseResult.residualPx, m_modelError.at(core::toHomogeneousMatrix(phi)));
+  v.verified = state.verified;
+  v.visibleShare = e.visibleShare;
+  v.confidence = m_p.confidence.confidence(c);
+  v.trusted = c.tracking && v.verified && v.confidence >= m_p.confidence.threshold;
+  v.heldBy = v.trusted ? nullptr : !c.tracking ? toString(state.state) : !v.verified ? "verification" : m_p.confidence.weakestCueName(c);
+  return v;
 }
 
 } // namespace pm::tracker

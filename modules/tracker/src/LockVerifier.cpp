@@ -52,10 +52,10 @@ void LockVerifier::start(const core::Phi &lock, const rmga::RmGa &ga)
   m_challenger.restart(1, 1000000);
 }
 
-std::optional<std::pair<core::Phi, double>> LockVerifier::challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget,
-                                                                     const core::Phi &pose, double fitness, const rmga::RmGa &ga,
-                                                                     TrackResult &work)
+LockVerifier::Challenge LockVerifier::challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget, const ScoredPose &tracked,
+                                                const rmga::RmGa &ga)
 {
+  const core::Phi &pose = tracked.phi;
   rmga::StereoObjective objective(m_scorer, frame, m_coarse ? rmga::StereoObjective::Score::Coarse : rmga::StereoObjective::Score::Fitness,
                                   m_rejectMargin);
   rmga::FrameResult c = m_challenger.evolve(objective, budget);
@@ -64,21 +64,18 @@ std::optional<std::pair<core::Phi, double>> LockVerifier::challenge(const core::
     ++c.evaluations;
     ++c.candidates;
   }
-  work.evaluations += c.evaluations;
-  work.candidates += c.candidates;
-  work.generations += c.generations;
   const double apartMm = core::translationDistanceMm(c.best, pose);
   const bool far = apartMm > m_p.farMm || core::rotationDistanceDeg(c.best, pose) > m_p.farDeg;
-  const double qChallenger = m_scale.quality(c.fitness), q = m_scale.quality(fitness);
+  const double qChallenger = m_scale.quality(c.fitness), q = m_scale.quality(tracked.fitness);
   if (far && qChallenger > q + m_p.switchMargin) { // a clearly better pose elsewhere: verified in turn
     start(c.best, ga);
-    return std::make_pair(c.best, c.fitness);
+    return Challenge{c, ScoredPose{c.best, c.fitness}};
   }
   if (far && apartMm < m_p.sameObjectMm && qChallenger > q - m_p.margin)
     start(pose, ga); // another pose of the same object scores as well: ambiguous, look again
   else if ((m_left -= std::min(m_left, c.evaluations)) == 0)
     m_verified = true;
-  return std::nullopt;
+  return Challenge{c, std::nullopt};
 }
 
 void LockVerifier::onState(TrackState prev, TrackState state, const core::Phi &pose, const rmga::RmGa &ga)

@@ -16,57 +16,49 @@ void MotionPredictionParams::validate() const
 
 MotionPrediction::MotionPrediction(const MotionPredictionParams &params) : m_params(params) { params.validate(); }
 
-core::Phi MotionPrediction::predict(const core::Phi &last) const
+bool MotionPrediction::step(const vpHomogeneousMatrix &prev, const vpHomogeneousMatrix &last, vpTranslationVector &dt,
+                            vpRotationMatrix &dR) const
 {
-  // Only the latest pose remembered moves on (another, e.g. one the lock verifier jumped to, stays).
-  const core::Phi remembered = core::fromHomogeneousMatrix(m_last);
-  if (!moving() || core::translationDistanceMm(last, remembered) > 1e-3 || core::rotationDistanceDeg(last, remembered) > 1e-3)
-    return last;
-  vpHomogeneousMatrix next;
-  next.insert(vpRotationMatrix(m_dR * m_last.getRotationMatrix()));
-  next.insert(vpTranslationVector(m_last.getTranslationVector() + m_dt));
-  const core::Phi p = core::fromHomogeneousMatrix(next);
-  return p.isValid() ? p : last;
-}
-
-void MotionPrediction::remember(const TrackResult &r)
-{
-  if (!r.precise || r.state != TrackState::Tracking) {
-    m_count = 0;
-    return;
-  }
-  m_prev = m_last;
-  m_last = r.hMo;
-  m_count = m_count >= 1 ? 2 : 1;
-  updateStep();
-}
-
-void MotionPrediction::transform(const vpHomogeneousMatrix &hNowMhPrev)
-{
-  if (m_count == 0)
-    return;
-  m_prev = hNowMhPrev * m_prev;
-  m_last = hNowMhPrev * m_last;
-  updateStep();
-}
-
-void MotionPrediction::updateStep()
-{
-  m_stepOk = false;
-  if (m_count < 2 || !m_params.enabled())
-    return;
-  const vpTranslationVector dt = m_last.getTranslationVector() - m_prev.getTranslationVector();
-  const vpThetaUVector turn(vpRotationMatrix(m_last.getRotationMatrix() * m_prev.getRotationMatrix().t()));
-  const double stepMm = 1000.0 * std::sqrt(dt.sumSquare());
+  const vpTranslationVector d = last.getTranslationVector() - prev.getTranslationVector();
+  const vpThetaUVector turn(vpRotationMatrix(last.getRotationMatrix() * prev.getRotationMatrix().t()));
+  const double stepMm = 1000.0 * std::sqrt(d.sumSquare());
   const double turnDeg = std::sqrt(turn.sumSquare()) * 180.0 / M_PI;
   if (!(stepMm <= m_params.maxStepMm) || !(turnDeg <= m_params.maxStepDeg))
-    return;
-  m_dt = dt * m_params.gain;
+    return false;
+  dt = d * m_params.gain;
   vpThetaUVector scaled;
   for (unsigned int k = 0; k < 3; ++k)
     scaled[k] = m_params.gain * turn[k];
-  m_dR.buildFrom(scaled);
-  m_stepOk = true;
+  dR.buildFrom(scaled);
+  return true;
+}
+
+bool MotionPrediction::moving(const PoseHistory &history) const
+{
+  vpTranslationVector dt;
+  vpRotationMatrix dR;
+  return history.preciseCount() >= 2 && m_params.enabled() && step(history.precisePrev(), history.preciseLast(), dt, dR);
+}
+
+core::Phi MotionPrediction::predict(const PoseHistory &history) const
+{
+  const core::Phi &last = history.last().phi;
+  if (history.preciseCount() < 2 || !m_params.enabled())
+    return last;
+  // Only the latest precise pose moves on (another, e.g. one the lock verifier jumped to, stays).
+  const vpHomogeneousMatrix &latest = history.preciseLast();
+  const core::Phi remembered = core::fromHomogeneousMatrix(latest);
+  if (core::translationDistanceMm(last, remembered) > 1e-3 || core::rotationDistanceDeg(last, remembered) > 1e-3)
+    return last;
+  vpTranslationVector dt;
+  vpRotationMatrix dR;
+  if (!step(history.precisePrev(), latest, dt, dR))
+    return last;
+  vpHomogeneousMatrix next;
+  next.insert(vpRotationMatrix(dR * latest.getRotationMatrix()));
+  next.insert(vpTranslationVector(latest.getTranslationVector() + dt));
+  const core::Phi p = core::fromHomogeneousMatrix(next);
+  return p.isValid() ? p : last;
 }
 
 } // namespace pm::tracker

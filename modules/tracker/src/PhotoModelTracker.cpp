@@ -71,37 +71,28 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
 {
   const Clock clock;
   // What the frame sees (its hue planes, the background's hue) is m_fitness.frame(): made by plan (and
-  // by search on an escalation, by completeHue for the judgement), and given to every part that scores.
+  // by search on an escalation, by completeHue for the judgement), and given to every step that scores.
   const core::HueFrame &hues = m_fitness.frame();
-  const FramePlan frame = plan(left, right, clock);                      // 1. steady? the hue planes; the budgets
+  const FramePlan frame = plan(left, right, clock);                             // 1. steady? the hue planes; the budgets
   RmGaUpdate update;
-  TrackResult r = search(frame, left, right, clock);                     // 2. RM-GA (escalated if a steady frame falls)
-  if (frame.verifying)
-    challenge(frame, r, update);                                         // 3. the lock verifier's challenger
+  const SearchedPose found = search(frame, left, right, clock);                 // 2. RM-GA (escalated if a steady frame falls)
+  const SearchedPose searched = challenge(frame, found, update);                // 3. the lock verifier's challenger, if verifying
   const double searchedMs = clock.ms();
-  const bool locked = m_scale.quality(r.fitness) >= m_params.lock.quality;
-  update.inject = m_refinement.refine(hues, r, m_last, left, right, locked); // 4. the refinement chain
+  const bool locked = m_scale.quality(searched.pose.fitness) >= m_params.lock.quality;
+  const RefinedPose refined = m_refinement.refine(hues, searched.pose, m_history, left, right, locked); // 4. the refinement chain
   const double refinedMs = clock.ms();
-  r.hMo = core::toHomogeneousMatrix(r.phi);
-  r.quality = m_scale.quality(r.fitness);
-  completeHue(frame, r, left, right);
-  const Evidence evidence = m_judgement.measure(hues, r);                // 5. the judgement's evidence, once
-  const TrackState prev = m_lock.state();
-  update.restart = updateState(r, evidence);                             // 6. searching, tracking or lost
-  judge(r, evidence, prev);                                              // 7. confidence, trust, uncertainty
-  m_lock.onJudged(r.confidence, r.trusted);
-  if (r.trusted) // where the target was last seen for sure: the restarts' anchor
-    update.anchor = r.phi;
-  m_search.apply(update);                                                // 8. RM-GA's changes, in one place
-  m_verifier.afterJudgement(r.state, r.confidence, r.phi, m_search.ga());
-  m_refinement.learn(r);
-  r.backgroundHueDeg = m_fitness.backgroundHue(); // what the frame was scored with
-  if (const std::optional<double> hue = m_background.learn(hues, r.phi, r.trusted)) // 9. the background's hue as seen now
+  completeHue(frame, searched, refined.pose.phi, left, right);
+  const Evidence evidence = m_judgement.measure(hues, refined);                // 5. the judgement's evidence, once
+  update.restart = updateState(refined.pose, evidence);                        // 6. searching, tracking or lost
+  const TrackState state = m_lock.state();
+  const Verdict verdict = judge(refined, evidence);                            // 7. confidence, trust, uncertainty
+  afterJudgement(refined, verdict, update);                                    // 8. what the parts learn and ask of RM-GA
+  const double backgroundHueDeg = m_fitness.backgroundHue();                   // what the frame was scored with
+  if (const std::optional<double> hue = m_background.learn(hues, refined.pose.phi, verdict.trusted)) // 9. the background's hue as seen now
     useBackgroundHue(*hue);
-  r.computeMs = clock.ms();
-  r.stageMs = {frame.hueMs, searchedMs - frame.hueMs, refinedMs - searchedMs, r.computeMs - refinedMs};
-  m_steady.remember(m_last.phi, prev == TrackState::Tracking && r.state == TrackState::Tracking);
-  m_last = r;
+  const double computeMs = clock.ms();
+  const TrackResult r = assembled(searched, refined, state, verdict, backgroundHueDeg, {frame.hueMs, searchedMs, refinedMs, computeMs});
+  m_history.remember(r);
   return r;
 }
 
@@ -109,7 +100,7 @@ FramePlan PhotoModelTracker::plan(const vpImage<vpRGBa> &left, const vpImage<vpR
 {
   FramePlan frame = m_steady.plan(m_verifier.verifying(m_lock.state()));
   if (frame.windowed)
-    m_fitness.setImages(left, right, m_steady.windows(m_fitness.scorer(), m_last.phi));
+    m_fitness.setImages(left, right, m_steady.windows(m_fitness.scorer(), m_history));
   else
     m_fitness.setImages(left, right);
   frame.hueMs = clock.ms();
@@ -117,14 +108,16 @@ FramePlan PhotoModelTracker::plan(const vpImage<vpRGBa> &left, const vpImage<vpR
   return frame;
 }
 
-TrackResult PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock)
+SearchedPose PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock)
 {
   const PoseSearch::Scoring scoring = m_lock.state() == TrackState::Tracking ? PoseSearch::Scoring::Exact : PoseSearch::Scoring::Coarse;
-  rmga::FrameResult fr = m_search.evolve(m_fitness.frame(), frame.main, scoring); // coarse until tracked
-  TrackResult r;
+  const rmga::FrameResult fr = m_search.evolve(m_fitness.frame(), frame.main, scoring); // coarse until tracked
+  SearchedPose s;
+  s.pose = ScoredPose{fr.best, fr.fitness};
+  s.work = SearchWork().plus(fr);
   if (frame.steady && m_steady.escalates(m_scale.quality(fr.fitness))) {
     // The steady frame went wrong: the rest of the whole budget at once, on the whole images.
-    r.escalated = true;
+    s.escalated = true;
     if (frame.windowed)
       m_fitness.setImages(left, right);
     rmga::FrameBudget rest = frame.mainWhole;
@@ -133,78 +126,119 @@ TrackResult PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRG
     else
       rest.milliseconds = std::max(0.05, rest.milliseconds - (clock.ms() - frame.hueMs));
     const rmga::FrameResult more = m_search.evolve(m_fitness.frame(), rest, PoseSearch::Scoring::Exact, PoseSearch::Generations::SameFrame);
-    fr.best = more.best;
-    fr.fitness = more.fitness;
-    fr.evaluations += more.evaluations;
-    fr.candidates += more.candidates;
-    fr.generations += more.generations;
+    s.pose = ScoredPose{more.best, more.fitness};
+    s.work = s.work.plus(more);
   }
-  r.phi = fr.best;
-  r.fitness = fr.fitness;
-  r.evaluations = fr.evaluations;
-  r.candidates = fr.candidates;
-  r.generations = fr.generations;
-  r.steady = frame.steady && !r.escalated;
-  return r;
+  s.steady = frame.steady && !s.escalated;
+  return s;
 }
 
-void PhotoModelTracker::challenge(const FramePlan &frame, TrackResult &r, RmGaUpdate &update)
+SearchedPose PhotoModelTracker::challenge(const FramePlan &frame, const SearchedPose &searched, RmGaUpdate &update)
 {
-  const auto better = m_verifier.challenge(m_fitness.frame(), frame.challenger, r.phi, r.fitness, m_search.ga(), r);
-  if (!better)
-    return;
+  if (!frame.verifying)
+    return searched;
+  const LockVerifier::Challenge c = m_verifier.challenge(m_fitness.frame(), frame.challenger, searched.pose, m_search.ga());
+  SearchedPose s = searched;
+  s.work = s.work.plus(c.run);
+  if (!c.better)
+    return s;
   // A clearly better pose elsewhere (a wrong first lock): the tracker moves there.
-  r.phi = better->first;
-  r.fitness = better->second;
-  r.switched = true;
-  update.reseed = RmGaUpdate::Reseed{better->first, m_params.search.initSpread};
-  m_refinement.reset(); // the pose jumped: the tilt filter and the motion start again
+  s.pose = *c.better;
+  s.switched = true;
+  update.reseed = RmGaUpdate::Reseed{c.better->phi, m_params.search.initSpread};
+  m_refinement.reset();     // the pose jumped: the tilt filter starts again ...
+  m_history.forgetMotion(); // ... and so does the motion
+  return s;
 }
 
-void PhotoModelTracker::completeHue(const FramePlan &frame, const TrackResult &r, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+void PhotoModelTracker::completeHue(const FramePlan &frame, const SearchedPose &searched, const core::Phi &phi, const vpImage<vpRGBa> &left,
+                                    const vpImage<vpRGBa> &right)
 {
-  if (!frame.windowed || r.escalated)
+  if (!frame.windowed || searched.escalated)
     return;
   // The judgement scores on the whole images: the hue under the poses it looks at, where the windows left it out.
   std::array<core::Phi, 9> seen;
-  seen[0] = r.phi;
-  const std::size_t n = 1 + m_judgement.competitors(r.phi, seen.data() + 1);
+  seen[0] = phi;
+  const std::size_t n = 1 + m_judgement.competitors(phi, seen.data() + 1);
   m_fitness.addHueUnder(left, right, seen.data(), n);
 }
 
-RmGaUpdate::Restart PhotoModelTracker::updateState(TrackResult &r, const Evidence &evidence)
+RmGaUpdate::Restart PhotoModelTracker::updateState(const ScoredPose &pose, const Evidence &evidence)
 {
   // A new lock only if it would not be plainly wrong (its confidence as a first, unverified lock).
-  const bool refused = m_params.lock.confidence > 0 && m_lock.wouldLock(r.quality) &&
+  const double quality = m_scale.quality(pose.fitness);
+  const bool refused = m_params.lock.confidence > 0 && m_lock.wouldLock(quality) &&
                        m_judgement.firstLockConfidence(evidence, m_steady.recentBestQ(), m_params.verifier.evaluations == 0) <
                            m_params.lock.confidence;
   const TrackState prev = m_lock.state();
-  const RmGaUpdate::Restart restart = m_lock.update(r.quality, refused);
-  r.state = m_lock.state();
-  m_verifier.onState(prev, r.state, r.phi, m_search.ga()); // a new lock is verified on the next frames
-  m_steady.update(r.state, r.quality);
+  const RmGaUpdate::Restart restart = m_lock.update(quality, refused);
+  const TrackState state = m_lock.state();
+  m_verifier.onState(prev, state, pose.phi, m_search.ga()); // a new lock is verified on the next frames
+  m_steady.update(state, quality);
   return restart;
 }
 
-void PhotoModelTracker::judge(TrackResult &r, const Evidence &evidence, TrackState prev) const
+Verdict PhotoModelTracker::judge(const RefinedPose &refined, const Evidence &evidence) const
 {
+  const TrackResult &last = m_history.last();
   JudgedState s;
-  s.last = prev == TrackState::Tracking ? &m_last.phi : nullptr;
+  s.state = m_lock.state();
+  s.last = last.state == TrackState::Tracking ? &last.phi : nullptr;
   s.recentBestQ = m_steady.recentBestQ();
   s.framesTracked = m_lock.framesTracked();
   s.verified = m_verifier.verified();
-  m_judgement.judge(r, evidence, s);
+  return m_judgement.judge(refined, evidence, s);
 }
 
-void PhotoModelTracker::reset(TrackState state, Start start)
+void PhotoModelTracker::afterJudgement(const RefinedPose &refined, const Verdict &verdict, RmGaUpdate &update)
 {
-  const bool verified = start == Start::Verified;
-  m_last = TrackResult();
-  m_last.state = state;
-  m_last.verified = verified;
-  m_lock.reset(state);
+  m_lock.onJudged(verdict.confidence, verdict.trusted);
+  if (refined.precise) // the precise stage's pose joins RM-GA's population
+    update.inject = RmGaUpdate::Inject{refined.pose.phi, refined.pose.fitness};
+  if (verdict.trusted) // where the target was last seen for sure: the restarts' anchor
+    update.anchor = refined.pose.phi;
+  m_search.apply(update); // RM-GA's changes, in one place; the verifier below starts from the population they leave
+  m_verifier.afterJudgement(m_lock.state(), verdict.confidence, refined.pose.phi, m_search.ga());
+  m_refinement.learn(refined, verdict);
+}
+
+TrackResult PhotoModelTracker::assembled(const SearchedPose &searched, const RefinedPose &refined, TrackState state, const Verdict &verdict,
+                                         double backgroundHueDeg, const std::array<double, 4> &clockMs) const
+{
+  TrackResult r;
+  r.phi = refined.pose.phi;
+  r.hMo = core::toHomogeneousMatrix(r.phi);
+  r.fitness = refined.pose.fitness;
+  r.quality = m_scale.quality(r.fitness);
+  r.state = state;
+  r.evaluations = searched.work.evaluations;
+  r.candidates = searched.work.candidates;
+  r.generations = searched.work.generations;
+  r.stageMs = {clockMs[0], clockMs[1] - clockMs[0], clockMs[2] - clockMs[1], clockMs[3] - clockMs[2]};
+  r.computeMs = clockMs[3];
+  r.steady = searched.steady;
+  r.escalated = searched.escalated;
+  r.switched = searched.switched;
+  r.ascentEvaluations = refined.ascentEvaluations;
+  r.precise = refined.precise;
+  r.preciseResult = refined.preciseResult;
+  r.uncertainty = verdict.uncertainty;
+  r.cues = verdict.cues;
+  r.visibleShare = verdict.visibleShare;
+  r.backgroundHueDeg = backgroundHueDeg;
+  r.confidence = verdict.confidence;
+  r.verified = verdict.verified;
+  r.trusted = verdict.trusted;
+  r.heldBy = verdict.heldBy;
+  return r;
+}
+
+void PhotoModelTracker::reset(const TrackResult &first)
+{
+  m_history.reset(first);
+  m_lock.reset(first.state);
   m_steady.reset();
-  m_verifier.reset(verified);
+  m_verifier.reset(first.verified);
   m_refinement.reset();
   useBackgroundHue(m_background.reset());
 }
@@ -218,16 +252,19 @@ void PhotoModelTracker::useBackgroundHue(double deg)
 void PhotoModelTracker::initialize()
 {
   m_search.initialize();
-  reset(TrackState::Searching, Start::Unverified);
+  reset(TrackResult()); // searching, nothing verified
 }
 
 void PhotoModelTracker::initFromPose(const vpHomogeneousMatrix &hMo)
 {
   const core::Phi p = core::fromHomogeneousMatrix(hMo);
   m_search.initFromPose(p);
-  reset(TrackState::Tracking, Start::Verified); // a pose given is taken as verified
-  m_last.hMo = hMo;
-  m_last.phi = p;
+  TrackResult given;
+  given.state = TrackState::Tracking;
+  given.verified = true; // a pose given is taken as verified
+  given.hMo = hMo;
+  given.phi = p;
+  reset(given);
 }
 
 void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
@@ -240,10 +277,8 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
   };
   m_search.transform(moved);
   m_verifier.transform(moved);
-  m_steady.transform(moved);
   m_refinement.transform(hNowMhPrev);
-  m_last.hMo = hNowMhPrev * m_last.hMo;
-  m_last.phi = core::fromHomogeneousMatrix(m_last.hMo);
+  m_history.transform(hNowMhPrev);
 }
 
 } // namespace pm::tracker

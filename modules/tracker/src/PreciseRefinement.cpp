@@ -32,11 +32,11 @@ PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, cons
   m_stage = std::make_unique<precise::PreciseStage>(rig, model, stage);
 }
 
-bool PreciseRefinement::refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last, const core::Phi &predicted,
-                               const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+PreciseRefinement::Attempt PreciseRefinement::refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history,
+                                                     const core::Phi &predicted, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
 {
   m_stage->setImages(left, right);
-  const double minF = r.fitness - m_scale.fitnessSpan(m_p.maxDropQ);
+  const double minF = searched.fitness - m_scale.fitnessSpan(m_p.maxDropQ);
   auto acceptable = [&](const precise::PreciseResult &p, const core::Phi &start, double &F) {
     if (!p.ok || core::translationDistanceMm(p.phi, start) > m_p.maxMoveMm || core::rotationDistanceDeg(p.phi, start) > m_p.maxMoveDeg)
       return false;
@@ -46,40 +46,42 @@ bool PreciseRefinement::refine(const core::HueFrame &frame, TrackResult &r, cons
   // The lines and interior points hidden by something in front are looked for only where the
   // fitness finds part of the target hidden at the search's pose (lookForHiddenBelow): on a clear
   // view the stage is the one it always was (and pays nothing for it).
-  const core::FitnessDetail seen = m_scorer.evaluateDetail(frame, r.phi);
+  const core::FitnessDetail seen = m_scorer.evaluateDetail(frame, searched.phi);
   const bool lookForHidden = std::min(seen.countsLeft.visibleShare(), seen.countsRight.visibleShare()) < m_p.lookForHiddenBelow;
   m_lookedForHidden = lookForHidden;
+  const TrackResult &last = history.last();
   const bool haveLast = last.state == TrackState::Tracking && last.precise && last.phi.isValid();
-  const bool near = haveLast && core::translationDistanceMm(r.phi, predicted) <= m_p.restartMm &&
-                    core::rotationDistanceDeg(r.phi, predicted) <= m_p.restartDeg;
+  const bool near = haveLast && core::translationDistanceMm(searched.phi, predicted) <= m_p.restartMm &&
+                    core::rotationDistanceDeg(searched.phi, predicted) <= m_p.restartDeg;
+  Attempt a;
   precise::PreciseResult best;
   double bestF = 0;
   bool found = false;
   if (haveLast) {
     // The target moves little between frames: the stage starts where the last frames say it is now.
     const precise::PreciseResult fromLast = m_stage->refine(predicted, true, lookForHidden);
-    r.preciseResult = fromLast;
+    a.result = fromLast;
     found = acceptable(fromLast, predicted, bestF);
     if (found)
       best = fromLast;
   }
   if (!near || !found) {
-    const precise::PreciseResult fromSearch = m_stage->refine(r.phi, false, lookForHidden);
+    const precise::PreciseResult fromSearch = m_stage->refine(searched.phi, false, lookForHidden);
     double F = 0;
-    if (acceptable(fromSearch, r.phi, F) && (!found || fromSearch.residualPx < best.residualPx)) {
+    if (acceptable(fromSearch, searched.phi, F) && (!found || fromSearch.residualPx < best.residualPx)) {
       best = fromSearch;
       bestF = F;
       found = true;
     }
     if (!found)
-      r.preciseResult = fromSearch;
+      a.result = fromSearch;
   }
   if (!found)
-    return false;
-  r.preciseResult = best;
-  r.phi = best.phi;
-  r.fitness = bestF;
-  return true;
+    return a;
+  a.result = best;
+  a.pose = ScoredPose{best.phi, bestF};
+  a.kept = true;
+  return a;
 }
 
 } // namespace pm::tracker

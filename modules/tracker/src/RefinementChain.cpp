@@ -18,37 +18,45 @@ RefinementChain::RefinementChain(const RefinementParams &params, const core::Ste
 {
 }
 
-std::optional<RmGaUpdate::Inject> RefinementChain::refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left,
-                                                          const vpImage<vpRGBa> &right, bool locked)
+RefinedPose RefinementChain::refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const vpImage<vpRGBa> &left,
+                                    const vpImage<vpRGBa> &right, bool locked)
 {
+  RefinedPose r;
+  r.pose = searched;
   // 1. The precise stage: a pose it keeps is final.
   if (locked && m_precise.active()) {
-    r.precise = m_precise.refine(frame, r, last, m_motion.predict(last.phi), left, right);
-    if (r.precise) {
+    const PreciseRefinement::Attempt a = m_precise.refine(frame, searched, history, m_motion.predict(history), left, right);
+    r.preciseResult = a.result;
+    if (a.kept) {
+      r.precise = true;
+      r.pose = a.pose;
       m_tilt.reset();
-      return RmGaUpdate::Inject{r.phi, r.fitness};
+      return r;
     }
   }
   // 2. The smooth ascent.
-  if (locked && m_ascent.active())
-    m_ascent.refine(frame, r, last);
+  if (locked && m_ascent.active()) {
+    const AscentRefinement::Climb c = m_ascent.refine(frame, r.pose, history);
+    r.ascentEvaluations = c.evaluations;
+    if (c.kept)
+      r.pose = c.pose;
+  }
   // 3. The tilt filter, on frames tracked in a row.
   if (!m_tiltParams.passesThrough()) {
-    if (locked && last.state == TrackState::Tracking) {
-      r.phi = m_tilt.update(r.phi);
-      r.fitness = m_scorer.evaluate(frame, r.phi);
+    if (locked && history.last().state == TrackState::Tracking) {
+      r.pose.phi = m_tilt.update(r.pose.phi);
+      r.pose.fitness = m_scorer.evaluate(frame, r.pose.phi);
     } else {
       m_tilt.reset();
     }
   }
-  return std::nullopt;
+  return r;
 }
 
-void RefinementChain::learn(const TrackResult &r)
+void RefinementChain::learn(const RefinedPose &refined, const Verdict &verdict)
 {
-  if (r.precise && r.trusted) // the scene's colours along the outline, where the pose is trusted
-    m_precise.learnColours(r.phi);
-  m_motion.remember(r);
+  if (refined.precise && verdict.trusted) // the scene's colours along the outline, where the pose is trusted
+    m_precise.learnColours(refined.pose.phi);
 }
 
 } // namespace pm::tracker

@@ -23,13 +23,14 @@ FramePlan SteadyFramePolicy::plan(bool verifying) const
   return p;
 }
 
-std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoScorer &scorer, const core::Phi &last) const
+std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoScorer &scorer, const PoseHistory &history) const
 {
   std::array<core::PixelRect, 2> w;
+  const core::Phi &last = history.last().phi;
   core::Phi next = last; // constant velocity from the two last frames (else the last pose again)
-  if (m_haveBeforeLast)
+  if (const core::Phi *before = history.beforeLast())
     for (std::size_t i = 0; i < 6; ++i)
-      next[i] = 2 * last[i] - m_beforeLast[i];
+      next[i] = 2 * last[i] - (*before)[i];
   if (!next.isValid())
     next = last;
   for (int cam = 0; cam < 2; ++cam) {
@@ -47,23 +48,10 @@ void SteadyFramePolicy::update(TrackState state, double q)
   m_steadyFrames = tracking && q >= m_recentBestQ - m_p.qualityDrop ? m_steadyFrames + 1 : 0;
 }
 
-void SteadyFramePolicy::remember(const core::Phi &last, bool bothTracked)
-{
-  m_beforeLast = last;
-  m_haveBeforeLast = bothTracked;
-}
-
-void SteadyFramePolicy::transform(const std::function<core::Phi(const core::Phi &)> &moved)
-{
-  if (m_haveBeforeLast)
-    m_beforeLast = moved(m_beforeLast);
-}
-
 void SteadyFramePolicy::reset()
 {
   m_steadyFrames = 0;
   m_recentBestQ = 0;
-  m_haveBeforeLast = false;
 }
 
 } // namespace pm::tracker

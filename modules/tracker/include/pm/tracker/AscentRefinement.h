@@ -13,14 +13,18 @@
 
   \code
     pm::tracker::AscentRefinement ascent(params.refinement.ascent, scorer);
-    if (ascent.active())
-      ascent.refine(frame, r, last);   // r.phi, r.fitness: the climb's when kept; r.ascentEvaluations
+    if (ascent.active()) {
+      const pm::tracker::AscentRefinement::Climb c = ascent.refine(frame, searched, history);
+      if (c.kept)
+        pose = c.pose;                 // the climb's pose and F
+    }
   \endcode
 */
 #include "pm/core/StereoScorer.h"
 #include "pm/rmga/SmoothAscent.h"
 #include "pm/rmga/StereoObjective.h"
-#include "pm/tracker/TrackResult.h"
+#include "pm/tracker/FrameSteps.h"
+#include "pm/tracker/PoseHistory.h"
 
 namespace pm::tracker {
 
@@ -41,9 +45,17 @@ public:
   //! Copies \e params; \e scorer scores the climb on the frame given to refine() (it must outlive the stage).
   AscentRefinement(const AscentParams &params, const core::StereoScorer &scorer);
 
+  //! What a climb made.
+  struct Climb
+  {
+    ScoredPose pose;     //!< the climb's top and its F
+    int evaluations = 0; //!< evaluations of the smooth score and its gradient
+    bool kept = false;   //!< the acceptance rule keeps the climb's pose
+  };
+
   bool active() const { return m_p.climb.maxEvaluations > 0; } //!< the stage runs
-  //! Climbs from \e r's pose and, when \e last was tracked, from its pose; true when the climb's pose is kept.
-  bool refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last);
+  //! Climbs on \e frame from \e start and, when the last frame (\e history.last()) was tracked, from its pose.
+  Climb refine(const core::HueFrame &frame, const ScoredPose &start, const PoseHistory &history) const;
 
 private:
   AscentParams m_p;

@@ -11,18 +11,20 @@
 
   \code
     pm::tracker::Judgement judgement(params.judgement, params.verifier.farDeg, scorer, scale, modelError);
-    const pm::tracker::Evidence e = judgement.measure(frame, r);
-    const bool refused = lock.wouldLock(r.quality) &&
+    const pm::tracker::Evidence e = judgement.measure(frame, refined); // refined: the refinement chain's pose
+    const double q = scale.quality(refined.pose.fitness);
+    const bool refused = lock.wouldLock(q) &&
                          judgement.firstLockConfidence(e, steady.recentBestQ(), params.verifier.evaluations == 0) < params.lock.confidence;
     // ... the lock's state from q and refused (LockState.h), then:
     pm::tracker::JudgedState state;
-    state.last = &last.phi; // the last frame's pose, when it was tracked
+    state.state = lock.state();
+    state.last = &history.last().phi; // the last frame's pose, when it was tracked
     state.recentBestQ = steady.recentBestQ();
     state.framesTracked = lock.framesTracked();
     state.verified = verifier.verified();
-    judgement.judge(r, e, state);
-    if (r.trusted)
-      use(r.hMo);
+    const pm::tracker::Verdict verdict = judgement.judge(refined, e, state);
+    if (verdict.trusted)
+      use(pm::core::toHomogeneousMatrix(refined.pose.phi));
   \endcode
 */
 #include <array>
@@ -34,6 +36,7 @@
 #include "pm/tracker/QualityScale.h"
 #include "pm/tracker/TrackConfidence.h"
 #include "pm/precise/ModelErrorFloor.h"
+#include "pm/tracker/FrameSteps.h"
 #include "pm/tracker/TrackResult.h"
 
 namespace pm::tracker {
@@ -67,6 +70,7 @@ struct Evidence
 //! The tracker's state that a frame is judged with (see Judgement::judge()).
 struct JudgedState
 {
+  TrackState state = TrackState::Searching; //!< the state after this frame (LockState::state())
   const core::Phi *last = nullptr; //!< the last frame's pose when it was tracked (the jump), else null
   double recentBestQ = 0;          //!< SteadyFramePolicy::recentBestQ() after this frame
   int framesTracked = 0;           //!< LockState::framesTracked()
@@ -87,12 +91,12 @@ public:
 
   //! The competing poses of \e phi it scores (turned about its z axis, its tilt mirrored), valid ones only; returns their number.
   std::size_t competitors(const core::Phi &phi, core::Phi *out) const;
-  //! The evidence of the frame's pose \e r (its phi, quality and precise stage's result) on \e frame.
-  Evidence measure(const core::HueFrame &frame, const TrackResult &r) const;
+  //! The evidence of the frame's pose \e refined (its pose, its F and the precise stage's result) on \e frame.
+  Evidence measure(const core::HueFrame &frame, const RefinedPose &refined) const;
   //! The confidence of \e e as a first, unverified lock (\e verifiedAtOnce: locks need no verification).
   double firstLockConfidence(const Evidence &e, double recentBestQ, bool verifiedAtOnce) const;
-  //! Fills \e r's cues, confidence, verified, trusted and uncertainty from \e e and the tracker's \e state.
-  void judge(TrackResult &r, const Evidence &e, const JudgedState &state) const;
+  //! The verdict on \e refined, from its evidence \e e and the tracker's \e state.
+  Verdict judge(const RefinedPose &refined, const Evidence &e, const JudgedState &state) const;
 
   const JudgementParams &params() const { return m_p; } //!< the parameters (resolved for the model)
 

@@ -23,12 +23,13 @@
   \code
     pm::tracker::LockVerifier verifier(params.verifier, params.search, scorer, scale);
     if (verifier.verifying(lastState)) {
-      const auto better = verifier.challenge(frame, plan.challenger, r.phi, r.fitness, search.ga(), work);
-      if (better)
-        moveTo(*better); // a wrong first lock
+      const pm::tracker::LockVerifier::Challenge c = verifier.challenge(frame, plan.challenger, searched.pose, search.ga());
+      work = work.plus(c.run);
+      if (c.better)
+        moveTo(*c.better); // a wrong first lock
     }
-    verifier.onState(prev, r.state, r.phi, search.ga());                 // a new lock is verified on the next frames
-    verifier.afterJudgement(r.state, r.confidence, r.phi, search.ga()); // a doubtful lock again
+    verifier.onState(prev, state, pose.phi, search.ga());                      // a new lock is verified on the next frames
+    verifier.afterJudgement(state, verdict.confidence, pose.phi, search.ga()); // a doubtful lock again
   \endcode
 */
 #include <optional>
@@ -36,6 +37,7 @@
 #include "pm/core/StereoScorer.h"
 #include "pm/rmga/RmGa.h"
 #include "pm/rmga/StereoObjective.h"
+#include "pm/tracker/FrameSteps.h"
 #include "pm/tracker/PoseSearch.h"
 #include "pm/tracker/QualityScale.h"
 #include "pm/tracker/TrackResult.h"
@@ -73,13 +75,17 @@ public:
 
   //! The challenger runs this frame: evaluations are left and the last state was tracking.
   bool verifying(TrackState lastState) const { return m_left > 0 && lastState == TrackState::Tracking; }
+  //! What a challenger's search made.
+  struct Challenge
+  {
+    rmga::FrameResult run;           //!< its search (its work; its best scored on every point)
+    std::optional<ScoredPose> better; //!< a better pose elsewhere, with its F, when the challenger takes over
+  };
   /*!
-    The challenger's search on \e frame within \e budget, against the tracker's pose \e pose of
-    fitness \e fitness. Returns a better pose elsewhere, with its F, when it takes over (verification
-    then starts again from it, near \e ga's anchor); adds its work to \e work.
+    The challenger's search on \e frame within \e budget, against the tracker's pose \e pose. When it
+    takes over, verification starts again from its pose, near \e ga's anchor.
   */
-  std::optional<std::pair<core::Phi, double>> challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget, const core::Phi &pose,
-                                                         double fitness, const rmga::RmGa &ga, TrackResult &work);
+  Challenge challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget, const ScoredPose &pose, const rmga::RmGa &ga);
   //! After the frame's state: a new lock (\e prev not tracking) is verified on the next frames; a target not tracked is no longer verified.
   void onState(TrackState prev, TrackState state, const core::Phi &pose, const rmga::RmGa &ga);
   //! After the judgement: a verified, tracked lock of low \e confidence for long is verified again.

@@ -7,26 +7,25 @@
   there, so that its few near-start iterations need not cover a turning target's whole turn (the
   lag they leave without it: docs/model-outline.md, "Moving").
 
-  Only the frames whose pose the precise stage made (TrackResult::precise) are remembered, two in a
-  row; any other frame forgets them (a search's pose is too rough to take a velocity from). A step
-  larger than \e maxStepMm or \e maxStepDeg is a jump or too fast a motion: no prediction then.
-  The remembered poses follow the hand when it moves (eye-in-hand), so the prediction is the
-  target's own motion.
+  The poses it reads are the tracker's past (PoseHistory.h): the last two frames' poses that the
+  precise stage made, on frames tracked in a row (a search's pose is too rough to take a velocity
+  from). They follow the hand when it moves (eye-in-hand), so the prediction is the target's own
+  motion. A step larger than \e maxStepMm or \e maxStepDeg is a jump or too fast a motion: no
+  prediction then. The prediction keeps no state of its own.
 
   \code
-    pm::tracker::MotionPrediction motion;              // gain 1
+    const pm::tracker::MotionPrediction motion;        // gain 1
+    pm::tracker::PoseHistory history;
     for (;;) {
-      const pm::core::Phi start = motion.predict(last.phi); // last.phi moved on, or as it is
-      pm::tracker::TrackResult r = trackFrom(start);
-      motion.remember(r);                              // at the frame's end
-      motion.transform(hNowMhPrev);                    // the hand moved
+      const pm::core::Phi start = motion.predict(history); // the last pose moved on, or as it is
+      const pm::tracker::TrackResult r = trackFrom(start);
+      history.remember(r);                             // at the frame's end
+      history.transform(hNowMhPrev);                   // the hand moved
     }
   \endcode
 */
-#include <visp3/core/vpHomogeneousMatrix.h>
-
 #include "pm/core/Pose.h"
-#include "pm/tracker/TrackResult.h"
+#include "pm/tracker/PoseHistory.h"
 
 namespace pm::tracker {
 
@@ -49,32 +48,23 @@ struct MotionPredictionParams
 class MotionPrediction
 {
 public:
-  //! Copies and checks \e params (throws pm::core::Error if invalid); nothing remembered yet.
+  //! Copies and checks \e params (throws pm::core::Error if invalid).
   explicit MotionPrediction(const MotionPredictionParams &params = MotionPredictionParams());
 
   /*!
-    This frame's predicted pose: \e last moved on by the step between the last two frames
-    remembered when \e last is the latest of them, else \e last as it is.
+    This frame's predicted pose: the last frame's pose (\e history.last()) moved on by the step
+    between the last two precise poses when the last frame's pose is the latest of them and the
+    step is not a jump; else the last frame's pose as it is.
   */
-  core::Phi predict(const core::Phi &last) const;
-  //! At a frame's end: \e r joins the remembered poses when the precise stage made it, else they are forgotten.
-  void remember(const TrackResult &r);
-  //! The hand moved by \e hNowMhPrev: the remembered poses follow it.
-  void transform(const vpHomogeneousMatrix &hNowMhPrev);
-  //! Forgets the past (a new start, a jump to another pose).
-  void reset() { m_count = 0; }
-  //! True when predict() moves the last pose (two poses remembered, the step not a jump).
-  bool moving() const { return m_count >= 2 && m_params.enabled() && m_stepOk; }
+  core::Phi predict(const PoseHistory &history) const;
+  //! True when predict() moves the last pose: two precise poses kept, the step not a jump, the gain not 0.
+  bool moving(const PoseHistory &history) const;
 
 private:
-  void updateStep();
+  //! The step from \e prev to \e last scaled by the gain, when it is no jump.
+  bool step(const vpHomogeneousMatrix &prev, const vpHomogeneousMatrix &last, vpTranslationVector &dt, vpRotationMatrix &dR) const;
 
   MotionPredictionParams m_params;
-  vpHomogeneousMatrix m_prev, m_last; //!< the poses of the last two frames remembered (hand frame, metres)
-  int m_count = 0;                     //!< how many of them are known (0, 1, 2)
-  vpTranslationVector m_dt;            //!< the last step, scaled by the gain (metres)
-  vpRotationMatrix m_dR;               //!< the last turn about the hand's axes, scaled by the gain
-  bool m_stepOk = false;               //!< the step is a motion, not a jump
 };
 
 } // namespace pm::tracker

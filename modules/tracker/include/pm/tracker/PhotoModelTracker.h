@@ -9,7 +9,10 @@
   A frame is one fixed list of steps, each done by a part that owns its state and its parameters
   (docs/architecture.md draws it). What the frame sees (its hue planes, the background's hue: a
   core::HueFrame) is made by the tracker alone and given to each step that scores; the parts keep
-  only the core::StereoScorer, the model on the rig, which nothing changes:
+  only the core::StereoScorer, the model on the rig, which nothing changes. Each step returns what
+  it made (FrameSteps.h: the searched pose, the refined pose, the verdict); the tracker's past (the
+  last frames' poses, PoseHistory.h) is kept in one place, read by the steps and changed by the
+  tracker alone; the TrackResult is assembled from the steps' values once, at the frame's end:
    1. plan: the steady-frame policy (SteadyFramePolicy.h) says whether the frame is steady, and
       the hue planes are computed (on a steady frame, only in the windows where the model can land);
    2. search: RM-GA (PoseSearch.h) within the frame's budget; a steady frame whose q falls escalates;
@@ -21,8 +24,9 @@
    6. state: searching, tracking or lost (LockState.h), a new lock refused when plainly wrong; the
       steadiness and the verification follow the state;
    7. judge: the confidence, the trust, the uncertainty;
-   8. apply: what the parts asked of RM-GA's population (RmGaUpdate.h), in one place; a doubtful
-      lock is verified again; the precise stage learns the colours of a trusted frame;
+   8. after the judgement: what the parts asked of RM-GA's population (RmGaUpdate.h), in one place;
+      then a doubtful lock is verified again, from the population that leaves; the precise stage
+      learns the colours of a trusted frame;
    9. background: a trusted frame teaches the background's hue as seen now (BackgroundLearning.h);
       the scoring takes it when it has moved away from the photos'.
 
@@ -35,7 +39,11 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
+#include <array>
+
 #include "pm/core/StereoFitness.h"
+#include "pm/tracker/FrameSteps.h"
+#include "pm/tracker/PoseHistory.h"
 #include "pm/tracker/TrackResult.h"
 #include "pm/tracker/TrackerParams.h"
 
@@ -95,17 +103,17 @@ public:
   void applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev);
 
   //! hMo of the last frame, or the one given to initFromPose() (metres); moved by applyHandMotion().
-  vpHomogeneousMatrix getPose() const { return m_last.hMo; }
+  vpHomogeneousMatrix getPose() const { return m_history.last().hMo; }
   //! The last frame's F (0 before the first frame).
-  double getFitness() const { return m_last.fitness; }
+  double getFitness() const { return m_history.last().fitness; }
   //! The state after the last frame (Searching after initialize(), Tracking after initFromPose()).
-  TrackState getState() const { return m_last.state; }
+  TrackState getState() const { return m_history.last().state; }
   //! Everything the last track() returned (reset by initialize() and initFromPose()).
-  const TrackResult &lastResult() const { return m_last; }
+  const TrackResult &lastResult() const { return m_history.last(); }
   //! q of a fitness value for this model.
   double quality(double fitness) const { return m_scale.quality(fitness); }
   //! The model's points at the last pose in camera \e camera's image (0 left, 1 right), each with its score class (for drawing).
-  std::vector<core::PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_last.phi, camera); }
+  std::vector<core::PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_history.last().phi, camera); }
   //! The stereo fitness the tracker scores with (its hue planes: those of the last frame).
   const core::StereoFitness &fitness() const { return m_fitness; }
   //! The parameters (the tracker's copy, validated, the confidence's coefficients those of the model's kind).
@@ -120,14 +128,26 @@ public:
 private:
   //! A frame's wall clock, from the start of track().
   struct Clock;
+  //! 1. The frame's plan; the hue planes made (on a steady frame, in its windows).
   FramePlan plan(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock);
-  TrackResult search(const FramePlan &plan, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock);
-  void challenge(const FramePlan &plan, TrackResult &r, RmGaUpdate &update);
-  void completeHue(const FramePlan &plan, const TrackResult &r, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
-  RmGaUpdate::Restart updateState(TrackResult &r, const Evidence &evidence);
-  void judge(TrackResult &r, const Evidence &evidence, TrackState prev) const;
-  enum class Start { Unverified, Verified }; //!< how reset() takes its first pose: a search's, or one given (verified)
-  void reset(TrackState state, Start start);
+  //! 2. RM-GA within the plan's budget, escalated when a steady frame's q falls.
+  SearchedPose search(const FramePlan &plan, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock);
+  //! 3. The lock verifier's challenger when the plan says so: \e searched, or the better pose it moved to (then \e update reseeds RM-GA).
+  SearchedPose challenge(const FramePlan &plan, const SearchedPose &searched, RmGaUpdate &update);
+  //! Before 5: on a windowed frame, the hue under \e phi and its competitors, which the judgement scores on the whole images.
+  void completeHue(const FramePlan &plan, const SearchedPose &searched, const core::Phi &phi, const vpImage<vpRGBa> &left,
+                   const vpImage<vpRGBa> &right);
+  //! 6. The lock's state from \e pose's q (a plainly wrong new lock refused); returns its restart of RM-GA.
+  RmGaUpdate::Restart updateState(const ScoredPose &pose, const Evidence &evidence);
+  //! 7. The verdict on \e refined with the tracker's state after 6.
+  Verdict judge(const RefinedPose &refined, const Evidence &evidence) const;
+  //! 8. What the lock, RM-GA (\e update, applied), the verifier and the precise stage learn from the verdict.
+  void afterJudgement(const RefinedPose &refined, const Verdict &verdict, RmGaUpdate &update);
+  //! The frame's result from the steps' values; \e clockMs: the clock after the hues, the search, the refinement and at the end.
+  TrackResult assembled(const SearchedPose &searched, const RefinedPose &refined, TrackState state, const Verdict &verdict,
+                        double backgroundHueDeg, const std::array<double, 4> &clockMs) const;
+  //! A new start whose last frame is \e first (searching, or a pose given: tracking and verified).
+  void reset(const TrackResult &first);
   //! The fitness and the precise stage compare with the background's hue \e deg from now on.
   void useBackgroundHue(double deg);
 
@@ -141,7 +161,7 @@ private:
   RefinementChain m_refinement;
   Judgement m_judgement;
   BackgroundLearning m_background; //!< the background's hue as seen now (learnt on trusted frames)
-  TrackResult m_last;
+  PoseHistory m_history;           //!< the last frames' results and poses, changed only by track(), reset() and applyHandMotion()
 };
 
 } // namespace pm::tracker

@@ -17,9 +17,10 @@
 
   \code
     pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, scorer, scale);
-    if (stage.refine(frame, r, last, motion.predict(last.phi), IL, IR)) {
+    const pm::tracker::PreciseRefinement::Attempt a = stage.refine(frame, searched, history, motion.predict(history), IL, IR);
+    if (a.kept) {
       pm::tracker::RmGaUpdate u;
-      u.inject = pm::tracker::RmGaUpdate::Inject{r.phi, r.fitness}; // the frame's pose is the stage's: it joins RM-GA
+      u.inject = pm::tracker::RmGaUpdate::Inject{a.pose.phi, a.pose.fitness}; // the frame's pose is the stage's: it joins RM-GA
       search.apply(u);
     }
   \endcode
@@ -34,7 +35,8 @@
 #include "pm/core/StereoRig.h"
 #include "pm/precise/PreciseStage.h"
 #include "pm/tracker/QualityScale.h"
-#include "pm/tracker/TrackResult.h"
+#include "pm/tracker/FrameSteps.h"
+#include "pm/tracker/PoseHistory.h"
 
 namespace pm::tracker {
 
@@ -70,15 +72,22 @@ public:
   PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
                     const core::StereoScorer &scorer, const QualityScale &scale);
 
+  //! What the stage made of a frame.
+  struct Attempt
+  {
+    precise::PreciseResult result; //!< what it found, kept or not
+    ScoredPose pose;               //!< the kept pose and its F (when kept)
+    bool kept = false;             //!< the acceptance rule keeps it: the frame's pose is the stage's
+  };
+
   bool active() const { return m_stage != nullptr; } //!< the stage runs
   /*!
-    Refines \e r (a locked frame's pose) on the images (\e frame: their hues, for F), from it or, when \e last was tracked by the
-    stage, from \e predicted (\e last's pose moved on by the target's motion, or \e last's own); true
-    when the result is kept (then \e r's phi and fitness are the stage's). \e r.preciseResult: what it
-    found either way.
+    Refines \e searched (a locked frame's pose) on the images (\e frame: their hues, for F), from it
+    or, when the last frame (\e history.last()) was tracked by the stage, from \e predicted (the last
+    pose moved on by the target's motion, or the last pose itself).
   */
-  bool refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last, const core::Phi &predicted,
-              const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  Attempt refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const core::Phi &predicted,
+                 const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
   //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
   //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).

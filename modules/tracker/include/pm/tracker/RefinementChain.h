@@ -14,17 +14,18 @@
 
   \code
     pm::tracker::RefinementChain chain(params.refinement, rig, model, scorer, scale);
+    const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, IL, IR, locked);
     pm::tracker::RmGaUpdate u;
-    u.inject = chain.refine(frame, r, last, IL, IR, locked); // r.phi: the chain's pose; the precise stage's joins RM-GA
+    if (refined.precise) // the precise stage's pose joins RM-GA
+      u.inject = pm::tracker::RmGaUpdate::Inject{refined.pose.phi, refined.pose.fitness};
     search.apply(u);
   \endcode
 */
-#include <optional>
-
 #include "pm/tracker/AscentRefinement.h"
+#include "pm/tracker/FrameSteps.h"
 #include "pm/tracker/MotionPrediction.h"
+#include "pm/tracker/PoseHistory.h"
 #include "pm/tracker/PreciseRefinement.h"
-#include "pm/tracker/RmGaUpdate.h"
 #include "pm/tracker/TiltFilter.h"
 
 namespace pm::tracker {
@@ -59,25 +60,17 @@ public:
                   const core::StereoScorer &scorer, const QualityScale &scale);
 
   /*!
-    The stages on \e r (\e locked: its q reaches the lock; \e last: the last frame's result). Returns
-    the precise stage's pose, to join RM-GA's population, when it is the frame's.
+    The stages on \e searched, the frame's pose after the search, on \e frame (\e locked: its q
+    reaches the lock; \e history: the past frames). Returns the frame's pose.
   */
-  std::optional<RmGaUpdate::Inject> refine(const core::HueFrame &frame, TrackResult &r, const TrackResult &last, const vpImage<vpRGBa> &left,
-                                           const vpImage<vpRGBa> &right, bool locked);
-  //! After the judgement: the precise stage learns the colours along the outline of a trusted pose; the motion remembers the pose.
-  void learn(const TrackResult &r);
-  //! The hand moved by \e hNowMhPrev: the tilt filter's state and the motion's poses follow.
-  void transform(const vpHomogeneousMatrix &hNowMhPrev)
-  {
-    m_tilt.transform(hNowMhPrev);
-    m_motion.transform(hNowMhPrev);
-  }
-  //! A new start.
-  void reset()
-  {
-    m_tilt.reset();
-    m_motion.reset();
-  }
+  RefinedPose refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const vpImage<vpRGBa> &left,
+                     const vpImage<vpRGBa> &right, bool locked);
+  //! After the judgement: the precise stage learns the colours along the outline of \e refined when it is the stage's and trusted.
+  void learn(const RefinedPose &refined, const Verdict &verdict);
+  //! The hand moved by \e hNowMhPrev: the tilt filter's state follows.
+  void transform(const vpHomogeneousMatrix &hNowMhPrev) { m_tilt.transform(hNowMhPrev); }
+  //! A new start, or a jump to another pose: the tilt filter starts again.
+  void reset() { m_tilt.reset(); }
   //! The background's hue learnt (BackgroundLearning): the precise stage's hidden lines compare with it.
   void setBackgroundHue(double deg) { m_precise.setBackgroundHue(deg); }
 

@@ -11,13 +11,14 @@
 
   The policy owns what it decides from: the recent best q (forgotten at 0.001 per frame, and
   remembered through a loss, so that a relock on a wrong pose, of lower q, is not taken for
-  steady), the count of steady frames and the two last poses (for the windows' prediction).
+  steady) and the count of steady frames. The windows' prediction reads the last two poses from the
+  tracker's past (PoseHistory.h).
 
   \code
     pm::tracker::SteadyFramePolicy steady(params.steady);
     const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
     if (plan.windowed)
-      scorer.setImages(frame, IL, IR, steady.windows(scorer, lastPose));
+      scorer.setImages(frame, IL, IR, steady.windows(scorer, history));
     else
       scorer.setImages(frame, IL, IR);
     const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact);
@@ -27,12 +28,12 @@
   \endcode
 */
 #include <array>
-#include <functional>
 
 #include "pm/core/HuePlane.h"
 #include "pm/core/Pose.h"
 #include "pm/core/StereoScorer.h"
 #include "pm/tracker/FramePlan.h"
+#include "pm/tracker/PoseHistory.h"
 #include "pm/tracker/TrackResult.h"
 
 namespace pm::tracker {
@@ -65,8 +66,11 @@ public:
 
   //! This frame's plan (budgets not yet set): steady or not, windowed or not; \e verifying: the challenger runs (whole images).
   FramePlan plan(bool verifying) const;
-  //! The hue windows of a steady frame in each camera: the model's footprint at \e last and at the predicted pose, grown.
-  std::array<core::PixelRect, 2> windows(const core::StereoScorer &scorer, const core::Phi &last) const;
+  /*!
+    The hue windows of a steady frame in each camera: the model's footprint at the last frame's pose
+    and at the pose the last two predict (constant velocity, PoseHistory::beforeLast()), grown.
+  */
+  std::array<core::PixelRect, 2> windows(const core::StereoScorer &scorer, const PoseHistory &history) const;
   //! A steady frame whose search ended at \e q must escalate (SteadyParams::escalation).
   bool escalates(double q) const { return m_p.escalation && q < m_recentBestQ - m_p.qualityDrop; }
   //! The recent best q (the confidence's drop is measured from it).
@@ -74,19 +78,13 @@ public:
 
   //! After the frame's state: the recent best q and the count of steady frames.
   void update(TrackState state, double q);
-  //! At the frame's end: \e last (the previous frame's pose) kept for the prediction when \e bothTracked (it and this frame).
-  void remember(const core::Phi &last, bool bothTracked);
-  //! The hand moved: the remembered pose follows.
-  void transform(const std::function<core::Phi(const core::Phi &)> &moved);
-  //! A new start: not steady, no recent best, no past poses.
+  //! A new start: not steady, no recent best.
   void reset();
 
 private:
   SteadyParams m_p;
   int m_steadyFrames = 0;  //!< frames tracked in a row near the recent best q
   double m_recentBestQ = 0;
-  core::Phi m_beforeLast;  //!< the pose of the frame before the last (for the windows' prediction)
-  bool m_haveBeforeLast = false;
 };
 
 } // namespace pm::tracker

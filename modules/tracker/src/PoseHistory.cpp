@@ -1,0 +1,42 @@
+#include "pm/tracker/PoseHistory.h"
+
+namespace pm::tracker {
+
+void PoseHistory::remember(const TrackResult &r)
+{
+  const bool bothTracked = m_last.state == TrackState::Tracking && r.state == TrackState::Tracking;
+  m_beforeLast = m_last.phi;
+  m_haveBeforeLast = bothTracked;
+  if (r.precise && r.state == TrackState::Tracking) {
+    m_precisePrev = m_preciseLast;
+    m_preciseLast = r.hMo;
+    m_preciseCount = m_preciseCount >= 1 ? 2 : 1;
+  } else {
+    m_preciseCount = 0;
+  }
+  m_last = r;
+}
+
+void PoseHistory::transform(const vpHomogeneousMatrix &hNowMhPrev)
+{
+  if (m_haveBeforeLast) { // through the pose's matrix; a pose that would leave the valid range stays as it was
+    const core::Phi q = core::fromHomogeneousMatrix(hNowMhPrev * core::toHomogeneousMatrix(m_beforeLast));
+    if (q.isValid())
+      m_beforeLast = q;
+  }
+  if (m_preciseCount > 0) {
+    m_precisePrev = hNowMhPrev * m_precisePrev;
+    m_preciseLast = hNowMhPrev * m_preciseLast;
+  }
+  m_last.hMo = hNowMhPrev * m_last.hMo;
+  m_last.phi = core::fromHomogeneousMatrix(m_last.hMo);
+}
+
+void PoseHistory::reset(const TrackResult &start)
+{
+  m_last = start;
+  m_haveBeforeLast = false;
+  m_preciseCount = 0;
+}
+
+} // namespace pm::tracker
