@@ -128,14 +128,14 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
       ->check(CLI::Range(1.0, 80.0));
   app.add_option("--backdrop-hue", o.ap.backdropHueDeg, "all-around: a plain backdrop of this hue (deg) replaces the "
                  "background images (none needed in --views; the lab makes no second pass)")->check(CLI::Range(0.0, 359.999));
-  app.add_option("--viewpoints", o.ap.viewpoints, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
-  app.add_option("--min-inside-px", o.ap.inMinInsidePx, "all-around: the model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")->check(CLI::Range(0.0, 50.0));
+  app.add_option("--viewpoints", o.ap.viewpoints.count, "all-around: viewing directions of the model (K)")->check(CLI::Range(1, 5000));
+  app.add_option("--min-inside-px", o.ap.viewpoints.inMinInsidePx, "all-around: the model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")->check(CLI::Range(0.0, 50.0));
   app.add_flag("--no-trust-calibration", o.noTrustCalibration, "all-around: the model's trust not calibrated from its pass (the "
                "shipped confidence and sigmas; faster). By default the pass's views, each held out of a model built without it, "
                "teach the confidence what right poses read through this camera (trust_tries.csv, docs/trust.md)");
-  app.add_flag("--refine-outlines", o.ap.refineOutlines, "all-around: the outlines to a fraction of a pixel (sub-pixel "
+  app.add_flag("--refine-outlines", o.ap.surface.refineOutlines, "all-around: the outlines to a fraction of a pixel (sub-pixel "
                "silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
-  app.add_option("--refine-depth-mm", o.ap.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
+  app.add_option("--refine-depth-mm", o.ap.surface.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   for (auto *a : {optViews, optAA})
     for (std::size_t k = 0; k + 1 < others.size(); ++k)
       a->excludes(others[k]);
@@ -170,7 +170,7 @@ int makeAllAround(const Options &o)
 {
   const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
   if (!o.viewsDir.empty()) {
-    const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(o.viewsDir, rig, o.ap.minViews, o.ap.backdropHueDeg < 0);
+    const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(o.viewsDir, rig, o.ap.carving.minViews, o.ap.backdropHueDeg < 0);
     const std::string source = "views " + o.viewsDir;
     pm::model::PassMeasurements measured;
     pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, o.ap, measured);

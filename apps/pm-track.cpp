@@ -147,7 +147,7 @@ Input openScene(const Options &o, const pm::core::StereoRig &rig)
 {
   const pm::lab::RenderedScene scene = pm::lab::openRenderedScene(o.sceneDir, o.scenePeer);
   const pm::model::AllAroundParams &ap = o.labModel.allAroundParams;
-  const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(scene.viewsDir, rig, ap.minViews, ap.backdropHueDeg < 0);
+  const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(scene.viewsDir, rig, ap.carving.minViews, ap.backdropHueDeg < 0);
   pm::model::PassMeasurements measured;
   pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, ap, measured);
   if (o.labModel.calibrateTrust)

@@ -334,21 +334,21 @@ TEST(AllAround, ASoftCamerasModelKeepsItsInteriorPointsFartherInside)
   const pm::model::AllAroundBuild &sharp = crab().build;
   EXPECT_GT(sharp.edgeWidthPx, 0.6);
   EXPECT_LT(sharp.edgeWidthPx, 0.9);
-  EXPECT_EQ(sharp.minInsidePx, pm::model::AllAroundParams().inMinInsidePx);
+  EXPECT_EQ(sharp.minInsidePx, pm::model::AllAroundParams().viewpoints.inMinInsidePx);
   std::vector<pm::model::PassView> soft = crab().pass.views;
   for (pm::model::PassView &v : soft)
     for (vpImage<vpRGBa> *im : {&v.left, &v.right, &v.backgroundLeft, &v.backgroundRight})
       *im = pm::lab::defocused(*im, 1.2);
   pm::model::AllAroundParams p;
   p.passLandings = false;
-  p.viewpoints = 12; // the outline's rise and the inside distance are read before the viewpoints are sampled
+  p.viewpoints.count = 12; // the outline's rise and the inside distance are read before the viewpoints are sampled
   const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), soft, p);
   std::cout << "the outline rises over " << sharp.edgeWidthPx << " px sharp, " << b.edgeWidthPx << " px through the soft camera: S_in "
             << b.minInsidePx << " px inside\n";
   EXPECT_GT(b.edgeWidthPx, 1.5);
   EXPECT_GT(b.minInsidePx, 3.5);
-  p.blurInsideGain = 0; // the user's choice: never
-  EXPECT_EQ(pm::model::buildAllAroundModel(rig(), soft, p).minInsidePx, p.inMinInsidePx);
+  p.viewpoints.blurInsideGain = 0; // the user's choice: never
+  EXPECT_EQ(pm::model::buildAllAroundModel(rig(), soft, p).minInsidePx, p.viewpoints.inMinInsidePx);
 }
 
 TEST(Silhouette, ASensorsShotNoiseIsNotAChangeOfBackground)
@@ -442,7 +442,7 @@ TEST(AllAround, RefinedOutlinesLieOnThePassViewsAndOnTheToysBetweenThem)
   // (every 6th viewpoint within 30 deg of the rest view) their mean offset is within 0.1 px and their
   // rms lower than the model built without it.
   pm::model::AllAroundParams p;
-  p.refineOutlines = true;
+  p.surface.refineOutlines = true;
   const pm::model::AllAroundBuild refined = pm::model::buildAllAroundModel(rig(), crab().pass.views, p);
   EXPECT_GT(refined.outlineResidualBeforePx, 0.15);
   EXPECT_LT(std::fabs(refined.outlineResidualPx), 0.05);
@@ -570,7 +570,7 @@ TEST(AllAround, AViewWithAWrongPoseIsNamedAndLeftOut)
   std::vector<pm::model::PassView> views = crab().pass.views;
   views[5].fMh = views[5].fMh * vpHomogeneousMatrix(0.04, -0.03, 0, 0, 0, 0.2); // 50 mm and 11 deg off
   pm::model::AllAroundParams p;
-  p.viewpoints = 1; // which views are used is decided before the viewpoints (the build's last step): the front's alone
+  p.viewpoints.count = 1; // which views are used is decided before the viewpoints (the build's last step): the front's alone
   const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), views, p);
   ASSERT_EQ(b.leftOut.size(), 1u);
   EXPECT_EQ(b.leftOut[0].rfind("view 05", 0), 0u) << b.leftOut[0];
@@ -668,8 +668,8 @@ TEST(AllAround, TheViewsStereoPairsBringTheBulgingHullBackToTheBoxsFaceAndBoundI
   auto measure = [&](bool fusion, double refineMm) {
     pm::model::AllAroundParams p;
     p.fusion.enabled = fusion;
-    p.refineDepthMm = refineMm;
-    p.viewpoints = 1; // the surface is measured, not the viewpoints sampled from it (the build's last step): the front's alone
+    p.surface.refineDepthMm = refineMm;
+    p.viewpoints.count = 1; // the surface is measured, not the viewpoints sampled from it (the build's last step): the front's alone
     const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig(), pass.views, p);
     const vpHomogeneousMatrix cMm = (pass.views[0].fMh * rig().left.hMc).inverse() * b.fMm;
     std::vector<float> zbuf;

@@ -289,7 +289,7 @@ TEST(LabPass, EachArmReachesThePassAndItsViewsFolderMakesTheSameModel)
     pm::io::saveViewsFolder(pass.views, d.file("views"));
     const std::vector<pm::model::PassView> back = pm::io::loadViewsFolder(d.file("views"), rig());
     pm::model::AllAroundParams p;
-    p.viewpoints = 1; // the front view's S_in is compared: the other viewpoints (the build's last step) are not made
+    p.viewpoints.count = 1; // the front view's S_in is compared: the other viewpoints (the build's last step) are not made
     const pm::model::AllAroundBuild a = pm::model::buildAllAroundModel(rig(), pass.views, p), b = pm::model::buildAllAroundModel(rig(), back, p);
     ASSERT_EQ(a.model.inner.size(), b.model.inner.size()) << name;
     double worst = 0;

@@ -382,7 +382,16 @@ TEST(ModelCache, GivesBackTheModelItsFrameAndSilhouetteForTheSamePassRigAndParam
   p.silhouette.background.darkRatio += 1e-12;
   EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
   p = params;
-  p.outline.rounds += 1;
+  p.surface.outline.rounds += 1;
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
+  p = params;
+  p.carving.finestMm += 1e-9;
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
+  p = params;
+  p.colour.maxHueSpreadDeg += 1;
+  EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
+  p = params;
+  p.viewpoints.nContour += 1;
   EXPECT_NE(pm::lab::ModelCache::keyOf(rig, pass, p, true), key);
   // A silhouette that does not read, or no model file, is no entry; no folder finds and keeps nothing.
   pm::test::writeText(dir.file("cache/" + key + ".frame.json"), "{\"fMm\": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], \"region_runs\": [64, 48, 0, 5]}");

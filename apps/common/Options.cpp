@@ -47,17 +47,17 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
                  "axis (deg; the views spread over them in proportion to the angle)")
       ->delimiter(',')
       ->check(CLI::Range(1.0, 80.0));
-  app.add_option("--refine-depth-mm", c.allAroundParams.refineDepthMm, "simulator, all-around model: how far photo-consistency may "
+  app.add_option("--refine-depth-mm", c.allAroundParams.surface.refineDepthMm, "simulator, all-around model: how far photo-consistency may "
                  "move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   app.add_option("--backdrop-hue", c.allAroundParams.backdropHueDeg, "simulator, all-around model: segment the pass against "
                  "a plain backdrop of this hue (deg) instead of a second pass without the toy")->check(CLI::Range(0.0, 359.999));
-  app.add_option("--viewpoints", c.allAroundParams.viewpoints, "simulator, all-around model: the model's viewing directions (K)")
+  app.add_option("--viewpoints", c.allAroundParams.viewpoints.count, "simulator, all-around model: the model's viewing directions (K)")
       ->check(CLI::Range(1, 5000));
-  app.add_option("--min-inside-px", c.allAroundParams.inMinInsidePx, "simulator, all-around model: the model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")
+  app.add_option("--min-inside-px", c.allAroundParams.viewpoints.inMinInsidePx, "simulator, all-around model: the model's S_in points at least this far inside each viewpoint's outline through a sharp camera (px; raised by the blur the pass's photos show, docs/model-outline.md)")
       ->check(CLI::Range(0.0, 50.0));
   app.add_flag("--no-trust-calibration", [&c](std::int64_t) { c.calibrateTrust = false; },
                "simulator, all-around model: its trust not calibrated from its pass (the shipped confidence and sigmas; faster)");
-  app.add_flag("--refine-outlines", c.allAroundParams.refineOutlines, "simulator, all-around model: the outlines to a fraction of a "
+  app.add_flag("--refine-outlines", c.allAroundParams.surface.refineOutlines, "simulator, all-around model: the outlines to a fraction of a "
                "pixel (sub-pixel silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
 }
 

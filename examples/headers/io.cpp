@@ -30,8 +30,8 @@ void exampleWellFormedXml()
 void exampleAllAroundParamsJson()
 {
   pm::model::AllAroundParams p;
-  p.viewpoints = 120;
-  const std::string json = pm::io::allAroundParamsToJson(p); // {"backdrop_hue_deg":-1.0, ..., "viewpoints":120, ...}
+  p.viewpoints.count = 120;
+  const std::string json = pm::io::allAroundParamsToJson(p); // {"backdrop_hue_deg":-1.0, ..., "viewpoints":{..., "count":120, ...}}
 }
 
 // AllAroundFiles.h

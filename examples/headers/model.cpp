@@ -2,6 +2,7 @@
 // (never run), and scripts/header-examples.py checks that every example of a header is part of a file
 // here. What an example takes as given is its function's parameters.
 #include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/AllAroundParams.h"
 #include "pm/model/BackgroundSubtraction.h"
 #include "pm/model/HullMesh.h"
 #include "pm/model/PassLandings.h"
@@ -92,6 +93,15 @@ void exampleAllAroundModelBuilder(const pm::core::StereoRig &rig)
   const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass);
   pm::io::savePhotoModel(b.model, "model.json");
   std::cout << b.surface.size() << " surface points, hull " << b.hullVolumeCm3 << " cm3\n";
+}
+
+// AllAroundParams.h
+void exampleAllAroundParams()
+{
+  pm::model::AllAroundParams p;
+  p.viewpoints.count = 120;       // a lighter model: half the viewpoints
+  p.surface.refineOutlines = true; // the outlines to a fraction of a pixel
+  p.validate();                   // throws pm::core::Error naming the first value out of range
 }
 
 // BilinearColour.h

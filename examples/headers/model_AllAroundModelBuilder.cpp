@@ -10,7 +10,7 @@ int main()
   const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
   const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig, 6); // at least 6 views
   pm::model::AllAroundParams params;
-  params.viewpoints = 120; // a lighter model: half the viewpoints
+  params.viewpoints.count = 120; // a lighter model: half the viewpoints
   const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, params);
   for (const std::string &why : b.leftOut)
     std::cout << "left out: " << why << "\n";

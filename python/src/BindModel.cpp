@@ -20,7 +20,7 @@ pm::model::AllAroundParams buildParams(std::optional<double> backdropHueDeg, boo
       throw py::value_error("backdrop_hue_deg: a hue in [0, 360) deg is needed");
     p.backdropHueDeg = *backdropHueDeg;
   }
-  p.refineOutlines = refineOutlines;
+  p.surface.refineOutlines = refineOutlines;
   return p;
 }
 
@@ -110,7 +110,7 @@ void bindModel(py::module_ &m)
       "build_model_from_folder",
       [](const pm::core::StereoRig &rig, const std::string &folder, std::optional<double> hue, bool refine) {
         const pm::model::AllAroundParams p = buildParams(hue, refine);
-        return build(rig, pm::io::loadViewsFolder(folder, rig, p.minViews, p.backdropHueDeg < 0), p);
+        return build(rig, pm::io::loadViewsFolder(folder, rig, p.carving.minViews, p.backdropHueDeg < 0), p);
       },
       py::arg("rig"), py::arg("folder"), py::arg("backdrop_hue_deg") = py::none(), py::arg("refine_outlines") = false,
       "The same from a views folder (left_NN.png, right_NN.png, background_*_NN.png, pose_fPh_NN.yaml), as pm-make-model --views does.");

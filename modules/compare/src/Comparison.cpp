@@ -111,9 +111,9 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
     throw core::Error("compare: the true CAD model is decimated to cells of --mbt-mesh-cell-mm, which must be above 0");
   const bool aaForMbt = mbt && m_p.mbtMeshCellMm > 0 && !m_p.mbtTrueCad;
   model::AllAroundParams aa;
-  aa.refineOutlines = m_p.refineOutlines;
-  aa.viewpoints = m_p.viewpoints;
-  aa.inMinInsidePx = m_p.minInsidePx;
+  aa.surface.refineOutlines = m_p.refineOutlines;
+  aa.viewpoints.count = m_p.viewpoints;
+  aa.viewpoints.inMinInsidePx = m_p.minInsidePx;
   if (has(m_p.trackers, "ours-aa") || has(m_p.trackers, "ours-aa-rmga") || aaForMbt)
     m_s->allAround = lab::makeSimulatedAllAroundModel(m_s->scene, rig, m_p.pass, "pa10", m_p.distanceMm, aa,
                                                       aaForMbt ? &m_s->allAroundBuild : nullptr, m_p.calibrateTrust); // the build kept only for its mesh

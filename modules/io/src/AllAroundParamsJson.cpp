@@ -44,39 +44,52 @@ nlohmann::json outlineJson(const model::OutlineRefinementParams &o)
           {"smooth_iterations", o.smoothIterations}};
 }
 
+nlohmann::json carvingJson(const model::HullCarvingParams &c)
+{
+  return {{"min_views", c.minViews}, {"coarsest_mm", c.coarsestMm}, {"finest_mm", c.finestMm}, {"outlier_carve_fraction", c.outlierCarveFraction}};
+}
+
+nlohmann::json surfaceJson(const model::HullSurfaceParams &s)
+{
+  return {{"visibility_tol_mm", s.visibilityTolMm}, {"refine_outlines", s.refineOutlines}, {"outline", outlineJson(s.outline)},
+          {"refine_depth_mm", s.refineDepthMm},     {"refine_min_score", s.refineMinScore}, {"refine_min_gain", s.refineMinGain}};
+}
+
+nlohmann::json colourJson(const model::SurfaceColourParams &c)
+{
+  return {{"min_saturation", c.minSaturation},
+          {"min_value", c.minValue},
+          {"min_hue_from_background_deg", c.minHueFromBackgroundDeg},
+          {"max_hue_spread_deg", c.maxHueSpreadDeg}};
+}
+
+nlohmann::json viewpointsJson(const model::ViewpointSamplingParams &v)
+{
+  return {{"count", v.count},
+          {"cap_deg", v.capDeg},
+          {"n_in", v.nIn},
+          {"in_min_inside_px", v.inMinInsidePx},
+          {"blur_inside_gain", v.blurInsideGain},
+          {"sharp_edge_width_px", v.sharpEdgeWidthPx},
+          {"blur_dead_zone_px", v.blurDeadZonePx},
+          {"n_out", v.nOut},
+          {"strip_gap_px", v.stripGapPx},
+          {"strip_width_px", v.stripWidthPx},
+          {"strip_rows", v.stripRows},
+          {"n_contour", v.nContour}};
+}
+
 } // namespace
 
 std::string allAroundParamsToJson(const model::AllAroundParams &p)
 {
   const nlohmann::json j = {{"silhouette", silhouetteJson(p.silhouette)},
                             {"backdrop_hue_deg", p.backdropHueDeg},
-                            {"min_views", p.minViews},
-                            {"coarsest_mm", p.coarsestMm},
-                            {"finest_mm", p.finestMm},
-                            {"outlier_carve_fraction", p.outlierCarveFraction},
-                            {"visibility_tol_mm", p.visibilityTolMm},
+                            {"carving", carvingJson(p.carving)},
                             {"fusion", fusionJson(p.fusion)},
-                            {"refine_outlines", p.refineOutlines},
-                            {"outline", outlineJson(p.outline)},
-                            {"refine_depth_mm", p.refineDepthMm},
-                            {"refine_min_score", p.refineMinScore},
-                            {"refine_min_gain", p.refineMinGain},
-                            {"min_saturation", p.minSaturation},
-                            {"min_value", p.minValue},
-                            {"min_hue_from_background_deg", p.minHueFromBackgroundDeg},
-                            {"max_hue_spread_deg", p.maxHueSpreadDeg},
-                            {"viewpoints", p.viewpoints},
-                            {"cap_deg", p.capDeg},
-                            {"n_in", p.nIn},
-                            {"in_min_inside_px", p.inMinInsidePx},
-                            {"blur_inside_gain", p.blurInsideGain},
-                            {"sharp_edge_width_px", p.sharpEdgeWidthPx},
-                            {"blur_dead_zone_px", p.blurDeadZonePx},
-                            {"n_out", p.nOut},
-                            {"strip_gap_px", p.stripGapPx},
-                            {"strip_width_px", p.stripWidthPx},
-                            {"strip_rows", p.stripRows},
-                            {"n_contour", p.nContour},
+                            {"surface", surfaceJson(p.surface)},
+                            {"colour", colourJson(p.colour)},
+                            {"viewpoints", viewpointsJson(p.viewpoints)},
                             {"pass_landings", p.passLandings}};
   return j.dump();
 }

@@ -25,42 +25,6 @@
 
 namespace pm::model {
 
-void AllAroundParams::validate() const
-{
-  silhouette.validate();
-  fusion.validate();
-  outline.validate();
-  auto check = [](bool ok, const char *what) {
-    if (!ok)
-      throw core::Error(std::string("all-around model parameter ") + what);
-  };
-  check(minViews >= 2 && minViews <= 1000, "minimum views must lie in [2, 1000]");
-  check(finestMm > 0.1 && finestMm <= 20, "finest cell must lie in (0.1, 20] mm");
-  check(coarsestMm >= finestMm && coarsestMm <= 200, "coarsest cell must lie in [finest, 200] mm");
-  check(outlierCarveFraction > 0 && outlierCarveFraction <= 1, "outlier carve fraction must lie in (0, 1]");
-  check(visibilityTolMm > 0 && visibilityTolMm <= 50, "visibility tolerance must lie in (0, 50] mm");
-  check(refineDepthMm >= 0 && refineDepthMm <= 100, "refine depth must lie in [0, 100] mm");
-  check(refineMinScore >= -1 && refineMinScore <= 1, "refine minimum score must lie in [-1, 1]");
-  check(refineMinGain >= 0 && refineMinGain <= 2, "refine minimum gain must lie in [0, 2]");
-  check(minSaturation >= 0 && minSaturation < 1, "minimum saturation must lie in [0, 1)");
-  check(minValue >= 0 && minValue < 1, "minimum value must lie in [0, 1)");
-  check(minHueFromBackgroundDeg >= 0 && minHueFromBackgroundDeg < 180, "minimum hue from background must lie in [0, 180)");
-  check(maxHueSpreadDeg > 0 && maxHueSpreadDeg <= 180, "maximum hue spread must lie in (0, 180]");
-  check(viewpoints >= 1 && viewpoints <= 5000, "viewpoints must lie in [1, 5000]");
-  check(capDeg > 0 && capDeg <= 180, "cap must lie in (0, 180] deg");
-  check(nIn >= 8 && nIn <= 20000, "S_in points per viewpoint must lie in [8, 20000]");
-  check(backdropHueDeg < 360, "the backdrop's hue must lie in [0, 360) degrees (negative: background images)");
-  check(nOut >= 8 && nOut <= 20000, "S_out points per viewpoint must lie in [8, 20000]");
-  check(stripGapPx >= 1 && stripGapPx <= 100, "strip gap must lie in [1, 100] px");
-  check(stripWidthPx >= 0 && stripWidthPx <= 100, "strip width must lie in [0, 100] px");
-  check(stripRows >= 1 && stripRows <= 10, "strip rows must lie in [1, 10]");
-  check(inMinInsidePx >= 0 && inMinInsidePx <= 50, "S_in's distance inside the outline must lie in [0, 50] px");
-  check(blurInsideGain >= 0 && blurInsideGain <= 10, "S_in's distance per pixel of blur must lie in [0, 10]");
-  check(sharpEdgeWidthPx > 0 && sharpEdgeWidthPx <= 5 && blurDeadZonePx >= 0 && blurDeadZonePx <= 5,
-        "a sharp camera's outline width must lie in (0, 5] px and the blur ignored in [0, 5] px");
-  check(nContour >= 8 && nContour <= 20000, "outline points per viewpoint must lie in [8, 20000]");
-}
-
 namespace {
 
 using hull::Vec3;
@@ -124,7 +88,7 @@ void colourPoint(std::vector<ColourSample> &sm, float bgHue, const AllAroundPara
       continue;
     }
     rs.push_back(c.r), gs.push_back(c.g), bs.push_back(c.b);
-    if (c.s >= p.minSaturation && c.v >= p.minValue)
+    if (c.s >= p.colour.minSaturation && c.v >= p.colour.minValue)
       hues.push_back(c.h);
   }
   auto med = [](std::vector<unsigned char> &x) {
@@ -137,12 +101,12 @@ void colourPoint(std::vector<ColourSample> &sm, float bgHue, const AllAroundPara
     return; // mostly pale: no hue to score
   float spread = 0;
   s.hue = medoidHue(hues, spread);
-  if (hues.size() >= 2 && spread > p.maxHueSpreadDeg) {
+  if (hues.size() >= 2 && spread > p.colour.maxHueSpreadDeg) {
     s.highlight = true;
     ++out.nHighlight;
     return;
   }
-  s.hasHue = core::hueDistance(s.hue, bgHue) > p.minHueFromBackgroundDeg;
+  s.hasHue = core::hueDistance(s.hue, bgHue) > p.colour.minHueFromBackgroundDeg;
 }
 
 //! About \e n directions within \e capDeg of \e pole (a Fibonacci lattice about it), the pole first.
@@ -224,10 +188,10 @@ constexpr std::size_t kMinEdgeSamples = 50; //!< fewer outline points read: the 
 */
 double minInsideForBlur(const AllAroundParams &p, double widthPx)
 {
-  if (!(widthPx > p.sharpEdgeWidthPx))
-    return p.inMinInsidePx;
-  const double sigma = std::sqrt(widthPx * widthPx - p.sharpEdgeWidthPx * p.sharpEdgeWidthPx) / 1.349; // 25-75 % of a Gaussian: 1.349 sigma
-  return sigma < p.blurDeadZonePx ? p.inMinInsidePx : p.inMinInsidePx + p.blurInsideGain * sigma;
+  if (!(widthPx > p.viewpoints.sharpEdgeWidthPx))
+    return p.viewpoints.inMinInsidePx;
+  const double sigma = std::sqrt(widthPx * widthPx - p.viewpoints.sharpEdgeWidthPx * p.viewpoints.sharpEdgeWidthPx) / 1.349; // 25-75 % of a Gaussian: 1.349 sigma
+  return sigma < p.viewpoints.blurDeadZonePx ? p.viewpoints.inMinInsidePx : p.viewpoints.inMinInsidePx + p.viewpoints.blurInsideGain * sigma;
 }
 
 //! A raw image's signed distance \e dist resampled into the ideal image through \e map (in place); returns the ideal mask (255 where positive).
@@ -287,7 +251,7 @@ PassImages silhouettesOfPass(const core::StereoRig &rig, const std::vector<PassV
       }
       HullView vc;
       vc.cam = core::PinholeCamera::Projection(v.fMh * rc[c]->hMc, rc[c]->cam, rc[c]->width, rc[c]->height);
-      vc.signedDist = p.refineOutlines ? hull::subpixelSignedDistance(mask, *ph[c], plain ? nullptr : &rawBack) : hull::signedDistance(mask);
+      vc.signedDist = p.surface.refineOutlines ? hull::subpixelSignedDistance(mask, *ph[c], plain ? nullptr : &rawBack) : hull::signedDistance(mask);
       vpImage<vpRGBa> back = und[c] ? und[c]->undistorted(rawBack) : rawBack;
       vc.photo = und[c] ? und[c]->undistorted(*ph[c]) : *ph[c];
       if (und[c])
@@ -341,7 +305,7 @@ std::vector<std::vector<std::uint16_t>> camerasSeeing(const std::vector<const Hu
       const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
       if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
         continue;
-      if (z > zbuf[static_cast<std::size_t>(vi) * static_cast<std::size_t>(vc->cam.w) + static_cast<std::size_t>(ui)] + p.visibilityTolMm)
+      if (z > zbuf[static_cast<std::size_t>(vi) * static_cast<std::size_t>(vc->cam.w) + static_cast<std::size_t>(ui)] + p.surface.visibilityTolMm)
         continue;
       if (vc->sd(u, v) < 2) // on the outline the pixel mixes target and background
         continue;
@@ -449,7 +413,7 @@ HullMesh carvedSurface(const core::StereoRig &rig, const PassImages &im, const s
                        AllAroundBuild &out, const DepthEvidence *measured, DepthEvidence *keep)
 {
   const std::vector<HullView> &cams = im.cams;
-  carveVisualHull(usedCams, g, p.coarsestMm);
+  carveVisualHull(usedCams, g, p.carving.coarsestMm);
   out.hullVolumeCm3 = g.volumeCm3();
   DepthEvidence evidence;
   if (p.fusion.enabled) {
@@ -480,8 +444,8 @@ HullMesh carvedSurface(const core::StereoRig &rig, const PassImages &im, const s
     return p.fusion.enabled ? std::min(f, evidence.fieldInside(X, px)) : f;
   });
   // The outline on every view's at once, where the least of their distances left it inside.
-  if (p.refineOutlines) {
-    const OutlineRefinementStats refined = refineOutlines(mesh, usedCams, p.outline);
+  if (p.surface.refineOutlines) {
+    const OutlineRefinementStats refined = refineOutlines(mesh, usedCams, p.surface.outline);
     out.outlineResidualBeforePx = refined.meanBeforePx;
     out.outlineResidualPx = refined.meanAfterPx;
     out.outlineResidualRmsPx = refined.rmsAfterPx;
@@ -500,6 +464,108 @@ struct PassMeasurements::Data
 
 namespace {
 
+//! Stage 2's result: the hull's grid around the target, and the views that agree.
+struct AgreeingViews
+{
+  Vec3 centre;                           //!< the box's centre (mm, world frame)
+  VisualHull grid;                       //!< the hull's grid over the box, nothing carved yet
+  std::vector<bool> used;                //!< per view: used (agrees with the others, not held out)
+  std::vector<const HullView *> usedCams; //!< the cameras of the views used
+};
+
+//! Stage 2: the box around the target and the views that agree with the others, \e heldOut left out too (out: cellMm, leftOut, nViewsUsed). Throws pm::core::Error.
+AgreeingViews boxAndAgreeingViews(const PassImages &im, std::size_t nViews, const AllAroundParams &p, const std::vector<std::size_t> &heldOut,
+                                  AllAroundBuild &out)
+{
+  AgreeingViews a;
+  double radius;
+  hullBox(im.cams, out.silhouettes, a.centre, radius);
+  a.grid = hullGrid(a.centre, radius, p.carving.finestMm);
+  const VisualHull &g = a.grid;
+  out.cellMm = g.cell;
+  const int coarse = std::max(1, static_cast<int>(std::lround(4.0 / g.cell)));
+  a.used = agreeingViews(im.cams, nViews, g.origin, (g.n + coarse - 1) / coarse, coarse * g.cell, p.carving.outlierCarveFraction, im.names, out.leftOut);
+  for (std::size_t k : heldOut)
+    a.used[k] = false;
+  out.nViewsUsed = static_cast<std::size_t>(std::count(a.used.begin(), a.used.end(), true));
+  if (out.nViewsUsed < p.carving.minViews)
+    throw core::Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
+                std::to_string(p.carving.minViews) + " are needed (" + (out.leftOut.empty() ? "" : out.leftOut[0]) + ")");
+  for (const HullView &vc : im.cams)
+    if (a.used[static_cast<std::size_t>(vc.view)])
+      a.usedCams.push_back(&vc);
+  return a;
+}
+
+/*!
+  Stage 5, without fusion only: the hull bulges in front of flat and concave faces (no silhouette
+  carves them); where the target has texture, each vertex moves inward along its normal to the depth
+  where the patches of the cameras that see it agree best. The mesh follows its vertices (out: nRefined).
+*/
+void photoConsistencyStage(const std::vector<const HullView *> &usedCams, const std::vector<std::vector<std::uint16_t>> &seenBy,
+                           const AllAroundParams &p, double cellMm, HullMesh &mesh, AllAroundBuild &out)
+{
+  if (!(p.surface.refineDepthMm > 0) || p.fusion.enabled)
+    return;
+  const std::vector<Vec3> normalsBefore = mesh.normals;
+  out.nRefined = refineByPhotoConsistency(usedCams, seenBy, normalsBefore, p, cellMm, mesh.vertices);
+  mesh.update();
+}
+
+//! The first view used: the model's frame and viewpoints come from it.
+std::size_t firstUsed(const std::vector<bool> &used)
+{
+  std::size_t first = 0;
+  while (!used[first])
+    ++first;
+  return first;
+}
+
+/*!
+  Stage 6: the model frame (origin at \e mean, the hull's centroid; axes those of the hand at \e
+  firstView) and the surface in it, each vertex coloured from its \e samples (out: fMm, surface,
+  surfaceVolumeCm3, the highlights). The mesh is moved into the model frame.
+*/
+void surfaceInModelFrame(const PassView &firstView, const Vec3 &mean, std::vector<std::vector<ColourSample>> &samples, float bgHue,
+                         const AllAroundParams &p, HullMesh &mesh, AllAroundBuild &out)
+{
+  const vpRotationMatrix fRm = firstView.fMh.getRotationMatrix();
+  out.fMm = vpHomogeneousMatrix(vpTranslationVector(mean[0] * 1e-3, mean[1] * 1e-3, mean[2] * 1e-3), fRm);
+  double mRf[9];
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 3; ++c)
+      mRf[3 * r + c] = fRm[c][r];
+  mesh.transform(mRf, mean); // vertices and normals: the model frame from here on
+  const std::vector<Vec3> &mpts = mesh.vertices, &mnorm = mesh.normals;
+  out.surface.resize(mpts.size());
+  for (std::size_t i = 0; i < mpts.size(); ++i) {
+    SurfacePoint &s = out.surface[i];
+    s.x = static_cast<float>(mpts[i][0]), s.y = static_cast<float>(mpts[i][1]), s.z = static_cast<float>(mpts[i][2]);
+    s.nx = static_cast<float>(mnorm[i][0]), s.ny = static_cast<float>(mnorm[i][1]), s.nz = static_cast<float>(mnorm[i][2]);
+    colourPoint(samples[i], bgHue, p, s, out);
+  }
+  out.surfaceVolumeCm3 = std::fabs(mesh.volume()) * 1e-3;
+}
+
+/*!
+  Stage 7: the viewpoints, a Fibonacci lattice over the directions within capDeg of \e firstView's,
+  at its distance, S_in kept farther inside a soft camera's outline (EdgeBlur.h; out: the model's
+  views, edgeWidthPx, minInsidePx).
+*/
+void viewpointsOfModel(const core::StereoRig &rig, const PassView &firstView, const PassImages &im, const HullMesh &mesh, float bgHue,
+                       const AllAroundParams &p, ViewpointScratch &scratch, AllAroundBuild &out)
+{
+  const vpHomogeneousMatrix mMh0 = out.fMm.inverse() * firstView.fMh;
+  const Vec3 rest{1e3 * mMh0[0][3], 1e3 * mMh0[1][3], 1e3 * mMh0[2][3]};
+  const double D = std::sqrt(dot(rest, rest));
+  const std::vector<Vec3> dirs = capDirections(unit(rest), p.viewpoints.capDeg, p.viewpoints.count);
+  AllAroundParams ps = p;
+  if (!im.edgeWidthsPx.empty())
+    out.edgeWidthPx = std::accumulate(im.edgeWidthsPx.begin(), im.edgeWidthsPx.end(), 0.0) / static_cast<double>(im.edgeWidthsPx.size());
+  ps.viewpoints.inMinInsidePx = out.minInsidePx = minInsideForBlur(p, out.edgeWidthPx);
+  sampleViewpoints(rig, dirs, D, mMh0, mesh, bgHue, ps, scratch, out);
+}
+
 /*!
   The build of the file's description, of \e pass without its views \e heldOut: from \e shared (the views
   measured already) or measuring them, then into \e keep when given.
@@ -510,14 +576,12 @@ AllAroundBuild build(const core::StereoRig &rig, const std::vector<PassView> &pa
   const auto t0 = std::chrono::steady_clock::now();
   p.validate();
   rig.validate();
-  if (pass.size() < p.minViews)
+  if (pass.size() < p.carving.minViews)
     throw core::Error("all-around model: the pass holds " + std::to_string(pass.size()) + " views; at least " +
-                std::to_string(p.minViews) + " are needed");
+                std::to_string(p.carving.minViews) + " are needed");
   AllAroundBuild out;
   out.nViews = pass.size();
-
-  // 1. Silhouettes in the ideal images (measured already, or now).
-  PassImages own;
+  PassImages own; // 1. silhouettes in the ideal images (measured already, or now)
   if (shared) {
     out.silhouettes = shared->silhouettes;
     out.shadowPx = shared->shadowPx;
@@ -525,90 +589,25 @@ AllAroundBuild build(const core::StereoRig &rig, const std::vector<PassView> &pa
     own = silhouettesOfPass(rig, pass, p, out);
   }
   const PassImages &im = shared ? shared->images : own;
-  const std::vector<HullView> &cams = im.cams;
-  const std::vector<std::string> &names = im.names;
-
-  // 2. The box around the target, and the views that disagree with the others.
-  Vec3 centre;
-  double radius;
-  hullBox(cams, out.silhouettes, centre, radius);
-  VisualHull g = hullGrid(centre, radius, p.finestMm);
-  out.cellMm = g.cell;
-  const int coarse = std::max(1, static_cast<int>(std::lround(4.0 / g.cell)));
-  std::vector<bool> used =
-      agreeingViews(cams, pass.size(), g.origin, (g.n + coarse - 1) / coarse, coarse * g.cell, p.outlierCarveFraction, names, out.leftOut);
-  for (std::size_t k : heldOut)
-    used[k] = false;
-  out.nViewsUsed = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
-  if (out.nViewsUsed < p.minViews)
-    throw core::Error("all-around model: " + std::to_string(out.nViewsUsed) + " views agree, at least " +
-                std::to_string(p.minViews) + " are needed (" + (out.leftOut.empty() ? "" : out.leftOut[0]) + ")");
-  std::vector<const HullView *> usedCams;
-  for (const HullView &vc : cams)
-    if (used[static_cast<std::size_t>(vc.view)])
-      usedCams.push_back(&vc);
-
-  // 3. Carving, coarse to fine, the views' depths, and the surface as a mesh.
-  HullMesh mesh = carvedSurface(rig, im, used, usedCams, centre, p, g, out, shared ? &shared->evidence : nullptr, keep ? &keep->evidence : nullptr);
+  AgreeingViews views = boxAndAgreeingViews(im, pass.size(), p, heldOut, out); // 2. the box; the views that agree
+  VisualHull &g = views.grid;
+  HullMesh mesh = carvedSurface(rig, im, views.used, views.usedCams, views.centre, p, g, out, shared ? &shared->evidence : nullptr,
+                                keep ? &keep->evidence : nullptr); // 3. carving, the views' depths, the surface
   const Vec3 mean = occupiedCentroid(g);
-  std::vector<Vec3> &pts = mesh.vertices;
-  const std::vector<Vec3> &normals = mesh.normals;
-
-  // 4. Which cameras see each point.
   ViewpointScratch scratch; // the image-sized buffers, kept from one camera or viewpoint to the next
-  const std::vector<std::vector<std::uint16_t>> seenBy = camerasSeeing(usedCams, mesh, p, scratch);
-  // 5. Photo-consistency: the hull bulges in front of flat and concave faces (no silhouette carves
-  // them); where the target has texture, each point moves inward along its normal to the depth where
-  // the patches of the cameras that see it agree best. The mesh follows its vertices.
-  if (p.refineDepthMm > 0 && !p.fusion.enabled) {
-    const std::vector<Vec3> normalsBefore = normals;
-    out.nRefined = refineByPhotoConsistency(usedCams, seenBy, normalsBefore, p, g.cell, pts);
-    mesh.update();
-  }
-  std::vector<std::vector<ColourSample>> samples = colourSamples(usedCams, seenBy, pts);
-  const float bgHue = backgroundHueAround(im, out.silhouettes, used);
-
-  // 6. The model frame: origin at the hull's centroid, axes those of the hand at the first used view.
-  std::size_t first = 0;
-  while (!used[first])
-    ++first;
-  const vpRotationMatrix fRm = pass[first].fMh.getRotationMatrix();
-  out.fMm = vpHomogeneousMatrix(vpTranslationVector(mean[0] * 1e-3, mean[1] * 1e-3, mean[2] * 1e-3), fRm);
-  double mRf[9];
-  for (unsigned r = 0; r < 3; ++r)
-    for (unsigned c = 0; c < 3; ++c)
-      mRf[3 * r + c] = fRm[c][r];
-  mesh.transform(mRf, mean); // pts and normals with it: the model frame from here on
-  const std::vector<Vec3> &mpts = mesh.vertices, &mnorm = mesh.normals;
-  out.surface.resize(mpts.size());
-  for (std::size_t i = 0; i < mpts.size(); ++i) {
-    SurfacePoint &s = out.surface[i];
-    s.x = static_cast<float>(mpts[i][0]), s.y = static_cast<float>(mpts[i][1]), s.z = static_cast<float>(mpts[i][2]);
-    s.nx = static_cast<float>(mnorm[i][0]), s.ny = static_cast<float>(mnorm[i][1]), s.nz = static_cast<float>(mnorm[i][2]);
-    colourPoint(samples[i], bgHue, p, s, out);
-  }
-  out.surfaceVolumeCm3 = std::fabs(mesh.volume()) * 1e-3;
-
-
-  // 7. The viewpoints: a Fibonacci lattice over the sphere, those within the cap.
-  const vpHomogeneousMatrix mMf = out.fMm.inverse();
-  const vpHomogeneousMatrix mMh0 = mMf * pass[first].fMh;
-  const Vec3 rest{1e3 * mMh0[0][3], 1e3 * mMh0[1][3], 1e3 * mMh0[2][3]};
-  const double D = std::sqrt(dot(rest, rest));
-  const std::vector<Vec3> dirs = capDirections(unit(rest), p.capDeg, p.viewpoints);
-  AllAroundParams ps = p; // S_in kept farther inside a soft camera's outline (EdgeBlur.h)
-  if (!im.edgeWidthsPx.empty())
-    out.edgeWidthPx = std::accumulate(im.edgeWidthsPx.begin(), im.edgeWidthsPx.end(), 0.0) / static_cast<double>(im.edgeWidthsPx.size());
-  ps.inMinInsidePx = out.minInsidePx = minInsideForBlur(p, out.edgeWidthPx);
-  sampleViewpoints(rig, dirs, D, mMh0, mesh, bgHue, ps, scratch, out);
+  const std::vector<std::vector<std::uint16_t>> seenBy = camerasSeeing(views.usedCams, mesh, p, scratch); // 4. who sees each point
+  photoConsistencyStage(views.usedCams, seenBy, p, g.cell, mesh, out);                                  // 5. without fusion
+  std::vector<std::vector<ColourSample>> samples = colourSamples(views.usedCams, seenBy, mesh.vertices);
+  const float bgHue = backgroundHueAround(im, out.silhouettes, views.used);
+  const PassView &firstView = pass[firstUsed(views.used)];
+  surfaceInModelFrame(firstView, mean, samples, bgHue, p, mesh, out);          // 6. the model frame; the colours
+  viewpointsOfModel(rig, firstView, im, mesh, bgHue, p, scratch, out);         // 7. the viewpoints
   core::PhotoModel &M = out.model;
-  // 8. The colours of the target and around it, for the precise stage's posteriors.
-  colourHistograms(usedCams, M.foregroundHistogram, M.backgroundHistogram);
+  colourHistograms(views.usedCams, M.foregroundHistogram, M.backgroundHistogram); // 8. the colours, for the precise stage
   out.mesh = std::move(mesh);
   M.hasColours = true;
-  // 9. The model's own error at each view of the pass: the precise stage from the view's known pose.
-  if (p.passLandings)
-    M.passLandings = measurePassLandings(rig, M, pass, used, out.fMm);
+  if (p.passLandings) // 9. the model's own error at each view of the pass
+    M.passLandings = measurePassLandings(rig, M, pass, views.used, out.fMm);
   M.validate("the all-around model");
   if (keep) {
     keep->silhouettes = out.silhouettes;

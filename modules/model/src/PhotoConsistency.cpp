@@ -52,7 +52,7 @@ bool patchAt(const HullView &vc, const Vec3 &X, std::array<float, 75> &out)
 int refineByPhotoConsistency(const std::vector<const HullView *> &cams, const std::vector<std::vector<std::uint16_t>> &seenBy,
                              const std::vector<Vec3> &normals, const AllAroundParams &p, double cell, std::vector<Vec3> &pts)
 {
-  const int steps = static_cast<int>(std::floor(p.refineDepthMm / cell));
+  const int steps = static_cast<int>(std::floor(p.surface.refineDepthMm / cell));
   std::vector<Vec3> moved = pts;
   int n = 0;
   std::vector<std::array<float, 75>> patches;
@@ -94,7 +94,7 @@ int refineByPhotoConsistency(const std::vector<const HullView *> &cams, const st
         bestStep = s;
       }
     }
-    if (bestStep > 0 && best >= p.refineMinScore && best - atHull >= p.refineMinGain) {
+    if (bestStep > 0 && best >= p.surface.refineMinScore && best - atHull >= p.surface.refineMinGain) {
       for (int k = 0; k < 3; ++k)
         moved[i][k] = pts[i][k] - bestStep * cell * normals[i][k];
       ++n;

@@ -167,7 +167,7 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
 {
   cv::distanceTransform(mask, inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   const double area = cv::countNonZero(mask);
-  const double step = std::max(1.0, std::sqrt(area / p.nIn));
+  const double step = std::max(1.0, std::sqrt(area / p.viewpoints.nIn));
   struct Pick
   {
     long key;
@@ -185,11 +185,11 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
     const int ui = static_cast<int>(std::lround(u)), vv = static_cast<int>(std::lround(v));
     if (ui < 0 || vv < 0 || ui >= cam.w || vv >= cam.h)
       continue;
-    if (z > zbuf[static_cast<std::size_t>(vv) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(ui)] + p.visibilityTolMm)
+    if (z > zbuf[static_cast<std::size_t>(vv) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(ui)] + p.surface.visibilityTolMm)
       continue;
     if (hull::dot(hull::unit(hull::sub(cam.centre, mpts[i])), {surface[i].nx, surface[i].ny, surface[i].nz}) < 0.2)
       continue;
-    if (inside.at<float>(vv, ui) < p.inMinInsidePx)
+    if (inside.at<float>(vv, ui) < p.viewpoints.inMinInsidePx)
       continue;
     const long cx = static_cast<long>(std::floor(u / step)), cy = static_cast<long>(std::floor(v / step));
     const double ddx = u - (static_cast<double>(cx) + 0.5) * step, ddy = v - (static_cast<double>(cy) + 0.5) * step;
@@ -203,7 +203,7 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
     const SurfacePoint &s = surface[picks[j].i];
     inner.push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v, s.r, s.g, s.b});
   }
-  const std::size_t n = static_cast<std::size_t>(p.nIn);
+  const std::size_t n = static_cast<std::size_t>(p.viewpoints.nIn);
   if (inner.size() <= n)
     return inner;
   std::vector<core::ModelPoint> thinned; // every (size / n)-th
@@ -226,7 +226,7 @@ std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection 
   double total = 0;
   for (const auto &c : contours)
     total += static_cast<double>(c.size());
-  const int perRow = std::max(1, p.nOut / p.stripRows);
+  const int perRow = std::max(1, p.viewpoints.nOut / p.viewpoints.stripRows);
   for (const auto &c : contours) {
     const int n = static_cast<int>(c.size());
     if (n < 8)
@@ -253,9 +253,9 @@ std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection 
         }
       if (!std::isfinite(depth))
         continue;
-      for (int row = 0; row < p.stripRows; ++row) {
+      for (int row = 0; row < p.viewpoints.stripRows; ++row) {
         // From the contour pixel (the last one on the target) to the outline is half a pixel.
-        const double off = 0.5 + p.stripGapPx + (p.stripRows > 1 ? p.stripWidthPx * row / (p.stripRows - 1) : 0.0);
+        const double off = 0.5 + p.viewpoints.stripGapPx + (p.viewpoints.stripRows > 1 ? p.viewpoints.stripWidthPx * row / (p.viewpoints.stripRows - 1) : 0.0);
         const double su = P.x + off * nx, sv = P.y + off * ny;
         const int ui = static_cast<int>(std::lround(su)), vv = static_cast<int>(std::lround(sv));
         if (ui >= 0 && vv >= 0 && ui < cam.w && vv < cam.h && mask.at<unsigned char>(vv, ui))
@@ -284,7 +284,7 @@ core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, cons
     view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
   view.inner = sampleInner(cam, surface, mpts, p, mask, zbuf, scratch.inside);
   // The outline: the mesh's contour edges on the silhouette's boundary.
-  view.contour = meshOutline(cam, mesh, mask.ptr<unsigned char>(), p.nContour, scratch);
+  view.contour = meshOutline(cam, mesh, mask.ptr<unsigned char>(), p.viewpoints.nContour, scratch);
   view.outer = sampleOuter(cam, bgHue, p, mask, zbuf);
   return view;
 }

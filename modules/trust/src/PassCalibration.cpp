@@ -302,7 +302,7 @@ core::TrustCalibration calibrateFromPass(const core::StereoRig &rig, const std::
   p.validate();
   const auto t0 = std::chrono::steady_clock::now();
   model::AllAroundParams foldParams = params;
-  foldParams.minViews = std::min(params.minViews, pass.size() > 4 ? pass.size() - 4 : std::size_t{1});
+  foldParams.carving.minViews = std::min(params.carving.minViews, pass.size() > 4 ? pass.size() - 4 : std::size_t{1});
   const std::vector<std::vector<std::size_t>> folds = heldOutFolds(pass.size(), p.heldOutViews, p.viewsPerModel);
   std::vector<std::string> errors;
   const std::vector<std::optional<FoldModel>> models = buildFolds(rig, pass, foldParams, measured, folds, errors, onStep);

@@ -48,10 +48,10 @@ struct ComparisonParams
   */
   double mbtMeshCellMm = 8;
   bool mbtTrueCad = false;                    //!< ViSP's MBT given the toy's own mesh (the lab knows it; CadMesh.h), decimated the same way
-  bool refineOutlines = false;                //!< the all-around model's outlines refined (model::AllAroundParams::refineOutlines)
+  bool refineOutlines = false;                //!< the all-around model's outlines refined (model::HullSurfaceParams::refineOutlines)
   bool calibrateTrust = true; //!< the all-around model's trust calibrated from its pass (pm::trust; the shipped confidence otherwise)
-  int viewpoints = model::AllAroundParams().viewpoints; //!< the all-around model's viewing directions (model::AllAroundParams::viewpoints)
-  double minInsidePx = model::AllAroundParams().inMinInsidePx; //!< its S_in points this far inside the outline (model::AllAroundParams::inMinInsidePx)
+  int viewpoints = model::AllAroundParams().viewpoints.count; //!< the all-around model's viewing directions (model::ViewpointSamplingParams::count)
+  double minInsidePx = model::AllAroundParams().viewpoints.inMinInsidePx; //!< its S_in points this far inside the outline (model::ViewpointSamplingParams::inMinInsidePx)
   model::PassPlan pass;                       //!< the all-around model's pass (its views and rings)
   double viewTurnDeg = 0;                     //!< ours-3d: the stereo model's further pairs (deg; 0: one pair)
   double steadyVariant = 0.25;                //!< ours-steady: the fraction of the budget on steady frames

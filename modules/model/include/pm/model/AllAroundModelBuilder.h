@@ -54,6 +54,7 @@
 
 #include "pm/core/PhotoModel.h"
 #include "pm/core/StereoRig.h"
+#include "pm/model/AllAroundParams.h"
 #include "pm/model/PassView.h"
 #include "pm/model/HullMesh.h"
 #include "pm/model/OutlineRefinement.h"
@@ -61,54 +62,6 @@
 #include "pm/model/SurfaceFusion.h"
 
 namespace pm::model {
-
-//! Parameters of buildAllAroundModel() (the steps of the file's description); validate() checks them.
-struct AllAroundParams
-{
-  SilhouetteParams silhouette;      //!< how each photo's silhouette is found (step 1)
-  double backdropHueDeg = -1;       //!< >= 0: a plain backdrop of this hue, no background images needed (silhouetteOnBackdrop)
-  std::size_t minViews = 6;         //!< fewer usable views: refused
-  double coarsestMm = 16;           //!< first cell size of the carving (mm)
-  double finestMm = 1;              //!< last cell size (mm; raised for large targets: at most 256 cells across)
-  double outlierCarveFraction = 0.4;//!< a view carving more than this of what the others keep is left out
-  double visibilityTolMm = 3;       //!< a surface point is seen when within this of the depth buffer (mm)
-  FusionParams fusion;              //!< the surface from the views' stereo pairs and the backdrop (SurfaceFusion.h)
-  /*!
-    The outlines to a fraction of a pixel: each silhouette's distance from the photo's own outline
-    (SubpixelOutline.h) and the surface moved until its outline lies on every view's
-    (OutlineRefinement.h, \e outline). Off by default (why, with the figures: docs/model-outline.md).
-  */
-  bool refineOutlines = false;
-  OutlineRefinementParams outline;  //!< the refinement, when refineOutlines
-  double refineDepthMm = 12;        //!< without fusion, photo-consistency: a point may move this far inward (mm; 0: the hull as carved)
-  double refineMinScore = 0.7;      //!< ... to a depth where the cameras' 5x5 patches correlate this well with their mean
-  double refineMinGain = 0.1;       //!< ... and this much better than at the hull
-  double minSaturation = 0.15;      //!< colour samples paler than this have no hue
-  double minValue = 0.08;           //!< ... or darker than this
-  double minHueFromBackgroundDeg = 30; //!< S_in points need a hue this far from H_B
-  double maxHueSpreadDeg = 20;      //!< views disagreeing more (median distance to the median hue): marked
-  int viewpoints = 240;             //!< K, the viewpoints within the cap
-  double capDeg = 75;               //!< viewpoints within this of the first view's direction
-  int nIn = 400;                    //!< S_in points per viewpoint (fewer where fewer are seen)
-  double inMinInsidePx = 2;         //!< S_in points lie at least this far inside the viewpoint's outline (px), a sharp camera's
-  /*!
-    A soft camera's S_in farther inside (docs/model-outline.md, "Blur"): the first view's outline read
-    (EdgeBlur.h), the blur's sigma beyond a sharp camera's (\e sharpEdgeWidthPx, what the lab's
-    renders give) adds this many px per px once over \e blurDeadZonePx; 0: never.
-  */
-  double blurInsideGain = 2;
-  double sharpEdgeWidthPx = 0.75;   //!< a sharp camera's 25-75 % rise across the outline (px)
-  double blurDeadZonePx = 0.5;      //!< a blur's sigma under this beyond a sharp camera's is not counted (px)
-  int nOut = 160;                   //!< S_out points per viewpoint
-  double stripGapPx = 5;            //!< S_out: the first row this far outside the outline (px; the hull's exact one, HullMesh.h)
-  double stripWidthPx = 8;          //!< ... the last this much farther
-  int stripRows = 2;                //!< rows of S_out points across the strip
-  int nContour = 200;               //!< outline points per viewpoint, for the precise stage (ContourPoint)
-  bool passLandings = true;         //!< the precise stage on the pass's own views, the model's error there (PassLandings.h; the tracker's uncertainty floor)
-
-  //! Throws pm::core::Error naming the first parameter out of range.
-  void validate() const;
-};
 
 //! A point of the hull's surface, in the model frame.
 struct SurfacePoint
@@ -159,7 +112,7 @@ struct AllAroundBuild
   int nHighlightSamples = 0;        //!< colour samples left out as highlights
   long shadowPx = 0;                //!< changed pixels taken for shadow over all silhouettes
   double edgeWidthPx = 0;           //!< the first view's outline's 25-75 % rise, mean of its cameras (px; 0: not read; EdgeBlur.h)
-  double minInsidePx = 0;           //!< S_in's distance inside the outline used (AllAroundParams::inMinInsidePx, raised for blur)
+  double minInsidePx = 0;           //!< S_in's distance inside the outline used (AllAroundParams::viewpoints.inMinInsidePx, raised for blur)
   double buildS = 0;                //!< wall time of the build (s)
 };
 
@@ -182,7 +135,7 @@ int main()
   const pm::core::StereoRig rig = pm::io::loadRig("rig.json");
   const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder("views", rig, 6); // at least 6 views
   pm::model::AllAroundParams params;
-  params.viewpoints = 120; // a lighter model: half the viewpoints
+  params.viewpoints.count = 120; // a lighter model: half the viewpoints
   const pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, params);
   for (const std::string &why : b.leftOut)
     std::cout << "left out: " << why << "\n";

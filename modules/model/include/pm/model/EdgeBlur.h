@@ -8,7 +8,7 @@
   what blurs it, two thirds of a pixel for a sharp camera whose pixels integrate their area (the
   pixel's box and the bilinear reading's tent: 0.5 px; the lab's renders 0.70-0.78 px), 1.75 px
   with a Gaussian defocus of 1.2 px, more along a motion. The model builder keeps its interior points farther
-  inside the outline when the images are soft (AllAroundParams::blurInsideGain): a blurred outline
+  inside the outline when the images are soft (ViewpointSamplingParams::blurInsideGain): a blurred outline
   mixes the background into them (docs/model-outline.md, "Blur").
 
   \code
