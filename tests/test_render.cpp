@@ -152,6 +152,44 @@ TEST(Rasterizer, SharedEdgesLeaveNoCracks)
     }
 }
 
+TEST(Rasterizer, WithExactBoundsAnEdgeJustPastASampleColumnOrRowLeavesNoCrack)
+{
+  // Four quads meeting on a vertical and a horizontal mesh line that project 0.0008 sample past a
+  // sample column and row (within the edge test's 1/256 px grid of it): with the exact bounds, the
+  // triangle that owns the samples on the line still covers them (its bounds from the same
+  // fixed-point vertices as the edge test). The default bounds leave a crack there (Rasterizer.h).
+  auto tex = std::make_shared<pm::sim::Texture>();
+  tex->width = tex->height = 1;
+  tex->rgb = {200, 200, 200};
+  pm::sim::Rasterizer r;
+  r.setExactBounds(true);
+  const double z = 0.5;
+  for (unsigned ss : {1u, 2u, 3u}) {
+    const double pxs = kCam.get_px() * ss, u0s = kCam.get_u0() * ss + (ss - 1) / 2.0, v0s = kCam.get_v0() * ss + (ss - 1) / 2.0;
+    const float xe = static_cast<float>((343 * ss + 0.0008 - u0s) / pxs * z), ye = static_cast<float>((251 * ss + 0.0008 - v0s) / pxs * z);
+    pm::sim::Mesh m;
+    m.texture = tex;
+    const float xs[3] = {-0.5f, xe, 0.5f}, ys[3] = {-0.5f, ye, 0.5f};
+    for (float y : ys)
+      for (float x : xs)
+        m.vertices.push_back({x, y, 0, 0, 0, -1, 0, 0, -1});
+    for (std::uint32_t j = 0; j < 2; ++j)
+      for (std::uint32_t i = 0; i < 2; ++i) {
+        const std::uint32_t a = j * 3 + i, b = a + 1, d = a + 3, c = d + 1;
+        m.triangles.push_back({a, b, c});
+        m.triangles.push_back({a, c, d});
+      }
+    r.reset(640, 480, ss);
+    r.clear(0, 0, 0);
+    r.draw(m, vpHomogeneousMatrix(0, 0, z, 0, 0, 0), kCam, pm::sim::Lighting(), 1);
+    int holes = 0;
+    for (unsigned v = 0; v < 480; ++v)
+      for (unsigned u = 0; u < 640; ++u)
+        holes += r.coverage(u, v, 1) < 1.0;
+    EXPECT_EQ(holes, 0) << "supersampling " << ss;
+  }
+}
+
 namespace {
 
 //! The three scenes of data/render_reference (see its README), noise-free, rendered by \e raster.
