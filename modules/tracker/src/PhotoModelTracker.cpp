@@ -167,9 +167,9 @@ RmGaUpdate::Restart PhotoModelTracker::updateState(const ScoredPose &pose, const
 {
   // A new lock only if it would not be plainly wrong (its confidence as a first, unverified lock).
   const double quality = m_scale.quality(pose.fitness);
+  const bool verifiedAtOnce = m_params.verifier.evaluations == 0; // no challenger: a lock is verified as it is taken
   const bool refused = m_params.lock.confidence > 0 && m_lock.wouldLock(quality) &&
-                       m_judgement.firstLockConfidence(evidence, m_steady.recentBestQ(), m_params.verifier.evaluations == 0) <
-                           m_params.lock.confidence;
+                       m_judgement.firstLockConfidence(evidence, m_steady.recentBestQ(), verifiedAtOnce) < m_params.lock.confidence;
   const TrackState prev = m_lock.state();
   const RmGaUpdate::Restart restart = m_lock.update(quality, refused);
   const TrackState state = m_lock.state();
