@@ -102,7 +102,8 @@ public:
     projects within 1/512 px of a sample column or row can leave a one-sample crack along it (a
     few pixels in some images of C01..C12; a whole column on R1's flat face); true has none. The
     default keeps the images of the 12 sea creatures bit-identical; Scene turns it on for the
-    relief targets and under the scene light.
+    relief targets and under the scene light (what making it the default moves:
+    docs/simulated-lab.md).
   */
   void setExactBounds(bool on) { m_exactBounds = on; }
   //! True if the exact (fixed-point) bounding boxes are on: see setExactBounds().
