@@ -8,13 +8,13 @@
 #include "pm/trust/PassCalibration.h"
 #include "pm/app/Options.h"
 #include "pm/report/ModelOutputs.h"
+#include "pm/report/AllAroundOutputs.h"
 #include "pm/capture/VideoCaptureSource.h"
 #include "pm/core/Error.h"
 #include "pm/io/CameraFile.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
-#include "pm/io/AllAroundFiles.h"
 #include "pm/io/ViewsFolder.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/lab/LabPass.h"
@@ -175,7 +175,7 @@ int makeAllAround(const Options &o)
     pm::model::PassMeasurements measured;
     pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, o.ap, measured);
     const std::string tries = calibrate(o, rig, pass, b, measured);
-    pm::io::writeAllAroundModel(b, pass, rig, o.out, source, false, "", moreFiles(tries));
+    pm::report::writeAllAroundModel(b, pass, rig, o.out, source, false, "", moreFiles(tries));
     if (!o.quiet)
       std::cout << pm::report::describeAllAroundModel(b, source, o.out, false) << "  " << pm::trust::describe(b.model.trust) << "\n" << std::flush;
     return 0;
@@ -194,7 +194,7 @@ int makeAllAround(const Options &o)
   const std::string tries = calibrate(o, rig, lp.views, b, measured);
   const pm::lab::SurfaceTruth truth = pm::lab::checkSurface(scene, b, lp.fMo.inverse() * b.fMm, rig.left.cam);
   const std::string silhouettes = pm::lab::checkSilhouettes(scene, lp.views, lp.fMo, b, rig).text;
-  pm::io::writeAllAroundModel(b, lp.views, rig, o.out, source, true, pm::lab::surfaceTruthJson(truth), moreFiles(tries));
+  pm::report::writeAllAroundModel(b, lp.views, rig, o.out, source, true, pm::lab::surfaceTruthJson(truth), moreFiles(tries));
   if (!o.quiet)
     std::cout << pm::report::describeAllAroundModel(b, source, o.out, true) << silhouettes << truth.text << "  " << pm::trust::describe(b.model.trust) << "\n"
               << std::flush;

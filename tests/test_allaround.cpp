@@ -27,7 +27,6 @@
 #include "pm/lab/SimulatedHandEye.h"
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
-#include "pm/model/SurfaceDrawing.h"
 #include "pm/model/PassLandings.h"
 #include "pm/model/PassPlanner.h"
 #include "pm/precise/ModelErrorFloor.h"
@@ -43,6 +42,7 @@
 #include "pm/sim/RobotPA10.h"
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/PhotoModelTracker.h"
+#include "pm/report/SurfaceDrawing.h"
 
 namespace {
 
@@ -398,8 +398,8 @@ TEST(AllAround, TheLabPassOfTheCrabMakesAModelThatFindsTiltedPoses)
   // The hull contains the toy: every pass view's silhouette is covered by the hull's outline.
   for (std::size_t k = 0; k < c.pass.views.size(); k += 5) {
     vpImage<unsigned char> hull;
-    pm::model::drawSurface(b.surface, b.fMm.inverse() * c.pass.views[k].fMh * rig().left.hMc, rig().left.cam, rig().left.width,
-                    rig().left.height, &hull);
+    pm::report::drawSurface(b.surface, b.fMm.inverse() * c.pass.views[k].fMh * rig().left.hMc, rig().left.cam, rig().left.width,
+                     rig().left.height, &hull);
     long in = 0, covered = 0;
     for (unsigned i = 0; i < hull.getSize(); ++i)
       if (b.silhouettes[2 * k].bitmap[i]) {

@@ -8,9 +8,9 @@
 #include "pm/io/StagedFiles.h"
 #include "pm/io/WellFormedXml.h"
 
-#include "pm/io/AllAroundFiles.h"
 #include "pm/io/AllAroundParamsJson.h"
 #include "pm/io/DataDir.h"
+#include "pm/io/PlyFile.h"
 #include "pm/io/PoseFile.h"
 #include "pm/io/ViewsFolder.h"
 namespace pm_examples {
@@ -34,12 +34,10 @@ void exampleAllAroundParamsJson()
   const std::string json = pm::io::allAroundParamsToJson(p); // {"backdrop_hue_deg":-1.0, ..., "viewpoints":{..., "count":120, ...}}
 }
 
-// AllAroundFiles.h
-void exampleAllAroundFiles(const pm::model::AllAroundBuild &build, const std::vector<pm::model::PassView> &pass, const pm::core::StereoRig &rig)
+// PlyFile.h
+void examplePlyFile(const pm::model::AllAroundBuild &build)
 {
-  pm::io::StagedFiles out("model_dir");
-  pm::io::writeAllAroundPictures(build, pass, rig, out);
-  out.commit();
+  pm::io::writeTextFile("model.ply", pm::io::plyText(build.surface, &build.mesh));
 }
 
 // CameraFile.h

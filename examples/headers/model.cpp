@@ -25,7 +25,6 @@
 #include "pm/model/Silhouette.h"
 #include "pm/model/StereoPhotoModelBuilder.h"
 #include "pm/model/SubpixelOutline.h"
-#include "pm/model/SurfaceDrawing.h"
 #include "pm/model/ViewpointModel.h"
 namespace pm_examples {
 
@@ -226,10 +225,5 @@ void exampleVisualHullFile(const std::vector<pm::model::hull::HullView> &views, 
   std::cout << hull.volumeCm3() << " cm3\n";
 }
 
-// SurfaceDrawing.h
-void exampleSurfaceDrawing(const pm::model::AllAroundBuild &build, const vpHomogeneousMatrix &mMc, const pm::core::StereoRig &rig)
-{
-  const vpImage<vpRGBa> seen = pm::model::drawSurface(build.surface, mMc, rig.left.cam, 640, 480);
-}
 
 } // namespace pm_examples

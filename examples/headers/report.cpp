@@ -1,6 +1,7 @@
 // The usage examples of pm::report's headers, each as its header shows it: this file is compiled
 // (never run), and scripts/header-examples.py checks that every example of a header is part of a file
 // here. What an example takes as given is its function's parameters.
+#include "pm/report/AllAroundOutputs.h"
 #include "pm/report/CalibrationOutputs.h"
 #include "pm/report/DetectionOutputs.h"
 #include "pm/report/FitnessMapOutputs.h"
@@ -8,6 +9,7 @@
 #include "pm/report/ModelOutputs.h"
 #include "pm/report/ObjectiveProfiles.h"
 #include "pm/report/Overlay.h"
+#include "pm/report/SurfaceDrawing.h"
 #include "pm/report/TimePlot.h"
 
 #include <cmath>
@@ -21,6 +23,20 @@
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/tracker/StaticDetection.h"
 namespace pm_examples {
+
+// AllAroundOutputs.h
+void exampleAllAroundOutputs(const pm::model::AllAroundBuild &build, const std::vector<pm::model::PassView> &pass, const pm::core::StereoRig &rig)
+{
+  pm::io::StagedFiles out("model_dir");
+  pm::report::writeAllAroundPictures(build, pass, rig, out);
+  out.commit();
+}
+
+// SurfaceDrawing.h
+void exampleSurfaceDrawing(const pm::model::AllAroundBuild &build, const vpHomogeneousMatrix &mMc, const pm::core::StereoRig &rig)
+{
+  const vpImage<vpRGBa> seen = pm::report::drawSurface(build.surface, mMc, rig.left.cam, 640, 480);
+}
 
 // CalibrationOutputs.h
 void exampleCalibrationOutputs(const std::vector<pm::calib::StereoImagePair> &pairs, const pm::calib::TagBoard &board)

@@ -1,6 +1,6 @@
 #pragma once
 /*!
-  \file AllAroundFiles.h
+  \file AllAroundOutputs.h
   What a person looks at after an all-around build, written into an output folder:
 
   - model.ply: the hull's surface as a coloured point cloud with normals (ASCII PLY, model frame,
@@ -13,7 +13,7 @@
 
   \code
       pm::io::StagedFiles out("model_dir");
-      pm::io::writeAllAroundPictures(build, pass, rig, out);
+      pm::report::writeAllAroundPictures(build, pass, rig, out);
       out.commit();
   \endcode
 */
@@ -24,13 +24,11 @@
 #include "pm/io/StagedFiles.h"
 #include "pm/model/AllAroundModelBuilder.h"
 
-namespace pm::io {
+namespace pm::report {
 
-//! The ASCII PLY of \e surface (x y z nx ny nz red green blue), with \e mesh's triangles when it is the surface's (a vertex per point).
-std::string plyText(const std::vector<model::SurfacePoint> &surface, const model::HullMesh *mesh = nullptr);
 //! Stages model.ply, contact.png and silhouettes.png into \e out.
 void writeAllAroundPictures(const model::AllAroundBuild &build, const std::vector<model::PassView> &pass, const core::StereoRig &rig,
-                            StagedFiles &out);
+                            io::StagedFiles &out);
 
 /*!
   Writes everything of an all-around build into the folder \e dir, all at once or nothing:
@@ -47,4 +45,4 @@ std::string writeAllAroundModel(const model::AllAroundBuild &build, const std::v
                                 const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson = "",
                                 const std::vector<std::pair<std::string, std::string>> &moreFiles = {});
 
-} // namespace pm::io
+} // namespace pm::report

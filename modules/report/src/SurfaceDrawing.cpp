@@ -1,4 +1,4 @@
-#include "pm/model/SurfaceDrawing.h"
+#include "pm/report/SurfaceDrawing.h"
 
 #include <cmath>
 #include <limits>
@@ -6,20 +6,20 @@
 #include "pm/core/PinholeCamera.h"
 #include "pm/model/HullGeometry.h"
 
-namespace pm::model {
+namespace pm::report {
 
-using hull::Vec3;
-using hull::dot;
-using hull::sub;
-using hull::unit;
+using model::hull::Vec3;
+using model::hull::dot;
+using model::hull::sub;
+using model::hull::unit;
 
-vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
+vpImage<vpRGBa> drawSurface(const std::vector<model::SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
                             const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask)
 {
   const core::PinholeCamera::Projection pin(mMc, cam, w, h);
   vpImage<vpRGBa> out(h, w, vpRGBa(0, 0, 0));
   std::vector<float> zbuf(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity());
-  for (const SurfacePoint &s : surface) {
+  for (const model::SurfacePoint &s : surface) {
     double u, v, z;
     if (!pin.project({s.x, s.y, s.z}, u, v, z))
       continue;
@@ -51,4 +51,4 @@ vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHo
   return out;
 }
 
-} // namespace pm::model
+} // namespace pm::report

@@ -1,9 +1,8 @@
-#include "pm/io/AllAroundFiles.h"
+#include "pm/report/AllAroundOutputs.h"
 
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -12,10 +11,12 @@
 #include "pm/core/UndistortMap.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
-#include "pm/model/SurfaceDrawing.h"
+#include "pm/io/PlyFile.h"
+#include "pm/io/StagedFiles.h"
 #include "pm/io/ViewsFolder.h"
+#include "pm/report/SurfaceDrawing.h"
 
-namespace pm::io {
+namespace pm::report {
 
 namespace {
 
@@ -47,28 +48,9 @@ vpHomogeneousMatrix leftInModel(const model::AllAroundBuild &b, const model::Pas
 
 } // namespace
 
-std::string plyText(const std::vector<model::SurfacePoint> &surface, const model::HullMesh *mesh)
+void writeAllAroundPictures(const model::AllAroundBuild &b, const std::vector<model::PassView> &pass, const core::StereoRig &rig, io::StagedFiles &out)
 {
-  const bool faces = mesh && mesh->vertices.size() == surface.size();
-  std::ostringstream s;
-  s << "ply\nformat ascii 1.0\ncomment visp-photomodel all-around surface, model frame, mm\nelement vertex " << surface.size()
-    << "\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
-       "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-  if (faces)
-    s << "element face " << mesh->triangles.size() << "\nproperty list uchar int vertex_indices\n";
-  s << "end_header\n";
-  for (const model::SurfacePoint &p : surface)
-    s << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.nx << ' ' << p.ny << ' ' << p.nz << ' ' << int(p.r) << ' ' << int(p.g)
-      << ' ' << int(p.b) << '\n';
-  if (faces)
-    for (const auto &t : mesh->triangles)
-      s << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  return s.str();
-}
-
-void writeAllAroundPictures(const model::AllAroundBuild &b, const std::vector<model::PassView> &pass, const core::StereoRig &rig, StagedFiles &out)
-{
-  writeTextFile(out.stage("model.ply"), plyText(b.surface, &b.mesh));
+  io::writeTextFile(out.stage("model.ply"), io::plyText(b.surface, &b.mesh));
   const unsigned w = rig.left.width, h = rig.left.height;
   const int tw = 320, th = static_cast<int>(320.0 * h / w);
   std::unique_ptr<core::UndistortMap> und;
@@ -80,36 +62,36 @@ void writeAllAroundPictures(const model::AllAroundBuild &b, const std::vector<mo
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t k = j * pass.size() / n;
     vpImage<vpRGBa> photo = und ? und->undistorted(pass[k].left) : pass[k].left;
-    vpImage<vpRGBa> model = model::drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h);
+    vpImage<vpRGBa> model = drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h);
     cv::putText(asMat(photo), pass[k].name, cv::Point(10, 30), cv::FONT_HERSHEY_SIMPLEX, 1.0, cv::Scalar(255, 255, 255, 255), 2);
     cv::putText(asMat(model), "model", cv::Point(10, 30), cv::FONT_HERSHEY_SIMPLEX, 1.0, cv::Scalar(255, 255, 255, 255), 2);
     const int x = static_cast<int>(j % 2) * 2 * tw, y = static_cast<int>(j / 2) * th;
     paste(sheet, photo, x, y, tw, th);
     paste(sheet, model, x + tw, y, tw, th);
   }
-  writeImage(sheet, out.stage("contact.png"));
+  io::writeImage(sheet, out.stage("contact.png"));
   // Silhouettes: every view's left photo, its silhouette (green) and the hull's outline (red).
   const std::size_t cols = 4, rows = (pass.size() + cols - 1) / cols;
   vpImage<vpRGBa> sil(static_cast<unsigned>(th * rows), static_cast<unsigned>(tw * cols), vpRGBa(40, 40, 40));
   for (std::size_t k = 0; k < pass.size(); ++k) {
     vpImage<vpRGBa> photo = und ? und->undistorted(pass[k].left) : pass[k].left;
     vpImage<unsigned char> hull;
-    model::drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h, &hull);
+    drawSurface(b.surface, leftInModel(b, pass[k], rig), rig.left.cam, w, h, &hull);
     if (2 * k < b.silhouettes.size())
       outline(photo, b.silhouettes[2 * k], cv::Scalar(0, 255, 0, 255));
     outline(photo, hull, cv::Scalar(255, 0, 0, 255));
     cv::putText(asMat(photo), pass[k].name, cv::Point(10, 30), cv::FONT_HERSHEY_SIMPLEX, 1.0, cv::Scalar(255, 255, 255, 255), 2);
     paste(sil, photo, static_cast<int>(k % cols) * tw, static_cast<int>(k / cols) * th, tw, th);
   }
-  writeImage(sil, out.stage("silhouettes.png"));
+  io::writeImage(sil, out.stage("silhouettes.png"));
 }
 
 std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vector<model::PassView> &pass, const core::StereoRig &rig,
                                 const std::string &dir, const std::string &source, bool keepViews, const std::string &truthJson,
                                 const std::vector<std::pair<std::string, std::string>> &moreFiles)
 {
-  StagedFiles out(dir);
-  savePhotoModel(b.model, out.stage("model.json"));
+  io::StagedFiles out(dir);
+  io::savePhotoModel(b.model, out.stage("model.json"));
   writeAllAroundPictures(b, pass, rig, out);
   nlohmann::json fMo = nlohmann::json::array();
   for (unsigned r = 0; r < 4; ++r)
@@ -156,15 +138,15 @@ std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vecto
   if (!truthJson.empty())
     summary["truth"] = nlohmann::json::parse(truthJson);
   if (b.model.trust.measured)
-    summary["trust_calibration"] = nlohmann::json::parse(trustCalibrationToJson(b.model.trust));
+    summary["trust_calibration"] = nlohmann::json::parse(io::trustCalibrationToJson(b.model.trust));
   for (const auto &[name, content] : moreFiles)
-    writeTextFile(out.stage(name), content);
+    io::writeTextFile(out.stage(name), content);
   const std::string text = summary.dump(2) + "\n";
-  writeTextFile(out.stage("summary.json"), text);
+  io::writeTextFile(out.stage("summary.json"), text);
   out.commit();
   if (keepViews) // after the model: a failure here leaves the model, never half a folder of views
-    saveViewsFolder(pass, (std::filesystem::path(dir) / "views").string());
+    io::saveViewsFolder(pass, (std::filesystem::path(dir) / "views").string());
   return text;
 }
 
-} // namespace pm::io
+} // namespace pm::report

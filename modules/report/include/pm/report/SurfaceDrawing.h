@@ -2,11 +2,10 @@
 /*!
   \file SurfaceDrawing.h
   The all-around model's surface drawn as a camera sees it, for pictures (pm-make-model's contact
-  sheet, the views beside the model seen from them). In pm::model rather than pm::report because
-  pm::io's all-around files draw it and pm::report depends on pm::io.
+  sheet and silhouettes, AllAroundOutputs.h).
 
   \code
-      const vpImage<vpRGBa> seen = pm::model::drawSurface(build.surface, mMc, rig.left.cam, 640, 480);
+      const vpImage<vpRGBa> seen = pm::report::drawSurface(build.surface, mMc, rig.left.cam, 640, 480);
   \endcode
 */
 #include <vector>
@@ -18,14 +17,14 @@
 
 #include "pm/model/AllAroundModelBuilder.h"
 
-namespace pm::model {
+namespace pm::report {
 
 /*!
   The hull's surface drawn by a camera at \e mMc (its pose in the model frame, metres) with
   intrinsics \e cam, \e w x \e h: each surface point in its colour (nearest first), the rest black.
   \e mask (when given) gets 255 where the hull covers the image. For pictures.
 */
-vpImage<vpRGBa> drawSurface(const std::vector<SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
+vpImage<vpRGBa> drawSurface(const std::vector<model::SurfacePoint> &surface, const vpHomogeneousMatrix &mMc,
                             const vpCameraParameters &cam, unsigned w, unsigned h, vpImage<unsigned char> *mask = nullptr);
 
-} // namespace pm::model
+} // namespace pm::report
