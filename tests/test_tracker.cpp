@@ -1,6 +1,7 @@
 // The photo-model tracker: detection from scratch, static detection (Table 1), initFromPose, the states (lost and found
 // again), configuration files, bad input. Budgets in evaluations, so every run is deterministic.
 #include <algorithm>
+#include <limits>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -754,6 +755,22 @@ TEST(PoseHistory, KeepsThePoseBeforeTheLastOnlyWhenBothWereTrackedAndFollowsTheH
   h.reset(frame(30, pm::tracker::TrackState::Tracking));
   EXPECT_EQ(h.beforeLast(), nullptr);
   EXPECT_DOUBLE_EQ(h.last().phi.x, 30.0);
+}
+
+TEST(PoseHistory, APoseMovedWithTheHandFollowsTheHandsMotionAndOneThatCannotBeReadStays)
+{
+  const pm::core::Phi p{10, -20, 500, 0.1, -0.05, 0.2};
+  const vpHomogeneousMatrix M(0.005, 0.002, -0.001, vpMath::rad(2), vpMath::rad(-1), 0);
+  const pm::core::Phi q = pm::tracker::movedWithHand(M, p);
+  const pm::core::Phi expected = pm::core::fromHomogeneousMatrix(M * pm::core::toHomogeneousMatrix(p));
+  EXPECT_LT(pm::core::translationDistanceMm(q, expected), 1e-9);
+  EXPECT_LT(pm::core::rotationDistanceDeg(q, expected), 1e-4);
+  EXPECT_GT(pm::core::translationDistanceMm(q, p), 5.0); // it did move
+  vpHomogeneousMatrix broken = M;
+  broken[0][3] = std::numeric_limits<double>::quiet_NaN();
+  const pm::core::Phi kept = pm::tracker::movedWithHand(broken, p);
+  EXPECT_EQ(kept.x, p.x);
+  EXPECT_EQ(kept.e3, p.e3);
 }
 
 TEST(Tracker, SearchingFramesScoreManyPosesCoarselyAndReportTheExactFitness)

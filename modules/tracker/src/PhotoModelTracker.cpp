@@ -271,10 +271,7 @@ void PhotoModelTracker::applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev)
 {
   if (!hNowMhPrev.isAnHomogeneousMatrix())
     throw core::Error("tracker: the hand motion is not a rigid transformation");
-  const auto moved = [&](const core::Phi &p) {
-    const core::Phi q = core::fromHomogeneousMatrix(hNowMhPrev * core::toHomogeneousMatrix(p));
-    return q.isValid() ? q : p;
-  };
+  const auto moved = [&](const core::Phi &p) { return movedWithHand(hNowMhPrev, p); };
   m_search.transform(moved);
   m_verifier.transform(moved);
   m_refinement.transform(hNowMhPrev);

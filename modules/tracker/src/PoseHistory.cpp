@@ -17,13 +17,16 @@ void PoseHistory::remember(const TrackResult &r)
   m_last = r;
 }
 
+core::Phi movedWithHand(const vpHomogeneousMatrix &hNowMhPrev, const core::Phi &p)
+{
+  const core::Phi q = core::fromHomogeneousMatrix(hNowMhPrev * core::toHomogeneousMatrix(p));
+  return q.isValid() ? q : p;
+}
+
 void PoseHistory::transform(const vpHomogeneousMatrix &hNowMhPrev)
 {
-  if (m_haveBeforeLast) { // through the pose's matrix; a pose that would leave the valid range stays as it was
-    const core::Phi q = core::fromHomogeneousMatrix(hNowMhPrev * core::toHomogeneousMatrix(m_beforeLast));
-    if (q.isValid())
-      m_beforeLast = q;
-  }
+  if (m_haveBeforeLast)
+    m_beforeLast = movedWithHand(hNowMhPrev, m_beforeLast);
   if (m_preciseCount > 0) {
     m_precisePrev = hNowMhPrev * m_precisePrev;
     m_preciseLast = hNowMhPrev * m_preciseLast;

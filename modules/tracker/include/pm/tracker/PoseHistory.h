@@ -31,6 +31,12 @@
 
 namespace pm::tracker {
 
+/*!
+  \e p seen from where the hand is now, after the hand moved by \e hNowMhPrev (through the pose's
+  matrix); a pose that would leave the valid range (core::Phi::isValid()) stays \e p.
+*/
+core::Phi movedWithHand(const vpHomogeneousMatrix &hNowMhPrev, const core::Phi &p);
+
 //! The tracker's past frames (see the file's description).
 class PoseHistory
 {
