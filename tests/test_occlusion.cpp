@@ -11,6 +11,7 @@
 
 #include "TestSupport.h"
 #include "pm/core/Error.h"
+#include "pm/core/Statistics.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/io/RigFile.h"
 #include "pm/lab/LabModel.h"
@@ -305,28 +306,40 @@ TEST(StereoOcclusion, BehindTheStrandThePreciseStageLandsAndJudgesAsInTheOpen)
   // The precise stage from the crab's pose: behind the strand, without what it finds hidden (lines
   // and interior points), it lands as in the open and its lines split target from background as
   // sharply (the separation, a cue of the confidence); with every line and point, the lines crossing
-  // the strand blur the split. (How far the strand pulls the pose off with every line depends on the
-  // model: 0.97 deg against 0.55 without what is hidden with the lab's model before issue 56's
-  // background subtraction, 0.79 against 0.74 after it; not a property, not asserted.)
+  // the strand blur the split. Where it lands depends on where it starts (0.3 to 1.1 deg from the
+  // truth in the open, from starts 0.2 to 0.7 deg off it), so the landing is compared over the truth
+  // and seven starts around it, as RM-GA hands over, by the median (docs/occlusion.md).
   const LabCase &l = labCase();
   const StrandCase &c = l.c;
-  auto at = [&](const vpImage<vpRGBa> *pair, bool on) {
+  auto at = [&](const vpImage<vpRGBa> *pair, bool on, const pm::core::Phi &start) {
     pm::precise::PreciseStage precise(c.rig, l.model.build.model, lineOcclusion(on));
     precise.setImages(pair[0], pair[1]);
-    return precise.refine(l.truth, true);
+    return precise.refine(start, true);
   };
-  const pm::precise::PreciseResult open = at(c.clear, true), hidden = at(c.strand, true), all = at(c.strand, false);
+  const pm::precise::PreciseResult open = at(c.clear, true, l.truth), hidden = at(c.strand, true, l.truth),
+                                   all = at(c.strand, false, l.truth);
   ASSERT_TRUE(open.ok && hidden.ok && all.ok);
   EXPECT_EQ(open.hiddenLines[0] + open.hiddenLines[1], 0u);
   EXPECT_GE(hidden.hiddenLines[0] + hidden.hiddenLines[1], 20u);
   EXPECT_LT(open.separation - hidden.separation, 0.01);
   EXPECT_GT(open.separation - all.separation, 0.05);
-  const double deg[3] = {pm::core::rotationDistanceDeg(open.phi, l.truth), pm::core::rotationDistanceDeg(hidden.phi, l.truth),
-                         pm::core::rotationDistanceDeg(all.phi, l.truth)};
-  std::cout << "from the truth: " << deg[0] << " deg in the open, " << deg[1] << " behind the strand without what is hidden, " << deg[2]
-            << " with every line and point\n";
-  EXPECT_LT(deg[1], deg[0] + 0.25) << deg[0] << " in the open";
   EXPECT_LT(pm::core::translationDistanceMm(hidden.phi, l.truth), 1.0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> mm(-1.5, 1.5), eps(-0.004, 0.004);
+  std::vector<double> openDeg, hiddenDeg;
+  for (int i = 0; i < 8; ++i) {
+    pm::core::Phi s = l.truth;
+    if (i > 0)
+      s.x += mm(rng), s.y += mm(rng), s.z += mm(rng), s.e1 += eps(rng), s.e2 += eps(rng), s.e3 += eps(rng);
+    const pm::precise::PreciseResult o = i > 0 ? at(c.clear, true, s) : open, h = i > 0 ? at(c.strand, true, s) : hidden;
+    ASSERT_TRUE(o.ok && h.ok) << "start " << i;
+    openDeg.push_back(pm::core::rotationDistanceDeg(o.phi, l.truth));
+    hiddenDeg.push_back(pm::core::rotationDistanceDeg(h.phi, l.truth));
+  }
+  const double openMedian = pm::core::percentile(openDeg, 0.5), hiddenMedian = pm::core::percentile(hiddenDeg, 0.5);
+  std::cout << "from the truth, median of 8 starts: " << openMedian << " deg in the open, " << hiddenMedian
+            << " behind the strand without what is hidden\n";
+  EXPECT_LT(hiddenMedian, openMedian + 0.25);
 }
 
 TEST(StereoOcclusion, ParametersOutOfRangeAreRefusedWithAClearError)

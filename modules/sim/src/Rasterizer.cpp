@@ -29,18 +29,6 @@ inline std::int64_t ceilDiv(std::int64_t q, std::int64_t d) { return -floorDiv(-
 //! floor(q / 256) and ceil(q / 256) (an arithmetic shift).
 inline std::int64_t floorDiv256(std::int64_t q) { return q >> 8; }
 inline std::int64_t ceilDiv256(std::int64_t q) { return -((-q) >> 8); }
-//! std::floor and std::ceil of a float of magnitude below 2^31, as an int (no library call).
-inline int floorToInt(float x)
-{
-  const int i = static_cast<int>(x);
-  return i - (x < static_cast<float>(i));
-}
-inline int ceilToInt(float x)
-{
-  const int i = static_cast<int>(x);
-  return i + (x > static_cast<float>(i));
-}
-
 /*!
   Narrows [lo, hi] (steps from the row's first sample) to where e + k step + bias >= 0: an edge
   function is linear along the row, so the samples inside a triangle are one span, found exactly.
@@ -359,24 +347,13 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &
       area = -area;
     }
     const ProjVertex &a = *pa, &b = *pb, &c = *pc;
-    // The bounding box from the same fixed-point coordinates as the edge test (from the floats, a
-    // vertex at 342.9999 whose fixed value is 343 dropped the samples of column 343 that lie on
-    // its edges from both triangles: a crack along a mesh line that projects onto a sample column).
-    // Kept off by default (setExactBounds) so that existing images stay bit-identical.
-    int x0, x1, y0, y1;
-    if (m_exactBounds) {
-      x0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv256(std::min({A.x, B.x, C.x}))));
-      x1 = static_cast<int>(std::min<std::int64_t>(W - 1, floorDiv256(std::max({A.x, B.x, C.x}))));
-      y0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv256(std::min({A.y, B.y, C.y}))));
-      y1 = static_cast<int>(std::min<std::int64_t>(H - 1, floorDiv256(std::max({A.y, B.y, C.y}))));
-    } else {
-      x0 = std::max(0, ceilToInt(std::min({a.X, b.X, c.X})));
-      x1 = std::min(W - 1, floorToInt(std::max({a.X, b.X, c.X})));
-      y0 = std::max(0, ceilToInt(std::min({a.Y, b.Y, c.Y})));
-      y1 = std::min(H - 1, floorToInt(std::max({a.Y, b.Y, c.Y})));
-    }
-    y0 = std::max(y0, yBegin); // the rows of this band
-    y1 = std::min(y1, yEnd - 1);
+    // The bounding box comes from the same fixed-point vertices as the edge test, so that every
+    // sample the edge test puts inside the triangle is visited (docs/simulated-lab.md: a box from
+    // the floating-point vertices left a one-sample crack along mesh lines near a sample column).
+    const int x0 = static_cast<int>(std::max<std::int64_t>(0, ceilDiv256(std::min({A.x, B.x, C.x}))));
+    const int x1 = static_cast<int>(std::min<std::int64_t>(W - 1, floorDiv256(std::max({A.x, B.x, C.x}))));
+    const int y0 = static_cast<int>(std::max<std::int64_t>(yBegin, ceilDiv256(std::min({A.y, B.y, C.y})))); // within this band's rows
+    const int y1 = static_cast<int>(std::min<std::int64_t>(std::min(H, yEnd) - 1, floorDiv256(std::max({A.y, B.y, C.y}))));
     if (x0 > x1 || y0 > y1)
       continue;
     // E_pq(x, y) = (q.x - p.x)(y - p.y) - (q.y - p.y)(x - p.x), >= 0 inside; the edge opposite a is b->c.

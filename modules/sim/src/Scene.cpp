@@ -291,7 +291,6 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
   if (raster.width() != camera.width || raster.height() != camera.height || raster.supersampling() != m_params.supersampling)
     raster.reset(camera.width, camera.height, m_params.supersampling);
   const bool lit = sceneLit();
-  raster.setExactBounds(lit || isReliefTarget(m_target.info.code));
   const vpHomogeneousMatrix cMh = camera.cMh();
   const vpHomogeneousMatrix cMo = cMh * hMo;
   Lighting light;

@@ -97,19 +97,6 @@ public:
   double depthAt(unsigned u, unsigned v, std::uint8_t id) const;
 
   /*!
-    Triangle bounding boxes from the edge test's own fixed-point vertices (true) or from the
-    floating-point ones (false, the default, the original behaviour). With false, a mesh line that
-    projects within 1/512 px of a sample column or row can leave a one-sample crack along it (a
-    few pixels in some images of C01..C12; a whole column on R1's flat face); true has none. The
-    default keeps the images of the 12 sea creatures bit-identical; Scene turns it on for the
-    relief targets and under the scene light (what making it the default moves:
-    docs/simulated-lab.md).
-  */
-  void setExactBounds(bool on) { m_exactBounds = on; }
-  //! True if the exact (fixed-point) bounding boxes are on: see setExactBounds().
-  bool exactBounds() const { return m_exactBounds; }
-
-  /*!
     Shade 8 samples at a time with AVX2 where the processor has it (true, the default) or one at a
     time (false). The two give the same images bit for bit (the same operations in the same order);
     the switch is there to test that. The cast-shadow path is always one at a time.
@@ -187,7 +174,6 @@ private:
   void resolveRows(vpImage<vpRGBa> &out, unsigned vBegin, unsigned vEnd, const float *color, std::size_t colorOffset,
                    double exposure, double noiseSigma, std::uint64_t noiseSeed) const;
   unsigned m_w = 0, m_h = 0, m_ss = 1, m_W = 0, m_H = 0;
-  bool m_exactBounds = false;
   bool m_simd = true;
   std::vector<float> m_color;      // 4 * m_W * m_H (R, G, B, pad), for draw(); valid where m_id is not 0
   bool m_colorValid = true;        // false after render() until clear()
