@@ -135,7 +135,6 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
                "teach the confidence what right poses read through this camera (trust_tries.csv, docs/trust.md)");
   app.add_flag("--refine-outlines", o.ap.surface.refineOutlines, "all-around: the outlines to a fraction of a pixel (sub-pixel "
                "silhouettes, the surface moved onto every view's outline; docs/model-outline.md)");
-  app.add_option("--refine-depth-mm", o.ap.surface.refineDepthMm, "all-around: how far photo-consistency may move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   for (auto *a : {optViews, optAA})
     for (std::size_t k = 0; k + 1 < others.size(); ++k)
       a->excludes(others[k]);

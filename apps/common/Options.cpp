@@ -47,8 +47,6 @@ void addLabModelOptions(CLI::App &app, LabModelChoice &c)
                  "axis (deg; the views spread over them in proportion to the angle)")
       ->delimiter(',')
       ->check(CLI::Range(1.0, 80.0));
-  app.add_option("--refine-depth-mm", c.allAroundParams.surface.refineDepthMm, "simulator, all-around model: how far photo-consistency may "
-                 "move a hull point inward (0: the hull as carved)")->check(CLI::Range(0.0, 100.0));
   app.add_option("--backdrop-hue", c.allAroundParams.backdropHueDeg, "simulator, all-around model: segment the pass against "
                  "a plain backdrop of this hue (deg) instead of a second pass without the toy")->check(CLI::Range(0.0, 359.999));
   app.add_option("--viewpoints", c.allAroundParams.viewpoints.count, "simulator, all-around model: the model's viewing directions (K)")

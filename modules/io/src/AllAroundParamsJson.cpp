@@ -51,8 +51,7 @@ nlohmann::json carvingJson(const model::HullCarvingParams &c)
 
 nlohmann::json surfaceJson(const model::HullSurfaceParams &s)
 {
-  return {{"visibility_tol_mm", s.visibilityTolMm}, {"refine_outlines", s.refineOutlines}, {"outline", outlineJson(s.outline)},
-          {"refine_depth_mm", s.refineDepthMm},     {"refine_min_score", s.refineMinScore}, {"refine_min_gain", s.refineMinGain}};
+  return {{"visibility_tol_mm", s.visibilityTolMm}, {"refine_outlines", s.refineOutlines}, {"outline", outlineJson(s.outline)}};
 }
 
 nlohmann::json colourJson(const model::SurfaceColourParams &c)

@@ -19,7 +19,6 @@
 #include "pm/model/HullMesh.h"
 #include "pm/model/SubpixelOutline.h"
 #include "pm/model/OutlineRefinement.h"
-#include "PhotoConsistency.h"
 #include "pm/model/ViewpointModel.h"
 #include "pm/model/VisualHull.h"
 
@@ -356,7 +355,7 @@ float backgroundHueAround(const PassImages &im, const std::vector<vpImage<unsign
 
 }
 
-//! Stage 7: the model's viewpoints along \e dirs at \e D mm (the first is the model's own view; out: M's points).
+//! Stage 6: the model's viewpoints along \e dirs at \e D mm (the first is the model's own view; out: M's points).
 void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs, double D, const vpHomogeneousMatrix &mMh0,
                       const HullMesh &mesh, float bgHue, const AllAroundParams &p,
                       ViewpointScratch &scratch, AllAroundBuild &out)
@@ -497,21 +496,6 @@ AgreeingViews boxAndAgreeingViews(const PassImages &im, std::size_t nViews, cons
   return a;
 }
 
-/*!
-  Stage 5, without fusion only: the hull bulges in front of flat and concave faces (no silhouette
-  carves them); where the target has texture, each vertex moves inward along its normal to the depth
-  where the patches of the cameras that see it agree best. The mesh follows its vertices (out: nRefined).
-*/
-void photoConsistencyStage(const std::vector<const HullView *> &usedCams, const std::vector<std::vector<std::uint16_t>> &seenBy,
-                           const AllAroundParams &p, double cellMm, HullMesh &mesh, AllAroundBuild &out)
-{
-  if (!(p.surface.refineDepthMm > 0) || p.fusion.enabled)
-    return;
-  const std::vector<Vec3> normalsBefore = mesh.normals;
-  out.nRefined = refineByPhotoConsistency(usedCams, seenBy, normalsBefore, p, cellMm, mesh.vertices);
-  mesh.update();
-}
-
 //! The first view used: the model's frame and viewpoints come from it.
 std::size_t firstUsed(const std::vector<bool> &used)
 {
@@ -522,7 +506,7 @@ std::size_t firstUsed(const std::vector<bool> &used)
 }
 
 /*!
-  Stage 6: the model frame (origin at \e mean, the hull's centroid; axes those of the hand at \e
+  Stage 5: the model frame (origin at \e mean, the hull's centroid; axes those of the hand at \e
   firstView) and the surface in it, each vertex coloured from its \e samples (out: fMm, surface,
   surfaceVolumeCm3, the highlights). The mesh is moved into the model frame.
 */
@@ -548,7 +532,7 @@ void surfaceInModelFrame(const PassView &firstView, const Vec3 &mean, std::vecto
 }
 
 /*!
-  Stage 7: the viewpoints, a Fibonacci lattice over the directions within capDeg of \e firstView's,
+  Stage 6: the viewpoints, a Fibonacci lattice over the directions within capDeg of \e firstView's,
   at its distance, S_in kept farther inside a soft camera's outline (EdgeBlur.h; out: the model's
   views, edgeWidthPx, minInsidePx).
 */
@@ -596,17 +580,16 @@ AllAroundBuild build(const core::StereoRig &rig, const std::vector<PassView> &pa
   const Vec3 mean = occupiedCentroid(g);
   ViewpointScratch scratch; // the image-sized buffers, kept from one camera or viewpoint to the next
   const std::vector<std::vector<std::uint16_t>> seenBy = camerasSeeing(views.usedCams, mesh, p, scratch); // 4. who sees each point
-  photoConsistencyStage(views.usedCams, seenBy, p, g.cell, mesh, out);                                  // 5. without fusion
   std::vector<std::vector<ColourSample>> samples = colourSamples(views.usedCams, seenBy, mesh.vertices);
   const float bgHue = backgroundHueAround(im, out.silhouettes, views.used);
   const PassView &firstView = pass[firstUsed(views.used)];
-  surfaceInModelFrame(firstView, mean, samples, bgHue, p, mesh, out);          // 6. the model frame; the colours
-  viewpointsOfModel(rig, firstView, im, mesh, bgHue, p, scratch, out);         // 7. the viewpoints
+  surfaceInModelFrame(firstView, mean, samples, bgHue, p, mesh, out);          // 5. the model frame; the colours
+  viewpointsOfModel(rig, firstView, im, mesh, bgHue, p, scratch, out);         // 6. the viewpoints
   core::PhotoModel &M = out.model;
-  colourHistograms(views.usedCams, M.foregroundHistogram, M.backgroundHistogram); // 8. the colours, for the precise stage
+  colourHistograms(views.usedCams, M.foregroundHistogram, M.backgroundHistogram); // 7. the colours, for the precise stage
   out.mesh = std::move(mesh);
   M.hasColours = true;
-  if (p.passLandings) // 9. the model's own error at each view of the pass
+  if (p.passLandings) // 8. the model's own error at each view of the pass
     M.passLandings = measurePassLandings(rig, M, pass, views.used, out.fMm);
   M.validate("the all-around model");
   if (keep) {

@@ -28,9 +28,6 @@ void HullSurfaceParams::validate() const
 {
   outline.validate();
   check(visibilityTolMm > 0 && visibilityTolMm <= 50, "visibility tolerance must lie in (0, 50] mm");
-  check(refineDepthMm >= 0 && refineDepthMm <= 100, "refine depth must lie in [0, 100] mm");
-  check(refineMinScore >= -1 && refineMinScore <= 1, "refine minimum score must lie in [-1, 1]");
-  check(refineMinGain >= 0 && refineMinGain <= 2, "refine minimum gain must lie in [0, 2]");
 }
 
 void SurfaceColourParams::validate() const

@@ -126,7 +126,6 @@ std::string writeAllAroundModel(const model::AllAroundBuild &b, const std::vecto
                                {"pass_landings", landings},
                                {"n_contour_points", b.model.contour.size()},
                                {"cell_mm", b.cellMm},
-                               {"n_refined_points", b.nRefined},
                                {"n_highlight_points", b.nHighlight},
                                {"n_highlight_samples", b.nHighlightSamples},
                                {"shadow_px", b.shadowPx},

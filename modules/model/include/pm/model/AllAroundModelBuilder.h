@@ -9,7 +9,7 @@
   at the outline's depth. StereoFitness scores each camera with the viewpoint nearest its own
   direction, so the model has the right outline at every orientation the pass covers.
 
-  The build runs nine stages, in this order (AllAroundModelBuilder.cpp, build()):
+  The build runs eight stages, in this order (AllAroundModelBuilder.cpp, build()):
   1. Silhouettes (pm::model::silhouette, or pm::model::silhouetteOnBackdrop with backdropHueDeg) of
      both cameras of every view, in the ideal (undistorted) images; a silhouette cut by the image
      border is an error naming the view.
@@ -22,20 +22,17 @@
      depths and the backdrop (SurfaceFusion.h); the surface as a mesh of the hull's field (HullMesh.h),
      moved onto every view's outline when refineOutlines.
   4. Which cameras see each surface point: a depth buffer of the mesh, the normal facing the camera.
-  5. Without fusion only: photo-consistency. A point seen by 3 or more cameras moves inward along its
-     normal (up to refineDepthMm) to where their 5x5 patches agree best, when clearly better (a
-     hull carved from a cap of directions bulges in front of flat and concave faces).
-  6. Colours and the model frame: each point takes the median hue of the views that see it
+  5. Colours and the model frame: each point takes the median hue of the views that see it
      (samples brighter and paler than its others are highlights, left out; a point whose views
      disagree over maxHueSpreadDeg is marked, not used as S_in); the background's hue around the
      silhouettes. The model frame: origin at the hull's centroid, axes those of the hand at the first
      view used, so a tracker starting near that view's pose sees the model turned by little.
-  7. K viewpoints over the directions within capDeg of the first view's (a Fibonacci lattice), at
+  6. K viewpoints over the directions within capDeg of the first view's (a Fibonacci lattice), at
      the pass's distance: the surface points the virtual camera sees (nIn, spread over the image,
      at least inMinInsidePx inside the outline, farther for a soft camera), nOut points of the
      outline offset outward by the strip (S_out), and nContour outline points for the precise stage.
-  8. The colours of the target and around it (histograms for the precise stage's posteriors).
-  9. With passLandings: the precise stage from each pass view's known pose, the model's own error
+  7. The colours of the target and around it (histograms for the precise stage's posteriors).
+  8. With passLandings: the precise stage from each pass view's known pose, the model's own error
      there (PassLandings.h; the tracker's uncertainty floor).
 
   \code
@@ -101,7 +98,6 @@ struct AllAroundBuild
   double hullVolumeCm3 = 0;         //!< volume of the carved hull (cm^3)
   double surfaceVolumeCm3 = 0;      //!< volume inside the final surface (the hull's mesh, refined; cm^3)
   double cellMm = 0;                //!< the finest cell size used
-  int nRefined = 0;                 //!< surface points moved inward by photo-consistency (fusion off)
   long fusionCarvedCells = 0;       //!< hull cells the views' depths put outside
   long matchedTargetPx = 0;         //!< pixels of the target given a depth by stereo, over the views
   long matchedBackdropPx = 0;       //!< pixels of the backdrop given a depth, over the views

@@ -32,7 +32,7 @@ struct HullCarvingParams
   void validate() const;
 };
 
-//! Stages 3-5: the surface of the hull: its outlines, which cameras see it, photo-consistency without fusion.
+//! Stages 3-4: the surface of the hull: its outlines and which cameras see it.
 struct HullSurfaceParams
 {
   double visibilityTolMm = 3; //!< a surface point is seen when within this of the depth buffer (mm)
@@ -43,15 +43,12 @@ struct HullSurfaceParams
   */
   bool refineOutlines = false;
   OutlineRefinementParams outline; //!< the refinement, when refineOutlines
-  double refineDepthMm = 12;       //!< without fusion, photo-consistency: a point may move this far inward (mm; 0: the hull as carved)
-  double refineMinScore = 0.7;     //!< ... to a depth where the cameras' 5x5 patches correlate this well with their mean
-  double refineMinGain = 0.1;      //!< ... and this much better than at the hull
 
   //! Throws pm::core::Error naming the first value out of range.
   void validate() const;
 };
 
-//! Stage 6: each surface point's hue from the views that see it.
+//! Stage 5: each surface point's hue from the views that see it.
 struct SurfaceColourParams
 {
   double minSaturation = 0.15;         //!< colour samples paler than this have no hue
@@ -63,7 +60,7 @@ struct SurfaceColourParams
   void validate() const;
 };
 
-//! Stage 7: the model's viewpoints and the points each holds.
+//! Stage 6: the model's viewpoints and the points each holds.
 struct ViewpointSamplingParams
 {
   int count = 240;             //!< K, the viewpoints within the cap
@@ -98,7 +95,7 @@ struct AllAroundParams
   HullSurfaceParams surface;        //!< 3-5. the outlines, the visibility, photo-consistency
   SurfaceColourParams colour;       //!< 6. the surface's colours
   ViewpointSamplingParams viewpoints; //!< 7. the viewpoints
-  bool passLandings = true;         //!< 9. the precise stage on the pass's own views, the model's error there (PassLandings.h; the tracker's uncertainty floor)
+  bool passLandings = true;         //!< 8. the precise stage on the pass's own views, the model's error there (PassLandings.h; the tracker's uncertainty floor)
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
