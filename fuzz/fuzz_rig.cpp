@@ -1,4 +1,4 @@
-// Fuzz target: the stereo rig file (pm::io::loadRig), its intrinsics file next to it being valid.
+// Fuzz target: the rig file (pm::io::loadCameraRig, any number of cameras, and pm::io::loadRig, a stereo one), its intrinsics file next to it being valid.
 #include "FuzzFile.h"
 #include "pm/io/CameraXml.h"
 #include "pm/io/RigFile.h"
@@ -16,6 +16,7 @@ extern "C" int LLVMFuzzerInitialize(int *, char ***)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
   const std::string path = pm::fuzz::writeScratch("rig.json", data, size);
+  pm::fuzz::loadOrRefuse([&] { (void)pm::io::loadCameraRig(path); });
   pm::fuzz::loadOrRefuse([&] { (void)pm::io::loadRig(path); });
   return 0;
 }

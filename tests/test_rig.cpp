@@ -1,4 +1,6 @@
-// The stereo rig: the shipped lab rig, symmetric rigs, files and their errors.
+// The rig: the shipped lab rigs (stereo, one camera, three), symmetric rigs, files and their errors.
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include <visp3/core/vpMeterPixelConversion.h>
@@ -108,6 +110,65 @@ TEST(Rig, BrokenFilesAreClearErrors)
   j.replace(j.find("\"right\""), 7, "\"middle\"");
   pm::test::writeText(dir.file("r.json"), j);
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadRig(dir.file("r.json")); }).find("middle"), std::string::npos);
+}
+
+TEST(Rig, OneCameraAndThreeCamerasLoadAndAStereoRigIsTheirTwoCameraCase)
+{
+  const pm::core::StereoRig stereo = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  // The stereo file read as a rig of any size: its two cameras, left then right, the same values.
+  const pm::core::CameraRig two = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_TRUE(two.isStereo());
+  EXPECT_EQ(two[0].name, "left");
+  EXPECT_TRUE(two[1].hMc == stereo.right.hMc);
+  // One camera at the stereo rig's left camera's place: a target 500 mm ahead at its image centre.
+  const pm::core::CameraRig one = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_mono.json"));
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_FALSE(one.isStereo());
+  EXPECT_TRUE(one[0].hMc == stereo.left.hMc);
+  EXPECT_DOUBLE_EQ(one[0].cam.get_px(), stereo.left.cam.get_px());
+  EXPECT_NEAR(project(one[0], 0, 0, 0.5).get_u(), 320, 1e-6);
+  // Three: the stereo pair and a camera 150 mm above the hand's centre, tilted down onto the same point.
+  const pm::core::CameraRig three = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_trio.json"));
+  ASSERT_EQ(three.size(), 3u);
+  EXPECT_TRUE(three[1].hMc == stereo.right.hMc);
+  EXPECT_EQ(three[2].name, "top");
+  EXPECT_NEAR(three[2].hMc[1][3], -0.150, 1e-12);
+  const vpImagePoint top = project(three[2], 0, 0, 0.5);
+  EXPECT_NEAR(top.get_u(), 320, 1e-6);
+  EXPECT_NEAR(top.get_v(), 240, 1e-6);
+  // A program that needs a stereo rig says how many cameras the file has.
+  const std::string e = pm::test::errorOf([&] { (void)pm::io::loadRig(pm::test::dataPath("rig/pa10_mono.json")); });
+  EXPECT_NE(e.find("1 camera;"), std::string::npos) << e;
+  EXPECT_NE(e.find("pa10_mono.json"), std::string::npos) << e;
+  EXPECT_NE(pm::test::errorOf([&] { (void)three.stereo(); }).find("3 cameras"), std::string::npos);
+}
+
+TEST(Rig, AnyNumberOfCamerasSurvivesTheRoundTripAndNoneOrFiveIsAClearError)
+{
+  pm::test::TempDir dir("rig");
+  const pm::core::CameraRig three = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_trio.json"));
+  for (std::size_t n : {1u, 3u}) {
+    const pm::core::CameraRig rig(std::vector<pm::core::PinholeCamera>(three.cameras.begin(), three.cameras.begin() + static_cast<long>(n)));
+    const std::string json = dir.file("r" + std::to_string(n) + ".json");
+    pm::io::saveRig(rig, json, "r" + std::to_string(n) + "_cameras.xml");
+    const pm::core::CameraRig back = pm::io::loadCameraRig(json);
+    ASSERT_EQ(back.size(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+      EXPECT_EQ(back[k].name, rig[k].name);
+      EXPECT_DOUBLE_EQ(back[k].cam.get_px(), rig[k].cam.get_px());
+      for (unsigned r = 0; r < 3; ++r)
+        for (unsigned c = 0; c < 4; ++c)
+          EXPECT_NEAR(back[k].hMc[r][c], rig[k].hMc[r][c], 1e-9) << k;
+    }
+  }
+  pm::test::writeText(dir.file("none.json"), R"({"format":"visp-photomodel-rig","version":1,"intrinsics_xml":"r3_cameras.xml","cameras":[]})");
+  EXPECT_NE(pm::test::errorOf([&] { (void)pm::io::loadCameraRig(dir.file("none.json")); }).find("1 to 4 cameras"), std::string::npos);
+  pm::core::CameraRig five = three;
+  five.cameras.insert(five.cameras.end(), three.cameras.begin(), three.cameras.begin() + 2);
+  EXPECT_NE(pm::test::errorOf([&] { five.validate(); }).find("not 5"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::saveRig(five, dir.file("five.json"), "five.xml"); }).find("not 5"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("five.json")));
 }
 
 TEST(PoseTable, ShippedTable2AndBrokenTables)

@@ -8,6 +8,7 @@
 #include <visp3/io/vpImageIo.h>
 
 #include "pm/core/BatchPool.h"
+#include "pm/core/CameraRig.h"
 #include "pm/core/FitnessMap.h"
 #include "pm/core/Hue.h"
 #include "pm/core/HuePlane.h"
@@ -176,6 +177,17 @@ void exampleHueFrame2(const pm::core::StereoScorer &scorer, const vpImage<vpRGBa
   pm::core::HueFrame frame = scorer.newFrame();
   scorer.setImages(frame, IL, IR);
   std::cout << frame.plane(0).width() << " px wide, background hue " << frame.backgroundHue() << " deg\n";
+}
+
+// CameraRig.h
+void exampleCameraRig()
+{
+  const pm::core::StereoRig stereo = pm::io::loadRig("data/rig/pa10_stereo.json");
+  const pm::core::CameraRig both(stereo);                        // cameras[0] left, cameras[1] right
+  const pm::core::CameraRig one(std::vector<pm::core::PinholeCamera>{stereo.left}); // the left camera alone
+  one.validate();                                                // throws pm::core::Error naming what is wrong
+  std::cout << one.size() << " camera, stereo: " << (one.isStereo() ? "yes" : "no") << "\n";
+  const pm::core::StereoRig again = both.stereo();               // the two cameras as left and right
 }
 
 // StereoRig.h

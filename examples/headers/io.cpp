@@ -53,6 +53,13 @@ void exampleDataDir()
   const std::string rig = pm::io::dataDir(PM_SOURCE_DATA_DIR, PM_INSTALL_DATA_DIR) + "/rig/pa10_stereo.json";
 }
 
+// RigFile.h
+void exampleRigFileAnyCameras()
+{
+  const pm::core::CameraRig rig = pm::io::loadCameraRig("data/rig/pa10_mono.json");
+  std::cout << rig.size() << " camera(s), the first " << rig[0].name << " " << rig[0].width << "x" << rig[0].height << "\n";
+}
+
 // PoseFile.h
 void examplePoseFile()
 {

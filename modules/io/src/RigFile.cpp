@@ -80,12 +80,12 @@ vpCameraParameters vispDistortionModel(const core::PinholeCamera &camera)
   return out;
 }
 
-core::StereoRig loadRig(const std::string &path)
+core::CameraRig loadCameraRig(const std::string &path)
 {
   std::ifstream f(path);
   if (!f)
     throw core::Error("rig file '" + path + "' does not exist or cannot be read");
-  core::StereoRig rig;
+  core::CameraRig rig;
   try {
     const json j = json::parse(f);
     detail::checkFormat(j, kFormat, 2);
@@ -94,25 +94,25 @@ core::StereoRig loadRig(const std::string &path)
     if (!xml.empty() && !fs::is_regular_file(xml))
       throw core::Error("the intrinsics file '" + xml.string() + "' does not exist");
     const json &cams = j.at("cameras");
-    if (!cams.is_array() || cams.size() != 2)
-      throw core::Error("\"cameras\" must list exactly two cameras, left then right");
-    core::PinholeCamera *dst[2] = {&rig.left, &rig.right};
-    for (std::size_t i = 0; i < 2; ++i) {
-      core::PinholeCamera &c = *dst[i];
-      c.name = cams[i].at("name").get<std::string>();
-      const int w = cams[i].at("image_width").get<int>(), h = cams[i].at("image_height").get<int>();
+    if (!cams.is_array() || cams.empty() || cams.size() > core::CameraRig::kMaxCameras)
+      throw core::Error("\"cameras\" must list 1 to " + std::to_string(core::CameraRig::kMaxCameras) + " cameras");
+    for (const json &cj : cams) {
+      core::PinholeCamera c;
+      c.name = cj.at("name").get<std::string>();
+      const int w = cj.at("image_width").get<int>(), h = cj.at("image_height").get<int>();
       if (w <= 0 || h <= 0)
         throw core::Error("camera '" + c.name + "': image size must be positive");
       c.width = static_cast<unsigned>(w);
       c.height = static_cast<unsigned>(h);
-      c.hMc = poseFromJson(cams[i].at("hMc"));
+      c.hMc = poseFromJson(cj.at("hMc"));
       // The camera's own intrinsics file (any format readCameraFile knows), else the rig's ViSP XML.
-      const fs::path file = cams[i].contains("intrinsics") ? dir / cams[i].at("intrinsics").get<std::string>() : xml;
+      const fs::path file = cj.contains("intrinsics") ? dir / cj.at("intrinsics").get<std::string>() : xml;
       if (file.empty())
         throw core::Error("camera '" + c.name + "' has no \"intrinsics\" file and the rig no \"intrinsics_xml\"");
       const CameraFile in = readCameraFile(file.string(), c.name, c.width, c.height);
       c.cam = in.camera.cam;
       c.distortion = in.camera.distortion;
+      rig.cameras.push_back(std::move(c));
     }
     rig.validate();
   } catch (const core::Error &e) {
@@ -125,7 +125,17 @@ core::StereoRig loadRig(const std::string &path)
   return rig;
 }
 
-void saveRig(const core::StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
+core::StereoRig loadRig(const std::string &path)
+{
+  const core::CameraRig rig = loadCameraRig(path);
+  try {
+    return rig.stereo();
+  } catch (const core::Error &e) {
+    throw core::Error("rig file '" + path + "': " + e.what());
+  }
+}
+
+void saveRig(const core::CameraRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
              const std::string &description)
 {
   rig.validate();
@@ -142,7 +152,8 @@ void saveRig(const core::StereoRig &rig, const std::string &rigJsonPath, const s
     for (const auto &w : written)
       fs::remove(w.first, ec);
   };
-  for (const core::PinholeCamera *c : {&rig.left, &rig.right}) {
+  for (const core::PinholeCamera &camera : rig.cameras) {
+    const core::PinholeCamera *c = &camera;
     json cj{{"name", c->name}, {"image_width", c->width}, {"image_height", c->height}, {"hMc", poseToJson(c->hMc)}};
     try {
       // ViSP's XML: the pinhole model, or ViSP's one-coefficient model of the lens (exact when

@@ -1,7 +1,8 @@
 #pragma once
 /*!
   \file RigFile.h
-  Stereo rig files. A rig is two files:
+  Rig files: one camera or more on the hand (1 to CameraRig::kMaxCameras), a stereo rig's two
+  listed left then right. A rig is two files:
   - the intrinsics, in ViSP's camera XML (vpXmlParserCamera), one \<camera\> per camera,
     perspective projection without distortion;
   - the rig file (JSON), which names that XML and gives, for each camera, its name in the
@@ -24,13 +25,24 @@
 */
 #include <string>
 
+#include "pm/core/CameraRig.h"
 #include "pm/core/StereoRig.h"
 
 namespace pm::io {
 
 /*!
-  Reads a rig (version 1 or 2; hMc comes out in metres); throws pm::core::Error naming the file and the
-  field that is missing or wrong.
+  Reads a rig of any number of cameras (1 to CameraRig::kMaxCameras; version 1 or 2; hMc comes out in
+  metres), numbered as listed; throws pm::core::Error naming the file and the field that is missing or
+  wrong.
+  \code
+  const pm::core::CameraRig rig = pm::io::loadCameraRig("data/rig/pa10_mono.json");
+  std::cout << rig.size() << " camera(s), the first " << rig[0].name << " " << rig[0].width << "x" << rig[0].height << "\n";
+  \endcode
+*/
+core::CameraRig loadCameraRig(const std::string &rigJsonPath);
+/*!
+  Reads a stereo rig: a rig file of exactly two cameras, left then right (loadCameraRig()); throws
+  pm::core::Error naming the file, and the number of cameras when it is not two.
 
   \code
 #include <iostream>
@@ -48,12 +60,13 @@ int main()
 */
 core::StereoRig loadRig(const std::string &rigJsonPath);
 /*!
-  Writes the rig JSON and its intrinsics XML (name relative to the JSON's folder). A camera with
-  a lens ViSP's model cannot hold exactly (more than k1) also gets an OpenCV YAML file
+  Writes the rig JSON (its cameras in order; a StereoRig converts: left, right) and its intrinsics
+  XML (name relative to the JSON's folder). A camera with a lens ViSP's model cannot hold exactly
+  (more than k1) also gets an OpenCV YAML file
   (\<rig stem\>_\<camera\>.yml), which the JSON names (version 2); the XML then holds ViSP's model
   fitted to the lens, for ViSP programs. Throws pm::core::Error; nothing is left half-written.
 */
-void saveRig(const core::StereoRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
+void saveRig(const core::CameraRig &rig, const std::string &rigJsonPath, const std::string &xmlName,
              const std::string &description = "");
 
 //! ViSP's one-coefficient model (kud, kdu) of \e camera's lens: exact for k1 alone, else a least-squares fit over the image.
