@@ -80,8 +80,8 @@ TEST(Fitness, ExactScoresOnUniformImages)
   fit.setImages(uniform(0, 255, 0), uniform(0, 255, 0));
   EXPECT_DOUBLE_EQ(fit.evaluate(kAhead), (20 * -0.5) / n);
   const pm::core::FitnessDetail d = fit.evaluateDetail(kAhead);
-  EXPECT_EQ(d.countsLeft.inOther, 49);
-  EXPECT_EQ(d.countsRight.outOther, 20);
+  EXPECT_EQ(d.counts[0].inOther, 49);
+  EXPECT_EQ(d.counts[1].outOther, 20);
   // Scores and tolerances are parameters.
   pm::core::FitnessParams p;
   p.outOther = -1.0;
@@ -115,14 +115,14 @@ TEST(Fitness, EachCameraIsScoredWithTheViewNearestItsDirectionOnOneScale)
   // The left image is red (the left view's S_in all match), the right one green (the right view's do).
   fit.setImages(uniform(255, 0, 0), uniform(0, 255, 0));
   const pm::core::FitnessDetail d = fit.evaluateDetail(kAhead);
-  EXPECT_EQ(d.countsLeft.inMatch, 49);
-  EXPECT_EQ(d.countsLeft.outOther, 20);
-  EXPECT_EQ(d.countsRight.inMatch, 25);
-  EXPECT_EQ(d.countsRight.outOther, 10);
-  EXPECT_DOUBLE_EQ(d.left, (49 * 2.0 + 20 * -0.5) / 69);
+  EXPECT_EQ(d.counts[0].inMatch, 49);
+  EXPECT_EQ(d.counts[0].outOther, 20);
+  EXPECT_EQ(d.counts[1].inMatch, 25);
+  EXPECT_EQ(d.counts[1].outOther, 10);
+  EXPECT_DOUBLE_EQ(d.score[0], (49 * 2.0 + 20 * -0.5) / 69);
   // The right view's sum on the left view's scale: both at their best score the same.
   const double best0 = (49 * 2.0 + 20 * 0.1) / 69, best1 = 25 * 2.0 + 10 * 0.1;
-  EXPECT_DOUBLE_EQ(d.right, (25 * 2.0 + 10 * -0.5) * best0 / best1);
+  EXPECT_DOUBLE_EQ(d.score[1], (25 * 2.0 + 10 * -0.5) * best0 / best1);
   EXPECT_EQ(fit.pointScores(kAhead, 0).size(), 69u);
   EXPECT_EQ(fit.pointScores(kAhead, 1).size(), 35u);
   // Turned by 90 deg about y, both cameras look from the model's side: the right view's camera
@@ -149,12 +149,12 @@ TEST(Fitness, HueDistancesWrapAround)
   pm::core::StereoFitness fit(rig, gridModel(355.f));
   fit.setImages(uniform(255, 42, 0), uniform(255, 42, 0)); // hue 10 deg: 15 deg from 355
   EXPECT_NEAR(pm::core::hueDeg(vpRGBa(255, 42, 0)), 9.9f, 0.1f);
-  EXPECT_EQ(fit.evaluateDetail(kAhead).countsLeft.inMatch, 49);
+  EXPECT_EQ(fit.evaluateDetail(kAhead).counts[0].inMatch, 49);
   pm::core::FitnessParams tight;
   tight.inTolDeg = 10;
   pm::core::StereoFitness fit2(rig, gridModel(355.f), tight);
   fit2.setImages(uniform(255, 42, 0), uniform(255, 42, 0));
-  EXPECT_EQ(fit2.evaluateDetail(kAhead).countsLeft.inMatch, 0);
+  EXPECT_EQ(fit2.evaluateDetail(kAhead).counts[0].inMatch, 0);
 }
 
 TEST(Fitness, OffTheImagesIsFiniteAndScoresOffImage)
@@ -588,6 +588,62 @@ TEST_F(FitnessOnC12Stereo, PeakIsAtTheTruthInDepthAndTilt)
   EXPECT_LE(std::fabs(argmax(2, 20, 0.5)), 1.5) << "z";
   EXPECT_LE(std::fabs(argmax(3, 0.08, 0.0025)), 0.01) << "eps1";
   EXPECT_LE(std::fabs(argmax(4, 0.08, 0.0025)), 0.01) << "eps2";
+}
+
+TEST_F(FitnessOnC12Stereo, OneCameraOrThreeScoreEachCameraAsTheStereoRigDoesAndFIsTheirMean)
+{
+  // The crab rendered in the three cameras of the lab's three-camera rig (the stereo pair and one
+  // above the hand's centre). Without the stereo visibility each camera is scored alone, so camera k
+  // of any rig scores as camera k of the stereo rig; F is the mean over the rig's cameras.
+  const pm::sim::Scene scene(pm::sim::makeTarget("C12", 0.5));
+  const pm::core::CameraRig three = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_trio.json"));
+  const vpHomogeneousMatrix hMo = pm::core::toHomogeneousMatrix({10, -5, 510, 0.02, -0.03, 0.05});
+  const std::vector<vpImage<vpRGBa>> im = scene.renderRig(three, hMo, 0);
+  ASSERT_EQ(im.size(), 3u);
+  pm::sim::StereoImages pair = scene.renderStereo(*rig, hMo, 0); // the same two images (ViSP's == is not const)
+  EXPECT_TRUE(pair.left == im[0] && pair.right == im[1]);
+  const vpImage<vpRGBa> *images[3] = {&im[0], &im[1], &im[2]};
+  pm::core::FitnessParams alone;
+  alone.stereoVisibility = false;
+  pm::core::StereoFitness stereo(*rig, *model, alone), one(pm::core::CameraRig(std::vector<pm::core::PinholeCamera>{three[0]}), *model, alone), trio(three, *model, alone);
+  stereo.setImages(im[0], im[1]);
+  one.setImages(images);
+  trio.setImages(images);
+  ASSERT_EQ(one.scorer().cameraCount(), 1);
+  ASSERT_EQ(trio.scorer().cameraCount(), 3);
+  const std::vector<pm::core::Phi> poses = {truth, {12, -9, 515, 0.05, -0.05, 0.08}, {-20, 10, 490, 0.0, 0.1, -0.1}};
+  for (const pm::core::Phi &p : poses) {
+    const pm::core::FitnessDetail s = stereo.evaluateDetail(p), o = one.evaluateDetail(p), t = trio.evaluateDetail(p);
+    ASSERT_EQ(o.cameras, 1);
+    EXPECT_EQ(o.score[0], s.score[0]);
+    EXPECT_EQ(o.fitness, s.score[0]); // one camera: F is its score
+    EXPECT_EQ(one.evaluate(p), o.fitness);
+    EXPECT_EQ(t.score[0], s.score[0]);
+    EXPECT_EQ(t.score[1], s.score[1]);
+    EXPECT_DOUBLE_EQ(t.fitness, (t.score[0] + t.score[1] + t.score[2]) / 3);
+    EXPECT_EQ(trio.evaluate(p), t.fitness);
+    EXPECT_GT(t.counts[2].inMatch, 0);
+  }
+  // Every camera alone peaks at the truth against a pose 30 mm or 0.1 away, and so does each rig.
+  for (const pm::core::Phi &off : {pm::core::Phi{truth.x + 30, truth.y, truth.z, truth.e1, truth.e2, truth.e3},
+                                   pm::core::Phi{truth.x, truth.y, truth.z, truth.e1, truth.e2, truth.e3 + 0.1}}) {
+    EXPECT_GT(one.evaluate(truth), one.evaluate(off) + 0.1);
+    EXPECT_GT(trio.evaluate(truth), trio.evaluate(off) + 0.1);
+    EXPECT_GT(trio.evaluateDetail(truth).score[2], trio.evaluateDetail(off).score[2] + 0.1);
+  }
+  // The batch, early rejection and the smooth score run over the rig's cameras too.
+  double batch[3], rejected[3], cost[3];
+  trio.scorer().evaluate(trio.frame(), poses.data(), 3, batch);
+  trio.scorer().evaluate(trio.frame(), poses.data(), 3, rejected, -1e9, cost);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(batch[i], trio.evaluate(poses[i]));
+    EXPECT_EQ(rejected[i], batch[i]);
+  }
+  double g[6];
+  EXPECT_NEAR(one.scorer().evaluateSmoothGradient(one.frame(), truth, g), one.evaluateSmooth(truth), 1e-4);
+  // A stereo pair given to a rig of another size, or a camera it does not have: clear errors.
+  EXPECT_NE(pm::test::errorOf([&] { one.setImages(im[0], im[1]); }).find("the rig has 1 camera"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { (void)trio.pointScores(truth, 3); }).find("no camera 3"), std::string::npos);
 }
 
 TEST(SmoothFitness, EqualsTheFitnessWhereEveryPixelScoresAlike)

@@ -109,7 +109,7 @@ TEST(StereoVisibility, BehindTheStrandTheRightPoseIsJudgedAsInTheOpenAndSearched
   const pm::core::FitnessDetail clearOff = detailAt(c.clear, false), strandOff = detailAt(c.strand, false);
   // Nothing hidden: the same F either way, and the visible F is F.
   EXPECT_NEAR(clearOn.fitness, clearOff.fitness, 0.005);
-  EXPECT_NEAR(0.5 * (clearOn.visibleLeft + clearOn.visibleRight), clearOn.fitness, 0.005);
+  EXPECT_NEAR(clearOn.meanVisible(), clearOn.fitness, 0.005);
   // Behind the strand the paper's F falls by a tenth or more. The search's F counts the hidden
   // points for nothing (the strip behind the strand no longer against the pose): no lower than the
   // paper's, and not higher than in the open (a pose gains nothing by hiding) ...
@@ -118,7 +118,7 @@ TEST(StereoVisibility, BehindTheStrandTheRightPoseIsJudgedAsInTheOpenAndSearched
   EXPECT_GE(strandOn.fitness, strandOff.fitness);
   EXPECT_LE(strandOn.fitness, clearOn.fitness);
   // ... while the F the pose is judged by, over the visible points, hardly moves.
-  EXPECT_LT(clearOn.fitness - 0.5 * (strandOn.visibleLeft + strandOn.visibleRight), 0.3 * fall);
+  EXPECT_LT(clearOn.fitness - strandOn.meanVisible(), 0.3 * fall);
 }
 
 TEST(StereoVisibility, WrongPosesGainNothingWhereNothingIsHidden)
@@ -160,11 +160,11 @@ TEST(StereoVisibility, BothKernelsCountTheSameHiddenPoints)
     fit.useScalarKernel(true);
     const pm::core::FitnessDetail b = fit.evaluateDetail(p);
     EXPECT_EQ(a.fitness, b.fitness) << p.toString();
-    EXPECT_EQ(a.countsLeft.inHidden, b.countsLeft.inHidden);
-    EXPECT_EQ(a.countsLeft.outHidden, b.countsLeft.outHidden);
-    EXPECT_EQ(a.countsRight.inHidden, b.countsRight.inHidden);
-    EXPECT_EQ(a.countsRight.outHidden, b.countsRight.outHidden);
-    anyHidden += a.countsLeft.inHidden + a.countsRight.inHidden > 0;
+    EXPECT_EQ(a.counts[0].inHidden, b.counts[0].inHidden);
+    EXPECT_EQ(a.counts[0].outHidden, b.counts[0].outHidden);
+    EXPECT_EQ(a.counts[1].inHidden, b.counts[1].inHidden);
+    EXPECT_EQ(a.counts[1].outHidden, b.counts[1].outHidden);
+    anyHidden += a.counts[0].inHidden + a.counts[1].inHidden > 0;
   }
   EXPECT_GT(anyHidden, 30); // the strand is in front of most of them
 }

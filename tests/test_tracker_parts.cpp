@@ -354,7 +354,7 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   const pm::tracker::Evidence e = judgement.measure(fitness.frame(), refined);
   // The cues' q is over the points not hidden (the stereo visibility): never under the frame's q.
   const pm::core::FitnessDetail d = fitness.evaluateDetail(c.truth);
-  EXPECT_DOUBLE_EQ(e.cues.quality, scale.quality(0.5 * (d.visibleLeft + d.visibleRight)));
+  EXPECT_DOUBLE_EQ(e.cues.quality, scale.quality(d.meanVisible()));
   EXPECT_GE(e.cues.quality, q);
   EXPECT_GT(e.cues.competitorMargin, 0.0); // the right pose stands above its turned copies
   EXPECT_GT(e.cues.inMatchMin, 0.5);

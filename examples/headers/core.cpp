@@ -129,7 +129,7 @@ void exampleStereoFitness()
   phi.z = 500;                                 // its axes those of the hand
   const double F = fitness.evaluate(phi);      // the higher, the better phi fits the pair
   const pm::core::FitnessDetail d = fitness.evaluateDetail(phi);
-  std::cout << "F = " << F << " (left " << d.left << ", right " << d.right << ")\n";
+  std::cout << "F = " << F << " (left " << d.score[0] << ", right " << d.score[1] << ")\n";
 }
 
 // StereoScorer.h

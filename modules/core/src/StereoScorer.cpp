@@ -38,19 +38,27 @@ double FitnessCounts::visibleShare() const
   return onImage > 0 ? 1.0 - static_cast<double>(inHidden + outHidden) / onImage : 1.0;
 }
 
-StereoScorer::StereoScorer(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params)
+double FitnessDetail::meanVisible() const
+{
+  double sum = visible[0];
+  for (int k = 1; k < cameras; ++k)
+    sum += visible[static_cast<std::size_t>(k)];
+  return sum / cameras;
+}
+
+StereoScorer::StereoScorer(const CameraRig &rig, const PhotoModel &model, const FitnessParams &params)
     : m_params(params), m_avx2(kernels::cpuHasAvx2())
 {
   rig.validate();
   model.validate("(in memory)");
   params.validate();
-  const PinholeCamera *cams[2] = {&rig.left, &rig.right};
-  for (int k = 0; k < 2; ++k) {
-    m_cams[k] = cams[k]->projection();
-    m_distortion[static_cast<std::size_t>(k)] = cams[k]->distortion;
-    m_intrinsics[static_cast<std::size_t>(k)] = cams[k]->cam;
-    if (!cams[k]->distortion.isNone())
-      m_undistort[static_cast<std::size_t>(k)] = std::make_shared<const UndistortMap>(*cams[k]);
+  m_nCams = static_cast<int>(rig.size());
+  for (std::size_t k = 0; k < rig.size(); ++k) {
+    m_cams[k] = rig[k].projection();
+    m_distortion[k] = rig[k].distortion;
+    m_intrinsics[k] = rig[k].cam;
+    if (!rig[k].distortion.isNone())
+      m_undistort[k] = std::make_shared<const UndistortMap>(rig[k]);
   }
   m_nIn = model.inner.size();
   m_nOut = model.outer.size();
@@ -167,34 +175,67 @@ const StereoScorer::View &StereoScorer::viewFor(const Projection &p) const
   return m_views[m_viewpoints.nearest(c)];
 }
 
+void StereoScorer::checkCamera(int camera) const
+{
+  if (camera < 0 || camera >= m_nCams)
+    throw Error("fitness: no camera " + std::to_string(camera) + " on a rig of " + std::to_string(m_nCams));
+}
+
+int StereoScorer::partnerOf(int cam) const
+{
+  if (!m_params.stereoVisibility || m_nCams < 2)
+    return -1;
+  return cam + 1 < m_nCams ? cam + 1 : cam - 1;
+}
+
 FitnessCounts StereoScorer::countCamera(const HueFrame &f, int cam, const Phi &phi) const
 {
-  const Projection p = projectionOf(cam, phi, &f), o = projectionOf(1 - cam, phi, &f);
+  const Projection p = projectionOf(cam, phi, &f);
+  const int partner = partnerOf(cam);
+  const Projection o = partner >= 0 ? projectionOf(partner, phi, &f) : p;
   FitnessCounts counts;
-  countView(f, p, m_params.stereoVisibility ? &o : nullptr, viewFor(p), 0, counts);
+  countView(f, p, partner >= 0 ? &o : nullptr, viewFor(p), 0, counts);
   return counts;
+}
+
+double StereoScorer::stereoScore(const HueFrame &f, const Phi &phi) const
+{
+  // The mean of the cameras' scores, summed in camera order (a stereo rig: (F_L + F_R) / 2 to the bit).
+  double sum = score(countCamera(f, 0, phi));
+  for (int cam = 1; cam < m_nCams; ++cam)
+    sum += score(countCamera(f, cam, phi));
+  return sum / m_nCams;
 }
 
 double StereoScorer::stereoScoreOrReject(const HueFrame &f, const Phi &phi, double rejectBelow, double &cost) const
 {
-  const Projection p[2] = {projectionOf(0, phi, &f), projectionOf(1, phi, &f)};
-  const View *v[2] = {&viewFor(p[0]), &viewFor(p[1])};
-  FitnessCounts c[2];
+  std::array<Projection, CameraRig::kMaxCameras> p;
+  std::array<const View *, CameraRig::kMaxCameras> v{};
+  for (int cam = 0; cam < m_nCams; ++cam) {
+    p[static_cast<std::size_t>(cam)] = projectionOf(cam, phi, &f);
+    v[static_cast<std::size_t>(cam)] = &viewFor(p[static_cast<std::size_t>(cam)]);
+  }
+  auto partner = [&](int cam) { return partnerOf(cam) >= 0 ? &p[static_cast<std::size_t>(partnerOf(cam))] : nullptr; };
+  std::array<FitnessCounts, CameraRig::kMaxCameras> c;
   double estimate = 0, done = 0, all = 0;
-  for (int cam = 0; cam < 2; ++cam) {
-    countView(f, p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 1, c[cam]);
-    estimate += 0.5 * score(c[cam]); // the share's own mean score: an estimate of F_cam
-    done += static_cast<double>((v[cam]->inSplit - v[cam]->inBegin) + (v[cam]->outSplit - v[cam]->outBegin));
-    all += static_cast<double>((v[cam]->inEnd - v[cam]->inBegin) + (v[cam]->outEnd - v[cam]->outBegin));
+  for (int cam = 0; cam < m_nCams; ++cam) {
+    const std::size_t k = static_cast<std::size_t>(cam);
+    countView(f, p[k], partner(cam), *v[k], 1, c[k]);
+    estimate += score(c[k]) / m_nCams; // the share's own mean score: an estimate of F_cam
+    done += static_cast<double>((v[k]->inSplit - v[k]->inBegin) + (v[k]->outSplit - v[k]->outBegin));
+    all += static_cast<double>((v[k]->inEnd - v[k]->inBegin) + (v[k]->outEnd - v[k]->outBegin));
   }
   if (estimate < rejectBelow) {
     cost = all > 0 ? done / all : 1.0;
     return estimate;
   }
-  for (int cam = 0; cam < 2; ++cam)
-    countView(f, p[cam], m_params.stereoVisibility ? &p[1 - cam] : nullptr, *v[cam], 2, c[cam]);
+  for (int cam = 0; cam < m_nCams; ++cam)
+    countView(f, p[static_cast<std::size_t>(cam)], partner(cam), *v[static_cast<std::size_t>(cam)], 2, c[static_cast<std::size_t>(cam)]);
   cost = 1.0;
-  return 0.5 * (score(c[0]) + score(c[1]));
+  double sum = score(c[0]);
+  for (int cam = 1; cam < m_nCams; ++cam)
+    sum += score(c[static_cast<std::size_t>(cam)]);
+  return sum / m_nCams;
 }
 
 void StereoScorer::cappedHidden(const FitnessCounts &c, int &inHidden, int &outHidden) const
@@ -263,13 +304,16 @@ FitnessDetail StereoScorer::evaluateDetail(const HueFrame &f, const Phi &phi) co
 {
   check(f, phi);
   FitnessDetail d;
-  d.countsLeft = countCamera(f, 0, phi);
-  d.countsRight = countCamera(f, 1, phi);
-  d.left = score(d.countsLeft);
-  d.right = score(d.countsRight);
-  d.fitness = 0.5 * (d.left + d.right);
-  d.visibleLeft = visibleScore(d.countsLeft);
-  d.visibleRight = visibleScore(d.countsRight);
+  d.cameras = m_nCams;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(m_nCams); ++k) {
+    d.counts[k] = countCamera(f, static_cast<int>(k), phi);
+    d.score[k] = score(d.counts[k]);
+    d.visible[k] = visibleScore(d.counts[k]);
+  }
+  double sum = d.score[0];
+  for (std::size_t k = 1; k < static_cast<std::size_t>(m_nCams); ++k)
+    sum += d.score[k];
+  d.fitness = sum / m_nCams;
   return d;
 }
 

@@ -9,25 +9,44 @@
 
 namespace pm::core {
 
-void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) const
+void StereoScorer::checkSizes(const vpImage<vpRGBa> *const *im) const
 {
-  const std::array<PixelRect, 2> whole = {PixelRect{0, 0, m_cams[0].w, m_cams[0].h},
-                                          PixelRect{0, 0, m_cams[1].w, m_cams[1].h}};
-  setImages(f, left, right, whole);
+  for (int k = 0; k < m_nCams; ++k) {
+    const PinholeCamera::Projection &c = m_cams[static_cast<std::size_t>(k)];
+    if (static_cast<int>(im[k]->getWidth()) != c.w || static_cast<int>(im[k]->getHeight()) != c.h) {
+      const std::string name = m_nCams == 2 ? std::string(k == 0 ? "left" : "right") : "camera " + std::to_string(k) + "'s";
+      throw Error(name + " image is " + std::to_string(im[k]->getWidth()) + "x" + std::to_string(im[k]->getHeight()) +
+                  " but the rig's camera is " + std::to_string(c.w) + "x" + std::to_string(c.h));
+    }
+  }
 }
 
-void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right,
-                             const std::array<PixelRect, 2> &windows) const
+namespace {
+
+//! Throws pm::core::Error unless the scorer's rig has two cameras (the stereo pair's calls).
+void needPair(int cameras, const char *what)
 {
-  const vpImage<vpRGBa> *im[2] = {&left, &right};
-  for (int k = 0; k < 2; ++k)
-    if (static_cast<int>(im[k]->getWidth()) != m_cams[k].w || static_cast<int>(im[k]->getHeight()) != m_cams[k].h)
-      throw Error(std::string(k == 0 ? "left" : "right") + " image is " + std::to_string(im[k]->getWidth()) + "x" +
-                  std::to_string(im[k]->getHeight()) + " but the rig's camera is " + std::to_string(m_cams[k].w) +
-                  "x" + std::to_string(m_cams[k].h));
-  // The two planes on two cores (BatchPool: on the caller alone when the other core is busy).
-  std::exception_ptr error[2];
-  BatchPool::shared().run(2, [&](std::size_t k) {
+  if (cameras != 2)
+    throw Error(std::string("fitness: ") + what + " given a stereo pair, but the rig has " + std::to_string(cameras) +
+                (cameras == 1 ? " camera" : " cameras"));
+}
+
+} // namespace
+
+void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> *const *images) const
+{
+  std::array<PixelRect, CameraRig::kMaxCameras> whole;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(m_nCams); ++k)
+    whole[k] = PixelRect{0, 0, m_cams[k].w, m_cams[k].h};
+  setImages(f, images, whole.data());
+}
+
+void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> *const *im, const PixelRect *windows) const
+{
+  checkSizes(im);
+  // The cameras' planes on two cores (BatchPool: on the caller alone when the other core is busy).
+  std::array<std::exception_ptr, CameraRig::kMaxCameras> error;
+  BatchPool::shared().run(static_cast<std::size_t>(m_nCams), [&](std::size_t k) {
     try {
       if (const auto &map = m_undistort[k])
         f.m_planes[k].compute(*im[k], m_params.minSaturation, *map);
@@ -43,17 +62,38 @@ void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> &left, const vpI
   f.m_hasImages = true;
 }
 
+void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) const
+{
+  needPair(m_nCams, "setImages");
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  setImages(f, im);
+}
+
+void StereoScorer::setImages(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right,
+                             const std::array<PixelRect, 2> &windows) const
+{
+  needPair(m_nCams, "setImages");
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  setImages(f, im, windows.data());
+}
+
 void StereoScorer::addHueUnder(HueFrame &f, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses,
                                std::size_t n) const
 {
+  needPair(m_nCams, "addHueUnder");
+  const vpImage<vpRGBa> *im[2] = {&left, &right};
+  addHueUnder(f, im, poses, n);
+}
+
+void StereoScorer::addHueUnder(HueFrame &f, const vpImage<vpRGBa> *const *im, const Phi *poses, std::size_t n) const
+{
   for (std::size_t k = 0; k < n; ++k)
     check(f, poses[k]);
-  const vpImage<vpRGBa> *im[2] = {&left, &right};
-  for (int cam = 0; cam < 2; ++cam)
+  for (int cam = 0; cam < m_nCams; ++cam)
     if (im[cam]->getWidth() != f.plane(cam).width() || im[cam]->getHeight() != f.plane(cam).height())
       throw Error("fitness: the hue is added from images of another size than the last pair's");
-  // The two cameras on two cores; addPixels cannot throw here (the sizes match, the pixels are in the image).
-  BatchPool::shared().run(2, [&](std::size_t cam) {
+  // The cameras on two cores; addPixels cannot throw here (the sizes match, the pixels are in the image).
+  BatchPool::shared().run(static_cast<std::size_t>(m_nCams), [&](std::size_t cam) {
     if (m_undistort[cam]) // its plane is the whole ideal image
       return;
     std::vector<std::int64_t> &pixels = f.m_pixelScratch[cam];
@@ -78,6 +118,7 @@ PixelRect StereoScorer::footprint(const Phi &phi, int camera) const
 {
   if (!phi.isValid())
     throw Error("footprint of an invalid pose " + phi.toString());
+  checkCamera(camera);
   const Projection p = projectionOf(camera, phi);
   const View &view = viewFor(p);
   double umin = 1e9, vmin = 1e9, umax = -1e9, vmax = -1e9;

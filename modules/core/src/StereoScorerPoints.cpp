@@ -12,6 +12,7 @@ double StereoScorer::visibleFraction(const Phi &phi, int camera) const
 {
   if (!phi.isValid())
     throw Error("visible fraction at an invalid pose " + phi.toString());
+  checkCamera(camera);
   const Projection p = projectionOf(camera, phi);
   const View &view = viewFor(p);
   std::size_t in = 0;
@@ -33,7 +34,7 @@ double StereoScorer::reprojectionRms(const Phi &a, const Phi &b) const
     throw Error("reprojection between invalid poses " + a.toString() + " and " + b.toString());
   double sum = 0;
   std::size_t n = 0;
-  for (int cam = 0; cam < 2; ++cam) {
+  for (int cam = 0; cam < m_nCams; ++cam) {
     const Projection pa = projectionOf(cam, a), pb = projectionOf(cam, b);
     for (std::size_t i = 0; i < m_nIn + m_nOut; ++i) {
       double uv[2][2];
@@ -67,6 +68,7 @@ std::size_t StereoScorer::outerPointsMax() const
 std::size_t StereoScorer::outerHues(const HueFrame &f, const Phi &phi, int camera, float *out, std::size_t capacity) const
 {
   check(f, phi);
+  checkCamera(camera);
   const Projection p = projectionOf(camera, phi, &f);
   const View &view = viewFor(p);
   std::size_t n = 0;
@@ -81,7 +83,10 @@ std::size_t StereoScorer::outerHues(const HueFrame &f, const Phi &phi, int camer
 std::vector<PointScore> StereoScorer::pointScores(const HueFrame &f, const Phi &phi, int camera) const
 {
   check(f, phi);
-  const Projection p = projectionOf(camera, phi, &f), o = projectionOf(1 - camera, phi, &f);
+  checkCamera(camera);
+  const int partner = partnerOf(camera);
+  const bool visibility = partner >= 0;
+  const Projection p = projectionOf(camera, phi, &f), o = projectionOf(visibility ? partner : camera, phi, &f);
   const View &view = viewFor(p);
   const kernels::Tolerances tol = tolerances(f);
   std::vector<PointScore> out;
@@ -90,10 +95,10 @@ std::vector<PointScore> StereoScorer::pointScores(const HueFrame &f, const Phi &
     const bool inner = k < view.inEnd;
     FitnessCounts c;
     const std::int32_t h = m_hasDepth ? kernels::sampleScalar<true>(p, m_x[i], m_y[i], m_z[i]) : kernels::sampleScalar<false>(p, m_x[i], m_y[i], 0.f);
-    const std::int32_t ho = !m_params.stereoVisibility || h < 0 ? -1
+    const std::int32_t ho = !visibility || h < 0 ? -1
                             : m_hasDepth ? kernels::sampleScalar<true>(o, m_x[i], m_y[i], m_z[i])
                                          : kernels::sampleScalar<false>(o, m_x[i], m_y[i], 0.f);
-    const bool hidden = m_params.stereoVisibility && (inner ? kernels::inMayBeHidden(h, m_hue[i], tol) && kernels::inHit(ho, m_hue[i], tol)
+    const bool hidden = visibility && (inner ? kernels::inMayBeHidden(h, m_hue[i], tol) && kernels::inHit(ho, m_hue[i], tol)
                                                             : kernels::outMayBeHidden(h, tol) && kernels::outHit(ho, tol));
     if (inner)
       kernels::classifyIn(h, m_hue[i], tol, c);

@@ -120,28 +120,46 @@ double StereoScorer::smoothCamera(const HueFrame &f, int cam, const Phi &phi, bo
 double StereoScorer::evaluateSmoothGradient(const HueFrame &f, const Phi &phi, double grad[6], double *metric) const
 {
   check(f, phi);
-  // The two cameras on two cores, each into its own sums (BatchPool: on the caller alone when the other core is busy).
-  double camG[2][6] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}}, camM[2][36], camS[2];
-  std::size_t camInside[2] = {0, 0};
-  BatchPool::shared().run(2, [&](std::size_t cam) {
+  // The cameras on two cores, each into its own sums (BatchPool: on the caller alone when the other core is busy).
+  constexpr std::size_t K = CameraRig::kMaxCameras;
+  double camG[K][6] = {}, camM[K][36], camS[K] = {};
+  std::size_t camInside[K] = {};
+  const std::size_t n = static_cast<std::size_t>(m_nCams);
+  BatchPool::shared().run(n, [&](std::size_t cam) {
     if (metric)
       std::fill(camM[cam], camM[cam] + 36, 0.0);
     camS[cam] = smoothCamera(f, static_cast<int>(cam), phi, true, metric != nullptr, camG[cam], metric ? camM[cam] : nullptr, &camInside[cam]);
   });
-  const double s = 0.5 * (camS[0] + camS[1]);
-  const std::size_t inside = camInside[0] + camInside[1];
-  for (int k = 0; k < 6; ++k)
-    grad[k] = 0.5 * (camG[0][k] + camG[1][k]);
+  // Means over the cameras, summed in camera order (a stereo rig: (left + right) / 2 to the bit).
+  double s = camS[0];
+  std::size_t inside = camInside[0];
+  for (std::size_t c = 1; c < n; ++c) {
+    s += camS[c];
+    inside += camInside[c];
+  }
+  for (int k = 0; k < 6; ++k) {
+    double g = camG[0][k];
+    for (std::size_t c = 1; c < n; ++c)
+      g += camG[c][k];
+    grad[k] = g / m_nCams;
+  }
   if (metric) // the mean over the points in the images
-    for (int k = 0; k < 36; ++k)
-      metric[k] = inside ? (camM[0][k] + camM[1][k]) / static_cast<double>(inside) : 0.0;
-  return s;
+    for (int k = 0; k < 36; ++k) {
+      double m = camM[0][k];
+      for (std::size_t c = 1; c < n; ++c)
+        m += camM[c][k];
+      metric[k] = inside ? m / static_cast<double>(inside) : 0.0;
+    }
+  return s / m_nCams;
 }
 
 double StereoScorer::evaluateSmooth(const HueFrame &f, const Phi &phi) const
 {
   check(f, phi);
-  return 0.5 * (smoothCamera(f, 0, phi, false, false, nullptr, nullptr, nullptr) + smoothCamera(f, 1, phi, false, false, nullptr, nullptr, nullptr));
+  double s = smoothCamera(f, 0, phi, false, false, nullptr, nullptr, nullptr);
+  for (int cam = 1; cam < m_nCams; ++cam)
+    s += smoothCamera(f, cam, phi, false, false, nullptr, nullptr, nullptr);
+  return s / m_nCams;
 }
 
 } // namespace pm::core

@@ -107,7 +107,7 @@ FitnessMapsResult writeFitnessMaps(const std::string &dir, const core::StereoFit
                                {"truth", {truth.x, truth.y, truth.z, truth.e1, truth.e2, truth.e3}},
                                {"model_points", modelPoints},
                                {"fitness_at_truth", atTruth.fitness},
-                               {"counts_at_truth", {{"left", countsJson(atTruth.countsLeft)}, {"right", countsJson(atTruth.countsRight)}}},
+                               {"counts_at_truth", {{"left", countsJson(atTruth.counts[0])}, {"right", countsJson(atTruth.counts[1])}}},
                                {"kernel", fit.kernelName()},
                                {"grids", grids},
                                {"time_s", r.seconds}};

@@ -369,24 +369,23 @@ void Scene::renderIdeal(Rasterizer &raster, const core::PinholeCamera &camera, c
   raster.render(tank, calls, n, camera.cam, out, m_params.exposure, noiseSigma, noiseSeed);
 }
 
-StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
-                                 const vpHomogeneousMatrix &oMb) const
+std::vector<vpImage<vpRGBa>> Scene::renderRig(const core::CameraRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                                              const vpHomogeneousMatrix &oMb) const
 {
-  StereoImages im;
-  const core::PinholeCamera *cams[2] = {&rig.left, &rig.right};
-  vpImage<vpRGBa> *outs[2] = {&im.left, &im.right};
-  // The two cameras on two cores, through the pool the fitness uses: an OpenMP region here left
+  rig.validate();
+  std::vector<vpImage<vpRGBa>> im(rig.size());
+  // The cameras on two cores, through the pool the fitness uses: an OpenMP region here left
   // libgomp's worker spinning after it, on the core the tracker's helper needs (1,900 evaluations
   // took 5.0 ms with it, 3.2 ms with OMP_WAIT_POLICY=passive).
-  std::exception_ptr error[2];
-  core::BatchPool::shared().run(2, [&](std::size_t i) {
+  std::vector<std::exception_ptr> error(rig.size());
+  core::BatchPool::shared().run(rig.size(), [&](std::size_t i) {
     try {
       // Each thread keeps its sample buffers from frame to frame (21 MB at 640 x 480 with
       // supersampling 2) instead of allocating and zeroing them anew (pm-bench
       // Render_StereoPair: 43.3 -> 40.7 ms in one measurement, within the spread between runs).
       // clear() sets every sample, so the images are the same.
       thread_local Rasterizer raster;
-      render(raster, *cams[i], hMo, frame, static_cast<unsigned>(i), *outs[i], true, oMb);
+      render(raster, rig[i], hMo, frame, static_cast<unsigned>(i), im[i], true, oMb);
     } catch (...) {
       error[i] = std::current_exception();
     }
@@ -395,6 +394,16 @@ StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneous
     if (e)
       std::rethrow_exception(e);
   return im;
+}
+
+StereoImages Scene::renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                                 const vpHomogeneousMatrix &oMb) const
+{
+  std::vector<vpImage<vpRGBa>> im = renderRig(rig, hMo, frame, oMb);
+  StereoImages pair;
+  pair.left = std::move(im[0]);
+  pair.right = std::move(im[1]);
+  return pair;
 }
 
 void Scene::renderPhotos(const vpCameraParameters &cam, unsigned w, unsigned h, double distanceMm,

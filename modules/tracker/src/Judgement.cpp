@@ -59,19 +59,24 @@ Evidence Judgement::measure(const core::HueFrame &frame, const RefinedPose &refi
   ConfidenceCues &c = e.cues;
   const core::FitnessDetail d = m_scorer.evaluateDetail(frame, refined.pose.phi);
   // Over the points not hidden: a right pose behind an occluder is judged as in the open.
-  c.quality = m_scale.quality(0.5 * (d.visibleLeft + d.visibleRight));
-  c.qualityMin = std::min(m_scale.quality(d.visibleLeft), m_scale.quality(d.visibleRight));
+  c.quality = m_scale.quality(d.meanVisible());
   auto shares = [](const core::FitnessCounts &n, double &in, double &out) {
     const int nIn = n.inMatch + n.inBackground + n.inOther + n.inOff, nOut = n.outBackground + n.outOther + n.outOff;
     in = nIn > 0 ? static_cast<double>(n.inMatch) / nIn : 0.0;
     out = nOut > 0 ? static_cast<double>(n.outBackground) / nOut : 0.0;
   };
-  double inL, outL, inR, outR;
-  shares(d.countsLeft, inL, outL);
-  shares(d.countsRight, inR, outR);
-  c.inMatchMin = std::min(inL, inR); // over the points not hidden: what is hidden leaves the confidence as it leaves F
-  e.visibleShare = std::min(d.countsLeft.visibleShare(), d.countsRight.visibleShare());
-  c.outBackgroundMin = std::min(outL, outR);
+  // The least of the cameras' (over the points not hidden: what is hidden leaves the confidence as it leaves F).
+  shares(d.counts[0], c.inMatchMin, c.outBackgroundMin);
+  c.qualityMin = m_scale.quality(d.visible[0]);
+  e.visibleShare = d.counts[0].visibleShare();
+  for (std::size_t k = 1; k < static_cast<std::size_t>(d.cameras); ++k) {
+    double in, out;
+    shares(d.counts[k], in, out);
+    c.inMatchMin = std::min(c.inMatchMin, in);
+    c.outBackgroundMin = std::min(c.outBackgroundMin, out);
+    c.qualityMin = std::min(c.qualityMin, m_scale.quality(d.visible[k]));
+    e.visibleShare = std::min(e.visibleShare, d.counts[k].visibleShare());
+  }
   const core::Phi &phi = refined.pose.phi;
   const double r22 = 1.0 - 2.0 * (phi.e1 * phi.e1 + phi.e2 * phi.e2); // the model's z axis . the hand's
   c.tiltDeg = std::acos(std::clamp(r22, -1.0, 1.0)) * 180.0 / M_PI;

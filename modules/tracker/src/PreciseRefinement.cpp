@@ -47,7 +47,7 @@ PreciseRefinement::Attempt PreciseRefinement::refine(const core::HueFrame &frame
   // fitness finds part of the target hidden at the search's pose (lookForHiddenBelow): on a clear
   // view the stage is the one it always was (and pays nothing for it).
   const core::FitnessDetail seen = m_scorer.evaluateDetail(frame, searched.phi);
-  const bool lookForHidden = std::min(seen.countsLeft.visibleShare(), seen.countsRight.visibleShare()) < m_p.lookForHiddenBelow;
+  const bool lookForHidden = std::min(seen.counts[0].visibleShare(), seen.counts[1].visibleShare()) < m_p.lookForHiddenBelow;
   m_lookedForHidden = lookForHidden;
   const TrackResult &last = history.last();
   const bool haveLast = last.state == TrackState::Tracking && last.precise && last.phi.isValid();

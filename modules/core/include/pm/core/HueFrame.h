@@ -1,7 +1,7 @@
 #pragma once
 /*!
   \file HueFrame.h
-  What one stereo pair shows the fitness: each camera's hue plane (in its window) and the
+  What one stereo pair (a set of images, one per camera of the rig) shows the fitness: each camera's hue plane (in its window) and the
   background's hue the scores compare with. A StereoScorer fills it from the pair
   (StereoScorer::setImages) and reads it in every score; the scorer never keeps one, so that what a
   frame sees is a value passed to whoever scores it (see StereoScorer.h).
@@ -17,14 +17,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "pm/core/CameraRig.h"
 #include "pm/core/HuePlane.h"
 
 namespace pm::core {
 
 /*!
-  The hue planes of a stereo pair and the background's hue in use (see HueFrame.h). Made by
-  StereoScorer::newFrame(); its planes only by StereoScorer::setImages() and addHueUnder().
-  Cameras are numbered 0 (left) and 1 (right).
+  The hue planes of a stereo pair (of each camera's image) and the background's hue in use (see
+  HueFrame.h). Made by StereoScorer::newFrame(); its planes only by StereoScorer::setImages() and
+  addHueUnder(). Cameras are numbered as on the rig (a stereo rig: 0 left, 1 right).
   \code
   pm::core::HueFrame frame = scorer.newFrame();
   scorer.setImages(frame, IL, IR);
@@ -36,7 +37,7 @@ class HueFrame
 public:
   //! True once a pair was given (StereoScorer::setImages): before, nothing can be scored.
   bool hasImages() const { return m_hasImages; }
-  //! Camera \e camera's hue plane (0 left, 1 right).
+  //! Camera \e camera's hue plane (a stereo rig: 0 left, 1 right).
   const HuePlane &plane(int camera) const { return m_planes[static_cast<std::size_t>(camera)]; }
   //! The background's hue H_B the scores compare with (deg, in [0, 360)).
   double backgroundHue() const { return m_bgHue / 10.0; }
@@ -52,10 +53,10 @@ public:
 private:
   friend class StereoScorer;
   explicit HueFrame(std::int32_t bgHueDeci) : m_bgHue(bgHueDeci) {}
-  std::array<HuePlane, 2> m_planes;
+  std::array<HuePlane, CameraRig::kMaxCameras> m_planes;
   std::int32_t m_bgHue;
   bool m_hasImages = false;
-  std::array<std::vector<std::int64_t>, 2> m_pixelScratch; //!< addHueUnder's pixels per camera (kept: no allocation once grown)
+  std::array<std::vector<std::int64_t>, CameraRig::kMaxCameras> m_pixelScratch; //!< addHueUnder's pixels per camera (kept: no allocation once grown)
 };
 
 } // namespace pm::core

@@ -35,14 +35,14 @@ namespace pm::core {
   phi.z = 500;                                 // its axes those of the hand
   const double F = fitness.evaluate(phi);      // the higher, the better phi fits the pair
   const pm::core::FitnessDetail d = fitness.evaluateDetail(phi);
-  std::cout << "F = " << F << " (left " << d.left << ", right " << d.right << ")\n";
+  std::cout << "F = " << F << " (left " << d.score[0] << ", right " << d.score[1] << ")\n";
   \endcode
 */
 class StereoFitness
 {
 public:
   //! StereoScorer's constructor (same contract); no images yet.
-  StereoFitness(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params = FitnessParams())
+  StereoFitness(const CameraRig &rig, const PhotoModel &model, const FitnessParams &params = FitnessParams())
     : m_scorer(rig, model, params), m_frame(m_scorer.newFrame())
   {
   }
@@ -52,6 +52,8 @@ public:
   //! The frame of the last pair given.
   const HueFrame &frame() const { return m_frame; }
 
+  //! StereoScorer::setImages on this fitness's frame: one image per camera.
+  void setImages(const vpImage<vpRGBa> *const *images) { m_scorer.setImages(m_frame, images); }
   //! StereoScorer::setImages on this fitness's frame.
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) { m_scorer.setImages(m_frame, left, right); }
   //! StereoScorer::setImages with windows on this fitness's frame.

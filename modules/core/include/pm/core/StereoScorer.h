@@ -2,8 +2,8 @@
 /*!
   \file StereoScorer.h
   The stereo fitness of the paper (Eqs. 8-11): the photo-model placed at a candidate pose phi
-  is projected into the left and right images, and each model point scores by the image hue
-  where it lands:
+  is projected into the left and right images (into each camera's image on a rig of one camera or
+  more: CameraRig.h), and each model point scores by the image hue where it lands:
 
       S_in :  p_in  = +2      if |H_I - H_M(i)| <= 30   (the model overlaps the target)
                     = -0.005  else if |H_B - H_I| <= 30 (the model lies on background)
@@ -11,6 +11,7 @@
       S_out:  p_out = +0.1    if |H_B - H_I| <= 20      (the strip lies on background)
                     = -0.5    otherwise                 (the strip lies on the target)
       F_L = (sum of p over S_in and S_out) / n,  F = (F_L + F_R) / 2
+      (on a rig of N cameras, F the mean of the N cameras' scores; one camera: F = F_0)
 
   Hue distances wrap around the circle; a point projected off the image (or behind the camera)
   scores \e offImage (0). A model point is (x, y, z) in the model frame: z = 0 for the paper's
@@ -41,6 +42,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/HueFrame.h"
+#include "pm/core/CameraRig.h"
 #include "pm/core/HuePlane.h"
 #include "pm/core/PhotoModel.h"
 #include "pm/core/Pose.h"
@@ -70,7 +72,8 @@ struct FitnessParams
   /*!
     Stereo visibility (what a stereo rig can see of what hides the target): a point on the image
     that misses in one camera (S_in: not its own hue; S_out: not the background) where the other
-    camera sees what the model says is there (its hue; the background), on a hue that is neither
+    camera (on a rig of more than two, camera k's partner: k + 1, the last camera's the one before
+    it; one camera has none, and this test is off) sees what the model says is there (its hue; the background), on a hue that is neither
     the target's own nor the background's, is hidden in the first: something stands in front of
     it there. It scores 0 in F, neither for the pose nor against it, and stays in the count (a pose
     never gains by hiding its misses); FitnessDetail's visible scores, which judge a pose, leave
@@ -141,24 +144,24 @@ struct PointScore
 };
 
 /*!
-  The fitness at one pose with its parts: see StereoScorer::evaluateDetail().
+  The fitness at one pose with its parts, camera by camera: see StereoScorer::evaluateDetail().
+  Cameras are numbered as on the rig (a stereo rig: 0 left, 1 right); entries past \e cameras are 0.
 */
 struct FitnessDetail
 {
-  /*! \var FitnessDetail::fitness
-      \brief F = (F_L + F_R) / 2
-      \var FitnessDetail::left
-      \brief F_L, the left camera's score */
-  double fitness = 0, left = 0, right = 0; //!< F_R, the right camera's score
-  /*! \var FitnessDetail::countsLeft
-      \brief how the left camera's points fell */
-  FitnessCounts countsLeft, countsRight; //!< how the right camera's points fell
-  /*! \var FitnessDetail::visibleLeft
-      \brief F_L over the points not hidden only (as ViSP's render-based drift detector averages
-      over the visible points): a right pose behind an occluder keeps the score it has in the open.
-      For judging a pose, never for searching one (a pose would gain by hiding its misses); equal
-      to left when nothing is hidden. */
-  double visibleLeft = 0, visibleRight = 0; //!< F_R over the points not hidden only (see visibleLeft)
+  double fitness = 0; //!< F, the mean of the cameras' scores (a stereo rig: (F_L + F_R) / 2)
+  int cameras = 0;    //!< the number of cameras scored
+  std::array<double, CameraRig::kMaxCameras> score{};         //!< F_k, camera k's score
+  std::array<FitnessCounts, CameraRig::kMaxCameras> counts{}; //!< how camera k's points fell
+  /*!
+    F_k over the points not hidden only (as ViSP's render-based drift detector averages over the
+    visible points): a right pose behind an occluder keeps the score it has in the open. For judging
+    a pose, never for searching one (a pose would gain by hiding its misses); equal to score[k] when
+    nothing is hidden.
+  */
+  std::array<double, CameraRig::kMaxCameras> visible{};
+  //! The mean of visible over the cameras (as F is the mean of score).
+  double meanVisible() const;
 };
 
 namespace kernels {
@@ -166,12 +169,12 @@ struct Tolerances; // the kernels' hue tolerances (src/FitnessKernels.h)
 } // namespace kernels
 
 /*!
-  The stereo fitness F(phi) of a photo-model on a stereo rig (see StereoScorer.h), scoring the
-  frame it is given. It copies what it needs from the rig and the model and keeps no reference to
+  The stereo fitness F(phi) of a photo-model on a rig of one to four cameras (see StereoScorer.h),
+  scoring the frame it is given. It copies what it needs from the rig and the model and keeps no reference to
   them; it is never changed after its construction (but for useScalarKernel(), for the tests and
   benchmarks), so any number of parts may keep a reference to it. Every function is const and
   may run from several threads at once, but for setImages() and addHueUnder() on one frame.
-  Cameras are numbered 0 (left) and 1 (right).
+  Cameras are numbered as on the rig (a stereo rig: 0 left, 1 right).
   \code
   const pm::core::StereoRig rig = pm::io::loadRig("rig.json");              // pm/io/RigFile.h
   const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json");  // pm/io/PhotoModelFile.h
@@ -190,25 +193,33 @@ class StereoScorer
 {
 public:
   /*!
-    Prepares the model for \e rig (copies both). Throws pm::core::Error for an invalid rig, model or
-    parameters, or a model of more than 65,535 views.
+    Prepares the model for \e rig (copies both; a StereoRig converts). Throws pm::core::Error for an
+    invalid rig, model or parameters, or a model of more than 65,535 views.
   */
-  StereoScorer(const StereoRig &rig, const PhotoModel &model, const FitnessParams &params = FitnessParams());
+  StereoScorer(const CameraRig &rig, const PhotoModel &model, const FitnessParams &params = FitnessParams());
+
+  //! The number of cameras of the rig (1 to CameraRig::kMaxCameras).
+  int cameraCount() const { return m_nCams; }
 
   //! A frame without images, comparing with the model's background hue.
   HueFrame newFrame() const;
   //! The model's background hue (deg, to a tenth): what a new frame compares with.
   double modelBackgroundHue() const { return m_modelBgHue / 10.0; }
   /*!
-    Fills \e frame with a new stereo pair: both hue planes (no allocation once the size is set).
-    Throws pm::core::Error if an image's size differs from its rig camera's.
+    Fills \e frame with a new set of images, \e images[k] camera k's (cameraCount() of them): their hue
+    planes (no allocation once the size is set). Throws pm::core::Error if an image's size differs from
+    its rig camera's.
   */
-  void setImages(HueFrame &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) const;
+  void setImages(HueFrame &frame, const vpImage<vpRGBa> *const *images) const;
   /*!
-    The same with the hue computed only inside \e windows (left, right; see footprint()): a point
-    outside its window matches nothing. A camera with lens distortion gets its whole image (its
+    The same with the hue computed only inside \e windows (windows[k] camera k's; see footprint()): a
+    point outside its window matches nothing. A camera with lens distortion gets its whole image (its
     window is in the ideal image, which the raw one maps into pixel by pixel).
   */
+  void setImages(HueFrame &frame, const vpImage<vpRGBa> *const *images, const PixelRect *windows) const;
+  //! A stereo pair (cameras 0 and 1). Throws pm::core::Error on a rig of another number of cameras.
+  void setImages(HueFrame &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) const;
+  //! A stereo pair inside \e windows (left, right). Same contract.
   void setImages(HueFrame &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::array<PixelRect, 2> &windows) const;
   /*!
     Where the model lands in camera \e camera at \e phi: the bounding box of its points in front of
@@ -219,9 +230,11 @@ public:
   /*!
     After setImages with windows: the hue under every model point at each of the \e n \e poses too
     (the pixels a pose outside the windows reads), so that F there is what the whole images give.
-    \e left and \e right must be the images \e frame was last set from. Throws pm::core::Error for an
+    \e images (one per camera) must be those \e frame was last set from. Throws pm::core::Error for an
     invalid pose, no images or images of another size.
   */
+  void addHueUnder(HueFrame &frame, const vpImage<vpRGBa> *const *images, const Phi *poses, std::size_t n) const;
+  //! The same for a stereo pair. Throws pm::core::Error on a rig of another number of cameras.
   void addHueUnder(HueFrame &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Phi *poses, std::size_t n) const;
 
   //! F(phi) on \e frame. Throws pm::core::Error if phi is invalid or the frame has no images.
@@ -265,9 +278,9 @@ public:
       \endcode
   */
   double evaluateSmoothGradient(const HueFrame &frame, const Phi &phi, double grad[6], double *metric = nullptr) const;
-  //! F, F_L, F_R and the class counts of each camera.
+  //! F, each camera's score and the class counts of each camera.
   FitnessDetail evaluateDetail(const HueFrame &frame, const Phi &phi) const;
-  //! Every model point's image position and class in camera \e camera (0 left, 1 right), for drawing. Same contract as evaluate().
+  //! Every model point's image position and class in camera \e camera, for drawing. Same contract as evaluate().
   std::vector<PointScore> pointScores(const HueFrame &frame, const Phi &phi, int camera) const;
   /*!
     The image hues (deg) under the S_out points of the view scored in camera \e camera at \e phi, as
@@ -280,7 +293,7 @@ public:
   std::size_t outerPointsMax() const;
 
   /*!
-    RMS distance (px) between the model's points projected at \e a and at \e b, over both cameras
+    RMS distance (px) between the model's points projected at \e a and at \e b, over every camera
     (points in front of both): how far apart two poses look. Throws pm::core::Error for an invalid pose.
   */
   double reprojectionRms(const Phi &a, const Phi &b) const;
@@ -303,18 +316,22 @@ public:
     machine's best: for the tests and benchmarks that compare them (F is the same to the bit).
   */
   void useScalarKernel(bool on);
-  //! Camera \e camera (0 left, 1 right) placed in the hand frame, as the kernels read it: cMh (mm), intrinsics, image size.
+  //! Camera \e camera placed in the hand frame, as the kernels read it: cMh (mm), intrinsics, image size.
   const PinholeCamera::Projection &camera(int camera) const { return m_cams[camera]; }
 
 private:
   void check(const HueFrame &f, const Phi &phi) const;
+  //! Throws pm::core::Error unless \e camera names a camera of the rig.
+  void checkCamera(int camera) const;
   //! Camera \e cam at \e phi, reading \e f's plane (none: a projection that samples no hue).
   struct Projection projectionOf(int cam, const Phi &phi, const HueFrame *f = nullptr) const;
   FitnessCounts countCamera(const HueFrame &f, int cam, const Phi &phi) const;
+  //! The camera whose view tests camera \e cam's stereo visibility: cam + 1, the last camera's the one before it; -1 when off or alone.
+  int partnerOf(int cam) const;
   //! F of a pose already checked, or, when its first share of points scores it under \e rejectBelow, that estimate (\e cost: the share of the work done).
   double stereoScoreOrReject(const HueFrame &f, const Phi &phi, double rejectBelow, double &cost) const;
   double score(const FitnessCounts &c) const;
-  double visibleScore(const FitnessCounts &c) const; //!< score() over the points not hidden (FitnessDetail::visibleLeft)
+  double visibleScore(const FitnessCounts &c) const; //!< score() over the points not hidden (FitnessDetail::visible)
   double scoreOf(const FitnessCounts &c, bool visibleOnly) const; //!< score() or visibleScore()
   struct View
   {
@@ -340,16 +357,16 @@ private:
                         struct SmoothSums &out) const; //!< the interpolated point scores of its view, normalised
   //! A view's summed point scores over its nIn + nOut points, on the scale of the model's own view.
   double normalised(double sum, std::size_t nIn, std::size_t nOut) const;
-  //! F of a pose already checked.
-  double stereoScore(const HueFrame &f, const Phi &phi) const
-  {
-    return 0.5 * (score(countCamera(f, 0, phi)) + score(countCamera(f, 1, phi)));
-  }
+  //! F of a pose already checked: the mean of the cameras' scores.
+  double stereoScore(const HueFrame &f, const Phi &phi) const;
+  //! The images' sizes against the cameras'; throws pm::core::Error naming the camera.
+  void checkSizes(const vpImage<vpRGBa> *const *images) const;
   //! The hidden points a score leaves out: at most maxHiddenShare of each set (S_in, S_out).
   void cappedHidden(const FitnessCounts &c, int &inHidden, int &outHidden) const;
 
   FitnessParams m_params;
-  PinholeCamera::Projection m_cams[2]; //!< the rig's cameras in the hand frame
+  int m_nCams = 0;                                                  //!< the rig's number of cameras
+  std::array<PinholeCamera::Projection, CameraRig::kMaxCameras> m_cams; //!< the rig's cameras in the hand frame
   std::size_t m_nIn = 0, m_nOut = 0;
   // Model points, structure of arrays: x, y, z (mm), hue (tenths of a degree).
   std::vector<float> m_x, m_y, m_z;
@@ -359,9 +376,9 @@ private:
   std::vector<std::uint32_t> m_order; //!< m_order[k]: where the k-th point of the model's order (S_in then S_out of each view) is kept
   std::int32_t m_modelBgHue = 0, m_tolIn = 0, m_tolInBg = 0, m_tolOutBg = 0; //!< tenths of a degree
   TargetHues m_targetHues; //!< a point that misses on one of the target's own hues is a wrong pose, never hidden
-  std::array<std::shared_ptr<const UndistortMap>, 2> m_undistort; //!< null for a camera without distortion
-  std::array<LensDistortion, 2> m_distortion;
-  std::array<vpCameraParameters, 2> m_intrinsics;
+  std::array<std::shared_ptr<const UndistortMap>, CameraRig::kMaxCameras> m_undistort; //!< null for a camera without distortion
+  std::array<LensDistortion, CameraRig::kMaxCameras> m_distortion;
+  std::array<vpCameraParameters, CameraRig::kMaxCameras> m_intrinsics;
   bool m_avx2 = false;     //!< the AVX2 kernels run (the CPU has them and useScalarKernel() did not say otherwise)
   bool m_hasDepth = false; //!< some point has z != 0 (the 3-D model); else the flat model's exact kernel
 };

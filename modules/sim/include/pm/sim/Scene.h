@@ -19,6 +19,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
+#include "pm/core/CameraRig.h"
 #include "pm/core/StereoRig.h"
 #include "pm/sim/Gripper.h"
 #include "pm/sim/ImageVariation.h"
@@ -178,6 +179,13 @@ public:
   */
   void render(Rasterizer &raster, const core::PinholeCamera &camera, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
               unsigned stream, vpImage<vpRGBa> &out, bool withTarget = true, const vpHomogeneousMatrix &oMb = vpHomogeneousMatrix()) const;
+  /*!
+    Every camera's view for the target at \e hMo, camera k's image k (rendered in parallel, stream k of
+    \e frame), the backdrop at \e oMb (render()): a stereo rig's two are renderStereo()'s. Throws
+    pm::core::Error for an invalid rig (CameraRig::validate()) or as render().
+  */
+  std::vector<vpImage<vpRGBa>> renderRig(const core::CameraRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
+                                         const vpHomogeneousMatrix &oMb = vpHomogeneousMatrix()) const;
   //! Both views of the rig for the target at \e hMo (rendered in parallel, streams 0 and 1 of \e frame), the backdrop at \e oMb (render()).
   StereoImages renderStereo(const core::StereoRig &rig, const vpHomogeneousMatrix &hMo, std::uint64_t frame,
                             const vpHomogeneousMatrix &oMb = vpHomogeneousMatrix()) const;
