@@ -214,6 +214,15 @@ TEST(Apps, MakeRigWritesALoadableRig)
   const pm::core::StereoRig rig = pm::io::loadRig(d.file("rig.json"));
   EXPECT_NEAR(rig.baseline(), 0.2, 1e-9);
   EXPECT_NEAR(rig.left.hMc.getThetaUVector().getTheta(), 0.0, 1e-12);
+  // One camera: the lab's stereo rig's left camera alone, as the shipped one-camera rig holds it.
+  ASSERT_EQ(runProgram("pm-make-rig", "--quiet --cameras 1 --name mono --out " + d.path()).status, 0);
+  const pm::core::CameraRig one = pm::io::loadCameraRig(d.file("mono.json"));
+  const pm::core::CameraRig shipped = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_mono.json"));
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_TRUE(one[0].hMc == shipped[0].hMc);
+  EXPECT_TRUE(one[0].hMc == pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json")).left.hMc);
+  EXPECT_EQ(runProgram("pm-make-rig", "--quiet --cameras 3 --out " + d.file("three")).status, 2);
+  EXPECT_FALSE(std::filesystem::exists(d.file("three")));
 }
 
 namespace {
