@@ -631,6 +631,30 @@ TEST_F(FitnessOnC12Stereo, OneCameraOrThreeScoreEachCameraAsTheStereoRigDoesAndF
     EXPECT_GT(trio.evaluate(truth), trio.evaluate(off) + 0.1);
     EXPECT_GT(trio.evaluateDetail(truth).score[2], trio.evaluateDetail(off).score[2] + 0.1);
   }
+  // Depth from one view: the outline's size, and its place in a camera toed in 17.9 deg. Along z through
+  // the truth, F of one camera peaks at the truth as the pair's does, and falls away from it at least
+  // half as steeply (measured: 0.102 over 10 mm for the left camera alone, 0.075 for the pair).
+  auto peakAndFall = [&](const pm::core::StereoFitness &f, double &atMm, double &fall10) {
+    double best = -1e9;
+    for (double d = -20; d <= 20 + 1e-9; d += 0.5) {
+      pm::core::Phi p = truth;
+      p.z += d;
+      const double v = f.evaluate(p);
+      if (v > best)
+        best = v, atMm = d;
+    }
+    pm::core::Phi near = truth, far = truth;
+    near.z -= 10, far.z += 10;
+    fall10 = f.evaluate(truth) - 0.5 * (f.evaluate(near) + f.evaluate(far));
+  };
+  double monoAt = 0, monoFall = 0, pairAt = 0, pairFall = 0;
+  peakAndFall(one, monoAt, monoFall);
+  peakAndFall(stereo, pairAt, pairFall);
+  std::cout << "along z: one camera peaks at " << monoAt << " mm, falls " << monoFall << " over 10 mm; the pair " << pairAt << " mm, "
+            << pairFall << "\n";
+  EXPECT_LE(std::fabs(monoAt), 3.0);
+  EXPECT_LE(std::fabs(pairAt), 3.0);
+  EXPECT_GT(monoFall, 0.5 * pairFall);
   // The batch, early rejection and the smooth score run over the rig's cameras too.
   double batch[3], rejected[3], cost[3];
   trio.scorer().evaluate(trio.frame(), poses.data(), 3, batch);
