@@ -15,9 +15,10 @@
 
 int main(int argc, char **argv)
 {
-  CLI::App app{"Renders the left and right images the stereo rig sees of a simulated target (one of the paper's 12 "
+  CLI::App app{"Renders the image each camera of the rig sees of a simulated target (one of the paper's 12 "
                "sea creatures, or a user's image) resting on the sea-bottom backdrop, at a pose phi in the hand "
-               "frame. Writes <target>_left.png, <target>_right.png, <target>_stereo.png, <target>_relief.png (the "
+               "frame. Writes <target>_<camera>.png for each camera (a stereo rig: <target>_left.png, <target>_right.png), "
+               "<target>_stereo.png (any other rig: <target>_views.png), <target>_relief.png (the "
                "toy turned by +-0.3 about y: its relief changes the view) and summary.json with the render time.",
                "pm-render"};
   app.option_defaults()->always_capture_default();
@@ -34,7 +35,7 @@ int main(int argc, char **argv)
   app.add_option("--width-mm", widthMm, "with --texture: physical width (mm)")->check(CLI::PositiveNumber);
   app.add_option("--depth-mm", depthMm, "with --texture: relief (mm)")->check(CLI::NonNegativeNumber);
   app.add_option("--pose", pose, "phi = x,y,z,eps1,eps2,eps3 of the target in the hand frame (mm, quaternion vector)");
-  app.add_option("--rig", rigPath, "stereo rig file");
+  app.add_option("--rig", rigPath, "rig file: one camera or more (data/rig/pa10_mono.json: one, pa10_trio.json: three)");
   pm::app::addSceneOptions(app, sp);
   pm::app::DistractorChoice distractor;
   pm::app::addDistractorOptions(app, distractor);
@@ -45,13 +46,13 @@ int main(int argc, char **argv)
                  "others), on, or off (the hand light, no shadows)")
       ->transform(CLI::CheckedTransformer(shadowModes, CLI::ignore_case))
       ->group("Simulator");
-  app.add_option("--repeat", repeat, "stereo frames rendered to time the renderer")->check(CLI::Range(1, 1000));
+  app.add_option("--repeat", repeat, "frames of the rig rendered to time the renderer")->check(CLI::Range(1, 1000));
   app.add_flag("--quiet", quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
     const auto v = pm::app::parseNumbers(pose, 6, "--pose");
     const pm::core::Phi phi{v[0], v[1], v[2], v[3], v[4], v[5]};
-    const pm::core::StereoRig rig = pm::io::loadRig(rigPath);
+    const pm::core::CameraRig rig = pm::io::loadCameraRig(rigPath);
 
     std::vector<std::string> codes;
     if (all)
@@ -73,8 +74,8 @@ int main(int argc, char **argv)
     const double meanMs = pm::lab::writeRenderedTargets(out, rendered, phi, sp, all);
     if (!quiet)
       std::cout << std::fixed << std::setprecision(1) << "rendered " << codes.size() << " target(s) at phi = "
-                << phi.toString() << ": " << meanMs << " ms per stereo frame (" << rig.left.width << "x"
-                << rig.left.height << ", " << sp.supersampling << "x" << sp.supersampling
+                << phi.toString() << ": " << meanMs << " ms per frame of " << rig.size() << (rig.size() == 1 ? " camera (" : " cameras (")
+                << rig[0].width << "x" << rig[0].height << ", " << sp.supersampling << "x" << sp.supersampling
                 << " samples per pixel), written to " << out << "/" << std::endl;
     return 0;
   });

@@ -205,6 +205,14 @@ TEST(Apps, RenderWritesStereoPairs)
   EXPECT_EQ(L.getHeight(), 480u);
   const auto s = nlohmann::json::parse(pm::test::readText(d.file("summary.json")));
   EXPECT_GT(s.at("render_stereo_ms_mean").get<double>(), 0.0);
+  EXPECT_TRUE(std::filesystem::exists(d.file("C04_stereo.png")));
+  // Three cameras: each camera's view by its name, all three side by side.
+  const auto three = runProgram("pm-render", "--target C04 --repeat 1 --quiet --rig " + pm::test::dataPath("rig/pa10_trio.json") +
+                                                 " --out " + d.file("three"));
+  ASSERT_EQ(three.status, 0) << three.err;
+  EXPECT_EQ(pm::io::readColorImage(d.file("three/C04_top.png")).getWidth(), 640u);
+  EXPECT_EQ(pm::io::readColorImage(d.file("three/C04_views.png")).getWidth(), 3 * 640u);
+  EXPECT_FALSE(std::filesystem::exists(d.file("three/C04_stereo.png")));
 }
 
 TEST(Apps, MakeRigWritesALoadableRig)

@@ -36,7 +36,7 @@ const vpRGBa white(255, 255, 255);
 
 } // namespace
 
-RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &shape, const core::StereoRig &rig, const core::Phi &phi,
+RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &shape, const core::CameraRig &rig, const core::Phi &phi,
                             int repeat, const std::function<void(std::size_t)> &step)
 {
   if (repeat < 1)
@@ -44,11 +44,13 @@ RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &sha
   RenderedTarget t;
   t.code = shape.info.code;
   t.name = shape.info.name;
+  for (const core::PinholeCamera &c : rig.cameras)
+    t.cameras.push_back(c.name);
   const vpHomogeneousMatrix hMo = core::toHomogeneousMatrix(phi);
   double ms = 0;
   for (int r = 0; r < repeat; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
-    t.stereo = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(r));
+    t.views = scene.renderRig(rig, hMo, static_cast<std::uint64_t>(r));
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (step)
       step(1);
@@ -59,7 +61,7 @@ RenderedTarget renderTarget(const sim::Scene &scene, const sim::TargetShape &sha
   for (int k = 0; k < 3; ++k) {
     core::Phi p = phi;
     p.e2 = (k - 1) * 0.3;
-    scene.render(raster, rig.left, core::toHomogeneousMatrix(p), 0, 0, t.turned[k]);
+    scene.render(raster, rig[0], core::toHomogeneousMatrix(p), 0, 0, t.turned[k]);
   }
   if (step)
     step(2);
@@ -82,15 +84,17 @@ double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTa
   double sumMs = 0;
   for (const RenderedTarget &t : targets) {
     const std::string &c = t.code;
-    vpImage<vpRGBa> L = t.stereo.left, R = t.stereo.right;
-    report::drawLabel(L, c + " " + t.name + " - left", 8, 8, white);
-    report::drawLabel(R, "right", 8, 8, white);
-    io::writeImage(t.stereo.left, files.stage(c + "_left.png"));
-    io::writeImage(t.stereo.right, files.stage(c + "_right.png"));
-    io::writeImage(report::sideBySide(L, R), files.stage(c + "_stereo.png"));
+    vpImage<vpRGBa> all;
+    for (std::size_t k = 0; k < t.views.size(); ++k) {
+      io::writeImage(t.views[k], files.stage(c + "_" + t.cameras[k] + ".png"));
+      vpImage<vpRGBa> labelled = t.views[k];
+      report::drawLabel(labelled, k == 0 ? c + " " + t.name + " - " + t.cameras[k] : t.cameras[k], 8, 8, white);
+      all = k == 0 ? labelled : report::sideBySide(all, labelled);
+    }
+    io::writeImage(all, files.stage(c + (t.views.size() == 2 ? "_stereo.png" : "_views.png")));
     vpImage<vpRGBa> rel =
         report::sideBySide(report::sideBySide(halfSize(t.turned[0]), halfSize(t.turned[1])), halfSize(t.turned[2]));
-    report::drawLabel(rel, c + " turned eps2 = -0.3, 0, +0.3 (left camera)", 6, 6, white);
+    report::drawLabel(rel, c + " turned eps2 = -0.3, 0, +0.3 (" + t.cameras[0] + " camera)", 6, 6, white);
     io::writeImage(rel, files.stage(c + "_relief.png"));
     list.push_back({{"code", c},
                     {"name", t.name},
@@ -98,7 +102,7 @@ double writeRenderedTargets(const std::string &dir, const std::vector<RenderedTa
                     {"measured_outline_mm", {t.measuredOutlineMm[0], t.measuredOutlineMm[1]}},
                     {"triangles", t.triangles},
                     {"render_stereo_ms", t.renderStereoMs}});
-    vpImage<vpRGBa> th = halfSize(t.stereo.left);
+    vpImage<vpRGBa> th = halfSize(t.views[0]);
     report::drawLabel(th, c + " " + t.name, 4, 4, white);
     thumbs.push_back(th);
     sumMs += t.renderStereoMs;
