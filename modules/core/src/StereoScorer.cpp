@@ -53,6 +53,9 @@ StereoScorer::StereoScorer(const CameraRig &rig, const PhotoModel &model, const 
   model.validate("(in memory)");
   params.validate();
   m_nCams = static_cast<int>(rig.size());
+  m_camWeight = 1.0 / m_nCams; // exact for one camera and for two (0.5: (F_L + F_R) / 2 to the bit)
+  for (int k = 0; k < m_nCams; ++k) // the stereo visibility's partner: the next camera, the last one's the one before it
+    m_partner[static_cast<std::size_t>(k)] = !params.stereoVisibility || m_nCams < 2 ? -1 : k + 1 < m_nCams ? k + 1 : k - 1;
   for (std::size_t k = 0; k < rig.size(); ++k) {
     m_cams[k] = rig[k].projection();
     m_distortion[k] = rig[k].distortion;
@@ -181,13 +184,6 @@ void StereoScorer::checkCamera(int camera) const
     throw Error("fitness: no camera " + std::to_string(camera) + " on a rig of " + std::to_string(m_nCams));
 }
 
-int StereoScorer::partnerOf(int cam) const
-{
-  if (!m_params.stereoVisibility || m_nCams < 2)
-    return -1;
-  return cam + 1 < m_nCams ? cam + 1 : cam - 1;
-}
-
 FitnessCounts StereoScorer::countCamera(const HueFrame &f, int cam, const Phi &phi) const
 {
   const Projection p = projectionOf(cam, phi, &f);
@@ -204,7 +200,7 @@ double StereoScorer::stereoScore(const HueFrame &f, const Phi &phi) const
   double sum = score(countCamera(f, 0, phi));
   for (int cam = 1; cam < m_nCams; ++cam)
     sum += score(countCamera(f, cam, phi));
-  return sum / m_nCams;
+  return sum * m_camWeight;
 }
 
 double StereoScorer::stereoScoreOrReject(const HueFrame &f, const Phi &phi, double rejectBelow, double &cost) const
@@ -221,7 +217,7 @@ double StereoScorer::stereoScoreOrReject(const HueFrame &f, const Phi &phi, doub
   for (int cam = 0; cam < m_nCams; ++cam) {
     const std::size_t k = static_cast<std::size_t>(cam);
     countView(f, p[k], partner(cam), *v[k], 1, c[k]);
-    estimate += score(c[k]) / m_nCams; // the share's own mean score: an estimate of F_cam
+    estimate += m_camWeight * score(c[k]); // the share's own mean score: an estimate of F_cam
     done += static_cast<double>((v[k]->inSplit - v[k]->inBegin) + (v[k]->outSplit - v[k]->outBegin));
     all += static_cast<double>((v[k]->inEnd - v[k]->inBegin) + (v[k]->outEnd - v[k]->outBegin));
   }
@@ -235,7 +231,7 @@ double StereoScorer::stereoScoreOrReject(const HueFrame &f, const Phi &phi, doub
   double sum = score(c[0]);
   for (int cam = 1; cam < m_nCams; ++cam)
     sum += score(c[static_cast<std::size_t>(cam)]);
-  return sum / m_nCams;
+  return sum * m_camWeight;
 }
 
 void StereoScorer::cappedHidden(const FitnessCounts &c, int &inHidden, int &outHidden) const
@@ -313,7 +309,7 @@ FitnessDetail StereoScorer::evaluateDetail(const HueFrame &f, const Phi &phi) co
   double sum = d.score[0];
   for (std::size_t k = 1; k < static_cast<std::size_t>(m_nCams); ++k)
     sum += d.score[k];
-  d.fitness = sum / m_nCams;
+  d.fitness = sum * m_camWeight;
   return d;
 }
 

@@ -141,7 +141,7 @@ double StereoScorer::evaluateSmoothGradient(const HueFrame &f, const Phi &phi, d
     double g = camG[0][k];
     for (std::size_t c = 1; c < n; ++c)
       g += camG[c][k];
-    grad[k] = g / m_nCams;
+    grad[k] = g * m_camWeight;
   }
   if (metric) // the mean over the points in the images
     for (int k = 0; k < 36; ++k) {
@@ -150,7 +150,7 @@ double StereoScorer::evaluateSmoothGradient(const HueFrame &f, const Phi &phi, d
         m += camM[c][k];
       metric[k] = inside ? m / static_cast<double>(inside) : 0.0;
     }
-  return s / m_nCams;
+  return s * m_camWeight;
 }
 
 double StereoScorer::evaluateSmooth(const HueFrame &f, const Phi &phi) const
@@ -159,7 +159,7 @@ double StereoScorer::evaluateSmooth(const HueFrame &f, const Phi &phi) const
   double s = smoothCamera(f, 0, phi, false, false, nullptr, nullptr, nullptr);
   for (int cam = 1; cam < m_nCams; ++cam)
     s += smoothCamera(f, cam, phi, false, false, nullptr, nullptr, nullptr);
-  return s / m_nCams;
+  return s * m_camWeight;
 }
 
 } // namespace pm::core

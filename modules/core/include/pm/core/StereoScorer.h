@@ -327,7 +327,7 @@ private:
   struct Projection projectionOf(int cam, const Phi &phi, const HueFrame *f = nullptr) const;
   FitnessCounts countCamera(const HueFrame &f, int cam, const Phi &phi) const;
   //! The camera whose view tests camera \e cam's stereo visibility: cam + 1, the last camera's the one before it; -1 when off or alone.
-  int partnerOf(int cam) const;
+  int partnerOf(int cam) const { return m_partner[static_cast<std::size_t>(cam)]; }
   //! F of a pose already checked, or, when its first share of points scores it under \e rejectBelow, that estimate (\e cost: the share of the work done).
   double stereoScoreOrReject(const HueFrame &f, const Phi &phi, double rejectBelow, double &cost) const;
   double score(const FitnessCounts &c) const;
@@ -366,6 +366,8 @@ private:
 
   FitnessParams m_params;
   int m_nCams = 0;                                                  //!< the rig's number of cameras
+  double m_camWeight = 1;                                           //!< 1 / m_nCams: F the mean of the cameras' scores
+  std::array<int, CameraRig::kMaxCameras> m_partner{};              //!< partnerOf(), set once
   std::array<PinholeCamera::Projection, CameraRig::kMaxCameras> m_cams; //!< the rig's cameras in the hand frame
   std::size_t m_nIn = 0, m_nOut = 0;
   // Model points, structure of arrays: x, y, z (mm), hue (tenths of a degree).
