@@ -97,7 +97,7 @@ nlohmann::json detectOne(const Options &o, const pm::tracker::TrackerParams &tp,
   pm::tracker::DetectionParams dp;
   dp.maxTimeS = o.maxTimeS;
   dp.patience = o.patience;
-  const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, p.left, p.right, dp);
+  const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, {p.left, p.right}, dp);
   pm::report::DetectionOutputs out;
   out.source = p.source;
   out.detection = d;

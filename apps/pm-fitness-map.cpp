@@ -92,7 +92,7 @@ pm::report::FitnessMapsResult mapOne(const Options &o, const pm::core::StereoRig
   progress.finish();
   if (o.profiles && p.model.hasContours()) { // beside the maps, in the same folder
     pm::precise::PreciseStage precise(rig, p.model);
-    precise.setImages(p.left, p.right);
+    precise.setImages({p.left, p.right});
     pm::io::StagedFiles more(dir);
     const pm::report::ProfileResult pr = pm::report::writeObjectiveProfiles(more, fit, precise, p.truth, 6.0, 0.25);
     more.commit();

@@ -94,7 +94,7 @@ void addLoopOptions(CLI::App &app, Options &o)
   app.add_flag("--freq-sweep", o.freqSweep, "run sines of 0.1 to 1 Hz on --axis and write bode.png and bode.csv");
   app.add_option("--overlay-every", o.overlayEvery, "write an overlay PNG every N frames (0: none)")->check(CLI::Range(0, 1000000));
   app.add_flag("--no-video", o.noVideo, "do not write servo.avi");
-  app.add_option("--rig", o.rigPath, "stereo rig file");
+  app.add_option("--rig", o.rigPath, "rig file: one camera or more (data/rig/pa10_mono.json: one; pa10_trio.json: three)");
   app.add_option("--gain-zero", o.servo.gainAtZero, "vpAdaptiveGain: gain at zero error (1/s)")->check(CLI::PositiveNumber);
   app.add_option("--gain-infinity", o.servo.gainAtInfinity, "vpAdaptiveGain: gain at infinite error (1/s)")->check(CLI::PositiveNumber);
   app.add_flag("--feed-forward,!--no-feed-forward", o.servo.feedForward, "follow the target's estimated velocity");
@@ -114,7 +114,7 @@ void addLabOptions(CLI::App &app, Options &o)
 //! The lab of a run: the rig, the scene (with its look-alike, if any) and the model the arm's pass makes.
 struct Lab
 {
-  pm::core::StereoRig rig;
+  pm::core::CameraRig rig; //!< one camera or more
   std::unique_ptr<pm::sim::Scene> scene;
   pm::sim::SimulatedPhotoModel model;
   std::vector<pm::core::Phi> waypoints; //!< the steps' (none for a sine)
@@ -123,7 +123,7 @@ struct Lab
 Lab makeLab(Options &o)
 {
   Lab lab;
-  lab.rig = pm::io::loadRig(o.rigPath);
+  lab.rig = pm::io::loadCameraRig(o.rigPath);
   o.lp.fps = o.fps;
   o.lab.arm = o.lp.arm; // the same arm makes the pass and servos
   lab.scene = std::make_unique<pm::sim::Scene>(pm::sim::makeTarget(o.target), o.sp);
@@ -268,8 +268,8 @@ int runServo(const Options &o, const Lab &lab, const pm::tracker::TrackerParams 
   pm::lab::RunLog log(nFrames, o.fps, loop->arm().model());
   std::unique_ptr<pm::lab::RunRecorder> recorder;
   try {
-    recorder = std::make_unique<pm::lab::RunRecorder>(o.noVideo ? "" : files.stage("servo.avi"), o.fps, lab.rig.left.width,
-                                                      lab.rig.left.height, o.overlayEvery, o.lp.oracle);
+    recorder = std::make_unique<pm::lab::RunRecorder>(o.noVideo ? "" : files.stage("servo.avi"), o.fps, lab.rig[0].width * static_cast<unsigned>(lab.rig.size()),
+                                                      lab.rig[0].height, o.overlayEvery, o.lp.oracle);
   } catch (const pm::core::Error &) {
     throw pm::core::Error("cannot write the video '" + files.finalPath("servo.avi") + "' (OpenCV's MJPG writer failed)");
   }

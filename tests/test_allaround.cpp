@@ -481,7 +481,7 @@ TEST(AllAround, ThePassLandingsAreTheModelsOwnErrorAtEachViewAndOtherRendersTher
   for (std::size_t v = 0; v < c.pass.views.size(); v += 3) {
     const vpHomogeneousMatrix hMo = c.pass.views[v].fMh.inverse() * c.pass.fMo, hMm = hMo * c.oMm;
     const pm::sim::StereoImages im = c.scene.renderStereo(rig(), hMo, 500 + v);
-    stage.setImages(im.left, im.right);
+    stage.setImages({im.left, im.right});
     const pm::precise::PreciseResult r = stage.refine(pm::core::fromHomogeneousMatrix(hMm), true);
     ASSERT_TRUE(r.ok);
     const vpHomogeneousMatrix hMe = pm::core::toHomogeneousMatrix(r.phi);

@@ -251,11 +251,11 @@ TEST(StereoOcclusion, TheLinesFoundHiddenAreThoseTheStrandHides)
   const StrandCase &c = l.c;
   ASSERT_TRUE(l.model.build.model.hasContours());
   pm::precise::PreciseStage precise(c.rig, l.model.build.model);
-  precise.setImages(c.clear[0], c.clear[1]);
+  precise.setImages({c.clear[0], c.clear[1]});
   pm::precise::PreciseResult r = precise.refine(l.truth, true);
   ASSERT_TRUE(r.ok);
   EXPECT_EQ(r.hiddenLines[0] + r.hiddenLines[1], 0u); // nothing in front: nothing hidden
-  precise.setImages(c.strand[0], c.strand[1]);
+  precise.setImages({c.strand[0], c.strand[1]});
   r = precise.refine(l.truth, true);
   ASSERT_TRUE(r.ok);
   for (int cam = 0; cam < 2; ++cam) {
@@ -284,7 +284,7 @@ TEST(StereoOcclusion, WrongPosesOnAClearViewFindNothingHidden)
   const LabCase &l = labCase();
   const StrandCase &c = l.c;
   pm::precise::PreciseStage precise(c.rig, l.model.build.model);
-  precise.setImages(c.clear[0], c.clear[1]);
+  precise.setImages({c.clear[0], c.clear[1]});
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> mm(-30, 30), eps(-0.13, 0.13);
   std::size_t hidden = 0, lines = 0;
@@ -313,7 +313,7 @@ TEST(StereoOcclusion, BehindTheStrandThePreciseStageLandsAndJudgesAsInTheOpen)
   const StrandCase &c = l.c;
   auto at = [&](const vpImage<vpRGBa> *pair, bool on, const pm::core::Phi &start) {
     pm::precise::PreciseStage precise(c.rig, l.model.build.model, lineOcclusion(on));
-    precise.setImages(pair[0], pair[1]);
+    precise.setImages({pair[0], pair[1]});
     return precise.refine(start, true);
   };
   const pm::precise::PreciseResult open = at(c.clear, true, l.truth), hidden = at(c.strand, true, l.truth),

@@ -6,9 +6,11 @@
 #include <visp3/core/vpMeterPixelConversion.h>
 
 #include "TestSupport.h"
+#include "pm/core/CameraImages.h"
 #include "pm/core/Error.h"
 #include "pm/io/PoseTableFile.h"
 #include "pm/io/RigFile.h"
+#include "pm/model/PassRig.h"
 
 namespace {
 
@@ -169,6 +171,58 @@ TEST(Rig, AnyNumberOfCamerasSurvivesTheRoundTripAndNoneOrFiveIsAClearError)
   EXPECT_NE(pm::test::errorOf([&] { five.validate(); }).find("not 5"), std::string::npos);
   EXPECT_NE(pm::test::errorOf([&] { pm::io::saveRig(five, dir.file("five.json"), "five.xml"); }).find("not 5"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir.file("five.json")));
+}
+
+TEST(PassRig, OneCamerasSideStepPutsItWhereTheStereoRigsRightCameraSitsAndAStereoRigIsItself)
+{
+  // The lab's one-camera rig is the stereo rig's left camera: its pass's second image, after the
+  // hand's side step, is taken from exactly where the stereo rig's right camera is.
+  const pm::core::StereoRig stereo = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::CameraRig mono = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_mono.json"));
+  ASSERT_EQ(mono.size(), 1u);
+  const pm::core::StereoRig pair = pm::model::passRig(mono);
+  const vpHomogeneousMatrix d = stereo.right.cMh() * pair.right.hMc;
+  EXPECT_LT(d.getTranslationVector().frobeniusNorm(), 1e-9);
+  EXPECT_LT(d.getThetaUVector().getTheta(), 1e-9);
+  EXPECT_EQ(pair.right.width, mono[0].width);
+  EXPECT_DOUBLE_EQ(pair.right.cam.get_px(), mono[0].cam.get_px());
+  // The hand's step: a rigid motion that carries the camera there, 323 mm along the camera pair's baseline.
+  const vpHomogeneousMatrix step = pm::model::sideStep(mono);
+  const vpHomogeneousMatrix moved = step * mono[0].hMc;
+  EXPECT_LT((stereo.right.cMh() * moved).getTranslationVector().frobeniusNorm(), 1e-9);
+  EXPECT_NEAR((moved.getTranslationVector() - mono[0].hMc.getTranslationVector()).frobeniusNorm(), pm::model::kSideStepM, 1e-9);
+  // A stereo rig needs no step; a trio takes its first two cameras.
+  EXPECT_LT(pm::model::sideStep(stereo).getTranslationVector().frobeniusNorm(), 1e-12);
+  const pm::core::StereoRig same = pm::model::passRig(stereo);
+  EXPECT_EQ(same.right.hMc, stereo.right.hMc);
+  const pm::core::CameraRig trio = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_trio.json"));
+  EXPECT_EQ(pm::model::passRig(trio).right.hMc, trio[1].hMc);
+  // What a tracker sees of a pass view: the first image, both, or a clear error.
+  pm::model::PassView v;
+  v.name = "view 03";
+  v.left.resize(480, 640);
+  v.right.resize(480, 640);
+  EXPECT_EQ(pm::model::viewImages(v, 1).size(), 1u);
+  EXPECT_EQ(&pm::model::viewImages(v, 2)[1], &v.right);
+  EXPECT_EQ(pm::test::errorOf([&] { pm::model::viewImages(v, 3); }), "view 03: a pass view holds two images, and the rig has 3 cameras");
+}
+
+TEST(CameraImages, OneImagePerCameraOfItsSizeOrAClearError)
+{
+  const pm::core::CameraRig mono = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_mono.json"));
+  vpImage<vpRGBa> a(480, 640), b(480, 640), small(100, 120);
+  EXPECT_NO_THROW(pm::core::CameraImages(a).checkFor(mono, "tracker"));
+  EXPECT_EQ(pm::test::errorOf([&] { pm::core::CameraImages(a, b).checkFor(mono, "tracker"); }),
+            "tracker: 2 images for a rig of 1 camera (one image per camera)");
+  EXPECT_EQ(pm::test::errorOf([&] { pm::core::CameraImages(small).checkFor(mono, "tracker"); }),
+            "tracker: camera 0's image is 120x100 but the camera is 640x480");
+  const std::vector<vpImage<vpRGBa>> five(5, a), none;
+  EXPECT_NE(pm::test::errorOf([&] { pm::core::CameraImages::of(five); }).find("1 to 4 images"), std::string::npos);
+  EXPECT_NE(pm::test::errorOf([&] { pm::core::CameraImages::of(none); }).find("not 0"), std::string::npos);
+  const std::vector<vpImage<vpRGBa>> three(3, a);
+  const pm::core::CameraImages c = pm::core::CameraImages::of(three);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(&c[2], &three[2]);
 }
 
 TEST(PoseTable, ShippedTable2AndBrokenTables)

@@ -192,7 +192,7 @@ TEST(SteadyFramePolicy, ItsWindowsHoldTheModelAtTheLastAndThePredictedPose)
   history.remember(frame);
   pm::core::Phi next = last;
   next.x += 30;
-  const std::array<pm::core::PixelRect, 2> w = s.windows(fitness.scorer(), history);
+  const auto w = s.windows(fitness.scorer(), history);
   for (int cam = 0; cam < 2; ++cam) {
     for (const pm::core::Phi &q : {last, next}) {
       const pm::core::PixelRect f = fitness.footprint(q, cam);

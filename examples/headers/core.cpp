@@ -8,6 +8,7 @@
 #include <visp3/io/vpImageIo.h>
 
 #include "pm/core/BatchPool.h"
+#include "pm/core/CameraImages.h"
 #include "pm/core/CameraRig.h"
 #include "pm/core/FitnessMap.h"
 #include "pm/core/Hue.h"
@@ -191,6 +192,16 @@ void exampleCameraRig()
 }
 
 // StereoRig.h
+void exampleCameraImages()
+{
+  vpImage<vpRGBa> IL, IR;
+  const pm::core::CameraImages pair(IL, IR);        // a stereo rig's frame: 0 left, 1 right
+  const pm::core::CameraImages one(IL);             // a one-camera rig's frame
+  std::vector<vpImage<vpRGBa>> views(3);
+  const pm::core::CameraImages three = pm::core::CameraImages::of(views); // camera k's image views[k]
+  std::cout << pair.size() << " " << one.size() << " " << three.size() << "\n"; // 2 1 3
+}
+
 void exampleStereoRig()
 {
   const vpCameraParameters cam(800, 800, 320, 240);            // px, py, u0, v0 (pixels)

@@ -157,7 +157,7 @@ void exampleRunLog(const pm::core::StereoRig &rig, const pm::sim::Scene &scene, 
 // RunRecorder.h
 void exampleRunRecorder(pm::lab::ClosedLoop &loop, long n)
 {
-  pm::lab::RunRecorder rec("servo.avi", 30.0, 640, 480, 150, false);
+  pm::lab::RunRecorder rec("servo.avi", 30.0, 2 * 640, 480, 150, false); // a stereo rig of 640 x 480 cameras
   for (long k = 0; k < n; ++k) {
     const pm::lab::LoopFrame f = loop.step();
     rec.record(k, f, loop, [](const std::string &name) { return "out/" + name; });

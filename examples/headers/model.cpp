@@ -21,6 +21,8 @@
 #include "pm/model/HullGeometry.h"
 #include "pm/model/OutlineRefinement.h"
 #include "pm/model/PassPlanner.h"
+#include "pm/model/PassRig.h"
+#include "pm/io/RigFile.h"
 #include "pm/model/PassView.h"
 #include "pm/model/Silhouette.h"
 #include "pm/model/StereoPhotoModelBuilder.h"
@@ -141,6 +143,14 @@ void exampleOutlineRefinement(pm::model::HullMesh &mesh, const std::vector<const
 }
 
 // PassPlanner.h
+void examplePassRig()
+{
+  const pm::core::CameraRig mono = pm::io::loadCameraRig("data/rig/pa10_mono.json");
+  const pm::core::StereoRig pair = pm::model::passRig(mono);  // the camera and its side step
+  const vpHomogeneousMatrix step = pm::model::sideStep(mono); // the hand's motion to the second image
+  std::cout << pair.right.hMc.getTranslationVector().t() << "\n" << step << "\n";
+}
+
 void examplePassPlanner()
 {
   const std::vector<vpHomogeneousMatrix> h0Mh = pm::model::planPass(pm::model::PassPlan());  // 16 poses

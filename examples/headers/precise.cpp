@@ -121,7 +121,7 @@ void examplePreciseStageFile(const pm::core::StereoRig &rig, const pm::core::Pho
                              const pm::core::Phi &rmgaBest, pm::core::Phi &phi)
 {
   pm::precise::PreciseStage precise(rig, model);           // the model must carry outlines (version 5)
-  precise.setImages(IL, IR);                      // the frame (kept by pointer until the next)
+  precise.setImages({IL, IR});                    // the frame, one image per camera (kept by pointer until the next)
   const pm::precise::PreciseResult r = precise.refine(rmgaBest);
   if (r.ok) { phi = r.phi; precise.learnColours(phi); }
 }

@@ -11,9 +11,9 @@ int main()
   const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json"); // an all-around model
   pm::precise::PreciseStage precise(rig, model);
   const vpImage<vpRGBa> IL = pm::io::readColorImage("left.png"), IR = pm::io::readColorImage("right.png");
-  precise.setImages(IL, IR);
+  precise.setImages({IL, IR});            // one image per camera of the rig
   pm::core::Phi phi;                      // a pose within a few degrees and millimetres
   phi.z = 500;
   const pm::precise::PreciseResult r = precise.refine(phi);
-  std::cout << r.phi.toString() << " from " << r.lines[0] + r.lines[1] << " lines\n";
+  std::cout << r.phi.toString() << " from " << r.totalLines() << " lines\n";
 }

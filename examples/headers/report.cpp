@@ -72,7 +72,7 @@ void exampleDetectionOutputs(const pm::core::StereoRig &rig, const pm::core::Pho
   tracker.initialize();
   pm::report::DetectionOutputs o;
   o.source = "my pair";
-  o.detection = pm::tracker::detectStatic(tracker, left, right, pm::tracker::DetectionParams());
+  o.detection = pm::tracker::detectStatic(tracker, {left, right}, pm::tracker::DetectionParams());
   pm::report::writeDetection("detect", o, tracker.fitness(), left, right);
   std::cout << pm::report::describeDetection(o, "detect");
 }

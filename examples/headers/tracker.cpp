@@ -64,7 +64,7 @@ void exampleFrameSteps(const pm::core::Phi &phi, double F, const pm::tracker::Se
                        bool locked, const pm::tracker::Judgement &judgement, const pm::tracker::JudgedState &state)
 {
   const pm::tracker::SearchedPose searched{{phi, F}, work};
-  const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, IL, IR, locked);
+  const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, {IL, IR}, locked);
   const pm::tracker::Evidence e = judgement.measure(frame, refined);
   const pm::tracker::Verdict verdict = judgement.judge(refined, e, state);
   if (verdict.trusted)
@@ -172,7 +172,7 @@ void examplePreciseRefinement(const pm::tracker::TrackerParams &params, const pm
                               const vpImage<vpRGBa> &IR, pm::tracker::PoseSearch &search)
 {
   pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, scorer, scale);
-  const pm::tracker::PreciseRefinement::Attempt a = stage.refine(frame, searched, history, motion.predict(history), IL, IR);
+  const pm::tracker::PreciseRefinement::Attempt a = stage.refine(frame, searched, history, motion.predict(history), {IL, IR});
   if (a.kept) {
     pm::tracker::RmGaUpdate u;
     u.inject = pm::tracker::RmGaUpdate::Inject{a.pose.phi, a.pose.fitness}; // the frame's pose is the stage's: it joins RM-GA
@@ -194,7 +194,7 @@ void exampleRefinementChain(const pm::tracker::TrackerParams &params, const pm::
                             pm::tracker::PoseSearch &search)
 {
   pm::tracker::RefinementChain chain(params.refinement, rig, model, scorer, scale);
-  const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, IL, IR, locked);
+  const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, {IL, IR}, locked);
   pm::tracker::RmGaUpdate u;
   if (refined.precise) // the precise stage's pose joins RM-GA
     u.inject = pm::tracker::RmGaUpdate::Inject{refined.pose.phi, refined.pose.fitness};
@@ -215,7 +215,7 @@ void exampleStaticDetection(const pm::core::StereoRig &rig, const pm::core::Phot
 {
   pm::tracker::PhotoModelTracker tracker(rig, model);
   tracker.initialize();
-  const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, left, right, pm::tracker::DetectionParams());
+  const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, {left, right}, pm::tracker::DetectionParams());
   std::cout << d.best.phi.toString() << " after " << d.convergedS << " s\n";
 }
 
@@ -225,10 +225,11 @@ void exampleSteadyFramePolicy(const pm::tracker::TrackerParams &params, bool ver
 {
   pm::tracker::SteadyFramePolicy steady(params.steady);
   const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
+  const pm::core::CameraImages images(IL, IR);                 // one image per camera
   if (plan.windowed)
-    scorer.setImages(frame, IL, IR, steady.windows(scorer, history));
+    scorer.setImages(frame, images.data(), steady.windows(scorer, history).data());
   else
-    scorer.setImages(frame, IL, IR);
+    scorer.setImages(frame, images.data());
   const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact);
   if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
     search.evolve(frame, plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);

@@ -92,8 +92,15 @@ void bindLab(py::module_ &lab)
             return l.step();
           },
           "One camera frame: images, estimate, command, the arm moved to the next frame. Returns a ServoFrame.")
-      .def("images", [](const ServoLoop &l) { return py::make_tuple(toArray(l.images().left), toArray(l.images().right)); },
-           "The stereo pair of the last step() (left, right: H x W x 4 RGBA uint8 copies).")
+      .def(
+          "images",
+          [](const ServoLoop &l) {
+            py::tuple out(l.images().size());
+            for (std::size_t k = 0; k < l.images().size(); ++k)
+              out[k] = toArray(l.images()[k]);
+            return out;
+          },
+          "The images of the last step(), one per camera (a stereo rig: left, right), H x W x 4 RGBA uint8 copies.")
       .def_property_readonly("model", [](const ServoLoop &l) { return l.model().build.model; }, "the toy's photo-model the pass made")
       .def_property_readonly("time", &ServoLoop::time, "the time of the next step()'s frame (s)")
       .def_property_readonly("duration", &ServoLoop::duration, "the trajectory's duration (s): step() until then");

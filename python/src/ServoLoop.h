@@ -35,8 +35,8 @@ public:
 
   //! One frame of the loop (pm::lab::ClosedLoop::step()).
   pm::lab::LoopFrame step() { return m_loop->step(); }
-  //! The stereo pair of the last step().
-  const pm::sim::StereoImages &images() const { return m_loop->images(); }
+  //! The images of the last step(), camera k's at [k] (a stereo rig: left, right).
+  const std::vector<vpImage<vpRGBa>> &images() const { return m_loop->images(); }
   //! The model the pass made, and its frame in the toy's (ground truth).
   const pm::sim::SimulatedPhotoModel &model() const { return m_model; }
   //! The time of the next step()'s frame (s).

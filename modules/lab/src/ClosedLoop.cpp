@@ -20,7 +20,7 @@ std::unique_ptr<robot::Arm> makeArm(const LoopParams &lp)
 }
 } // namespace
 
-ClosedLoop::ClosedLoop(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
+ClosedLoop::ClosedLoop(const core::CameraRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
                        const tracker::TrackerParams &tp, const servo::ServoParams &sp, const LoopParams &lp,
                        const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &)> &makeTc,
                        std::unique_ptr<robot::Arm> arm)
@@ -58,21 +58,24 @@ LoopFrame ClosedLoop::step()
   const vpHomogeneousMatrix hMo = fMh.inverse() * wMo; // the toy in the hand frame
   f.hMmTrue = hMo * m_oMm;
   f.fault = m_faults.camera ? m_faults.camera(m_frame) : CameraFault::None;
-  sim::StereoImages next;
+  std::vector<vpImage<vpRGBa>> next;
   if (f.fault == CameraFault::Blank) {
-    next.left.resize(m_rig.left.height, m_rig.left.width, vpRGBa(0, 0, 0, 255));
-    next.right.resize(m_rig.right.height, m_rig.right.width, vpRGBa(0, 0, 0, 255));
+    next.reserve(m_rig.size());
+    for (const core::PinholeCamera &c : m_rig.cameras)
+      next.emplace_back(c.height, c.width, vpRGBa(0, 0, 0, 255));
   } else if (f.fault == CameraFault::None || m_frame == 0) {
     // A still backdrop stays where it stood at the start while the target moves.
     const vpHomogeneousMatrix oMb = m_scene.params().stillBackdrop ? wMo.inverse() * m_tc->wMo(0) : vpHomogeneousMatrix();
-    next = m_scene.renderStereo(m_rig, hMo, static_cast<std::uint64_t>(m_frame), oMb);
+    next = m_scene.renderRig(m_rig, hMo, static_cast<std::uint64_t>(m_frame), oMb);
   } else {
-    next = m_images; // frozen: the last pair again
+    next = m_images; // frozen: the last images again
   }
-  f.frozen = m_frame > 0 && next.left == m_images.left && next.right == m_images.right;
+  f.frozen = m_frame > 0 && next.size() == m_images.size();
+  for (std::size_t k = 0; k < next.size() && f.frozen; ++k)
+    f.frozen = next[k] == m_images[k]; // ViSP 3.5's vpImage::operator== is not const
   m_images = std::move(next);
   // The tracker runs in both modes (its estimate is recorded); the oracle servos on the truth.
-  f.track = m_tracker.track(m_images.left, m_images.right);
+  f.track = m_tracker.track(core::CameraImages::of(m_images));
   const vpMatrix hJe = m_arm->hJe(q);
   const hand::GuardedCommand c = m_guard.step(f.track, f.frozen, q, fMh, hJe, 1.0 / m_lp.fps, m_lp.oracle ? &f.hMmTrue : nullptr);
   f.hMmUsed = c.hMoUsed;

@@ -32,7 +32,7 @@ std::pair<double, double> sinusoidFit(const std::vector<double> &t, const std::v
   return {std::hypot(x[0], x[1]), std::atan2(x[1], x[0])};
 }
 
-std::vector<BodePoint> frequencyResponse(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
+std::vector<BodePoint> frequencyResponse(const core::CameraRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
                                          const tracker::TrackerParams &tp, const servo::ServoParams &servo, const LoopParams &lp,
                                          const SweepParams &sweep, const std::function<void()> &onFrequency)
 {

@@ -60,7 +60,12 @@ CacheKey &CacheKey::camera(const core::PinholeCamera &c)
   return *this;
 }
 
-CacheKey &CacheKey::rig(const core::StereoRig &rig) { return camera(rig.left).camera(rig.right); }
+CacheKey &CacheKey::rig(const core::CameraRig &rig)
+{
+  for (const core::PinholeCamera &c : rig.cameras)
+    camera(c);
+  return *this;
+}
 
 CacheKey &CacheKey::pass(const std::vector<model::PassView> &pass)
 {

@@ -6,7 +6,7 @@
 
 namespace pm::lab {
 
-sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::StereoRig &rig, const LabModelChoice &c)
+sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::CameraRig &rig, const LabModelChoice &c)
 {
   if (!c.flat && !c.stereo) {
     model::PassPlan plan;
@@ -18,9 +18,9 @@ sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::Stere
     model::StereoModelParams sp;
     sp.photo = c.photo;
     sp.rightView = c.rightView;
-    return sim::makeSimulatedStereoPhotoModel(scene, rig, c.distanceMm, sp, c.viewTurnDeg);
+    return sim::makeSimulatedStereoPhotoModel(scene, rig.stereo(), c.distanceMm, sp, c.viewTurnDeg); // two cameras, or it says how many
   }
-  return sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, c.distanceMm, c.photo);
+  return sim::makeSimulatedPhotoModel(scene, rig[0].cam, rig[0].width, rig[0].height, c.distanceMm, c.photo);
 }
 
 void DistractorChoice::apply(sim::Scene &scene) const

@@ -3,6 +3,7 @@
 #include "pm/lab/ModelCache.h"
 #include "pm/lab/TrustCache.h"
 
+#include "pm/model/PassRig.h"
 #include "pm/robot/ArmCatalog.h"
 #include "pm/robot/ArmPassPlan.h"
 #include "pm/robot/SteppedArm.h"
@@ -10,10 +11,11 @@
 
 namespace pm::lab {
 
-LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const model::PassPlan &inPlan, robot::Arm &arm,
+LabPass runLabPass(const sim::Scene &inScene, const core::CameraRig &cameras, const model::PassPlan &inPlan, robot::Arm &arm,
                    const vpHomogeneousMatrix &h0Mo, bool backgrounds)
 {
   const sim::Scene scene = inScene.targetAlone(); // as a user would make the pass
+  const core::StereoRig rig = model::passRig(cameras);
   model::PassPlan plan = inPlan;
   plan.distanceMm = 1e3 * h0Mo[2][3];
   LabPass out;
@@ -50,11 +52,12 @@ LabPass runLabPass(const sim::Scene &inScene, const core::StereoRig &rig, const 
 namespace {
 
 //! The build of \e pass (its trust calibrated from it when asked); the whole build into \e build when given.
-CachedModel labBuild(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+CachedModel labBuild(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                      bool calibrateTrust, model::AllAroundBuild *build)
 {
   model::PassMeasurements measured;
-  model::AllAroundBuild b = calibrateTrust ? model::buildAllAroundModel(rig, pass, params, measured) : model::buildAllAroundModel(rig, pass, params);
+  const core::StereoRig pair = model::passRig(rig);
+  model::AllAroundBuild b = calibrateTrust ? model::buildAllAroundModel(pair, pass, params, measured) : model::buildAllAroundModel(pair, pass, params);
   if (calibrateTrust)
     b.model.trust = calibrateLabTrust(rig, pass, params, measured, b.model).trust;
   CachedModel m{b.model, b.fMm, b.silhouettes[0]};
@@ -64,7 +67,7 @@ CachedModel labBuild(const core::StereoRig &rig, const std::vector<model::PassVi
 }
 
 //! labBuild() through the cache of the environment (ModelCache.h): each pass built once in a run of the suite.
-CachedModel cachedLabBuild(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+CachedModel cachedLabBuild(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                            bool calibrateTrust)
 {
   const ModelCache cache = ModelCache::fromEnvironment();
@@ -77,7 +80,7 @@ CachedModel cachedLabBuild(const core::StereoRig &rig, const std::vector<model::
 
 } // namespace
 
-sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan,
+sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::CameraRig &rig, const model::PassPlan &plan,
                                                      const std::string &armName, double distanceMm, const model::AllAroundParams &params,
                                                      model::AllAroundBuild *build, bool calibrateTrust)
 {

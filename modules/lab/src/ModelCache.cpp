@@ -42,7 +42,7 @@ vpImage<unsigned char> imageOf(const std::vector<long> &r)
 
 } // namespace
 
-std::string ModelCache::keyOf(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+std::string ModelCache::keyOf(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                               bool calibrateTrust)
 {
   return CacheKey("all-around model 1").rig(rig).pass(pass).text(io::allAroundParamsToJson(params)).number(calibrateTrust ? 1 : 0).hex();

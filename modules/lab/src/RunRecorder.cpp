@@ -27,7 +27,7 @@ RunRecorder::RunRecorder(const std::string &videoPath, double fps, unsigned widt
   m_video = std::make_unique<Video>();
   // Half size and half rate (15 fps for 30 fps cameras): a minute of servoing in ~30 MB.
   if (!m_video->writer.open(videoPath, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), fps / 2,
-                            cv::Size(static_cast<int>(width), static_cast<int>(height / 2))))
+                            cv::Size(static_cast<int>(width / 2), static_cast<int>(height / 2))))
     throw core::Error("cannot write the video '" + videoPath + "' (OpenCV's MJPG writer failed)");
 }
 
@@ -45,13 +45,17 @@ void RunRecorder::record(long k, const LoopFrame &f, const ClosedLoop &loop, con
         << "  error " << f.translationErrorMm << " mm " << f.rotationErrorDeg << " deg  visible " << std::setprecision(0)
         << 100 * f.track.visibleShare << " % (magenta: hidden)  " << (f.servoing ? "servoing" : "held: ")
         << (f.servoing ? "" : f.heldBy ? f.heldBy : "oracle");
-  vpImage<vpRGBa> left = report::drawPointScores(loop.images().left, loop.tracker().fitness().pointScores(used, 0), label.str());
-  vpImage<vpRGBa> right = report::drawPointScores(loop.images().right, loop.tracker().fitness().pointScores(used, 1), "right");
-  if (const precise::PreciseStage *stage = loop.tracker().preciseStage(); stage && f.track.precise) {
-    report::drawCorrespondenceLines(left, stage->lines(0)); // the lines of the frame's pose: cyan kept, magenta hidden
-    report::drawCorrespondenceLines(right, stage->lines(1));
+  // Every camera's view side by side, the first with the frame's label, each with the model's points
+  // at the pose used and, after the precise stage, its lines (cyan kept, magenta hidden).
+  vpImage<vpRGBa> pair;
+  for (std::size_t k = 0; k < loop.images().size(); ++k) {
+    const int cam = static_cast<int>(k);
+    vpImage<vpRGBa> view = report::drawPointScores(loop.images()[k], loop.tracker().fitness().pointScores(used, cam),
+                                                   k == 0 ? label.str() : loop.rig()[k].name);
+    if (const precise::PreciseStage *stage = loop.tracker().preciseStage(); stage && f.track.precise)
+      report::drawCorrespondenceLines(view, stage->lines(cam));
+    pair = k == 0 ? view : report::sideBySide(pair, view);
   }
-  const vpImage<vpRGBa> pair = report::sideBySide(left, right);
   if (wantVideo) {
     cv::Mat bgra, bgr, half; // ViSP converts to BGRA; the writer takes BGR
     vpImageConvert::convert(pair, bgra);

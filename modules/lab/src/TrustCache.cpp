@@ -41,7 +41,7 @@ void inOrder(Named &v, const std::vector<std::string> &names)
 
 TrustCache TrustCache::fromEnvironment() { return TrustCache(LabCache::fromEnvironment()); }
 
-std::string TrustCache::keyOf(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const core::PhotoModel &model)
+std::string TrustCache::keyOf(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const core::PhotoModel &model)
 {
   core::PhotoModel untrusted = model;
   untrusted.trust = core::TrustCalibration();
@@ -78,7 +78,7 @@ void TrustCache::store(const std::string &key, const LabTrust &t) const
   m_folder.write(key + ".trust.json", j.dump());
 }
 
-LabTrust calibrateLabTrust(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+LabTrust calibrateLabTrust(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                            const model::PassMeasurements &measured, const core::PhotoModel &model, const std::function<void()> &onStep)
 {
   const TrustCache cache = TrustCache::fromEnvironment();

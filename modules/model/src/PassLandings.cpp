@@ -29,7 +29,7 @@ std::vector<core::PassLanding> measurePassLandings(const core::StereoRig &rig, c
     if (!used[v])
       continue;
     const vpHomogeneousMatrix hMm = pass[v].fMh.inverse() * fMm; // the model's true pose in the view's hand frame
-    stage.setImages(pass[v].left, pass[v].right);
+    stage.setImages({pass[v].left, pass[v].right});
     const precise::PreciseResult r = stage.refine(core::fromHomogeneousMatrix(hMm), true);
     if (!r.ok)
       continue;

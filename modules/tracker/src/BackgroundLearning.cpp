@@ -32,7 +32,7 @@ std::optional<double> BackgroundLearning::learn(const core::HueFrame &frame, con
   // The circular mean of the background's hues, as offsets from the hue used now (within the window).
   double sum = 0;
   int n = 0;
-  for (int cam = 0; cam < 2; ++cam) {
+  for (int cam = 0; cam < m_scorer.cameraCount(); ++cam) {
     const std::size_t k = m_scorer.outerHues(frame, phi, cam, m_hues.data(), m_hues.size());
     for (std::size_t i = 0; i < k; ++i) {
       const double d = core::hueDifference(m_hues[i], m_used);

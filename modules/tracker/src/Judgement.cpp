@@ -103,7 +103,9 @@ Evidence Judgement::measure(const core::HueFrame &frame, const RefinedPose &refi
     c.preciseSigmaMm = std::min(1e3, std::max({s[0], s[1], s[2]}));
     c.preciseSigmaDeg = std::min(1e3, std::max({s[3], s[4], s[5]}));
     c.separation = p.separation;
-    c.cameraDisagreementPx = std::fabs(p.residualPxPerCamera[0] - p.residualPxPerCamera[1]) * toReference;
+    // The spread of the cameras' residuals (a stereo rig: |left - right|; one camera: 0).
+    const auto first = p.residualPxPerCamera.begin(), last = first + static_cast<std::ptrdiff_t>(std::max<std::size_t>(p.cameras, 1));
+    c.cameraDisagreementPx = (*std::max_element(first, last) - *std::min_element(first, last)) * toReference;
   }
   return e;
 }

@@ -36,52 +36,54 @@ TrackerParams resolved(const TrackerParams &params, const core::PhotoModel &mode
   return p;
 }
 
-//! q's scale for the model; throws unless the model fits the rig (most of it in both images at the search space's centre).
-QualityScale scaleOnRig(const core::StereoFitness &fitness, const core::PhotoModel &model, const TrackerParams &params)
+//! q's scale for the model; throws unless the model fits the rig (most of it in every camera's image at the search space's centre).
+QualityScale scaleOnRig(const core::CameraRig &rig, const core::StereoFitness &fitness, const core::PhotoModel &model, const TrackerParams &params)
 {
   const QualityScale scale(model, params.fitness);
   core::Phi centre;
   for (std::size_t i = 0; i < 6; ++i)
     centre[i] = 0.5 * (params.search.space.lo[i] + params.search.space.hi[i]);
-  for (int cam = 0; cam < 2; ++cam) {
+  for (int cam = 0; cam < fitness.scorer().cameraCount(); ++cam) {
     const double visible = fitness.visibleFraction(centre, cam);
     if (visible < 0.5)
       throw core::Error("the photo-model does not fit the rig: at the centre of the search space " + centre.toString() +
                         " only " + std::to_string(static_cast<int>(100 * visible)) + " % of its points fall in the " +
-                        (cam ? "right" : "left") + " image (a model too large for the cameras, or made at another scale?)");
+                        (rig[static_cast<std::size_t>(cam)].name.empty() ? "camera " + std::to_string(cam) : rig[static_cast<std::size_t>(cam)].name) +
+                        " image (a model too large for the cameras, or made at another scale?)");
   }
   return scale;
 }
 
 } // namespace
 
-PhotoModelTracker::PhotoModelTracker(const core::StereoRig &rig, const core::PhotoModel &model, const TrackerParams &params)
-    : m_params(resolved(params, model)), m_fitness(rig, model, params.fitness), m_scale(scaleOnRig(m_fitness, model, m_params)),
+PhotoModelTracker::PhotoModelTracker(const core::CameraRig &rig, const core::PhotoModel &model, const TrackerParams &params)
+    : m_params(resolved(params, model)), m_rig((rig.validate(), rig)), m_fitness(rig, model, params.fitness), m_scale(scaleOnRig(m_rig, m_fitness, model, m_params)),
       m_search(m_params.search, m_fitness.scorer(), m_scale), m_lock(m_params.lock), m_steady(m_params.steady),
       m_verifier(m_params.verifier, m_params.search, m_fitness.scorer(), m_scale),
       m_refinement(m_params.refinement, rig, model, m_fitness.scorer(), m_scale),
       m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness.scorer(), m_scale,
-                  precise::ModelErrorFloor(model.passLandings, rig.left.hMc, m_params.judgement.uncertainty.modelErrorWidthDeg)),
+                  precise::ModelErrorFloor(model.passLandings, rig[0].hMc, m_params.judgement.uncertainty.modelErrorWidthDeg)),
       m_background(m_params.background, m_fitness.scorer())
 {
   initialize();
 }
 
-TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+TrackResult PhotoModelTracker::track(const core::CameraImages &images)
 {
   const Clock clock;
+  images.checkFor(m_rig, "tracker");
   // What the frame sees (its hue planes, the background's hue) is m_fitness.frame(): made by plan (and
   // by search on an escalation, by completeHue for the judgement), and given to every step that scores.
   const core::HueFrame &hues = m_fitness.frame();
-  const FramePlan frame = plan(left, right, clock);                             // 1. steady? the hue planes; the budgets
+  const FramePlan frame = plan(images, clock);                                   // 1. steady? the hue planes; the budgets
   RmGaUpdate update;
-  const SearchedPose found = search(frame, left, right, clock);                 // 2. RM-GA (escalated if a steady frame falls)
+  const SearchedPose found = search(frame, images, clock);                       // 2. RM-GA (escalated if a steady frame falls)
   const SearchedPose searched = challenge(frame, found, update);                // 3. the lock verifier's challenger, if verifying
   const double searchedMs = clock.ms();
   const bool locked = m_scale.quality(searched.pose.fitness) >= m_params.lock.quality;
-  const RefinedPose refined = m_refinement.refine(hues, searched.pose, m_history, left, right, locked); // 4. the refinement chain
+  const RefinedPose refined = m_refinement.refine(hues, searched.pose, m_history, images, locked); // 4. the refinement chain
   const double refinedMs = clock.ms();
-  completeHue(frame, searched, refined.pose.phi, left, right);
+  completeHue(frame, searched, refined.pose.phi, images);
   const Evidence evidence = m_judgement.measure(hues, refined);                // 5. the judgement's evidence, once
   update.restart = updateState(refined.pose, evidence);                        // 6. searching, tracking or lost
   const TrackState state = m_lock.state();
@@ -96,19 +98,19 @@ TrackResult PhotoModelTracker::track(const vpImage<vpRGBa> &left, const vpImage<
   return r;
 }
 
-FramePlan PhotoModelTracker::plan(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock)
+FramePlan PhotoModelTracker::plan(const core::CameraImages &images, const Clock &clock)
 {
   FramePlan frame = m_steady.plan(m_verifier.verifying(m_lock.state()));
   if (frame.windowed)
-    m_fitness.setImages(left, right, m_steady.windows(m_fitness.scorer(), m_history));
+    m_fitness.setImages(images.data(), m_steady.windows(m_fitness.scorer(), m_history).data());
   else
-    m_fitness.setImages(left, right);
+    m_fitness.setImages(images.data());
   frame.hueMs = clock.ms();
   frame.setBudgets(m_params.search, m_params.steady, m_params.verifier);
   return frame;
 }
 
-SearchedPose PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock)
+SearchedPose PhotoModelTracker::search(const FramePlan &frame, const core::CameraImages &images, const Clock &clock)
 {
   const PoseSearch::Scoring scoring = m_lock.state() == TrackState::Tracking ? PoseSearch::Scoring::Exact : PoseSearch::Scoring::Coarse;
   const rmga::FrameResult fr = m_search.evolve(m_fitness.frame(), frame.main, scoring); // coarse until tracked
@@ -119,7 +121,7 @@ SearchedPose PhotoModelTracker::search(const FramePlan &frame, const vpImage<vpR
     // The steady frame went wrong: the rest of the whole budget at once, on the whole images.
     s.escalated = true;
     if (frame.windowed)
-      m_fitness.setImages(left, right);
+      m_fitness.setImages(images.data());
     rmga::FrameBudget rest = frame.mainWhole;
     if (rest.evaluations > 0)
       rest.evaluations = std::max<long>(m_params.search.ga.population, rest.evaluations - fr.evaluations);
@@ -151,8 +153,7 @@ SearchedPose PhotoModelTracker::challenge(const FramePlan &frame, const Searched
   return s;
 }
 
-void PhotoModelTracker::completeHue(const FramePlan &frame, const SearchedPose &searched, const core::Phi &phi, const vpImage<vpRGBa> &left,
-                                    const vpImage<vpRGBa> &right)
+void PhotoModelTracker::completeHue(const FramePlan &frame, const SearchedPose &searched, const core::Phi &phi, const core::CameraImages &images)
 {
   if (!frame.windowed || searched.escalated)
     return;
@@ -160,7 +161,7 @@ void PhotoModelTracker::completeHue(const FramePlan &frame, const SearchedPose &
   std::array<core::Phi, 9> seen;
   seen[0] = phi;
   const std::size_t n = 1 + m_judgement.competitors(phi, seen.data() + 1);
-  m_fitness.addHueUnder(left, right, seen.data(), n);
+  m_fitness.addHueUnder(images.data(), seen.data(), n);
 }
 
 RmGaUpdate::Restart PhotoModelTracker::updateState(const ScoredPose &pose, const Evidence &evidence)

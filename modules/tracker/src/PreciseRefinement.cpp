@@ -15,7 +15,7 @@ void PreciseRefinementParams::validate() const
     throw core::Error("tracker: the precise stage's visible share to look for hidden lines below must lie in [0, 1]");
 }
 
-PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
+PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, const core::CameraRig &rig, const core::PhotoModel &model,
                                      const core::StereoScorer &scorer, const QualityScale &scale)
     : m_p(params), m_scorer(scorer), m_scale(scale)
 {
@@ -33,9 +33,9 @@ PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, cons
 }
 
 PreciseRefinement::Attempt PreciseRefinement::refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history,
-                                                     const core::Phi &predicted, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right)
+                                                     const core::Phi &predicted, const core::CameraImages &images)
 {
-  m_stage->setImages(left, right);
+  m_stage->setImages(images);
   const double minF = searched.fitness - m_scale.fitnessSpan(m_p.maxDropQ);
   auto acceptable = [&](const precise::PreciseResult &p, const core::Phi &start, double &F) {
     if (!p.ok || core::translationDistanceMm(p.phi, start) > m_p.maxMoveMm || core::rotationDistanceDeg(p.phi, start) > m_p.maxMoveDeg)
@@ -47,7 +47,10 @@ PreciseRefinement::Attempt PreciseRefinement::refine(const core::HueFrame &frame
   // fitness finds part of the target hidden at the search's pose (lookForHiddenBelow): on a clear
   // view the stage is the one it always was (and pays nothing for it).
   const core::FitnessDetail seen = m_scorer.evaluateDetail(frame, searched.phi);
-  const bool lookForHidden = std::min(seen.counts[0].visibleShare(), seen.counts[1].visibleShare()) < m_p.lookForHiddenBelow;
+  double leastVisible = 1;
+  for (int k = 0; k < seen.cameras; ++k)
+    leastVisible = std::min(leastVisible, seen.counts[static_cast<std::size_t>(k)].visibleShare());
+  const bool lookForHidden = leastVisible < m_p.lookForHiddenBelow;
   m_lookedForHidden = lookForHidden;
   const TrackResult &last = history.last();
   const bool haveLast = last.state == TrackState::Tracking && last.precise && last.phi.isValid();

@@ -11,21 +11,21 @@ void RefinementParams::validate() const
   tiltFilterAllAround.validate();
 }
 
-RefinementChain::RefinementChain(const RefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
+RefinementChain::RefinementChain(const RefinementParams &params, const core::CameraRig &rig, const core::PhotoModel &model,
                                  const core::StereoScorer &scorer, const QualityScale &scale)
     : m_precise(params.precise, rig, model, scorer, scale), m_ascent(params.ascent, scorer),
       m_tiltParams(model.isAllAround() ? params.tiltFilterAllAround : params.tiltFilter), m_tilt(m_tiltParams), m_motion(params.motion), m_scorer(scorer)
 {
 }
 
-RefinedPose RefinementChain::refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const vpImage<vpRGBa> &left,
-                                    const vpImage<vpRGBa> &right, bool locked)
+RefinedPose RefinementChain::refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const core::CameraImages &images,
+                                    bool locked)
 {
   RefinedPose r;
   r.pose = searched;
   // 1. The precise stage: a pose it keeps is final.
   if (locked && m_precise.active()) {
-    const PreciseRefinement::Attempt a = m_precise.refine(frame, searched, history, m_motion.predict(history), left, right);
+    const PreciseRefinement::Attempt a = m_precise.refine(frame, searched, history, m_motion.predict(history), images);
     r.preciseResult = a.result;
     if (a.kept) {
       r.precise = true;

@@ -9,8 +9,7 @@
 
 namespace pm::tracker {
 
-Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right,
-                       const DetectionParams &params)
+Detection detectStatic(PhotoModelTracker &tracker, const core::CameraImages &images, const DetectionParams &params)
 {
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
@@ -19,7 +18,7 @@ Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, 
   int sinceBest = 0;
   TrackResult last;
   while (seconds() < params.maxTimeS) {
-    const TrackResult r = tracker.track(left, right);
+    const TrackResult r = tracker.track(images);
     last = r;
     ++d.frames;
     d.totalEvaluations += r.evaluations;

@@ -23,9 +23,10 @@ FramePlan SteadyFramePolicy::plan(bool verifying) const
   return p;
 }
 
-std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoScorer &scorer, const PoseHistory &history) const
+std::array<core::PixelRect, core::CameraRig::kMaxCameras> SteadyFramePolicy::windows(const core::StereoScorer &scorer,
+                                                                                     const PoseHistory &history) const
 {
-  std::array<core::PixelRect, 2> w;
+  std::array<core::PixelRect, core::CameraRig::kMaxCameras> w{};
   const core::Phi &last = history.last().phi;
   core::Phi next = last; // constant velocity from the two last frames (else the last pose again)
   if (const core::Phi *before = history.beforeLast())
@@ -33,7 +34,7 @@ std::array<core::PixelRect, 2> SteadyFramePolicy::windows(const core::StereoScor
       next[i] = 2 * last[i] - (*before)[i];
   if (!next.isValid())
     next = last;
-  for (int cam = 0; cam < 2; ++cam) {
+  for (int cam = 0; cam < scorer.cameraCount(); ++cam) {
     const std::size_t c = static_cast<std::size_t>(cam);
     w[c] = scorer.footprint(last, cam).united(scorer.footprint(next, cam));
     w[c] = w[c].grown(m_p.hueMarginPx, scorer.camera(cam).w, scorer.camera(cam).h);

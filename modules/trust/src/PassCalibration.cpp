@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "pm/core/Error.h"
+#include "pm/model/PassRig.h"
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/trust/HeldOutViews.h"
 
@@ -295,7 +296,7 @@ std::vector<std::optional<FoldModel>> buildFolds(const core::StereoRig &rig, con
 
 } // namespace
 
-core::TrustCalibration calibrateFromPass(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+core::TrustCalibration calibrateFromPass(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                                          const model::PassMeasurements &measured, const tracker::TrackerParams &trackerParams, const CalibrationParams &p,
                                          const std::function<void()> &onStep, std::string *why, std::vector<PassTry> *triesOut)
 {
@@ -305,7 +306,9 @@ core::TrustCalibration calibrateFromPass(const core::StereoRig &rig, const std::
   foldParams.carving.minViews = std::min(params.carving.minViews, pass.size() > 4 ? pass.size() - 4 : std::size_t{1});
   const std::vector<std::vector<std::size_t>> folds = heldOutFolds(pass.size(), p.heldOutViews, p.viewsPerModel);
   std::vector<std::string> errors;
-  const std::vector<std::optional<FoldModel>> models = buildFolds(rig, pass, foldParams, measured, folds, errors, onStep);
+  const core::StereoRig pair = model::passRig(rig);
+  const core::CameraRig tried = rig.size() <= 2 ? rig : core::CameraRig(pair); // the cameras a pass view holds
+  const std::vector<std::optional<FoldModel>> models = buildFolds(pair, pass, foldParams, measured, folds, errors, onStep);
   std::vector<PassTry> tries;
   std::string reason;
   for (std::size_t f = 0; f < folds.size(); ++f) {
@@ -315,7 +318,7 @@ core::TrustCalibration calibrateFromPass(const core::StereoRig &rig, const std::
         onStep();
       continue;
     }
-    tracker::PhotoModelTracker tracker(rig, models[f]->model, trackerParams);
+    tracker::PhotoModelTracker tracker(tried, models[f]->model, trackerParams);
     for (std::size_t k : folds[f]) {
       const std::vector<PassTry> v = tryView(tracker, pass[k], pass[k].fMh.inverse() * models[f]->fMm, p.tries, k, k);
       tries.insert(tries.end(), v.begin(), v.end());

@@ -8,6 +8,7 @@
 #include <visp3/core/vpThetaUVector.h>
 
 #include "pm/core/Pose.h"
+#include "pm/model/PassRig.h"
 
 namespace pm::trust {
 
@@ -41,7 +42,7 @@ PassTry tryFrom(tracker::PhotoModelTracker &tracker, const model::PassView &v, c
   tracker.initFromPose(start);
   tracker::TrackResult r;
   for (int f = 0; f < frames; ++f)
-    r = tracker.track(v.left, v.right);
+    r = tracker.track(model::viewImages(v, static_cast<std::size_t>(tracker.cameraCount())));
   return record(r, hMm, view, name);
 }
 
@@ -103,7 +104,7 @@ std::vector<PassTry> tryView(tracker::PhotoModelTracker &tracker, const model::P
     tracker.initialize();
     tracker::TrackResult r;
     for (int f = 0; f < p.searchFrames; ++f)
-      r = tracker.track(v.left, v.right);
+      r = tracker.track(model::viewImages(v, static_cast<std::size_t>(tracker.cameraCount())));
     out.push_back(record(r, hMm, view, "search"));
   }
   return out;

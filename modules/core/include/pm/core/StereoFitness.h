@@ -54,6 +54,10 @@ public:
 
   //! StereoScorer::setImages on this fitness's frame: one image per camera.
   void setImages(const vpImage<vpRGBa> *const *images) { m_scorer.setImages(m_frame, images); }
+  //! The same inside \e windows (windows[k] camera k's).
+  void setImages(const vpImage<vpRGBa> *const *images, const PixelRect *windows) { m_scorer.setImages(m_frame, images, windows); }
+  //! StereoScorer::addHueUnder on this fitness's frame: one image per camera.
+  void addHueUnder(const vpImage<vpRGBa> *const *images, const Phi *poses, std::size_t n) { m_scorer.addHueUnder(m_frame, images, poses, n); }
   //! StereoScorer::setImages on this fitness's frame.
   void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) { m_scorer.setImages(m_frame, left, right); }
   //! StereoScorer::setImages with windows on this fitness's frame.

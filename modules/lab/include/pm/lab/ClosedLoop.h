@@ -102,8 +102,8 @@ struct LoopFrame
 };
 
 /*!
-  The simulated lab in closed loop, one camera frame per step() (see ClosedLoop.h). It keeps \e rig
-  and \e scene by reference (they must outlive it) and owns the tracker, the servo, the arm and
+  The simulated lab in closed loop, one camera frame per step() (see ClosedLoop.h), with a rig of
+  any number of cameras. It copies \e rig, keeps \e scene by reference (they must outlive it) and owns the tracker, the servo, the arm and
   the TC-robot.
 
   \code
@@ -131,7 +131,7 @@ public:
     build.model is tracked and its oMm gives the truth. The tracker starts searching, with no
     initial pose. Throws pm::core::Error for invalid parameters or if \e makeTc gives no TC-robot.
   */
-  ClosedLoop(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model, const tracker::TrackerParams &tp,
+  ClosedLoop(const core::CameraRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model, const tracker::TrackerParams &tp,
              const servo::ServoParams &sp, const LoopParams &lp, const std::function<std::unique_ptr<sim::TcRobot>(const vpHomogeneousMatrix &wMh0)> &makeTc,
              std::unique_ptr<robot::Arm> arm = nullptr);
 
@@ -139,8 +139,10 @@ public:
   LoopFrame step();
   //! The faults to inject from the next step() on (they replace the previous ones).
   void setFaults(const LoopFaults &faults) { m_faults = faults; }
-  //! The stereo pair of the last step().
-  const sim::StereoImages &images() const { return m_images; }
+  //! The images of the last step(), camera k's at [k].
+  const std::vector<vpImage<vpRGBa>> &images() const { return m_images; }
+  //! The rig (a copy of the one given).
+  const core::CameraRig &rig() const { return m_rig; }
   //! The photo-model tracker.
   const tracker::PhotoModelTracker &tracker() const { return m_tracker; }
   //! Whether the estimate is filtered (LoopParams::filter, Auto resolved for this tracker).
@@ -155,7 +157,7 @@ public:
   double time() const { return static_cast<double>(m_frame) / m_lp.fps; }
 
 private:
-  const core::StereoRig &m_rig;
+  core::CameraRig m_rig;
   const sim::Scene &m_scene;
   vpHomogeneousMatrix m_oMm, m_hdMo;
   LoopParams m_lp;
@@ -165,7 +167,7 @@ private:
   std::optional<hand::GraspApproach> m_approach; //!< LoopParams::graspApproach
   LoopFaults m_faults;
   std::unique_ptr<sim::TcRobot> m_tc;
-  sim::StereoImages m_images;
+  std::vector<vpImage<vpRGBa>> m_images; //!< camera k's at [k]
   long m_frame = 0;
 };
 

@@ -52,7 +52,7 @@ std::pair<double, double> sinusoidFit(const std::vector<double> &t, const std::v
       std::cout << p.frequencyHz << " Hz: gain " << p.gain << ", lag " << p.phaseLagDeg << " deg\n";
   \endcode
 */
-std::vector<BodePoint> frequencyResponse(const core::StereoRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
+std::vector<BodePoint> frequencyResponse(const core::CameraRig &rig, const sim::Scene &scene, const sim::SimulatedPhotoModel &model,
                                          const tracker::TrackerParams &tp, const servo::ServoParams &servo, const LoopParams &lp,
                                          const SweepParams &sweep, const std::function<void()> &onFrequency = {});
 

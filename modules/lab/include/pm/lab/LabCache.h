@@ -34,7 +34,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/model/PassView.h"
 
 namespace pm::lab {
@@ -56,7 +56,7 @@ public:
   //! Adds \e M's 16 numbers.
   CacheKey &matrix(const vpHomogeneousMatrix &M);
   //! Both cameras: name, intrinsics, image size, pose on the hand, lens distortion.
-  CacheKey &rig(const core::StereoRig &rig);
+  CacheKey &rig(const core::CameraRig &rig);
   //! Every view: its name, hand pose and the four images (with and without the target).
   CacheKey &pass(const std::vector<model::PassView> &pass);
   //! 16 hex digits.

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PhotoModelBuilder.h"
 #include "pm/sim/Scene.h"
@@ -43,7 +43,7 @@ struct LabModelChoice
     pm::tracker::PhotoModelTracker tracker(rig, m.build.model);
   \endcode
 */
-sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::StereoRig &rig, const LabModelChoice &c);
+sim::SimulatedPhotoModel makeLabModel(const sim::Scene &scene, const core::CameraRig &rig, const LabModelChoice &c);
 
 //! A look-alike toy beside the target (the programs' --distractor, --distractor-at).
 struct DistractorChoice

@@ -21,7 +21,7 @@
 #include <visp3/core/vpColVector.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
 
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PassPlanner.h"
 #include "pm/model/PassView.h"
@@ -46,11 +46,13 @@ struct LabPass
   Runs the pass of \e plan with \e arm from where it is (its rest) and the toy at \e h0Mo in the
   hand frame there (the plan's pivot is put on the toy's origin); the arm is left at the last
   view. Without \e backgrounds the second pass (the toy removed) is not made (a plain backdrop).
-  Views of the plan's outer rings the arm cannot reach are left out (LabPass::leftOut). Throws
+  Views of the plan's outer rings the arm cannot reach are left out (LabPass::leftOut). Each view's
+  pair is taken by model::passRig(\e rig): a stereo rig's two cameras, or one camera and the same
+  camera after the hand's side step (the lab takes the step as made exactly). Throws
   pm::core::Error naming the first view of the innermost ring the arm cannot reach within its joint
   limits, and the joint in the way.
 */
-LabPass runLabPass(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan, robot::Arm &arm,
+LabPass runLabPass(const sim::Scene &scene, const core::CameraRig &rig, const model::PassPlan &plan, robot::Arm &arm,
                    const vpHomogeneousMatrix &h0Mo = vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0), bool backgrounds = true);
 
 /*!
@@ -59,9 +61,9 @@ LabPass runLabPass(const sim::Scene &scene, const core::StereoRig &rig, const mo
   (0, 0, \e distanceMm) in the hand frame at rest, then buildAllAroundModel(); with the model frame
   in the toy's frame (oMm) for ground truth. \e build (when given) receives the whole build. With
   \e calibrateTrust, the model's trust is calibrated from the pass as pm-make-model calibrates it
-  (pm::trust::calibrateFromPass(), its default parameters).
+  (pm::trust::calibrateFromPass(), its default parameters), for a tracker on \e rig.
 */
-sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::StereoRig &rig, const model::PassPlan &plan,
+sim::SimulatedPhotoModel makeSimulatedAllAroundModel(const sim::Scene &scene, const core::CameraRig &rig, const model::PassPlan &plan,
                                                      const std::string &arm = "pa10", double distanceMm = 500,
                                                      const model::AllAroundParams &params = model::AllAroundParams(),
                                                      model::AllAroundBuild *build = nullptr, bool calibrateTrust = false);

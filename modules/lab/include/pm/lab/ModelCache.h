@@ -33,7 +33,7 @@
 #include <visp3/core/vpImage.h>
 
 #include "pm/core/PhotoModel.h"
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/lab/LabCache.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PassView.h"
@@ -58,7 +58,7 @@ public:
   explicit ModelCache(LabCache folder = LabCache()) : m_folder(std::move(folder)) {}
 
   //! The key of the model built from \e pass taken by \e rig with \e params (16 hex digits).
-  static std::string keyOf(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+  static std::string keyOf(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                            bool calibrateTrust);
   //! The model stored under \e key, if any (an entry that does not read is none).
   std::optional<CachedModel> find(const std::string &key) const;

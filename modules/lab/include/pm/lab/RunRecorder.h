@@ -17,7 +17,7 @@ namespace pm::lab {
   Records a run frame by frame (see RunRecorder.h).
 
   \code
-    pm::lab::RunRecorder rec("servo.avi", 30.0, 640, 480, 150, false);
+    pm::lab::RunRecorder rec("servo.avi", 30.0, 2 * 640, 480, 150, false); // a stereo rig of 640 x 480 cameras
     for (long k = 0; k < n; ++k) {
       const pm::lab::LoopFrame f = loop.step();
       rec.record(k, f, loop, [](const std::string &name) { return "out/" + name; });
@@ -29,8 +29,8 @@ class RunRecorder
 {
 public:
   /*!
-    \e videoPath: the video file (empty: none), at \e fps / 2 frames per second, of a rig whose
-    cameras are \e width x \e height; \e overlayEvery: an overlay PNG every N frames (0: none);
+    \e videoPath: the video file (empty: none), at \e fps / 2 frames per second and half size, of
+    a rig whose cameras' views side by side are \e width x \e height; \e overlayEvery: an overlay PNG every N frames (0: none);
     \e oracle: the run servoes on the true pose (so labelled). Throws pm::core::Error if the video
     cannot be opened.
   */

@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "pm/core/PhotoModel.h"
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/core/TrustCalibration.h"
 #include "pm/lab/LabCache.h"
 #include "pm/model/AllAroundModelBuilder.h"
@@ -60,7 +60,7 @@ public:
   explicit TrustCache(LabCache folder = LabCache()) : m_folder(std::move(folder)) {}
 
   //! The key of the calibration of \e model, built from \e pass taken by \e rig (16 hex digits).
-  static std::string keyOf(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const core::PhotoModel &model);
+  static std::string keyOf(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const core::PhotoModel &model);
   //! The calibration stored under \e key, if any (an entry that does not read is none).
   std::optional<LabTrust> find(const std::string &key) const;
   //! Stores \e t under \e key when it was measured (hold the key's lock: LabCache::KeyLock).
@@ -77,7 +77,7 @@ private:
   pm-make-model calibrates it (pm::trust::calibrateFromPass(), its default parameters; \e onStep as
   there, every step at once when found), through the cache of the environment (TrustCache::fromEnvironment()).
 */
-LabTrust calibrateLabTrust(const core::StereoRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
+LabTrust calibrateLabTrust(const core::CameraRig &rig, const std::vector<model::PassView> &pass, const model::AllAroundParams &params,
                            const model::PassMeasurements &measured, const core::PhotoModel &model,
                            const std::function<void()> &onStep = nullptr);
 

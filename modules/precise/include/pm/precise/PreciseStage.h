@@ -2,12 +2,12 @@
 /*!
   \file PreciseStage.h
   The precise last stage of a frame: from RM-GA's best pose (or the last frame's), Gauss-Newton
-  steps on a smooth objective of the outline in both cameras at once, coarse to fine, after the
+  steps on a smooth objective of the outline in every camera of the rig at once, coarse to fine, after the
   region-based trackers (SRT3D, DLR's M3T). The hue fitness of Eqs. (8)-(11) finds the target with
   no initial pose but is flat in rotation near its peak (a turn of 2 deg moves the image by 1.5 px
   and costs nothing); this objective moves with every pixel the outline moves.
 
-  Each iteration: the correspondence lines of both cameras are measured at the current pose
+  Each iteration: the correspondence lines of each camera are measured at the current pose
   (CorrespondenceLines.h: where along each outline normal the colours turn from target to
   background), then \e updatesPerScale Gauss-Newton steps with a Tikhonov regularisation
   (the step's prior: no motion) move the pose toward the outline's measured positions. The lines'
@@ -17,7 +17,7 @@
 
   \code
       pm::precise::PreciseStage precise(rig, model);           // the model must carry outlines (version 5)
-      precise.setImages(IL, IR);                      // the frame (kept by pointer until the next)
+      precise.setImages({IL, IR});                    // the frame, one image per camera (kept by pointer until the next)
       const pm::precise::PreciseResult r = precise.refine(rmgaBest);
       if (r.ok) { phi = r.phi; precise.learnColours(phi); }
   \endcode
@@ -31,7 +31,8 @@
 
 #include "pm/core/PhotoModel.h"
 #include "pm/core/Pose.h"
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraImages.h"
+#include "pm/core/CameraRig.h"
 #include "pm/core/UndistortMap.h"
 #include "pm/precise/ColourHistograms.h"
 #include "pm/precise/CorrespondenceLines.h"
@@ -60,11 +61,11 @@ struct PreciseParams
   double learningRate = 0.2;             //!< how much of a frame's colours learnColours() blends in
   double histogramSkipPx = 0.5;          //!< colours are learnt from this far off the outline ...
   double histogramMaxPx = 20;            //!< ... to this far (px)
-  std::size_t minLines = 24;             //!< fewer lines in both cameras: no result (PreciseResult::ok false)
+  std::size_t minLines = 24;             //!< fewer lines in all the cameras together: no result (PreciseResult::ok false)
   std::size_t interiorPoints = 200;      //!< the interior term's points per camera (InteriorTerm.h; 0: off, the outline alone)
   double interiorSigma = 0.05;           //!< the chromaticity's noise the interior term assumes
   double interiorWeight = 1.0;           //!< the interior term's weight beside the outline's
-  StereoOcclusionParams occlusion;       //!< the lines hidden in one camera and seen by the other leave the stage (StereoOcclusion.h)
+  StereoOcclusionParams occlusion;       //!< the lines hidden in one camera and seen by its partner leave the stage (StereoOcclusion.h; one camera: off)
 
   //! Throws pm::core::Error naming the first parameter out of range.
   void validate() const;
@@ -75,8 +76,9 @@ struct PreciseResult
 {
   core::Phi phi;                     //!< the refined pose (the start when !ok)
   bool ok = false;             //!< enough lines were measured in the last iteration
-  std::array<std::size_t, 2> lines{}; //!< lines measured in each camera at the finest scale
-  std::array<std::size_t, 2> hiddenLines{}; //!< lines found hidden in each camera at the finest scale and left out (StereoOcclusion.h)
+  std::size_t cameras = 0;     //!< the rig's cameras: the arrays' entries that count
+  std::array<std::size_t, core::CameraRig::kMaxCameras> lines{}; //!< lines measured in each camera at the finest scale
+  std::array<std::size_t, core::CameraRig::kMaxCameras> hiddenLines{}; //!< lines found hidden in each camera at the finest scale and left out (StereoOcclusion.h)
   /*!
     The Gauss-Newton information of the finest scale's lines at phi: sum over lines of J^T J /
     variance, J the line position's derivative (px) with respect to the twist (mm, then rad; hand
@@ -84,7 +86,15 @@ struct PreciseResult
   */
   std::array<double, 36> information{};
   double residualPx = 0;       //!< rms distance between the outline found on each line and the model's (finest scale, px)
-  std::array<double, 2> residualPxPerCamera{}; //!< the same in the left and in the right camera alone (0 where a camera has no line)
+  std::array<double, core::CameraRig::kMaxCameras> residualPxPerCamera{}; //!< the same in each camera alone (0 where a camera has no line)
+  //! All the cameras' lines.
+  std::size_t totalLines() const
+  {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < cameras; ++k)
+      n += lines[k];
+    return n;
+  }
   double separation = 0;       //!< mean over lines of how sharply target and background split along them, in [0, 1]
   int iterations = 0;          //!< Gauss-Newton steps taken
 };
@@ -105,26 +115,29 @@ int main()
   const pm::core::PhotoModel model = pm::io::loadPhotoModel("model.json"); // an all-around model
   pm::precise::PreciseStage precise(rig, model);
   const vpImage<vpRGBa> IL = pm::io::readColorImage("left.png"), IR = pm::io::readColorImage("right.png");
-  precise.setImages(IL, IR);
+  precise.setImages({IL, IR});            // one image per camera of the rig
   pm::core::Phi phi;                      // a pose within a few degrees and millimetres
   phi.z = 500;
   const pm::precise::PreciseResult r = precise.refine(phi);
-  std::cout << r.phi.toString() << " from " << r.lines[0] + r.lines[1] << " lines\n";
+  std::cout << r.phi.toString() << " from " << r.totalLines() << " lines\n";
 }
   \endcode
 */
 class PreciseStage
 {
 public:
-  //! Throws pm::core::Error for an invalid rig or parameters, or a model without outlines.
-  PreciseStage(const core::StereoRig &rig, const core::PhotoModel &model, const PreciseParams &params = PreciseParams());
+  //! Throws pm::core::Error for an invalid rig (one camera or more) or parameters, or a model without outlines.
+  PreciseStage(const core::CameraRig &rig, const core::PhotoModel &model, const PreciseParams &params = PreciseParams());
   PreciseStage(const PreciseStage &) = delete;            //!< its lines keep pointers to its cameras
   PreciseStage &operator=(const PreciseStage &) = delete; //!< its lines keep pointers to its cameras
   /*!
-    The frame's images (raw, as the cameras gave them): kept by pointer, they must live until the
-    last refine() or learnColours() on them. Throws pm::core::Error if a size is not its camera's.
+    The frame's images (raw, as the cameras gave them), one per camera: kept by pointer, they must
+    live until the last refine() or learnColours() on them. Throws pm::core::Error if their number
+    is not the rig's or a size is not its camera's.
   */
-  void setImages(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  void setImages(const core::CameraImages &images);
+  //! The rig's number of cameras.
+  std::size_t cameraCount() const { return m_nCams; }
   //! The background's hue its hidden lines compare with (deg, [0, 360)): the model's until set (tracker::BackgroundLearning).
   void setBackgroundHue(double deg)
   {
@@ -166,12 +179,19 @@ private:
   std::size_t measureInterior(std::size_t k, const core::Phi &phi, int scale, const StereoOcclusion *occlusion);
   PreciseParams m_params;
   OutlineViews m_outlines;
-  std::array<LineCamera, 2> m_cams;
-  std::array<std::shared_ptr<const core::UndistortMap>, 2> m_undistort;
-  std::array<std::unique_ptr<CorrespondenceLines>, 2> m_lines;
+  //! The camera whose view tells camera \e k's hidden lines (the next one; the last: the one before), or null alone.
+  const LineCamera *partner(std::size_t k) const;
+  //! The lines of each camera look for hidden ones with \e occlusion (null: every line counts).
+  void useOcclusion(const StereoOcclusion *occlusion);
+  static constexpr std::size_t kMax = core::CameraRig::kMaxCameras;
+  std::size_t m_nCams = 0;
+  core::CameraRig m_rig; //!< the rig, for its images' sizes
+  std::array<LineCamera, kMax> m_cams;
+  std::array<std::shared_ptr<const core::UndistortMap>, kMax> m_undistort;
+  std::array<std::unique_ptr<CorrespondenceLines>, kMax> m_lines;
   std::unique_ptr<StereoOcclusion> m_occlusion; //!< null: every line counts
   std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
-  std::array<InteriorSamples, 2> m_samples;  //!< each camera's interior samples of the last measurement
+  std::array<InteriorSamples, kMax> m_samples;  //!< each camera's interior samples of the last measurement
   ColourHistograms m_colours;
   std::vector<float> m_modelF, m_modelB;
   bool m_hasImages = false;

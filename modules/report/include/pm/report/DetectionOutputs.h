@@ -47,7 +47,7 @@ struct DetectionOutputs
     tracker.initialize();
     pm::report::DetectionOutputs o;
     o.source = "my pair";
-    o.detection = pm::tracker::detectStatic(tracker, left, right, pm::tracker::DetectionParams());
+    o.detection = pm::tracker::detectStatic(tracker, {left, right}, pm::tracker::DetectionParams());
     pm::report::writeDetection("detect", o, tracker.fitness(), left, right);
     std::cout << pm::report::describeDetection(o, "detect");
   \endcode

@@ -10,7 +10,7 @@
 
   \code
     const pm::tracker::SearchedPose searched{{phi, F}, work};
-    const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, IL, IR, locked);
+    const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, {IL, IR}, locked);
     const pm::tracker::Evidence e = judgement.measure(frame, refined);
     const pm::tracker::Verdict verdict = judgement.judge(refined, e, state);
     if (verdict.trusted)

@@ -87,14 +87,21 @@ public:
     Throws core::Error if the rig, the model or the parameters are invalid, or if the model does
     not fit the rig (under half of its points in an image at the centre of the search space).
   */
-  PhotoModelTracker(const core::StereoRig &rig, const core::PhotoModel &model, const TrackerParams &params = TrackerParams());
+  PhotoModelTracker(const core::CameraRig &rig, const core::PhotoModel &model, const TrackerParams &params = TrackerParams());
 
   //! Searches from scratch: a random population over the search space (state: searching).
   void initialize();
   //! Starts from a known pose (state: tracking, the lock taken as verified).
   void initFromPose(const vpHomogeneousMatrix &hMo);
-  //! One frame (the steps of the file's description). Throws core::Error if an image's size differs from its camera's.
-  TrackResult track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+  /*!
+    One frame (the steps of the file's description), one image per camera of the rig. Throws
+    core::Error if their number is not the rig's or an image's size differs from its camera's.
+  */
+  TrackResult track(const core::CameraImages &images);
+  //! A stereo rig's frame: track({left, right}).
+  TrackResult track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) { return track(core::CameraImages(left, right)); }
+  //! The rig's number of cameras.
+  int cameraCount() const { return m_fitness.scorer().cameraCount(); }
   /*!
     The hand moved by \e hNowMhPrev (the previous hand frame seen from the current one, from the
     robot's odometry) since the last frame: every part follows, so that a target that did not move
@@ -112,7 +119,7 @@ public:
   const TrackResult &lastResult() const { return m_history.last(); }
   //! q of a fitness value for this model.
   double quality(double fitness) const { return m_scale.quality(fitness); }
-  //! The model's points at the last pose in camera \e camera's image (0 left, 1 right), each with its score class (for drawing).
+  //! The model's points at the last pose in camera \e camera's image (a stereo rig: 0 left, 1 right), each with its score class (for drawing).
   std::vector<core::PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_history.last().phi, camera); }
   //! The stereo fitness the tracker scores with (its hue planes: those of the last frame).
   const core::StereoFitness &fitness() const { return m_fitness; }
@@ -129,14 +136,13 @@ private:
   //! A frame's wall clock, from the start of track().
   struct Clock;
   //! 1. The frame's plan; the hue planes made (on a steady frame, in its windows).
-  FramePlan plan(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock);
+  FramePlan plan(const core::CameraImages &images, const Clock &clock);
   //! 2. RM-GA within the plan's budget, escalated when a steady frame's q falls.
-  SearchedPose search(const FramePlan &plan, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const Clock &clock);
+  SearchedPose search(const FramePlan &plan, const core::CameraImages &images, const Clock &clock);
   //! 3. The lock verifier's challenger when the plan says so: \e searched, or the better pose it moved to (then \e update reseeds RM-GA).
   SearchedPose challenge(const FramePlan &plan, const SearchedPose &searched, RmGaUpdate &update);
   //! Before 5: on a windowed frame, the hue under \e phi and its competitors, which the judgement scores on the whole images.
-  void completeHue(const FramePlan &plan, const SearchedPose &searched, const core::Phi &phi, const vpImage<vpRGBa> &left,
-                   const vpImage<vpRGBa> &right);
+  void completeHue(const FramePlan &plan, const SearchedPose &searched, const core::Phi &phi, const core::CameraImages &images);
   //! 6. The lock's state from \e pose's q (a plainly wrong new lock refused); returns its restart of RM-GA.
   RmGaUpdate::Restart updateState(const ScoredPose &pose, const Evidence &evidence);
   //! 7. The verdict on \e refined with the tracker's state after 6.
@@ -152,6 +158,7 @@ private:
   void useBackgroundHue(double deg);
 
   TrackerParams m_params;
+  core::CameraRig m_rig;         //!< the rig, for its images' sizes
   core::StereoFitness m_fitness; //!< the scorer, which every part keeps (never changed), and the frame's hues, given to each step
   QualityScale m_scale;
   PoseSearch m_search;

@@ -17,7 +17,7 @@
 
   \code
     pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, scorer, scale);
-    const pm::tracker::PreciseRefinement::Attempt a = stage.refine(frame, searched, history, motion.predict(history), IL, IR);
+    const pm::tracker::PreciseRefinement::Attempt a = stage.refine(frame, searched, history, motion.predict(history), {IL, IR});
     if (a.kept) {
       pm::tracker::RmGaUpdate u;
       u.inject = pm::tracker::RmGaUpdate::Inject{a.pose.phi, a.pose.fitness}; // the frame's pose is the stage's: it joins RM-GA
@@ -32,7 +32,8 @@
 
 #include "pm/core/PhotoModel.h"
 #include "pm/core/StereoScorer.h"
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraImages.h"
+#include "pm/core/CameraRig.h"
 #include "pm/precise/PreciseStage.h"
 #include "pm/tracker/QualityScale.h"
 #include "pm/tracker/FrameSteps.h"
@@ -69,7 +70,7 @@ class PreciseRefinement
 {
 public:
   //! The stage runs when \e params.enabled and \e model has outlines (core::PhotoModel::hasContours).
-  PreciseRefinement(const PreciseRefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
+  PreciseRefinement(const PreciseRefinementParams &params, const core::CameraRig &rig, const core::PhotoModel &model,
                     const core::StereoScorer &scorer, const QualityScale &scale);
 
   //! What the stage made of a frame.
@@ -87,7 +88,7 @@ public:
     pose moved on by the target's motion, or the last pose itself).
   */
   Attempt refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const core::Phi &predicted,
-                 const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+                 const core::CameraImages &images);
   //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
   //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).

@@ -14,7 +14,7 @@
 
   \code
     pm::tracker::RefinementChain chain(params.refinement, rig, model, scorer, scale);
-    const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, IL, IR, locked);
+    const pm::tracker::RefinedPose refined = chain.refine(frame, searched.pose, history, {IL, IR}, locked);
     pm::tracker::RmGaUpdate u;
     if (refined.precise) // the precise stage's pose joins RM-GA
       u.inject = pm::tracker::RmGaUpdate::Inject{refined.pose.phi, refined.pose.fitness};
@@ -56,15 +56,15 @@ class RefinementChain
 {
 public:
   //! The stages for \e model on \e rig (the precise stage only for a model with outlines), scoring with \e scorer (it must outlive the chain).
-  RefinementChain(const RefinementParams &params, const core::StereoRig &rig, const core::PhotoModel &model,
+  RefinementChain(const RefinementParams &params, const core::CameraRig &rig, const core::PhotoModel &model,
                   const core::StereoScorer &scorer, const QualityScale &scale);
 
   /*!
     The stages on \e searched, the frame's pose after the search, on \e frame (\e locked: its q
     reaches the lock; \e history: the past frames). Returns the frame's pose.
   */
-  RefinedPose refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const vpImage<vpRGBa> &left,
-                     const vpImage<vpRGBa> &right, bool locked);
+  RefinedPose refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const core::CameraImages &images,
+                     bool locked);
   //! After the judgement: the precise stage learns the colours along the outline of \e refined when it is the stage's and trusted.
   void learn(const RefinedPose &refined, const Verdict &verdict);
   //! The hand moved by \e hNowMhPrev: the tilt filter's state follows.

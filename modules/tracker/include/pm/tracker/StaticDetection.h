@@ -33,18 +33,17 @@ struct Detection
 };
 
 /*!
-  Runs \e tracker (initialise it first: tracker.initialize()) on the still pair \e left, \e right
-  until DetectionParams says stop. The tracker keeps its state afterwards.
+  Runs \e tracker (initialise it first: tracker.initialize()) on the still \e images (one per
+  camera of its rig) until DetectionParams says stop. The tracker keeps its state afterwards.
 
   \code
     pm::tracker::PhotoModelTracker tracker(rig, model);
     tracker.initialize();
-    const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, left, right, pm::tracker::DetectionParams());
+    const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, {left, right}, pm::tracker::DetectionParams());
     std::cout << d.best.phi.toString() << " after " << d.convergedS << " s\n";
   \endcode
 */
-Detection detectStatic(PhotoModelTracker &tracker, const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right,
-                       const DetectionParams &params);
+Detection detectStatic(PhotoModelTracker &tracker, const core::CameraImages &images, const DetectionParams &params);
 
 //! The fitness peak nearest \e start: a pattern search of RM-GA's genes within \e space (5,000 evaluations).
 core::Phi nearestFitnessPeak(const core::StereoFitness &fitness, const core::Phi &start, const rmga::SearchSpace &space);

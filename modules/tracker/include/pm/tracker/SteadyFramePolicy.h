@@ -17,10 +17,11 @@
   \code
     pm::tracker::SteadyFramePolicy steady(params.steady);
     const pm::tracker::FramePlan plan = steady.plan(verifying); // before the frame
+    const pm::core::CameraImages images(IL, IR);                 // one image per camera
     if (plan.windowed)
-      scorer.setImages(frame, IL, IR, steady.windows(scorer, history));
+      scorer.setImages(frame, images.data(), steady.windows(scorer, history).data());
     else
-      scorer.setImages(frame, IL, IR);
+      scorer.setImages(frame, images.data());
     const pm::rmga::FrameResult r = search.evolve(frame, plan.main, pm::tracker::PoseSearch::Scoring::Exact);
     if (plan.steady && steady.escalates(scale.quality(r.fitness))) // after the steady search: it went wrong
       search.evolve(frame, plan.mainWhole, pm::tracker::PoseSearch::Scoring::Exact, pm::tracker::PoseSearch::Generations::SameFrame);
@@ -70,7 +71,7 @@ public:
     The hue windows of a steady frame in each camera: the model's footprint at the last frame's pose
     and at the pose the last two predict (constant velocity, PoseHistory::beforeLast()), grown.
   */
-  std::array<core::PixelRect, 2> windows(const core::StereoScorer &scorer, const PoseHistory &history) const;
+  std::array<core::PixelRect, core::CameraRig::kMaxCameras> windows(const core::StereoScorer &scorer, const PoseHistory &history) const;
   //! A steady frame whose search ended at \e q must escalate (SteadyParams::escalation).
   bool escalates(double q) const { return m_p.escalation && q < m_recentBestQ - m_p.qualityDrop; }
   //! The recent best q (the confidence's drop is measured from it).

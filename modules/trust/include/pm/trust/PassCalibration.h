@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/core/TrustCalibration.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/model/PassView.h"
@@ -78,15 +78,16 @@ struct CalibrationParams
 core::TrustCalibration calibrateTrust(const std::vector<PassTry> &tries, const tracker::ConfidenceModel &shipped, const CalibrationParams &p);
 
 /*!
-  The whole calibration of \e pass seen by \e rig (the model built with \e params, what it measured of
-  the views in \e measured; tried by a tracker with \e trackerParams): the held-out models (two at a
-  time on two cores), the tries, calibrateTrust().
+  The whole calibration of \e pass seen by \e rig (the model built with \e params from the pass's
+  pairs, model::passRig(); what it measured of the views in \e measured; tried by a tracker on \e rig
+  with \e trackerParams; a rig of three cameras or more: on its first two, the cameras a pass keeps):
+  the held-out models (two at a time on two cores), the tries, calibrateTrust().
   \e onStep (when given) is called on the calling thread after each held-out model and each held-out
   view's tries: calibrationSteps() times. A group whose model cannot be built is skipped; with none built,
   or no right try, the result is not measured (the shipped confidence stays). \e why (when given)
   receives the reason then.
 */
-core::TrustCalibration calibrateFromPass(const core::StereoRig &rig, const std::vector<model::PassView> &pass,
+core::TrustCalibration calibrateFromPass(const core::CameraRig &rig, const std::vector<model::PassView> &pass,
                                          const model::AllAroundParams &params, const model::PassMeasurements &measured,
                                          const tracker::TrackerParams &trackerParams = tracker::TrackerParams(),
                                          const CalibrationParams &p = CalibrationParams(), const std::function<void()> &onStep = nullptr,

@@ -1,0 +1,34 @@
+#include "pm/core/CameraImages.h"
+
+#include <string>
+
+#include "pm/core/Error.h"
+
+namespace pm::core {
+
+CameraImages CameraImages::of(const std::vector<vpImage<vpRGBa>> &images)
+{
+  if (images.empty() || images.size() > CameraRig::kMaxCameras)
+    throw Error("a frame holds 1 to " + std::to_string(CameraRig::kMaxCameras) + " images (one per camera), not " +
+                std::to_string(images.size()));
+  CameraImages c;
+  for (const vpImage<vpRGBa> &im : images)
+    c.m_images[c.m_count++] = &im;
+  return c;
+}
+
+void CameraImages::checkFor(const CameraRig &rig, const char *who) const
+{
+  if (m_count != rig.size())
+    throw Error(std::string(who) + ": " + std::to_string(m_count) + (m_count == 1 ? " image" : " images") + " for a rig of " +
+                std::to_string(rig.size()) + (rig.size() == 1 ? " camera" : " cameras") + " (one image per camera)");
+  for (std::size_t k = 0; k < m_count; ++k) {
+    const PinholeCamera &c = rig[k];
+    const vpImage<vpRGBa> &im = *m_images[k];
+    if (im.getWidth() != c.width || im.getHeight() != c.height)
+      throw Error(std::string(who) + ": camera " + std::to_string(k) + "'s image is " + std::to_string(im.getWidth()) + "x" +
+                  std::to_string(im.getHeight()) + " but the camera is " + std::to_string(c.width) + "x" + std::to_string(c.height));
+  }
+}
+
+} // namespace pm::core
