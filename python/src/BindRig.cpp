@@ -51,6 +51,34 @@ void bindRig(py::module_ &m)
         return std::string(s);
       });
 
+  using pm::core::CameraRig;
+  py::class_<CameraRig>(m, "CameraRig",
+                        "The cameras on the robot's hand, one to four (pm::core::CameraRig): camera k is rig[k] (a stereo rig: 0 left, 1 "
+                        "right); load_camera_rig() reads one, and a StereoRig is taken wherever a CameraRig is.")
+      .def(py::init<const StereoRig &>(), py::arg("stereo"), "The stereo rig's two cameras: 0 left, 1 right.")
+      .def(py::init([](const std::vector<PinholeCamera> &cams) {
+             CameraRig r(cams);
+             r.validate();
+             return r;
+           }),
+           py::arg("cameras"), "The rig of these cameras, in this order (one to four). Raises Error for none or more than four.")
+      .def("__len__", &CameraRig::size)
+      .def(
+          "__getitem__",
+          [](const CameraRig &r, std::size_t k) {
+            if (k >= r.size())
+              throw py::index_error("camera " + std::to_string(k) + " of a rig of " + std::to_string(r.size()));
+            return r[k];
+          },
+          py::arg("k"))
+      .def_property_readonly("cameras", [](const CameraRig &r) { return r.cameras; }, "the cameras, camera k at [k]")
+      .def("__repr__", [](const CameraRig &r) {
+        return "<CameraRig of " + std::to_string(r.size()) + (r.size() == 1 ? " camera>" : " cameras>");
+      });
+  py::implicitly_convertible<StereoRig, CameraRig>();
+
+  m.def("load_camera_rig", &pm::io::loadCameraRig, py::arg("path"),
+        "Reads a rig file of one to four cameras (data/rig/pa10_mono.json: one). Raises Error naming the file and what is wrong.");
   m.def("load_rig", &pm::io::loadRig, py::arg("path"),
         "Reads a stereo rig file (rig.json, as pm-calibrate-rig writes it). Raises Error naming the file and what is wrong.");
   m.def(

@@ -54,7 +54,7 @@ void bindTracker(py::module_ &m)
                       "    tracker = Tracker(rig, model)\n"
                       "    result = tracker.track(left, right)   # uint8, H x W x 3 BGR or H x W x 4 RGBA\n"
                       "    if result.trusted: act_on(result.pose)")
-      .def(py::init([](const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, std::optional<long> seed,
+      .def(py::init([](const pm::core::CameraRig &rig, const pm::core::PhotoModel &model, const std::string &config, std::optional<long> seed,
                        std::optional<long> budget, std::optional<py::dict> params) {
              if ((seed && *seed < 0) || (budget && *budget < 0))
                throw py::value_error(seed && *seed < 0 ? "seed: a number >= 0 is needed" : "budget_evaluations: a number >= 0 is needed");
@@ -74,7 +74,10 @@ void bindTracker(py::module_ &m)
       .def(
           "init_from_pose", [](Tracker &t, const py::array_t<double, py::array::c_style | py::array::forcecast> &hMo) { t.tracker().initFromPose(toMatrix(hMo, "hMo")); },
           py::arg("hMo"), "Starts from a known pose (4 x 4, metres; state: tracking).")
-      .def("track", &Tracker::track, py::arg("left"), py::arg("right"),
+      .def("track", py::overload_cast<const std::vector<py::array> &>(&Tracker::track), py::arg("images"),
+           "One frame of a rig of any number of cameras: a list of one image per camera, in the rig's order, each as track(left, "
+           "right) takes them. Raises Error for another number of images.")
+      .def("track", py::overload_cast<const py::array &, const py::array &>(&Tracker::track), py::arg("left"), py::arg("right"),
            "One stereo frame: uint8 C-contiguous arrays, H x W x 3 BGR (OpenCV) or H x W x 4 RGBA (ViSP; read where it lies, no "
            "copy), of the rig's image size. The GIL is released while it runs. Returns a TrackResult. Raises TypeError for "
            "another dtype, ValueError for another shape or a non-contiguous array, Error for another image size.")
@@ -90,10 +93,12 @@ void bindTracker(py::module_ &m)
       .def_property_readonly(
           "_pixels_read", // a test hook (the tests read where track() read the pixels), not the API
           [](const Tracker &t) {
-            const auto a = t.pixelsRead();
-            return py::make_tuple(reinterpret_cast<std::uintptr_t>(a[0]), reinterpret_cast<std::uintptr_t>(a[1]));
+            py::tuple out(t.pixelsRead().size());
+            for (std::size_t k = 0; k < t.pixelsRead().size(); ++k)
+              out[k] = reinterpret_cast<std::uintptr_t>(t.pixelsRead()[k]);
+            return out;
           },
-          "the addresses of the pixels the last track() read, left and right: an RGBA array's own buffer (no copy), or the "
+          "the addresses of the pixels the last track() read, camera by camera: an RGBA array's own buffer (no copy), or the "
           "one buffer a BGR array is converted into (kept from frame to frame)")
       .def_property_readonly("has_precise_stage", [](const Tracker &t) { return t.tracker().hasPreciseStage(); },
                              "the precise stage runs (a model with outlines): the results carry a sigma");

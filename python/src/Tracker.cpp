@@ -1,6 +1,7 @@
 #include "Tracker.h"
 
 #include "Arrays.h"
+#include "pm/core/Error.h"
 #include "pm/tracker/TrackerConfigFile.h"
 
 namespace pmpy {
@@ -21,19 +22,33 @@ pm::tracker::TrackerParams paramsOf(const std::string &config, const std::string
 
 } // namespace
 
-Tracker::Tracker(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, const std::string &keys,
+Tracker::Tracker(const pm::core::CameraRig &rig, const pm::core::PhotoModel &model, const std::string &config, const std::string &keys,
                  long seed, long budgetEvaluations)
     : m_tracker(rig, model, paramsOf(config, keys, seed, budgetEvaluations))
 {
 }
 
-pm::tracker::TrackResult Tracker::track(const pybind11::array &left, const pybind11::array &right)
+pm::tracker::TrackResult Tracker::track(const std::vector<pybind11::array> &images)
 {
-  const PixelLayout l = checkImage(left, "left image"), r = checkImage(right, "right image");
+  const std::size_t n = images.size();
+  if (n != static_cast<std::size_t>(m_tracker.cameraCount()))
+    throw pm::core::Error("tracker: " + std::to_string(n) + (n == 1 ? " image" : " images") + " for a rig of " +
+                          std::to_string(m_tracker.cameraCount()) + (m_tracker.cameraCount() == 1 ? " camera" : " cameras") +
+                          " (one image per camera)");
+  const char *names[kMax] = {"image 0", "image 1", "image 2", "image 3"};
+  const char *stereoNames[2] = {"left image", "right image"};
+  std::array<PixelLayout, kMax> layout{};
+  for (std::size_t k = 0; k < n; ++k)
+    layout[k] = checkImage(images[k], n == 2 ? stereoNames[k] : names[k]);
   pybind11::gil_scoped_release free; // the caller's arrays stay alive: they are this call's arguments
-  const vpImage<vpRGBa> &L = imageOf(left, l, m_view[0], m_converted[0]), &R = imageOf(right, r, m_view[1], m_converted[1]);
-  m_read = {L.bitmap, R.bitmap};
-  return m_tracker.track(L, R);
+  pm::core::CameraImages frame;
+  for (std::size_t k = 0; k < n; ++k) {
+    const vpImage<vpRGBa> &I = imageOf(images[k], layout[k], m_view[k], m_converted[k]);
+    m_read[k] = I.bitmap;
+    frame.add(I);
+  }
+  m_count = n;
+  return m_tracker.track(frame);
 }
 
 } // namespace pmpy

@@ -28,21 +28,25 @@ public:
     not negative) replace RM-GA's seed and the frame's evaluation budget. Throws pm::core::Error as
     PhotoModelTracker, loadTrackerConfig() and trackerParamsFromJson() do.
   */
-  Tracker(const pm::core::StereoRig &rig, const pm::core::PhotoModel &model, const std::string &config, const std::string &keys,
+  Tracker(const pm::core::CameraRig &rig, const pm::core::PhotoModel &model, const std::string &config, const std::string &keys,
           long seed, long budgetEvaluations);
 
-  //! One frame: the two images as NumPy arrays (checked; see Arrays.h), the GIL released while it runs.
-  pm::tracker::TrackResult track(const pybind11::array &left, const pybind11::array &right);
-  //! The pixels the last track() read, left and right (the RGBA arrays' own buffers, or the BGR arrays' conversions).
-  std::array<const void *, 2> pixelsRead() const { return m_read; }
+  //! One frame: one image per camera as NumPy arrays (checked; see Arrays.h), the GIL released while it runs.
+  pm::tracker::TrackResult track(const std::vector<pybind11::array> &images);
+  //! A stereo rig's frame: track({left, right}).
+  pm::tracker::TrackResult track(const pybind11::array &left, const pybind11::array &right) { return track(std::vector<pybind11::array>{left, right}); }
+  //! The pixels the last track() read, camera by camera (the RGBA arrays' own buffers, or the BGR arrays' conversions).
+  std::vector<const void *> pixelsRead() const { return std::vector<const void *>(m_read.begin(), m_read.begin() + static_cast<std::ptrdiff_t>(m_count)); }
   pm::tracker::PhotoModelTracker &tracker() { return m_tracker; }
   const pm::tracker::PhotoModelTracker &tracker() const { return m_tracker; }
 
 private:
   pm::tracker::PhotoModelTracker m_tracker;
-  vpImage<vpRGBa> m_view[2];      //!< an RGBA array's own buffer, seen as an image
-  vpImage<vpRGBa> m_converted[2]; //!< a BGR array, converted once per frame
-  std::array<const void *, 2> m_read{}; //!< pixelsRead()
+  static constexpr std::size_t kMax = pm::core::CameraRig::kMaxCameras;
+  vpImage<vpRGBa> m_view[kMax];      //!< an RGBA array's own buffer, seen as an image
+  vpImage<vpRGBa> m_converted[kMax]; //!< a BGR array, converted once per frame
+  std::array<const void *, kMax> m_read{}; //!< pixelsRead()
+  std::size_t m_count = 0;           //!< the images of the last track()
 };
 
 } // namespace pmpy

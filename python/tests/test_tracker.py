@@ -155,3 +155,29 @@ def test_the_hand_motion_moves_the_pose_and_keeps_the_lock(rig, model):
     assert r.state == pm.TrackState.TRACKING and r.trusted
     # From frame 10 on, the estimate moved as the hand did: 29 steps of 2 mm, within 2 mm.
     np.testing.assert_allclose(poses[39][:3, 3] - poses[10][:3, 3], [-0.058, 0, 0], atol=0.002)
+
+
+def test_a_list_of_images_is_the_pair_and_one_camera_tracks_its_own_image(rig, model, frames):
+    # The list form gives the pair's poses exactly; a one-camera rig (the pair's left camera) tracks the left images
+    # alone and ends on the pair's pose, not on another (its first lock may be wrong, as a pair's may: the verifier
+    # moves it; a wrong pose is 20 mm or 5 deg off, its accuracy is the main job's to measure); a wrong number of
+    # images is a clear error, nothing tracked.
+    a, b = pm.Tracker(rig, model, seed=5), pm.Tracker(pm.CameraRig(rig), model, seed=5)
+    pair = []
+    for left, right in frames:
+        pair.append(a.track(left, right))
+        np.testing.assert_array_equal(pair[-1].pose, b.track([left, right]).pose)
+    mono = pm.load_camera_rig(pm.data_path("rig/pa10_mono.json"))
+    assert len(mono) == 1 and mono[0].hMc.tolist() == rig.left.hMc.tolist()
+    one = pm.Tracker(mono, model, seed=5)
+    tracked = [one.track([left]) for left, _ in frames]
+    assert one._pixels_read == (frames[-1][0].ctypes.data,)  # the array's own buffer
+    for r, p in zip(tracked[-3:], pair[-3:]):
+        assert r.state == p.state == pm.TrackState.TRACKING
+        d = np.linalg.inv(r.pose) @ p.pose
+        assert np.linalg.norm(d[:3, 3]) < 0.005  # within 5 mm of the pair's pose ...
+        assert np.degrees(np.arccos(np.clip((np.trace(d[:3, :3]) - 1) / 2, -1, 1))) < 2.5  # ... and 2.5 deg
+    with pytest.raises(pm.Error, match="2 images for a rig of 1 camera"):
+        one.track(frames[0][0], frames[0][1])
+    with pytest.raises(pm.Error, match="1 image for a rig of 2 cameras"):
+        a.track([frames[0][0]])

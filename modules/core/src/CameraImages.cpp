@@ -13,8 +13,16 @@ CameraImages CameraImages::of(const std::vector<vpImage<vpRGBa>> &images)
                 std::to_string(images.size()));
   CameraImages c;
   for (const vpImage<vpRGBa> &im : images)
-    c.m_images[c.m_count++] = &im;
+    c.add(im);
   return c;
+}
+
+CameraImages &CameraImages::add(const vpImage<vpRGBa> &image)
+{
+  if (m_count == CameraRig::kMaxCameras)
+    throw Error("a frame holds at most " + std::to_string(CameraRig::kMaxCameras) + " images (one per camera)");
+  m_images[m_count++] = &image;
+  return *this;
 }
 
 void CameraImages::checkFor(const CameraRig &rig, const char *who) const

@@ -5,7 +5,7 @@ and the simulated lab (stereo pairs of a toy at a pose, the servo loop frame by 
 Poses are 4 x 4 NumPy arrays in metres (hMo: the model in the hand frame). Errors raise Error with the one-line
 message the programs print after 'error: '. docs/tutorial-python.md walks through it.
 """
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -68,6 +68,25 @@ class StereoRig:
     def save(self, path: str, xml_name: str = "", description: str = "") -> None:
         """Writes the rig JSON and its intrinsics XML (xml_name, relative to the JSON's folder; default: the JSON's
         stem + '.xml'). Nothing is left half-written."""
+
+class CameraRig:
+    """The cameras on the robot's hand, one to four (pm::core::CameraRig): camera k is rig[k] (a stereo rig: 0 left,
+    1 right); load_camera_rig() reads one, and a StereoRig is taken wherever a CameraRig is."""
+    @overload
+    def __init__(self, stereo: StereoRig) -> None:
+        """The stereo rig's two cameras: 0 left, 1 right."""
+    @overload
+    def __init__(self, cameras: Sequence[Camera]) -> None:
+        """The rig of these cameras, in this order (one to four). Raises Error for none or more than four."""
+    def __len__(self) -> int: ...
+    def __getitem__(self, k: int) -> Camera: ...
+    @property
+    def cameras(self) -> List[Camera]:
+        """The cameras, camera k at [k]."""
+
+def load_camera_rig(path: str) -> CameraRig:
+    """Reads a rig file of one to four cameras (data/rig/pa10_mono.json: one). Raises Error naming the file and what is
+    wrong."""
 
 def load_rig(path: str) -> StereoRig:
     """Reads a stereo rig file (rig.json, as pm-calibrate-rig writes it). Raises Error naming the file and what is wrong."""
@@ -218,7 +237,7 @@ class Tracker:
         result = tracker.track(left, right)   # uint8, H x W x 3 BGR or H x W x 4 RGBA
         if result.trusted: act_on(result.pose)
     """
-    def __init__(self, rig: StereoRig, model: PhotoModel, config: str = "", seed: Optional[int] = None,
+    def __init__(self, rig: Union[CameraRig, StereoRig], model: PhotoModel, config: str = "", seed: Optional[int] = None,
                  budget_evaluations: Optional[int] = None, params: Optional[Dict[str, Any]] = None) -> None:
         """config: a tracker configuration file (pm-track --config's; empty: the defaults every program uses); params:
         its keys as a dict, over the file's or the defaults (e.g. {'search': {'budget_evaluations': 400}}: the keys of
@@ -229,6 +248,11 @@ class Tracker:
         """Searches from scratch (state: searching)."""
     def init_from_pose(self, hMo: Pose) -> None:
         """Starts from a known pose (4 x 4, metres; state: tracking)."""
+    @overload
+    def track(self, images: Sequence[Image]) -> TrackResult:
+        """One frame of a rig of any number of cameras: a list of one image per camera, in the rig's order, each as
+        track(left, right) takes them. Raises Error for another number of images."""
+    @overload
     def track(self, left: Image, right: Image) -> TrackResult:
         """One stereo frame: uint8 C-contiguous arrays, H x W x 3 BGR (OpenCV) or H x W x 4 RGBA (ViSP; read where it
         lies, no copy), of the rig's image size. The GIL is released while it runs. Raises TypeError for another dtype,

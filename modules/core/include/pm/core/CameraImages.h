@@ -41,6 +41,8 @@ public:
     CameraRig::kMaxCameras.
   */
   static CameraImages of(const std::vector<vpImage<vpRGBa>> &images);
+  //! \e image as the next camera's. Throws pm::core::Error past CameraRig::kMaxCameras.
+  CameraImages &add(const vpImage<vpRGBa> &image);
 
   //! The number of images.
   std::size_t size() const { return m_count; }
