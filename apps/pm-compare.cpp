@@ -76,7 +76,7 @@ void addOptions(CLI::App &app, Options &o)
   app.add_option("--trackers", cp.trackers, "which trackers")->delimiter(',')->check(CLI::IsMember(pm::compare::comparedTrackerKeys()));
   app.add_option("--steps", cp.steps, "table2: only the first N steps (0: all 20)")->check(CLI::Range(0, 1000));
   app.add_option("--trajectory", cp.trajectoryPath, "table2: the waypoints (step,x,y,z,e1,e2,e3)");
-  app.add_option("--rig", o.rigPath, "stereo rig file");
+  app.add_option("--rig", o.rigPath, "rig file: one camera or more (data/rig/pa10_mono.json: one; ViSP's MBT then runs in its monocular case)");
   app.add_option("--mbt-config", cp.mbtXml, "vpMbGenericTracker's XML settings (moving edges, KLT, visibility)");
   app.add_option("--mbt-mesh-cell-mm", cp.mbtMeshCellMm, "ViSP's MBT trackers' CAD model: the all-around model's surface "
                  "decimated to cells of this size (mm); 0: the flat model's outline, one face")
@@ -211,7 +211,7 @@ int main(int argc, char **argv)
     o.cp.tracker = trackerOptions.resolve();
     if (o.cp.trackers.empty())
       throw CLI::ValidationError("--trackers", "at least one tracker");
-    const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
+    const pm::core::CameraRig rig = pm::io::loadCameraRig(o.rigPath);
     pm::compare::Comparison comparison(rig, o.cp);
     pm::io::StagedFiles files(o.out);
     const pm::compare::ComparisonResult r = compareAll(o, comparison, files);

@@ -22,6 +22,7 @@
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/lab/TrustCache.h"
 #include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/PassRig.h"
 #include "pm/robot/ArmCatalog.h"
 #include "pm/robot/ArmPassPlan.h"
 #include "pm/robot/SteppedArm.h"
@@ -105,7 +106,8 @@ void addPhotoModelOptions(CLI::App &app, Options &o)
       ->check(CLI::PositiveNumber);
   auto *optXml = app.add_option("--intrinsics", o.intrinsics, "intrinsics file of the photo camera (photos mode): ViSP XML, OpenCV YAML/XML or ROS camera_info; its lens distortion is corrected");
   app.add_option("--camera-name", o.cameraName, "camera name in --intrinsics")->needs(optXml);
-  app.add_option("--rig", o.rigPath, "stereo rig; its left camera takes the photos when --intrinsics is not given");
+  app.add_option("--rig", o.rigPath, "rig file: a stereo rig, or for --all-around and --views one camera or more (one camera: each view's "
+                 "second image after a side step of the hand, docs/camera-rigs.md); its first camera takes the photos when --intrinsics is not given");
   pm::app::addModelOptions(app, o.mp);
   pm::app::addSceneOptions(app, o.sp);
   app.add_flag("--quiet", o.quiet, "print nothing on success");
@@ -142,7 +144,7 @@ void addAllAroundOptions(CLI::App &app, Options &o, const std::vector<CLI::Optio
 }
 
 //! The model's trust calibrated from its own pass (pm::trust, through the test suite's cache when PM_LAB_CACHE is set); returns the tries as a table (trust_tries.csv).
-std::string calibrate(const Options &o, const pm::core::StereoRig &rig, const std::vector<pm::model::PassView> &pass, pm::model::AllAroundBuild &b,
+std::string calibrate(const Options &o, const pm::core::CameraRig &rig, const std::vector<pm::model::PassView> &pass, pm::model::AllAroundBuild &b,
                       const pm::model::PassMeasurements &measured)
 {
   if (o.noTrustCalibration)
@@ -167,13 +169,14 @@ std::vector<std::pair<std::string, std::string>> moreFiles(const std::string &tr
 //! The all-around model from a views folder, or from the lab's pass (then checked against the toy).
 int makeAllAround(const Options &o)
 {
-  const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
+  const pm::core::CameraRig cameras = pm::io::loadCameraRig(o.rigPath); // the tracker's rig: the trust is calibrated through it
+  const pm::core::StereoRig rig = pm::model::passRig(cameras);          // the pass's pairs (one camera: after the side step)
   if (!o.viewsDir.empty()) {
     const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(o.viewsDir, rig, o.ap.carving.minViews, o.ap.backdropHueDeg < 0);
     const std::string source = "views " + o.viewsDir;
     pm::model::PassMeasurements measured;
     pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, o.ap, measured);
-    const std::string tries = calibrate(o, rig, pass, b, measured);
+    const std::string tries = calibrate(o, cameras, pass, b, measured);
     pm::report::writeAllAroundModel(b, pass, rig, o.out, source, false, "", moreFiles(tries));
     if (!o.quiet)
       std::cout << pm::report::describeAllAroundModel(b, source, o.out, false) << "  " << pm::trust::describe(b.model.trust) << "\n" << std::flush;
@@ -190,7 +193,7 @@ int makeAllAround(const Options &o)
       std::cout << "pass: " << pm::robot::describeLeftOut(d, arm.model().title()) << "\n";
   pm::model::PassMeasurements measured;
   pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, lp.views, o.ap, measured);
-  const std::string tries = calibrate(o, rig, lp.views, b, measured);
+  const std::string tries = calibrate(o, cameras, lp.views, b, measured);
   const pm::lab::SurfaceTruth truth = pm::lab::checkSurface(scene, b, lp.fMo.inverse() * b.fMm, rig.left.cam);
   const std::string silhouettes = pm::lab::checkSilhouettes(scene, lp.views, lp.fMo, b, rig).text;
   pm::report::writeAllAroundModel(b, lp.views, rig, o.out, source, true, pm::lab::surfaceTruthJson(truth), moreFiles(tries));

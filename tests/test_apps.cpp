@@ -401,6 +401,11 @@ TEST(Reproducibility, TheClosedLoopOnTheViper850GivesTheSameCsvTimingsAside)
   expectReproducible("pm-servo", "--robot viper850 " + kServoArgs);
 }
 
+TEST(Reproducibility, TheClosedLoopWithOneCameraGivesTheSameCsvTimingsAside)
+{
+  expectReproducible("pm-servo", "--rig " + pm::test::dataPath("rig/pa10_mono.json") + " " + kServoArgs);
+}
+
 TEST(Reproducibility, TheTrackerGivesTheSameCsvTimingsAside)
 {
   expectReproducible("pm-track", "--steps 2 --hold-s 0.5 --move-s 0.5 --budget-evals 800 --ga-seed 7 --pass-views 8 --no-trust-calibration --quiet --out ");

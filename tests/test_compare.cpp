@@ -341,8 +341,10 @@ TEST(CadMesh, TheToysOwnMeshCutAlongItsOutlineFacesOutAndCoversWhatTheRendererDr
 TEST(ComparedTrackers, ViSPsTrackersStartedAtTheTruthStayNearItOnSlowMotion)
 {
   // The .cao model and the template are right if ViSP's trackers, started at the true pose,
-  // follow a slow move: KLT (stereo) and the SSD template within 10 mm and 3 deg.
+  // follow a slow move: KLT (stereo, and in its monocular case on the left camera alone) and the
+  // SSD template within 10 mm and 3 deg.
   const pm::core::StereoRig rig = pm::io::loadRig(pm::test::dataPath("rig/pa10_stereo.json"));
+  const pm::core::CameraRig mono = pm::io::loadCameraRig(pm::test::dataPath("rig/pa10_mono.json"));
   pm::sim::Scene scene(pm::sim::makeTarget("C12"));
   const auto sm = pm::sim::makeSimulatedPhotoModel(scene, rig.left.cam, rig.left.width, rig.left.height, 500);
   const auto outline = pm::compare::outlinePolygon(sm.build.region, sm.build.model);
@@ -351,13 +353,16 @@ TEST(ComparedTrackers, ViSPsTrackersStartedAtTheTruthStayNearItOnSlowMotion)
   std::vector<std::unique_ptr<pm::compare::ComparedTracker>> ts;
   ts.push_back(pm::compare::makeMbtTracker(rig, pm::compare::MbtFeatures::Klt, d.file("model.cao"), pm::test::dataPath("compare/mbt.xml")));
   ts.push_back(pm::compare::makeTemplateTracker(rig, pm::compare::TemplateCost::Ssd, outline));
+  ts.push_back(pm::compare::makeMbtTracker(mono, pm::compare::MbtFeatures::Klt, d.file("model.cao"), pm::test::dataPath("compare/mbt.xml")));
   for (int k = 0; k < 15; ++k) {
     const vpHomogeneousMatrix hMo(0.002 * k, 0.001 * k, 0.5, 0, 0, 0.004 * k);
     const auto im = scene.renderStereo(rig, hMo, static_cast<std::uint64_t>(k));
-    for (auto &t : ts) {
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      auto &t = ts[i];
+      const pm::core::CameraImages frame = i == 2 ? pm::core::CameraImages(im.left) : pm::core::CameraImages(im.left, im.right);
       if (k == 0)
-        t->start(im.left, im.right, hMo * sm.oMm);
-      const pm::compare::Estimate e = t->track(im.left, im.right);
+        t->start(frame, hMo * sm.oMm);
+      const pm::compare::Estimate e = t->track(frame);
       const FrameScore s = pm::compare::scoreFrame(e.hMm, hMo * sm.oMm);
       EXPECT_TRUE(e.valid) << t->name() << " frame " << k;
       EXPECT_LT(s.translationMm, 10.0) << t->name() << " frame " << k;

@@ -37,8 +37,8 @@ void exampleComparedTracker(const pm::core::StereoRig &rig, const pm::core::Phot
                             const vpHomogeneousMatrix &hMmTrue0)
 {
   std::unique_ptr<pm::compare::ComparedTracker> t = pm::compare::makeOurTracker(rig, model, pm::tracker::TrackerParams());
-  t->start(left0, right0, hMmTrue0); // hMmTrue0 is ignored here: ours needs no initial pose
-  const pm::compare::Estimate e = t->track(left0, right0);
+  t->start({left0, right0}, hMmTrue0); // one image per camera; hMmTrue0 is ignored here: ours needs no initial pose
+  const pm::compare::Estimate e = t->track({left0, right0});
 }
 
 // Comparison.h
@@ -115,8 +115,8 @@ void exampleMetrics(const pm::core::StereoRig &rig, pm::sim::Scene &scene, const
     const pm::sim::StereoImages im = pm::compare::renderScenarioFrame(scene, rig, s, k);
     const vpHomogeneousMatrix truth = s.frames[k].hMo * oMm; // hMm: the model in the hand frame
     if (k == 0)
-      tracker->start(im.left, im.right, truth);
-    const pm::compare::Estimate e = tracker->track(im.left, im.right);
+      tracker->start({im.left, im.right}, truth);
+    const pm::compare::Estimate e = tracker->track({im.left, im.right});
     pm::compare::FrameScore f = pm::compare::scoreFrame(e.hMm, truth);
     f.valid = e.valid;
     scores.push_back(f);

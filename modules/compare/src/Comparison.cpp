@@ -88,7 +88,7 @@ struct Comparison::Setup
   }
 };
 
-Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &params) : m_rig(rig), m_p(params)
+Comparison::Comparison(const core::CameraRig &rig, const ComparisonParams &params) : m_rig(rig), m_p(params)
 {
   if (m_p.trackers.empty())
     throw core::Error("compare: at least one tracker");
@@ -100,10 +100,10 @@ Comparison::Comparison(const core::StereoRig &rig, const ComparisonParams &param
   prepareForScenarios(m_p.scenarios, m_p.scene, m_p.tracker.search.space);
   m_s = std::make_unique<Setup>(sim::makeTarget(m_p.target), m_p.scene);
   m_s->scenarios = makeScenarios(m_p.scenarios, m_p.trajectoryPath, m_p.steps);
-  m_s->flat = sim::makeSimulatedPhotoModel(m_s->scene, rig.left.cam, rig.left.width, rig.left.height, m_p.distanceMm);
+  m_s->flat = sim::makeSimulatedPhotoModel(m_s->scene, rig[0].cam, rig[0].width, rig[0].height, m_p.distanceMm);
   m_s->outline = outlinePolygon(m_s->flat.build.region, m_s->flat.build.model, m_p.outlineTolPx);
   if (has(m_p.trackers, "ours-3d"))
-    m_s->stereo = sim::makeSimulatedStereoPhotoModel(m_s->scene, rig, m_p.distanceMm, model::StereoModelParams(), m_p.viewTurnDeg);
+    m_s->stereo = sim::makeSimulatedStereoPhotoModel(m_s->scene, rig.stereo(), m_p.distanceMm, model::StereoModelParams(), m_p.viewTurnDeg);
   bool mbt = false;
   for (const std::string &k : m_p.trackers)
     mbt = mbt || k.rfind("mbt", 0) == 0;
@@ -149,7 +149,7 @@ std::size_t Comparison::totalFrames() const
 
 ComparisonResult Comparison::run(const std::string &caoPath, std::ostream &csv, const std::function<void()> &onFrame)
 {
-  const core::StereoRig &rig = m_rig;
+  const core::CameraRig &rig = m_rig;
   Setup &s = *m_s;
   auto makeTracker = [&](const std::string &key) -> std::unique_ptr<ComparedTracker> {
     if (key == "ours")
@@ -199,26 +199,27 @@ ComparisonResult Comparison::run(const std::string &caoPath, std::ostream &csv, 
     }
     for (std::size_t k = 0; k < seq.frames.size(); ++k) {
       const ScenarioFrame &f = seq.frames[k];
-      const sim::StereoImages im = renderScenarioFrame(s.scene, rig, seq, k);
+      const std::vector<vpImage<vpRGBa>> views = renderScenarioViews(s.scene, rig, seq, k);
+      const core::CameraImages im = core::CameraImages::of(views);
       const bool snap = k + 1 == seq.frames.size() / 2 || k + 1 == seq.frames.size();
       vpImage<vpRGBa> shot;
       if (snap) {
-        shot = im.left;
-        drawOutline(shot, s.outline, f.hMo * s.flat.oMm, rig.left, vpRGBa(255, 255, 255));
+        shot = im[0];
+        drawOutline(shot, s.outline, f.hMo * s.flat.oMm, rig[0], vpRGBa(255, 255, 255));
       }
       for (std::size_t ti = 0; ti < nT; ++ti) {
         const vpHomogeneousMatrix truth = f.hMo * s.ownFrame(r.keys[ti]); // each tracker in its own model frame
         if (k == 0)
-          ts[ti]->start(im.left, im.right, truth);
+          ts[ti]->start(im, truth);
         const auto t0 = std::chrono::steady_clock::now();
-        const Estimate e = ts[ti]->track(im.left, im.right);
+        const Estimate e = ts[ti]->track(im);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         FrameScore sc = scoreFrame(e.hMm, truth);
         sc.ms = ms;
         sc.valid = e.valid;
         r.scores[si][ti].push_back(sc);
         if (snap) // the outline is in the flat model's frame: an estimate of another model's frame is moved to it
-          drawOutline(shot, s.outline, e.hMm * s.ownFrame(r.keys[ti]).inverse() * s.flat.oMm, rig.left, trackerColor(ti));
+          drawOutline(shot, s.outline, e.hMm * s.ownFrame(r.keys[ti]).inverse() * s.flat.oMm, rig[0], trackerColor(ti));
         csv << seq.name << "," << k << "," << static_cast<double>(k) / seq.fps << "," << r.keys[ti] << "," << sc.translationMm << ","
             << sc.rotationDeg << "," << sc.ms << "," << (sc.valid ? 1 : 0) << "\n";
       }

@@ -206,6 +206,15 @@ void prepareForScenarios(const std::vector<std::string> &names, sim::SceneParams
 
 sim::StereoImages renderScenarioFrame(sim::Scene &scene, const core::StereoRig &rig, const Scenario &s, std::size_t k)
 {
+  std::vector<vpImage<vpRGBa>> im = renderScenarioViews(scene, rig, s, k);
+  sim::StereoImages pair;
+  pair.left = std::move(im[0]);
+  pair.right = std::move(im[1]);
+  return pair;
+}
+
+std::vector<vpImage<vpRGBa>> renderScenarioViews(sim::Scene &scene, const core::CameraRig &rig, const Scenario &s, std::size_t k)
+{
   const ScenarioFrame &f = s.frames.at(k);
   scene.params().exposure = f.exposure;
   scene.params().lightDirHand[0] = f.lightX;
@@ -216,11 +225,12 @@ sim::StereoImages renderScenarioFrame(sim::Scene &scene, const core::StereoRig &
     throw core::Error("scenario " + s.name + ": clutter in a scene made without it (sim::SceneParams::clutter)");
   scene.params().clutter = f.clutter;
   if (!f.blank) // a still backdrop stays where it stood at the first frame
-    return scene.renderStereo(rig, f.hMo, static_cast<std::uint64_t>(k),
-                              f.stillBackdrop ? f.hMo.inverse() * s.frames.front().hMo : vpHomogeneousMatrix());
-  sim::StereoImages im;
-  im.left.resize(rig.left.height, rig.left.width, vpRGBa(0, 0, 0, 255));
-  im.right.resize(rig.right.height, rig.right.width, vpRGBa(0, 0, 0, 255));
+    return scene.renderRig(rig, f.hMo, static_cast<std::uint64_t>(k),
+                           f.stillBackdrop ? f.hMo.inverse() * s.frames.front().hMo : vpHomogeneousMatrix());
+  std::vector<vpImage<vpRGBa>> im;
+  im.reserve(rig.size());
+  for (const core::PinholeCamera &c : rig.cameras)
+    im.emplace_back(c.height, c.width, vpRGBa(0, 0, 0, 255));
   return im;
 }
 

@@ -45,16 +45,16 @@ private:
 class OurTracker : public ComparedTracker
 {
 public:
-  OurTracker(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params, std::string name)
+  OurTracker(const core::CameraRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params, std::string name)
     : m_tracker(rig, model, params), m_name(std::move(name))
   {
   }
   std::string name() const override { return m_name; }
   bool needsInitialPose() const override { return false; }
-  void start(const vpImage<vpRGBa> &, const vpImage<vpRGBa> &, const vpHomogeneousMatrix &) override { m_tracker.initialize(); }
-  Estimate track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) override
+  void start(const core::CameraImages &, const vpHomogeneousMatrix &) override { m_tracker.initialize(); }
+  Estimate track(const core::CameraImages &images) override
   {
-    const tracker::TrackResult r = m_tracker.track(left, right);
+    const tracker::TrackResult r = m_tracker.track(images);
     return {r.hMo, r.state == tracker::TrackState::Tracking};
   }
 
@@ -67,20 +67,43 @@ private:
 class MbtTracker : public ComparedTracker
 {
 public:
-  MbtTracker(const core::StereoRig &rig, MbtFeatures features, const std::string &caoPath, const std::string &xmlPath)
-    : m_rig(rig), m_features(features)
+  MbtTracker(const core::CameraRig &rig, MbtFeatures features, const std::string &caoPath, const std::string &xmlPath)
+    : m_rig(rig), m_features(features), m_gray(rig.size())
   {
     const int type = features == MbtFeatures::Edge  ? vpMbGenericTracker::EDGE_TRACKER
                      : features == MbtFeatures::Klt ? vpMbGenericTracker::KLT_TRACKER
                                                     : (vpMbGenericTracker::EDGE_TRACKER | vpMbGenericTracker::KLT_TRACKER);
-    m_mbt = std::make_unique<vpMbGenericTracker>(std::vector<std::string>{"Camera1", "Camera2"}, std::vector<int>{type, type});
+    // ViSP's cameras "Camera1" .. "CameraN", the first the reference: one camera is MBT's native monocular case.
+    std::vector<std::string> names;
+    std::map<std::string, std::string> xml, cao;
+    std::map<std::string, vpCameraParameters> cams;
+    std::map<std::string, vpHomogeneousMatrix> T;
+    for (std::size_t k = 0; k < rig.size(); ++k) {
+      names.push_back("Camera" + std::to_string(k + 1));
+      xml[names[k]] = xmlPath;
+      cao[names[k]] = caoPath;
+      cams[names[k]] = rig[k].cam;
+      T[names[k]] = rig[k].cMh() * rig[0].hMc; // the reference camera in camera k
+    }
+    m_mbt = std::make_unique<vpMbGenericTracker>(names, std::vector<int>(rig.size(), type));
     try {
       pm::io::QuietStdout quiet; // ViSP reports the settings it reads on std::cout
-      m_mbt->loadConfigFile(xmlPath, xmlPath, false);
-      m_mbt->setCameraParameters(rig.left.cam, rig.right.cam);
-      std::map<std::string, vpHomogeneousMatrix> T{{"Camera1", vpHomogeneousMatrix()}, {"Camera2", rig.cLMcR().inverse()}};
-      m_mbt->setCameraTransformationMatrix(T);
-      m_mbt->loadModel(caoPath, caoPath, false);
+      if (rig.size() == 1) {
+        m_mbt->loadConfigFile(xmlPath, false);
+        m_mbt->setCameraParameters(rig[0].cam);
+        m_mbt->loadModel(caoPath, false);
+      } else if (rig.size() == 2) { // the stereo calls of before
+        m_mbt->loadConfigFile(xmlPath, xmlPath, false);
+        m_mbt->setCameraParameters(rig[0].cam, rig[1].cam);
+        std::map<std::string, vpHomogeneousMatrix> T2{{"Camera1", vpHomogeneousMatrix()}, {"Camera2", rig.stereo().cLMcR().inverse()}};
+        m_mbt->setCameraTransformationMatrix(T2);
+        m_mbt->loadModel(caoPath, caoPath, false);
+      } else {
+        m_mbt->loadConfigFile(xml, false);
+        m_mbt->setCameraParameters(cams);
+        m_mbt->setCameraTransformationMatrix(T);
+        m_mbt->loadModel(cao, false);
+      }
       m_mbt->setDisplayFeatures(false);
     } catch (const vpException &e) {
       throw core::Error("vpMbGenericTracker: cannot load " + xmlPath + " or " + caoPath + ": " + e.getStringMessage());
@@ -93,24 +116,45 @@ public:
                                             : "ViSP MBT edge+KLT";
   }
   bool needsInitialPose() const override { return true; }
-  void start(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const vpHomogeneousMatrix &hMm) override
+  void start(const core::CameraImages &images, const vpHomogeneousMatrix &hMm) override
   {
-    vpImageConvert::convert(left, m_gl);
-    vpImageConvert::convert(right, m_gr);
-    m_mbt->initFromPose(m_gl, m_gr, m_rig.left.cMh() * hMm, m_rig.right.cMh() * hMm);
+    images.checkFor(m_rig, "ViSP MBT");
+    grayOf(images);
+    if (m_rig.size() == 1)
+      m_mbt->initFromPose(m_gray[0], m_rig[0].cMh() * hMm);
+    else if (m_rig.size() == 2)
+      m_mbt->initFromPose(m_gray[0], m_gray[1], m_rig[0].cMh() * hMm, m_rig[1].cMh() * hMm);
+    else {
+      std::map<std::string, const vpImage<unsigned char> *> I;
+      std::map<std::string, vpHomogeneousMatrix> cMm;
+      for (std::size_t k = 0; k < m_rig.size(); ++k) {
+        I["Camera" + std::to_string(k + 1)] = &m_gray[k];
+        cMm["Camera" + std::to_string(k + 1)] = m_rig[k].cMh() * hMm;
+      }
+      m_mbt->initFromPose(I, cMm);
+    }
     m_hMm = hMm;
   }
-  Estimate track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) override
+  Estimate track(const core::CameraImages &images) override
   {
-    vpImageConvert::convert(left, m_gl);
-    vpImageConvert::convert(right, m_gr);
+    images.checkFor(m_rig, "ViSP MBT");
+    grayOf(images);
     bool ok = true;
     try {
       QuietCerr quiet;
-      m_mbt->track(m_gl, m_gr);
+      if (m_rig.size() == 1)
+        m_mbt->track(m_gray[0]);
+      else if (m_rig.size() == 2)
+        m_mbt->track(m_gray[0], m_gray[1]);
+      else {
+        std::map<std::string, const vpImage<unsigned char> *> I;
+        for (std::size_t k = 0; k < m_rig.size(); ++k)
+          I["Camera" + std::to_string(k + 1)] = &m_gray[k];
+        m_mbt->track(I);
+      }
       vpHomogeneousMatrix cMm;
       m_mbt->getPose(cMm);
-      m_hMm = m_rig.left.hMc * cMm;
+      m_hMm = m_rig[0].hMc * cMm;
     } catch (const vpException &) {
       ok = false; // no feature left to track: the pose stays where it was
     }
@@ -118,10 +162,16 @@ public:
   }
 
 private:
-  core::StereoRig m_rig;
+  //! The images in grey, as MBT reads them.
+  void grayOf(const core::CameraImages &images)
+  {
+    for (std::size_t k = 0; k < images.size(); ++k)
+      vpImageConvert::convert(images[k], m_gray[k]);
+  }
+  core::CameraRig m_rig;
   MbtFeatures m_features;
   std::unique_ptr<vpMbGenericTracker> m_mbt;
-  vpImage<unsigned char> m_gl, m_gr;
+  std::vector<vpImage<unsigned char>> m_gray; //!< camera k's image in grey
   vpHomogeneousMatrix m_hMm;
 };
 
@@ -129,8 +179,8 @@ private:
 class TemplateTracker : public ComparedTracker
 {
 public:
-  TemplateTracker(const core::StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
-    : m_rig(rig), m_cost(cost), m_polygon(polygon)
+  TemplateTracker(const core::CameraRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
+    : m_cam(rig[0]), m_cost(cost), m_polygon(polygon)
   {
     if (cost == TemplateCost::Ssd)
       m_tt = std::make_unique<vpTemplateTrackerSSDInverseCompositional>(&m_warp);
@@ -145,13 +195,13 @@ public:
   std::string name() const override { return m_cost == TemplateCost::Ssd ? "ViSP template SSD" : "ViSP template ZNCC"; }
   bool needsInitialPose() const override { return true; }
 
-  void start(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &, const vpHomogeneousMatrix &hMm) override
+  void start(const core::CameraImages &images, const vpHomogeneousMatrix &hMm) override
   {
-    vpImageConvert::convert(left, m_gl);
-    const vpHomogeneousMatrix cMm = m_rig.left.cMh() * hMm;
+    vpImageConvert::convert(images[0], m_gl); // the first camera's image alone
+    const vpHomogeneousMatrix cMm = m_cam.cMh() * hMm;
     // The template: cells of 6 px inside the outline as the left camera sees it, 2 triangles each.
     std::vector<vpImagePoint> outline;
-    for (const auto &[i, j] : projectPolygon(m_polygon, cMm, m_rig.left.cam))
+    for (const auto &[i, j] : projectPolygon(m_polygon, cMm, m_cam.cam))
       outline.emplace_back(i, j);
     const vpPolygon poly(outline);
     const vpRect box = poly.getBoundingBox();
@@ -174,9 +224,9 @@ public:
     m_cMm = cMm;
   }
 
-  Estimate track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &) override
+  Estimate track(const core::CameraImages &images) override
   {
-    vpImageConvert::convert(left, m_gl);
+    vpImageConvert::convert(images[0], m_gl);
     bool ok = true;
     try {
       m_tt->track(m_gl);
@@ -190,7 +240,7 @@ public:
         const vpImagePoint ip(((p[1] * u + (1 + p[4]) * v + p[7]) / w), ((1 + p[0]) * u + p[3] * v + p[6]) / w);
         vpPoint P = m_polygon[k];
         double x = 0, y = 0;
-        vpPixelMeterConversion::convertPoint(m_rig.left.cam, ip, x, y);
+        vpPixelMeterConversion::convertPoint(m_cam.cam, ip, x, y);
         P.set_x(x);
         P.set_y(y);
         pose.addPoint(P);
@@ -204,11 +254,11 @@ public:
     } catch (const vpException &) {
       ok = false;
     }
-    return {m_rig.left.hMc * m_cMm, ok && !m_tt->getDiverge()};
+    return {m_cam.hMc * m_cMm, ok && !m_tt->getDiverge()};
   }
 
 private:
-  core::StereoRig m_rig;
+  core::PinholeCamera m_cam; //!< the rig's first camera, the one it tracks in
   TemplateCost m_cost;
   std::vector<vpPoint> m_polygon;
   vpTemplateTrackerWarpHomography m_warp;
@@ -220,19 +270,19 @@ private:
 
 } // namespace
 
-std::unique_ptr<ComparedTracker> makeOurTracker(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params,
+std::unique_ptr<ComparedTracker> makeOurTracker(const core::CameraRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params,
                                                 const std::string &name)
 {
   return std::make_unique<OurTracker>(rig, model, params, name);
 }
 
-std::unique_ptr<ComparedTracker> makeMbtTracker(const core::StereoRig &rig, MbtFeatures features, const std::string &caoPath,
+std::unique_ptr<ComparedTracker> makeMbtTracker(const core::CameraRig &rig, MbtFeatures features, const std::string &caoPath,
                                                 const std::string &xmlPath)
 {
   return std::make_unique<MbtTracker>(rig, features, caoPath, xmlPath);
 }
 
-std::unique_ptr<ComparedTracker> makeTemplateTracker(const core::StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
+std::unique_ptr<ComparedTracker> makeTemplateTracker(const core::CameraRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon)
 {
   return std::make_unique<TemplateTracker>(rig, cost, polygon);
 }

@@ -12,6 +12,8 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
+#include "pm/core/CameraImages.h"
+
 namespace pm::compare {
 
 //! What a ComparedTracker gives for one frame.
@@ -27,8 +29,8 @@ struct Estimate
 
   \code
     std::unique_ptr<pm::compare::ComparedTracker> t = pm::compare::makeOurTracker(rig, model, pm::tracker::TrackerParams());
-    t->start(left0, right0, hMmTrue0); // hMmTrue0 is ignored here: ours needs no initial pose
-    const pm::compare::Estimate e = t->track(left0, right0);
+    t->start({left0, right0}, hMmTrue0); // one image per camera; hMmTrue0 is ignored here: ours needs no initial pose
+    const pm::compare::Estimate e = t->track({left0, right0});
   \endcode
 */
 class ComparedTracker
@@ -39,10 +41,10 @@ public:
   virtual std::string name() const = 0;
   //! It cannot start by itself: start() needs the true pose.
   virtual bool needsInitialPose() const = 0;
-  //! Starts on the first pair; \e hMmTrue is used only when needsInitialPose().
-  virtual void start(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const vpHomogeneousMatrix &hMmTrue) = 0;
+  //! Starts on the first frame (one image per camera of its rig); \e hMmTrue is used only when needsInitialPose().
+  virtual void start(const core::CameraImages &images, const vpHomogeneousMatrix &hMmTrue) = 0;
   //! One frame. Never throws for a tracking failure: the estimate is then invalid.
-  virtual Estimate track(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right) = 0;
+  virtual Estimate track(const core::CameraImages &images) = 0;
 };
 
 } // namespace pm::compare

@@ -20,7 +20,7 @@
 #include "pm/compare/Metrics.h"
 #include "pm/model/AllAroundModelBuilder.h"
 #include "pm/compare/Scenario.h"
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/model/PassPlanner.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/SimulatedPhotoModel.h"
@@ -101,7 +101,7 @@ class Comparison
 {
 public:
   //! Builds the scene and the models; throws pm::core::Error for an unknown tracker or scenario, or an unreadable file.
-  Comparison(const core::StereoRig &rig, const ComparisonParams &params);
+  Comparison(const core::CameraRig &rig, const ComparisonParams &params);
   ~Comparison();
   //! The one-face .cao model of the target's outline (metres, model frame) that ViSP's MBT trackers read.
   std::string caoText() const;
@@ -117,7 +117,7 @@ public:
 
 private:
   struct Setup;
-  const core::StereoRig &m_rig;
+  core::CameraRig m_rig;
   ComparisonParams m_p;
   std::unique_ptr<Setup> m_s;
 };

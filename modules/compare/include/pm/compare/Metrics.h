@@ -37,8 +37,8 @@ FrameScore scoreFrame(const vpHomogeneousMatrix &estimate, const vpHomogeneousMa
       const pm::sim::StereoImages im = pm::compare::renderScenarioFrame(scene, rig, s, k);
       const vpHomogeneousMatrix truth = s.frames[k].hMo * oMm; // hMm: the model in the hand frame
       if (k == 0)
-        tracker->start(im.left, im.right, truth);
-      const pm::compare::Estimate e = tracker->track(im.left, im.right);
+        tracker->start({im.left, im.right}, truth);
+      const pm::compare::Estimate e = tracker->track({im.left, im.right});
       pm::compare::FrameScore f = pm::compare::scoreFrame(e.hMm, truth);
       f.valid = e.valid;
       scores.push_back(f);

@@ -96,6 +96,8 @@ void prepareForScenarios(const std::vector<std::string> &names, sim::SceneParams
   parameters stay as set. Throws pm::core::Error for a frame with clutter in a scene made without it.
 */
 sim::StereoImages renderScenarioFrame(sim::Scene &scene, const core::StereoRig &rig, const Scenario &s, std::size_t k);
+//! The same through a rig of any number of cameras: camera k's image at [k].
+std::vector<vpImage<vpRGBa>> renderScenarioViews(sim::Scene &scene, const core::CameraRig &rig, const Scenario &s, std::size_t k);
 
 
 } // namespace pm::compare

@@ -18,7 +18,7 @@
 
 #include "pm/compare/ComparedTracker.h"
 #include "pm/core/PhotoModel.h"
-#include "pm/core/StereoRig.h"
+#include "pm/core/CameraRig.h"
 #include "pm/tracker/PhotoModelTracker.h"
 
 namespace pm::compare {
@@ -27,7 +27,7 @@ namespace pm::compare {
   Our PhotoModelTracker on \e rig and \e model, named \e name: start() searches from scratch
   (initialize(), no pose needed); an estimate is valid when the tracker's state is tracking.
 */
-std::unique_ptr<ComparedTracker> makeOurTracker(const core::StereoRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params,
+std::unique_ptr<ComparedTracker> makeOurTracker(const core::CameraRig &rig, const core::PhotoModel &model, const tracker::TrackerParams &params,
                                                 const std::string &name = "photo-model (ours)");
 
 /*!
@@ -36,11 +36,12 @@ std::unique_ptr<ComparedTracker> makeOurTracker(const core::StereoRig &rig, cons
 */
 enum class MbtFeatures { Edge, Klt, EdgeKlt };
 /*!
-  \e caoPath: the model file; \e xmlPath: vpMbGenericTracker's settings (moving edges, KLT,
-  visibility), the same for both cameras; the intrinsics come from the rig. Throws pm::core::Error if
+  ViSP's vpMbGenericTracker on every camera of \e rig (one camera: its native monocular case; the
+  pose is the first camera's). \e caoPath: the model file; \e xmlPath: vpMbGenericTracker's
+  settings (moving edges, KLT, visibility), the same for every camera; the intrinsics come from the rig. Throws pm::core::Error if
   either file cannot be loaded.
 */
-std::unique_ptr<ComparedTracker> makeMbtTracker(const core::StereoRig &rig, MbtFeatures features, const std::string &caoPath,
+std::unique_ptr<ComparedTracker> makeMbtTracker(const core::CameraRig &rig, MbtFeatures features, const std::string &caoPath,
                                                 const std::string &xmlPath);
 
 /*!
@@ -50,9 +51,9 @@ std::unique_ptr<ComparedTracker> makeMbtTracker(const core::StereoRig &rig, MbtF
 */
 enum class TemplateCost { Ssd, Zncc };
 /*!
-  \e polygon: the outline in the model frame (outlinePolygon()). Its start() throws pm::core::Error
-  if no template cell fits inside the outline in the left image.
+  \e polygon: the outline in the model frame (outlinePolygon()). It tracks in the rig's first camera
+  alone. Its start() throws pm::core::Error if no template cell fits inside the outline there.
 */
-std::unique_ptr<ComparedTracker> makeTemplateTracker(const core::StereoRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon);
+std::unique_ptr<ComparedTracker> makeTemplateTracker(const core::CameraRig &rig, TemplateCost cost, const std::vector<vpPoint> &polygon);
 
 } // namespace pm::compare
