@@ -221,6 +221,54 @@ TEST(PassCalibration, TheGuardShrinksTheShiftsUntilNoWrongTryComesNearTheThresho
   EXPECT_FALSE(none.measured);
 }
 
+TEST(PassCalibration, WhereWrongTriesReadRightThroughThisCameraEveryConfidenceIsLoweredUntilNoneIsTrusted)
+{
+  // A camera through which wrong poses read as right ones (one camera on the head: its turned poses):
+  // right tries and 50 mm-off tries (plainly wrong) with the lab's cues, the wrong ones a shade lower. The shipped
+  // confidence trusts wrong tries; the calibration lowers every confidence on its logit until the
+  // highest wrong one sits at the ceiling, so that none is trusted, and the tracker reads it so.
+  std::vector<pm::trust::PassTry> tries;
+  for (std::size_t k = 0; k < 20; ++k)
+    tries.push_back(tryOf(cues(0.7, 0.91, 1.0), 1.0, k % 10 + 1));
+  for (std::size_t k = 0; k < 10; ++k)
+    tries.push_back(tryOf(cues(0.75 + 0.01 * static_cast<double>(k), 0.91, 1.0, 0.99), 50.0, k + 1));
+  const pm::tracker::ConfidenceModel shipped = pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::AllAround);
+  int wrongShipped = 0;
+  double highestShipped = 0;
+  for (const auto &x : tries)
+    if (x.wrong()) {
+      wrongShipped += shipped.confidence(x.cues) >= shipped.threshold;
+      highestShipped = std::max(highestShipped, shipped.confidence(x.cues));
+    }
+  ASSERT_GT(wrongShipped, 0); // the case: the shipped confidence trusts wrong tries
+  const pm::trust::CalibrationParams p;
+  const pm::core::TrustCalibration t = pm::trust::calibrateTrust(tries, shipped, p);
+  ASSERT_TRUE(t.measured);
+  EXPECT_LT(t.confidenceOffset, 0);
+  EXPECT_EQ(t.wrongTrusted, 0);
+  EXPECT_NEAR(t.wrongMaxConfidence, p.wrongCeiling, 1e-9);
+  EXPECT_LT(t.rightTrusted, t.rightTrustedShipped); // fewer right frames trusted: the price, said
+  const pm::tracker::ConfidenceModel read = shipped.calibrated(t); // as the tracker reads a model of this kind
+  for (const auto &x : tries)
+    if (x.wrong())
+      EXPECT_LT(read.confidence(x.cues), read.threshold);
+  pm::core::PhotoModel m; // a plain model: the offset joins its kind's bias
+  m.trust = t;
+  const pm::tracker::JudgementParams jp = pm::tracker::JudgementParams().forModel(m);
+  EXPECT_DOUBLE_EQ(jp.confidence.bias, pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::Flat).bias + t.confidenceOffset);
+  EXPECT_NE(pm::trust::describe(t).find("every confidence lowered by"), std::string::npos);
+  // A camera through which no wrong try reads right: no offset; nor where the wrong tries that read
+  // right are near misses (25 mm: the guard's business, as before).
+  std::vector<pm::trust::PassTry> clear(tries.begin(), tries.begin() + 20);
+  clear.push_back(tryOf(cues(3.6, 0.7, 0.72, 0.85), 35.0, 3));
+  EXPECT_EQ(pm::trust::calibrateTrust(clear, shipped, p).confidenceOffset, 0.0);
+  std::vector<pm::trust::PassTry> nearMisses = tries;
+  for (auto &x : nearMisses)
+    if (x.wrong())
+      x.errorMm = x.error[0] = 25.0;
+  EXPECT_EQ(pm::trust::calibrateTrust(nearMisses, shipped, p).confidenceOffset, 0.0);
+}
+
 TEST(PassCalibration, TheSigmasWidenToHoldTheHeldOutErrorsAndNeverNarrow)
 {
   std::vector<pm::trust::PassTry> tries;
@@ -262,6 +310,7 @@ TEST(PassCalibration, TheModelFileKeepsItAndAnOlderModelLoadsWithNone)
   c.trust.rightReadings = {{"quality", 0.98}};
   c.trust.sigmaGain = {1.5, 1, 1, 1.2, 1, 1};
   c.trust.guard = 0.7;
+  c.trust.confidenceOffset = -1.25;
   c.trust.auroc = 0.99;
   pm::io::savePhotoModel(c, dir.file("v6.json"));
   const std::string text = pm::test::readText(dir.file("v6.json"));
@@ -270,6 +319,7 @@ TEST(PassCalibration, TheModelFileKeepsItAndAnOlderModelLoadsWithNone)
   ASSERT_TRUE(back.trust.measured);
   EXPECT_EQ(back.trust.sigmaGain, c.trust.sigmaGain);
   EXPECT_DOUBLE_EQ(back.trust.guard, 0.7);
+  EXPECT_DOUBLE_EQ(back.trust.confidenceOffset, -1.25);
   ASSERT_EQ(back.trust.cueShifts.size(), 2u);
   EXPECT_DOUBLE_EQ(shiftOf(back.trust, "precise_residual_px"), -0.4);
   // A cue the confidence does not know, and a gain out of range, are refused naming them.
@@ -282,6 +332,15 @@ TEST(PassCalibration, TheModelFileKeepsItAndAnOlderModelLoadsWithNone)
   bad.replace(bad.find("\"sigma_gain\":[1.5"), 17, "\"sigma_gain\":[-1.5");
   pm::test::writeText(dir.file("bad2.json"), bad);
   EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad2.json")); }).find("sigma_gain"), std::string::npos);
+  // A confidence raised rather than lowered is refused; a file from before the offset reads as none.
+  bad = text;
+  bad.replace(bad.find("\"confidence_offset\":-1.25"), 25, "\"confidence_offset\":1.25");
+  pm::test::writeText(dir.file("bad3.json"), bad);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad3.json")); }).find("confidence_offset"), std::string::npos);
+  std::string older = text;
+  older.erase(older.find("\"confidence_offset\":-1.25,"), 26);
+  pm::test::writeText(dir.file("older.json"), older);
+  EXPECT_EQ(pm::io::loadPhotoModel(dir.file("older.json")).trust.confidenceOffset, 0.0);
 }
 
 TEST(TrustCache, GivesBackWhatWasStoredForTheSamePassRigAndModelOnlyAndNeverFails)

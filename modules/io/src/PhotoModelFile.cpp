@@ -80,6 +80,7 @@ json trustToJson(const core::TrustCalibration &t)
           {"right_readings", namedToJson(t.rightReadings)},
           {"sigma_gain", t.sigmaGain},
           {"guard", t.guard},
+          {"confidence_offset", t.confidenceOffset},
           {"held_out_views", t.heldOutViews},
           {"right_examples", t.rightExamples},
           {"wrong_examples", t.wrongExamples},
@@ -107,6 +108,9 @@ core::TrustCalibration trustFromJson(const json &j)
     t.sigmaGain[i] = gain[i];
   }
   t.guard = j.at("guard").get<double>();
+  t.confidenceOffset = j.value("confidence_offset", 0.0); // none before issue 58
+  if (!(t.confidenceOffset <= 0 && t.confidenceOffset > -100))
+    throw core::Error("\"trust_calibration\": \"confidence_offset\" must lie in (-100, 0]");
   t.heldOutViews = j.value("held_out_views", 0);
   t.rightExamples = j.value("right_examples", 0);
   t.wrongExamples = j.value("wrong_examples", 0);

@@ -170,6 +170,7 @@ ConfidenceModel ConfidenceModel::calibrated(const core::TrustCalibration &t) con
       throw core::Error("trust calibration: \"" + name + "\" is not a cue of the confidence");
     m.shift[static_cast<std::size_t>(it - names.begin())] += value;
   }
+  m.bias += t.confidenceOffset;
   return m;
 }
 

@@ -156,7 +156,7 @@ core::TrustCalibration calibrateTrust(const std::vector<PassTry> &tries, const t
   p.validate();
   core::TrustCalibration t;
   std::vector<const PassTry *> right;
-  std::vector<tracker::ConfidenceCues> rightCues, wrongCues;
+  std::vector<tracker::ConfidenceCues> rightCues, wrongCues, plainlyWrongCues;
   std::vector<std::size_t> views;
   for (const PassTry &x : tries) {
     if (x.right()) {
@@ -164,6 +164,8 @@ core::TrustCalibration calibrateTrust(const std::vector<PassTry> &tries, const t
       rightCues.push_back(steady(x));
     } else if (x.wrong()) {
       wrongCues.push_back(steady(x));
+      if (x.plainlyWrong())
+        plainlyWrongCues.push_back(wrongCues.back());
     }
     if (std::find(views.begin(), views.end(), x.view) == views.end())
       views.push_back(x.view);
@@ -199,7 +201,16 @@ core::TrustCalibration calibrateTrust(const std::vector<PassTry> &tries, const t
   while (a > 0 && highest(shifted(shipped, want, a), wrongCues) > ceiling)
     a = std::max(0.0, a - 0.1);
   t.guard = a;
-  const tracker::ConfidenceModel m = shifted(shipped, want, a);
+  tracker::ConfidenceModel m = shifted(shipped, want, a);
+  // 3. No plainly wrong try trusted: where even the shipped confidence trusts one through this camera,
+  //    every confidence is lowered on its logit until the highest sits at the ceiling. (A near miss of
+  //    5-10 deg, a thin toy's roll, is the guard's business, as before.)
+  const double worst = highest(m, plainlyWrongCues);
+  if (worst >= m.threshold) {
+    const auto logit = [](double q) { return std::log(q / (1 - q)); };
+    t.confidenceOffset = logit(p.wrongCeiling) - logit(std::min(worst, 1 - 1e-12));
+    m.bias += t.confidenceOffset;
+  }
   for (std::size_t i = 0; i < want.size(); ++i)
     if (a * want[i] != 0)
       t.cueShifts.emplace_back(names[i], a * want[i]);
@@ -219,7 +230,7 @@ core::TrustCalibration calibrateTrust(const std::vector<PassTry> &tries, const t
   t.auroc = auroc(rs, ws);
   t.rightTrusted = static_cast<double>(trusted) / static_cast<double>(rightCues.size());
   t.rightTrustedShipped = static_cast<double>(trustedShipped) / static_cast<double>(rightCues.size());
-  // 3. The sigmas.
+  // 4. The sigmas.
   t.sigmaGain = sigmaGains(right, p);
   for (std::size_t ax = 0; ax < 6; ++ax) {
     int n = 0, within = 0;
@@ -379,6 +390,8 @@ std::string describe(const core::TrustCalibration &t)
     s << (i ? ", " : "") << t.cueShifts[i].first << " " << std::showpos << std::setprecision(3) << t.cueShifts[i].second << std::noshowpos;
   if (t.guard < 1)
     s << std::setprecision(1) << " (" << 100 * t.guard << " % of it: wrong tries came near)";
+  if (t.confidenceOffset < 0)
+    s << std::setprecision(2) << "; every confidence lowered by " << -t.confidenceOffset << " on its logit (plainly wrong tries read right through this camera)";
   s << std::setprecision(0) << "; as steady locks it trusts " << 100 * t.rightTrusted << " % of the right tries (shipped "
     << 100 * t.rightTrustedShipped << " %; the lab's own passes 39-71 %), " << t.wrongTrusted << " wrong" << std::setprecision(2)
     << " (the highest " << t.wrongMaxConfidence << "); 1-sigma x";

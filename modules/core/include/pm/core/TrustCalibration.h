@@ -11,7 +11,10 @@
   (a soft shadow along the outline raises the precise stage's residual, a soft lens lowers the
   separation), the reading is moved by that difference before it is weighed (cueShifts); a cue the
   pass reads within the lab's range is not moved. The shifts are shrunk together (guard < 1) until no
-  wrong pose tried on the pass's images comes near the threshold. The sigmas are widened per axis
+  wrong pose tried on the pass's images comes near the threshold. Where the shipped confidence itself
+  trusts a plainly wrong try there (over 40 mm or 10 deg: a camera through which wrong poses read
+  right, as one camera on the head), every confidence is lowered (confidenceOffset on its logit)
+  until the highest sits at the guard's ceiling: fewer right frames trusted, no plainly wrong one. The sigmas are widened per axis
   where fewer than 68 % of the held-out views' true errors fall within them (sigmaGain, never under 1).
 */
 #include <array>
@@ -31,6 +34,7 @@ struct TrustCalibration
   std::vector<std::pair<std::string, double>> rightReadings;
   std::array<double, 6> sigmaGain{1, 1, 1, 1, 1, 1}; //!< the reported 1-sigma per axis (x, y, z, about x, y, z) times this
   double guard = 1;         //!< the share of the measured shifts kept (1: all; less where wrong poses came near the threshold)
+  double confidenceOffset = 0; //!< added to the confidence's logit (<= 0; 0 unless the shipped confidence trusted a plainly wrong try)
   int heldOutViews = 0;     //!< the pass's views held out of the models they were tried on
   int rightExamples = 0;    //!< tries that landed right (within 5 mm and 2 deg)
   int wrongExamples = 0;    //!< tries that landed wrong (over 20 mm or 5 deg)

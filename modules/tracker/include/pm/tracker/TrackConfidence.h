@@ -172,7 +172,8 @@ struct ConfidenceModel
   const char *weakestCueName(const ConfidenceCues &c) const;
   /*!
     These coefficients read through the camera of a model's pass (core::TrustCalibration): its
-    cueShifts added to the shift. Throws pm::core::Error naming a cue that is not a feature.
+    cueShifts added to the shift, its confidenceOffset to the bias. Throws pm::core::Error naming a
+    cue that is not a feature.
   */
   ConfidenceModel calibrated(const core::TrustCalibration &t) const;
   //! Throws pm::core::Error if a coefficient, shift or reference is not finite or the threshold is outside (0, 1).

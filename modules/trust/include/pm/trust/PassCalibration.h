@@ -15,7 +15,11 @@
      tracked, verified, jumps) are never moved;
   2. a guard: the shifts shrunk together (in tenths) until no wrong try's confidence exceeds
      CalibrationParams::wrongCeiling, or the shipped confidence's own highest wrong try if higher;
-  3. the uncertainty: each axis's sigma widened so that CalibrationParams::sigmaShare of the right
+  3. no plainly wrong try trusted (PassTry::plainlyWrong(): over 40 mm or 10 deg): where the shipped
+     confidence itself trusts one through this camera (one camera on the head: its turned poses, 13
+     to 30 deg off), every confidence is lowered on its logit (TrustCalibration::confidenceOffset)
+     until the highest sits at wrongCeiling;
+  4. the uncertainty: each axis's sigma widened so that CalibrationParams::sigmaShare of the right
      tries' true errors fall within it, never narrowed (a held-out view's sigma is its model's own).
 
   Each try is judged as a steady, verified lock (30 frames tracked, no jump): the state's cues are

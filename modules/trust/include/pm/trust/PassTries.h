@@ -59,6 +59,8 @@ struct PassTry
   bool right() const { return errorMm <= 5 && errorDeg <= 2; }
   //! Wrong: over 20 mm or 5 deg off (the confidence's wrong frames).
   bool wrong() const { return errorMm > 20 || errorDeg > 5; }
+  //! Plainly wrong: twice as far (over 40 mm or 10 deg), not a near miss of a hard axis (a thin toy's roll).
+  bool plainlyWrong() const { return errorMm > 40 || errorDeg > 10; }
 };
 
 /*!
