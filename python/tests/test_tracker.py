@@ -158,26 +158,31 @@ def test_the_hand_motion_moves_the_pose_and_keeps_the_lock(rig, model):
 
 
 def test_a_list_of_images_is_the_pair_and_one_camera_tracks_its_own_image(rig, model, frames):
-    # The list form gives the pair's poses exactly; a one-camera rig (the pair's left camera) tracks the left images
-    # alone and ends on the pair's pose, not on another (its first lock may be wrong, as a pair's may: the verifier
-    # moves it; a wrong pose is 20 mm or 5 deg off, its accuracy is the main job's to measure); a wrong number of
-    # images is a clear error, nothing tracked.
+    # The list form gives the pair's poses exactly; a one-camera rig (the pair's left camera) finds the still crab in
+    # its left image alone and ends on the pair's pose, not on another (its first lock may be wrong, as a pair's may:
+    # the verifier moves it; a wrong pose is 20 mm or 5 deg off, one camera's accuracy is the main job's to measure);
+    # a wrong number of images is a clear error, nothing tracked.
     a, b = pm.Tracker(rig, model, seed=5), pm.Tracker(pm.CameraRig(rig), model, seed=5)
-    pair = []
-    for left, right in frames:
-        pair.append(a.track(left, right))
-        np.testing.assert_array_equal(pair[-1].pose, b.track([left, right]).pose)
+    left, right = frames[0]
+    for _ in range(60):
+        pair = a.track(left, right)
+        np.testing.assert_array_equal(pair.pose, b.track([left, right]).pose)
     mono = pm.load_camera_rig(pm.data_path("rig/pa10_mono.json"))
     assert len(mono) == 1 and mono[0].hMc.tolist() == rig.left.hMc.tolist()
+    def off(r):  # (mm, deg) from the pair's pose
+        d = np.linalg.inv(r.pose) @ pair.pose
+        return 1e3 * np.linalg.norm(d[:3, 3]), np.degrees(np.arccos(np.clip((np.trace(d[:3, :3]) - 1) / 2, -1, 1)))
+
     one = pm.Tracker(mono, model, seed=5)
-    tracked = [one.track([left]) for left, _ in frames]
-    assert one._pixels_read == (frames[-1][0].ctypes.data,)  # the array's own buffer
-    for r, p in zip(tracked[-3:], pair[-3:]):
-        assert r.state == p.state == pm.TrackState.TRACKING
-        d = np.linalg.inv(r.pose) @ p.pose
-        assert np.linalg.norm(d[:3, 3]) < 0.005  # within 5 mm of the pair's pose ...
-        assert np.degrees(np.arccos(np.clip((np.trace(d[:3, :3]) - 1) / 2, -1, 1))) < 2.5  # ... and 2.5 deg
+    for _ in range(60):  # with some seeds a wrong first lock holds 30 frames before the verifier moves it
+        r = one.track([left])
+        mm, deg = off(r)
+        assert not r.trusted or (mm < 5 and deg < 2.5)  # never trusted on another pose
+    assert one._pixels_read == (left.ctypes.data,)  # the array's own buffer
+    assert r.state == pair.state == pm.TrackState.TRACKING and r.trusted
+    mm, deg = off(r)
+    assert mm < 5 and deg < 2.5  # on the pair's pose
     with pytest.raises(pm.Error, match="2 images for a rig of 1 camera"):
-        one.track(frames[0][0], frames[0][1])
+        one.track(left, right)
     with pytest.raises(pm.Error, match="1 image for a rig of 2 cameras"):
-        a.track([frames[0][0]])
+        a.track([left])
