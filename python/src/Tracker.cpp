@@ -1,7 +1,6 @@
 #include "Tracker.h"
 
 #include "Arrays.h"
-#include "pm/core/Error.h"
 #include "pm/tracker/TrackerConfigFile.h"
 
 namespace pmpy {
@@ -31,10 +30,7 @@ Tracker::Tracker(const pm::core::CameraRig &rig, const pm::core::PhotoModel &mod
 pm::tracker::TrackResult Tracker::track(const std::vector<pybind11::array> &images)
 {
   const std::size_t n = images.size();
-  if (n != static_cast<std::size_t>(m_tracker.cameraCount()))
-    throw pm::core::Error("tracker: " + std::to_string(n) + (n == 1 ? " image" : " images") + " for a rig of " +
-                          std::to_string(m_tracker.cameraCount()) + (m_tracker.cameraCount() == 1 ? " camera" : " cameras") +
-                          " (one image per camera)");
+  pm::core::CameraImages::checkCount(n, static_cast<std::size_t>(m_tracker.cameraCount()), "tracker"); // before the per-camera buffers
   const char *names[kMax] = {"image 0", "image 1", "image 2", "image 3"};
   const char *stereoNames[2] = {"left image", "right image"};
   std::array<PixelLayout, kMax> layout{};

@@ -25,11 +25,16 @@ CameraImages &CameraImages::add(const vpImage<vpRGBa> &image)
   return *this;
 }
 
+void CameraImages::checkCount(std::size_t images, std::size_t cameras, const char *who)
+{
+  if (images != cameras)
+    throw Error(std::string(who) + ": " + std::to_string(images) + (images == 1 ? " image" : " images") + " for a rig of " +
+                std::to_string(cameras) + (cameras == 1 ? " camera" : " cameras") + " (one image per camera)");
+}
+
 void CameraImages::checkFor(const CameraRig &rig, const char *who) const
 {
-  if (m_count != rig.size())
-    throw Error(std::string(who) + ": " + std::to_string(m_count) + (m_count == 1 ? " image" : " images") + " for a rig of " +
-                std::to_string(rig.size()) + (rig.size() == 1 ? " camera" : " cameras") + " (one image per camera)");
+  checkCount(m_count, rig.size(), who);
   for (std::size_t k = 0; k < m_count; ++k) {
     const PinholeCamera &c = rig[k];
     const vpImage<vpRGBa> &im = *m_images[k];

@@ -55,6 +55,8 @@ public:
     size (the message begins with \e who).
   */
   void checkFor(const CameraRig &rig, const char *who) const;
+  //! Throws pm::core::Error unless \e images equals \e cameras (one image per camera; the message begins with \e who).
+  static void checkCount(std::size_t images, std::size_t cameras, const char *who);
 
 private:
   std::array<const vpImage<vpRGBa> *, CameraRig::kMaxCameras> m_images{};
