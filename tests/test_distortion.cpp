@@ -14,6 +14,8 @@
 #include <visp3/core/vpXmlParserCamera.h>
 
 #include "TestSupport.h"
+#include "pm/calib/CameraCalibration.h"
+#include "pm/calib/HandEye.h"
 #include "pm/calib/RigCalibration.h"
 #include "pm/calib/RigComparison.h"
 #include "pm/core/Error.h"
@@ -23,6 +25,7 @@
 #include "pm/io/CameraFile.h"
 #include "pm/io/CameraXml.h"
 #include "pm/io/ImageFile.h"
+#include "pm/io/PoseFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/model/HullGeometry.h"
 #include "pm/lab/SimulatedCalibration.h"
@@ -580,6 +583,164 @@ TEST(PmCalibrateRig, WritesTheRigItsReportAndRefusesBadInput)
   const auto few = runProgram("pm-calibrate-rig", "--left " + d.file("blank.png") + " --right " + d.file("blank.png") + " --out " + d.file("x"));
   EXPECT_EQ(few.status, 1);
   EXPECT_NE(few.err.find("0 usable pairs of 1"), std::string::npos) << few.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("x")));
+}
+
+namespace {
+
+//! The board poses of the used views of \e c and the hand poses of the same views in \e pass.
+void usedPoses(const pm::calib::CameraCalibration &c, const pm::lab::CalibrationPass &pass, std::vector<vpHomogeneousMatrix> &cMo,
+               std::vector<vpHomogeneousMatrix> &fMh)
+{
+  for (std::size_t i = 0; i < c.views.size(); ++i)
+    if (c.views[i].used) {
+      cMo.push_back(c.views[i].cMo);
+      fMh.push_back(pass.fMh[i]);
+    }
+}
+
+} // namespace
+
+TEST(CameraCalibration, ACameraOnTheHandIsRecoveredWithItsLensAndItsPoseOnTheHand)
+{
+  pm::calib::ChessBoard board;
+  board.squareMm = board.marginMm = 25;
+  const pm::core::PinholeCamera truth = pm::lab::labRigWithLens(kBarrel).left; // off the hand's centre, toed in
+  const pm::lab::CalibrationPass pass = pm::lab::renderCalibrationViews(truth, board, 24, pm::lab::SimulatedCalibrationParams());
+  ASSERT_EQ(pass.views.size(), pass.fMh.size());
+  const pm::calib::CameraCalibration c = pm::calib::calibrateCamera(pass.views, board);
+  EXPECT_GE(c.viewsUsed, 18);
+  EXPECT_LT(c.rmsPx, 0.15);
+  EXPECT_NEAR(c.camera.cam.get_px(), 754, 754 * 0.005);
+  EXPECT_NEAR(c.camera.distortion.coefficients[0], -0.25, 0.05);
+  for (const pm::calib::ViewReport &v : c.views)
+    if (v.used) {
+      // Each view's board pose puts the board where the renderer put it: the hand's pose, seen through the true hMc.
+      const std::size_t i = static_cast<std::size_t>(&v - c.views.data());
+      const vpHomogeneousMatrix cMoTrue = truth.hMc.inverse() * pass.fMh[i].inverse();
+      EXPECT_LT((cMoTrue.getTranslationVector() - v.cMo.getTranslationVector()).frobeniusNorm() * 1e3, 2.0) << v.name;
+    }
+  std::vector<vpHomogeneousMatrix> cMo, fMh;
+  usedPoses(c, pass, cMo, fMh);
+  const pm::calib::HandEyeFit fit = pm::calib::solveHandEye(cMo, fMh);
+  pm::core::PinholeCamera est = c.camera;
+  est.hMc = fit.hMc;
+  const pm::calib::CameraErrors e = pm::calib::compareCameras(est, truth);
+  EXPECT_LT(e.translationErrorMm, 0.5);
+  EXPECT_LT(e.rotationErrorDeg, 0.05);
+  EXPECT_LT(e.reprojectionRmsPx, 1.0); // over the whole image, its corners (no board reached them) included
+  EXPECT_LT(fit.spreadMm, 0.2);
+  EXPECT_LT(fit.spreadDeg, 0.1);
+  // The board's place in the world is the world's origin (the renderer's board frame).
+  EXPECT_LT(fit.fMo.getTranslationVector().frobeniusNorm() * 1e3, 0.5);
+}
+
+TEST(HandEye, AHandPoseReadAtTheWrongViewShowsInTheBoardsSpreadAndBadListsAreRefused)
+{
+  pm::calib::ChessBoard board;
+  board.squareMm = board.marginMm = 25;
+  const pm::core::PinholeCamera truth = pm::lab::labRigWithLens(kBarrel).left;
+  const pm::lab::CalibrationPass pass = pm::lab::renderCalibrationViews(truth, board, 12, pm::lab::SimulatedCalibrationParams());
+  const pm::calib::CameraCalibration c = pm::calib::calibrateCamera(pass.views, board);
+  std::vector<vpHomogeneousMatrix> cMo, fMh;
+  usedPoses(c, pass, cMo, fMh);
+  ASSERT_GE(cMo.size(), 6u);
+  const double good = pm::calib::solveHandEye(cMo, fMh).spreadMm;
+  std::swap(fMh[1], fMh[2]); // two poses read at each other's view
+  EXPECT_GT(pm::calib::solveHandEye(cMo, fMh).spreadMm, 50 * good);
+  EXPECT_NE(errorOf([&] { pm::calib::solveHandEye(cMo, std::vector<vpHomogeneousMatrix>(fMh.begin(), fMh.end() - 1)); })
+                .find("hand poses (one of each per view)"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::calib::solveHandEye({cMo[0], cMo[1]}, {fMh[0], fMh[1]}); }).find("at least 3"), std::string::npos);
+}
+
+TEST(CameraCalibration, OpenCvsRealImagesAsOpenCvCalibratesThemAndBadViewsSayWhy)
+{
+  if (!std::filesystem::exists(kOpenCvData + "left01.jpg"))
+    GTEST_SKIP() << "opencv-doc is not installed (apt-get install opencv-doc)";
+  std::vector<pm::calib::CalibrationView> views;
+  std::vector<std::vector<cv::Point2f>> L;
+  std::vector<std::vector<cv::Point3f>> O;
+  for (int i = 1; i <= 14; ++i) {
+    if (i == 10)
+      continue; // not in the package
+    char n[16];
+    std::snprintf(n, sizeof n, "left%02d.jpg", i);
+    views.push_back({n, pm::io::readColorImage(kOpenCvData + n)});
+    cv::Mat l = cv::imread(kOpenCvData + n, cv::IMREAD_GRAYSCALE);
+    std::vector<cv::Point2f> cl;
+    ASSERT_TRUE(cv::findChessboardCorners(l, {9, 6}, cl, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE));
+    cv::cornerSubPix(l, cl, {11, 11}, {-1, -1}, cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 30, 0.01));
+    L.push_back(cl);
+    std::vector<cv::Point3f> o;
+    for (int y = 0; y < 6; ++y)
+      for (int x = 0; x < 9; ++x)
+        o.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.f);
+    O.push_back(o);
+  }
+  cv::Mat K, D;
+  std::vector<cv::Mat> rv, tv;
+  const double refRms = cv::calibrateCamera(O, L, {640, 480}, K, D, rv, tv);
+  pm::calib::ChessBoard board;
+  board.innerRows = 6;
+  board.innerCols = 9;
+  board.squareMm = board.marginMm = 1;
+  views.push_back({"blank", vpImage<vpRGBa>(480, 640, vpRGBa(128, 128, 128))});
+  views.push_back({"small", vpImage<vpRGBa>(240, 320, vpRGBa(128, 128, 128))});
+  const pm::calib::CameraCalibration c = pm::calib::calibrateCamera(views, board);
+  EXPECT_EQ(c.viewsUsed, 13);
+  EXPECT_NEAR(c.rmsPx, refRms, 0.1 * refRms);
+  EXPECT_NEAR(c.camera.cam.get_px(), K.at<double>(0, 0), 0.01 * K.at<double>(0, 0));
+  EXPECT_NEAR(c.camera.cam.get_u0(), K.at<double>(0, 2), 2.0);
+  EXPECT_NEAR(c.camera.distortion.coefficients[0], -0.27, 0.03); // strong barrel, as the stereo calibration finds it
+  EXPECT_NE(c.views[13].reason.find("chessboard"), std::string::npos) << c.views[13].reason;
+  EXPECT_NE(c.views[14].reason.find("camera image is 320x240"), std::string::npos) << c.views[14].reason;
+  const std::vector<pm::calib::CalibrationView> two(views.begin() + 12, views.end());
+  const std::string e = errorOf([&] { pm::calib::calibrateCamera(two, board); });
+  EXPECT_NE(e.find("1 usable view of 3"), std::string::npos) << e;
+  EXPECT_NE(e.find("blank: chessboard"), std::string::npos) << e;
+}
+
+TEST(PmCalibrateRig, OneCameraWritesARigOfOneCameraOnTheHandAndRefusesBadInput)
+{
+  TempDir d("calibrate-one");
+  const auto r = runProgram("pm-calibrate-rig", "--simulate 20 --cameras 1 --board 6,9,25 --quiet --out " + d.file("o"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char *f : {"rig.json", "cameras.xml", "rig_camera.yml", "coverage.png", "summary.json"})
+    EXPECT_TRUE(std::filesystem::exists(d.file(std::string("o/") + f))) << f;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("o/summary.json")));
+  EXPECT_LT(s["truth"]["hMc_translation_error_mm"].get<double>(), 0.5);
+  EXPECT_LT(s["truth"]["hMc_rotation_error_deg"].get<double>(), 0.05);
+  const pm::core::CameraRig rig = pm::io::loadCameraRig(d.file("o/rig.json"));
+  ASSERT_EQ(rig.cameras.size(), 1u);
+  const pm::core::PinholeCamera truth = pm::lab::labRigWithLens(kBarrel).left;
+  EXPECT_LT((rig.cameras[0].hMc.getTranslationVector() - truth.hMc.getTranslationVector()).frobeniusNorm() * 1e3, 0.5);
+
+  // A user's images and hand poses, as files: the same calibration.
+  const pm::lab::CalibrationPass pass = pm::lab::renderCalibrationViews(truth, pm::calib::ChessBoard(), 8, pm::lab::SimulatedCalibrationParams());
+  for (std::size_t i = 0; i < pass.views.size(); ++i) {
+    pm::io::writeImage(pass.views[i].image, d.file("C_" + std::to_string(i) + ".png"));
+    pm::io::writePoseYaml(pass.fMh[i], d.file("pose_fPe_" + std::to_string(i) + ".yaml"));
+  }
+  const std::string images = " --images " + d.file("C_%d.png") + " --out " + d.file("u") + " --quiet";
+  const auto files = runProgram("pm-calibrate-rig", images + " --hand-poses " + d.file("pose_fPe_%d.yaml"));
+  ASSERT_EQ(files.status, 0) << files.err;
+  EXPECT_LT((pm::io::loadCameraRig(d.file("u/rig.json")).cameras[0].hMc.getTranslationVector() - truth.hMc.getTranslationVector())
+                    .frobeniusNorm() * 1e3, 1.0);
+  const auto given = runProgram("pm-calibrate-rig", images + " --hMc 0.01 0 0 0 0 0");
+  ASSERT_EQ(given.status, 0) << given.err;
+  EXPECT_NEAR(pm::io::loadCameraRig(d.file("u/rig.json")).cameras[0].hMc[0][3], 0.01, 1e-12);
+
+  // Bad input: no pose on the hand, more images than poses, both ways of giving it; nothing written.
+  const std::string x = " --images " + d.file("C_%d.png") + " --out " + d.file("x");
+  const auto noPose = runProgram("pm-calibrate-rig", x);
+  EXPECT_EQ(noPose.status, 2);
+  EXPECT_NE(noPose.err.find("--hand-poses"), std::string::npos) << noPose.err;
+  const auto fewer = runProgram("pm-calibrate-rig", x + " --hand-poses " + d.file("pose_fPe_0.yaml"));
+  EXPECT_EQ(fewer.status, 2);
+  EXPECT_NE(fewer.err.find("8 images but 1 hand poses"), std::string::npos) << fewer.err;
+  EXPECT_EQ(runProgram("pm-calibrate-rig", x + " --hMc 0 0 0 0 0 0 --hand-poses " + d.file("pose_fPe_%d.yaml")).status, 2);
+  EXPECT_EQ(runProgram("pm-calibrate-rig", x + " --left a.png --right a.png --hMc 0 0 0 0 0 0").status, 2);
   EXPECT_FALSE(std::filesystem::exists(d.file("x")));
 }
 

@@ -11,6 +11,9 @@
 #include "pm/io/ImageFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/calib/RigComparison.h"
+#include "pm/calib/CameraCalibration.h"
+#include "pm/calib/HandEye.h"
+#include <visp3/core/vpPoseVector.h>
 namespace pm_examples {
 
 // BaselineCheck.h
@@ -44,6 +47,27 @@ void exampleRigComparison(const std::vector<pm::calib::StereoImagePair> &pairs, 
   const pm::calib::RigCalibration c = pm::calib::calibrateRig(pairs, board);
   const pm::calib::CalibrationErrors e = pm::calib::compareRigs(c.rig, pm::io::loadRig("rig.json"));
   std::cout << e.baselineErrorMm << " mm, " << e.rotationErrorDeg << " deg" << std::endl;
+}
+
+// CameraCalibration.h
+void exampleCameraCalibration(const std::vector<pm::calib::CalibrationView> &views)
+{
+  // views: a std::vector<pm::calib::CalibrationView>, raw images as the camera gives them
+  pm::calib::ChessBoard board;
+  board.innerRows = 6;
+  board.innerCols = 9;
+  board.squareMm = 25;
+  const pm::calib::CameraCalibration c = pm::calib::calibrateCamera(views, board);
+  std::cout << c.viewsUsed << " views, rms " << c.rmsPx << " px, " << c.camera.distortion.describe() << "\n";
+}
+
+// HandEye.h
+void exampleHandEye(const std::vector<vpHomogeneousMatrix> &cMo, const std::vector<vpHomogeneousMatrix> &fMh)
+{
+  // cMo: the board in the camera at each view (e.g. CameraCalibration's ViewReport::cMo)
+  // fMh: the hand in the robot's base frame at the same views (the robot's forward kinematics)
+  const pm::calib::HandEyeFit fit = pm::calib::solveHandEye(cMo, fMh);
+  std::cout << "hMc " << vpPoseVector(fit.hMc).t() << ", board spread " << fit.spreadMm << " mm\n";
 }
 
 } // namespace pm_examples

@@ -311,4 +311,12 @@ void exampleTargetRendering()
   pm::lab::writeRenderedTargets("render", {t}, pm::core::Phi{0, 0, 500, 0, 0, 0}, pm::sim::SceneParams(), false);
 }
 
+// SimulatedCalibration.h
+void exampleSimulatedCalibration2(const pm::core::LensDistortion &lens, const pm::calib::Pattern &board)
+{
+  const pm::core::PinholeCamera truth = pm::lab::labRigWithLens(lens).left;
+  const pm::lab::CalibrationPass pass = pm::lab::renderCalibrationViews(truth, board, 30, pm::lab::SimulatedCalibrationParams());
+  const pm::calib::CameraCalibration c = pm::calib::calibrateCamera(pass.views, board);
+}
+
 } // namespace pm_examples

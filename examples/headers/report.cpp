@@ -22,6 +22,7 @@
 #include "pm/precise/PreciseStage.h"
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/tracker/StaticDetection.h"
+#include "pm/calib/HandEye.h"
 namespace pm_examples {
 
 // AllAroundOutputs.h
@@ -164,6 +165,21 @@ void exampleObjectiveProfilesFile(pm::io::StagedFiles &files, const pm::core::St
 {
   const pm::report::ProfileResult r = pm::report::writeObjectiveProfiles(files, fitness, precise, truth, 6.0, 0.25);
   std::cout << "F peaks " << r.axes[0].fitnessPeakDeg << " deg off the truth about x\n";
+}
+
+// CalibrationOutputs.h
+void exampleCalibrationOutputs3(const std::vector<pm::calib::CalibrationView> &views, const pm::calib::ChessBoard &board,
+                                const std::vector<vpHomogeneousMatrix> &cMo, const std::vector<vpHomogeneousMatrix> &fMh)
+{
+  pm::report::CameraCalibrationOutputs o;
+  o.source = std::to_string(views.size()) + " images";
+  o.board = board.describe();
+  o.calibration = pm::calib::calibrateCamera(views, board);
+  o.handEye = pm::calib::solveHandEye(cMo, fMh); // cMo from o.calibration.views, fMh from the robot
+  o.calibration.camera.hMc = o.handEye->hMc;
+  o.poseOnHand = "hand-eye from " + std::to_string(fMh.size()) + " hand poses";
+  pm::report::writeCameraCalibration("rig", o);
+  std::cout << pm::report::describeCameraCalibration(o, "rig");
 }
 
 } // namespace pm_examples

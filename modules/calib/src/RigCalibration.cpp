@@ -8,44 +8,16 @@
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpImageDraw.h>
 
+#include "CalibrationSteps.h"
+#include "pm/calib/CameraCalibration.h"
 #include "pm/core/Error.h"
 
 namespace pm::calib {
 
-namespace {
-
-std::vector<cv::Point2f> toCv(const std::vector<vpImagePoint> &p)
-{
-  std::vector<cv::Point2f> out(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i)
-    out[i] = cv::Point2f(static_cast<float>(p[i].get_u()), static_cast<float>(p[i].get_v()));
-  return out;
-}
-
-cv::Mat grey(const vpImage<vpRGBa> &I, vpImage<unsigned char> &store)
-{
-  vpImageConvert::convert(I, store);
-  return cv::Mat(static_cast<int>(store.getHeight()), static_cast<int>(store.getWidth()), CV_8UC1, store.bitmap);
-}
-
-vpCameraParameters vispCamera(const cv::Mat &K)
-{
-  vpCameraParameters cam;
-  cam.initPersProjWithoutDistortion(K.at<double>(0, 0), K.at<double>(1, 1), K.at<double>(0, 2), K.at<double>(1, 2));
-  return cam;
-}
-
-template <class F> bool errorFree(F &&f)
-{
-  try {
-    f();
-    return true;
-  } catch (const core::Error &) {
-    return false;
-  }
-}
-
-} // namespace
+using detail::onBoard;
+using detail::toCv;
+using detail::vispCamera;
+using detail::calibrateIntrinsics;
 
 void RigCalibrationParams::validate() const
 {
@@ -79,35 +51,13 @@ struct CalibrationViews
   std::vector<int> monoOfStereo[2];                      //!< per stereo pair, its index among the camera's own views
 };
 
-cv::Point3f onBoard(const vpPoint &P)
-{
-  return cv::Point3f(static_cast<float>(P.get_oX() * 1e3), static_cast<float>(P.get_oY() * 1e3), 0.f);
-}
-
 //! The board in camera \e k's image of \e p (checked for size and blur), or empty with the reason in \e why.
 PatternDetection detectInCamera(const StereoImagePair &p, int k, const Pattern &board, const RigCalibrationParams &params, unsigned w,
                                 unsigned h, PairReport &rep, std::string &why)
 {
   const vpImage<vpRGBa> &im = k ? p.right : p.left;
-  const char *side = k ? "right" : "left";
   try {
-    if (im.getWidth() != w || im.getHeight() != h)
-      throw core::Error(std::string(side) + " image is " + std::to_string(im.getWidth()) + "x" + std::to_string(im.getHeight()) +
-                  ", the first pair's are " + std::to_string(w) + "x" + std::to_string(h));
-    PatternDetection det = board.detect(im, side);
-    if (det.pixels.size() < 6)
-      throw core::Error(std::string("only ") + std::to_string(det.pixels.size()) + " features in the " + side + " image (6 needed)");
-    if (const ChessBoard *chess = dynamic_cast<const ChessBoard *>(&board)) {
-      vpImage<unsigned char> g;
-      const cv::Scalar sh = cv::estimateChessboardSharpness(grey(im, g), cv::Size(chess->innerCols, chess->innerRows), toCv(det.pixels));
-      rep.edgeWidthPx[k] = sh[0];
-      if (!(sh[0] <= params.maxEdgeWidthPx)) {
-        std::ostringstream os;
-        os.precision(2);
-        os << std::fixed << "blurred: the " << side << " board's edges are " << sh[0] << " px wide (limit " << params.maxEdgeWidthPx << ")";
-        throw core::Error(os.str());
-      }
-    }
+    PatternDetection det = detectCalibrationBoard(im, k ? "right" : "left", board, params.maxEdgeWidthPx, w, h, rep.edgeWidthPx[k]);
     rep.usedBy[k] = true;
     return det;
   } catch (const core::Error &e) {
@@ -176,21 +126,6 @@ void requireEnoughPairs(const RigCalibration &result, std::size_t given, const R
     if (!r.used)
       os << "\n  " << r.name << ": " << r.reason;
   throw core::Error(os.str());
-}
-
-//! One camera's intrinsics and its board poses (OpenCV), k3 fixed at 0 when it bends the lens model back on itself.
-double calibrateOneCamera(const CalibrationViews &v, int k, const cv::Size &size, cv::Mat &K, cv::Mat &D, std::vector<cv::Mat> &rvecs,
-                       std::vector<cv::Mat> &tvecs, bool &k3Fixed)
-{
-  double rms = cv::calibrateCamera(v.monoObject[k], v.monoImage[k], size, K, D, rvecs, tvecs);
-  // Too few views at the image's edges can leave k3 free to bend the lens model back on itself
-  // there; the usual remedy is to fix k3 at 0.
-  const core::LensDistortion lens{std::vector<double>(D.begin<double>(), D.end<double>())};
-  if (!errorFree([&] { lens.validate(vispCamera(K), static_cast<unsigned>(size.width), static_cast<unsigned>(size.height), "camera"); })) {
-    rms = cv::calibrateCamera(v.monoObject[k], v.monoImage[k], size, K, D, rvecs, tvecs, cv::CALIB_FIX_K3);
-    k3Fixed = true;
-  }
-  return rms;
 }
 
 //! The rig of the stereo pose cRMcL = [R T] (mm) and the cameras' intrinsics, its hand frame halfway between them.
@@ -268,8 +203,8 @@ RigCalibration calibrateRig(const std::vector<StereoImagePair> &pairs, const Pat
   const cv::Size size(static_cast<int>(w), static_cast<int>(h));
   cv::Mat K[2], D[2];
   std::vector<cv::Mat> rvecs[2], tvecs[2];
-  result.rmsLeftPx = calibrateOneCamera(v, 0, size, K[0], D[0], rvecs[0], tvecs[0], result.k3Fixed[0]);
-  result.rmsRightPx = calibrateOneCamera(v, 1, size, K[1], D[1], rvecs[1], tvecs[1], result.k3Fixed[1]);
+  result.rmsLeftPx = calibrateIntrinsics(v.monoObject[0], v.monoImage[0], size, K[0], D[0], rvecs[0], tvecs[0], result.k3Fixed[0]);
+  result.rmsRightPx = calibrateIntrinsics(v.monoObject[1], v.monoImage[1], size, K[1], D[1], rvecs[1], tvecs[1], result.k3Fixed[1]);
   cv::Mat R, T, E, F, perView;
   result.rmsStereoPx = cv::stereoCalibrate(v.object, v.image[0], v.image[1], K[0], D[0], K[1], D[1], size, R, T, E, F, perView,
                                            cv::CALIB_FIX_INTRINSIC);

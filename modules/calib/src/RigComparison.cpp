@@ -40,4 +40,13 @@ CalibrationErrors compareRigs(const core::StereoRig &estimated, const core::Ster
   return e;
 }
 
+CameraErrors compareCameras(const core::PinholeCamera &estimated, const core::PinholeCamera &truth)
+{
+  CameraErrors e;
+  e.reprojectionRmsPx = cameraMapRms(estimated, truth);
+  e.translationErrorMm = (estimated.hMc.getTranslationVector() - truth.hMc.getTranslationVector()).frobeniusNorm() * 1e3;
+  e.rotationErrorDeg = (truth.hMc.inverse() * estimated.hMc).getThetaUVector().getTheta() * 180.0 / M_PI;
+  return e;
+}
+
 } // namespace pm::calib

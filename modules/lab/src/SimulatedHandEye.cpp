@@ -6,10 +6,9 @@
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
-#include <visp3/vision/vpHandEyeCalibration.h>
 
+#include "pm/calib/HandEye.h"
 #include "pm/core/Error.h"
-#include "pm/io/QuietStdout.h"
 #include "pm/lab/ClosedLoop.h"
 #include "pm/sim/Rasterizer.h"
 #include "pm/robot/Pa10Model.h"
@@ -71,14 +70,7 @@ HandEyeResult simulatedHandEye(const sim::Scene &scene, const core::StereoRig &t
   HandEyeResult r;
   r.poses = fMe.size();
   for (int c = 0; c < 2; ++c) {
-    vpHomogeneousMatrix eMc;
-    int status = 0;
-    {
-      io::QuietStdout silence; // vpHandEyeCalibration reports on std::cout
-      status = vpHandEyeCalibration::calibrate(cMb[c], fMe, eMc);
-    }
-    if (status != 0)
-      throw core::Error("hand-eye: vpHandEyeCalibration failed (poses too alike?)");
+    const vpHomogeneousMatrix eMc = calib::solveHandEye(cMb[c], fMe).hMc;
     const vpHomogeneousMatrix ref = (c ? rig.right : rig.left).hMc;
     HandEyeEstimate &h = c ? r.right : r.left;
     h.hMc = eMc;

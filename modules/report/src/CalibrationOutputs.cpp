@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 
@@ -60,28 +61,20 @@ nlohmann::json summaryJson(const RigCalibrationOutputs &o)
   return s;
 }
 
-} // namespace
-
-std::string writeRigCalibration(const std::string &dir, const RigCalibrationOutputs &o)
+//! The report's files (written by \e writeReport) and the rig's. The rig's (saveRig names them after
+//! rig.json) go to a hidden folder first and join the report only when everything is written: no
+//! half-written output.
+void writeWithRig(const std::string &dir, const core::CameraRig &rig, const std::string &description,
+                  const std::function<void(io::StagedFiles &)> &writeReport)
 {
-  const calib::RigCalibration &c = o.calibration;
-  const std::string text = summaryJson(o).dump(2) + "\n";
   io::StagedFiles files(dir);
-  // The rig's files (saveRig names them after rig.json) go to a hidden folder first and join the
-  // report only when everything is written: no half-written output.
   const std::filesystem::path hidden = std::filesystem::path(files.dir()) / ".partial-rig";
   std::error_code ec;
   std::filesystem::remove_all(hidden, ec);
   std::filesystem::create_directories(hidden);
   try {
-    io::saveRig(c.rig, (hidden / "rig.json").string(), "cameras.xml", "calibrated by pm-calibrate-rig from " + o.source);
-    vpImage<vpRGBa> coverage = calib::coverageImage(c, o.arrowGain);
-    std::ostringstream legend;
-    legend << "left: corners found (a colour per view), residuals x" << o.arrowGain << " (red)";
-    drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
-    drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
-    io::writeImage(coverage, files.stage("coverage.png"));
-    io::writeTextFile(files.stage("summary.json"), text);
+    io::saveRig(rig, (hidden / "rig.json").string(), "cameras.xml", description);
+    writeReport(files);
     files.commit();
     for (const auto &e : std::filesystem::directory_iterator(hidden))
       std::filesystem::rename(e.path(), std::filesystem::path(files.dir()) / e.path().filename());
@@ -90,6 +83,23 @@ std::string writeRigCalibration(const std::string &dir, const RigCalibrationOutp
     throw;
   }
   std::filesystem::remove_all(hidden, ec);
+}
+
+} // namespace
+
+std::string writeRigCalibration(const std::string &dir, const RigCalibrationOutputs &o)
+{
+  const calib::RigCalibration &c = o.calibration;
+  const std::string text = summaryJson(o).dump(2) + "\n";
+  writeWithRig(dir, c.rig, "calibrated by pm-calibrate-rig from " + o.source, [&](io::StagedFiles &files) {
+    vpImage<vpRGBa> coverage = calib::coverageImage(c, o.arrowGain);
+    std::ostringstream legend;
+    legend << "left: corners found (a colour per view), residuals x" << o.arrowGain << " (red)";
+    drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
+    drawLabel(coverage, "right", 8, static_cast<int>(c.rig.left.width) + 16, vpRGBa(255, 255, 255));
+    io::writeImage(coverage, files.stage("coverage.png"));
+    io::writeTextFile(files.stage("summary.json"), text);
+  });
   return text;
 }
 
@@ -119,6 +129,88 @@ std::string describeRigCalibration(const RigCalibrationOutputs &o, const std::st
         << e.reprojectionRmsPx[0] << " / " << e.reprojectionRmsPx[1] << " px rms\n";
   }
   out << "  written to " << dir << "/ (rig.json, cameras.xml, rig_left.yml, rig_right.yml, coverage.png, summary.json)\n";
+  return out.str();
+}
+
+namespace {
+
+nlohmann::json poseJson(const vpHomogeneousMatrix &M)
+{
+  const vpPoseVector p(M);
+  return {p[0], p[1], p[2], p[3], p[4], p[5]};
+}
+
+nlohmann::json cameraSummaryJson(const CameraCalibrationOutputs &o)
+{
+  const calib::CameraCalibration &c = o.calibration;
+  nlohmann::json views = nlohmann::json::array();
+  for (const calib::ViewReport &v : c.views) {
+    nlohmann::json j{{"name", v.name}, {"used", v.used}, {"edge_width_px", v.edgeWidthPx}};
+    if (v.used)
+      j["rms_px"] = v.rmsPx;
+    else
+      j["reason"] = v.reason;
+    views.push_back(j);
+  }
+  nlohmann::json camera = cameraJson(c.camera);
+  camera["hMc"] = poseJson(c.camera.hMc);
+  nlohmann::json s{{"source", o.source},     {"board", o.board},         {"cameras", 1},
+                   {"rms_px", c.rmsPx},      {"views_used", c.viewsUsed}, {"views_rejected", static_cast<int>(c.views.size()) - c.viewsUsed},
+                   {"k3_fixed", c.k3Fixed},  {"camera", camera},          {"pose_on_hand", o.poseOnHand},
+                   {"views", views}};
+  if (o.handEye)
+    s["hand_eye"] = {{"views", o.handEye->views}, {"board_spread_mm", o.handEye->spreadMm}, {"board_spread_deg", o.handEye->spreadDeg}};
+  if (o.truth) {
+    const calib::CameraErrors e = calib::compareCameras(c.camera, *o.truth);
+    s["truth"] = {{"reprojection_error_rms_px", e.reprojectionRmsPx},
+                  {"hMc_translation_error_mm", e.translationErrorMm},
+                  {"hMc_rotation_error_deg", e.rotationErrorDeg}};
+  }
+  return s;
+}
+
+} // namespace
+
+std::string writeCameraCalibration(const std::string &dir, const CameraCalibrationOutputs &o)
+{
+  const calib::CameraCalibration &c = o.calibration;
+  const std::string text = cameraSummaryJson(o).dump(2) + "\n";
+  writeWithRig(dir, core::CameraRig(std::vector<core::PinholeCamera>{c.camera}),
+               "one camera calibrated by pm-calibrate-rig from " + o.source + "; its pose on the hand: " + o.poseOnHand,
+               [&](io::StagedFiles &files) {
+                 vpImage<vpRGBa> coverage = calib::coverageImage(c, o.arrowGain);
+                 std::ostringstream legend;
+                 legend << "corners found (a colour per view), residuals x" << o.arrowGain << " (red)";
+                 drawLabel(coverage, legend.str(), 8, 8, vpRGBa(255, 255, 255));
+                 io::writeImage(coverage, files.stage("coverage.png"));
+                 io::writeTextFile(files.stage("summary.json"), text);
+               });
+  return text;
+}
+
+std::string describeCameraCalibration(const CameraCalibrationOutputs &o, const std::string &dir)
+{
+  const calib::CameraCalibration &c = o.calibration;
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(4) << "one-camera calibration (" << o.board << "; " << o.source << ": " << c.viewsUsed
+      << " views used)\n  rms " << c.rmsPx << " px; lens: " << c.camera.distortion.describe() << "\n";
+  if (c.k3Fixed)
+    out << "  k3 held at 0 (with it free the model folded the image: add views with the board near the image's edges)\n";
+  const vpPoseVector p(c.camera.hMc);
+  out << std::setprecision(2) << "  pose on the hand (" << o.poseOnHand << "): " << p[0] * 1e3 << ", " << p[1] * 1e3 << ", " << p[2] * 1e3
+      << " mm; theta-u " << p[3] * 180 / M_PI << ", " << p[4] * 180 / M_PI << ", " << p[5] * 180 / M_PI << " deg\n";
+  if (o.handEye)
+    out << "  hand-eye check: the board's place in the world from each of " << o.handEye->views << " views agrees within "
+        << o.handEye->spreadMm << " mm / " << o.handEye->spreadDeg << " deg rms\n";
+  for (const calib::ViewReport &v : c.views)
+    if (!v.used)
+      out << "  " << v.name << " left out: " << v.reason << "\n";
+  if (o.truth) {
+    const calib::CameraErrors e = calib::compareCameras(c.camera, *o.truth);
+    out << std::setprecision(4) << "  against the true camera: reprojection of its lens " << e.reprojectionRmsPx
+        << " px rms; pose on the hand " << e.translationErrorMm << " mm, " << e.rotationErrorDeg << " deg\n";
+  }
+  out << "  written to " << dir << "/ (rig.json, cameras.xml, rig_camera.yml, coverage.png, summary.json)\n";
   return out.str();
 }
 

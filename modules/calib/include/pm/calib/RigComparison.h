@@ -27,4 +27,15 @@ struct CalibrationErrors
 //! How far \e estimated is from \e truth (frame-free: cLMcR, and each camera's pixel-to-ray map).
 CalibrationErrors compareRigs(const core::StereoRig &estimated, const core::StereoRig &truth);
 
+//! How far one estimated camera lands from the true one (compareCameras()).
+struct CameraErrors
+{
+  double reprojectionRmsPx = 0;  //!< rms distance, over a grid of the raw image, between where the two see the same ray (px)
+  double translationErrorMm = 0; //!< between their poses on the hand, hMc (mm)
+  double rotationErrorDeg = 0;   //!< between their hMc rotations (deg)
+};
+
+//! How far \e estimated is from \e truth: the pixel-to-ray map, and the pose on the hand.
+CameraErrors compareCameras(const core::PinholeCamera &estimated, const core::PinholeCamera &truth);
+
 } // namespace pm::calib

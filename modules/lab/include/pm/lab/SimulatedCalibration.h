@@ -14,6 +14,7 @@
 */
 #include <functional>
 #include <vector>
+#include "pm/calib/CameraCalibration.h"
 #include "pm/calib/RigCalibration.h"
 
 namespace pm::lab {
@@ -37,5 +38,30 @@ core::StereoRig labRigWithLens(const core::LensDistortion &lens);
 std::vector<calib::StereoImagePair> renderCalibrationPairs(const core::StereoRig &rig, const calib::Pattern &board, int n,
                                                            const SimulatedCalibrationParams &params,
                                                            const std::function<void()> &step = {});
+
+/*!
+  One camera's calibration in the lab: the images of a board fixed in the world and the hand poses
+  they were taken at (renderCalibrationViews()).
+*/
+struct CalibrationPass
+{
+  std::vector<calib::CalibrationView> views; //!< the camera's images of the board
+  std::vector<vpHomogeneousMatrix> fMh;      //!< the hand in the world (the board's frame) at each view
+};
+
+/*!
+  \e n images of \e board, fixed in the world, seen by \e camera on the hand at random poses around
+  500 mm (every other one off-centre and tilted, so that the corners reach the image's edges), and
+  the hand's pose at each: a one-camera rig's calibration images with its robot's poses, for the
+  intrinsics (calib::calibrateCamera()) and the camera's pose on the hand (calib::solveHandEye()).
+  \e step is called after each view.
+  \code
+      const pm::core::PinholeCamera truth = pm::lab::labRigWithLens(lens).left;
+      const pm::lab::CalibrationPass pass = pm::lab::renderCalibrationViews(truth, board, 30, pm::lab::SimulatedCalibrationParams());
+      const pm::calib::CameraCalibration c = pm::calib::calibrateCamera(pass.views, board);
+  \endcode
+*/
+CalibrationPass renderCalibrationViews(const core::PinholeCamera &camera, const calib::Pattern &board, int n,
+                                       const SimulatedCalibrationParams &params, const std::function<void()> &step = {});
 
 } // namespace pm::lab

@@ -1,7 +1,8 @@
 #pragma once
 /*!
   \file CalibrationOutputs.h
-  What pm-calibrate-rig writes of a stereo rig calibration: the rig (rig.json, cameras.xml and,
+  What pm-calibrate-rig writes of a stereo rig calibration, or of one camera's (the same files, one
+  camera in the rig, its pose on the hand from a hand-eye calibration or given): the rig (rig.json, cameras.xml and,
   for a lens ViSP's model cannot hold, rig_left.yml / rig_right.yml), coverage.png (every corner
   found, residuals as red arrows) and summary.json (the residuals, the baseline, every pair's
   fate and, in the lab, the errors to the rig that took the pictures); what pm-calib-baseline
@@ -13,6 +14,8 @@
 #include <string>
 
 #include "pm/calib/BaselineCheck.h"
+#include "pm/calib/CameraCalibration.h"
+#include "pm/calib/HandEye.h"
 #include "pm/calib/RigCalibration.h"
 #include "pm/calib/RigComparison.h"
 
@@ -44,6 +47,39 @@ struct RigCalibrationOutputs
 std::string writeRigCalibration(const std::string &dir, const RigCalibrationOutputs &o);
 //! What pm-calibrate-rig prints of it (written to \e dir): residuals, baseline, lenses, the pairs left out and why.
 std::string describeRigCalibration(const RigCalibrationOutputs &o, const std::string &dir);
+
+//! A one-camera calibration (pm-calibrate-rig --images) and what it is measured against.
+struct CameraCalibrationOutputs
+{
+  std::string source;                   //!< the images, in words ("14 images")
+  std::string board;                    //!< the pattern, in words (calib::Pattern::describe())
+  calib::CameraCalibration calibration; //!< what calib::calibrateCamera() found; its camera's hMc is the one written
+  std::string poseOnHand;               //!< where hMc comes from, in words ("hand-eye from 20 hand poses", "given")
+  std::optional<calib::HandEyeFit> handEye; //!< the hand-eye fit, when hand poses were given
+  std::optional<core::PinholeCamera> truth; //!< the camera that took the pictures, when known (the lab)
+  double arrowGain = 20;                //!< coverage.png: residual arrows drawn this many times longer
+};
+
+/*!
+  Writes the one-camera rig (rig.json, cameras.xml and, for a lens ViSP's model cannot hold,
+  rig_camera.yml), coverage.png and summary.json into \e dir (created if missing); returns
+  summary.json's text. Throws pm::core::Error; on an error nothing new is left in \e dir.
+
+  \code
+    pm::report::CameraCalibrationOutputs o;
+    o.source = std::to_string(views.size()) + " images";
+    o.board = board.describe();
+    o.calibration = pm::calib::calibrateCamera(views, board);
+    o.handEye = pm::calib::solveHandEye(cMo, fMh); // cMo from o.calibration.views, fMh from the robot
+    o.calibration.camera.hMc = o.handEye->hMc;
+    o.poseOnHand = "hand-eye from " + std::to_string(fMh.size()) + " hand poses";
+    pm::report::writeCameraCalibration("rig", o);
+    std::cout << pm::report::describeCameraCalibration(o, "rig");
+  \endcode
+*/
+std::string writeCameraCalibration(const std::string &dir, const CameraCalibrationOutputs &o);
+//! What pm-calibrate-rig prints of it (written to \e dir): residual, lens, pose on the hand, the views left out and why.
+std::string describeCameraCalibration(const CameraCalibrationOutputs &o, const std::string &dir);
 
 //! A camera's hand-eye calibration against the rig file (pm-calib-baseline --hand-eye).
 struct HandEyeAgreement
