@@ -28,6 +28,7 @@ namespace {
 struct Options
 {
   std::string out, target = "C12", left, right, modelPath, pose = "0,0,500,0,0,0", truthText;
+  std::vector<std::string> images; //!< any rig: one image per camera
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
   bool quiet = false, allTargets = false;
   double maxTimeS = 10;
@@ -44,13 +45,14 @@ void addOptions(CLI::App &app, Options &o)
   optAll->excludes(optTarget);
   auto *optL = app.add_option("--left", o.left, "left image of a user's stereo pair");
   auto *optR = app.add_option("--right", o.right, "right image of a user's stereo pair");
-  auto *optM = app.add_option("--model", o.modelPath, "photo-model file (with --left/--right)");
-  optL->needs(optR)->needs(optM)->excludes(optTarget)->excludes(optAll);
+  auto *optI = app.add_option("--images", o.images, "a user's still frame of any rig: one image per camera of --rig, in its order");
+  auto *optM = app.add_option("--model", o.modelPath, "photo-model file (with --left/--right or --images)");
+  optL->needs(optR)->needs(optM)->excludes(optTarget)->excludes(optAll)->excludes(optI);
   optR->needs(optL);
-  optM->needs(optL);
+  optI->needs(optM)->excludes(optTarget)->excludes(optAll);
   app.add_option("--pose", o.pose, "simulator: the target's pose x,y,z,eps1,eps2,eps3 in the hand frame");
-  app.add_option("--truth", o.truthText, "user's pair: the true pose, if known, for the errors")->needs(optL);
-  app.add_option("--rig", o.rigPath, "stereo rig file");
+  app.add_option("--truth", o.truthText, "user's images: the true pose, if known, for the errors");
+  app.add_option("--rig", o.rigPath, "rig file: a stereo rig, or one to four cameras");
   app.add_option("--max-time-s", o.maxTimeS, "give up after this long")->check(CLI::Range(0.001, 3600.0));
   app.add_option("--patience", o.patience, "stop when the best has not improved for this many frames")->check(CLI::Range(1, 100000));
   pm::app::addLabModelOptions(app, o.lab);
@@ -73,11 +75,16 @@ pm::tracker::TrackerParams detectionDefaults()
 }
 
 //! A user's pair (\e code empty, its truth --truth if given) or the simulator's of lab target \e code at \e ref.
-pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm::core::Phi &ref, const pm::core::StereoRig &rig)
+pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm::core::Phi &ref, const pm::core::CameraRig &rig)
 {
   if (!code.empty())
     return pm::lab::renderStillPair(pm::sim::makeTarget(code), ref, rig, o.sp, o.lab);
-  pm::lab::StillPair p = pm::lab::loadStillPair(o.left, o.right, o.modelPath);
+  const std::vector<std::string> files = o.images.empty() ? std::vector<std::string>{o.left, o.right} : o.images;
+  if (files.size() != rig.size())
+    throw CLI::ValidationError(o.images.empty() ? "--left/--right" : "--images",
+                               std::to_string(files.size()) + " image" + (files.size() == 1 ? "" : "s") + " for a rig of " +
+                                   std::to_string(rig.size()) + " camera" + (rig.size() == 1 ? "" : "s") + " (one per camera: --images)");
+  pm::lab::StillPair p = pm::lab::loadStillPair(files, o.modelPath);
   p.haveTruth = !o.truthText.empty();
   p.truth = ref;
   if (p.haveTruth) {
@@ -88,7 +95,7 @@ pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm:
 }
 
 //! Detects the target in pair \e code (see loadPair) into \e dir; returns its summary.
-nlohmann::json detectOne(const Options &o, const pm::tracker::TrackerParams &tp, const pm::core::StereoRig &rig,
+nlohmann::json detectOne(const Options &o, const pm::tracker::TrackerParams &tp, const pm::core::CameraRig &rig,
                          const pm::core::Phi &ref, const std::string &code, const std::string &dir)
 {
   const pm::lab::StillPair p = loadPair(o, code, ref, rig);
@@ -97,7 +104,7 @@ nlohmann::json detectOne(const Options &o, const pm::tracker::TrackerParams &tp,
   pm::tracker::DetectionParams dp;
   dp.maxTimeS = o.maxTimeS;
   dp.patience = o.patience;
-  const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, {p.left, p.right}, dp);
+  const pm::tracker::Detection d = pm::tracker::detectStatic(tracker, p.view(), dp);
   pm::report::DetectionOutputs out;
   out.source = p.source;
   out.detection = d;
@@ -109,7 +116,7 @@ nlohmann::json detectOne(const Options &o, const pm::tracker::TrackerParams &tp,
     out.peak = pm::tracker::nearestFitnessPeak(tracker.fitness(), p.truth, tp.search.space);
     out.fitnessAtPeak = tracker.fitness().evaluate(out.peak);
   }
-  const nlohmann::json s = nlohmann::json::parse(pm::report::writeDetection(dir, out, tracker.fitness(), p.left, p.right));
+  const nlohmann::json s = nlohmann::json::parse(pm::report::writeDetection(dir, out, tracker.fitness(), p.view()));
   if (!o.allTargets && !o.quiet)
     std::cout << pm::report::describeDetection(out, dir) << std::flush;
   return s;
@@ -136,7 +143,7 @@ void addRow(const std::string &code, const std::string &name, const nlohmann::js
 }
 
 //! --all-targets: every lab target into OUT/<code>/, and Table 1 (table1.md, table1.csv, summary.json).
-int detectAll(const Options &o, const pm::tracker::TrackerParams &tp, const pm::core::StereoRig &rig, const pm::core::Phi &ref)
+int detectAll(const Options &o, const pm::tracker::TrackerParams &tp, const pm::core::CameraRig &rig, const pm::core::Phi &ref)
 {
   pm::io::StagedFiles files(o.out);
   std::ostringstream md, csv;
@@ -193,10 +200,12 @@ int main(int argc, char **argv)
     const pm::tracker::TrackerParams tp = trackerOptions.resolve();
     const auto v = pm::app::parseNumbers(o.pose, 6, "--pose");
     const pm::core::Phi ref{v[0], v[1], v[2], v[3], v[4], v[5]};
-    const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
+    if (!o.truthText.empty() && o.left.empty() && o.images.empty())
+      throw CLI::ValidationError("--truth", "the truth of a user's images (--left/--right or --images)");
+    const pm::core::CameraRig rig = pm::io::loadCameraRig(o.rigPath);
     if (o.allTargets)
       return detectAll(o, tp, rig, ref);
-    detectOne(o, tp, rig, ref, o.left.empty() ? o.target : std::string(), o.out);
+    detectOne(o, tp, rig, ref, o.left.empty() && o.images.empty() ? o.target : std::string(), o.out);
     return 0;
   });
 }

@@ -68,8 +68,8 @@ void addOptions(CLI::App &app, Options &o)
 pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm::core::Phi &ref, const pm::core::StereoRig &rig)
 {
   if (code.empty()) {
-    pm::lab::StillPair p = pm::lab::loadStillPair(o.left, o.right, o.modelPath);
-    pm::lab::requireSameSize(p, o.left, o.right);
+    pm::lab::StillPair p = pm::lab::loadStillPair({o.left, o.right}, o.modelPath);
+    pm::lab::requireSameSize(p, {o.left, o.right});
     p.truth = ref;
     return p;
   }
@@ -84,15 +84,15 @@ pm::report::FitnessMapsResult mapOne(const Options &o, const pm::core::StereoRig
 {
   const pm::lab::StillPair p = loadPair(o, code, ref, rig);
   pm::core::StereoFitness fit(rig, p.model, o.fp);
-  fit.setImages(p.left, p.right);
+  fit.setImages(p.images[0], p.images[1]);
   const std::vector<pm::core::FitnessMapSpec> specs = pm::core::paperFitnessMaps(o.posStep, o.epsStep);
   pm::app::Progress progress("fitness maps", specs.size(), silent);
   const pm::report::FitnessMapsResult r =
-      pm::report::writeFitnessMaps(dir, fit, p.model.size(), p.truth, specs, p.source, p.left, p.right, [&] { progress.step(); });
+      pm::report::writeFitnessMaps(dir, fit, p.model.size(), p.truth, specs, p.source, p.images[0], p.images[1], [&] { progress.step(); });
   progress.finish();
   if (o.profiles && p.model.hasContours()) { // beside the maps, in the same folder
     pm::precise::PreciseStage precise(rig, p.model);
-    precise.setImages({p.left, p.right});
+    precise.setImages(p.view());
     pm::io::StagedFiles more(dir);
     const pm::report::ProfileResult pr = pm::report::writeObjectiveProfiles(more, fit, precise, p.truth, 6.0, 0.25);
     more.commit();

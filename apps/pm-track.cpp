@@ -47,6 +47,7 @@ struct Options
   std::string out, target = "C12", trajectoryPath = pm::app::dataPath("trajectories/table2.csv");
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json"), modelPath, truthPath;
   std::vector<std::string> leftImages, rightImages;
+  std::vector<std::string> cameraImages, cameraSources; //!< any rig: one image pattern, or one live source, per camera
   double holdS = 1.5, moveS = 1.0, fps = 30, durationS = 0;
   int firstFrame = 0, steps = 0;
   bool quiet = false, display = false, savePairs = false;
@@ -56,8 +57,8 @@ struct Options
   pm::capture::VideoCaptureParams vcp;
   pm::app::LabModelChoice labModel;
   pm::sim::SceneParams sp;
-  bool live() const { return !leftSource.empty(); }
-  bool recorded() const { return !leftImages.empty() || live(); }
+  bool live() const { return !leftSource.empty() || !cameraSources.empty(); }
+  bool recorded() const { return !leftImages.empty() || !cameraImages.empty() || live(); }
   bool scene() const { return !sceneDir.empty(); }
   long maxFrames() const { return durationS > 0 ? static_cast<long>(std::floor(durationS * fps)) + 1 : 0; }
 };
@@ -79,24 +80,30 @@ void addOptions(CLI::App &app, Options &o)
   auto *optLS = app.add_option("--left-source", o.leftSource, "live: the left camera through OpenCV's VideoCapture: a device "
                                                              "index, a V4L2 path, a video file or a GStreamer pipeline");
   auto *optRS = app.add_option("--right-source", o.rightSource, "live: the right camera, the same way");
-  app.add_option("--max-skew-ms", o.vcp.maxSkewMs, "live: largest time difference of a left and a right frame paired")
-      ->check(CLI::NonNegativeNumber)->needs(optLS);
-  app.add_option("--stall-s", o.vcp.stallTimeoutS, "live: a camera silent this long is an error")->check(CLI::PositiveNumber)->needs(optLS);
-  optLS->needs(optRS)->needs(optM)->excludes(optTarget)->excludes(optL);
+  auto *optI = app.add_option("--images", o.cameraImages, "recorded sequence of any rig: one printf pattern per camera of --rig, in "
+                                                          "its order (e.g. C_%04d.png for a rig of one camera), from --first-frame");
+  auto *optS = app.add_option("--sources", o.cameraSources, "live, any rig: one source per camera of --rig, in its order, as "
+                                                            "--left-source takes them");
+  app.add_option("--max-skew-ms", o.vcp.maxSkewMs, "live: largest time difference of the cameras' frames taken together")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--stall-s", o.vcp.stallTimeoutS, "live: a camera silent this long is an error")->check(CLI::PositiveNumber);
+  optLS->needs(optRS)->needs(optM)->excludes(optTarget)->excludes(optL)->excludes(optI)->excludes(optS);
   optRS->needs(optLS);
+  optI->needs(optM)->excludes(optTarget)->excludes(optL)->excludes(optS);
+  optS->needs(optM)->excludes(optTarget)->excludes(optL);
   app.add_flag("--display", o.display, "show both views with the model, the state and the frame time in a ViSP window "
                                        "(vpDisplayX; its last picture, read back from the X server, into display.png); "
                                        "without it, or without an X display, headless");
   optL->needs(optR)->needs(optM)->excludes(optTarget);
   optR->needs(optL);
-  optT->needs(optL);
+  (void)optT;
   app.add_option("--first-frame", o.firstFrame, "recorded sequence: index of the first frame")->check(CLI::Range(0, 100000000));
-  auto *optRig = app.add_option("--rig", o.rigPath, "stereo rig file");
+  auto *optRig = app.add_option("--rig", o.rigPath, "rig file: a stereo rig, or one to four cameras (--images, --sources, the simulator)");
   auto *optScene = app.add_option("--scene", o.sceneDir, "a scene rendered by another renderer (pm-export-scene, then "
                                   "scripts/cycles/render.py): the model is built from its pass (views/), as pm-make-model --views "
                                   "builds it, and its sequence is tracked against its truth");
   app.add_flag("--peer", o.scenePeer, "with --scene: the same scene through our own renderer (lab_views/, lab_sequence/)")->needs(optScene);
-  optScene->excludes(optTarget)->excludes(optL)->excludes(optLS)->excludes(optM)->excludes(optRig);
+  optScene->excludes(optTarget)->excludes(optL)->excludes(optLS)->excludes(optM)->excludes(optRig)->excludes(optI)->excludes(optS);
   pm::app::addLabModelOptions(app, o.labModel);
   pm::app::addModelOptions(app, o.labModel.photo);
   pm::app::addSceneOptions(app, o.sp);
@@ -108,31 +115,54 @@ struct Input
   pm::core::PhotoModel model;
   std::unique_ptr<pm::sim::Scene> scene;
   std::unique_ptr<pm::sim::Trajectory> trajectory;
-  std::unique_ptr<pm::capture::StereoSource> source;
+  std::unique_ptr<pm::capture::StereoSource> source; //!< a pair's source, or one of any rig (nextFrame())
   const pm::lab::LabSequence *lab = nullptr; //!< the simulator's sequence (its truth), when simulated
   std::map<long, pm::core::Phi> truthByFrame;
   long frames = 0;                           //!< the frames expected (0: unknown, live)
   std::string description;
 };
 
-Input openRecordedOrLive(const Options &o, const pm::core::StereoRig &rig)
+//! The source of --images (one pattern per camera) or --sources (one per camera), any rig.
+std::unique_ptr<pm::capture::StereoSource> openCameras(const Options &o, const pm::core::CameraRig &rig)
+{
+  pm::capture::VideoCaptureParams vcp = o.vcp;
+  vcp.maxPairs = o.maxFrames();
+  const std::vector<std::string> &given = o.cameraSources.empty() ? o.cameraImages : o.cameraSources;
+  if (given.size() != rig.size())
+    throw CLI::ValidationError(o.cameraSources.empty() ? "--images" : "--sources",
+                               std::to_string(given.size()) + " given for a rig of " + std::to_string(rig.size()) + " camera" +
+                                   (rig.size() == 1 ? "" : "s") + " (one per camera, in the rig's order)");
+  if (!o.cameraSources.empty())
+    return std::make_unique<pm::capture::VideoCaptureSource>(o.cameraSources, vcp);
+  for (const std::string &p : o.cameraImages)
+    if (!pm::app::isImagePattern({p}))
+      throw CLI::ValidationError("--images", "'" + p + "' is not a printf pattern (e.g. C_%04d.png): one pattern per camera");
+  return pm::capture::ImageSequenceSource::ofCameras(o.cameraImages, o.firstFrame, o.fps, 0, 0, o.maxFrames());
+}
+
+Input openRecordedOrLive(const Options &o, const pm::core::CameraRig &rig)
 {
   Input in;
   in.model = pm::io::loadPhotoModel(o.modelPath);
   if (!o.truthPath.empty())
     for (const auto &[frame, pose] : pm::io::readPoseTable(o.truthPath, "frame"))
       in.truthByFrame[frame] = pose;
-  if (o.live()) {
+  if (!o.cameraImages.empty() || !o.cameraSources.empty()) {
+    in.source = openCameras(o, rig);
+  } else if (rig.size() != 2) {
+    throw CLI::ValidationError("--left/--right", "a stereo pair, but the rig has " + std::to_string(rig.size()) +
+                                                     " camera" + (rig.size() == 1 ? "" : "s") + ": give --images (or --sources), one per camera");
+  } else if (o.live()) {
     pm::capture::VideoCaptureParams vcp = o.vcp;
     vcp.maxPairs = o.maxFrames();
     in.source = std::make_unique<pm::capture::VideoCaptureSource>(o.leftSource, o.rightSource, vcp);
   } else if (pm::app::isImagePattern(o.leftImages) && pm::app::isImagePattern(o.rightImages)) {
     in.source = std::make_unique<pm::capture::ImageSequenceSource>(o.leftImages.front(), o.rightImages.front(), o.firstFrame, o.fps,
-                                                                   rig.left.width, rig.left.height, o.maxFrames());
+                                                                   rig[0].width, rig[0].height, o.maxFrames());
   } else {
     in.source = std::make_unique<pm::capture::ImageSequenceSource>(pm::app::imageFiles(o.leftImages, o.firstFrame),
                                                                    pm::app::imageFiles(o.rightImages, o.firstFrame), o.fps,
-                                                                   rig.left.width, rig.left.height, o.maxFrames());
+                                                                   rig[0].width, rig[0].height, o.maxFrames());
   }
   if (const auto *seq = dynamic_cast<const pm::capture::ImageSequenceSource *>(in.source.get()))
     in.frames = seq->length();
@@ -171,7 +201,7 @@ Input openScene(const Options &o, const pm::core::StereoRig &rig)
   return in;
 }
 
-Input openSimulated(const Options &o, const pm::core::StereoRig &rig)
+Input openSimulated(const Options &o, const pm::core::CameraRig &rig)
 {
   Input in;
   in.trajectory = std::make_unique<pm::sim::Trajectory>(pm::io::readWaypoints(o.trajectoryPath, o.steps), o.holdS, o.moveS);
@@ -187,12 +217,19 @@ Input openSimulated(const Options &o, const pm::core::StereoRig &rig)
   return in;
 }
 
-//! What the run recorded: every frame, and the last pair (for the last frame's picture).
+//! What the run recorded: every frame, and the last frame's images (for its picture).
 struct Run
 {
   std::vector<pm::lab::TrackedFrame> frames;
-  vpImage<vpRGBa> lastL, lastR;
+  std::vector<vpImage<vpRGBa>> last; //!< one per camera
 };
+
+//! What --save-pairs names camera \e k's image of frame \e frame: left_%04d.png and right_%04d.png for a pair, camera<k>_%04d.png otherwise.
+std::string savedImageName(const pm::core::CameraRig &rig, std::size_t k, int frame)
+{
+  const std::string pattern = rig.size() == 2 ? (k ? "right_%04d.png" : "left_%04d.png") : "camera" + std::to_string(k) + "_%04d.png";
+  return pm::app::frameFileName(pattern, frame);
+}
 
 //! The frame's truth, where the simulator or the truth file knows it.
 void setTruth(const Input &in, long index, pm::lab::TrackedFrame &f)
@@ -207,10 +244,40 @@ void setTruth(const Input &in, long index, pm::lab::TrackedFrame &f)
   }
 }
 
-//! Tracks every pair of \e in; with --save-pairs, stages the pairs (and the simulator's truth.csv) in \e files.
-Run track(const Options &o, const pm::core::StereoRig &rig, Input &in, pm::tracker::PhotoModelTracker &tracker, pm::io::StagedFiles &files,
+//! The frame's images against the rig's cameras' sizes; throws naming the first that differs.
+void checkSizes(const pm::capture::CameraFrame &cf, const pm::core::CameraRig &rig)
+{
+  for (std::size_t k = 0; k < cf.images.size() && k < rig.size(); ++k)
+    if (cf.images[k].getWidth() != rig[k].width || cf.images[k].getHeight() != rig[k].height)
+      throw pm::core::Error("the cameras deliver " + std::to_string(cf.images[k].getWidth()) + "x" + std::to_string(cf.images[k].getHeight()) +
+                            " images but the rig's are " + std::to_string(rig[k].width) + "x" + std::to_string(rig[k].height));
+}
+
+//! The live window's picture of the frame: every camera with the model's points, the state in words.
+void showFrame(const pm::capture::CameraFrame &cf, const pm::lab::TrackedFrame &f, int k, const pm::tracker::PhotoModelTracker &tracker,
+               pm::report::LiveView &view)
+{
+  std::ostringstream status;
+  status << std::fixed << std::setprecision(2) << pm::tracker::toString(f.result.state) << ", q " << f.result.quality << ", "
+         << std::setprecision(1) << f.result.computeMs << " ms, frame " << k << (f.result.trusted ? ", trusted" : ", held: ")
+         << (f.result.heldBy && !f.result.trusted ? f.result.heldBy : "");
+  if (cf.images.size() == 2) {
+    view.show(cf.images[0], cf.images[1], tracker.pointScores(0), tracker.pointScores(1), status.str());
+    return;
+  }
+  std::vector<std::vector<pm::core::PointScore>> scores;
+  for (std::size_t c = 0; c < cf.images.size(); ++c)
+    scores.push_back(tracker.pointScores(static_cast<int>(c)));
+  view.show(cf.view(), scores, status.str());
+}
+
+//! Tracks every frame of \e in; with --save-pairs, stages the images (and the simulator's truth.csv) in \e files.
+Run track(const Options &o, const pm::core::CameraRig &rig, Input &in, pm::tracker::PhotoModelTracker &tracker, pm::io::StagedFiles &files,
           pm::report::LiveView &view)
 {
+  if (in.source->cameraCount() != rig.size())
+    throw pm::core::Error(in.source->describe() + " gives " + std::to_string(in.source->cameraCount()) + " images a frame, but the rig has " +
+                          std::to_string(rig.size()) + " camera" + (rig.size() == 1 ? "" : "s"));
   std::ofstream truthCsv;
   if (o.savePairs && in.lab)
     truthCsv.open(files.stage("truth.csv"));
@@ -218,43 +285,37 @@ Run track(const Options &o, const pm::core::StereoRig &rig, Input &in, pm::track
   Run run;
   run.frames.reserve(static_cast<std::size_t>(std::max(0L, in.frames)));
   pm::app::Progress progress("tracking", static_cast<std::size_t>(std::max(0L, in.frames)), o.quiet || in.frames <= 0);
-  pm::capture::StereoFrame sf;
+  pm::capture::CameraFrame cf;
   for (int k = 0;; ++k) {
     const long skippedBefore = in.source->stats().skipped;
-    if (!in.source->next(sf))
+    if (!in.source->nextFrame(cf))
       break;
     for (long s2 = skippedBefore; s2 < in.source->stats().skipped; ++s2) {
       if (!o.quiet)
         std::cerr << "warning: " << in.source->stats().problems[static_cast<std::size_t>(s2)] << " (skipped)" << std::endl;
       progress.step();
     }
-    if (sf.left.getWidth() != rig.left.width || sf.left.getHeight() != rig.left.height)
-      throw pm::core::Error("the cameras deliver " + std::to_string(sf.left.getWidth()) + "x" + std::to_string(sf.left.getHeight()) +
-                            " images but the rig's are " + std::to_string(rig.left.width) + "x" + std::to_string(rig.left.height));
+    checkSizes(cf, rig);
     pm::lab::TrackedFrame f;
-    f.t = sf.timeS;
-    setTruth(in, sf.index, f);
+    f.t = cf.timeS;
+    setTruth(in, cf.index, f);
     if (o.savePairs) {
-      pm::io::writeImage(sf.left, files.stage(pm::app::frameFileName("left_%04d.png", k)));
-      pm::io::writeImage(sf.right, files.stage(pm::app::frameFileName("right_%04d.png", k)));
+      for (std::size_t c = 0; c < cf.images.size(); ++c)
+        pm::io::writeImage(cf.images[c], files.stage(savedImageName(rig, c, k)));
       if (in.lab)
         truthCsv << k << "," << f.truth[0] << "," << f.truth[1] << "," << f.truth[2] << "," << f.truth[3] << ","
                  << f.truth[4] << "," << f.truth[5] << "\n";
     }
-    f.result = tracker.track(sf.left, sf.right);
+    f.result = tracker.track(cf.view());
     run.frames.push_back(f);
-    if (o.display) {
-      std::ostringstream status;
-      status << std::fixed << std::setprecision(2) << pm::tracker::toString(f.result.state) << ", q " << f.result.quality << ", "
-             << std::setprecision(1) << f.result.computeMs << " ms, frame " << k << (f.result.trusted ? ", trusted" : ", held: ")
-             << (f.result.heldBy && !f.result.trusted ? f.result.heldBy : "");
-      view.show(sf.left, sf.right, tracker.pointScores(0), tracker.pointScores(1), status.str());
-    }
-    // Keep the pair without copying it: ViSP's own swap() trades the pixel buffers (both images own
-    // theirs). Not std::move: ViSP 3.5's vpImage loses ownership of its pixels when a moved-from
-    // image is assigned again, and the source refills sf every frame.
-    swap(run.lastL, sf.left);
-    swap(run.lastR, sf.right);
+    if (o.display)
+      showFrame(cf, f, k, tracker, view);
+    // Keep the images without copying them: ViSP's own swap() trades the pixel buffers (both images
+    // own theirs). Not std::move: ViSP 3.5's vpImage loses ownership of its pixels when a moved-from
+    // image is assigned again, and the source refills cf every frame.
+    run.last.resize(cf.images.size());
+    for (std::size_t c = 0; c < cf.images.size(); ++c)
+      swap(run.last[c], cf.images[c]);
     progress.step();
   }
   progress.finish();
@@ -280,8 +341,10 @@ void writeOutputs(const Options &o, const Input &in, Run &run, const pm::tracker
     pm::io::writeImage(pm::lab::drawTrackingErrors(run.frames, report), files.stage("errors.png"));
   const pm::tracker::TrackResult &last = run.frames.back().result;
   tracker.initFromPose(last.hMo); // to draw the last estimate
-  pm::io::writeImage(pm::report::sideBySide(pm::report::drawPointScores(run.lastL, tracker.fitness().pointScores(last.phi, 0), "last frame, left"),
-                                            pm::report::drawPointScores(run.lastR, tracker.fitness().pointScores(last.phi, 1), "right")),
+  std::vector<std::vector<pm::core::PointScore>> scores;
+  for (std::size_t c = 0; c < run.last.size(); ++c)
+    scores.push_back(tracker.fitness().pointScores(last.phi, static_cast<int>(c)));
+  pm::io::writeImage(pm::report::drawCameras(pm::core::CameraImages::of(run.last), scores, pm::report::cameraLabels(run.last.size(), "last frame, ")),
                      files.stage("last_frame.png"));
   if (view.isOpen())
     view.capture(files.stage("display.png"));
@@ -314,19 +377,23 @@ int main(int argc, char **argv)
   Options o;
   addOptions(app, o);
   pm::app::TrackerOptions trackerOptions(app, pm::tracker::TrackerParams());
-  app.add_flag("--save-pairs", o.savePairs, "also write every stereo pair tracked, left_%04d.png and right_%04d.png (and, "
-                                            "on the simulator, its truth in truth.csv): a recording that --left, --right and "
-                                            "--truth replay");
+  app.add_flag("--save-pairs", o.savePairs, "also write every stereo pair tracked, left_%04d.png and right_%04d.png (a rig of "
+                                            "other than two cameras: camera0_%04d.png, camera1_%04d.png ...; and, on the simulator, "
+                                            "its truth in truth.csv): a recording that --left, --right (or --images) and --truth replay");
   app.add_flag("--quiet", o.quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
     const pm::tracker::TrackerParams tp = trackerOptions.resolve();
-    const pm::core::StereoRig rig = pm::io::loadRig(o.scene() ? pm::lab::openRenderedScene(o.sceneDir, o.scenePeer).rigPath : o.rigPath);
+    if (!o.truthPath.empty() && (!o.recorded() || o.live()))
+      throw CLI::ValidationError("--truth", "the truth of a recorded sequence (--left/--right or --images)");
+    // A scene rendered elsewhere is a stereo rig's; the rest take any rig.
+    const pm::core::CameraRig rig = o.scene() ? pm::core::CameraRig(pm::io::loadRig(pm::lab::openRenderedScene(o.sceneDir, o.scenePeer).rigPath))
+                                              : pm::io::loadCameraRig(o.rigPath);
     if (pm::app::isImagePattern(o.leftImages)) // check both patterns before anything else
       pm::app::frameFileName(o.leftImages.front(), 0);
     if (pm::app::isImagePattern(o.rightImages))
       pm::app::frameFileName(o.rightImages.front(), 0);
-    Input in = o.scene() ? openScene(o, rig) : o.recorded() ? openRecordedOrLive(o, rig) : openSimulated(o, rig);
+    Input in = o.scene() ? openScene(o, rig.stereo()) : o.recorded() ? openRecordedOrLive(o, rig) : openSimulated(o, rig);
     pm::tracker::PhotoModelTracker tracker(rig, in.model, tp);
     tracker.initialize(); // no initial pose: a random population
     pm::io::StagedFiles files(o.out);

@@ -204,6 +204,96 @@ TEST(ImageSequence, ListsOfFilesArePairedInOrder)
             std::string::npos);
 }
 
+TEST(VideoCapture, OneOrThreeStreamsAreHeldTogetherAsAPairIs)
+{
+  // One camera: every frame, no skew. Three: the half-rate stream paces them, the others' frames between
+  // its own are counted as unpaired, each frame's skew within the limit.
+  TempDir d("capture");
+  const Recording r = record(d, 12, 2);
+  pm::capture::VideoCaptureSource one(std::vector<std::string>{r.left});
+  EXPECT_EQ(one.cameraCount(), 1u);
+  pm::capture::CameraFrame f;
+  long n = 0;
+  while (one.nextFrame(f)) {
+    ASSERT_EQ(f.images.size(), 1u);
+    EXPECT_EQ(f.images[0].getWidth(), 640u);
+    EXPECT_EQ(f.skewMs, 0.0);
+    ++n;
+  }
+  EXPECT_EQ(n, 12);
+  EXPECT_NE(one.stats().describe().find("12 frames"), std::string::npos) << one.stats().describe();
+  pm::capture::StereoFrame pair;
+  EXPECT_NE(errorOf([&] { pm::capture::VideoCaptureSource(std::vector<std::string>{r.left}).next(pair); }).find("not a stereo pair"),
+            std::string::npos);
+
+  pm::capture::VideoCaptureSource three(std::vector<std::string>{r.left, r.right, r.left});
+  n = 0;
+  while (three.nextFrame(f)) {
+    ASSERT_EQ(f.images.size(), 3u);
+    EXPECT_LE(f.skewMs, 10.0);
+    ++n;
+  }
+  EXPECT_EQ(n, 6);
+  EXPECT_EQ(three.stats().unpaired[0], 5);
+  EXPECT_EQ(three.stats().unpaired[1], 0);
+  EXPECT_EQ(three.stats().unpaired[2], 5);
+  EXPECT_NE(errorOf([&] { pm::capture::VideoCaptureSource(std::vector<std::string>{}); }).find("one to four"), std::string::npos);
+}
+
+TEST(ImageSequence, OneCameraReadsItsFramesAndTheStereoReaderRefusesIt)
+{
+  TempDir d("sequence-one");
+  for (int k = 0; k < 3; ++k)
+    pm::io::writeImage(vpImage<vpRGBa>(48, 64, vpRGBa(static_cast<unsigned char>(10 * k), 0, 0)), d.file("C_" + std::to_string(k) + ".png"));
+  const auto seq = pm::capture::ImageSequenceSource::ofCameras({d.file("C_%d.png")}, 1, 10.0, 64, 48);
+  EXPECT_EQ(seq->length(), 2);
+  EXPECT_EQ(seq->cameraCount(), 1u);
+  pm::capture::CameraFrame f;
+  ASSERT_TRUE(seq->nextFrame(f));
+  EXPECT_EQ(f.index, 1);
+  EXPECT_EQ(f.images[0][0][0].R, 10);
+  EXPECT_EQ(f.view().size(), 1u);
+  pm::capture::StereoFrame pair;
+  EXPECT_NE(errorOf([&] { seq->next(pair); }).find("1 camera, not a stereo pair"), std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::capture::ImageSequenceSource::ofCameras({}, 0, 10.0); }).find("one per camera"), std::string::npos);
+  EXPECT_NE(errorOf([&] { pm::capture::ImageSequenceSource::ofCameras({d.file("X_%d.png")}, 0, 10.0); }).find("the sequence is empty"),
+            std::string::npos);
+}
+
+TEST(PmTrack, TracksOneVideoStreamThroughARigOfOneCamera)
+{
+  TempDir d("track-one");
+  const Recording r = record(d, 30);
+  const std::string rig = pm::test::dataPath("rig/pa10_mono.json");
+  const auto run = runProgram("pm-track", "--rig " + rig + " --sources " + r.left + " --model " + r.model +
+                                              " --budget-evals 1900 --ga-seed 1 --quiet --out " + d.file("o"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto s = nlohmann::json::parse(pm::test::readText(d.file("o/summary.json")));
+  EXPECT_EQ(s["frames"], 30);
+  EXPECT_GT(s["states"].value("tracking", 0), 15) << s["states"].dump();
+  EXPECT_EQ(pm::io::readColorImage(d.file("o/last_frame.png")).getWidth(), 640u); // one camera's picture
+  // pm-detect on one still image of the same camera: the crab found at its distance (500 mm) from scratch.
+  pm::capture::VideoCaptureSource one(std::vector<std::string>{r.left});
+  pm::capture::CameraFrame f;
+  ASSERT_TRUE(one.nextFrame(f));
+  pm::io::writeImage(f.images[0], d.file("still.png"));
+  const auto det = runProgram("pm-detect", "--rig " + rig + " --images " + d.file("still.png") + " --model " + r.model +
+                                               " --max-time-s 2 --quiet --out " + d.file("det"));
+  ASSERT_EQ(det.status, 0) << det.err;
+  const auto ds = nlohmann::json::parse(pm::test::readText(d.file("det/summary.json")));
+  EXPECT_NEAR(ds["pose"][2].get<double>(), 500.0, 15.0) << ds["pose"].dump();
+  EXPECT_EQ(pm::io::readColorImage(d.file("det/detection.png")).getWidth(), 640u);
+  // A pair's streams for a rig of one camera, or one stream for the pair: errors, nothing written.
+  const auto two = runProgram("pm-track", "--rig " + rig + " --sources " + r.left + " " + r.right + " --model " + r.model + " --out " + d.file("x"));
+  EXPECT_EQ(two.status, 2);
+  EXPECT_NE(two.err.find("2 given for a rig of 1 camera"), std::string::npos) << two.err;
+  const auto pair = runProgram("pm-track", "--rig " + rig + " --left-source " + r.left + " --right-source " + r.right + " --model " + r.model +
+                                               " --out " + d.file("x"));
+  EXPECT_EQ(pair.status, 2);
+  EXPECT_NE(pair.err.find("give --images (or --sources)"), std::string::npos) << pair.err;
+  EXPECT_FALSE(std::filesystem::exists(d.file("x")));
+}
+
 TEST(PmTrack, TracksTwoVideoStreamsAndShowsThemInAViSPWindow)
 {
   TempDir d("track-video");

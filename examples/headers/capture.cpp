@@ -70,4 +70,30 @@ void exampleVideoCaptureSourceFile(pm::tracker::PhotoModelTracker &tracker)
     tracker.track(f.left, f.right);
 }
 
+// ImageSequenceSource.h
+void exampleImageSequenceSource3(pm::tracker::PhotoModelTracker &tracker)
+{
+  const auto one = pm::capture::ImageSequenceSource::ofCameras({"rec/C_%04d.png"}, 0, 30.0, 640, 480);
+  pm::capture::CameraFrame f;
+  while (one->nextFrame(f))
+    tracker.track(f.view());
+}
+
+// StereoSource.h
+void exampleStereoSource2(pm::capture::StereoSource &source, pm::tracker::PhotoModelTracker &tracker)
+{
+  pm::capture::CameraFrame f;
+  while (source.nextFrame(f))
+    tracker.track(f.view()); // one image per camera
+}
+
+// VideoCaptureSource.h
+void exampleVideoCaptureSource3(pm::tracker::PhotoModelTracker &tracker)
+{
+  pm::capture::VideoCaptureSource one(std::vector<std::string>{"/dev/video0"});
+  pm::capture::CameraFrame f;
+  while (one.nextFrame(f))
+    tracker.track(f.view());
+}
+
 } // namespace pm_examples

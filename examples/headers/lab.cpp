@@ -196,7 +196,7 @@ void exampleSimulatedHandEye(const pm::core::StereoRig &rig)
 // StillPair.h
 void exampleStillPair(const pm::core::StereoRig &rig)
 {
-  const pm::lab::StillPair user = pm::lab::loadStillPair("L.png", "R.png", "model.json");
+  const pm::lab::StillPair user = pm::lab::loadStillPair({"L.png", "R.png"}, "model.json");
   const pm::lab::StillPair lab = pm::lab::renderStillPair(pm::sim::makeTarget("C12"), {0, 0, 500, 0, 0, 0}, rig,
                                                           pm::sim::SceneParams(), pm::lab::LabModelChoice());
   std::cout << lab.source << ": the model at " << lab.truth.toString() << "\n";

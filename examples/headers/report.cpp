@@ -74,7 +74,7 @@ void exampleDetectionOutputs(const pm::core::StereoRig &rig, const pm::core::Pho
   pm::report::DetectionOutputs o;
   o.source = "my pair";
   o.detection = pm::tracker::detectStatic(tracker, {left, right}, pm::tracker::DetectionParams());
-  pm::report::writeDetection("detect", o, tracker.fitness(), left, right);
+  pm::report::writeDetection("detect", o, tracker.fitness(), {left, right});
   std::cout << pm::report::describeDetection(o, "detect");
 }
 
@@ -180,6 +180,13 @@ void exampleCalibrationOutputs3(const std::vector<pm::calib::CalibrationView> &v
   o.poseOnHand = "hand-eye from " + std::to_string(fMh.size()) + " hand poses";
   pm::report::writeCameraCalibration("rig", o);
   std::cout << pm::report::describeCameraCalibration(o, "rig");
+}
+
+// Overlay.h
+void exampleOverlay3(const std::vector<vpImage<vpRGBa>> &images, const pm::core::StereoFitness &fitness, const pm::core::Phi &phi)
+{
+  const vpImage<vpRGBa> all = pm::report::drawCameras(pm::core::CameraImages::of(images),
+                                                      {fitness.pointScores(phi, 0)}, pm::report::cameraLabels(images.size(), "found, "));
 }
 
 } // namespace pm_examples

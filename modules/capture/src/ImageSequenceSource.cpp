@@ -46,19 +46,42 @@ std::string frameFileName(const std::string &pattern, long index)
 
 ImageSequenceSource::ImageSequenceSource(const std::string &leftPattern, const std::string &rightPattern, int firstFrame,
                                          double fps, unsigned width, unsigned height, long maxFrames)
-    : m_left(leftPattern), m_right(rightPattern), m_first(firstFrame), m_fps(fps), m_w(width), m_h(height)
+    : ImageSequenceSource(PerCamera{}, {leftPattern, rightPattern}, firstFrame, fps, width, height, maxFrames)
+{
+}
+
+std::unique_ptr<ImageSequenceSource> ImageSequenceSource::ofCameras(const std::vector<std::string> &patterns, int firstFrame, double fps,
+                                                                    unsigned width, unsigned height, long maxFrames)
+{
+  return std::unique_ptr<ImageSequenceSource>(new ImageSequenceSource(PerCamera{}, patterns, firstFrame, fps, width, height, maxFrames));
+}
+
+ImageSequenceSource::ImageSequenceSource(PerCamera, const std::vector<std::string> &patterns, int firstFrame, double fps, unsigned width,
+                                         unsigned height, long maxFrames)
+    : m_names(patterns), m_files(patterns.size()), m_first(firstFrame), m_fps(fps), m_w(width), m_h(height)
 {
   if (!(fps > 0))
     throw core::Error("image sequence: the frame rate must be positive");
-  auto exists = [](const std::string &f) { return std::filesystem::exists(f); };
-  while ((maxFrames <= 0 || m_length < maxFrames) &&
-         (exists(frameFileName(m_left, m_first + m_length)) || exists(frameFileName(m_right, m_first + m_length)))) {
-    m_files[0].push_back(frameFileName(m_left, m_first + m_length));
-    m_files[1].push_back(frameFileName(m_right, m_first + m_length));
+  if (patterns.empty() || patterns.size() > SourceStats::kMaxStreams)
+    throw core::Error("image sequence: " + std::to_string(patterns.size()) + " image patterns; one per camera, one to four");
+  m_stats.streams = patterns.size();
+  auto anyExists = [&](long k) {
+    for (const std::string &p : patterns)
+      if (std::filesystem::exists(frameFileName(p, m_first + k)))
+        return true;
+    return false;
+  };
+  while ((maxFrames <= 0 || m_length < maxFrames) && anyExists(m_length)) {
+    for (std::size_t c = 0; c < patterns.size(); ++c)
+      m_files[c].push_back(frameFileName(patterns[c], m_first + m_length));
     ++m_length;
   }
-  if (m_length == 0)
-    throw core::Error("the sequence is empty: no frame " + frameFileName(m_left, m_first) + " nor " + frameFileName(m_right, m_first));
+  if (m_length == 0) {
+    std::string none;
+    for (const std::string &p : patterns)
+      none += (none.empty() ? "no frame " : " nor ") + frameFileName(p, m_first);
+    throw core::Error("the sequence is empty: " + none);
+  }
 }
 
 ImageSequenceSource::ImageSequenceSource(std::vector<std::string> leftFiles, std::vector<std::string> rightFiles, double fps,
@@ -75,14 +98,16 @@ ImageSequenceSource::ImageSequenceSource(std::vector<std::string> leftFiles, std
     rightFiles.resize(static_cast<std::size_t>(maxFrames));
   }
   m_length = static_cast<long>(leftFiles.size());
-  m_left = leftFiles.front() + (m_length > 1 ? " (and " + std::to_string(m_length - 1) + " more)" : "");
-  m_right = rightFiles.front() + (m_length > 1 ? " (and " + std::to_string(m_length - 1) + " more)" : "");
-  m_files[0] = std::move(leftFiles);
-  m_files[1] = std::move(rightFiles);
+  const std::string more = m_length > 1 ? " (and " + std::to_string(m_length - 1) + " more)" : "";
+  m_names = {leftFiles.front() + more, rightFiles.front() + more};
+  m_files = {std::move(leftFiles), std::move(rightFiles)};
 }
 
-bool ImageSequenceSource::next(StereoFrame &f)
+bool ImageSequenceSource::next(StereoFrame &f) { return pairThroughFrame(f); }
+
+bool ImageSequenceSource::nextFrame(CameraFrame &f)
 {
+  f.images.resize(m_files.size());
   while (m_pos < m_length) {
     const long idx = m_first + m_pos;
     f.index = idx;
@@ -90,11 +115,11 @@ bool ImageSequenceSource::next(StereoFrame &f)
     f.skewMs = 0;
     ++m_pos;
     try {
-      f.left = io::readColorImage(m_files[0][static_cast<std::size_t>(m_pos - 1)]);
-      f.right = io::readColorImage(m_files[1][static_cast<std::size_t>(m_pos - 1)]);
-      if (m_w && m_h &&
-          (f.left.getWidth() != m_w || f.left.getHeight() != m_h || f.right.getWidth() != m_w || f.right.getHeight() != m_h))
-        throw core::Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");
+      for (std::size_t c = 0; c < m_files.size(); ++c) {
+        f.images[c] = io::readColorImage(m_files[c][static_cast<std::size_t>(m_pos - 1)]);
+        if (m_w && m_h && (f.images[c].getWidth() != m_w || f.images[c].getHeight() != m_h))
+          throw core::Error("frame " + std::to_string(idx) + ": image size differs from the rig's cameras");
+      }
     } catch (const core::Error &e) {
       ++m_stats.skipped;
       m_stats.problems.push_back(e.what());
@@ -106,6 +131,12 @@ bool ImageSequenceSource::next(StereoFrame &f)
   return false;
 }
 
-std::string ImageSequenceSource::describe() const { return "recorded sequence " + m_left + " + " + m_right; }
+std::string ImageSequenceSource::describe() const
+{
+  std::string d = "recorded sequence ";
+  for (std::size_t c = 0; c < m_names.size(); ++c)
+    d += (c ? " + " : "") + m_names[c];
+  return d;
+}
 
 } // namespace pm::capture

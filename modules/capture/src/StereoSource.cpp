@@ -1,5 +1,6 @@
 #include "pm/capture/StereoSource.h"
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -13,13 +14,59 @@ namespace pm::capture {
 std::string SourceStats::describe() const
 {
   std::ostringstream os;
-  os << pairs << " pairs";
-  if (framesRead[0] || framesRead[1])
-    os << " (frames read: " << framesRead[0] << " left, " << framesRead[1] << " right; unpaired " << unpaired[0]
-       << " left, " << unpaired[1] << " right; largest skew " << maxSkewMs << " ms)";
+  const std::size_t n = std::min(streams, kMaxStreams);
+  if (n == 2) {
+    os << pairs << " pairs";
+    if (framesRead[0] || framesRead[1])
+      os << " (frames read: " << framesRead[0] << " left, " << framesRead[1] << " right; unpaired " << unpaired[0]
+         << " left, " << unpaired[1] << " right; largest skew " << maxSkewMs << " ms)";
+  } else {
+    os << pairs << " frames";
+    bool read = false;
+    for (std::size_t k = 0; k < n; ++k)
+      read = read || framesRead[k];
+    if (read && n > 1) {
+      os << " (frames read per camera:";
+      for (std::size_t k = 0; k < n; ++k)
+        os << " " << framesRead[k];
+      os << "; unpaired:";
+      for (std::size_t k = 0; k < n; ++k)
+        os << " " << unpaired[k];
+      os << "; largest skew " << maxSkewMs << " ms)";
+    }
+  }
   if (skipped)
     os << ", " << skipped << " skipped";
   return os.str();
+}
+
+bool StereoSource::nextFrame(CameraFrame &f)
+{
+  StereoFrame &p = m_stereo;
+  if (!next(p))
+    return false;
+  f.images.resize(2);
+  swap(f.images[0], p.left);
+  swap(f.images[1], p.right);
+  f.index = p.index;
+  f.timeS = p.timeS;
+  f.skewMs = p.skewMs;
+  return true;
+}
+
+bool StereoSource::pairThroughFrame(StereoFrame &f)
+{
+  if (cameraCount() != 2)
+    throw core::Error(describe() + ": " + std::to_string(cameraCount()) + " camera" + (cameraCount() == 1 ? "" : "s") +
+                      ", not a stereo pair (read it with nextFrame())");
+  if (!nextFrame(m_pair))
+    return false;
+  swap(f.left, m_pair.images[0]);
+  swap(f.right, m_pair.images[1]);
+  f.index = m_pair.index;
+  f.timeS = m_pair.timeS;
+  f.skewMs = m_pair.skewMs;
+  return true;
 }
 
 namespace {

@@ -109,15 +109,21 @@ void VideoCaptureParams::validate() const
 }
 
 VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::string &right, const VideoCaptureParams &params)
-    : m_params(params)
+    : VideoCaptureSource(std::vector<std::string>{left, right}, params)
+{
+}
+
+VideoCaptureSource::VideoCaptureSource(const std::vector<std::string> &sources, const VideoCaptureParams &params) : m_params(params)
 {
   params.validate();
-  const std::string specs[2] = {left, right};
-  for (int k = 0; k < 2; ++k) {
-    m_s[k] = std::make_unique<Stream>();
-    Stream &s = *m_s[k];
-    s.spec = specs[k];
-    s.side = k ? "right" : "left";
+  if (sources.empty() || sources.size() > SourceStats::kMaxStreams)
+    throw core::Error("video capture: " + std::to_string(sources.size()) + " sources; one per camera, one to four");
+  m_stats.streams = sources.size();
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    m_s.push_back(std::make_unique<Stream>());
+    Stream &s = *m_s.back();
+    s.spec = sources[k];
+    s.side = sources.size() == 2 ? (k ? "right" : "left") : sources.size() == 1 ? "camera's" : "camera " + std::to_string(k) + "'s";
     s.live = allDigits(s.spec) || s.spec.rfind("/dev/", 0) == 0 || s.spec.find('!') != std::string::npos;
     const bool pipeline = s.spec.find('!') != std::string::npos;
     if (!allDigits(s.spec) && !pipeline && !std::filesystem::exists(s.spec))
@@ -144,57 +150,91 @@ VideoCaptureSource::VideoCaptureSource(const std::string &left, const std::strin
 
 VideoCaptureSource::~VideoCaptureSource() = default;
 
-bool VideoCaptureSource::next(StereoFrame &f)
+namespace {
+
+//! \e m (BGR, BGRA or grey) into \e dst as RGBa.
+void toRGBa(const cv::Mat &m, vpImage<vpRGBa> &dst)
 {
-  if (m_params.maxPairs > 0 && m_stats.pairs >= m_params.maxPairs)
-    return false;
-  Stream &L = *m_s[0], &R = *m_s[1];
+  cv::Mat rgba;
+  if (m.channels() == 1)
+    cv::cvtColor(m, rgba, cv::COLOR_GRAY2RGBA);
+  else if (m.channels() == 4)
+    cv::cvtColor(m, rgba, cv::COLOR_BGRA2RGBA);
+  else
+    cv::cvtColor(m, rgba, cv::COLOR_BGR2RGBA);
+  dst.resize(static_cast<unsigned>(rgba.rows), static_cast<unsigned>(rgba.cols));
+  for (int r = 0; r < rgba.rows; ++r)
+    std::memcpy(static_cast<void *>(dst[r]), rgba.ptr(r), static_cast<std::size_t>(rgba.cols) * 4);
+}
+
+} // namespace
+
+bool VideoCaptureSource::holdTogether()
+{
   for (;;) {
-    for (int k = 0; k < 2; ++k) {
+    std::size_t oldest = 0, newest = 0;
+    for (std::size_t k = 0; k < m_s.size(); ++k) {
       Stream &s = *m_s[k];
       if (s.ended)
         return false;
-      if (!s.held && !s.read(m_params, m_stats, k))
+      if (!s.held && !s.read(m_params, m_stats, static_cast<int>(k)))
         return false;
+      if (s.t < m_s[oldest]->t)
+        oldest = k;
+      if (s.t > m_s[newest]->t)
+        newest = k;
     }
-    const double d = L.t - R.t;
-    if (std::fabs(d) <= m_params.maxSkewMs)
-      break;
-    Stream &older = d < 0 ? L : R; // drop the older frame: its partner has gone by
-    older.held = false;
-    ++m_stats.unpaired[d < 0 ? 0 : 1];
+    if (m_s[newest]->t - m_s[oldest]->t <= m_params.maxSkewMs)
+      return true;
+    m_s[oldest]->held = false; // drop the oldest frame: its partners have gone by
+    ++m_stats.unpaired[oldest];
   }
-  if (L.frame.size() != R.frame.size()) {
-    std::ostringstream os;
-    os << "the two streams differ in size: left '" << L.spec << "' is " << L.frame.cols << "x" << L.frame.rows
-       << ", right '" << R.spec << "' is " << R.frame.cols << "x" << R.frame.rows;
-    throw core::Error(os.str());
-  }
-  vpImage<vpRGBa> *dst[2] = {&f.left, &f.right};
-  for (int k = 0; k < 2; ++k) {
-    const cv::Mat &m = m_s[k]->frame;
-    cv::Mat rgba;
-    if (m.channels() == 1)
-      cv::cvtColor(m, rgba, cv::COLOR_GRAY2RGBA);
-    else if (m.channels() == 4)
-      cv::cvtColor(m, rgba, cv::COLOR_BGRA2RGBA);
-    else
-      cv::cvtColor(m, rgba, cv::COLOR_BGR2RGBA);
-    dst[k]->resize(static_cast<unsigned>(rgba.rows), static_cast<unsigned>(rgba.cols));
-    for (int r = 0; r < rgba.rows; ++r)
-      std::memcpy(static_cast<void *>((*dst[k])[r]), rgba.ptr(r), static_cast<std::size_t>(rgba.cols) * 4);
+}
+
+bool VideoCaptureSource::next(StereoFrame &f) { return pairThroughFrame(f); }
+
+bool VideoCaptureSource::nextFrame(CameraFrame &f)
+{
+  if (m_params.maxPairs > 0 && m_stats.pairs >= m_params.maxPairs)
+    return false;
+  if (!holdTogether())
+    return false;
+  const Stream &first = *m_s[0];
+  for (std::size_t k = 1; k < m_s.size(); ++k)
+    if (m_s[k]->frame.size() != first.frame.size()) {
+      std::ostringstream os;
+      if (m_s.size() == 2)
+        os << "the two streams differ in size: left '" << first.spec << "' is " << first.frame.cols << "x" << first.frame.rows
+           << ", right '" << m_s[1]->spec << "' is " << m_s[1]->frame.cols << "x" << m_s[1]->frame.rows;
+      else
+        os << "the streams differ in size: '" << first.spec << "' is " << first.frame.cols << "x" << first.frame.rows << ", '"
+           << m_s[k]->spec << "' is " << m_s[k]->frame.cols << "x" << m_s[k]->frame.rows;
+      throw core::Error(os.str());
+    }
+  f.images.resize(m_s.size());
+  double lo = first.t, hi = first.t;
+  for (std::size_t k = 0; k < m_s.size(); ++k) {
+    toRGBa(m_s[k]->frame, f.images[k]);
     m_s[k]->held = false;
+    lo = std::min(lo, m_s[k]->t);
+    hi = std::max(hi, m_s[k]->t);
   }
   if (m_t0 < 0)
-    m_t0 = L.t;
+    m_t0 = first.t;
   f.index = m_stats.pairs;
-  f.timeS = (L.t - m_t0) * 1e-3;
-  f.skewMs = L.t - R.t;
+  f.timeS = (first.t - m_t0) * 1e-3;
+  f.skewMs = m_s.size() == 2 ? first.t - m_s[1]->t : hi - lo;
   m_stats.maxSkewMs = std::max(m_stats.maxSkewMs, std::fabs(f.skewMs));
   ++m_stats.pairs;
   return true;
 }
 
-std::string VideoCaptureSource::describe() const { return "video sources " + m_s[0]->spec + " + " + m_s[1]->spec; }
+std::string VideoCaptureSource::describe() const
+{
+  std::string d = m_s.size() == 1 ? "video source " : "video sources ";
+  for (std::size_t k = 0; k < m_s.size(); ++k)
+    d += (k ? " + " : "") + m_s[k]->spec;
+  return d;
+}
 
 } // namespace pm::capture

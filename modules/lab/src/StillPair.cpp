@@ -6,25 +6,34 @@
 
 namespace pm::lab {
 
-StillPair loadStillPair(const std::string &left, const std::string &right, const std::string &modelPath)
+StillPair loadStillPair(const std::vector<std::string> &images, const std::string &modelPath)
 {
   StillPair p;
-  p.left = io::readColorImage(left);
-  p.right = io::readColorImage(right);
+  for (const std::string &f : images)
+    p.images.push_back(io::readColorImage(f));
   p.model = io::loadPhotoModel(modelPath);
-  p.source = "stereo pair " + left + " + " + right + ", model " + modelPath;
+  p.source = images.size() == 2 ? "stereo pair " + images[0] + " + " + images[1] : images.size() == 1 ? "image " + images[0] : "images";
+  if (images.size() > 2)
+    for (std::size_t k = 0; k < images.size(); ++k)
+      p.source += (k ? " + " : " ") + images[k];
+  p.source += ", model " + modelPath;
   return p;
 }
 
-void requireSameSize(const StillPair &p, const std::string &left, const std::string &right)
+void requireSameSize(const StillPair &p, const std::vector<std::string> &files)
 {
-  if (p.left.getWidth() != p.right.getWidth() || p.left.getHeight() != p.right.getHeight())
-    throw core::Error("the left image '" + left + "' and the right image '" + right + "' differ in size (" +
-                      std::to_string(p.left.getWidth()) + "x" + std::to_string(p.left.getHeight()) + " and " +
-                      std::to_string(p.right.getWidth()) + "x" + std::to_string(p.right.getHeight()) + ")");
+  for (std::size_t k = 1; k < p.images.size() && k < files.size(); ++k) {
+    const vpImage<vpRGBa> &a = p.images[0], &b = p.images[k];
+    if (a.getWidth() != b.getWidth() || a.getHeight() != b.getHeight()) {
+      const bool pair = p.images.size() == 2;
+      throw core::Error(std::string(pair ? "the left image '" : "the image '") + files[0] + (pair ? "' and the right image '" : "' and the image '") +
+                        files[k] + "' differ in size (" + std::to_string(a.getWidth()) + "x" + std::to_string(a.getHeight()) + " and " +
+                        std::to_string(b.getWidth()) + "x" + std::to_string(b.getHeight()) + ")");
+    }
+  }
 }
 
-StillPair renderStillPair(const sim::TargetShape &shape, const core::Phi &phi, const core::StereoRig &rig, const sim::SceneParams &sp,
+StillPair renderStillPair(const sim::TargetShape &shape, const core::Phi &phi, const core::CameraRig &rig, const sim::SceneParams &sp,
                           const LabModelChoice &choice)
 {
   StillPair p;
@@ -34,9 +43,7 @@ StillPair renderStillPair(const sim::TargetShape &shape, const core::Phi &phi, c
   const vpHomogeneousMatrix hMo = core::toHomogeneousMatrix(phi);
   p.haveTruth = true;
   p.truth = sm.truth(hMo);
-  const sim::StereoImages im = scene.renderStereo(rig, hMo, 0);
-  p.left = im.left;
-  p.right = im.right;
+  p.images = scene.renderRig(rig, hMo, 0);
   p.source = "simulator, target " + scene.target().info.code + " (" + scene.target().info.name + ")";
   return p;
 }

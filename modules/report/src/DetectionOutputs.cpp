@@ -27,14 +27,15 @@ PoseErrors poseErrors(const core::Phi &a, const core::Phi &b)
 }
 
 std::string writeDetection(const std::string &dir, const DetectionOutputs &o, const core::StereoFitness &fitness,
-                           const vpImage<vpRGBa> &IL, const vpImage<vpRGBa> &IR)
+                           const core::CameraImages &images)
 {
   const tracker::Detection &d = o.detection;
   const tracker::TrackResult &best = d.best;
   io::StagedFiles files(dir);
-  io::writeImage(sideBySide(drawPointScores(IL, fitness.pointScores(best.phi, 0), "detection, left"),
-                            drawPointScores(IR, fitness.pointScores(best.phi, 1), "right")),
-                 files.stage("detection.png"));
+  std::vector<std::vector<core::PointScore>> scores;
+  for (std::size_t k = 0; k < images.size(); ++k)
+    scores.push_back(fitness.pointScores(best.phi, static_cast<int>(k)));
+  io::writeImage(drawCameras(images, scores, cameraLabels(images.size(), "detection, ")), files.stage("detection.png"));
   nlohmann::json s{{"source", o.source},
                    {"pose", phiJson(best.phi)},
                    {"fitness", best.fitness},

@@ -38,7 +38,20 @@ void LiveView::show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, c
 {
   if (!m_wanted)
     return;
-  vpImage<vpRGBa> both = sideBySide(drawPointScores(left, scoresLeft, status), drawPointScores(right, scoresRight, "right"));
+  showFrame(sideBySide(drawPointScores(left, scoresLeft, status), drawPointScores(right, scoresRight, "right")));
+}
+
+void LiveView::show(const core::CameraImages &images, const std::vector<std::vector<core::PointScore>> &scores, const std::string &status)
+{
+  if (!m_wanted || images.size() == 0)
+    return;
+  std::vector<std::string> labels = cameraLabels(images.size(), "");
+  labels[0] = status;
+  showFrame(drawCameras(images, scores, labels));
+}
+
+void LiveView::showFrame(const vpImage<vpRGBa> &both)
+{
   if (!m_display) {
 #ifdef VISP_HAVE_X11
     m_frame = both;

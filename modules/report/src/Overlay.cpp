@@ -149,4 +149,26 @@ vpImage<vpRGBa> sideBySide(const vpImage<vpRGBa> &a, const vpImage<vpRGBa> &b)
   return I;
 }
 
+vpImage<vpRGBa> drawCameras(const core::CameraImages &images, const std::vector<std::vector<core::PointScore>> &scores,
+                            const std::vector<std::string> &labels)
+{
+  static const std::vector<core::PointScore> none;
+  vpImage<vpRGBa> all;
+  for (std::size_t k = 0; k < images.size(); ++k) {
+    const vpImage<vpRGBa> one = drawPointScores(images[k], k < scores.size() ? scores[k] : none, k < labels.size() ? labels[k] : "");
+    all = k ? sideBySide(all, one) : one;
+  }
+  return all;
+}
+
+std::vector<std::string> cameraLabels(std::size_t n, const std::string &prefix)
+{
+  if (n == 2)
+    return {prefix + "left", "right"};
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < n; ++k)
+    out.push_back((k ? "" : prefix) + "camera " + std::to_string(k));
+  return out;
+}
+
 } // namespace pm::report

@@ -1,8 +1,9 @@
 #pragma once
 /*!
   \file ImageSequenceSource.h
-  A recorded stereo sequence: image files named by printf patterns (e.g. "L_%04d.png"), from
-  \e firstFrame while either image of a frame exists. A pair that cannot be read, or whose size
+  A recorded sequence of a stereo rig, or of a rig of one to four cameras: image files named by
+  printf patterns (e.g. "L_%04d.png"), one per camera, from \e firstFrame while any image of a
+  frame exists. A pair that cannot be read, or whose size
   is not the expected one, is skipped and counted (stats().problems says why); the times follow
   \e fps.
 
@@ -10,6 +11,7 @@
       pm::capture::ImageSequenceSource src("rec/L_%04d.png", "rec/R_%04d.png", 0, 30.0, 640, 480);
   \endcode
 */
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,19 +51,39 @@ public:
   ImageSequenceSource(std::vector<std::string> leftFiles, std::vector<std::string> rightFiles, double fps,
                       unsigned width = 0, unsigned height = 0, long maxFrames = 0);
   /*!
+    A rig of any number of cameras (one to four): camera k's images from \e patterns[k], frames
+    \e firstFrame, firstFrame + 1 ... while any camera's file exists; the rest as the stereo
+    constructor. Throws pm::core::Error as it does, or for no pattern or more than four.
+    \code
+    const auto one = pm::capture::ImageSequenceSource::ofCameras({"rec/C_%04d.png"}, 0, 30.0, 640, 480);
+    pm::capture::CameraFrame f;
+    while (one->nextFrame(f))
+      tracker.track(f.view());
+    \endcode
+  */
+  static std::unique_ptr<ImageSequenceSource> ofCameras(const std::vector<std::string> &patterns, int firstFrame, double fps,
+                                                        unsigned width = 0, unsigned height = 0, long maxFrames = 0);
+  /*!
     The next readable pair: StereoFrame::index is its file index, timeS (index - firstFrame) / fps,
     skewMs 0. A pair that cannot be read or has the wrong size is skipped (SourceStats::skipped,
     SourceStats::problems). False after the last frame.
   */
   bool next(StereoFrame &f) override;
-  //! "recorded sequence " and the two patterns (or the first files and their count).
+  //! The next readable frame of every camera, as next() reads a pair (see there).
+  bool nextFrame(CameraFrame &f) override;
+  //! The cameras of the sequence (2 for the stereo constructors).
+  std::size_t cameraCount() const override { return m_files.size(); }
+  //! "recorded sequence " and the patterns joined by " + " (or the first files and their count).
   std::string describe() const override;
   //! Frames in the sequence (readable or not).
   long length() const { return m_length; }
 
 private:
-  std::string m_left, m_right;          // the patterns, or the first files
-  std::vector<std::string> m_files[2];  // the files of each camera, frame by frame
+  struct PerCamera {}; // ofCameras()'s constructor, apart from the stereo ones
+  ImageSequenceSource(PerCamera, const std::vector<std::string> &patterns, int firstFrame, double fps, unsigned width, unsigned height,
+                      long maxFrames);
+  std::vector<std::string> m_names;              // each camera's pattern, or its first file
+  std::vector<std::vector<std::string>> m_files; // the files of each camera, frame by frame
   int m_first = 0;
   double m_fps;
   unsigned m_w, m_h;

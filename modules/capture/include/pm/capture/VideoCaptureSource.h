@@ -59,6 +59,18 @@ public:
     pipeline). Throws pm::core::Error for invalid \e params or naming the source that does not open.
   */
   VideoCaptureSource(const std::string &left, const std::string &right, const VideoCaptureParams &params = VideoCaptureParams());
+  /*!
+    A rig of one to four cameras: camera k reads \e sources[k] (as above). Frames are held together
+    as a pair is: the oldest frame is dropped until all lie within maxSkewMs. Throws as above, or for
+    no source or more than four.
+    \code
+    pm::capture::VideoCaptureSource one(std::vector<std::string>{"/dev/video0"});
+    pm::capture::CameraFrame f;
+    while (one.nextFrame(f))
+      tracker.track(f.view());
+    \endcode
+  */
+  explicit VideoCaptureSource(const std::vector<std::string> &sources, const VideoCaptureParams &params = VideoCaptureParams());
   //! Releases both captures (a read still stuck in a driver keeps its own until it returns).
   ~VideoCaptureSource() override;
   /*!
@@ -68,12 +80,18 @@ public:
     again) or the two streams' images differ in size.
   */
   bool next(StereoFrame &f) override;
+  //! The next frame of every camera (see the N-camera constructor); the pair's rules otherwise.
+  bool nextFrame(CameraFrame &f) override;
+  //! The sources opened.
+  std::size_t cameraCount() const override { return m_s.size(); }
   //! "video sources " and the two source names.
   std::string describe() const override;
 
 private:
   struct Stream;
-  std::unique_ptr<Stream> m_s[2];
+  //! Reads until every stream holds a frame within maxSkewMs of the others; false when one ends.
+  bool holdTogether();
+  std::vector<std::unique_ptr<Stream>> m_s;
   VideoCaptureParams m_params;
   double m_t0 = -1;
 };

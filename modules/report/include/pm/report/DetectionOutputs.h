@@ -38,7 +38,7 @@ struct DetectionOutputs
 };
 
 /*!
-  Writes detection.png (\e fitness's points at the pose found, on \e left and \e right) and
+  Writes detection.png (\e fitness's points at the pose found, on each camera's image of \e images) and
   summary.json into \e dir; returns summary.json's text. Throws pm::core::Error; on an error nothing
   is left in \e dir.
 
@@ -48,12 +48,12 @@ struct DetectionOutputs
     pm::report::DetectionOutputs o;
     o.source = "my pair";
     o.detection = pm::tracker::detectStatic(tracker, {left, right}, pm::tracker::DetectionParams());
-    pm::report::writeDetection("detect", o, tracker.fitness(), left, right);
+    pm::report::writeDetection("detect", o, tracker.fitness(), {left, right});
     std::cout << pm::report::describeDetection(o, "detect");
   \endcode
 */
 std::string writeDetection(const std::string &dir, const DetectionOutputs &o, const core::StereoFitness &fitness,
-                           const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right);
+                           const core::CameraImages &images);
 //! What pm-detect prints of it (written to \e dir).
 std::string describeDetection(const DetectionOutputs &o, const std::string &dir);
 

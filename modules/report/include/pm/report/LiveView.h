@@ -8,6 +8,8 @@
   the X server refuses the window. See the LiveView class for an example.
 */
 #include <memory>
+
+#include "pm/core/CameraImages.h"
 #include <string>
 #include <vector>
 #include <visp3/core/vpImage.h>
@@ -55,6 +57,11 @@ public:
   */
   void show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::vector<core::PointScore> &scoresLeft,
             const std::vector<core::PointScore> &scoresRight, const std::string &status);
+  /*!
+    The same for a rig of any number of cameras: \e images side by side, \e scores[k] drawn on
+    image k (fewer scores than images: the rest drawn bare), \e status on the first image.
+  */
+  void show(const core::CameraImages &images, const std::vector<std::vector<core::PointScore>> &scores, const std::string &status);
   //! Writes what the window shows, read back from the X server (vpDisplay::getImage). Throws pm::core::Error if not open.
   //! The format follows \e pngPath's extension (pm::io::writeImage, which throws pm::core::Error when it cannot write).
   void capture(const std::string &pngPath);
@@ -64,6 +71,8 @@ private:
   bool m_wanted = false;                 //!< open() found a display: show() draws (false again once the window is refused)
   vpImage<vpRGBa> m_frame;               //!< the frame shown, both images side by side; the display is attached to it
   std::unique_ptr<vpDisplay> m_display;  //!< the window (a vpDisplayX), owned; null until the first show() opens it
+  //! Shows \e frame (the images side by side), opening the window at the first.
+  void showFrame(const vpImage<vpRGBa> &frame);
 };
 
 } // namespace pm::report

@@ -14,6 +14,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/PhotoModel.h"
+#include "pm/core/CameraImages.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/precise/CorrespondenceLines.h"
 
@@ -87,5 +88,18 @@ void drawCorrespondenceLines(vpImage<vpRGBa> &I, const precise::CorrespondenceLi
   The result is as wide as both and as high as the higher; the part under the lower one is black.
 */
 vpImage<vpRGBa> sideBySide(const vpImage<vpRGBa> &a, const vpImage<vpRGBa> &b);
+
+/*!
+  A rig's images side by side, each with its points drawn (drawPointScores; \e scores[k] on image k,
+  none past the end) and its label (\e labels[k], none past the end).
+  \code
+  const vpImage<vpRGBa> all = pm::report::drawCameras(pm::core::CameraImages::of(images),
+                                                      {fitness.pointScores(phi, 0)}, pm::report::cameraLabels(images.size(), "found, "));
+  \endcode
+*/
+vpImage<vpRGBa> drawCameras(const core::CameraImages &images, const std::vector<std::vector<core::PointScore>> &scores,
+                            const std::vector<std::string> &labels);
+//! The labels of \e n cameras' images: a pair's \e prefix + "left", "right"; otherwise \e prefix + "camera 0", "camera 1", ...
+std::vector<std::string> cameraLabels(std::size_t n, const std::string &prefix);
 
 } // namespace pm::report
