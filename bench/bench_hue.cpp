@@ -115,6 +115,19 @@ void Hue_StereoPair_Lens(benchmark::State &state)
   state.SetItemsProcessed(state.iterations() * 2 * 640 * 480);
 }
 
+//! One camera's image resampled bilinearly through its lens into the ideal image (UndistortMap::undistort, cv::remap): what the precise stage reads.
+void Undistort_Image_Lens(benchmark::State &state)
+{
+  const pm::core::StereoRig rig = pm::lab::labRigWithLens(pm::core::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}});
+  const pm::core::UndistortMap ml(rig.left);
+  vpImage<vpRGBa> ideal;
+  for (auto _ : state) {
+    ml.undistort(setup().images.left, ideal);
+    benchmark::DoNotOptimize(ideal.bitmap);
+  }
+  state.SetItemsProcessed(state.iterations() * 640 * 480);
+}
+
 /*!
   The other way to honour a lens: distort every projected point in the kernels. Measured here on
   1,000 points (projection and pixel index, the part of an evaluation the lens would change), with
@@ -164,5 +177,6 @@ BENCHMARK(Hue_StereoPair_AsTracked_WholeImages_NewFrames)->Unit(benchmark::kMill
 BENCHMARK(Hue_StereoPair_AsTracked_SteadyWindows_NewFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Hue_PerSample);
 BENCHMARK(Hue_StereoPair_Lens)->Unit(benchmark::kMillisecond);
+BENCHMARK(Undistort_Image_Lens)->Unit(benchmark::kMillisecond);
 BENCHMARK(Distortion_Project1000Points_Pinhole);
 BENCHMARK(Distortion_Project1000Points_Lens);

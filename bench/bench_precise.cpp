@@ -1,6 +1,8 @@
 //! pm-bench: the precise stage alone, and a tracked frame of the all-around model with and without it.
 #include <benchmark/benchmark.h>
 
+#include <map>
+
 #include "pm/io/RigFile.h"
 #include "pm/lab/LabModel.h"
 #include "pm/precise/PreciseStage.h"
@@ -55,6 +57,32 @@ void Precise_Refine(benchmark::State &s) { preciseRefine(s, true); }
 void Precise_Refine_OutlineOnly(benchmark::State &s) { preciseRefine(s, false); }
 
 /*!
+  A new frame's refine() through a lens (OpenCV's k1 -0.25 on both cameras, the images rendered
+  through it): setImages() and refine(), which resamples the ideal image where the stage reads
+  (IdealImage.h); its peer the same through the pinhole rig.
+*/
+void preciseRefineNewFrame(benchmark::State &state, bool lens)
+{
+  const AllAround &a = allAround();
+  pm::core::StereoRig rig = setup().rig;
+  if (lens)
+    rig.left.distortion = rig.right.distortion = pm::core::LensDistortion{{-0.25, 0.08, 0.001, -0.0005, 0}};
+  static std::map<bool, pm::sim::StereoImages> images;
+  if (!images.count(lens))
+    images[lens] = a.scene.renderStereo(rig, a.hMo, 0);
+  pm::precise::PreciseStage precise(rig, a.model.build.model);
+  const double twist[6] = {0.6, -0.5, 0.6, 0.01, -0.01, 0.008};
+  const pm::core::Phi start = pm::core::applyTwist(a.truth, twist);
+  for (auto _ : state) {
+    precise.setImages({images[lens].left, images[lens].right});
+    const pm::precise::PreciseResult r = precise.refine(start);
+    benchmark::DoNotOptimize(r.phi);
+  }
+}
+void Precise_Refine_NewFrame_Pinhole(benchmark::State &s) { preciseRefineNewFrame(s, false); }
+void Precise_Refine_NewFrame_Lens(benchmark::State &s) { preciseRefineNewFrame(s, true); }
+
+/*!
   A steady tracked frame of the all-around model (the tracker's defaults), with the precise stage, and
   its peers: without it, and without the background's learning (a trusted frame's S_out hues read).
 */
@@ -85,6 +113,8 @@ void Tracker_Frame_Steady_AllAround_OneCamera(benchmark::State &s) { allAroundFr
 
 BENCHMARK(Precise_Refine)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Precise_Refine_OutlineOnly)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(Precise_Refine_NewFrame_Pinhole)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(Precise_Refine_NewFrame_Lens)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround_NoPrecise)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround_NoBackgroundLearning)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -14,6 +14,7 @@
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/precise/InteriorTerm.h"
 #include "pm/precise/OutlineViews.h"
+#include "pm/precise/IdealImage.h"
 namespace pm_examples {
 
 // What an example leaves to its reader (declared, never defined: this file is compiled, never linked).
@@ -133,6 +134,14 @@ void exampleStereoOcclusionFile(const pm::core::PhotoModel &model, const pm::pre
 {
   pm::precise::StereoOcclusion occlusion(model, pm::precise::StereoOcclusionParams());
   const bool h = occlusion.hidden(left, leftPose, leftCentre, right, rightPose, contourPoint, pxPerMm);
+}
+
+// IdealImage.h
+void exampleIdealImage(const pm::core::PinholeCamera &camera, const vpImage<vpRGBa> &raw)
+{
+  pm::precise::IdealImage ideal(std::make_shared<pm::core::UndistortMap>(camera));
+  ideal.setRaw(raw);                                 // each frame: nothing resampled yet
+  const vpRGBa *pixels = ideal.cover(100, 80, 420, 360); // the ideal image, right within that rectangle
 }
 
 } // namespace pm_examples

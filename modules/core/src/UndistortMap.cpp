@@ -1,5 +1,6 @@
 #include "pm/core/UndistortMap.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <opencv2/calib3d.hpp>
@@ -31,6 +32,11 @@ UndistortMap::UndistortMap(const PinholeCamera &camera) : m_w(camera.width), m_h
     tu.copyTo(mu);
     tv.copyTo(mv);
   }
+  m_fixedXY.resize(2 * n);
+  m_fixedA.resize(n);
+  cv::Mat fxy(static_cast<int>(m_h), static_cast<int>(m_w), CV_16SC2, m_fixedXY.data());
+  cv::Mat fa(static_cast<int>(m_h), static_cast<int>(m_w), CV_16UC1, m_fixedA.data());
+  cv::convertMaps(mu, mv, fxy, fa, CV_16SC2);
   m_nearest.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const long u = std::lround(m_mapU[i]), v = std::lround(m_mapV[i]);
@@ -51,6 +57,25 @@ void UndistortMap::undistort(const vpImage<vpRGBa> &raw, vpImage<vpRGBa> &ideal)
   const cv::Mat mu(static_cast<int>(m_h), static_cast<int>(m_w), CV_32F, const_cast<float *>(m_mapU.data()));
   const cv::Mat mv(static_cast<int>(m_h), static_cast<int>(m_w), CV_32F, const_cast<float *>(m_mapV.data()));
   cv::remap(src, dst, mu, mv, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0, 0, 0, 255));
+}
+
+void UndistortMap::undistortRegion(const vpImage<vpRGBa> &raw, vpImage<vpRGBa> &ideal, int u0, int v0, int u1, int v1) const
+{
+  if (raw.getWidth() != m_w || raw.getHeight() != m_h || ideal.getWidth() != m_w || ideal.getHeight() != m_h)
+    throw Error("undistortion: the images are " + std::to_string(raw.getWidth()) + "x" + std::to_string(raw.getHeight()) + " and " +
+                std::to_string(ideal.getWidth()) + "x" + std::to_string(ideal.getHeight()) + " but the camera's are " +
+                std::to_string(m_w) + "x" + std::to_string(m_h));
+  u0 = std::max(u0, 0), v0 = std::max(v0, 0);
+  u1 = std::min(u1, static_cast<int>(m_w)), v1 = std::min(v1, static_cast<int>(m_h));
+  if (u1 <= u0 || v1 <= v0)
+    return;
+  const cv::Rect roi(u0, v0, u1 - u0, v1 - v0);
+  const cv::Mat src(static_cast<int>(m_h), static_cast<int>(m_w), CV_8UC4, const_cast<vpRGBa *>(raw.bitmap));
+  cv::Mat dst(static_cast<int>(m_h), static_cast<int>(m_w), CV_8UC4, ideal.bitmap);
+  const cv::Mat fxy(static_cast<int>(m_h), static_cast<int>(m_w), CV_16SC2, const_cast<std::int16_t *>(m_fixedXY.data()));
+  const cv::Mat fa(static_cast<int>(m_h), static_cast<int>(m_w), CV_16UC1, const_cast<std::uint16_t *>(m_fixedA.data()));
+  cv::Mat out = dst(roi);
+  cv::remap(src, out, fxy(roi), fa(roi), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0, 0, 0, 255));
 }
 
 void UndistortMap::undistortField(const float *raw, float *ideal, float outside) const

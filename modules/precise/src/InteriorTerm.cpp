@@ -79,22 +79,6 @@ inline bool chromaAndGradient(const LineCamera &cam, double u, double v, double 
 
 } // namespace
 
-namespace {
-
-//! cMo of \e cam at \e phi (R row-major, t in mm) and hRo.
-void composeCamera(const LineCamera &cam, const core::Phi &phi, double R[9], double t[3], core::Rot3 &hRo)
-{
-  hRo = core::rotationOf(phi);
-  const double th[3] = {phi.x, phi.y, phi.z};
-  for (int r = 0; r < 3; ++r) {
-    for (int k = 0; k < 3; ++k)
-      R[3 * r + k] = cam.R[3 * r] * hRo[static_cast<std::size_t>(k)] + cam.R[3 * r + 1] * hRo[static_cast<std::size_t>(3 + k)] +
-                     cam.R[3 * r + 2] * hRo[static_cast<std::size_t>(6 + k)];
-    t[r] = cam.R[3 * r] * th[0] + cam.R[3 * r + 1] * th[1] + cam.R[3 * r + 2] * th[2] + cam.t[r];
-  }
-}
-
-} // namespace
 
 std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double h, InteriorSamples &s) const
 {

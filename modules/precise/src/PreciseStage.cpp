@@ -57,9 +57,9 @@ PreciseStage::PreciseStage(const core::CameraRig &rig, const core::PhotoModel &m
   for (std::size_t k = 0; k < m_nCams; ++k) {
     LineCamera &c = m_cams[k];
     static_cast<core::PinholeCamera::Projection &>(c) = rig[k].projection();
-    if (!rig[k].distortion.isNone()) {
+    if (!rig[k].distortion.isNone()) { // read through the ideal image, resampled bilinearly (IdealImage.h)
       m_undistort[k] = std::make_shared<core::UndistortMap>(rig[k]);
-      c.nearest = m_undistort[k]->nearest().data();
+      m_ideal[k] = std::make_unique<IdealImage>(m_undistort[k]);
     }
     m_lines[k] = std::make_unique<CorrespondenceLines>(m_params.lines, m_params.shape.segments(), maxScale);
   }
@@ -96,9 +96,68 @@ void PreciseStage::useOcclusion(const StereoOcclusion *occlusion)
 void PreciseStage::setImages(const core::CameraImages &images)
 {
   images.checkFor(m_rig, "precise stage");
-  for (std::size_t k = 0; k < m_nCams; ++k)
+  for (std::size_t k = 0; k < m_nCams; ++k) {
     m_cams[k].image = images[k].bitmap;
+    if (m_ideal[k]) {
+      m_ideal[k]->setRaw(images[k]);
+      m_cams[k].image = m_ideal[k]->cover(0, 0, 0, 0); // the buffer; resampled by coverAround()
+    }
+  }
   m_hasImages = true;
+}
+
+namespace {
+
+//! The box of \e outlines seen by \e cam at \e phi (ideal pixels), grown by \e margin; false when nothing projects.
+bool outlineBox(const LineCamera &cam, const OutlineViews &outlines, const core::Phi &phi, int margin, int box[4])
+{
+  double c[3];
+  cameraInModel(cam, phi, c);
+  const OutlineViews::View &v = outlines.view(outlines.nearest(c));
+  core::Rot3 hRo;
+  double R[9], t[3];
+  composeCamera(cam, phi, R, t, hRo);
+  double u0 = 1e30, v0 = 1e30, u1 = -1e30, v1 = -1e30;
+  for (std::size_t i = v.begin; i < v.end; ++i) {
+    const core::ContourPoint &q = outlines.point(i);
+    const double X[3] = {q.x, q.y, q.z};
+    double Xc[3];
+    for (int r = 0; r < 3; ++r)
+      Xc[r] = R[3 * r] * X[0] + R[3 * r + 1] * X[1] + R[3 * r + 2] * X[2] + t[r];
+    if (!(Xc[2] > 1.0))
+      continue;
+    const double u = cam.px * Xc[0] / Xc[2] + cam.u0, w = cam.py * Xc[1] / Xc[2] + cam.v0;
+    u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, w), v1 = std::max(v1, w);
+  }
+  if (u1 < u0)
+    return false;
+  const double lim = 1e6; // a pose far off: the whole image
+  box[0] = static_cast<int>(std::floor(std::max(u0, -lim))) - margin, box[1] = static_cast<int>(std::floor(std::max(v0, -lim))) - margin;
+  box[2] = static_cast<int>(std::ceil(std::min(u1, lim))) + margin + 1, box[3] = static_cast<int>(std::ceil(std::min(v1, lim))) + margin + 1;
+  return true;
+}
+
+} // namespace
+
+void PreciseStage::coverAround(const core::Phi &phi)
+{
+  if (!m_hasImages)
+    return;
+  // What a line reaches beyond its contour point (half its length at the coarsest scale), the
+  // colours learnt beyond it, and a step of the pose within a scale.
+  int maxScale = 1;
+  for (int sc : m_params.scales)
+    maxScale = std::max(maxScale, sc);
+  const int margin = (m_params.shape.segments() * maxScale + 1) / 2 + static_cast<int>(std::ceil(m_params.histogramMaxPx)) + 16;
+  core::BatchPool::shared().run(m_nCams, [&](std::size_t k) {
+    if (!m_ideal[k])
+      return;
+    int box[4];
+    if (outlineBox(m_cams[k], m_outlines, phi, margin, box))
+      m_ideal[k]->cover(box[0], box[1], box[2], box[3]);
+    else
+      m_ideal[k]->cover(0, 0, m_cams[k].w, m_cams[k].h);
+  });
 }
 
 PreciseResult PreciseStage::refine(const core::Phi &start, bool near, bool lookForHidden)
@@ -121,6 +180,7 @@ PreciseResult PreciseStage::refine(const core::Phi &start, bool near, bool lookF
   for (std::size_t si = 0; si < scales.size(); ++si) {
     const int scale = scales[si];
     const bool interior = m_interior && scale <= p.interiorMaxScale;
+    coverAround(phi);
     core::BatchPool::shared().run(m_nCams, [&](std::size_t k) {
       n[k] = m_lines[k]->measure(m_cams[k], m_outlines, phi, p.shape, m_colours, scale, p.lines, p.minContinuous);
     });
@@ -206,6 +266,7 @@ double PreciseStage::objective(const core::Phi &phi)
     throw core::Error("precise stage: an invalid pose " + phi.toString());
   const int scale = m_params.scales.back();
   useOcclusion(m_occlusion.get());
+  coverAround(phi);
   double sum = 0;
   std::size_t n = 0;
   for (std::size_t k = 0; k < m_nCams; ++k) {
@@ -244,6 +305,7 @@ void PreciseStage::learnColours(const core::Phi &phi, bool lookForHidden)
   if (!m_hasImages || !phi.isValid())
     return;
   useOcclusion(lookForHidden ? m_occlusion.get() : nullptr);
+  coverAround(phi);
   for (std::size_t k = 0; k < m_nCams; ++k)
     m_lines[k]->collectColours(m_cams[k], m_outlines, phi, m_colours, m_params.lines, m_params.histogramSkipPx, m_params.histogramMaxPx);
   m_colours.update(m_params.learningRate, m_params.learningRate);

@@ -62,12 +62,22 @@ public:
     outward through the lab's lens: docs/model-outline.md).
   */
   void undistortField(const float *raw, float *ideal, float outside) const;
+  /*!
+    Only the rectangle [\e u0, \e u1) x [\e v0, \e v1) of the ideal image (clamped to it) resampled
+    from \e raw, the rest of \e ideal left as it was; \e ideal must be the camera's size. Bilinear
+    through fixed-point maps (OpenCV's, 1/32 px): about 2.5 times faster a pixel than undistort()
+    (what the precise stage reads near the target, frame after frame). Throws pm::core::Error for
+    images of another size.
+  */
+  void undistortRegion(const vpImage<vpRGBa> &raw, vpImage<vpRGBa> &ideal, int u0, int v0, int u1, int v1) const;
   //! Fraction of the ideal image that the raw image covers.
   double coverage() const;
 
 private:
   unsigned m_w = 0, m_h = 0;
   std::vector<float> m_mapU, m_mapV; //!< raw position of each ideal pixel
+  std::vector<std::int16_t> m_fixedXY;  //!< the same in OpenCV's fixed point: integer x, y per pixel (CV_16SC2)
+  std::vector<std::uint16_t> m_fixedA;  //!< ... and the index of its fraction (CV_16UC1)
   std::vector<std::int32_t> m_nearest;
 };
 

@@ -150,6 +150,8 @@ private:
   int m_maxSegments, m_maxScale;
 };
 
+//! cMo of \e cam at pose \e phi: its rotation \e R (row-major) and translation \e t (mm), and the pose's rotation \e hRo.
+void composeCamera(const LineCamera &cam, const core::Phi &phi, double R[9], double t[3], core::Rot3 &hRo);
 //! The camera centre of \e cam (cMh) in the model frame at pose \e phi (mm).
 void cameraInModel(const LineCamera &cam, const core::Phi &phi, double out[3]);
 

@@ -37,6 +37,7 @@
 #include "pm/precise/ColourHistograms.h"
 #include "pm/precise/CorrespondenceLines.h"
 #include "pm/precise/InteriorTerm.h"
+#include "pm/precise/IdealImage.h"
 #include "pm/precise/OutlineViews.h"
 #include "pm/precise/StereoOcclusion.h"
 
@@ -188,6 +189,9 @@ private:
   core::CameraRig m_rig; //!< the rig, for its images' sizes
   std::array<LineCamera, kMax> m_cams;
   std::array<std::shared_ptr<const core::UndistortMap>, kMax> m_undistort;
+  std::array<std::unique_ptr<IdealImage>, kMax> m_ideal; //!< through a lens: what the stage reads (null: a pinhole, the image itself)
+  //! Through a lens: each camera's ideal image resampled where the stage reads at \e phi (the outline's box and the lines' reach).
+  void coverAround(const core::Phi &phi);
   std::array<std::unique_ptr<CorrespondenceLines>, kMax> m_lines;
   std::unique_ptr<StereoOcclusion> m_occlusion; //!< null: every line counts
   std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
