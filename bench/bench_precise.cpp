@@ -1,7 +1,9 @@
 //! pm-bench: the precise stage alone, and a tracked frame of the all-around model with and without it.
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <map>
+#include <string>
 
 #include "pm/io/RigFile.h"
 #include "pm/lab/LabModel.h"
@@ -82,9 +84,26 @@ void preciseRefineNewFrame(benchmark::State &state, bool lens)
 void Precise_Refine_NewFrame_Pinhole(benchmark::State &s) { preciseRefineNewFrame(s, false); }
 void Precise_Refine_NewFrame_Lens(benchmark::State &s) { preciseRefineNewFrame(s, true); }
 
+//! Adds \e r's steps' times to \e sum.
+void addSteps(const pm::tracker::TrackResult &r, std::array<double, pm::tracker::StepTimes::kCount> &sum)
+{
+  const auto v = r.steps.values();
+  for (std::size_t k = 0; k < v.size(); ++k)
+    sum[k] += v[k];
+}
+
+//! Each step's mean time per frame (ms) as the benchmark's counters plan_ms ... apply_ms (the tracker's own clock: frames.csv's step_*_ms).
+void stepCounters(benchmark::State &state, const std::array<double, pm::tracker::StepTimes::kCount> &sum)
+{
+  for (std::size_t k = 0; k < sum.size(); ++k)
+    state.counters[std::string(pm::tracker::StepTimes::names()[k]) + "_ms"] = benchmark::Counter(sum[k], benchmark::Counter::kAvgIterations);
+}
+
 /*!
   A steady tracked frame of the all-around model (the tracker's defaults), with the precise stage, and
   its peers: without it, and without the background's learning (a trusted frame's S_out hues read).
+  Each step's mean time per frame is a counter (plan_ms ... apply_ms): the parts of the frame, in the
+  same run.
 */
 void allAroundFrame(benchmark::State &state, bool precise, bool learnBackground = true, bool oneCamera = false)
 {
@@ -98,10 +117,34 @@ void allAroundFrame(benchmark::State &state, bool precise, bool learnBackground 
   tracker.initFromPose(pm::core::toHomogeneousMatrix(a.truth));
   for (int k = 0; k < 5; ++k) // a few frames: steady
     tracker.track(images);
+  std::array<double, pm::tracker::StepTimes::kCount> sum{};
   for (auto _ : state) {
     const pm::tracker::TrackResult r = tracker.track(images);
+    addSteps(r, sum);
     benchmark::DoNotOptimize(r.fitness);
   }
+  stepCounters(state, sum);
+}
+
+/*!
+  A frame with the whole budget: the all-around tracker searching from scratch (initialize() before
+  each, not timed), RM-GA's whole budget and the judgement of what it found; per step as above.
+*/
+void Tracker_Frame_WholeBudget_AllAround(benchmark::State &state)
+{
+  const AllAround &a = allAround();
+  pm::tracker::PhotoModelTracker tracker(setup().rig, a.model.build.model);
+  const pm::core::CameraImages images(a.images.left, a.images.right);
+  std::array<double, pm::tracker::StepTimes::kCount> sum{};
+  for (auto _ : state) {
+    state.PauseTiming();
+    tracker.initialize();
+    state.ResumeTiming();
+    const pm::tracker::TrackResult r = tracker.track(images);
+    addSteps(r, sum);
+    benchmark::DoNotOptimize(r.fitness);
+  }
+  stepCounters(state, sum);
 }
 void Tracker_Frame_Steady_AllAround(benchmark::State &s) { allAroundFrame(s, true); }
 void Tracker_Frame_Steady_AllAround_NoPrecise(benchmark::State &s) { allAroundFrame(s, false); }
@@ -119,3 +162,4 @@ BENCHMARK(Tracker_Frame_Steady_AllAround)->Unit(benchmark::kMillisecond)->UseRea
 BENCHMARK(Tracker_Frame_Steady_AllAround_NoPrecise)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround_NoBackgroundLearning)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround_OneCamera)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Tracker_Frame_WholeBudget_AllAround)->Unit(benchmark::kMillisecond)->UseRealTime();

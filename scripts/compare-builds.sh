@@ -94,6 +94,7 @@ KEEP = {"converged_after_s", "hold_s", "move_s", "duration_s"}  # simulated time
 IGNORED_KEYS = {"tracker", "tracker_settings"}  # the configuration's layout (version 1 or 2)
 
 ignored = set()
+added = set()
 
 def timing(name):
     t = name not in KEEP and any(w in TIMING for w in name.lower().split("_"))
@@ -151,10 +152,21 @@ def figures(a, b, path, out):
 
 def cmp_csv(fa, fb, name, diffs):
     ra, rb = list(csv.reader(open(fa))), list(csv.reader(open(fb)))
-    if not ra or not rb or ra[0] != rb[0]:
-        diffs.append(f"{name}: the header differs")
+    if not ra or not rb:
+        diffs.append(f"{name}: empty")
         return 0
     head = ra[0]
+    if ra[0] != rb[0]:
+        gone = [h for h in ra[0] if h not in rb[0] and not timing(h)]
+        if gone:
+            diffs.append(f"{name}: columns gone after: {', '.join(gone)}")
+            return 0
+        added.update(h for h in rb[0] if h not in ra[0])
+        # the columns both have, compared by name
+        where = {h: i for i, h in enumerate(rb[0])}
+        rb = [[r[where[h]] if where[h] < len(r) else "" for h in head if h in where] for r in rb]
+        ra = [[r[i] if i < len(r) else "" for i, h in enumerate(head) if h in where] for r in ra]
+        head = [h for h in head if h in where]
     cols = [i for i, h in enumerate(head) if not timing(h)]
     if len(ra) != len(rb):
         diffs.append(f"{name}: {len(ra) - 1} rows before, {len(rb) - 1} after")
@@ -200,6 +212,8 @@ for c in cases:
     report.append(f"{c}: {verdict} ({files} files compared, {rows} table rows)")
     report += ["  " + d for d in diffs[:40]]
     report.append("  not compared (timings, settings' layout): " + ", ".join(sorted(ignored)))
+if added:
+    report.append("  columns added after (not compared): " + ", ".join(sorted(added)))
 text = "\n".join(report) + "\n"
 open(os.path.join(out, "report.txt"), "w").write(text)
 print(text, end="")

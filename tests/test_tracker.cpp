@@ -850,7 +850,7 @@ TEST(Tracker, TheSmoothAscentRunsOnLockedFramesWithinItsBudgetAndTheFrameTimeIsA
     }
     EXPECT_DOUBLE_EQ(r.fitness, t.fitness().evaluate(r.phi)); // the fitness reported is the pose's
     double sum = 0;
-    for (double ms : r.stageMs) {
+    for (double ms : r.steps.values()) {
       EXPECT_GE(ms, 0.0);
       sum += ms;
     }

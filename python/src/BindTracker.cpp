@@ -41,6 +41,16 @@ void bindTracker(py::module_ &m)
           "the pose's 1-sigma along the hand's x, y, z (mm) and about them (deg), or None where it is not known (no precise stage)")
       .def_readonly("evaluations", &TrackResult::evaluations, "RM-GA's work this frame (whole evaluations)")
       .def_readonly("compute_ms", &TrackResult::computeMs, "time spent in the tracker (ms)")
+      .def_property_readonly(
+          "steps_ms",
+          [](const TrackResult &r) {
+            py::dict d;
+            const auto v = r.steps.values();
+            for (std::size_t k = 0; k < v.size(); ++k)
+              d[pm::tracker::StepTimes::names()[k]] = v[k];
+            return d;
+          },
+          "where compute_ms went, step by step (ms): plan, search, challenge, refine, measure, judge, apply")
       .def("__repr__", [](const TrackResult &r) {
         char s[120];
         std::snprintf(s, sizeof s, "<TrackResult %s, confidence %.3f%s>", pm::tracker::toString(r.state), r.confidence, r.trusted ? ", trusted" : "");

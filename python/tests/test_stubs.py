@@ -70,6 +70,8 @@ def conforms(value, t) -> bool:
         return isinstance(value, tuple) and len(value) == len(args) and all(conforms(v, a) for v, a in zip(value, args))
     if origin is list:
         return isinstance(value, list) and all(conforms(v, args[0]) for v in value)
+    if origin is dict:
+        return isinstance(value, dict) and all(conforms(k, args[0]) and conforms(v, args[1]) for k, v in value.items())
     if origin is np.ndarray:
         dtype = typing.get_args(args[1])[0] if len(args) > 1 else None
         return isinstance(value, np.ndarray) and (dtype is None or value.dtype == dtype)

@@ -93,6 +93,9 @@ def test_the_result_carries_what_a_robot_needs(rig, model, frames):
     assert r.pose.shape == (4, 4) and np.allclose(r.pose[3], [0, 0, 0, 1])
     assert len(r.sigma) == 6 and all(0 < s < 5 for s in r.sigma)
     assert 0.9 <= r.visible_share <= 1
+    assert list(r.steps_ms) == ["plan", "search", "challenge", "refine", "measure", "judge", "apply"]
+    assert all(ms >= 0 for ms in r.steps_ms.values()) and r.steps_ms["search"] > 0
+    assert abs(sum(r.steps_ms.values()) - r.compute_ms) < 1e-6
     np.testing.assert_array_equal(t.pose, r.pose)
     t.init_from_pose(r.pose)
     assert t.state == pm.TrackState.TRACKING

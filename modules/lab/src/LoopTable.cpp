@@ -12,7 +12,7 @@ void writeLoopCsvHeader(std::ostream &csv, unsigned dof)
          "translation_error_mm,rotation_error_deg,fitness,state,servoing,compute_ms,estimate_error_mm,estimate_error_deg,"
          "used_error_mm,used_error_deg,"
          "confidence,verified,trusted,held_by,visible_share,background_hue_deg"
-      << uncertaintyCsvHeader() << cuesCsvHeader();
+      << uncertaintyCsvHeader() << cuesCsvHeader() << stepsCsvHeader();
   for (unsigned i = 1; i <= dof; ++i)
     csv << ",q" << i;
   for (unsigned i = 1; i <= dof; ++i)
@@ -36,6 +36,7 @@ void writeLoopCsvRow(std::ostream &csv, const LoopFrame &f, bool oracle)
       << f.track.backgroundHueDeg;
   writeUncertaintyCells(csv, f.track.uncertainty);
   writeCueCells(csv, f.track.cues);
+  writeStepCells(csv, f.track.steps);
   for (unsigned i = 0; i < f.q.size(); ++i)
     csv << "," << f.q[i];
   for (unsigned i = 0; i < f.qdot.size(); ++i)

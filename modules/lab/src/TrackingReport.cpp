@@ -134,7 +134,7 @@ void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
 {
   out << "t,true_x,true_y,true_z,true_e1,true_e2,true_e3,est_x,est_y,est_z,est_e1,est_e2,est_e3,err_x,err_y,err_z,"
          "err_e1,err_e2,err_e3,fitness,quality,state,evaluations,generations,compute_ms,moving,confidence,trusted,held_by,visible_share,background_hue_deg"
-      << uncertaintyCsvHeader() << cuesCsvHeader() << "\n";
+      << uncertaintyCsvHeader() << cuesCsvHeader() << stepsCsvHeader() << "\n";
   out << std::setprecision(8);
   for (const TrackedFrame &f : frames) {
     out << f.t;
@@ -150,6 +150,7 @@ void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames)
         << f.result.visibleShare << "," << f.result.backgroundHueDeg;
     writeUncertaintyCells(out, f.result.uncertainty);
     writeCueCells(out, f.result.cues);
+    writeStepCells(out, f.result.steps);
     out << "\n";
   }
   if (!out)
@@ -171,6 +172,20 @@ void writeCueCells(std::ostream &out, const tracker::ConfidenceCues &c)
 }
 
 const char *uncertaintyCsvHeader() { return ",sigma_x_mm,sigma_y_mm,sigma_z_mm,sigma_rx_deg,sigma_ry_deg,sigma_rz_deg"; }
+
+std::string stepsCsvHeader()
+{
+  std::string h;
+  for (const char *n : tracker::StepTimes::names())
+    h += std::string(",step_") + n + "_ms";
+  return h;
+}
+
+void writeStepCells(std::ostream &out, const tracker::StepTimes &s)
+{
+  for (double ms : s.values())
+    out << "," << ms;
+}
 
 void writeUncertaintyCells(std::ostream &out, const precise::PoseUncertainty &u)
 {

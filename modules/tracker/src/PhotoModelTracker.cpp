@@ -19,6 +19,12 @@ const char *toString(TrackState s)
   return "?";
 }
 
+const std::array<const char *, StepTimes::kCount> &StepTimes::names()
+{
+  static const std::array<const char *, kCount> n = {"plan", "search", "challenge", "refine", "measure", "judge", "apply"};
+  return n;
+}
+
 struct PhotoModelTracker::Clock
 {
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
@@ -75,25 +81,30 @@ TrackResult PhotoModelTracker::track(const core::CameraImages &images)
   // What the frame sees (its hue planes, the background's hue) is m_fitness.frame(): made by plan (and
   // by search on an escalation, by completeHue for the judgement), and given to every step that scores.
   const core::HueFrame &hues = m_fitness.frame();
+  std::array<double, StepTimes::kCount> at{}; // the clock at the end of each step (ms)
   const FramePlan frame = plan(images, clock);                                   // 1. steady? the hue planes; the budgets
+  at[0] = clock.ms();
   RmGaUpdate update;
   const SearchedPose found = search(frame, images, clock);                       // 2. RM-GA (escalated if a steady frame falls)
+  at[1] = clock.ms();
   const SearchedPose searched = challenge(frame, found, update);                // 3. the lock verifier's challenger, if verifying
-  const double searchedMs = clock.ms();
+  at[2] = clock.ms();
   const bool locked = m_scale.quality(searched.pose.fitness) >= m_params.lock.quality;
   const RefinedPose refined = m_refinement.refine(hues, searched.pose, m_history, images, locked); // 4. the refinement chain
-  const double refinedMs = clock.ms();
+  at[3] = clock.ms();
   completeHue(frame, searched, refined.pose.phi, images);
   const Evidence evidence = m_judgement.measure(hues, refined);                // 5. the judgement's evidence, once
+  at[4] = clock.ms();
   update.restart = updateState(refined.pose, evidence);                        // 6. searching, tracking or lost
   const TrackState state = m_lock.state();
   const Verdict verdict = judge(refined, evidence);                            // 7. confidence, trust, uncertainty
+  at[5] = clock.ms();
   afterJudgement(refined, verdict, update);                                    // 8. what the parts learn and ask of RM-GA
   const double backgroundHueDeg = m_fitness.backgroundHue();                   // what the frame was scored with
   if (const std::optional<double> hue = m_background.learn(hues, refined.pose.phi, verdict.trusted)) // 9. the background's hue as seen now
     useBackgroundHue(*hue);
-  const double computeMs = clock.ms();
-  const TrackResult r = assembled(searched, refined, state, verdict, backgroundHueDeg, {frame.hueMs, searchedMs, refinedMs, computeMs});
+  at[6] = clock.ms();
+  const TrackResult r = assembled(searched, refined, state, verdict, backgroundHueDeg, at);
   m_history.remember(r);
   return r;
 }
@@ -204,7 +215,7 @@ void PhotoModelTracker::afterJudgement(const RefinedPose &refined, const Verdict
 }
 
 TrackResult PhotoModelTracker::assembled(const SearchedPose &searched, const RefinedPose &refined, TrackState state, const Verdict &verdict,
-                                         double backgroundHueDeg, const std::array<double, 4> &clockMs) const
+                                         double backgroundHueDeg, const std::array<double, StepTimes::kCount> &at) const
 {
   TrackResult r;
   r.phi = refined.pose.phi;
@@ -215,8 +226,11 @@ TrackResult PhotoModelTracker::assembled(const SearchedPose &searched, const Ref
   r.evaluations = searched.work.evaluations;
   r.candidates = searched.work.candidates;
   r.generations = searched.work.generations;
-  r.stageMs = {clockMs[0], clockMs[1] - clockMs[0], clockMs[2] - clockMs[1], clockMs[3] - clockMs[2]};
-  r.computeMs = clockMs[3];
+  double *const step[StepTimes::kCount] = {&r.steps.plan, &r.steps.search, &r.steps.challenge, &r.steps.refine,
+                                           &r.steps.measure, &r.steps.judge, &r.steps.apply};
+  for (std::size_t k = 0; k < StepTimes::kCount; ++k)
+    *step[k] = at[k] - (k ? at[k - 1] : 0.0);
+  r.computeMs = at.back();
   r.steady = searched.steady;
   r.escalated = searched.escalated;
   r.switched = searched.switched;

@@ -227,6 +227,9 @@ class TrackResult:
     @property
     def compute_ms(self) -> float:
         """Time spent in the tracker (ms)."""
+    @property
+    def steps_ms(self) -> Dict[str, float]:
+        """Where compute_ms went, step by step (ms): plan, search, challenge, refine, measure, judge, apply."""
 
 class Tracker:
     """The photo-model tracker (pm::tracker::PhotoModelTracker): a stereo pair in, the pose of the model in the hand

@@ -102,8 +102,9 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
 /*!
   Writes \e frames as pm-track's frames.csv: a header, then per frame t, the truth (NaN when
   unknown), the estimate, their difference, fitness, quality, state, evaluations, generations,
-  compute_ms, moving (0/1), confidence, trusted (0/1) and the reported uncertainty
-  (writeUncertaintyCells()), at 8 significant digits. Throws pm::core::Error when the stream fails.
+  compute_ms, moving (0/1), confidence, trusted (0/1), the reported uncertainty
+  (writeUncertaintyCells()), the confidence's cues and the steps' times (writeStepCells()), at 8
+  significant digits. Throws pm::core::Error when the stream fails.
 */
 void writeFramesCsv(std::ostream &out, const std::vector<TrackedFrame> &frames);
 
@@ -115,6 +116,10 @@ void writeCueCells(std::ostream &out, const tracker::ConfidenceCues &c);
 const char *uncertaintyCsvHeader();
 //! Its six cells of one frame, each after a comma; empty when the uncertainty is unknown (TrackResult::uncertainty).
 void writeUncertaintyCells(std::ostream &out, const precise::PoseUncertainty &u);
+//! The frame's steps' times of a frames.csv: ",step_plan_ms,step_search_ms,...,step_apply_ms" (tracker::StepTimes).
+std::string stepsCsvHeader();
+//! Their seven cells of one frame (ms), each after a comma.
+void writeStepCells(std::ostream &out, const tracker::StepTimes &s);
 
 //! What a TrackingReport does not know of the run (for its summary).
 struct TrackingRunInfo

@@ -149,9 +149,9 @@ private:
   Verdict judge(const RefinedPose &refined, const Evidence &evidence) const;
   //! 8. What the lock, RM-GA (\e update, applied), the verifier and the precise stage learn from the verdict.
   void afterJudgement(const RefinedPose &refined, const Verdict &verdict, RmGaUpdate &update);
-  //! The frame's result from the steps' values; \e clockMs: the clock after the hues, the search, the refinement and at the end.
+  //! The frame's result from the steps' values; \e at: the clock at the end of each step (StepTimes' order, ms).
   TrackResult assembled(const SearchedPose &searched, const RefinedPose &refined, TrackState state, const Verdict &verdict,
-                        double backgroundHueDeg, const std::array<double, 4> &clockMs) const;
+                        double backgroundHueDeg, const std::array<double, StepTimes::kCount> &at) const;
   //! A new start whose last frame is \e first (searching, or a pose given: tracking and verified).
   void reset(const TrackResult &first);
   //! The fitness and the precise stage compare with the background's hue \e deg from now on.

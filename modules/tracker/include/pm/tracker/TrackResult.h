@@ -30,6 +30,26 @@ enum class TrackState { Searching, Tracking, Lost };
 //! The state's name: "searching", "tracking" or "lost".
 const char *toString(TrackState s);
 
+/*!
+  Where a frame's time went (ms), PhotoModelTracker::track()'s steps in order; their sum is the
+  frame's TrackResult::computeMs. frames.csv keeps them (step_plan_ms ... step_apply_ms).
+*/
+struct StepTimes
+{
+  double plan = 0;      //!< 1. the frame's plan: steady or not, the budgets, the hue planes (in the steady windows)
+  double search = 0;    //!< 2. RM-GA, and its escalation when a steady frame's q falls
+  double challenge = 0; //!< 3. the lock verifier's challenger, on the frames it verifies
+  double refine = 0;    //!< 4. the refinement chain: the precise stage (or the smooth ascent and the tilt filter)
+  double measure = 0;   //!< 5. the judgement's evidence (and, on a windowed frame, the hue it reads on the whole images)
+  double judge = 0;     //!< 6-7. the lock's state, the confidence, the trust and the uncertainty
+  double apply = 0;     //!< 8-9. what the parts learn and ask of RM-GA; the background's hue
+  static constexpr std::size_t kCount = 7; //!< the steps
+  //! Their names, in order: "plan", "search", "challenge", "refine", "measure", "judge", "apply".
+  static const std::array<const char *, kCount> &names();
+  //! Their times, in the order of names().
+  std::array<double, kCount> values() const { return {plan, search, challenge, refine, measure, judge, apply}; }
+};
+
 //! What PhotoModelTracker::track() says about a frame (also kept: PhotoModelTracker::lastResult()).
 struct TrackResult
 {
@@ -42,11 +62,7 @@ struct TrackResult
   long candidates = 0;      //!< poses they scored
   int generations = 0;      //!< RM-GA generations they ran
   double computeMs = 0;     //!< time spent in track()
-  /*!
-    Where it went (ms): the hue planes; the search (RM-GA, any escalation, the verification); the
-    refinement chain (the precise stage, or the smooth ascent and the tilt filter); the judgement.
-  */
-  std::array<double, 4> stageMs{};
+  StepTimes steps;          //!< where it went, step by step (their sum is computeMs)
   bool steady = false;      //!< the frame had the steady budget (and no more)
   bool escalated = false;   //!< a steady frame whose q fell, given the rest of the whole budget (SteadyParams::escalation)
   int ascentEvaluations = 0; //!< evaluations of the smooth score and its gradient by the climb (0: none)
