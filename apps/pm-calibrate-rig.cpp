@@ -40,7 +40,7 @@ void addOptions(CLI::App &app, Options &o)
   app.add_option("--out", o.out, "output folder (created if missing)")->required();
   auto *optL = app.add_option("--left", o.leftFiles, "left images: files in pair order (e.g. data/left*.jpg), or a printf pattern (e.g. L_%02d.png, from 0)");
   auto *optR = app.add_option("--right", o.rightFiles, "right images, the same way");
-  auto *optI = app.add_option("--images", o.imageFiles, "one camera: its images, files in order or a printf pattern (e.g. C_%02d.png, from 0)");
+  auto *optI = app.add_option("--camera-images", o.imageFiles, "one camera: its images, files in order or a printf pattern (e.g. C_%02d.png, from 0)");
   auto *optP = app.add_option("--hand-poses", o.handPoseFiles, "one camera: the hand's pose in the robot's base frame at each image (vpPoseVector YAML, "
                                                                "as ViSP's hand-eye tutorial writes them), files or a printf pattern "
                                                                "(e.g. pose_fPe_%d.yaml): the camera's pose on the hand by vpHandEyeCalibration");
@@ -117,7 +117,7 @@ void calibrateStereo(Options &o, const pm::calib::Pattern &board)
     std::cout << pm::report::describeRigCalibration(r, o.out) << std::flush;
 }
 
-//! The images (and hand poses) of one camera: read from --images / --hand-poses, or rendered (--simulate --cameras 1).
+//! The images (and hand poses) of one camera: read from --camera-images / --hand-poses, or rendered (--simulate --cameras 1).
 pm::lab::CalibrationPass oneCameraViews(Options &o, const pm::calib::Pattern &board, std::optional<pm::core::PinholeCamera> &truth)
 {
   pm::lab::CalibrationPass pass;
@@ -132,7 +132,7 @@ pm::lab::CalibrationPass oneCameraViews(Options &o, const pm::calib::Pattern &bo
   if (!o.handPoseFiles.empty()) {
     o.handPoseFiles = pm::app::imageFiles(o.handPoseFiles);
     if (o.handPoseFiles.size() != o.imageFiles.size())
-      throw CLI::ValidationError("--images/--hand-poses", std::to_string(o.imageFiles.size()) + " images but " +
+      throw CLI::ValidationError("--camera-images/--hand-poses", std::to_string(o.imageFiles.size()) + " images but " +
                                                               std::to_string(o.handPoseFiles.size()) + " hand poses (one per image)");
   }
   pm::app::Progress progress("reading", o.imageFiles.size(), o.quiet);
@@ -153,7 +153,7 @@ pm::lab::CalibrationPass oneCameraViews(Options &o, const pm::calib::Pattern &bo
 void calibrateOneCamera(Options &o, const pm::calib::Pattern &board)
 {
   if (!o.simulate && o.handPoseFiles.empty() && o.hMc.empty())
-    throw CLI::ValidationError("--images", "one camera needs its pose on the hand: --hand-poses (one per image, for a hand-eye "
+    throw CLI::ValidationError("--camera-images", "one camera needs its pose on the hand: --hand-poses (one per image, for a hand-eye "
                                            "calibration) or --hMc");
   pm::report::CameraCalibrationOutputs r;
   const pm::lab::CalibrationPass pass = oneCameraViews(o, board, r.truth);
@@ -190,7 +190,7 @@ int main(int argc, char **argv)
   CLI::App app{"Calibrates a rig from images of a chessboard or an AprilTag board. A stereo rig (--left, --right): each camera's "
                "intrinsics and lens distortion (cv::calibrateCamera, k1 k2 p1 p2 k3), then the right camera's pose in the left one "
                "(cv::stereoCalibrate); rig.json's hand frame lies midway between the cameras, axes halfway between theirs. One "
-               "camera (--images): its intrinsics and lens, and its pose on the hand, from the robot's hand poses at each image "
+               "camera (--camera-images): its intrinsics and lens, and its pose on the hand, from the robot's hand poses at each image "
                "(--hand-poses, vpHandEyeCalibration) or given (--hMc). Views whose board is not whole, or blurred, are rejected "
                "with the reason. Writes rig.json, cameras.xml (ViSP), rig_<camera>.yml (OpenCV, exact), coverage.png (every "
                "corner, residuals as red arrows) and summary.json. --simulate N renders N pairs (or views) through a known rig "
@@ -201,7 +201,7 @@ int main(int argc, char **argv)
   addOptions(app, o);
   return pm::app::run(app, argc, argv, [&] {
     if (!o.simulate && o.leftFiles.empty() && o.imageFiles.empty())
-      throw CLI::ValidationError("--left/--right, --images or --simulate", "one of them is needed");
+      throw CLI::ValidationError("--left/--right, --camera-images or --simulate", "one of them is needed");
     const std::unique_ptr<pm::calib::Pattern> pattern = pm::app::makePattern(o.patternKind, o.boardText);
     if (o.oneCamera())
       calibrateOneCamera(o, *pattern);

@@ -45,8 +45,8 @@ void addOptions(CLI::App &app, Options &o)
   optAll->excludes(optTarget);
   auto *optL = app.add_option("--left", o.left, "left image of a user's stereo pair");
   auto *optR = app.add_option("--right", o.right, "right image of a user's stereo pair");
-  auto *optI = app.add_option("--images", o.images, "a user's still frame of any rig: one image per camera of --rig, in its order");
-  auto *optM = app.add_option("--model", o.modelPath, "photo-model file (with --left/--right or --images)");
+  auto *optI = app.add_option("--camera-images", o.images, "a user's still frame of any rig: one image per camera of --rig, in its order");
+  auto *optM = app.add_option("--model", o.modelPath, "photo-model file (with --left/--right or --camera-images)");
   optL->needs(optR)->needs(optM)->excludes(optTarget)->excludes(optAll)->excludes(optI);
   optR->needs(optL);
   optI->needs(optM)->excludes(optTarget)->excludes(optAll);
@@ -81,9 +81,9 @@ pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm:
     return pm::lab::renderStillPair(pm::sim::makeTarget(code), ref, rig, o.sp, o.lab);
   const std::vector<std::string> files = o.images.empty() ? std::vector<std::string>{o.left, o.right} : o.images;
   if (files.size() != rig.size())
-    throw CLI::ValidationError(o.images.empty() ? "--left/--right" : "--images",
+    throw CLI::ValidationError(o.images.empty() ? "--left/--right" : "--camera-images",
                                std::to_string(files.size()) + " image" + (files.size() == 1 ? "" : "s") + " for a rig of " +
-                                   std::to_string(rig.size()) + " camera" + (rig.size() == 1 ? "" : "s") + " (one per camera: --images)");
+                                   std::to_string(rig.size()) + " camera" + (rig.size() == 1 ? "" : "s") + " (one per camera: --camera-images)");
   pm::lab::StillPair p = pm::lab::loadStillPair(files, o.modelPath);
   p.haveTruth = !o.truthText.empty();
   p.truth = ref;
@@ -201,7 +201,7 @@ int main(int argc, char **argv)
     const auto v = pm::app::parseNumbers(o.pose, 6, "--pose");
     const pm::core::Phi ref{v[0], v[1], v[2], v[3], v[4], v[5]};
     if (!o.truthText.empty() && o.left.empty() && o.images.empty())
-      throw CLI::ValidationError("--truth", "the truth of a user's images (--left/--right or --images)");
+      throw CLI::ValidationError("--truth", "the truth of a user's images (--left/--right or --camera-images)");
     const pm::core::CameraRig rig = pm::io::loadCameraRig(o.rigPath);
     if (o.allTargets)
       return detectAll(o, tp, rig, ref);

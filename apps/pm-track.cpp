@@ -80,9 +80,9 @@ void addOptions(CLI::App &app, Options &o)
   auto *optLS = app.add_option("--left-source", o.leftSource, "live: the left camera through OpenCV's VideoCapture: a device "
                                                              "index, a V4L2 path, a video file or a GStreamer pipeline");
   auto *optRS = app.add_option("--right-source", o.rightSource, "live: the right camera, the same way");
-  auto *optI = app.add_option("--images", o.cameraImages, "recorded sequence of any rig: one printf pattern per camera of --rig, in "
+  auto *optI = app.add_option("--camera-images", o.cameraImages, "recorded sequence of any rig: one printf pattern per camera of --rig, in "
                                                           "its order (e.g. C_%04d.png for a rig of one camera), from --first-frame");
-  auto *optS = app.add_option("--sources", o.cameraSources, "live, any rig: one source per camera of --rig, in its order, as "
+  auto *optS = app.add_option("--camera-sources", o.cameraSources, "live, any rig: one source per camera of --rig, in its order, as "
                                                             "--left-source takes them");
   app.add_option("--max-skew-ms", o.vcp.maxSkewMs, "live: largest time difference of the cameras' frames taken together")
       ->check(CLI::NonNegativeNumber);
@@ -98,7 +98,7 @@ void addOptions(CLI::App &app, Options &o)
   optR->needs(optL);
   (void)optT;
   app.add_option("--first-frame", o.firstFrame, "recorded sequence: index of the first frame")->check(CLI::Range(0, 100000000));
-  auto *optRig = app.add_option("--rig", o.rigPath, "rig file: a stereo rig, or one to four cameras (--images, --sources, the simulator)");
+  auto *optRig = app.add_option("--rig", o.rigPath, "rig file: a stereo rig, or one to four cameras (--camera-images, --camera-sources, the simulator)");
   auto *optScene = app.add_option("--scene", o.sceneDir, "a scene rendered by another renderer (pm-export-scene, then "
                                   "scripts/cycles/render.py): the model is built from its pass (views/), as pm-make-model --views "
                                   "builds it, and its sequence is tracked against its truth");
@@ -122,21 +122,21 @@ struct Input
   std::string description;
 };
 
-//! The source of --images (one pattern per camera) or --sources (one per camera), any rig.
+//! The source of --camera-images (one pattern per camera) or --camera-sources (one per camera), any rig.
 std::unique_ptr<pm::capture::StereoSource> openCameras(const Options &o, const pm::core::CameraRig &rig)
 {
   pm::capture::VideoCaptureParams vcp = o.vcp;
   vcp.maxPairs = o.maxFrames();
   const std::vector<std::string> &given = o.cameraSources.empty() ? o.cameraImages : o.cameraSources;
   if (given.size() != rig.size())
-    throw CLI::ValidationError(o.cameraSources.empty() ? "--images" : "--sources",
+    throw CLI::ValidationError(o.cameraSources.empty() ? "--camera-images" : "--camera-sources",
                                std::to_string(given.size()) + " given for a rig of " + std::to_string(rig.size()) + " camera" +
                                    (rig.size() == 1 ? "" : "s") + " (one per camera, in the rig's order)");
   if (!o.cameraSources.empty())
     return std::make_unique<pm::capture::VideoCaptureSource>(o.cameraSources, vcp);
   for (const std::string &p : o.cameraImages)
     if (!pm::app::isImagePattern({p}))
-      throw CLI::ValidationError("--images", "'" + p + "' is not a printf pattern (e.g. C_%04d.png): one pattern per camera");
+      throw CLI::ValidationError("--camera-images", "'" + p + "' is not a printf pattern (e.g. C_%04d.png): one pattern per camera");
   return pm::capture::ImageSequenceSource::ofCameras(o.cameraImages, o.firstFrame, o.fps, 0, 0, o.maxFrames());
 }
 
@@ -151,7 +151,7 @@ Input openRecordedOrLive(const Options &o, const pm::core::CameraRig &rig)
     in.source = openCameras(o, rig);
   } else if (rig.size() != 2) {
     throw CLI::ValidationError("--left/--right", "a stereo pair, but the rig has " + std::to_string(rig.size()) +
-                                                     " camera" + (rig.size() == 1 ? "" : "s") + ": give --images (or --sources), one per camera");
+                                                     " camera" + (rig.size() == 1 ? "" : "s") + ": give --camera-images (or --camera-sources), one per camera");
   } else if (o.live()) {
     pm::capture::VideoCaptureParams vcp = o.vcp;
     vcp.maxPairs = o.maxFrames();
@@ -379,13 +379,13 @@ int main(int argc, char **argv)
   pm::app::TrackerOptions trackerOptions(app, pm::tracker::TrackerParams());
   app.add_flag("--save-pairs", o.savePairs, "also write every stereo pair tracked, left_%04d.png and right_%04d.png (a rig of "
                                             "other than two cameras: camera0_%04d.png, camera1_%04d.png ...; and, on the simulator, "
-                                            "its truth in truth.csv): a recording that --left, --right (or --images) and --truth replay");
+                                            "its truth in truth.csv): a recording that --left, --right (or --camera-images) and --truth replay");
   app.add_flag("--quiet", o.quiet, "no progress, no summary on stdout");
 
   return pm::app::run(app, argc, argv, [&] {
     const pm::tracker::TrackerParams tp = trackerOptions.resolve();
     if (!o.truthPath.empty() && (!o.recorded() || o.live()))
-      throw CLI::ValidationError("--truth", "the truth of a recorded sequence (--left/--right or --images)");
+      throw CLI::ValidationError("--truth", "the truth of a recorded sequence (--left/--right or --camera-images)");
     // A scene rendered elsewhere is a stereo rig's; the rest take any rig.
     const pm::core::CameraRig rig = o.scene() ? pm::core::CameraRig(pm::io::loadRig(pm::lab::openRenderedScene(o.sceneDir, o.scenePeer).rigPath))
                                               : pm::io::loadCameraRig(o.rigPath);

@@ -67,7 +67,7 @@ TEST(Apps, EveryProgramSpeaksTheSameVocabulary)
   // Old spellings, and names that mean something else elsewhere: never listed.
   const std::set<std::string> retired{"--left-images", "--right-images", "--steps-file", "--left-files", "--images",
                                       "--output", "--out-dir", "--model-file", "--rig-file", "--random-seed", "--silent"};
-  int withImages = 0, withRig = 0;
+  int withImages = 0, withRig = 0, withCameraImages = 0;
   for (const char *p : {"pm-make-model", "pm-render", "pm-make-rig", "pm-fitness-map", "pm-detect", "pm-track", "pm-servo",
                         "pm-calib-baseline", "pm-calibrate-rig", "pm-compare", "pm-confidence", "pm-uncertainty", "pm-export-scene"}) {
     const auto r = runProgram(p, "--help");
@@ -81,6 +81,11 @@ TEST(Apps, EveryProgramSpeaksTheSameVocabulary)
     withImages += static_cast<int>(o.count("--left"));
     // The live cameras are --left-source / --right-source; a recording's first frame is --first-frame.
     EXPECT_EQ(o.count("--left-source"), o.count("--right-source")) << p;
+    // A rig of any number of cameras: --camera-images and, live, --camera-sources (one per camera), beside a pair's options.
+    if (o.count("--camera-sources")) {
+      EXPECT_TRUE(o.count("--camera-images") && o.count("--left-source")) << p;
+    }
+    withCameraImages += static_cast<int>(o.count("--camera-images"));
     withRig += static_cast<int>(o.count("--rig"));
     // A simulated target is --target; a model file is --model; a GA budget is --budget-evals.
     if (o.count("--budget-ms")) {
@@ -88,6 +93,7 @@ TEST(Apps, EveryProgramSpeaksTheSameVocabulary)
     }
   }
   EXPECT_EQ(withImages, 5); // pm-fitness-map, pm-detect, pm-track, pm-calib-baseline, pm-calibrate-rig
+  EXPECT_EQ(withCameraImages, 3); // pm-detect, pm-track, pm-calibrate-rig
   EXPECT_GE(withRig, 9);
 
   // An old spelling still works, with one line on stderr naming the new one.

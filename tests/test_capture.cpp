@@ -265,7 +265,7 @@ TEST(PmTrack, TracksOneVideoStreamThroughARigOfOneCamera)
   TempDir d("track-one");
   const Recording r = record(d, 30);
   const std::string rig = pm::test::dataPath("rig/pa10_mono.json");
-  const auto run = runProgram("pm-track", "--rig " + rig + " --sources " + r.left + " --model " + r.model +
+  const auto run = runProgram("pm-track", "--rig " + rig + " --camera-sources " + r.left + " --model " + r.model +
                                               " --budget-evals 1900 --ga-seed 1 --quiet --out " + d.file("o"));
   ASSERT_EQ(run.status, 0) << run.err;
   const auto s = nlohmann::json::parse(pm::test::readText(d.file("o/summary.json")));
@@ -277,20 +277,20 @@ TEST(PmTrack, TracksOneVideoStreamThroughARigOfOneCamera)
   pm::capture::CameraFrame f;
   ASSERT_TRUE(one.nextFrame(f));
   pm::io::writeImage(f.images[0], d.file("still.png"));
-  const auto det = runProgram("pm-detect", "--rig " + rig + " --images " + d.file("still.png") + " --model " + r.model +
+  const auto det = runProgram("pm-detect", "--rig " + rig + " --camera-images " + d.file("still.png") + " --model " + r.model +
                                                " --max-time-s 2 --quiet --out " + d.file("det"));
   ASSERT_EQ(det.status, 0) << det.err;
   const auto ds = nlohmann::json::parse(pm::test::readText(d.file("det/summary.json")));
   EXPECT_NEAR(ds["pose"][2].get<double>(), 500.0, 15.0) << ds["pose"].dump();
   EXPECT_EQ(pm::io::readColorImage(d.file("det/detection.png")).getWidth(), 640u);
   // A pair's streams for a rig of one camera, or one stream for the pair: errors, nothing written.
-  const auto two = runProgram("pm-track", "--rig " + rig + " --sources " + r.left + " " + r.right + " --model " + r.model + " --out " + d.file("x"));
+  const auto two = runProgram("pm-track", "--rig " + rig + " --camera-sources " + r.left + " " + r.right + " --model " + r.model + " --out " + d.file("x"));
   EXPECT_EQ(two.status, 2);
   EXPECT_NE(two.err.find("2 given for a rig of 1 camera"), std::string::npos) << two.err;
   const auto pair = runProgram("pm-track", "--rig " + rig + " --left-source " + r.left + " --right-source " + r.right + " --model " + r.model +
                                                " --out " + d.file("x"));
   EXPECT_EQ(pair.status, 2);
-  EXPECT_NE(pair.err.find("give --images (or --sources)"), std::string::npos) << pair.err;
+  EXPECT_NE(pair.err.find("give --camera-images (or --camera-sources)"), std::string::npos) << pair.err;
   EXPECT_FALSE(std::filesystem::exists(d.file("x")));
 }
 

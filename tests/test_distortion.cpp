@@ -722,7 +722,7 @@ TEST(PmCalibrateRig, OneCameraWritesARigOfOneCameraOnTheHandAndRefusesBadInput)
     pm::io::writeImage(pass.views[i].image, d.file("C_" + std::to_string(i) + ".png"));
     pm::io::writePoseYaml(pass.fMh[i], d.file("pose_fPe_" + std::to_string(i) + ".yaml"));
   }
-  const std::string images = " --images " + d.file("C_%d.png") + " --out " + d.file("u") + " --quiet";
+  const std::string images = " --camera-images " + d.file("C_%d.png") + " --out " + d.file("u") + " --quiet";
   const auto files = runProgram("pm-calibrate-rig", images + " --hand-poses " + d.file("pose_fPe_%d.yaml"));
   ASSERT_EQ(files.status, 0) << files.err;
   EXPECT_LT((pm::io::loadCameraRig(d.file("u/rig.json")).cameras[0].hMc.getTranslationVector() - truth.hMc.getTranslationVector())
@@ -732,7 +732,7 @@ TEST(PmCalibrateRig, OneCameraWritesARigOfOneCameraOnTheHandAndRefusesBadInput)
   EXPECT_NEAR(pm::io::loadCameraRig(d.file("u/rig.json")).cameras[0].hMc[0][3], 0.01, 1e-12);
 
   // Bad input: no pose on the hand, more images than poses, both ways of giving it; nothing written.
-  const std::string x = " --images " + d.file("C_%d.png") + " --out " + d.file("x");
+  const std::string x = " --camera-images " + d.file("C_%d.png") + " --out " + d.file("x");
   const auto noPose = runProgram("pm-calibrate-rig", x);
   EXPECT_EQ(noPose.status, 2);
   EXPECT_NE(noPose.err.find("--hand-poses"), std::string::npos) << noPose.err;

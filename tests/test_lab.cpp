@@ -216,7 +216,7 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::getline(lines, header);
   std::getline(lines, row);
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 67); // 68 columns: 30, 6 sigmas, 18 cues and 14 joints
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 74); // 75 columns: 30, 6 sigmas, 18 cues, 7 steps' times and 14 joints
   EXPECT_NE(row.find(",1.25,"), std::string::npos) << row;
   EXPECT_NE(row.find(",oracle,"), std::string::npos) << row;
   EXPECT_NE(row.find(",,,,,,"), std::string::npos) << row; // an unknown uncertainty: six empty cells
@@ -279,8 +279,8 @@ TEST(LoopTable, EveryRowHasTheHeadersColumns)
   std::istringstream sixLines(six.str());
   std::getline(sixLines, header);
   std::getline(sixLines, row);
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 65);
-  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 65);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 72);
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','), 72);
   EXPECT_EQ(header.find(",q7"), std::string::npos);
 }
 

@@ -48,7 +48,7 @@ std::string writeRigCalibration(const std::string &dir, const RigCalibrationOutp
 //! What pm-calibrate-rig prints of it (written to \e dir): residuals, baseline, lenses, the pairs left out and why.
 std::string describeRigCalibration(const RigCalibrationOutputs &o, const std::string &dir);
 
-//! A one-camera calibration (pm-calibrate-rig --images) and what it is measured against.
+//! A one-camera calibration (pm-calibrate-rig --camera-images) and what it is measured against.
 struct CameraCalibrationOutputs
 {
   std::string source;                   //!< the images, in words ("14 images")
