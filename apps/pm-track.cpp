@@ -261,10 +261,6 @@ void showFrame(const pm::capture::CameraFrame &cf, const pm::lab::TrackedFrame &
   status << std::fixed << std::setprecision(2) << pm::tracker::toString(f.result.state) << ", q " << f.result.quality << ", "
          << std::setprecision(1) << f.result.computeMs << " ms, frame " << k << (f.result.trusted ? ", trusted" : ", held: ")
          << (f.result.heldBy && !f.result.trusted ? f.result.heldBy : "");
-  if (cf.images.size() == 2) {
-    view.show(cf.images[0], cf.images[1], tracker.pointScores(0), tracker.pointScores(1), status.str());
-    return;
-  }
   std::vector<std::vector<pm::core::PointScore>> scores;
   for (std::size_t c = 0; c < cf.images.size(); ++c)
     scores.push_back(tracker.pointScores(static_cast<int>(c)));
@@ -275,9 +271,6 @@ void showFrame(const pm::capture::CameraFrame &cf, const pm::lab::TrackedFrame &
 Run track(const Options &o, const pm::core::CameraRig &rig, Input &in, pm::tracker::PhotoModelTracker &tracker, pm::io::StagedFiles &files,
           pm::report::LiveView &view)
 {
-  if (in.source->cameraCount() != rig.size())
-    throw pm::core::Error(in.source->describe() + " gives " + std::to_string(in.source->cameraCount()) + " images a frame, but the rig has " +
-                          std::to_string(rig.size()) + " camera" + (rig.size() == 1 ? "" : "s"));
   std::ofstream truthCsv;
   if (o.savePairs && in.lab)
     truthCsv.open(files.stage("truth.csv"));

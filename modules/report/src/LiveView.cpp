@@ -38,7 +38,7 @@ void LiveView::show(const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, c
 {
   if (!m_wanted)
     return;
-  showFrame(sideBySide(drawPointScores(left, scoresLeft, status), drawPointScores(right, scoresRight, "right")));
+  show(core::CameraImages(left, right), {scoresLeft, scoresRight}, status);
 }
 
 void LiveView::show(const core::CameraImages &images, const std::vector<std::vector<core::PointScore>> &scores, const std::string &status)
