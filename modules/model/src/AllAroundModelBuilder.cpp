@@ -9,9 +9,11 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <thread>
 
 #include <opencv2/imgproc.hpp>
 
+#include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
 #include "pm/core/UndistortMap.h"
@@ -371,11 +373,28 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
   M.nInDropped = out.nHighlight;
   for (int k = 0; k < 3; ++k)
     M.originInHandMm[k] = 1e3 * mMh0.inverse()[static_cast<unsigned>(k)][3];
+  // The viewpoints on two cores (BatchPool: on the caller alone while another build holds the pool,
+  // as the held-out models of the trust's calibration do), each from its own buffers; then taken in order.
+  std::vector<core::ModelView> sampled(dirs.size());
+  std::vector<std::exception_ptr> failed(dirs.size());
+  const std::thread::id caller = std::this_thread::get_id();
+  core::BatchPool::shared().run(dirs.size(), [&](std::size_t vi) {
+    try {
+      thread_local ViewpointScratch helperScratch; // the helper thread's buffers, kept from one build to the next
+      ViewpointScratch &own = std::this_thread::get_id() == caller ? scratch : helperScratch;
+      const Vec3 C = hull::scaled(dirs[vi], D);
+      const core::PinholeCamera::Projection cam = core::PinholeCamera::Projection::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
+      sampled[vi] = sampleViewpoint(cam, out.surface, mpts, mesh, bgHue, p, own);
+    } catch (...) {
+      failed[vi] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr &f : failed)
+    if (f)
+      std::rethrow_exception(f);
   std::vector<float> vz;
   for (std::size_t vi = 0; vi < dirs.size(); ++vi) {
-    const Vec3 C = hull::scaled(dirs[vi], D);
-    const core::PinholeCamera::Projection cam = core::PinholeCamera::Projection::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
-    core::ModelView view = sampleViewpoint(cam, out.surface, mpts, mesh, bgHue, p, scratch);
+    core::ModelView &view = sampled[vi];
     if (view.inner.size() < 8 || view.outer.size() < 8 || view.contour.size() < 8) {
       if (vi == 0)
         throw core::Error("all-around model: from the first view's direction fewer than 8 points with a hue are seen (" +

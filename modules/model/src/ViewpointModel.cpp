@@ -1,6 +1,7 @@
 #include "pm/model/ViewpointModel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <opencv2/imgproc.hpp>
@@ -29,6 +30,19 @@ void depthBuffer(const core::PinholeCamera::Projection &cam, const std::vector<V
       }
   }
 }
+
+namespace {
+
+//! The bounding box of \e mask's non-zero pixels grown by \e margin, within the image (empty when none is).
+cv::Rect roiAround(const cv::Mat &mask, int margin)
+{
+  const cv::Rect b = cv::boundingRect(mask);
+  if (b.area() == 0)
+    return b;
+  return cv::Rect(b.x - margin, b.y - margin, b.width + 2 * margin, b.height + 2 * margin) & cv::Rect(0, 0, mask.cols, mask.rows);
+}
+
+} // namespace
 
 std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projection &cam, const HullMesh &mesh, const std::vector<unsigned char> &mask, int n)
 {
@@ -94,12 +108,20 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
     return out;
   // The outline's normal from the coverage, blurred: a contour edge of the mesh zigzags across its
   // triangles, its own perpendicular is not the outline's.
+  // Blurred only over the coverage's box and the kernel's reach around it: beyond that the image is
+  // background, so the blur's border (a reflection) reads the background the whole image holds there.
   cv::Mat &cover = scratch.cover;
+  const cv::Mat maskMat(cam.h, cam.w, CV_8U, const_cast<unsigned char *>(mask));
   cover.create(cam.h, cam.w, CV_32F);
-  for (int y = 0; y < cam.h; ++y)
-    for (int x = 0; x < cam.w; ++x)
-      cover.at<float>(y, x) = mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)] ? 1.f : 0.f;
-  cv::GaussianBlur(cover, cover, cv::Size(0, 0), 1.5);
+  cover.setTo(0.f);
+  constexpr double kSigma = 1.5;
+  const int reach = static_cast<int>(std::ceil(4 * kSigma)) + 1; // OpenCV's kernel for a float image: 4 sigma a side
+  const cv::Rect box = roiAround(maskMat, reach);
+  if (box.area() > 0) {
+    cv::Mat part = cover(box);
+    cv::Mat(maskMat(box) != 0).convertTo(part, CV_32F, 1.0 / 255.0); // 1 on the coverage, 0 off it
+    cv::GaussianBlur(part, part, cv::Size(0, 0), kSigma);
+  }
   auto coverAt = [&](double u, double v) {
     const int x = std::clamp(static_cast<int>(std::floor(u)), 0, cam.w - 2), y = std::clamp(static_cast<int>(std::floor(v)), 0, cam.h - 2);
     const double fu = std::clamp(u - x, 0.0, 1.0), fv = std::clamp(v - y, 0.0, 1.0);
@@ -165,8 +187,14 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
                                           const std::vector<Vec3> &mpts, const AllAroundParams &p,
                                           const cv::Mat &mask, const std::vector<float> &zbuf, cv::Mat &inside)
 {
-  cv::distanceTransform(mask, inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  const double area = cv::countNonZero(mask);
+  // The distance to the background only over the hull's box and a pixel of background around it:
+  // the background nearest a pixel in the box is never farther than its projection on the box's
+  // border, which is background, so the distances are those of the whole image.
+  const cv::Rect box = roiAround(mask, 1);
+  if (box.area() > 0)
+    cv::distanceTransform(mask(box), inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  auto insidePx = [&](int x, int y) { return box.contains({x, y}) ? inside.at<float>(y - box.y, x - box.x) : 0.f; };
+  const double area = box.area() > 0 ? cv::countNonZero(mask(box)) : 0;
   const double step = std::max(1.0, std::sqrt(area / p.viewpoints.nIn));
   struct Pick
   {
@@ -189,12 +217,14 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
       continue;
     if (hull::dot(hull::unit(hull::sub(cam.centre, mpts[i])), {surface[i].nx, surface[i].ny, surface[i].nz}) < 0.2)
       continue;
-    if (inside.at<float>(vv, ui) < p.viewpoints.inMinInsidePx)
+    if (insidePx(ui, vv) < p.viewpoints.inMinInsidePx)
       continue;
     const long cx = static_cast<long>(std::floor(u / step)), cy = static_cast<long>(std::floor(v / step));
     const double ddx = u - (static_cast<double>(cx) + 0.5) * step, ddy = v - (static_cast<double>(cy) + 0.5) * step;
     picks.push_back({cy * 100000 + cx, ddx * ddx + ddy * ddy, i, static_cast<float>(u), static_cast<float>(v)});
   }
+  // Equal distances tie (seen: points that project to the same place); std::sort leaves their order
+  // to its implementation, and the model keeps the first.
   std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
   std::vector<core::ModelPoint> inner;
   for (std::size_t j = 0; j < picks.size(); ++j) {

@@ -88,6 +88,7 @@ struct HullMesh
     double u = 0; //!< image column (px)
     double v = 0; //!< image row (px)
     double z = 0; //!< depth (mm)
+    double iz = 0; //!< 1 / z (1/mm), for the perspective-correct depth
     bool ok = false;            //!< in front of the camera (core::PinholeCamera::Projection::project())
   };
   /*!
