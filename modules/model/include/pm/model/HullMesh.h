@@ -89,6 +89,9 @@ struct HullMesh
     double v = 0; //!< image row (px)
     double z = 0; //!< depth (mm)
     double iz = 0; //!< 1 / z (1/mm), for the perspective-correct depth
+    //! ceil(u), floor(u), ceil(v), floor(v) within [-1, w] and [-1, h]: the pixel centres a face's box holds are
+    //! from the least ceiling to the greatest floor of its vertices
+    int cu = 0, fu = -1, cv = 0, fv = -1;
     bool ok = false;            //!< in front of the camera (core::PinholeCamera::Projection::project())
   };
   /*!
