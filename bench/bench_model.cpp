@@ -4,7 +4,10 @@
 #include <cmath>
 #include <vector>
 
+#include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/AllAroundParams.h"
 #include "pm/model/HullMesh.h"
+#include "pm/model/ViewpointModel.h"
 #include "pm/model/VisualHull.h"
 
 namespace {
@@ -43,6 +46,34 @@ void Model_DepthMap(benchmark::State &state)
   state.counters["faces"] = static_cast<double>(mesh.triangles.size());
 }
 
+/*!
+  sampleViewpoint() of the same mesh, every vertex a surface point with a hue: the depth map, the
+  coverage, S_in, the outline and S_out of one of a model's 240 viewpoints (counter: the outline's points).
+*/
+void Model_Viewpoint(benchmark::State &state)
+{
+  static const pm::model::HullMesh mesh = bumpyEllipsoid();
+  std::vector<pm::model::SurfacePoint> surface(mesh.vertices.size());
+  for (std::size_t i = 0; i < surface.size(); ++i) {
+    pm::model::SurfacePoint &s = surface[i];
+    s.x = static_cast<float>(mesh.vertices[i][0]), s.y = static_cast<float>(mesh.vertices[i][1]), s.z = static_cast<float>(mesh.vertices[i][2]);
+    s.nx = static_cast<float>(mesh.normals[i][0]), s.ny = static_cast<float>(mesh.normals[i][1]), s.nz = static_cast<float>(mesh.normals[i][2]);
+    s.hue = static_cast<float>(i % 360), s.r = 200, s.g = 100, s.b = 50, s.nSeen = 2, s.hasHue = true, s.highlight = false;
+  }
+  vpCameraParameters cam(800, 800, 320, 240);
+  const pm::core::PinholeCamera::Projection view = pm::core::PinholeCamera::Projection::lookingAtOrigin({120, -90, 480}, cam, 640, 480);
+  const pm::model::AllAroundParams params;
+  pm::model::ViewpointScratch scratch;
+  std::size_t contour = 0;
+  for (auto _ : state) {
+    const pm::core::ModelView v = pm::model::sampleViewpoint(view, surface, mesh.vertices, mesh, 120.f, params, scratch);
+    contour = v.contour.size();
+    benchmark::DoNotOptimize(v.inner.data());
+  }
+  state.counters["outline"] = static_cast<double>(contour);
+}
+
 } // namespace
 
 BENCHMARK(Model_DepthMap)->Unit(benchmark::kMillisecond);
+BENCHMARK(Model_Viewpoint)->Unit(benchmark::kMillisecond);
