@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <random>
 
@@ -18,6 +19,7 @@
 #include "pm/model/OutlineRefinement.h"
 #include "pm/model/ViewpointModel.h"
 #include "pm/precise/PoseUncertainty.h"
+#include "pm/precise/InteriorTerm.h"
 #include "pm/precise/ModelErrorFloor.h"
 #include "pm/precise/PreciseStage.h"
 #include "pm/sim/Scene.h"
@@ -316,6 +318,39 @@ TEST(PreciseStage, WithOneCameraLandsAcrossTheViewAsThePairDoesAndLessSurelyAlon
   EXPECT_GT(rms(alongOne), rms(alongPair));
   EXPECT_LT(rms(alongOne), 2.0);
   EXPECT_LT(std::sqrt(turnOne / static_cast<double>(n)), std::sqrt(turnPair / static_cast<double>(n)) + 0.3);
+}
+
+TEST(InteriorTerm, ItsPartsTogetherAreTheWholeMeasurement)
+{
+  // One camera's interior term on two cores measures its points in parts (measurePart): the parts'
+  // samples, one after the other, are the whole measurement's, value for value.
+  const LabTarget &t = crab();
+  const vpHomogeneousMatrix hMo(0.01, -0.005, 0.51, vpMath::rad(15), vpMath::rad(-10), 0);
+  const pm::sim::StereoImages im = t.scene.renderStereo(rig(), hMo, 0);
+  pm::precise::LineCamera cam;
+  static_cast<pm::core::PinholeCamera::Projection &>(cam) = rig().left.projection();
+  cam.image = im.left.bitmap;
+  const pm::precise::InteriorTerm interior(t.model.build.model, 200);
+  const pm::core::Phi phi = t.model.truth(hMo);
+  for (std::size_t view : {std::size_t{0}, interior.views() / 2}) {
+    pm::precise::InteriorSamples whole;
+    interior.reserve(whole);
+    const std::size_t n = interior.measure(cam, view, phi, 1.0, whole);
+    ASSERT_GT(n, 50u) << "view " << view;
+    for (std::size_t parts : {std::size_t{2}, std::size_t{3}}) {
+      std::vector<pm::precise::InteriorSamples::Sample> joined;
+      for (std::size_t part = 0; part < parts; ++part) {
+        pm::precise::InteriorSamples s;
+        interior.reserve(s);
+        interior.measurePart(cam, view, phi, 1.0, s, part, parts);
+        joined.insert(joined.end(), s.samples.begin(), s.samples.begin() + static_cast<std::ptrdiff_t>(s.n));
+      }
+      ASSERT_EQ(joined.size(), n) << parts << " parts";
+      for (std::size_t i = 0; i < n; ++i) {
+        EXPECT_EQ(std::memcmp(&joined[i], &whole.samples[i], sizeof(joined[i])), 0) << "sample " << i << " of " << parts << " parts";
+      }
+    }
+  }
 }
 
 TEST(PreciseStage, ThroughALensOneCameraLandsAsThroughAPinhole)

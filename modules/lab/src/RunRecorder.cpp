@@ -48,13 +48,13 @@ void RunRecorder::record(long k, const LoopFrame &f, const ClosedLoop &loop, con
   // Every camera's view side by side, the first with the frame's label, each with the model's points
   // at the pose used and, after the precise stage, its lines (cyan kept, magenta hidden).
   vpImage<vpRGBa> pair;
-  for (std::size_t k = 0; k < loop.images().size(); ++k) {
-    const int cam = static_cast<int>(k);
-    vpImage<vpRGBa> view = report::drawPointScores(loop.images()[k], loop.tracker().fitness().pointScores(used, cam),
-                                                   k == 0 ? label.str() : loop.rig()[k].name);
+  for (std::size_t c = 0; c < loop.images().size(); ++c) {
+    const int cam = static_cast<int>(c);
+    vpImage<vpRGBa> view = report::drawPointScores(loop.images()[c], loop.tracker().fitness().pointScores(used, cam),
+                                                   c == 0 ? label.str() : loop.rig()[c].name);
     if (const precise::PreciseStage *stage = loop.tracker().preciseStage(); stage && f.track.precise)
       report::drawCorrespondenceLines(view, stage->lines(cam));
-    pair = k == 0 ? view : report::sideBySide(pair, view);
+    pair = c == 0 ? view : report::sideBySide(pair, view);
   }
   if (wantVideo) {
     cv::Mat bgra, bgr, half; // ViSP converts to BGRA; the writer takes BGR

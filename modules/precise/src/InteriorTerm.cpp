@@ -91,8 +91,14 @@ std::size_t InteriorTerm::measure(const LineCamera &cam, std::size_t view, const
   return measureVisible(cam, view, phi, h, s, &other, &occlusion);
 }
 
+std::size_t InteriorTerm::measurePart(const LineCamera &cam, std::size_t view, const core::Phi &phi, double h, InteriorSamples &s,
+                                      std::size_t part, std::size_t parts) const
+{
+  return measureVisible(cam, view, phi, h, s, nullptr, nullptr, part, parts);
+}
+
 std::size_t InteriorTerm::measureVisible(const LineCamera &cam, std::size_t view, const core::Phi &phi, double h, InteriorSamples &s,
-                                         const LineCamera *other, const StereoOcclusion *occlusion) const
+                                         const LineCamera *other, const StereoOcclusion *occlusion, std::size_t part, std::size_t parts) const
 {
   s.n = 0;
   if (view >= m_views.size())
@@ -109,7 +115,9 @@ std::size_t InteriorTerm::measureVisible(const LineCamera &cam, std::size_t view
     composeCamera(*other, phi, there.R, there.t, unused);
     cameraInModel(cam, phi, centre);
   }
-  for (std::size_t i = m_views[view].begin; i < m_views[view].end && s.n < s.samples.size(); ++i) {
+  const std::size_t begin = m_views[view].begin, count = m_views[view].end - begin;
+  const std::size_t first = begin + count * part / parts, last = begin + count * (part + 1) / parts;
+  for (std::size_t i = first; i < last && s.n < s.samples.size(); ++i) {
     const Point &p = m_points[i];
     double Xc[3];
     for (int r = 0; r < 3; ++r)

@@ -196,11 +196,14 @@ PreciseResult PreciseStage::refine(const core::Phi &start, bool near, bool lookF
       // once per scale instead, the stage ended 1.3-2.0 deg off where it ends 0.5-0.8 deg off now, in
       // test_precise; counted only along the outline's weak directions, it helped one case and hurt two).
       double g[kMax][6] = {{0}}, H[kMax][36] = {{0}};
-      core::BatchPool::shared().run(m_nCams, [&](std::size_t k) {
-        m_lines[k]->accumulate(m_cams[k], phi, weight, g[k], H[k], nullptr);
-        if (interior && measureInterior(k, phi, scale, occlusion) > 0)
-          InteriorTerm::accumulate(m_cams[k], phi, m_samples[k], p.interiorSigma, p.interiorWeight, g[k], H[k], nullptr);
-      });
+      if (m_nCams == 1 && interior)
+        accumulateOneCamera(phi, scale, weight, g[0], H[0]);
+      else
+        core::BatchPool::shared().run(m_nCams, [&](std::size_t k) {
+          m_lines[k]->accumulate(m_cams[k], phi, weight, g[k], H[k], nullptr);
+          if (interior && measureInterior(k, phi, scale, occlusion) > 0)
+            InteriorTerm::accumulate(m_cams[k], phi, m_samples[k], p.interiorSigma, p.interiorWeight, g[k], H[k], nullptr);
+        });
       Eigen::Matrix<double, 6, 6> A;
       Eigen::Matrix<double, 6, 1> b;
       for (int r = 0; r < 6; ++r) { // the cameras' sums in camera order
@@ -291,6 +294,26 @@ double PreciseStage::objective(const core::Phi &phi)
       value += m_params.interiorWeight * r2 / (m_params.interiorSigma * m_params.interiorSigma) / static_cast<double>(used);
   }
   return value;
+}
+
+void PreciseStage::accumulateOneCamera(const core::Phi &phi, int scale, double weight, double g[6], double H[36])
+{
+  // One camera's step on two cores, as a pair's two cameras run: the lines and the interior's first
+  // half of points on one, its second half (in the samples of the absent second camera) on the
+  // other; each half's sums apart, added in this order whichever core ran it.
+  double gB[6] = {0}, HB[36] = {0};
+  const PreciseParams &p = m_params;
+  core::BatchPool::shared().run(2, [&](std::size_t part) {
+    double *gp = part == 0 ? g : gB, *Hp = part == 0 ? H : HB;
+    if (part == 0)
+      m_lines[0]->accumulate(m_cams[0], phi, weight, gp, Hp, nullptr);
+    if (m_interior->measurePart(m_cams[0], m_lines[0]->viewpoint(), phi, scale, m_samples[part], part, 2) > 0)
+      InteriorTerm::accumulate(m_cams[0], phi, m_samples[part], p.interiorSigma, p.interiorWeight, gp, Hp, nullptr);
+  });
+  for (int i = 0; i < 6; ++i)
+    g[i] += gB[i];
+  for (int i = 0; i < 36; ++i)
+    H[i] += HB[i];
 }
 
 std::size_t PreciseStage::measureInterior(std::size_t k, const core::Phi &phi, int scale, const StereoOcclusion *occlusion)

@@ -86,6 +86,12 @@ public:
   */
   std::size_t measure(const LineCamera &cam, std::size_t view, const core::Phi &phi, double stepPx, InteriorSamples &s) const;
   /*!
+    measure() of a part of the points only: the \e part-th of \e parts runs of them, in order (for
+    one camera's work on two cores; the parts' samples together are measure()'s).
+  */
+  std::size_t measurePart(const LineCamera &cam, std::size_t view, const core::Phi &phi, double stepPx, InteriorSamples &s, std::size_t part,
+                          std::size_t parts) const;
+  /*!
     measure(), leaving out the points hidden in \e cam and seen by \e other (the rig's other camera),
     by \e occlusion's rule (StereoOcclusion.h).
   */
@@ -112,7 +118,7 @@ public:
 private:
   //! measure(), leaving out what \e occlusion finds hidden when given.
   std::size_t measureVisible(const LineCamera &cam, std::size_t view, const core::Phi &phi, double stepPx, InteriorSamples &s, const LineCamera *other,
-                             const StereoOcclusion *occlusion) const;
+                             const StereoOcclusion *occlusion, std::size_t part = 0, std::size_t parts = 1) const;
   struct View
   {
     std::size_t begin, end;

@@ -178,6 +178,8 @@ public:
 private:
   //! Camera \e k's interior samples at \e phi (its lines' viewpoint), without those \e occlusion finds hidden (null: all).
   std::size_t measureInterior(std::size_t k, const core::Phi &phi, int scale, const StereoOcclusion *occlusion);
+  //! A one-camera rig's Gauss-Newton sums at \e phi (lines and interior) into \e g and \e H, on two cores.
+  void accumulateOneCamera(const core::Phi &phi, int scale, double weight, double g[6], double H[36]);
   PreciseParams m_params;
   OutlineViews m_outlines;
   //! The camera whose view tells camera \e k's hidden lines (the next one; the last: the one before), or null alone.
