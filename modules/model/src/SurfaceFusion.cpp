@@ -93,7 +93,15 @@ long DepthEvidence::carve(VisualHull &g, const std::vector<const hull::HullView 
     for (int y = 0; y < g.n; ++y)
       for (int x = 0; x < g.n; ++x) {
         std::uint8_t &o = g.occ[g.idx(x, y, z)];
-        if (o && fieldInside(g.centre(x, y, z), hull::field(cams, g.centre(x, y, z))) < 0) {
+        if (!o)
+          continue;
+        // fieldInside() never lies below the evidence's own field: a cell the evidence alone keeps
+        // is kept without the silhouettes' field (a lookup in every camera).
+        const Vec3 X = g.centre(x, y, z);
+        const double f = field(X);
+        if (!(f < 0))
+          continue;
+        if (raisedNearOutline(f, hull::field(cams, X)) < 0) {
           o = 0;
           ++removed;
         }

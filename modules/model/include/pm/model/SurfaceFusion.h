@@ -97,9 +97,11 @@ public:
     the evidence is raised until, at the edge, it cannot carve. The outline the pass's views saw is
     the silhouettes', which know it to a fraction of a pixel; the depths carve behind it.
   */
-  double fieldInside(const hull::Vec3 &X, double silhouettePx) const
+  double fieldInside(const hull::Vec3 &X, double silhouettePx) const { return raisedNearOutline(field(X), silhouettePx); }
+  //! fieldInside() from the evidence's field \e f at the point: never below \e f.
+  double raisedNearOutline(double f, double silhouettePx) const
   {
-    return field(X) + params.truncationMm * std::max(0.0, 1.0 - silhouettePx / params.outlineMarginPx);
+    return f + params.truncationMm * std::max(0.0, 1.0 - silhouettePx / params.outlineMarginPx);
   }
   //! Empties the occupied cells of \e hull whose centre the evidence puts outside (fieldInside() with \e cams' silhouettes); returns how many.
   long carve(VisualHull &hull, const std::vector<const hull::HullView *> &cams) const;
