@@ -10,6 +10,7 @@
 #include "pm/app/Options.h"
 #include "pm/report/DetectionOutputs.h"
 #include "pm/app/Progress.h"
+#include "pm/app/RigImages.h"
 #include "pm/core/Error.h"
 #include "pm/io/ImageFile.h"
 #include "pm/io/PhotoModelFile.h"
@@ -79,12 +80,7 @@ pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm:
 {
   if (!code.empty())
     return pm::lab::renderStillPair(pm::sim::makeTarget(code), ref, rig, o.sp, o.lab);
-  const std::vector<std::string> files = o.images.empty() ? std::vector<std::string>{o.left, o.right} : o.images;
-  if (files.size() != rig.size())
-    throw CLI::ValidationError(o.images.empty() ? "--left/--right" : "--camera-images",
-                               std::to_string(files.size()) + " image" + (files.size() == 1 ? "" : "s") + " for a rig of " +
-                                   std::to_string(rig.size()) + " camera" + (rig.size() == 1 ? "" : "s") + " (one per camera: --camera-images)");
-  pm::lab::StillPair p = pm::lab::loadStillPair(files, o.modelPath);
+  pm::lab::StillPair p = pm::lab::loadStillPair(pm::app::stillImagesFor(rig, o.images, o.left, o.right), o.modelPath);
   p.haveTruth = !o.truthText.empty();
   p.truth = ref;
   if (p.haveTruth) {

@@ -10,6 +10,7 @@
 #include "pm/report/ObjectiveProfiles.h"
 #include "pm/app/Options.h"
 #include "pm/app/Progress.h"
+#include "pm/app/RigImages.h"
 #include "pm/core/Error.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/io/ImageFile.h"
@@ -28,6 +29,7 @@ struct Options
 {
   std::string out, target = "C04", left, right, modelPath, pose = "0,0,500,0,0,0";
   std::string rigPath = pm::app::dataPath("rig/pa10_stereo.json");
+  std::vector<std::string> images; // --camera-images: one per camera of the rig
   bool quiet = false, profiles = false, allTargets = false;
   pm::app::LabModelChoice lab;
   pm::sim::SceneParams sp;
@@ -41,13 +43,14 @@ void addOptions(CLI::App &app, Options &o)
   auto *optTarget = app.add_option("--target", o.target, "simulated target C01..C12 (the paper's sea creatures) or R1..R3 (relief: box, head, tower)");
   auto *optL = app.add_option("--left", o.left, "left image of a user's stereo pair");
   auto *optR = app.add_option("--right", o.right, "right image of a user's stereo pair");
-  auto *optM = app.add_option("--model", o.modelPath, "photo-model file (with --left/--right)");
-  optL->needs(optR)->needs(optM)->excludes(optTarget);
+  auto *optI = app.add_option("--camera-images", o.images, "a user's still frame of any rig: one image per camera of --rig, in its order");
+  auto *optM = app.add_option("--model", o.modelPath, "photo-model file (with --left/--right or --camera-images)");
+  optL->needs(optR)->needs(optM)->excludes(optTarget)->excludes(optI);
   optR->needs(optL);
-  optM->needs(optL);
+  optI->needs(optM)->excludes(optTarget);
   app.add_option("--pose", o.pose, "reference pose x,y,z,eps1,eps2,eps3: where the simulated toy is, or the truth of the "
-                                   "user's pair; the variables not on a grid are held there");
-  app.add_option("--rig", o.rigPath, "stereo rig file");
+                                   "user's images; the variables not on a grid are held there");
+  app.add_option("--rig", o.rigPath, "rig file: a stereo rig, or one to four cameras");
   app.add_option("--pos-step", o.posStep, "grid step of x, y, z (mm)")->check(CLI::Range(0.1, 50.0));
   app.add_option("--eps-step", o.epsStep, "grid step of eps (quaternion vector)")->check(CLI::Range(0.001, 0.1));
   pm::app::addLabModelOptions(app, o.lab);
@@ -61,15 +64,17 @@ void addOptions(CLI::App &app, Options &o)
   app.add_flag("--all-targets", o.allTargets, "run the 12 simulated targets, each into DIR/<code>/, and write the table "
                                               "peaks.md / peaks.csv of their peak errors")
       ->excludes(optTarget)
-      ->excludes(optL);
+      ->excludes(optL)
+      ->excludes(optI);
 }
 
-//! A user's pair (\e code empty; the reference pose its truth) or the simulator's of lab target \e code at \e ref.
-pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm::core::Phi &ref, const pm::core::StereoRig &rig)
+//! A user's images (\e code empty; the reference pose their truth) or the simulator's of lab target \e code at \e ref, one per camera of \e rig.
+pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm::core::Phi &ref, const pm::core::CameraRig &rig)
 {
   if (code.empty()) {
-    pm::lab::StillPair p = pm::lab::loadStillPair({o.left, o.right}, o.modelPath);
-    pm::lab::requireSameSize(p, {o.left, o.right});
+    const std::vector<std::string> files = pm::app::stillImagesFor(rig, o.images, o.left, o.right);
+    pm::lab::StillPair p = pm::lab::loadStillPair(files, o.modelPath);
+    pm::lab::requireSameSize(p, files);
     p.truth = ref;
     return p;
   }
@@ -78,21 +83,22 @@ pm::lab::StillPair loadPair(const Options &o, const std::string &code, const pm:
   return pm::lab::renderStillPair(shape, ref, rig, o.sp, o.lab);
 }
 
-//! One experiment: the four maps of one stereo pair and model (and its profiles), into \e dir.
-pm::report::FitnessMapsResult mapOne(const Options &o, const pm::core::StereoRig &rig, const pm::core::Phi &ref, const std::string &code,
+//! One experiment: the four maps of one frame of the rig and model (and its profiles), into \e dir.
+pm::report::FitnessMapsResult mapOne(const Options &o, const pm::core::CameraRig &rig, const pm::core::Phi &ref, const std::string &code,
                                      const std::string &dir, bool silent)
 {
   const pm::lab::StillPair p = loadPair(o, code, ref, rig);
   pm::core::StereoFitness fit(rig, p.model, o.fp);
-  fit.setImages(p.images[0], p.images[1]);
+  const pm::core::CameraImages images = p.view();
+  fit.setImages(images.data());
   const std::vector<pm::core::FitnessMapSpec> specs = pm::core::paperFitnessMaps(o.posStep, o.epsStep);
   pm::app::Progress progress("fitness maps", specs.size(), silent);
   const pm::report::FitnessMapsResult r =
-      pm::report::writeFitnessMaps(dir, fit, p.model.size(), p.truth, specs, p.source, p.images[0], p.images[1], [&] { progress.step(); });
+      pm::report::writeFitnessMaps(dir, fit, p.model.size(), p.truth, specs, p.source, images, [&] { progress.step(); });
   progress.finish();
   if (o.profiles && p.model.hasContours()) { // beside the maps, in the same folder
     pm::precise::PreciseStage precise(rig, p.model);
-    precise.setImages(p.view());
+    precise.setImages(images);
     pm::io::StagedFiles more(dir);
     const pm::report::ProfileResult pr = pm::report::writeObjectiveProfiles(more, fit, precise, p.truth, 6.0, 0.25);
     more.commit();
@@ -108,7 +114,7 @@ pm::report::FitnessMapsResult mapOne(const Options &o, const pm::core::StereoRig
 }
 
 //! --all-targets: the maps of the 12 targets, and a table of their peak errors.
-int mapAll(const Options &o, const pm::core::StereoRig &rig, const pm::core::Phi &ref)
+int mapAll(const Options &o, const pm::core::CameraRig &rig, const pm::core::Phi &ref)
 {
   pm::io::StagedFiles files(o.out);
   std::ostringstream md, csv;
@@ -149,7 +155,8 @@ int main(int argc, char **argv)
   CLI::App app{"The fitness-distribution experiment of the paper (Sec. 5, Figs. 10, 11): the stereo fitness F on four "
                "2-D grids, x-y and y-z (1 mm steps over x, y in [-180, 180], z in [320, 680]) and eps1-eps2, eps2-eps3 "
                "(0.01 steps over [-0.37, 0.37]), the other variables held at the reference pose. Works on the simulator "
-               "(--target) or on a user's stereo pair (--left, --right, --rig, --model). Writes a CSV and a PNG heat map "
+               "(--target) or on a user's images (--left, --right or --camera-images, --rig, --model): the rig's "
+               "cameras, one or more. Writes a CSV and a PNG heat map "
                "per grid and summary.json.",
                "pm-fitness-map"};
   app.option_defaults()->always_capture_default();
@@ -159,10 +166,11 @@ int main(int argc, char **argv)
   return pm::app::run(app, argc, argv, [&] {
     const auto v = pm::app::parseNumbers(o.pose, 6, "--pose");
     const pm::core::Phi ref{v[0], v[1], v[2], v[3], v[4], v[5]};
-    const pm::core::StereoRig rig = pm::io::loadRig(o.rigPath);
+    const pm::core::CameraRig rig = pm::io::loadCameraRig(o.rigPath);
     if (o.allTargets)
       return mapAll(o, rig, ref);
-    mapOne(o, rig, ref, o.left.empty() ? o.target : std::string(), o.out, o.quiet);
+    const bool userImages = !o.left.empty() || !o.images.empty();
+    mapOne(o, rig, ref, userImages ? std::string() : o.target, o.out, o.quiet);
     return 0;
   });
 }

@@ -93,7 +93,7 @@ TEST(Apps, EveryProgramSpeaksTheSameVocabulary)
     }
   }
   EXPECT_EQ(withImages, 5); // pm-fitness-map, pm-detect, pm-track, pm-calib-baseline, pm-calibrate-rig
-  EXPECT_EQ(withCameraImages, 3); // pm-detect, pm-track, pm-calibrate-rig
+  EXPECT_EQ(withCameraImages, 4); // pm-fitness-map, pm-detect, pm-track, pm-calibrate-rig
   EXPECT_GE(withRig, 9);
 
   // An old spelling still works, with one line on stderr naming the new one.

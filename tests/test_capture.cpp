@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -283,6 +284,23 @@ TEST(PmTrack, TracksOneVideoStreamThroughARigOfOneCamera)
   const auto ds = nlohmann::json::parse(pm::test::readText(d.file("det/summary.json")));
   EXPECT_NEAR(ds["pose"][2].get<double>(), 500.0, 15.0) << ds["pose"].dump();
   EXPECT_EQ(pm::io::readColorImage(d.file("det/detection.png")).getWidth(), 640u);
+  // pm-fitness-map on the same image around the pose found: one camera's fitness peaks within a
+  // few millimetres of it across the view, and it says how that camera's points fell.
+  std::ostringstream found;
+  for (int k = 0; k < 6; ++k)
+    found << (k ? "," : "") << ds["pose"][k].get<double>();
+  const auto map = runProgram("pm-fitness-map", "--rig " + rig + " --camera-images " + d.file("still.png") + " --model " + r.model +
+                                                    " --pose " + found.str() + " --pos-step 2 --eps-step 0.02 --quiet --out " + d.file("map"));
+  ASSERT_EQ(map.status, 0) << map.err;
+  const auto ms = nlohmann::json::parse(pm::test::readText(d.file("map/summary.json")));
+  EXPECT_TRUE(ms["counts_at_truth"].contains("camera_0")) << ms["counts_at_truth"].dump();
+  EXPECT_LT(std::abs(ms["grids"]["xy"]["error_to_truth"][0].get<double>()), 4.0) << ms["grids"]["xy"].dump();
+  EXPECT_LT(std::abs(ms["grids"]["xy"]["error_to_truth"][1].get<double>()), 4.0) << ms["grids"]["xy"].dump();
+  EXPECT_EQ(pm::io::readColorImage(d.file("map/truth_overlay.png")).getWidth(), 640u); // one camera's picture
+  const auto mapTwo = runProgram("pm-fitness-map", "--rig " + rig + " --camera-images " + d.file("still.png") + " " + d.file("still.png") +
+                                                       " --model " + r.model + " --out " + d.file("x"));
+  EXPECT_EQ(mapTwo.status, 2);
+  EXPECT_NE(mapTwo.err.find("2 images for a rig of 1 camera"), std::string::npos) << mapTwo.err;
   // A pair's streams for a rig of one camera, or one stream for the pair: errors, nothing written.
   const auto two = runProgram("pm-track", "--rig " + rig + " --camera-sources " + r.left + " " + r.right + " --model " + r.model + " --out " + d.file("x"));
   EXPECT_EQ(two.status, 2);

@@ -83,9 +83,10 @@ void exampleFitnessMapOutputs(const pm::core::StereoRig &rig, const pm::core::Ph
                               const pm::core::Phi &truth)
 {
   pm::core::StereoFitness fit(rig, model);
-  fit.setImages(left, right);
+  const pm::core::CameraImages images(left, right); // a pair; CameraImages(image) for one camera
+  fit.setImages(images.data());
   const pm::report::FitnessMapsResult r =
-      pm::report::writeFitnessMaps("maps", fit, model.size(), truth, pm::core::paperFitnessMaps(), "my pair", left, right);
+      pm::report::writeFitnessMaps("maps", fit, model.size(), truth, pm::core::paperFitnessMaps(), "my pair", images);
   std::cout << r.text;
 }
 

@@ -1,5 +1,6 @@
 #include "pm/report/FitnessMapOutputs.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -50,8 +51,8 @@ const GridResult &FitnessMapsResult::grid(const std::string &name) const
 }
 
 FitnessMapsResult writeFitnessMaps(const std::string &dir, const core::StereoFitness &fit, std::size_t modelPoints, const core::Phi &truth,
-                                   const std::vector<core::FitnessMapSpec> &specs, const std::string &source, const vpImage<vpRGBa> &IL,
-                                   const vpImage<vpRGBa> &IR, const std::function<void()> &onMap)
+                                   const std::vector<core::FitnessMapSpec> &specs, const std::string &source,
+                                   const core::CameraImages &images, const std::function<void()> &onMap)
 {
   io::StagedFiles files(dir);
   FitnessMapsResult r;
@@ -100,14 +101,21 @@ FitnessMapsResult writeFitnessMaps(const std::string &dir, const core::StereoFit
   }
   const core::FitnessDetail atTruth = fit.evaluateDetail(truth);
   r.fitnessAtTruth = atTruth.fitness;
-  io::writeImage(sideBySide(drawPointScores(IL, fit.pointScores(truth, 0), "model at the truth, left"),
-                            drawPointScores(IR, fit.pointScores(truth, 1), "right")),
-                 files.stage("truth_overlay.png"));
+  std::vector<std::vector<core::PointScore>> scores;
+  nlohmann::json counts; // a pair's "left" and "right"; other rigs' "camera_0", "camera_1", ...
+  const std::vector<std::string> names = cameraLabels(images.size(), "");
+  for (std::size_t k = 0; k < images.size(); ++k) {
+    scores.push_back(fit.pointScores(truth, static_cast<int>(k)));
+    std::string key = names[k];
+    std::replace(key.begin(), key.end(), ' ', '_');
+    counts[key] = countsJson(atTruth.counts[k]);
+  }
+  io::writeImage(drawCameras(images, scores, cameraLabels(images.size(), "model at the truth, ")), files.stage("truth_overlay.png"));
   const nlohmann::json summary{{"source", source},
                                {"truth", {truth.x, truth.y, truth.z, truth.e1, truth.e2, truth.e3}},
                                {"model_points", modelPoints},
                                {"fitness_at_truth", atTruth.fitness},
-                               {"counts_at_truth", {{"left", countsJson(atTruth.counts[0])}, {"right", countsJson(atTruth.counts[1])}}},
+                               {"counts_at_truth", counts},
                                {"kernel", fit.kernelName()},
                                {"grids", grids},
                                {"time_s", r.seconds}};

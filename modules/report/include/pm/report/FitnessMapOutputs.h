@@ -13,6 +13,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 
+#include "pm/core/CameraImages.h"
 #include "pm/core/FitnessMap.h"
 #include "pm/core/StereoFitness.h"
 
@@ -45,21 +46,22 @@ struct FitnessMapsResult
 };
 
 /*!
-  Computes \e specs' maps of \e fitness (its images set: \e left, \e right) around \e truth (the
-  variables off a grid held at the truth) and writes them into \e dir; \e source names the images
-  in summary.json, \e onMap is called after each grid. Throws pm::core::Error; on an error nothing is
-  left in \e dir.
+  Computes \e specs' maps of \e fitness (its images set: \e images, one per camera of its rig)
+  around \e truth (the variables off a grid held at the truth) and writes them into \e dir; \e
+  source names the images in summary.json, \e onMap is called after each grid. Throws
+  pm::core::Error; on an error nothing is left in \e dir.
 
   \code
     pm::core::StereoFitness fit(rig, model);
-    fit.setImages(left, right);
+    const pm::core::CameraImages images(left, right); // a pair; CameraImages(image) for one camera
+    fit.setImages(images.data());
     const pm::report::FitnessMapsResult r =
-        pm::report::writeFitnessMaps("maps", fit, model.size(), truth, pm::core::paperFitnessMaps(), "my pair", left, right);
+        pm::report::writeFitnessMaps("maps", fit, model.size(), truth, pm::core::paperFitnessMaps(), "my pair", images);
     std::cout << r.text;
   \endcode
 */
 FitnessMapsResult writeFitnessMaps(const std::string &dir, const core::StereoFitness &fitness, std::size_t modelPoints, const core::Phi &truth,
                                    const std::vector<core::FitnessMapSpec> &specs, const std::string &source,
-                                   const vpImage<vpRGBa> &left, const vpImage<vpRGBa> &right, const std::function<void()> &onMap = {});
+                                   const core::CameraImages &images, const std::function<void()> &onMap = {});
 
 } // namespace pm::report
