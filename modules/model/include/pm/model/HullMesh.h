@@ -89,9 +89,12 @@ struct HullMesh
     double v = 0; //!< image row (px)
     double z = 0; //!< depth (mm)
     double iz = 0; //!< 1 / z (1/mm), for the perspective-correct depth
-    //! ceil(u), floor(u), ceil(v), floor(v) within [-1, w] and [-1, h]: the pixel centres a face's box holds are
-    //! from the least ceiling to the greatest floor of its vertices
-    int cu = 0, fu = -1, cv = 0, fv = -1;
+    // The pixel centres a face's box holds run from the least ceiling to the greatest floor of its
+    // vertices' coordinates (each kept within [-1, w] or [-1, h]):
+    int cu = 0;  //!< ceil(u), within [-1, w]
+    int fu = -1; //!< floor(u), within [-1, w]
+    int cv = 0;  //!< ceil(v), within [-1, h]
+    int fv = -1; //!< floor(v), within [-1, h]
     bool ok = false;            //!< in front of the camera (core::PinholeCamera::Projection::project())
   };
   /*!
