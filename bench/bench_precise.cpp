@@ -59,6 +59,21 @@ void Precise_Refine(benchmark::State &s) { preciseRefine(s, true); }
 void Precise_Refine_OutlineOnly(benchmark::State &s) { preciseRefine(s, false); }
 
 /*!
+  PreciseStage::learnColours() at the truth (a trusted frame's apply step): the colours along the
+  outline's lines of both cameras counted (up to 20 px on either side of each line), and the
+  histograms blended.
+*/
+void Precise_LearnColours(benchmark::State &state)
+{
+  const AllAround &a = allAround();
+  pm::precise::PreciseStage precise(setup().rig, a.model.build.model);
+  precise.setImages({a.images.left, a.images.right});
+  for (auto _ : state)
+    precise.learnColours(a.truth);
+  benchmark::DoNotOptimize(precise.colours().separation());
+}
+
+/*!
   A new frame's refine() through a lens (OpenCV's k1 -0.25 on both cameras, the images rendered
   through it): setImages() and refine(), which resamples the ideal image where the stage reads
   (IdealImage.h); its peer the same through the pinhole rig.
@@ -156,6 +171,7 @@ void Tracker_Frame_Steady_AllAround_OneCamera(benchmark::State &s) { allAroundFr
 
 BENCHMARK(Precise_Refine)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Precise_Refine_OutlineOnly)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(Precise_LearnColours)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Precise_Refine_NewFrame_Pinhole)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Precise_Refine_NewFrame_Lens)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(Tracker_Frame_Steady_AllAround)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -68,6 +68,19 @@ inline void apply(const double R[9], const double t[3], const float X[3], double
 }
 
 //! The raw pixel index under ideal pixel (x, y), or -1 off the image.
+/*!
+  std::lrint(x) inline (to nearest, ties to even, in the default rounding mode): on x86-64 the
+  instruction glibc's lrint is, without the library call (collectColours rounds twice a pixel).
+*/
+inline long roundToLong(double x)
+{
+#if defined(__x86_64__)
+  return _mm_cvtsd_si64(_mm_set_sd(x));
+#else
+  return std::lrint(x);
+#endif
+}
+
 inline long pixelAt(const LineCamera &cam, long x, long y)
 {
   if (x < 0 || y < 0 || x >= cam.w || y >= cam.h)
@@ -344,13 +357,13 @@ void CorrespondenceLines::collectColours(const LineCamera &cam, const OutlineVie
     const double u = pr.u, v = pr.v, nu = pr.nu, nv = pr.nv, pxPerMm = pr.pxPerMm;
     const double inLen = std::min(maxPx, q.insideMm * pxPerMm - skipPx), outLen = std::min(maxPx, q.outsideMm * pxPerMm - skipPx);
     for (double t = skipPx; t <= skipPx + inLen; t += 1.0) {
-      const long idx = pixelAt(cam, std::lrint(u - t * nu), std::lrint(v - t * nv));
+      const long idx = pixelAt(cam, roundToLong(u - t * nu), roundToLong(v - t * nv));
       if (idx < 0)
         break;
       colours.addForeground(cam.image[idx]);
     }
     for (double t = skipPx; t <= skipPx + outLen; t += 1.0) {
-      const long idx = pixelAt(cam, std::lrint(u + t * nu), std::lrint(v + t * nv));
+      const long idx = pixelAt(cam, roundToLong(u + t * nu), roundToLong(v + t * nv));
       if (idx < 0)
         break;
       colours.addBackground(cam.image[idx]);
