@@ -197,7 +197,7 @@ private:
   std::array<std::unique_ptr<CorrespondenceLines>, kMax> m_lines;
   std::unique_ptr<StereoOcclusion> m_occlusion; //!< null: every line counts
   std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
-  std::array<InteriorSamples, kMax> m_samples;  //!< each camera's interior samples of the last measurement
+  std::array<InteriorSamples, kMax> m_samples;  //!< each camera's interior samples of the last measurement (one camera's refine: [0] and [1], its points' two halves)
   ColourHistograms m_colours;
   std::vector<float> m_modelF, m_modelB;
   bool m_hasImages = false;
