@@ -491,7 +491,7 @@ TEST(AllAround, ThePassLandingsAreTheModelsOwnErrorAtEachViewAndOtherRendersTher
     for (unsigned i = 0; i < 3; ++i)
       w[i] = L[v].offsetDeg[i];
     const vpColVector expected = hRm * w; // the landing in this view's hand axes
-    const std::array<double, 6> f = floor.at(hMm);
+    const std::array<double, 6> f = floor.at(pm::core::fromHomogeneousMatrix(hMm));
     for (unsigned i = 0; i < 3; ++i) {
       raw2 += vpMath::sqr(vpMath::deg(turn[i]));
       diff2 += vpMath::sqr(vpMath::deg(turn[i]) - expected[i]);

@@ -5,9 +5,11 @@
 
 #include <visp3/core/vpQuaternionVector.h>
 #include <visp3/core/vpRotationMatrix.h>
+#include <visp3/core/vpThetaUVector.h>
 
 #include "pm/core/Error.h"
 #include "pm/core/Pose.h"
+#include "pm/core/Quaternion.h"
 
 namespace {
 
@@ -150,4 +152,46 @@ TEST(Pose, ATwistMovesTheOriginAndTurnsAboutItInTheHandFrame)
   const pm::core::Phi h = pm::core::applyTwist(phi, halfTurn);
   EXPECT_TRUE(h.isValid());
   EXPECT_NEAR(pm::core::rotationDistanceDeg(h, phi), 180.0, 1e-6);
+}
+
+TEST(Quaternion, ItsProductAngleAndRotationVectorAreViSPsMatrixProductAndThetaU)
+{
+  // Quaternion.h's algebra against ViSP's matrices on random poses: the product is the matrices'
+  // product, withRotation() the pose of that matrix, angle() and rotationVector() the theta-u of it.
+  std::mt19937 rng(11);
+  for (int i = 0; i < 300; ++i) {
+    const pm::core::Phi a = randomPhi(rng), b = randomPhi(rng);
+    const vpHomogeneousMatrix A = pm::core::toHomogeneousMatrix(a), B = pm::core::toHomogeneousMatrix(b);
+    const pm::core::Phi ab = pm::core::withRotation(a, pm::core::quaternionOf(a) * pm::core::quaternionOf(b));
+    vpHomogeneousMatrix AB = A * B;
+    AB[0][3] = A[0][3]; // withRotation keeps a's position
+    AB[1][3] = A[1][3];
+    AB[2][3] = A[2][3];
+    const pm::core::Phi viaViSP = pm::core::fromHomogeneousMatrix(AB);
+    for (std::size_t k = 0; k < 6; ++k)
+      EXPECT_NEAR(ab[k], viaViSP[k], 1e-12) << "component " << k;
+    EXPECT_GE(ab.eta(), 0.0);
+    const pm::core::Quaternion d = pm::core::quaternionOf(b) * pm::core::quaternionOf(a).conjugate(); // hRb hRa^T
+    const vpThetaUVector tu(vpRotationMatrix(B.getRotationMatrix() * A.getRotationMatrix().t()));
+    double v[3];
+    d.rotationVector(v);
+    const double th = std::sqrt(tu.sumSquare());
+    EXPECT_NEAR(d.angle(), th, 1e-9);
+    if (th < M_PI - 1e-3) { // a half turn's axis has either sign
+      for (unsigned k = 0; k < 3; ++k)
+        EXPECT_NEAR(v[k], tu[k], 1e-9);
+    }
+    // Back from the rotation vector: the same turn.
+    const pm::core::Quaternion back = pm::core::Quaternion::fromRotationVector(v[0], v[1], v[2]);
+    EXPECT_NEAR(std::fabs(back.w * d.w + back.x * d.x + back.y * d.y + back.z * d.z), 1.0, 1e-12);
+  }
+  // About z: the matrix of ViSP's theta-u (0, 0, a); the identity's rotation vector is nil.
+  const pm::core::Phi z = pm::core::withRotation(pm::core::Phi{}, pm::core::Quaternion::aboutZ(0.7));
+  const vpHomogeneousMatrix Z = pm::core::toHomogeneousMatrix(z), V(0, 0, 0, 0, 0, 0.7);
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 3; ++c)
+      EXPECT_NEAR(Z[r][c], V[r][c], 1e-12);
+  double v[3] = {1, 1, 1};
+  pm::core::Quaternion().rotationVector(v);
+  EXPECT_EQ(v[0] * v[0] + v[1] * v[1] + v[2] * v[2], 0.0);
 }

@@ -412,7 +412,7 @@ TEST(PoseUncertainty, ThePreciseStagesReportedSigmaCoversItsTrueErrorOnTheBuiltM
       const pm::precise::PreciseResult r = precise.refine(start);
       ASSERT_TRUE(r.ok);
       const pm::precise::PoseUncertainty u =
-          model.uncertainty(pm::precise::lineSigmas(r.information), r.residualPx, modelError.at(pm::core::toHomogeneousMatrix(r.phi)));
+          model.uncertainty(pm::precise::lineSigmas(r.information), r.residualPx, modelError.at(r.phi));
       ASSERT_TRUE(u.known);
       EXPECT_LT(u.maxMm(), 1.5);
       EXPECT_LT(u.maxDeg(), 1.5);

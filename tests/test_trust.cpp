@@ -249,9 +249,11 @@ TEST(PassCalibration, WhereWrongTriesReadRightThroughThisCameraEveryConfidenceIs
   EXPECT_NEAR(t.wrongMaxConfidence, p.wrongCeiling, 1e-9);
   EXPECT_LT(t.rightTrusted, t.rightTrustedShipped); // fewer right frames trusted: the price, said
   const pm::tracker::ConfidenceModel read = shipped.calibrated(t); // as the tracker reads a model of this kind
-  for (const auto &x : tries)
-    if (x.wrong())
+  for (const auto &x : tries) {
+    if (x.wrong()) {
       EXPECT_LT(read.confidence(x.cues), read.threshold);
+    }
+  }
   pm::core::PhotoModel m; // a plain model: the offset joins its kind's bias
   m.trust = t;
   const pm::tracker::JudgementParams jp = pm::tracker::JudgementParams().forModel(m);

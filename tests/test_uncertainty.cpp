@@ -129,13 +129,13 @@ TEST(ModelErrorFloor, IsTheRmsOfTheNearPassViewsOffsetsInTheHandsAxes)
   const pm::precise::ModelErrorFloor floor({a, b}, hMc, 10);
   ASSERT_FALSE(floor.empty());
   // Looking along view a (the model 0.5 m ahead, axes as the hand's): a's offsets, b's weight nil.
-  std::array<double, 6> f = floor.at(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0));
+  std::array<double, 6> f = floor.at(pm::core::Phi{0, 0, 500, 0, 0, 0});
   EXPECT_NEAR(f[0], 0.4, 1e-9);
   EXPECT_NEAR(f[2], 0.0, 1e-9);
   EXPECT_NEAR(f[4], 0.3, 1e-9);
   EXPECT_NEAR(f[3], 0.0, 1e-9);
   // The hand turned 90 deg about its z axis: the model's x is the hand's y.
-  f = floor.at(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, M_PI / 2));
+  f = floor.at(pm::core::fromHomogeneousMatrix(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, M_PI / 2)));
   EXPECT_NEAR(f[0], 0.0, 1e-9);
   EXPECT_NEAR(f[1], 0.4, 1e-9);
   EXPECT_NEAR(f[3], 0.3, 1e-9); // the model's y turned onto the hand's -x
@@ -144,17 +144,24 @@ TEST(ModelErrorFloor, IsTheRmsOfTheNearPassViewsOffsetsInTheHandsAxes)
   const vpHomogeneousMatrix mMc = between.inverse();
   ASSERT_NEAR(mMc[0][3], -mMc[2][3], 1e-9);
   ASSERT_GT(mMc[0][3], 0);
-  f = floor.at(between);
+  f = floor.at(pm::core::fromHomogeneousMatrix(between));
   const vpRotationMatrix R = between.getRotationMatrix();
   const double x2 = 0.5 * (vpMath::sqr(R[0][0] * 0.4) + vpMath::sqr(R[0][2] * 0.6));
   EXPECT_NEAR(f[0], std::sqrt(x2), 1e-9);
   // Far from every view (the camera at the model's -x: 90 deg from a, 180 from b): the nearest view's, a's.
-  f = floor.at(vpHomogeneousMatrix(0, 0, 0.5, 0, -M_PI / 2, 0));
+  f = floor.at(pm::core::fromHomogeneousMatrix(vpHomogeneousMatrix(0, 0, 0.5, 0, -M_PI / 2, 0)));
   EXPECT_NEAR(f[4], 0.3, 1e-9);
   EXPECT_NEAR(f[3], 0.0, 1e-9);
+  // A camera off the hand's origin: at (0.5, 0, 0.5) m it sees the model (0.5 m ahead, axes as the
+  // hand's) from its +x side, view b's direction: b's offsets, a's weight nil.
+  const pm::precise::ModelErrorFloor beside({a, b}, vpHomogeneousMatrix(0.5, 0, 0.5, 0, 0, 0), 10);
+  f = beside.at(pm::core::Phi{0, 0, 500, 0, 0, 0});
+  EXPECT_NEAR(f[2], 0.6, 1e-9);
+  EXPECT_NEAR(f[3], 0.5, 1e-9);
+  EXPECT_NEAR(f[0], 0.0, 1e-9);
   // No landings: no floor; a width that is not positive is refused.
   EXPECT_TRUE(pm::precise::ModelErrorFloor({}, hMc).empty());
-  EXPECT_EQ(pm::precise::ModelErrorFloor({}, hMc).at(vpHomogeneousMatrix(0, 0, 0.5, 0, 0, 0))[4], 0.0);
+  EXPECT_EQ(pm::precise::ModelErrorFloor({}, hMc).at(pm::core::Phi{0, 0, 500, 0, 0, 0})[4], 0.0);
   EXPECT_THROW(pm::precise::ModelErrorFloor({a}, hMc, 0), pm::core::Error);
 }
 

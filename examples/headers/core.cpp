@@ -16,6 +16,7 @@
 #include "pm/core/PhotoModel.h"
 #include "pm/core/PinholeCamera.h"
 #include "pm/core/Pose.h"
+#include "pm/core/Quaternion.h"
 #include "pm/core/Statistics.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/core/StereoScorer.h"
@@ -107,6 +108,17 @@ void examplePose()
   const vpHomogeneousMatrix cMo = rig.left.cMh() * hMo;         // the model in the left camera
   const pm::core::Phi back = pm::core::fromHomogeneousMatrix(hMo);
   std::cout << back.toString() << ", " << pm::core::rotationDistanceDeg(phi, back) << " deg apart\n";
+}
+
+// Quaternion.h
+void exampleQuaternion()
+{
+    const pm::core::Phi phi{0, 0, 500, 0.1, 0, 0};
+    // The pose turned 90 deg about the model's own z axis (hRo Rz), its position kept:
+    const pm::core::Phi turned = pm::core::withRotation(phi, pm::core::quaternionOf(phi) * pm::core::Quaternion::aboutZ(M_PI / 2));
+    // The turn from phi to turned, and its angle (90 deg):
+    const pm::core::Quaternion d = pm::core::quaternionOf(turned) * pm::core::quaternionOf(phi).conjugate();
+    std::cout << d.angle() * 180 / M_PI << " deg\n";
 }
 
 // Statistics.h

@@ -43,11 +43,11 @@ void exampleInteriorTerm(const pm::core::PhotoModel &model, const pm::precise::L
 }
 
 // ModelErrorFloor.h
-void exampleModelErrorFloor(const pm::core::PhotoModel &model, const pm::core::StereoRig &rig, const vpHomogeneousMatrix &hMm)
+void exampleModelErrorFloor(const pm::core::PhotoModel &model, const pm::core::StereoRig &rig, const pm::core::Phi &phi)
 {
   const pm::precise::ModelErrorFloor floor(model.passLandings, rig.left.hMc); // 10 deg wide
   if (!floor.empty()) {
-    const std::array<double, 6> f = floor.at(hMm);  // mm along x, y, z; deg about them (hand frame)
+    const std::array<double, 6> f = floor.at(phi);  // the model at phi: mm along x, y, z; deg about them (hand frame)
     std::cout << "the model's own error here: " << f[4] << " deg about y\n";
   }
 }

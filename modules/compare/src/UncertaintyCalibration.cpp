@@ -64,7 +64,7 @@ std::vector<UncertaintySample> collectUncertaintySamples(const core::StereoRig &
     }
     u.lineSigma = precise::lineSigmas(r.preciseResult.information);
     u.residualPx = r.preciseResult.residualPx;
-    u.modelError = modelError.at(hMe);
+    u.modelError = modelError.at(r.phi);
     if (std::all_of(u.lineSigma.begin(), u.lineSigma.end(), [](double v) { return std::isfinite(v); }))
       out.push_back(u);
   }

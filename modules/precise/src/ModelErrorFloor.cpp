@@ -9,7 +9,7 @@
 namespace pm::precise {
 
 ModelErrorFloor::ModelErrorFloor(const std::vector<core::PassLanding> &landings, const vpHomogeneousMatrix &hMc, double widthDeg)
-    : m_landings(landings), m_hMc(hMc), m_width(widthDeg * M_PI / 180.0)
+    : m_landings(landings), m_cameraMm{hMc[0][3] * 1e3, hMc[1][3] * 1e3, hMc[2][3] * 1e3}, m_width(widthDeg * M_PI / 180.0)
 {
   if (!(widthDeg > 0 && std::isfinite(widthDeg)))
     throw core::Error("model error floor: the width must be a positive angle (deg)");
@@ -19,14 +19,17 @@ ModelErrorFloor::ModelErrorFloor(const std::vector<core::PassLanding> &landings,
   }
 }
 
-std::array<double, 6> ModelErrorFloor::at(const vpHomogeneousMatrix &hMm) const
+std::array<double, 6> ModelErrorFloor::at(const core::Phi &phi) const
 {
   std::array<double, 6> out{};
   if (m_landings.empty())
     return out;
-  // The camera's direction seen from the model.
-  const vpHomogeneousMatrix mMc = hMm.inverse() * m_hMc;
-  double d[3] = {mMc[0][3], mMc[1][3], mMc[2][3]};
+  // The camera's direction seen from the model: mRh (c - t), with R = hRm row-major.
+  const core::Rot3 R = core::rotationOf(phi);
+  const double toCamera[3] = {m_cameraMm[0] - phi.x, m_cameraMm[1] - phi.y, m_cameraMm[2] - phi.z};
+  double d[3];
+  for (int j = 0; j < 3; ++j)
+    d[j] = R[j] * toCamera[0] + R[3 + j] * toCamera[1] + R[6 + j] * toCamera[2];
   const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   if (!(n > 0))
     return out;
@@ -51,13 +54,12 @@ std::array<double, 6> ModelErrorFloor::at(const vpHomogeneousMatrix &hMm) const
       }
   }
   // Into the hand frame's axes: the diagonal of hRm C mRh.
-  const vpRotationMatrix R = hMm.getRotationMatrix();
   for (int i = 0; i < 3; ++i) {
     double vt = 0, vw = 0;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
-        vt += R[i][a] * Ct[a][b] * R[i][b];
-        vw += R[i][a] * Cw[a][b] * R[i][b];
+        vt += R[3 * i + a] * Ct[a][b] * R[3 * i + b];
+        vw += R[3 * i + a] * Cw[a][b] * R[3 * i + b];
       }
     out[i] = std::sqrt(std::max(0.0, vt / sum));
     out[3 + i] = std::sqrt(std::max(0.0, vw / sum));

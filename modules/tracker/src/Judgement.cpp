@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pm/core/Pose.h"
+#include "pm/core/Quaternion.h"
 
 namespace pm::tracker {
 
@@ -36,13 +37,13 @@ Judgement::Judgement(const JudgementParams &params, double competitorMinDeg, con
 
 std::size_t Judgement::competitors(const core::Phi &phi, core::Phi *out) const
 {
-  const vpHomogeneousMatrix hMb = core::toHomogeneousMatrix(phi);
+  const core::Quaternion q = core::quaternionOf(phi);
   std::size_t n = 0;
   for (std::size_t k = 0; k < 8; ++k) {
     core::Phi p;
     if (k < 7) { // turned about the model's z axis: -135..-45, 45..180 deg
       const double a = (static_cast<double>(k) - 3.0) * M_PI / 4.0 + (k >= 3 ? M_PI / 4.0 : 0.0);
-      p = core::fromHomogeneousMatrix(hMb * vpHomogeneousMatrix(0, 0, 0, 0, 0, a));
+      p = core::withRotation(phi, q * core::Quaternion::aboutZ(a));
     } else { // the tilt mirrored
       p = core::Phi{phi.x, phi.y, phi.z, -phi.e1, -phi.e2, phi.e3};
     }
@@ -133,7 +134,7 @@ Verdict Judgement::judge(const RefinedPose &refined, const Evidence &e, const Ju
   c.verified = state.verified;
   c.tracking = state.state == TrackState::Tracking;
   if (refined.precise)
-    v.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, refined.preciseResult.residualPx, m_modelError.at(core::toHomogeneousMatrix(phi)));
+    v.uncertainty = m_p.uncertainty.uncertainty(e.lineSigmas, refined.preciseResult.residualPx, m_modelError.at(phi));
   v.verified = state.verified;
   v.visibleShare = e.visibleShare;
   v.confidence = m_p.confidence.confidence(c);

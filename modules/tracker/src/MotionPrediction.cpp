@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include <visp3/core/vpThetaUVector.h>
-
 #include "pm/core/Error.h"
 
 namespace pm::tracker {
@@ -16,27 +14,26 @@ void MotionPredictionParams::validate() const
 
 MotionPrediction::MotionPrediction(const MotionPredictionParams &params) : m_params(params) { params.validate(); }
 
-bool MotionPrediction::step(const vpHomogeneousMatrix &prev, const vpHomogeneousMatrix &last, vpTranslationVector &dt,
-                            vpRotationMatrix &dR) const
+bool MotionPrediction::step(const core::Phi &prev, const core::Phi &last, double dtMm[3], core::Quaternion &dR) const
 {
-  const vpTranslationVector d = last.getTranslationVector() - prev.getTranslationVector();
-  const vpThetaUVector turn(vpRotationMatrix(last.getRotationMatrix() * prev.getRotationMatrix().t()));
-  const double stepMm = 1000.0 * std::sqrt(d.sumSquare());
-  const double turnDeg = std::sqrt(turn.sumSquare()) * 180.0 / M_PI;
+  const double d[3] = {last.x - prev.x, last.y - prev.y, last.z - prev.z};
+  const core::Quaternion turn = core::quaternionOf(last) * core::quaternionOf(prev).conjugate(); // hRlast hRprev^T
+  const double stepMm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const double turnDeg = turn.angle() * 180.0 / M_PI;
   if (!(stepMm <= m_params.maxStepMm) || !(turnDeg <= m_params.maxStepDeg))
     return false;
-  dt = d * m_params.gain;
-  vpThetaUVector scaled;
-  for (unsigned int k = 0; k < 3; ++k)
-    scaled[k] = m_params.gain * turn[k];
-  dR.buildFrom(scaled);
+  for (int k = 0; k < 3; ++k)
+    dtMm[k] = m_params.gain * d[k];
+  double v[3];
+  turn.rotationVector(v);
+  dR = core::Quaternion::fromRotationVector(m_params.gain * v[0], m_params.gain * v[1], m_params.gain * v[2]);
   return true;
 }
 
 bool MotionPrediction::moving(const PoseHistory &history) const
 {
-  vpTranslationVector dt;
-  vpRotationMatrix dR;
+  double dt[3];
+  core::Quaternion dR;
   return history.preciseCount() >= 2 && m_params.enabled() && step(history.precisePrev(), history.preciseLast(), dt, dR);
 }
 
@@ -46,18 +43,15 @@ core::Phi MotionPrediction::predict(const PoseHistory &history) const
   if (history.preciseCount() < 2 || !m_params.enabled())
     return last;
   // Only the latest precise pose moves on (another, e.g. one the lock verifier jumped to, stays).
-  const vpHomogeneousMatrix &latest = history.preciseLast();
-  const core::Phi remembered = core::fromHomogeneousMatrix(latest);
-  if (core::translationDistanceMm(last, remembered) > 1e-3 || core::rotationDistanceDeg(last, remembered) > 1e-3)
+  const core::Phi &latest = history.preciseLast();
+  if (core::translationDistanceMm(last, latest) > 1e-3 || core::rotationDistanceDeg(last, latest) > 1e-3)
     return last;
-  vpTranslationVector dt;
-  vpRotationMatrix dR;
+  double dt[3];
+  core::Quaternion dR;
   if (!step(history.precisePrev(), latest, dt, dR))
     return last;
-  vpHomogeneousMatrix next;
-  next.insert(vpRotationMatrix(dR * latest.getRotationMatrix()));
-  next.insert(vpTranslationVector(latest.getTranslationVector() + dt));
-  const core::Phi p = core::fromHomogeneousMatrix(next);
+  const core::Phi moved{latest.x + dt[0], latest.y + dt[1], latest.z + dt[2], 0, 0, 0};
+  const core::Phi p = core::withRotation(moved, dR * core::quaternionOf(latest));
   return p.isValid() ? p : last;
 }
 

@@ -9,7 +9,7 @@ void PoseHistory::remember(const TrackResult &r)
   m_haveBeforeLast = bothTracked;
   if (r.precise && r.state == TrackState::Tracking) {
     m_precisePrev = m_preciseLast;
-    m_preciseLast = r.hMo;
+    m_preciseLast = r.phi;
     m_preciseCount = m_preciseCount >= 1 ? 2 : 1;
   } else {
     m_preciseCount = 0;
@@ -28,8 +28,8 @@ void PoseHistory::transform(const vpHomogeneousMatrix &hNowMhPrev)
   if (m_haveBeforeLast)
     m_beforeLast = movedWithHand(hNowMhPrev, m_beforeLast);
   if (m_preciseCount > 0) {
-    m_precisePrev = hNowMhPrev * m_precisePrev;
-    m_preciseLast = hNowMhPrev * m_preciseLast;
+    m_precisePrev = movedWithHand(hNowMhPrev, m_precisePrev);
+    m_preciseLast = movedWithHand(hNowMhPrev, m_preciseLast);
   }
   m_last.hMo = hNowMhPrev * m_last.hMo;
   m_last.phi = core::fromHomogeneousMatrix(m_last.hMo);

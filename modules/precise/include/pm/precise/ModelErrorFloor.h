@@ -13,7 +13,7 @@
   \code
     const pm::precise::ModelErrorFloor floor(model.passLandings, rig.left.hMc); // 10 deg wide
     if (!floor.empty()) {
-      const std::array<double, 6> f = floor.at(hMm);  // mm along x, y, z; deg about them (hand frame)
+      const std::array<double, 6> f = floor.at(phi);  // the model at phi: mm along x, y, z; deg about them (hand frame)
       std::cout << "the model's own error here: " << f[4] << " deg about y\n";
     }
   \endcode
@@ -24,6 +24,7 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 
 #include "pm/core/PhotoModel.h"
+#include "pm/core/Pose.h"
 
 namespace pm::precise {
 
@@ -39,13 +40,13 @@ public:
   ModelErrorFloor(const std::vector<core::PassLanding> &landings, const vpHomogeneousMatrix &hMc, double widthDeg = 10);
 
   bool empty() const { return m_landings.empty(); } //!< no landings: no floor
-  //! At the model's pose \e hMm (hand frame, metres): the floor per axis, mm along the hand's x, y, z then deg about them.
-  std::array<double, 6> at(const vpHomogeneousMatrix &hMm) const;
+  //! At the model's pose \e phi (hMm): the floor per axis, mm along the hand's x, y, z then deg about them.
+  std::array<double, 6> at(const core::Phi &phi) const;
 
 private:
   std::vector<core::PassLanding> m_landings;
   std::vector<std::array<double, 3>> m_dirs; //!< each landing's camera direction (unit, model frame)
-  vpHomogeneousMatrix m_hMc;
+  double m_cameraMm[3]; //!< the camera's centre in the hand frame
   double m_width; //!< rad
 };
 

@@ -11,7 +11,8 @@
   precise stage made, on frames tracked in a row (a search's pose is too rough to take a velocity
   from). They follow the hand when it moves (eye-in-hand), so the prediction is the target's own
   motion. A step larger than \e maxStepMm or \e maxStepDeg is a jump or too fast a motion: no
-  prediction then. The prediction keeps no state of its own.
+  prediction then. The prediction keeps no state of its own and allocates nothing (quaternions,
+  Quaternion.h).
 
   \code
     const pm::tracker::MotionPrediction motion;        // gain 1
@@ -25,6 +26,7 @@
   \endcode
 */
 #include "pm/core/Pose.h"
+#include "pm/core/Quaternion.h"
 #include "pm/tracker/PoseHistory.h"
 
 namespace pm::tracker {
@@ -61,8 +63,8 @@ public:
   bool moving(const PoseHistory &history) const;
 
 private:
-  //! The step from \e prev to \e last scaled by the gain, when it is no jump.
-  bool step(const vpHomogeneousMatrix &prev, const vpHomogeneousMatrix &last, vpTranslationVector &dt, vpRotationMatrix &dR) const;
+  //! The step from \e prev to \e last scaled by the gain (\e dtMm, and the turn \e dR about the hand's axes), when it is no jump.
+  bool step(const core::Phi &prev, const core::Phi &last, double dtMm[3], core::Quaternion &dR) const;
 
   MotionPredictionParams m_params;
 };

@@ -47,10 +47,10 @@ public:
   const core::Phi *beforeLast() const { return m_haveBeforeLast ? &m_beforeLast : nullptr; }
   //! How many precise poses of frames tracked in a row are kept: 0, 1 or 2.
   int preciseCount() const { return m_preciseCount; }
-  //! The latest of them (hand frame, metres); meaningful when preciseCount() >= 1.
-  const vpHomogeneousMatrix &preciseLast() const { return m_preciseLast; }
+  //! The latest of them; meaningful when preciseCount() >= 1.
+  const core::Phi &preciseLast() const { return m_preciseLast; }
   //! The one before it; meaningful when preciseCount() == 2.
-  const vpHomogeneousMatrix &precisePrev() const { return m_precisePrev; }
+  const core::Phi &precisePrev() const { return m_precisePrev; }
 
   //! At a frame's end: \e r becomes the last frame, the last the one before, and \e r's pose joins the precise ones when the stage made it.
   void remember(const TrackResult &r);
@@ -65,7 +65,7 @@ private:
   TrackResult m_last;
   core::Phi m_beforeLast;
   bool m_haveBeforeLast = false;
-  vpHomogeneousMatrix m_precisePrev, m_preciseLast;
+  core::Phi m_precisePrev, m_preciseLast;
   int m_preciseCount = 0;
 };
 
