@@ -20,6 +20,8 @@
 #include "pm/tracker/Judgement.h"
 #include "pm/trust/HeldOutViews.h"
 #include "pm/trust/PassCalibration.h"
+#include "pm/trust/RangeBias.h"
+#include "pm/tracker/RangeCorrection.h"
 
 namespace {
 
@@ -343,6 +345,114 @@ TEST(PassCalibration, TheModelFileKeepsItAndAnOlderModelLoadsWithNone)
   older.erase(older.find("\"confidence_offset\":-1.25,"), 26);
   pm::test::writeText(dir.file("older.json"), older);
   EXPECT_EQ(pm::io::loadPhotoModel(dir.file("older.json")).trust.confidenceOffset, 0.0);
+  // The range's correction: kept; a file from before it reads as none; a scale past 10 % refused.
+  c.trust.rangeScale = 0.9973;
+  c.trust.rangeCameras = 1;
+  c.trust.rangeErrorPct = 0.27;
+  c.trust.rangeViews = 6;
+  pm::io::savePhotoModel(c, dir.file("range.json"));
+  const pm::core::TrustCalibration r = pm::io::loadPhotoModel(dir.file("range.json")).trust;
+  EXPECT_DOUBLE_EQ(r.rangeScale, 0.9973);
+  EXPECT_EQ(r.rangeCameras, 1);
+  EXPECT_DOUBLE_EQ(r.rangeErrorPct, 0.27);
+  EXPECT_EQ(r.rangeViews, 6);
+  EXPECT_EQ(back.trust.rangeScale, 1.0); // saved without it
+  std::string ranged = pm::test::readText(dir.file("range.json"));
+  std::string noRange = ranged; // keys of a file from before the range: unknown ones, ignored
+  noRange.replace(noRange.find("\"range_cameras\""), 15, "\"range_camerax\"");
+  noRange.replace(noRange.find("\"range_scale\""), 13, "\"range_scalx\"");
+  pm::test::writeText(dir.file("norange.json"), noRange);
+  const pm::core::TrustCalibration none = pm::io::loadPhotoModel(dir.file("norange.json")).trust;
+  EXPECT_EQ(none.rangeScale, 1.0);
+  EXPECT_EQ(none.rangeCameras, 0);
+  ranged.replace(ranged.find("\"range_scale\":0.9973"), 20, "\"range_scale\":0.8000");
+  pm::test::writeText(dir.file("bad4.json"), ranged);
+  EXPECT_NE(pm::test::errorOf([&] { pm::io::loadPhotoModel(dir.file("bad4.json")); }).find("range_scale"), std::string::npos);
+}
+
+namespace {
+
+//! A right try on \e view whose estimate lies \e pct % of its range too far from the cameras' centre (the hand's origin) and 1 mm across the range.
+pm::trust::PassTry rangedTry(std::size_t view, double pct, bool precise = true, double rangeMm = 500)
+{
+  pm::trust::PassTry t = tryOf(cues(1.0, 0.9, 1.0), 0, view);
+  t.cues.precise = precise;
+  t.originMm = {0.06 * rangeMm, -0.04 * rangeMm, rangeMm};
+  const double across[3] = {1 / std::hypot(1.0, 0.06), 0, -0.06 / std::hypot(1.0, 0.06)}; // a unit vector square to the range
+  for (std::size_t i = 0; i < 3; ++i)
+    t.error[i] = t.originMm[i] * pct / 100 + across[i];
+  t.errorMm = std::hypot(t.error[0], t.error[1], t.error[2]);
+  return t;
+}
+
+} // namespace
+
+TEST(RangeBias, TheViewsAgreeingOnHowFarTheirPosesLieGiveTheScaleThatBringsThemBack)
+{
+  const std::array<double, 3> centre{0, 0, 0};
+  std::vector<pm::trust::PassTry> tries;
+  for (std::size_t v = 1; v <= 5; ++v)
+    for (double pct : {0.25, 0.3, 0.35})
+      tries.push_back(rangedTry(v, pct + 0.01 * static_cast<double>(v)));
+  tries.push_back(rangedTry(6, -3.0, false)); // without the precise stage: not counted
+  pm::trust::PassTry wrong = rangedTry(7, 5.0);
+  wrong.errorMm = 30; // a wrong try: not counted
+  tries.push_back(wrong);
+  const pm::trust::RangeBias b = pm::trust::measureRangeBias(tries, centre);
+  EXPECT_EQ(b.views, 5);
+  EXPECT_EQ(b.agreeing, 5);
+  EXPECT_NEAR(b.errorPct, 0.33, 1e-3); // the median of the views' medians (0.31 .. 0.35; the 1 mm across adds 2e-4 %)
+  ASSERT_TRUE(b.measured());
+  EXPECT_NEAR(b.scale, 1 / (1 + b.errorPct / 100), 1e-12);
+  // Corrected, a try of the median's range lies at the truth's range; the error across it stays.
+  const pm::trust::PassTry c = pm::trust::rangeCorrected(rangedTry(3, 0.33), b.scale, centre);
+  EXPECT_NEAR(pm::trust::relativeRangeError(c, centre), 0.0, 1e-5);
+  EXPECT_NEAR(std::hypot(c.error[0], c.error[1], c.error[2]), 1.0, 0.01); // what lay across the range
+  EXPECT_NEAR(c.errorMm, std::hypot(c.error[0], c.error[1], c.error[2]), 1e-12);
+  // No bias to correct: the views disagree, too few views, or under 0.1 %.
+  std::vector<pm::trust::PassTry> split;
+  for (std::size_t v = 1; v <= 4; ++v)
+    split.push_back(rangedTry(v, v % 2 ? 0.3 : -0.3));
+  EXPECT_FALSE(pm::trust::measureRangeBias(split, centre).measured());
+  EXPECT_FALSE(pm::trust::measureRangeBias({rangedTry(1, 0.3), rangedTry(2, 0.3)}, centre).measured());
+  EXPECT_FALSE(pm::trust::measureRangeBias({rangedTry(1, 0.05), rangedTry(2, 0.06), rangedTry(3, 0.07)}, centre).measured());
+  EXPECT_TRUE(pm::trust::measureRangeBias({rangedTry(1, -0.3), rangedTry(2, -0.25), rangedTry(3, 0.1)}, centre).measured()); // one view off: still agreed
+  // At most 2 % (right tries, within 5 mm, reach it only near the cameras: 2.3 % at 200 mm).
+  EXPECT_NEAR(pm::trust::measureRangeBias({rangedTry(1, 2.3, true, 200), rangedTry(2, 2.3, true, 200), rangedTry(3, 2.3, true, 200)}, centre).scale, 1 / 1.02, 1e-12);
+}
+
+TEST(RangeCorrection, ScalesTheRangeFromTheRigsCamerasOnARigOfTheCountMeasuredOnly)
+{
+  pm::core::PinholeCamera left, right;
+  left.hMc.buildFrom(-0.16, 0, 0, 0, 0.3, 0);
+  right.hMc.buildFrom(0.16, 0, 0.02, 0, -0.3, 0);
+  const pm::core::CameraRig one(std::vector<pm::core::PinholeCamera>{left}), pair(std::vector<pm::core::PinholeCamera>{left, right});
+  pm::core::TrustCalibration t;
+  t.measured = true;
+  t.rangeScale = 0.99;
+  t.rangeCameras = 1;
+  const pm::tracker::RangeCorrection onOne(one, t), onPair(pair, t), none;
+  EXPECT_TRUE(onOne.active());
+  EXPECT_FALSE(onPair.active()); // measured through one camera: a pair reads its own range
+  EXPECT_FALSE(none.active());
+  EXPECT_EQ(pm::tracker::cameraCentreMm(pair), (std::array<double, 3>{0, 0, 10}));
+  const pm::core::Phi phi{40, -30, 520, 0.1, -0.05, 0.2};
+  const pm::core::Phi c = onOne.corrected(phi);
+  const std::array<double, 3> o = onOne.centreMm();
+  EXPECT_EQ(o, (std::array<double, 3>{-160, 0, 0}));
+  const double before = std::hypot(phi.x - o[0], phi.y - o[1], phi.z - o[2]), after = std::hypot(c.x - o[0], c.y - o[1], c.z - o[2]);
+  EXPECT_NEAR(after, 0.99 * before, 1e-9); // the range scaled ...
+  EXPECT_NEAR((c.x - o[0]) * (phi.y - o[1]) - (c.y - o[1]) * (phi.x - o[0]), 0.0, 1e-9); // ... along the line from the centre
+  EXPECT_EQ(c.e1, phi.e1);
+  EXPECT_EQ(c.e2, phi.e2);
+  EXPECT_EQ(c.e3, phi.e3);
+  const pm::core::Phi same = onPair.corrected(phi);
+  EXPECT_EQ(same.x, phi.x);
+  EXPECT_EQ(same.z, phi.z);
+  pm::core::TrustCalibration older = t; // a model from before the range: none on any rig
+  older.rangeScale = 1;
+  older.rangeCameras = 0;
+  EXPECT_FALSE(pm::tracker::RangeCorrection(one, older).active());
 }
 
 TEST(TrustCache, GivesBackWhatWasStoredForTheSamePassRigAndModelOnlyAndNeverFails)

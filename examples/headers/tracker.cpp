@@ -14,6 +14,7 @@
 #include "pm/tracker/PoseSearch.h"
 #include "pm/tracker/PreciseRefinement.h"
 #include "pm/tracker/QualityScale.h"
+#include "pm/tracker/RangeCorrection.h"
 #include "pm/tracker/RefinementChain.h"
 #include "pm/tracker/RmGaUpdate.h"
 #include "pm/tracker/StaticDetection.h"
@@ -273,6 +274,21 @@ void exampleTiltFilter(const vpHomogeneousMatrix &hNowMhPrev)
     use(filter.update(raw));          // its tilt smoothed
     filter.transform(hNowMhPrev);     // the hand moved (eye-in-hand)
   }
+}
+
+// RangeCorrection.h
+void exampleRangeCorrectionFile(const pm::core::CameraRig &rig, const pm::core::PhotoModel &model, pm::precise::PreciseStage &stage, const pm::core::Phi &start)
+{
+  const pm::tracker::RangeCorrection range(rig, model.trust);
+  const pm::core::Phi phi = range.corrected(stage.refine(start).phi); // what the tracker reports
+  use(phi);
+}
+void exampleRangeCorrection(const pm::core::CameraRig &rig, const pm::core::PhotoModel &model)
+{
+  const pm::tracker::RangeCorrection none;                     // scale 1: poses unchanged
+  const pm::tracker::RangeCorrection range(rig, model.trust);  // the pass's, on a rig of its camera count
+  if (range.active()) std::cout << "range x" << range.scale() << "\n";
+  (void)none;
 }
 
 } // namespace pm_examples

@@ -4,6 +4,8 @@
 #include "pm/trust/HeldOutViews.h"
 #include "pm/trust/PassCalibration.h"
 #include "pm/trust/PassTries.h"
+#include "pm/trust/RangeBias.h"
+#include "pm/tracker/RangeCorrection.h"
 
 #include <iostream>
 namespace pm_examples {
@@ -35,6 +37,14 @@ void examplePassTries(const pm::core::StereoRig &rig, const std::vector<pm::mode
   const vpHomogeneousMatrix hMm = pass[k].fMh.inverse() * fold.fMm;
   for (const pm::trust::PassTry &t : pm::trust::tryView(tracker, pass[k], hMm, pm::trust::TryParams(), k))
     std::cout << t.start << ": " << t.errorMm << " mm, " << t.errorDeg << " deg\n";
+}
+
+// RangeBias.h
+void exampleRangeBias(std::vector<pm::trust::PassTry> &tries, const pm::core::CameraRig &rig)
+{
+  const std::array<double, 3> centre = pm::tracker::cameraCentreMm(rig); // the rig's cameras' centre (mm)
+  const pm::trust::RangeBias b = pm::trust::measureRangeBias(tries, centre);
+  if (b.measured()) for (pm::trust::PassTry &t : tries) t = pm::trust::rangeCorrected(t, b.scale, centre);
 }
 
 } // namespace pm_examples

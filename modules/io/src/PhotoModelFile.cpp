@@ -90,6 +90,10 @@ json trustToJson(const core::TrustCalibration &t)
           {"wrong_trusted", t.wrongTrusted},
           {"wrong_max_confidence", t.wrongMaxConfidence},
           {"within_sigma", t.withinSigma},
+          {"range_scale", t.rangeScale},
+          {"range_cameras", t.rangeCameras},
+          {"range_error_pct", t.rangeErrorPct},
+          {"range_views", t.rangeViews},
           {"seconds", t.seconds}};
 }
 
@@ -111,6 +115,14 @@ core::TrustCalibration trustFromJson(const json &j)
   t.confidenceOffset = j.value("confidence_offset", 0.0); // none before issue 58
   if (!(t.confidenceOffset <= 0 && t.confidenceOffset > -100))
     throw core::Error("\"trust_calibration\": \"confidence_offset\" must lie in (-100, 0]");
+  t.rangeScale = j.value("range_scale", 1.0); // none before issue 58's range
+  if (!(t.rangeScale > 0.9 && t.rangeScale < 1.1))
+    throw core::Error("\"trust_calibration\": \"range_scale\" must lie in (0.9, 1.1)");
+  t.rangeCameras = j.value("range_cameras", 0);
+  if (t.rangeCameras < 0 || t.rangeCameras > 16)
+    throw core::Error("\"trust_calibration\": \"range_cameras\" must lie in [0, 16]");
+  t.rangeErrorPct = j.value("range_error_pct", 0.0);
+  t.rangeViews = j.value("range_views", 0);
   t.heldOutViews = j.value("held_out_views", 0);
   t.rightExamples = j.value("right_examples", 0);
   t.wrongExamples = j.value("wrong_examples", 0);

@@ -17,7 +17,7 @@ void PreciseRefinementParams::validate() const
 
 PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, const core::CameraRig &rig, const core::PhotoModel &model,
                                      const core::StereoScorer &scorer, const QualityScale &scale)
-    : m_p(params), m_scorer(scorer), m_scale(scale)
+    : m_p(params), m_scorer(scorer), m_scale(scale), m_range(rig, model.trust)
 {
   if (!params.enabled || !model.hasContours())
     return;
@@ -82,7 +82,12 @@ PreciseRefinement::Attempt PreciseRefinement::refine(const core::HueFrame &frame
   if (!found)
     return a;
   a.result = best;
-  a.pose = ScoredPose{best.phi, bestF};
+  if (m_range.active()) { // the pose reported is the stage's with its range as the pass measured it
+    const core::Phi phi = m_range.corrected(best.phi);
+    a.pose = ScoredPose{phi, m_scorer.evaluate(frame, phi)};
+  } else {
+    a.pose = ScoredPose{best.phi, bestF};
+  }
   a.kept = true;
   return a;
 }

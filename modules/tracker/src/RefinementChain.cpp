@@ -56,7 +56,7 @@ RefinedPose RefinementChain::refine(const core::HueFrame &frame, const ScoredPos
 void RefinementChain::learn(const RefinedPose &refined, const Verdict &verdict)
 {
   if (refined.precise && verdict.trusted) // the scene's colours along the outline, where the pose is trusted
-    m_precise.learnColours(refined.pose.phi);
+    m_precise.learnColours(refined.preciseResult.phi); // where the stage itself put the outline
 }
 
 } // namespace pm::tracker

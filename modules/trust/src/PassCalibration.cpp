@@ -14,6 +14,8 @@
 #include "pm/model/PassRig.h"
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/trust/HeldOutViews.h"
+#include "pm/trust/RangeBias.h"
+#include "pm/tracker/RangeCorrection.h"
 
 namespace pm::trust {
 
@@ -148,6 +150,7 @@ void CalibrationParams::validate() const
   check(wrongCeiling > 0 && wrongCeiling < 1, "the wrong tries' ceiling must lie in (0, 1)");
   check(maxLogitGain >= 0, "the shifts' largest gain must not be negative");
   check(sigmaShare > 0 && sigmaShare < 1, "the share within 1 sigma must lie in (0, 1)");
+  check(rangeMaxCameras >= 0, "the range's largest rig must not be negative");
   check(minGain > 0 && maxGain >= minGain, "the sigmas' gains need 0 < min <= max");
 }
 
@@ -337,9 +340,22 @@ core::TrustCalibration calibrateFromPass(const core::CameraRig &rig, const std::
         onStep();
     }
   }
+  // The range the precise stage reads through this rig: measured, and the tries' errors corrected as the tracker will correct them.
+  const std::array<double, 3> centre = tracker::cameraCentreMm(tried);
+  const RangeBias range = measureRangeBias(tries, centre);
+  const bool correctRange = range.measured() && static_cast<int>(tried.size()) <= p.rangeMaxCameras;
+  if (correctRange)
+    for (PassTry &x : tries)
+      x = rangeCorrected(x, range.scale, centre);
   tracker::ConfidenceModel shipped = tracker::ConfidenceModel::shipped(tracker::ConfidenceKind::AllAround);
   shipped.threshold = trackerParams.judgement.confidence.threshold;
   core::TrustCalibration t = calibrateTrust(tries, shipped, p);
+  t.rangeErrorPct = range.errorPct;
+  t.rangeViews = range.views;
+  if (t.measured && correctRange) {
+    t.rangeScale = range.scale;
+    t.rangeCameras = static_cast<int>(tried.size());
+  }
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!t.measured && why)
     *why = tries.empty() ? "no model could be built without some of the views (" + reason + ")"
@@ -397,6 +413,12 @@ std::string describe(const core::TrustCalibration &t)
     << " (the highest " << t.wrongMaxConfidence << "); 1-sigma x";
   for (std::size_t i = 0; i < 6; ++i)
     s << (i ? "," : "") << std::setprecision(1) << t.sigmaGain[i];
+  if (t.rangeScale != 1)
+    s << std::setprecision(2) << "; the held-out views' poses " << std::fabs(t.rangeErrorPct) << " % of their range too "
+      << (t.rangeErrorPct > 0 ? "far" : "near") << " (" << std::setprecision(1) << 5 * std::fabs(t.rangeErrorPct) << " mm at 500 mm), corrected";
+  else if (t.rangeViews > 0)
+    s << std::setprecision(2) << "; the range not corrected (the held-out views " << std::showpos << t.rangeErrorPct << std::noshowpos
+      << " %; corrected through one camera only, from 0.1 % on which the views agree)";
   s << std::setprecision(1) << " (" << t.seconds << " s)";
   return s.str();
 }

@@ -27,6 +27,7 @@ PassTry record(const tracker::TrackResult &r, const vpHomogeneousMatrix &hMm, st
   hMm.extract(Rt);
   const vpThetaUVector tu(Re * Rt.t()); // about the hand's axes
   for (unsigned i = 0; i < 3; ++i) {
+    t.originMm[i] = 1e3 * hMm[i][3];
     t.error[i] = 1e3 * (r.hMo[i][3] - hMm[i][3]);
     t.error[3 + i] = tu[i] * 180.0 / M_PI;
   }

@@ -16,6 +16,11 @@
   right, as one camera on the head), every confidence is lowered (confidenceOffset on its logit)
   until the highest sits at the guard's ceiling: fewer right frames trusted, no plainly wrong one. The sigmas are widened per axis
   where fewer than 68 % of the held-out views' true errors fall within them (sigmaGain, never under 1).
+  Where the held-out views' right poses read the target consistently too far or too near from the
+  cameras (the model's colours and outline placed a tenth of a pixel off give a millimetre of depth
+  through one camera), the precise stage's pose is moved along the line from the cameras by that share
+  of its range (rangeScale), on a rig of as many cameras as the pass was tried on (one: a pair's bias
+  is measured, rangeErrorPct, and left to its triangulation).
 */
 #include <array>
 #include <string>
@@ -35,6 +40,11 @@ struct TrustCalibration
   std::array<double, 6> sigmaGain{1, 1, 1, 1, 1, 1}; //!< the reported 1-sigma per axis (x, y, z, about x, y, z) times this
   double guard = 1;         //!< the share of the measured shifts kept (1: all; less where wrong poses came near the threshold)
   double confidenceOffset = 0; //!< added to the confidence's logit (<= 0; 0 unless the shipped confidence trusted a plainly wrong try)
+  //! The precise stage's pose's distance from the cameras' centre times this (1: none; 1 / (1 + the held-out views' range error))
+  double rangeScale = 1;
+  int rangeCameras = 0;     //!< the cameras of the rig rangeScale was measured through (a rig of another count: not applied; 0: none)
+  double rangeErrorPct = 0; //!< the held-out views' range error before it (% of the range; > 0: too far)
+  int rangeViews = 0;       //!< the held-out views it was measured on
   int heldOutViews = 0;     //!< the pass's views held out of the models they were tried on
   int rightExamples = 0;    //!< tries that landed right (within 5 mm and 2 deg)
   int wrongExamples = 0;    //!< tries that landed wrong (over 20 mm or 5 deg)

@@ -37,6 +37,7 @@
 #include "pm/precise/PreciseStage.h"
 #include "pm/tracker/QualityScale.h"
 #include "pm/tracker/FrameSteps.h"
+#include "pm/tracker/RangeCorrection.h"
 #include "pm/tracker/PoseHistory.h"
 
 namespace pm::tracker {
@@ -69,7 +70,7 @@ struct PreciseRefinementParams
 class PreciseRefinement
 {
 public:
-  //! The stage runs when \e params.enabled and \e model has outlines (core::PhotoModel::hasContours).
+  //! The stage runs when \e params.enabled and \e model has outlines (core::PhotoModel::hasContours); its poses' range as \e model's pass measured it on \e rig.
   PreciseRefinement(const PreciseRefinementParams &params, const core::CameraRig &rig, const core::PhotoModel &model,
                     const core::StereoScorer &scorer, const QualityScale &scale);
 
@@ -77,7 +78,7 @@ public:
   struct Attempt
   {
     precise::PreciseResult result; //!< what it found, kept or not
-    ScoredPose pose;               //!< the kept pose and its F (when kept)
+    ScoredPose pose;               //!< the kept pose (the stage's, its range corrected: RangeCorrection.h) and its F (when kept)
     bool kept = false;             //!< the acceptance rule keeps it: the frame's pose is the stage's
   };
 
@@ -89,7 +90,7 @@ public:
   */
   Attempt refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const core::Phi &predicted,
                  const core::CameraImages &images);
-  //! The scene's colours along the outline at \e phi, a trusted pose (precise::PreciseStage::learnColours).
+  //! The scene's colours along the outline at \e phi, a trusted pose as the stage found it (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
   //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).
   void setBackgroundHue(double deg)
@@ -103,6 +104,7 @@ private:
   PreciseRefinementParams m_p;
   const core::StereoScorer &m_scorer;
   QualityScale m_scale;
+  RangeCorrection m_range;        //!< the kept pose's range corrected as the pass measured it (never changed)
   bool m_lookedForHidden = false; //!< the last refine() looked for hidden lines (the fitness found part of the target hidden)
   std::unique_ptr<precise::PreciseStage> m_stage;
 };

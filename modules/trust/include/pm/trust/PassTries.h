@@ -55,6 +55,7 @@ struct PassTry
   std::array<double, 6> error{};         //!< estimate less truth along the hand's x, y, z (mm), about them (deg)
   double errorMm = 0;       //!< the model origin's distance from its true place (mm)
   double errorDeg = 0;      //!< the rotation between the estimate and the truth (deg)
+  std::array<double, 3> originMm{}; //!< the model origin's true place in the hand frame (mm)
   //! Right: within 5 mm and 2 deg (the right frames).
   bool right() const { return errorMm <= 5 && errorDeg <= 2; }
   //! Wrong: over 20 mm or 5 deg off (the confidence's wrong frames).
