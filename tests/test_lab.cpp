@@ -28,6 +28,14 @@
 using pm::test::errorOf;
 using pm::test::TempDir;
 
+TEST(Statistics, MedianIsTheMiddleOrTheMeanOfTheTwoMiddleValues)
+{
+  EXPECT_EQ(pm::core::median({5, 1, 4, 2, 3}), 3);
+  EXPECT_EQ(pm::core::median({4, 1, 3, 2}), 2.5);
+  EXPECT_EQ(pm::core::median({-7}), -7);
+  EXPECT_EQ(pm::core::median({}), 0);
+}
+
 TEST(Statistics, PercentileIsTheNearestRank)
 {
   const std::vector<double> v{5, 1, 4, 2, 3};

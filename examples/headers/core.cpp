@@ -127,6 +127,10 @@ void exampleStatistics()
   const double p99 = pm::core::percentile({1.0, 2.0, 3.0, 4.0}, 0.99); // 4
   const double median = pm::core::percentile({1.0, 2.0, 3.0, 4.0}, 0.5); // 2
 }
+void exampleStatisticsMedian()
+{
+  const double m = pm::core::median({4.0, 1.0, 3.0, 2.0}); // 2.5
+}
 
 // StereoFitness.h
 void exampleStereoFitness()

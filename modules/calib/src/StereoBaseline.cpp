@@ -5,17 +5,9 @@
 #include <array>
 
 #include "pm/core/Error.h"
+#include "pm/core/Statistics.h"
 
 namespace pm::calib {
-
-namespace {
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-} // namespace
 
 BaselineResult aggregateBaseline(const std::vector<vpHomogeneousMatrix> &perPair, const std::vector<double> &rmsPx,
                                  const core::StereoRig &rig)
@@ -35,7 +27,7 @@ BaselineResult aggregateBaseline(const std::vector<vpHomogeneousMatrix> &perPair
     std::vector<double> c;
     for (const auto &e : x)
       c.push_back(e[k]);
-    med[k] = median(c);
+    med[k] = core::median(c);
   }
   auto dist = [&](const std::array<double, 6> &e, bool rot) {
     double s = 0;
@@ -48,7 +40,7 @@ BaselineResult aggregateBaseline(const std::vector<vpHomogeneousMatrix> &perPair
     dt.push_back(dist(e, false));
     dr.push_back(dist(e, true));
   }
-  const double madT = std::max(1.4826 * median(dt), 0.2e-3), madR = std::max(1.4826 * median(dr), 0.02 * M_PI / 180);
+  const double madT = std::max(1.4826 * core::median(dt), 0.2e-3), madR = std::max(1.4826 * core::median(dr), 0.02 * M_PI / 180);
   BaselineResult res;
   std::array<double, 6> mean{};
   double rms = 0;

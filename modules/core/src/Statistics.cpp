@@ -19,4 +19,13 @@ double percentile(std::vector<double> values, double fraction)
   return values[k];
 }
 
+double median(std::vector<double> values)
+{
+  if (values.empty())
+    return 0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 } // namespace pm::core

@@ -1,5 +1,7 @@
 #include "pm/tracker/RangeCorrection.h"
 
+#include "pm/core/Vec3.h"
+
 namespace pm::tracker {
 
 std::array<double, 3> cameraCentreMm(const core::CameraRig &rig)
@@ -27,10 +29,9 @@ core::Phi RangeCorrection::corrected(const core::Phi &phi) const
 {
   if (!active())
     return phi;
+  const core::Vec3 at = core::add(m_centreMm, core::scaled(core::sub({phi.x, phi.y, phi.z}, m_centreMm), m_scale));
   core::Phi p = phi;
-  p.x = m_centreMm[0] + (phi.x - m_centreMm[0]) * m_scale;
-  p.y = m_centreMm[1] + (phi.y - m_centreMm[1]) * m_scale;
-  p.z = m_centreMm[2] + (phi.z - m_centreMm[2]) * m_scale;
+  p.x = at[0], p.y = at[1], p.z = at[2];
   return p;
 }
 

@@ -4,28 +4,16 @@
 #include <cmath>
 #include <map>
 
+#include "pm/core/Statistics.h"
+#include "pm/core/Vec3.h"
+
 namespace pm::trust {
 
 namespace {
 
-double median(std::vector<double> v)
-{
-  if (v.empty())
-    return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+double distance(const core::Vec3 &a, const core::Vec3 &b) { return std::sqrt(core::dot(core::sub(a, b), core::sub(a, b))); }
 
-double distance(const std::array<double, 3> &a, const std::array<double, 3> &b)
-{
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-std::array<double, 3> estimateOf(const PassTry &t)
-{
-  return {t.originMm[0] + t.error[0], t.originMm[1] + t.error[1], t.originMm[2] + t.error[2]};
-}
+core::Vec3 estimateOf(const PassTry &t) { return core::add(t.originMm, {t.error[0], t.error[1], t.error[2]}); }
 
 } // namespace
 
@@ -44,9 +32,9 @@ RangeBias measureRangeBias(const std::vector<PassTry> &tries, const std::array<d
   RangeBias b;
   std::vector<double> views;
   for (const auto &[view, errors] : byView)
-    views.push_back(median(errors));
+    views.push_back(core::median(errors));
   b.views = static_cast<int>(views.size());
-  const double m = median(views);
+  const double m = core::median(views);
   b.errorPct = 100 * m;
   for (double v : views)
     b.agreeing += (v > 0) == (m > 0) && v != 0;
@@ -58,13 +46,10 @@ RangeBias measureRangeBias(const std::vector<PassTry> &tries, const std::array<d
 PassTry rangeCorrected(const PassTry &t, double scale, const std::array<double, 3> &centreMm)
 {
   PassTry c = t;
-  const std::array<double, 3> e = estimateOf(t);
-  double sum = 0;
-  for (std::size_t i = 0; i < 3; ++i) {
-    c.error[i] = centreMm[i] + (e[i] - centreMm[i]) * scale - t.originMm[i];
-    sum += c.error[i] * c.error[i];
-  }
-  c.errorMm = std::sqrt(sum);
+  const core::Vec3 e = core::sub(core::add(centreMm, core::scaled(core::sub(estimateOf(t), centreMm), scale)), t.originMm);
+  for (std::size_t i = 0; i < 3; ++i)
+    c.error[i] = e[i];
+  c.errorMm = std::sqrt(core::dot(e, e));
   return c;
 }
 

@@ -2,7 +2,7 @@
 /*!
   \file Statistics.h
   The statistics every program reports the same way (one definition each): percentiles of frame
-  times.
+  times, medians.
 */
 #include <vector>
 
@@ -19,5 +19,15 @@ namespace pm::core {
   \endcode
 */
 double percentile(std::vector<double> values, double fraction);
+
+/*!
+  The median of \e values: the middle value, or the mean of the two middle ones for an even count;
+  0 for no values.
+
+  \code
+    const double m = pm::core::median({4.0, 1.0, 3.0, 2.0}); // 2.5
+  \endcode
+*/
+double median(std::vector<double> values);
 
 } // namespace pm::core
