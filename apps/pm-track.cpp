@@ -9,6 +9,8 @@
 #include <memory>
 #include <sstream>
 
+#include <visp3/core/vpThetaUVector.h>
+
 
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
@@ -29,6 +31,7 @@
 #include "pm/lab/SilhouetteTruth.h"
 #include "pm/lab/SurfaceTruth.h"
 #include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/PassRig.h"
 #include "pm/lab/RunFigures.h"
 #include "pm/lab/TrackingReport.h"
 #include "pm/lab/TrustCache.h"
@@ -54,6 +57,7 @@ struct Options
   std::string leftSource, rightSource;
   std::string sceneDir;   //!< a scene rendered elsewhere (pm-export-scene, scripts/cycles)
   bool scenePeer = false; //!< ... through our own renderer instead (its lab_views/, lab_sequence/)
+  int sceneCameras = 2;   //!< ... through its rig's first camera alone (1) or its pair (2)
   pm::capture::VideoCaptureParams vcp;
   pm::app::LabModelChoice labModel;
   pm::sim::SceneParams sp;
@@ -103,6 +107,11 @@ void addOptions(CLI::App &app, Options &o)
                                   "scripts/cycles/render.py): the model is built from its pass (views/), as pm-make-model --views "
                                   "builds it, and its sequence is tracked against its truth");
   app.add_flag("--peer", o.scenePeer, "with --scene: the same scene through our own renderer (lab_views/, lab_sequence/)")->needs(optScene);
+  app.add_option("--scene-cameras", o.sceneCameras, "with --scene: 2, its stereo rig; 1, its left camera alone (the pass then reads as a "
+                                                    "one-camera pass, each view's right image the camera after the hand's side step, "
+                                                    "docs/camera-rigs.md; the sequence's left images)")
+      ->check(CLI::Range(1, 2))
+      ->needs(optScene);
   optScene->excludes(optTarget)->excludes(optL)->excludes(optLS)->excludes(optM)->excludes(optRig)->excludes(optI)->excludes(optS);
   pm::app::addLabModelOptions(app, o.labModel);
   pm::app::addModelOptions(app, o.labModel.photo);
@@ -172,16 +181,35 @@ Input openRecordedOrLive(const Options &o, const pm::core::CameraRig &rig)
   return in;
 }
 
-//! A scene rendered elsewhere: the model from its pass, its sequence, its truth in the model's frame.
-Input openScene(const Options &o, const pm::core::StereoRig &rig)
+/*!
+  The rig a scene is tracked through: its stereo rig, or its left camera alone. A one-camera pass takes each
+  view's second image after the hand's side step (pm::model::passRig()): the scene's right camera must
+  sit there for its views to read as such a pass.
+*/
+pm::core::CameraRig sceneRig(const Options &o)
+{
+  const pm::core::StereoRig stereo = pm::io::loadRig(pm::lab::openRenderedScene(o.sceneDir, o.scenePeer).rigPath);
+  if (o.sceneCameras == 2)
+    return pm::core::CameraRig(stereo);
+  const pm::core::CameraRig one(std::vector<pm::core::PinholeCamera>{stereo.left});
+  const vpHomogeneousMatrix d = pm::model::passRig(one).right.hMc.inverse() * stereo.right.hMc;
+  if (d.getTranslationVector().frobeniusNorm() > 1e-6 || vpThetaUVector(d).getTheta() > 1e-6)
+    throw pm::core::Error("--scene-cameras 1: the scene's right camera is not where a one-camera pass's side step puts its left "
+                          "one (docs/camera-rigs.md), so its views do not read as a one-camera pass");
+  return one;
+}
+
+//! A scene rendered elsewhere: the model from its pass (taken by \e cameras), its sequence, its truth in the model's frame.
+Input openScene(const Options &o, const pm::core::CameraRig &cameras)
 {
   const pm::lab::RenderedScene scene = pm::lab::openRenderedScene(o.sceneDir, o.scenePeer);
+  const pm::core::StereoRig rig = pm::model::passRig(cameras); // the pass's pairs (one camera: after the side step)
   const pm::model::AllAroundParams &ap = o.labModel.allAroundParams;
   const std::vector<pm::model::PassView> pass = pm::io::loadViewsFolder(scene.viewsDir, rig, ap.carving.minViews, ap.backdropHueDeg < 0);
   pm::model::PassMeasurements measured;
   pm::model::AllAroundBuild b = pm::model::buildAllAroundModel(rig, pass, ap, measured);
   if (o.labModel.calibrateTrust)
-    b.model.trust = pm::lab::calibrateLabTrust(rig, pass, ap, measured, b.model).trust;
+    b.model.trust = pm::lab::calibrateLabTrust(cameras, pass, ap, measured, b.model).trust;
   if (!o.quiet) { // the model against the toy it was made of (the renderer's truth)
     const pm::sim::Scene toy(pm::sim::makeTarget(scene.target));
     std::cout << "model of " << scene.description << " against the toy:\n"
@@ -194,10 +222,13 @@ Input openScene(const Options &o, const pm::core::StereoRig &rig)
   const std::vector<pm::core::Phi> truth = scene.truthInModelFrame(b.fMm);
   for (std::size_t k = 0; k < truth.size(); ++k)
     in.truthByFrame[static_cast<long>(k)] = truth[k];
-  in.source = std::make_unique<pm::capture::ImageSequenceSource>(scene.leftPattern, scene.rightPattern, 0, o.fps, rig.left.width,
-                                                                 rig.left.height, o.maxFrames());
-  in.frames = static_cast<const pm::capture::ImageSequenceSource &>(*in.source).length();
-  in.description = scene.description;
+  std::unique_ptr<pm::capture::ImageSequenceSource> source =
+      cameras.size() == 1 ? pm::capture::ImageSequenceSource::ofCameras({scene.leftPattern}, 0, o.fps, rig.left.width, rig.left.height, o.maxFrames())
+                          : std::make_unique<pm::capture::ImageSequenceSource>(scene.leftPattern, scene.rightPattern, 0, o.fps,
+                                                                               rig.left.width, rig.left.height, o.maxFrames());
+  in.frames = source->length();
+  in.source = std::move(source);
+  in.description = scene.description + (cameras.size() == 1 ? ", its left camera alone" : "");
   return in;
 }
 
@@ -379,14 +410,13 @@ int main(int argc, char **argv)
     const pm::tracker::TrackerParams tp = trackerOptions.resolve();
     if (!o.truthPath.empty() && (!o.recorded() || o.live()))
       throw CLI::ValidationError("--truth", "the truth of a recorded sequence (--left/--right or --camera-images)");
-    // A scene rendered elsewhere is a stereo rig's; the rest take any rig.
-    const pm::core::CameraRig rig = o.scene() ? pm::core::CameraRig(pm::io::loadRig(pm::lab::openRenderedScene(o.sceneDir, o.scenePeer).rigPath))
-                                              : pm::io::loadCameraRig(o.rigPath);
+    // A scene rendered elsewhere is a stereo rig's (or its left camera's); the rest take any rig.
+    const pm::core::CameraRig rig = o.scene() ? sceneRig(o) : pm::io::loadCameraRig(o.rigPath);
     if (pm::app::isImagePattern(o.leftImages)) // check both patterns before anything else
       pm::app::frameFileName(o.leftImages.front(), 0);
     if (pm::app::isImagePattern(o.rightImages))
       pm::app::frameFileName(o.rightImages.front(), 0);
-    Input in = o.scene() ? openScene(o, rig.stereo()) : o.recorded() ? openRecordedOrLive(o, rig) : openSimulated(o, rig);
+    Input in = o.scene() ? openScene(o, rig) : o.recorded() ? openRecordedOrLive(o, rig) : openSimulated(o, rig);
     pm::tracker::PhotoModelTracker tracker(rig, in.model, tp);
     tracker.initialize(); // no initial pose: a random population
     pm::io::StagedFiles files(o.out);

@@ -118,6 +118,8 @@ TEST(Apps, UsageErrorsExitTwo)
   EXPECT_EQ(runProgram("pm-make-model", "--out " + d.path() + " --background x.png").status, 2); // needs --photo
   EXPECT_EQ(runProgram("pm-render", "--out " + d.path() + " --pose 1,2,3").status, 2);
   EXPECT_EQ(runProgram("pm-make-model", "--out " + d.path() + " --distance-mm -5").status, 2);
+  EXPECT_EQ(runProgram("pm-track", "--out " + d.path() + " --scene-cameras 1").status, 2);                    // needs --scene
+  EXPECT_EQ(runProgram("pm-track", "--out " + d.path() + " --scene " + d.path() + " --scene-cameras 3").status, 2); // 1 or 2
 }
 
 TEST(Apps, MakeModelFromTheSimulator)
