@@ -223,6 +223,37 @@ TEST(PassCalibration, TheGuardShrinksTheShiftsUntilNoWrongTryComesNearTheThresho
   EXPECT_FALSE(none.measured);
 }
 
+TEST(PassCalibration, ANearMissIsHeldUnderItsCeilingAndAPlainlyWrongTryUnderTheLowerOne)
+{
+  // Right tries through a soft camera and one near miss (25 mm off) that reads a shade worse: the
+  // guard lets the shifts lift the near miss up to wrongCeiling (0.9), no higher. A plainly wrong try
+  // (50 mm off) reading the same is held under plainlyWrongCeiling (0.8): the shifts shrink further.
+  std::vector<pm::trust::PassTry> tries;
+  for (std::size_t k = 0; k < 30; ++k)
+    tries.push_back(tryOf(cues(1.4, 0.85, 0.97), 1.0, k % 10 + 1));
+  const ConfidenceCues nearMiss = cues(2.3, 0.85, 0.97);
+  tries.push_back(tryOf(nearMiss, 25.0, 3));
+  const pm::tracker::ConfidenceModel shipped = pm::tracker::ConfidenceModel::shipped(pm::tracker::ConfidenceKind::AllAround);
+  const pm::trust::CalibrationParams p;
+  ASSERT_LT(shipped.confidence(nearMiss), p.plainlyWrongCeiling); // the case: both ceilings above what the shipped confidence reads
+  const pm::core::TrustCalibration t = pm::trust::calibrateTrust(tries, shipped, p);
+  ASSERT_TRUE(t.measured);
+  EXPECT_GT(t.wrongMaxConfidence, p.plainlyWrongCeiling); // lifted past the lower ceiling ...
+  EXPECT_LE(t.wrongMaxConfidence, p.wrongCeiling + 1e-12); // ... not past its own
+  EXPECT_GT(t.rightTrusted, t.rightTrustedShipped);
+  // The same cues 50 mm off: plainly wrong, held at the lower ceiling, the shifts shrunk further.
+  tries.push_back(tryOf(nearMiss, 50.0, 4));
+  ASSERT_TRUE(tries.back().plainlyWrong());
+  const pm::core::TrustCalibration held = pm::trust::calibrateTrust(tries, shipped, p);
+  EXPECT_LE(held.wrongMaxConfidence, p.plainlyWrongCeiling + 1e-12);
+  EXPECT_LT(held.guard, t.guard);
+  EXPECT_EQ(held.wrongTrusted, 0);
+  // Ceilings out of order are refused.
+  pm::trust::CalibrationParams bad;
+  bad.plainlyWrongCeiling = 0.95;
+  EXPECT_THROW(bad.validate(), pm::core::Error);
+}
+
 TEST(PassCalibration, WhereWrongTriesReadRightThroughThisCameraEveryConfidenceIsLoweredUntilNoneIsTrusted)
 {
   // A camera through which wrong poses read as right ones (one camera on the head: its turned poses):
@@ -248,7 +279,7 @@ TEST(PassCalibration, WhereWrongTriesReadRightThroughThisCameraEveryConfidenceIs
   ASSERT_TRUE(t.measured);
   EXPECT_LT(t.confidenceOffset, 0);
   EXPECT_EQ(t.wrongTrusted, 0);
-  EXPECT_NEAR(t.wrongMaxConfidence, p.wrongCeiling, 1e-9);
+  EXPECT_NEAR(t.wrongMaxConfidence, p.plainlyWrongCeiling, 1e-9);
   EXPECT_LT(t.rightTrusted, t.rightTrustedShipped); // fewer right frames trusted: the price, said
   const pm::tracker::ConfidenceModel read = shipped.calibrated(t); // as the tracker reads a model of this kind
   for (const auto &x : tries) {

@@ -46,7 +46,7 @@ std::string TrustCache::keyOf(const core::CameraRig &rig, const std::vector<mode
   core::PhotoModel untrusted = model;
   untrusted.trust = core::TrustCalibration();
   // the calibration's and the tracker's parameters: the lab's defaults
-  return CacheKey("trust calibration 2: lab defaults, with the range (RangeBias.h)").rig(rig).pass(pass).text(io::photoModelToJson(untrusted)).hex();
+  return CacheKey("trust calibration 3: lab defaults, with the range (RangeBias.h), near misses held at 0.9").rig(rig).pass(pass).text(io::photoModelToJson(untrusted)).hex();
 }
 
 std::optional<LabTrust> TrustCache::find(const std::string &key) const

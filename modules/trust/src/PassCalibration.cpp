@@ -148,6 +148,7 @@ void CalibrationParams::validate() const
   check(tries.nearStarts >= 1 && tries.nearFrames >= 1 && tries.wrongFrames >= 1 && tries.searches >= 0 && tries.searchFrames >= 1,
         "at least one near start and one frame per try");
   check(wrongCeiling > 0 && wrongCeiling < 1, "the wrong tries' ceiling must lie in (0, 1)");
+  check(plainlyWrongCeiling > 0 && plainlyWrongCeiling <= wrongCeiling, "the plainly wrong tries' ceiling must lie in (0, the wrong tries']");
   check(maxLogitGain >= 0, "the shifts' largest gain must not be negative");
   check(sigmaShare > 0 && sigmaShare < 1, "the share within 1 sigma must lie in (0, 1)");
   check(rangeMaxCameras >= 0, "the range's largest rig must not be negative");
@@ -198,20 +199,25 @@ core::TrustCalibration calibrateTrust(const std::vector<PassTry> &tries, const t
   if (gain > p.maxLogitGain)
     for (double &w : want)
       w *= p.maxLogitGain / gain;
-  // 2. The guard: no wrong try over the ceiling (or over the shipped confidence's own highest).
+  // 2. The guard: no wrong try over its ceiling (or over the shipped confidence's own highest): a near
+  //    miss's, and the lower one of a plainly wrong try.
   const double ceiling = std::max(p.wrongCeiling, highest(shipped, wrongCues));
+  const double plainCeiling = std::max(p.plainlyWrongCeiling, highest(shipped, plainlyWrongCues));
+  const auto guarded = [&](const tracker::ConfidenceModel &m) {
+    return highest(m, wrongCues) <= ceiling && highest(m, plainlyWrongCues) <= plainCeiling;
+  };
   double a = 1;
-  while (a > 0 && highest(shifted(shipped, want, a), wrongCues) > ceiling)
+  while (a > 0 && !guarded(shifted(shipped, want, a)))
     a = std::max(0.0, a - 0.1);
   t.guard = a;
   tracker::ConfidenceModel m = shifted(shipped, want, a);
   // 3. No plainly wrong try trusted: where even the shipped confidence trusts one through this camera,
-  //    every confidence is lowered on its logit until the highest sits at the ceiling. (A near miss of
-  //    5-10 deg, a thin toy's roll, is the guard's business, as before.)
+  //    every confidence is lowered on its logit until the highest sits at the plainly wrong tries'
+  //    ceiling. (A near miss of 5-10 deg, a thin toy's roll, is the guard's business, as before.)
   const double worst = highest(m, plainlyWrongCues);
   if (worst >= m.threshold) {
     const auto logit = [](double q) { return std::log(q / (1 - q)); };
-    t.confidenceOffset = logit(p.wrongCeiling) - logit(std::min(worst, 1 - 1e-12));
+    t.confidenceOffset = logit(p.plainlyWrongCeiling) - logit(std::min(worst, 1 - 1e-12));
     m.bias += t.confidenceOffset;
   }
   for (std::size_t i = 0; i < want.size(); ++i)
