@@ -142,6 +142,19 @@ TEST(TrackingReport, FiguresAfterConvergenceAsComputedByHand)
   EXPECT_DOUBLE_EQ(r.meanEvaluations, 800);
   EXPECT_EQ(r.states.at("searching"), 10);
   EXPECT_EQ(r.states.at("tracking"), 50);
+  EXPECT_EQ(r.trustedFrames, 0);
+  EXPECT_DOUBLE_EQ(r.trustedMaxMm, 0); // none trusted: nothing acted on
+  {
+    // Trusted from frame 10 on: the worst of them 3 mm off (moving) and 3 deg off (frame 12), each its own maximum;
+    // the searching frames 100 mm off, untrusted, do not count.
+    std::vector<pm::lab::TrackedFrame> some = frames;
+    for (std::size_t k = 10; k < some.size(); ++k)
+      some[k].result.trusted = true;
+    const pm::lab::TrackingReport t = pm::lab::reportTracking(some, 30.0, pm::lab::table2Goals());
+    EXPECT_NEAR(t.trustedMaxMm, 3.0, 1e-9);
+    EXPECT_NEAR(t.trustedMaxDeg, 3.0, 1e-6);
+    EXPECT_EQ(t.wrongTrusted, 0);
+  }
 
   // A goal missed; and a run without truth converges on the tracker's state alone.
   std::array<double, 6> tight = pm::lab::table2Goals();

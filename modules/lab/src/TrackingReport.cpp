@@ -96,6 +96,10 @@ TrackingReport reportTracking(const std::vector<TrackedFrame> &frames, double fp
       r.rightTrusted += right && f.result.trusted;
       r.wrongFrames += wrong;
       r.wrongTrusted += wrong && f.result.trusted;
+      if (f.result.trusted) {
+        r.trustedMaxMm = std::max(r.trustedMaxMm, mm);
+        r.trustedMaxDeg = std::max(r.trustedMaxDeg, deg);
+      }
     }
   }
   // The reported 1-sigma against the true errors, along and about the hand's axes.
@@ -225,6 +229,8 @@ std::string trackingSummaryJson(const TrackingReport &report, const TrackingRunI
                                            {"over", "estimates within 5 mm and 2 deg of the truth"}}},
                          {"wrong_frames", {{"n", report.wrongFrames}, {"trusted", report.wrongTrusted},
                                            {"over", "estimates more than 20 mm or 5 deg from the truth"}}},
+                         {"trusted_error_max", {{"mm", report.trustedMaxMm}, {"deg", report.trustedMaxDeg},
+                                                {"over", "the trusted frames, each its own maximum"}}},
                          {"within_sigma", {{"share", report.withinSigma}, {"frames", report.sigmaFrames},
                                            {"axes", "along the hand's x, y, z, about them; tracked frames after convergence"}}},
                          {"mean_frame_ms", report.meanMs},
@@ -263,6 +269,8 @@ std::string trackingSummaryText(const TrackingReport &report, const TrackingRunI
     out << std::setprecision(1) << "  right estimates (within 5 mm and 2 deg) " << report.rightFrames << ", trusted "
         << report.rightTrusted << " (" << 100.0 * static_cast<double>(report.rightTrusted) / static_cast<double>(std::max(1L, report.rightFrames))
         << " %); wrong (over 20 mm or 5 deg) " << report.wrongFrames << ", trusted " << report.wrongTrusted << "\n";
+    if (report.trustedFrames > 0)
+      out << "  the trusted frames at most " << report.trustedMaxMm << " mm and " << report.trustedMaxDeg << " deg from the truth\n";
     if (report.sigmaFrames > 0) {
       out << std::setprecision(0) << "  true errors within 1 sigma (x, y, z, about x, y, z):";
       for (double w : report.withinSigma)
