@@ -66,10 +66,11 @@ struct TrackingReport
   long wrongFrames = 0;       //!< frames whose estimate is over 20 mm or 5 deg off
   long wrongTrusted = 0;      //!< ... of them trusted (a robot would have acted on them)
   /*!
-    The trusted frames' largest errors against the truth, each its own maximum (mm, deg; 0 with none
-    trusted): how close a frame the arm would have acted on came to a wrong one (20 mm or 5 deg).
+    The trusted frames' largest position error against the truth (mm; 0 with none trusted): how close a
+    frame the arm would have acted on came to a wrong one (20 mm or 5 deg).
   */
-  double trustedMaxMm = 0, trustedMaxDeg = 0;
+  double trustedMaxMm = 0;
+  double trustedMaxDeg = 0; //!< ... and their largest rotation error (deg), each its own maximum
   /*!
     The share of the true errors within the reported 1-sigma, per axis (along the hand's x, y, z, about
     them), over the tracked frames after convergence with a known uncertainty; sigmaFrames of them.
