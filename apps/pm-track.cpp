@@ -11,7 +11,6 @@
 
 #include <visp3/core/vpThetaUVector.h>
 
-
 #include "pm/app/App.h"
 #include "pm/app/Options.h"
 #include "pm/report/Overlay.h"

@@ -72,8 +72,9 @@ struct CalibrationParams
   /*!
     No wrong try's calibrated confidence over this (or the shipped one's highest, if higher): the
     near misses (20-40 mm or 5-10 deg off) held this far under the threshold (0.95). At 0.8 (before
-    issue 58's third stop) a near miss of the pass at 0.82 under the shipped confidence kept every
-    shift off, and the second renderer's crab was trusted on 45 % of its right frames (88 % at 0.9).
+    issue 58's third stop) a near miss of the pass at 0.82 under the shipped confidence kept 30 % of
+    the shifts off, and the second renderer's crab was trusted on 45 % of its right frames (77 % at 0.9;
+    docs/trust.md, "The near misses' ceiling").
   */
   double wrongCeiling = 0.9;
   double plainlyWrongCeiling = 0.8; //!< no plainly wrong try's (over 40 mm or 10 deg) over this (or the shipped one's highest); <= wrongCeiling
