@@ -71,7 +71,7 @@ inline void shadeTexel(const Texture &tex, float s, float t, float diff, float s
 }
 
 //! A span shorter than this (a small triangle's) is shaded one sample at a time: faster than a masked chunk.
-constexpr std::size_t kMinAvx2Span = 8;
+constexpr std::size_t kMinAvx2Span = 4;
 
 #if PM_RASTER_AVX2
 /*!
@@ -180,7 +180,8 @@ __attribute__((target("avx2"))) inline std::size_t shadeSpanAvx2(const float *v0
   resolve() of one pixel row with supersampling 2, two pixels at a time (AVX2): the same float
   operations in the same order as the 4-channel loop (the samples of a pixel added row by row, left
   to right), so the same bytes. \e c0, \e c1: the colour of the row's two sample rows; \e id0,
-  \e id1: their ids; \e noise: (R, G, B, 0) per pixel. Returns the number of pixels done (even).
+  \e id1: their ids; \e noise: (R, G, B) per pixel, readable one float past the last pixel (what
+  lies there goes to the alpha channel, set to 255). Returns the number of pixels done (even).
 */
 __attribute__((target("avx2"))) inline unsigned resolveRowSs2Avx2(const float *c0, const float *c1, const std::uint8_t *id0,
                                                             const std::uint8_t *id1, const float *clear4,
@@ -211,7 +212,8 @@ __attribute__((target("avx2"))) inline unsigned resolveRowSs2Avx2(const float *c
     row(c0, id0, u, P0, Q0);
     row(c1, id1, u, P1, Q1);
     const __m256 acc = _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(P0, Q0), P1), Q1);
-    __m256 x = _mm256_add_ps(_mm256_mul_ps(acc, vnorm), _mm256_mul_ps(vsigma, _mm256_loadu_ps(noise + 4 * u)));
+    const __m256 g = _mm256_loadu2_m128(noise + 3 * u + 3, noise + 3 * u); // (R, G, B, next R) of each pixel
+    __m256 x = _mm256_add_ps(_mm256_mul_ps(acc, vnorm), _mm256_mul_ps(vsigma, g));
     x = _mm256_add_ps(_mm256_min_ps(_mm256_max_ps(x, zero), top), half);
     const __m256i q = _mm256_cvttps_epi32(x);
     const __m128i w16 = _mm_packus_epi32(_mm256_castsi256_si128(q), _mm256_extracti128_si256(q, 1));

@@ -470,13 +470,15 @@ void Rasterizer::resolveRows(vpImage<vpRGBa> &out, unsigned vBegin, unsigned vEn
 {
   const float norm = static_cast<float>(255.0 * exposure / (m_ss * m_ss));
   const float sigma = static_cast<float>(noiseSigma);
-  m_noise.assign(4 * static_cast<std::size_t>(m_w), 0.f); // (R, G, B, 0) per pixel
+  // (R, G, B) per pixel, and one more float: a pixel's noise is read as 4 floats (the fourth, the
+  // next pixel's R, goes to the alpha channel, which is set to 255 whatever it holds).
+  m_noise.assign(3 * static_cast<std::size_t>(m_w) + 1, 0.f);
   [[maybe_unused]] const bool useAvx2 = m_ss == 2 && m_simd && simdAvailable();
   for (unsigned v = vBegin; v < vEnd; ++v) {
     vpRGBa *dst = out[v];
     const std::size_t row0 = static_cast<std::size_t>(v) * m_ss * m_W;
     if (noiseSigma > 0)
-      fastGaussian3Run(noiseSeed, static_cast<std::uint64_t>(v) * m_w, m_w, m_noise.data(), 4);
+      fastGaussian3Run(noiseSeed, static_cast<std::uint64_t>(v) * m_w, m_w, m_noise.data(), 3);
     unsigned u = 0;
 #if PM_RASTER_AVX2
     if (useAvx2)
@@ -487,7 +489,7 @@ void Rasterizer::resolveRows(vpImage<vpRGBa> &out, unsigned vBegin, unsigned vEn
     for (; u < m_w; ++u) {
       // The box filter of the pixel's samples (the clear colour where nothing was drawn), the
       // exposure, the noise, clamped and rounded half up, in single precision.
-      const float *g = &m_noise[4 * static_cast<std::size_t>(u)];
+      const float *g = &m_noise[3 * static_cast<std::size_t>(u)];
       unsigned char c[3];
 #if defined(__SSE2__)
       // The same float operations as the scalar lines below, four channels at once.
