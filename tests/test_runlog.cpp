@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "pm/robot/Pa10Model.h"
 #include "pm/lab/RunLog.h"
+#include "pm/lab/RunSummary.h"
+
+#include <nlohmann/json.hpp>
 
 namespace {
 
@@ -134,6 +138,34 @@ TEST(RunLog, NeverConvergedMeansTheWholeRun)
   log.finish();
   EXPECT_FALSE(log.converged());
   EXPECT_EQ(log.atRest().frames + log.moving().frames, run.size());
+  // The tracker's estimate is measured from convergence on: none here, and the summary says so
+  // rather than print an error of 0.00 mm, which would read as perfect.
+  EXPECT_EQ(log.estimate().frames, 0u);
+  const std::string text = pm::lab::runSummaryText(log, pm::lab::RunInfo());
+  EXPECT_NE(text.find("the tracker's estimate: not measured"), std::string::npos) << text;
+  EXPECT_EQ(text.find("the tracker's estimate: rms"), std::string::npos) << text;
+  EXPECT_EQ(nlohmann::json::parse(pm::lab::runSummaryJson(log, pm::lab::RunInfo()))["estimate_error"]["frames"], 0);
+}
+
+TEST(RunLog, AConvergedRunSummarisesItsEstimate)
+{
+  const pm::robot::Pa10Model robot;
+  std::vector<LoopFrame> run = syntheticRun(300, 30, 7);
+  for (LoopFrame &f : run) {
+    f.track.state = pm::tracker::TrackState::Tracking;
+    f.estimateErrorMm = 0.5;
+    f.estimateErrorDeg = 0.25;
+  }
+  pm::lab::RunLog log(300, 30, robot);
+  for (const auto &f : run)
+    log.add(f);
+  log.finish();
+  ASSERT_TRUE(log.converged());
+  const std::string text = pm::lab::runSummaryText(log, pm::lab::RunInfo());
+  EXPECT_NE(text.find("the tracker's estimate: rms 0.50 mm and 0.25 deg, max 0.50 mm and 0.25 deg"), std::string::npos) << text;
+  const nlohmann::json j = nlohmann::json::parse(pm::lab::runSummaryJson(log, pm::lab::RunInfo()));
+  EXPECT_GT(j["estimate_error"]["frames"].get<long>(), 0);
+  EXPECT_LT(j["estimate_error"]["frames"].get<long>(), 300); // from convergence on, not the settling frames
 }
 
 TEST(RunLog, SamplesStayBoundedAndKeepThePeaks)

@@ -22,6 +22,17 @@ nlohmann::json nearestJson(const RunLog &log)
           {"estimate_max_deg", e.maxDeg},
           {"over", "the tracked frames whose target stood within 10 mm of the nearest distance (the true pose's z)"}};
 }
+
+//! The tracker's own estimate against the truth, or why there is none (0.00 mm would read as perfect).
+std::string estimateText(const ErrorStats &e)
+{
+  if (e.frames == 0)
+    return "not measured (it is measured over the tracked frames from the loop's convergence on, and the loop never converged)";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << "rms " << e.rmsMm() << " mm and " << e.rmsDeg() << " deg, max " << e.maxMm << " mm and "
+      << e.maxDeg << " deg";
+  return out.str();
+}
 } // namespace
 
 std::string runSummaryJson(const RunLog &log, const RunInfo &info)
@@ -56,7 +67,8 @@ std::string runSummaryJson(const RunLog &log, const RunInfo &info)
       {"wrong_pose", "the pose the servo used (the filtered estimate) more than 20 mm or 5 deg from the truth; "
                      "raw estimate: the tracker's own, before the filter"},
       {"estimate_error", {{"rms_mm", log.estimate().rmsMm()}, {"max_mm", log.estimate().maxMm}, {"rms_deg", log.estimate().rmsDeg()},
-                          {"max_deg", log.estimate().maxDeg}, {"over", "the tracker's own estimate, tracked frames from convergence on"}}},
+                          {"max_deg", log.estimate().maxDeg}, {"frames", log.estimate().frames},
+                          {"over", "the tracker's own estimate, tracked frames from convergence on (none when frames is 0: the loop never converged)"}}},
       {"nearest", nearestJson(log)},
       {"frames_precise", log.framesPrecise()},
       {"visible_share", {{"min", log.minVisibleShare()}, {"frames_partly_hidden", log.framesPartlyHidden()},
@@ -94,8 +106,7 @@ std::string runSummaryText(const RunLog &log, const RunInfo &info)
       << " deg, max " << rest.maxDeg << " deg\n"
       << "  while moving: rms " << moving.rmsMm() << " mm, max " << moving.maxMm << " mm; rotation rms " << moving.rmsDeg()
       << " deg, max " << moving.maxDeg << " deg\n"
-      << "  the tracker's estimate: rms " << log.estimate().rmsMm() << " mm and " << log.estimate().rmsDeg() << " deg, max "
-      << log.estimate().maxMm << " mm and " << log.estimate().maxDeg << " deg; the precise stage gave " << log.framesPrecise() << " of "
+      << "  the tracker's estimate: " << estimateText(log.estimate()) << "; the precise stage gave " << log.framesPrecise() << " of "
       << log.frames() << " frames\n"
       << "  joint limit violations " << info.jointLimitViolations << ", tracker " << log.meanComputeMs() << " ms per frame\n"
       << "  servoed on " << log.framesServoed() << " frames ("
