@@ -7,6 +7,8 @@
 namespace pm::sim {
 
 namespace {
+constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL; //!< the step between consecutive draws' hash inputs
+
 inline double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 } // namespace
 
@@ -64,12 +66,10 @@ void fastGaussian3(std::uint64_t seed, std::uint64_t index, float out[3])
 {
   const GaussianTable &table = gaussianTable();
   for (std::uint64_t k = 0; k < 3; ++k)
-    out[k] = table.v[hash64(seed + (3 * index + k) * 0x9e3779b97f4a7c15ULL) & 0xffff];
+    out[k] = table.v[hash64(seed + (3 * index + k) * kGolden) & 0xffff];
 }
 
 namespace {
-constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL; //!< the step between consecutive draws' hash inputs
-
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define PM_NOISE_AVX512 1
 /*!
