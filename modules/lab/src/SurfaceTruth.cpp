@@ -113,13 +113,16 @@ SurfaceTruth checkSurface(const sim::Scene &scene, const model::AllAroundBuild &
         continue;
       nu /= nn, nv /= nn;
       double best = 1e9;
+      // Each step's far end is the next step's near end (s + 0.02 is the next s, to the bit): read once.
+      double a1 = cov(u - 8 * nu, vv - 8 * nv);
       for (double s = -8; s <= 8; s += 0.02) {
-        const double a1 = cov(u + s * nu, vv + s * nv), a2 = cov(u + (s + 0.02) * nu, vv + (s + 0.02) * nv);
+        const double a2 = cov(u + (s + 0.02) * nu, vv + (s + 0.02) * nv);
         if (a1 >= 0.5 && a2 < 0.5) {
           const double at = s + 0.02 * (a1 - 0.5) / (a1 - a2);
           if (std::fabs(at) < std::fabs(best))
             best = at;
         }
+        a1 = a2;
       }
       OutlineCheck &o = t.outlines[band];
       ++o.points;
