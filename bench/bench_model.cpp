@@ -66,7 +66,7 @@ void Model_Viewpoint(benchmark::State &state)
   pm::model::ViewpointScratch scratch;
   std::size_t contour = 0;
   for (auto _ : state) {
-    const pm::core::ModelView v = pm::model::sampleViewpoint(view, surface, mesh.vertices, mesh, 120.f, params, scratch);
+    const pm::core::ModelView v = pm::model::sampleViewpoint(view, surface, mesh, 120.f, params, scratch);
     contour = v.contour.size();
     benchmark::DoNotOptimize(v.inner.data());
   }

@@ -15,6 +15,8 @@
 #include "pm/io/PhotoModelFile.h"
 #include "pm/io/RigFile.h"
 #include "pm/lab/LabModel.h"
+#include "pm/model/AllAroundModelBuilder.h"
+#include "pm/model/AllAroundParams.h"
 #include "pm/model/HullMesh.h"
 #include "pm/model/OutlineRefinement.h"
 #include "pm/model/ViewpointModel.h"
@@ -561,6 +563,63 @@ TEST(HullMesh, SurfaceNetsOfASphereLieOnItAndItsOutlineIsACircle)
             << std::acos(worstCos) * 180 / M_PI << " deg of radial\n";
   EXPECT_LT(worstPx, 0.3);
   EXPECT_GT(worstCos, std::cos(vpMath::rad(10)));
+}
+
+namespace {
+
+//! \e mesh's vertices as surface points of hue \e hue seen by a view (their normals the mesh's).
+std::vector<pm::model::SurfacePoint> surfaceOf(const pm::model::HullMesh &mesh, float hue)
+{
+  std::vector<pm::model::SurfacePoint> surface(mesh.vertices.size());
+  for (std::size_t i = 0; i < surface.size(); ++i) {
+    pm::model::SurfacePoint &s = surface[i];
+    s.x = static_cast<float>(mesh.vertices[i][0]), s.y = static_cast<float>(mesh.vertices[i][1]), s.z = static_cast<float>(mesh.vertices[i][2]);
+    s.nx = static_cast<float>(mesh.normals[i][0]), s.ny = static_cast<float>(mesh.normals[i][1]), s.nz = static_cast<float>(mesh.normals[i][2]);
+    s.hue = hue, s.r = 200, s.g = 100, s.b = 50, s.nSeen = 2, s.hasHue = true, s.highlight = false;
+  }
+  return surface;
+}
+
+} // namespace
+
+TEST(Viewpoint, OfPointsThatProjectToOnePlaceSInKeepsTheFirstInTheSurfacesOrder)
+{
+  // Every vertex twice, the copies (another hue) after all the originals: in each cell of S_in's grid
+  // the point nearest the cell's centre is a tie between a vertex and its copy. The model must not
+  // depend on the order a sort leaves equal keys in: S_in holds the originals only.
+  pm::model::HullMesh mesh = sphereMesh(30);
+  std::vector<pm::model::SurfacePoint> surface = surfaceOf(mesh, 100.f);
+  const std::size_t n = mesh.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    mesh.vertices.push_back(mesh.vertices[i]);
+    mesh.normals.push_back(mesh.normals[i]);
+    surface.push_back(surface[i]);
+    surface.back().hue = 280.f;
+  }
+  const vpCameraParameters cam(754, 754, 320, 240);
+  const pm::core::PinholeCamera::Projection pin = pm::core::PinholeCamera::Projection::lookingAtOrigin({40, -30, -500}, cam, 640, 480);
+  const pm::model::AllAroundParams params;
+  pm::model::ViewpointScratch scratch;
+  const pm::core::ModelView view = pm::model::sampleViewpoint(pin, surface, mesh, 0.f, params, scratch);
+  ASSERT_GE(view.inner.size(), static_cast<std::size_t>(params.viewpoints.nIn) / 2);
+  std::size_t copies = 0;
+  for (const pm::core::ModelPoint &q : view.inner)
+    copies += q.hue != 100.f;
+  EXPECT_EQ(copies, 0u) << "of " << view.inner.size() << " S_in points";
+  EXPECT_GE(view.contour.size(), static_cast<std::size_t>(params.viewpoints.nContour) * 3 / 4);
+  EXPECT_GT(view.outer.size(), 0u);
+}
+
+TEST(Viewpoint, ASurfaceThatIsNotTheMeshsVerticesIsRefused)
+{
+  const pm::model::HullMesh mesh = sphereMesh(20);
+  std::vector<pm::model::SurfacePoint> surface = surfaceOf(mesh, 100.f);
+  surface.pop_back();
+  const vpCameraParameters cam(754, 754, 320, 240);
+  const pm::core::PinholeCamera::Projection pin = pm::core::PinholeCamera::Projection::lookingAtOrigin({0, 0, -500}, cam, 640, 480);
+  pm::model::ViewpointScratch scratch;
+  const std::string e = pm::test::errorOf([&] { pm::model::sampleViewpoint(pin, surface, mesh, 0.f, pm::model::AllAroundParams(), scratch); });
+  EXPECT_NE(e.find("vertices"), std::string::npos) << e;
 }
 
 TEST(OutlineRefinement, ASphereMeshedTooSmallGrowsOntoTheViewsOutlinesAndOnAViewBetweenThem)

@@ -216,10 +216,10 @@ void exampleSurfaceFusionFile(const pm::core::StereoRig &idealRig, const std::ve
 
 // ViewpointModel.h
 void exampleViewpointModel(const pm::core::PinholeCamera::Projection &cam, const std::vector<pm::model::SurfacePoint> &surface,
-                           const std::vector<pm::model::hull::Vec3> &points, const pm::model::HullMesh &mesh, float bgHue, const pm::model::AllAroundParams &params)
+                           const pm::model::HullMesh &mesh, float bgHue, const pm::model::AllAroundParams &params)
 {
   pm::model::ViewpointScratch scratch; // kept from one viewpoint to the next
-  const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, bgHue, params, scratch);
+  const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, mesh, bgHue, params, scratch);
 }
 
 // VisualHull.h

@@ -362,7 +362,6 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
                       const HullMesh &mesh, float bgHue, const AllAroundParams &p,
                       ViewpointScratch &scratch, AllAroundBuild &out)
 {
-  const std::vector<Vec3> &mpts = mesh.vertices;
   const vpCameraParameters &ci = rig.left.cam;
   core::PhotoModel &M = out.model;
   M.distanceMm = D;
@@ -384,7 +383,7 @@ void sampleViewpoints(const core::StereoRig &rig, const std::vector<Vec3> &dirs,
       ViewpointScratch &own = std::this_thread::get_id() == caller ? scratch : helperScratch;
       const Vec3 C = hull::scaled(dirs[vi], D);
       const core::PinholeCamera::Projection cam = core::PinholeCamera::Projection::lookingAtOrigin(C, ci, rig.left.width, rig.left.height);
-      sampled[vi] = sampleViewpoint(cam, out.surface, mpts, mesh, bgHue, p, own);
+      sampled[vi] = sampleViewpoint(cam, out.surface, mesh, bgHue, p, own);
     } catch (...) {
       failed[vi] = std::current_exception();
     }

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "pm/core/Error.h"
 #include "pm/model/AllAroundModelBuilder.h"
 
 namespace pm::model {
@@ -108,25 +109,23 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
     return out;
   // The outline's normal from the coverage, blurred: a contour edge of the mesh zigzags across its
   // triangles, its own perpendicular is not the outline's.
-  // Blurred only over the coverage's box and the kernel's reach around it: beyond that the image is
-  // background, so the blur's border (a reflection) reads the background the whole image holds there.
+  // Blurred only over the coverage's box and the kernel's reach around it, and kept there: beyond
+  // it the image is background, 0 blurred or not, and the box's margin of 0s wider than the
+  // kernel's half makes its border (a reflection) read what the whole image holds there.
   cv::Mat &cover = scratch.cover;
   const cv::Mat maskMat(cam.h, cam.w, CV_8U, const_cast<unsigned char *>(mask));
-  cover.create(cam.h, cam.w, CV_32F);
-  cover.setTo(0.f);
   constexpr double kSigma = 1.5;
   const int reach = static_cast<int>(std::ceil(4 * kSigma)) + 1; // OpenCV's kernel for a float image: 4 sigma a side
   const cv::Rect box = roiAround(maskMat, reach);
   if (box.area() > 0) {
-    cv::Mat part = cover(box);
-    cv::Mat(maskMat(box) != 0).convertTo(part, CV_32F, 1.0 / 255.0); // 1 on the coverage, 0 off it
-    cv::GaussianBlur(part, part, cv::Size(0, 0), kSigma);
+    cv::Mat(maskMat(box) != 0).convertTo(cover, CV_32F, 1.0 / 255.0); // 1 on the coverage, 0 off it
+    cv::GaussianBlur(cover, cover, cv::Size(0, 0), kSigma);
   }
+  auto coverPx = [&](int x, int y) { return box.contains({x, y}) ? cover.at<float>(y - box.y, x - box.x) : 0.f; };
   auto coverAt = [&](double u, double v) {
     const int x = std::clamp(static_cast<int>(std::floor(u)), 0, cam.w - 2), y = std::clamp(static_cast<int>(std::floor(v)), 0, cam.h - 2);
     const double fu = std::clamp(u - x, 0.0, 1.0), fv = std::clamp(v - y, 0.0, 1.0);
-    return (1 - fv) * ((1 - fu) * cover.at<float>(y, x) + fu * cover.at<float>(y, x + 1)) +
-           fv * ((1 - fu) * cover.at<float>(y + 1, x) + fu * cover.at<float>(y + 1, x + 1));
+    return (1 - fv) * ((1 - fu) * coverPx(x, y) + fu * coverPx(x + 1, y)) + fv * ((1 - fu) * coverPx(x, y + 1) + fu * coverPx(x + 1, y + 1));
   };
   const double step = total / n;
   double next = 0.5 * step, walked = 0;
@@ -173,10 +172,12 @@ namespace {
 void coverageMask(const core::PinholeCamera::Projection &cam, const std::vector<float> &zbuf, cv::Mat &mask)
 {
   mask.create(cam.h, cam.w, CV_8U);
-  for (int y = 0; y < cam.h; ++y)
+  for (int y = 0; y < cam.h; ++y) {
+    const float *z = zbuf.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w);
+    unsigned char *m = mask.ptr<unsigned char>(y);
     for (int x = 0; x < cam.w; ++x)
-      mask.at<unsigned char>(y, x) =
-          std::isfinite(zbuf[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)]) ? 255 : 0;
+      m[x] = z[x] < std::numeric_limits<float>::infinity() ? 255 : 0; // finite: the depth map holds +inf or a depth, never NaN
+  }
 }
 
 /*!
@@ -184,8 +185,8 @@ void coverageMask(const core::PinholeCamera::Projection &cam, const std::vector<
   mixes target and background), one per cell of a grid over the image, thinned evenly to nIn.
 */
 std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface,
-                                          const std::vector<Vec3> &mpts, const AllAroundParams &p,
-                                          const cv::Mat &mask, const std::vector<float> &zbuf, cv::Mat &inside)
+                                          const std::vector<Vec3> &mpts, const std::vector<HullMesh::Projected> &projected,
+                                          const AllAroundParams &p, const cv::Mat &mask, const std::vector<float> &zbuf, cv::Mat &inside)
 {
   // The distance to the background only over the hull's box and a pixel of background around it:
   // the background nearest a pixel in the box is never farther than its projection on the box's
@@ -196,20 +197,23 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
   auto insidePx = [&](int x, int y) { return box.contains({x, y}) ? inside.at<float>(y - box.y, x - box.x) : 0.f; };
   const double area = box.area() > 0 ? cv::countNonZero(mask(box)) : 0;
   const double step = std::max(1.0, std::sqrt(area / p.viewpoints.nIn));
+  // One point a cell of a step x step grid over the image: the nearest to the cell's centre, of
+  // equal distances (points that project to the same place) the first in the surface's order. A
+  // kept point's pixel lies in the image, so its u in [-0.5, w - 0.5): its cell from -1 on.
   struct Pick
   {
-    long key;
-    double d2;
-    std::size_t i;
-    float u, v;
+    double d2 = 0;
+    std::size_t i = 0;
+    float u = 0, v = 0;
+    bool taken = false;
   };
-  std::vector<Pick> picks;
+  const long cols = static_cast<long>(std::floor((cam.w - 0.5) / step)) + 2, rows = static_cast<long>(std::floor((cam.h - 0.5) / step)) + 2;
+  std::vector<Pick> cells(static_cast<std::size_t>(cols * rows));
   for (std::size_t i = 0; i < mpts.size(); ++i) {
-    if (!surface[i].hasHue)
+    const HullMesh::Projected &q = projected[i]; // as the depth map projected it
+    if (!surface[i].hasHue || !q.ok)
       continue;
-    double u, v, z;
-    if (!cam.project(mpts[i], u, v, z))
-      continue;
+    const double u = q.u, v = q.v, z = q.z;
     const int ui = static_cast<int>(std::lround(u)), vv = static_cast<int>(std::lround(v));
     if (ui < 0 || vv < 0 || ui >= cam.w || vv >= cam.h)
       continue;
@@ -221,18 +225,17 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
       continue;
     const long cx = static_cast<long>(std::floor(u / step)), cy = static_cast<long>(std::floor(v / step));
     const double ddx = u - (static_cast<double>(cx) + 0.5) * step, ddy = v - (static_cast<double>(cy) + 0.5) * step;
-    picks.push_back({cy * 100000 + cx, ddx * ddx + ddy * ddy, i, static_cast<float>(u), static_cast<float>(v)});
+    const double d2 = ddx * ddx + ddy * ddy;
+    Pick &c = cells[static_cast<std::size_t>((cy + 1) * cols + (cx + 1))];
+    if (!c.taken || d2 < c.d2)
+      c = {d2, i, static_cast<float>(u), static_cast<float>(v), true};
   }
-  // Equal distances tie (seen: points that project to the same place); std::sort leaves their order
-  // to its implementation, and the model keeps the first.
-  std::sort(picks.begin(), picks.end(), [](const Pick &a, const Pick &b) { return a.key != b.key ? a.key < b.key : a.d2 < b.d2; });
-  std::vector<core::ModelPoint> inner;
-  for (std::size_t j = 0; j < picks.size(); ++j) {
-    if (j > 0 && picks[j].key == picks[j - 1].key)
-      continue;
-    const SurfacePoint &s = surface[picks[j].i];
-    inner.push_back({s.x, s.y, s.z, s.hue, picks[j].u, picks[j].v, s.r, s.g, s.b});
-  }
+  std::vector<core::ModelPoint> inner; // the cells row by row
+  for (const Pick &c : cells)
+    if (c.taken) {
+      const SurfacePoint &s = surface[c.i];
+      inner.push_back({s.x, s.y, s.z, s.hue, c.u, c.v, s.r, s.g, s.b});
+    }
   const std::size_t n = static_cast<std::size_t>(p.viewpoints.nIn);
   if (inner.size() <= n)
     return inner;
@@ -252,7 +255,11 @@ std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection 
 {
   std::vector<core::ModelPoint> outer;
   std::vector<std::vector<cv::Point>> contours;
-  cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+  // Over the coverage's box and a pixel around it (findContours takes an image's border for 0s): the
+  // same contours, in the same order, as over the whole image.
+  const cv::Rect box = roiAround(mask, 1);
+  if (box.area() > 0)
+    cv::findContours(mask(box), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE, box.tl());
   double total = 0;
   for (const auto &c : contours)
     total += static_cast<double>(c.size());
@@ -301,10 +308,12 @@ std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection 
 
 } // namespace
 
-core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<Vec3> &mpts,
-                                const HullMesh &mesh, float bgHue, const AllAroundParams &p,
-                                ViewpointScratch &scratch)
+core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const HullMesh &mesh,
+                                float bgHue, const AllAroundParams &p, ViewpointScratch &scratch)
 {
+  if (surface.size() != mesh.vertices.size())
+    throw core::Error("all-around model: a viewpoint's surface holds " + std::to_string(surface.size()) + " points, its mesh " +
+                      std::to_string(mesh.vertices.size()) + " vertices (one point a vertex)");
   std::vector<float> &zbuf = scratch.zbuf;
   mesh.depthMap(cam, zbuf, scratch.vertices); // the hull's exact coverage and depth
   cv::Mat &mask = scratch.mask;
@@ -312,7 +321,7 @@ core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, cons
   core::ModelView view;
   for (int k = 0; k < 3; ++k)
     view.cameraMm[k] = cam.centre[static_cast<std::size_t>(k)];
-  view.inner = sampleInner(cam, surface, mpts, p, mask, zbuf, scratch.inside);
+  view.inner = sampleInner(cam, surface, mesh.vertices, scratch.vertices, p, mask, zbuf, scratch.inside);
   // The outline: the mesh's contour edges on the silhouette's boundary.
   view.contour = meshOutline(cam, mesh, mask.ptr<unsigned char>(), p.viewpoints.nContour, scratch);
   view.outer = sampleOuter(cam, bgHue, p, mask, zbuf);

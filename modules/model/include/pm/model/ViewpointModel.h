@@ -15,7 +15,7 @@
 
   \code
       pm::model::ViewpointScratch scratch; // kept from one viewpoint to the next
-      const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, points, mesh, bgHue, params, scratch);
+      const pm::core::ModelView v = pm::model::sampleViewpoint(cam, surface, mesh, bgHue, params, scratch);
   \endcode
 */
 #include <cstdint>
@@ -49,19 +49,19 @@ struct ViewpointScratch
   std::vector<unsigned char> facing;         //!< per face: turned toward the camera
   cv::Mat mask;                              //!< the coverage (meshOutline)
   cv::Mat inside;                            //!< its distance inside (meshOutline)
-  cv::Mat cover;                             //!< its blur (meshOutline)
+  cv::Mat cover;                             //!< its blur over the coverage's box (meshOutline)
 };
 
 /*!
   The viewpoint of camera \e cam (in the model frame; core::PinholeCamera::Projection::lookingAtOrigin) of a model whose
-  surface is \e surface (model frame) and \e mesh (the same surface as triangles, model frame), its
-  surface points also given as \e pts: S_in, S_out and the outline (see ViewpointModel.h); \e scratch holds the buffers
-  (its zbuf then the hull's depth seen by \e cam). S_out points carry \e bgHue. The view's cameraMm
-  is the camera's centre.
+  surface is \e mesh (triangles, model frame) and \e surface (its vertices' colours and normals, one a
+  vertex, in the same order): S_in, S_out and the outline (see ViewpointModel.h); \e scratch holds the
+  buffers (its zbuf then the hull's depth seen by \e cam, its vertices the mesh's projected, which S_in
+  reads). S_out points carry \e bgHue. The view's cameraMm is the camera's centre. Throws
+  pm::core::Error when \e surface and the mesh's vertices differ in number.
 */
-core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const std::vector<hull::Vec3> &pts,
-                          const HullMesh &mesh, float bgHue, const AllAroundParams &p,
-                          ViewpointScratch &scratch);
+core::ModelView sampleViewpoint(const core::PinholeCamera::Projection &cam, const std::vector<SurfacePoint> &surface, const HullMesh &mesh,
+                                float bgHue, const AllAroundParams &p, ViewpointScratch &scratch);
 
 /*!
   The outline of \e mesh seen by \e cam (see ViewpointModel.h): \e n points evenly along the contour
