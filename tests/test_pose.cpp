@@ -1,7 +1,10 @@
 // Pose parameter phi <-> hMo (Eq. 7 of the paper).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <iomanip>
 #include <random>
+#include <vector>
 
 #include <visp3/core/vpQuaternionVector.h>
 #include <visp3/core/vpRotationMatrix.h>
@@ -10,6 +13,7 @@
 #include "pm/core/Error.h"
 #include "pm/core/Pose.h"
 #include "pm/core/Quaternion.h"
+#include "pm/core/Rounding.h"
 
 namespace {
 
@@ -194,4 +198,24 @@ TEST(Quaternion, ItsProductAngleAndRotationVectorAreViSPsMatrixProductAndThetaU)
   double v[3] = {1, 1, 1};
   pm::core::Quaternion().rotationVector(v);
   EXPECT_EQ(v[0] * v[0] + v[1] * v[1] + v[2] * v[2], 0.0);
+}
+
+TEST(Rounding, RoundHalfAwayIsStdLroundToTheBit)
+{
+  // The halves and their neighbours one bit away (where x + 0.5 as a shortcut goes wrong), whole
+  // numbers, and a million values spread over 24 orders of magnitude of either sign.
+  std::vector<double> xs{0.0, -0.0, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.49999999999999994,
+                         4503599627370495.5, -4503599627370495.5, 4503599627370497.0, 9.2e18, -9.2e18};
+  for (double h = 0.5; h < 1e6; h += 1.0)
+    for (double x : {h, -h})
+      xs.insert(xs.end(), {x, std::nextafter(x, 0.0), std::nextafter(x, 2 * x)});
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> exponent(-6.0, 18.0), unit(-1.0, 1.0);
+  for (int i = 0; i < 1000000; ++i)
+    xs.push_back(unit(rng) * std::pow(10.0, exponent(rng)));
+  std::size_t wrong = 0;
+  for (double x : xs)
+    if (pm::core::roundHalfAway(x) != std::lround(x) && ++wrong <= 5)
+      ADD_FAILURE() << std::setprecision(17) << x << ": " << pm::core::roundHalfAway(x) << ", std::lround " << std::lround(x);
+  EXPECT_EQ(wrong, 0u) << "of " << xs.size();
 }

@@ -17,6 +17,7 @@
 #include "pm/core/PinholeCamera.h"
 #include "pm/core/Pose.h"
 #include "pm/core/Quaternion.h"
+#include "pm/core/Rounding.h"
 #include "pm/core/Statistics.h"
 #include "pm/core/StereoFitness.h"
 #include "pm/core/StereoScorer.h"
@@ -119,6 +120,12 @@ void exampleQuaternion()
     // The turn from phi to turned, and its angle (90 deg):
     const pm::core::Quaternion d = pm::core::quaternionOf(turned) * pm::core::quaternionOf(phi).conjugate();
     std::cout << d.angle() * 180 / M_PI << " deg\n";
+}
+
+// Rounding.h
+void exampleRounding()
+{
+  const long a = pm::core::roundHalfAway(2.5), b = pm::core::roundHalfAway(-2.5); // 3 and -3
 }
 
 // Statistics.h

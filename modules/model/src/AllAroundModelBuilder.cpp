@@ -16,6 +16,7 @@
 #include "pm/core/BatchPool.h"
 #include "pm/core/Error.h"
 #include "pm/core/Hue.h"
+#include "pm/core/Rounding.h"
 #include "pm/core/UndistortMap.h"
 #include "pm/model/EdgeBlur.h"
 #include "pm/model/HullMesh.h"
@@ -303,7 +304,7 @@ std::vector<std::vector<std::uint16_t>> camerasSeeing(const std::vector<const Hu
       const Vec3 toCam = unit(sub(vc->cam.centre, pts[i]));
       if (dot(toCam, normals[i]) < 0.2)
         continue;
-      const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+      const int ui = static_cast<int>(core::roundHalfAway(u)), vi = static_cast<int>(core::roundHalfAway(v));
       if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
         continue;
       if (z > zbuf[static_cast<std::size_t>(vi) * static_cast<std::size_t>(vc->cam.w) + static_cast<std::size_t>(ui)] + p.surface.visibilityTolMm)
@@ -327,7 +328,7 @@ std::vector<std::vector<ColourSample>> colourSamples(const std::vector<const Hul
       double u, v, z;
       if (!vc->cam.project(pts[i], u, v, z))
         continue;
-      const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+      const int ui = static_cast<int>(core::roundHalfAway(u)), vi = static_cast<int>(core::roundHalfAway(v));
       if (ui < 0 || vi < 0 || ui >= vc->cam.w || vi >= vc->cam.h)
         continue;
       const vpRGBa px = vc->photo[static_cast<unsigned>(vi)][static_cast<unsigned>(ui)];

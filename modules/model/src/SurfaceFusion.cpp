@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pm/core/Error.h"
+#include "pm/core/Rounding.h"
 #include "pm/model/StereoDepth.h"
 
 namespace pm::model {
@@ -63,7 +64,7 @@ double DepthEvidence::field(const Vec3 &X) const
       const double sdf = d - z; // > 0: X in front of the measured surface
       // Near its silhouette's edge a view sees the surface at a grazing angle, where the matcher's
       // blocks straddle a steep slope: its word counts less, and nothing at the edge itself.
-      const int x = static_cast<int>(std::lround(u)), y = static_cast<int>(std::lround(vv));
+      const int x = static_cast<int>(core::roundHalfAway(u)), y = static_cast<int>(core::roundHalfAway(vv));
       const double edge = x >= 0 && y >= 0 && x < v.silhouette.cols && y < v.silhouette.rows ? v.silhouette.at<float>(y, x) : 0.0;
       const double wv = std::clamp((edge - params.erodePx) / params.edgeRampPx, 0.0, 1.0) * v.weight.at<float>(y, x);
       if (wv > 0) {

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pm/core/Error.h"
+#include "pm/core/Rounding.h"
 #include "pm/model/AllAroundModelBuilder.h"
 
 namespace pm::model {
@@ -20,7 +21,7 @@ void depthBuffer(const core::PinholeCamera::Projection &cam, const std::vector<V
     double u, v, z;
     if (!cam.project(p, u, v, z))
       continue;
-    const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+    const int ui = static_cast<int>(core::roundHalfAway(u)), vi = static_cast<int>(core::roundHalfAway(v));
     for (int dv = -radius; dv <= radius; ++dv)
       for (int du = -radius; du <= radius; ++du) {
         const int x = ui + du, y = vi + dv;
@@ -57,7 +58,7 @@ std::vector<core::ContourPoint> meshOutline(const core::PinholeCamera::Projectio
   if (origins)
     origins->clear();
   auto inMask = [&](double u, double v) {
-    const int x = static_cast<int>(std::lround(u)), y = static_cast<int>(std::lround(v));
+    const int x = static_cast<int>(core::roundHalfAway(u)), y = static_cast<int>(core::roundHalfAway(v));
     return x >= 0 && y >= 0 && x < cam.w && y < cam.h && mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(x)];
   };
   struct Segment
@@ -214,7 +215,7 @@ std::vector<core::ModelPoint> sampleInner(const core::PinholeCamera::Projection 
     if (!surface[i].hasHue || !q.ok)
       continue;
     const double u = q.u, v = q.v, z = q.z;
-    const int ui = static_cast<int>(std::lround(u)), vv = static_cast<int>(std::lround(v));
+    const int ui = static_cast<int>(core::roundHalfAway(u)), vv = static_cast<int>(core::roundHalfAway(v));
     if (ui < 0 || vv < 0 || ui >= cam.w || vv >= cam.h)
       continue;
     if (z > zbuf[static_cast<std::size_t>(vv) * static_cast<std::size_t>(cam.w) + static_cast<std::size_t>(ui)] + p.surface.visibilityTolMm)
@@ -294,7 +295,7 @@ std::vector<core::ModelPoint> sampleOuter(const core::PinholeCamera::Projection 
         // From the contour pixel (the last one on the target) to the outline is half a pixel.
         const double off = 0.5 + p.viewpoints.stripGapPx + (p.viewpoints.stripRows > 1 ? p.viewpoints.stripWidthPx * row / (p.viewpoints.stripRows - 1) : 0.0);
         const double su = P.x + off * nx, sv = P.y + off * ny;
-        const int ui = static_cast<int>(std::lround(su)), vv = static_cast<int>(std::lround(sv));
+        const int ui = static_cast<int>(core::roundHalfAway(su)), vv = static_cast<int>(core::roundHalfAway(sv));
         if (ui >= 0 && vv >= 0 && ui < cam.w && vv < cam.h && mask.at<unsigned char>(vv, ui))
           continue; // in a concavity, on the target
         const Vec3 w = cam.backProject(su, sv, depth);

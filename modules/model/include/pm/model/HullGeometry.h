@@ -24,6 +24,7 @@
 #include <visp3/core/vpRGBa.h>
 
 #include "pm/core/PinholeCamera.h"
+#include "pm/core/Rounding.h"
 
 namespace pm::model::hull {
 
@@ -51,7 +52,7 @@ struct HullView
   //! The signed distance at the pixel nearest (\e u, \e v); -1e6 off the image.
   double sd(double u, double v) const
   {
-    const int ui = static_cast<int>(std::lround(u)), vi = static_cast<int>(std::lround(v));
+    const int ui = static_cast<int>(core::roundHalfAway(u)), vi = static_cast<int>(core::roundHalfAway(v));
     if (ui < 0 || vi < 0 || ui >= cam.w || vi >= cam.h)
       return -1e6;
     return signedDist.at<float>(vi, ui);
