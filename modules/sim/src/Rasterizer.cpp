@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "pm/core/Error.h"
+#include "pm/core/Rounding.h"
 #include "pm/sim/Noise.h"
 #include "RasterKernels.h"
 
@@ -72,12 +73,6 @@ inline bool masksAll(const V &a, const V &b, const V &c)
 {
   constexpr float kMargin = 1e-3f; // mask times 1/z (mm per m): about 1e3 times the interpolation's rounding
   return a.mask > kMargin && b.mask > kMargin && c.mask > kMargin;
-}
-
-//! std::llround for |x| < 2^52, inline (half away from zero).
-inline std::int64_t roundHalfAway(double x)
-{
-  return x >= 0 ? static_cast<std::int64_t>(x + 0.5) : -static_cast<std::int64_t>(-x + 0.5);
 }
 
 } // namespace
@@ -322,7 +317,7 @@ void Rasterizer::drawTriangles(const Mesh &mesh, const std::vector<ProjVertex> &
     std::int64_t x, y;
   };
   auto fixedOf = [&](const ProjVertex &v) {
-    return Fixed{roundHalfAway(v.X * kSub), roundHalfAway(v.Y * kSub)};
+    return Fixed{core::roundHalfAway(v.X * kSub), core::roundHalfAway(v.Y * kSub)};
   };
   // The attributes interpolated across a triangle, in the order of ProjVertex (w, s, t, mask, diff,
   // spec, su, sv, sd): each is a plane in screen space, stepped along a span.
