@@ -3,13 +3,18 @@
 # budget, from two builds, and compares what they wrote (frames.csv, summary.json and the other
 # tables), timings aside.
 #
-#   bash scripts/compare-builds.sh [--cases LIST] [--reuse] [--report-only] BEFORE_BUILD AFTER_BUILD OUT
+#   bash scripts/compare-builds.sh [--cases LIST] [--seeds LIST] [--reuse] [--report-only] BEFORE_BUILD AFTER_BUILD OUT
 #
 #   BEFORE_BUILD, AFTER_BUILD  build trees (their apps/ hold the programs), e.g. ../before/build build
 #   OUT                        OUT/before/<case>/ and OUT/after/<case>/ receive the outputs;
 #                              OUT/report.txt the comparison
 #   --cases LIST               comma-separated subset of: servo-c12, servo-r2, servo-c12-viper850,
 #                              servo-r2-viper850, track-table2, detect-all, compare-table2 (default: all)
+#   --seeds LIST               comma-separated further noise seeds for the servo and track cases,
+#                              each run into OUT/<side>/<case>/seed-<N>/ and compared as well; the
+#                              report gives their key figures per seed, before and after, with the
+#                              mean and range (a change that moves the outputs is judged against the
+#                              seeds' own spread: C12's rotation at rest is 0.23-0.46 deg over five)
 #   --reuse                    keep OUT/before/<case> when it is already there (the "before" build
 #                              is run once, the "after" build after each change)
 #   --report-only              run nothing: compare what OUT/before and OUT/after already hold
@@ -24,13 +29,16 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-usage() { sed -n '5,23p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '5,28p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 cases="servo-c12,servo-r2,servo-c12-viper850,servo-r2-viper850,track-table2,detect-all,compare-table2"
+seeds=""
 reuse=0
 report_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --cases) [ $# -ge 2 ] || usage; cases="$2"; shift 2 ;;
+    --seeds) [ $# -ge 2 ] || usage; seeds="$2"; shift 2
+      [[ "$seeds" =~ ^[0-9]+(,[0-9]+)*$ ]] || { echo "error: --seeds takes seeds like 2,3,4, not '$seeds'" >&2; exit 2; } ;;
     --reuse) reuse=1; shift ;;
     --report-only) report_only=1; shift ;;
     -h|--help) usage ;;
@@ -60,9 +68,14 @@ args_of() {
   esac
 }
 
-run_case() { # build side case
+seeded() { case "$1" in servo-*|track-*) return 0 ;; *) return 1 ;; esac; } # their programs take --seed
+
+run_case() { # build side case [seed]
   local build="$1" side="$2" c="$3" dir="$out/$2/$3" cmd
   cmd="$(args_of "$c")"
+  if [ -n "${4:-}" ]; then
+    dir="$out/$2/$3/seed-$4"; cmd="$cmd --seed $4"
+  fi
   if [ "$side" = before ] && [ "$reuse" = 1 ] && [ -f "$dir/summary.json" ]; then
     echo "  $side: kept from an earlier run" >&2
     return 0
@@ -70,9 +83,9 @@ run_case() { # build side case
   rm -rf "$dir"
   local t0=$SECONDS
   # shellcheck disable=SC2086
-  "$build/apps/"$cmd --out "$dir" >"$out/$side-$c.log" 2>&1 ||
-    { echo "error: $side $c failed (see $out/$side-$c.log)" >&2; return 1; }
-  echo "  $side: $((SECONDS - t0)) s" >&2
+  local log="$out/$side-$c${4:+-seed-$4}.log"
+  "$build/apps/"$cmd --out "$dir" >"$log" 2>&1 || { echo "error: $side $c${4:+ seed $4} failed (see $log)" >&2; return 1; }
+  echo "  $side${4:+, seed $4}: $((SECONDS - t0)) s" >&2
 }
 
 IFS=',' read -r -a list <<<"$cases"
@@ -80,14 +93,27 @@ for c in "${list[@]}"; do
   args_of "$c" >/dev/null
   [ "$report_only" = 1 ] && continue
   echo "$c: $(args_of "$c")" >&2
+  # the default seed keeps OUT/<side>/<case>/ as it was; the seeds' folders go inside it after it
   run_case "$before" before "$c"
   run_case "$after" after "$c"
+  if seeded "$c" && [ -n "$seeds" ]; then
+    IFS=',' read -r -a seed_list <<<"$seeds"
+    for s in "${seed_list[@]}"; do
+      run_case "$before" before "$c" "$s"
+      run_case "$after" after "$c" "$s"
+    done
+  fi
 done
 
 python3 - "$out" "${list[@]}" <<'EOF'
 import csv, json, math, os, re, sys
 
 out, cases = sys.argv[1], sys.argv[2:]
+# The key figures of a summary.json, per program (the servo's at rest, the tracker's over its frames).
+KEY = {"servo": [("at rest mm", ("rms_error_mm", "at_rest")), ("at rest deg", ("rms_rotation_error_deg", "at_rest")),
+                 ("servoed", ("frames_servoed",)), ("on a wrong pose", ("frames_servoed_on_wrong_pose",))],
+       "track": [("rms mm", ("position_error_mm", "rms")), ("rms deg", ("rotation_error_deg", "rms")),
+                 ("trusted", ("trusted_frames",)), ("wrong trusted", ("wrong_frames", "trusted"))]}
 # Names that measure the machine: wall time, memory, speed.
 TIMING = {"ms", "s", "seconds", "time", "fps", "wall", "memory"}  # words of a name (split at "_")
 KEEP = {"converged_after_s", "hold_s", "move_s", "duration_s"}  # simulated time: behaviour
@@ -182,6 +208,44 @@ def cmp_csv(fa, fb, name, diffs):
         diffs.append(f"{name}: {bad} values differ in all")
     return len(ra) - 1
 
+def key_figures(path, keys):
+    try:
+        summary = json.load(open(path))
+        values = []
+        for _, where in keys:
+            v = summary
+            for k in where:
+                v = v[k]
+            values.append(float(v))
+        return values
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+def seed_spread(c, a, b):
+    """The key figures per seed (the default and OUT/<side>/<case>/seed-N), before -> after, mean and range."""
+    keys = KEY.get(c.split("-")[0])
+    runs = sorted(n for n in os.listdir(a) if n.startswith("seed-")) if os.path.isdir(a) else []
+    if not keys or not runs:
+        return []
+    lines = ["  key figures per seed, before -> after: " + "; ".join(n for n, _ in keys)]
+    per = {"before": [], "after": []}
+    for r in ["default"] + runs:
+        sub = "" if r == "default" else r
+        fa, fb = key_figures(os.path.join(a, sub, "summary.json"), keys), key_figures(os.path.join(b, sub, "summary.json"), keys)
+        if fa is None or fb is None:
+            lines.append(f"    {r}: missing")
+            continue
+        per["before"].append(fa)
+        per["after"].append(fb)
+        lines.append(f"    {r}: " + "; ".join(f"{x:.4g} -> {y:.4g}" for x, y in zip(fa, fb)))
+    for side in ("before", "after"):
+        v = per[side]
+        if v:
+            cols = list(zip(*v))
+            lines.append(f"    {side}, {len(v)} seeds: " + "; ".join(
+                f"{n} {sum(x) / len(x):.4g} [{min(x):.4g}, {max(x):.4g}]" for (n, _), x in zip(keys, cols)))
+    return lines
+
 report, failed = [], False
 for c in cases:
     a, b = os.path.join(out, "before", c), os.path.join(out, "after", c)
@@ -211,6 +275,7 @@ for c in cases:
     failed |= bool(diffs)
     report.append(f"{c}: {verdict} ({files} files compared, {rows} table rows)")
     report += ["  " + d for d in diffs[:40]]
+    report += seed_spread(c, a, b)
     report.append("  not compared (timings, settings' layout): " + ", ".join(sorted(ignored)))
 if added:
     report.append("  columns added after (not compared): " + ", ".join(sorted(added)))
