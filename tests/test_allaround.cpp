@@ -67,7 +67,8 @@ struct CrabPass
   pm::sim::Scene scene{pm::sim::makeTarget("C12")};
   pm::robot::SteppedArm pa10{pm::robot::makeArmModel("pa10")};
   pm::lab::LabPass pass = pm::lab::runLabPass(scene, rig(), pm::model::PassPlan(), pa10);
-  pm::model::AllAroundBuild build = pm::model::buildAllAroundModel(rig(), pass.views);
+  pm::model::PassMeasurements measured; // what the build measured of each view (the trust's calibration reads it)
+  pm::model::AllAroundBuild build = pm::model::buildAllAroundModel(rig(), pass.views, pm::model::AllAroundParams(), measured);
   vpHomogeneousMatrix oMm = pass.fMo.inverse() * build.fMm;
 };
 const CrabPass &crab()
@@ -793,10 +794,8 @@ TEST(AllAround, ThroughOneCameraThePassMeasuresHowFarTheStagePutsTheCrabAndItsPo
   pm::trust::CalibrationParams cp;
   cp.tries.nearStarts = 2;
   cp.viewsPerModel = 2;
-  pm::model::PassMeasurements measured;
-  (void)pm::model::buildAllAroundModel(rig(), crab().pass.views, pm::model::AllAroundParams(), measured);
   const pm::core::TrustCalibration t =
-      pm::trust::calibrateFromPass(one, crab().pass.views, pm::model::AllAroundParams(), measured, pm::tracker::TrackerParams(), cp);
+      pm::trust::calibrateFromPass(one, crab().pass.views, pm::model::AllAroundParams(), crab().measured, pm::tracker::TrackerParams(), cp);
   std::cout << pm::trust::describe(t) << "\n";
   ASSERT_TRUE(t.measured);
   EXPECT_EQ(t.rangeCameras, 1);
@@ -841,9 +840,7 @@ TEST(AllAround, ThePassCalibratesTrustAndASoftCameraWidensTheSigmasWithoutTrusti
   // lab's, and 53 -> 72 % trusted; one a model, as the lab's reference was taken, reads as the lab.)
   pm::trust::CalibrationParams cp;
   cp.tries.nearStarts = 2;
-  pm::model::PassMeasurements measured;
-  (void)pm::model::buildAllAroundModel(rig(), crab().pass.views, pm::model::AllAroundParams(), measured);
-  const pm::core::TrustCalibration sharp = pm::trust::calibrateFromPass(rig(), crab().pass.views, pm::model::AllAroundParams(), measured,
+  const pm::core::TrustCalibration sharp = pm::trust::calibrateFromPass(rig(), crab().pass.views, pm::model::AllAroundParams(), crab().measured,
                                                                         pm::tracker::TrackerParams(), cp);
   cp.viewsPerModel = 2;
   std::cout << pm::trust::describe(sharp) << "\n";
@@ -863,6 +860,7 @@ TEST(AllAround, ThePassCalibratesTrustAndASoftCameraWidensTheSigmasWithoutTrusti
   for (pm::model::PassView &v : soft)
     for (vpImage<vpRGBa> *im : {&v.left, &v.right, &v.backgroundLeft, &v.backgroundRight})
       *im = pm::lab::defocused(*im, 2.0);
+  pm::model::PassMeasurements measured;
   (void)pm::model::buildAllAroundModel(rig(), soft, pm::model::AllAroundParams(), measured);
   const pm::core::TrustCalibration t = pm::trust::calibrateFromPass(rig(), soft, pm::model::AllAroundParams(), measured, pm::tracker::TrackerParams(), cp);
   std::cout << pm::trust::describe(t) << "\n";
