@@ -1,5 +1,6 @@
 // The tracker's parts, one at a time: the lock state, the steady-frame policy, the frame's budgets, the
-// quality scale, the search's changes applied in one place, the lock verifier and the judgement.
+// quality scale, the search's changes applied in one place, the lock verifier, the judgement and the
+// reported pose's correction by the pass's landings.
 #include <gtest/gtest.h>
 
 #include "C12Scene.h"
@@ -12,6 +13,7 @@
 #include "pm/sim/TargetCatalog.h"
 #include "pm/tracker/BackgroundLearning.h"
 #include "pm/tracker/FramePlan.h"
+#include "pm/tracker/LandingCorrection.h"
 #include "pm/tracker/Judgement.h"
 #include "pm/tracker/LockState.h"
 #include "pm/tracker/LockVerifier.h"
@@ -447,4 +449,56 @@ TEST(BackgroundLearning, ABackgroundThatTurnedIsLearntOnTrustedFramesAndTheSameO
   bad.switchDeg = 40;
   EXPECT_NE(pm::test::errorOf([&] { bad.validate(); }).find("switch"), std::string::npos);
   EXPECT_NE(pm::test::errorOf([&] { turned.setBackgroundHue(360); }).find("[0, 360)"), std::string::npos);
+}
+
+TEST(LandingCorrection, AtAViewOfThePassItTakesTheLandingOffAndFarFromEveryViewNothing)
+{
+  // One landing: the stage, at the crab's rest pose seen from the left camera, put the model 0.3 mm,
+  // -0.2, 0.1 off and turned it 0.4, -0.5, 0.1 deg (model frame's axes, as measurePassLandings keeps
+  // them). A pose so landed is brought back to the truth within a twentieth of the offset (the
+  // weight read at the landed pose's own direction, 0.6 deg off the view's); a pose seen from 40 deg
+  // away is left as it is; without landings, or with a width that is not an angle, nothing or an error.
+  const vpHomogeneousMatrix hMc(-0.1615, 0, 0, 0, 0, 0);
+  const pm::core::Phi truth = pm::core::fromHomogeneousMatrix(vpHomogeneousMatrix(0.01, -0.02, 0.5, 0.1, -0.2, 0.05));
+  const vpHomogeneousMatrix hMm = pm::core::toHomogeneousMatrix(truth);
+  const vpHomogeneousMatrix mMc = hMm.inverse() * hMc;
+  pm::core::PassLanding l;
+  const double mt[3] = {0.3, -0.2, 0.1}, mw[3] = {0.4, -0.5, 0.1};
+  for (unsigned i = 0; i < 3; ++i) {
+    l.cameraMm[i] = 1e3 * mMc[i][3];
+    l.offsetMm[i] = mt[i];
+    l.offsetDeg[i] = mw[i];
+  }
+  const pm::tracker::LandingCorrection landing({l}, hMc, 4);
+  ASSERT_TRUE(landing.active());
+  // At the view itself: the landing's offsets, turned into the hand frame (hRm m).
+  const std::array<double, 6> e = landing.at(truth);
+  const vpRotationMatrix hRm = hMm.getRotationMatrix();
+  for (unsigned i = 0; i < 3; ++i) {
+    double t = 0, w = 0;
+    for (unsigned j = 0; j < 3; ++j)
+      t += hRm[i][j] * mt[j], w += hRm[i][j] * mw[j];
+    EXPECT_NEAR(e[i], t, 1e-9);
+    EXPECT_NEAR(e[3 + i], w, 1e-9);
+  }
+  const double tw[6] = {e[0], e[1], e[2], vpMath::rad(e[3]), vpMath::rad(e[4]), vpMath::rad(e[5])};
+  const pm::core::Phi landed = pm::core::applyTwist(truth, tw);
+  const pm::core::Phi back = landing.corrected(landed);
+  EXPECT_GT(pm::core::rotationDistanceDeg(landed, truth), 0.6);
+  EXPECT_LT(pm::core::rotationDistanceDeg(back, truth), 0.05 * pm::core::rotationDistanceDeg(landed, truth));
+  EXPECT_LT(pm::core::translationDistanceMm(back, truth), 0.05 * pm::core::translationDistanceMm(landed, truth));
+  // Seen from 40 deg away (the model turned about the hand's y): no view near, nothing taken off.
+  const double turn[6] = {0, 0, 0, 0, vpMath::rad(40), 0};
+  const pm::core::Phi away = pm::core::applyTwist(truth, turn);
+  const pm::core::Phi kept = landing.corrected(away);
+  EXPECT_LT(pm::core::rotationDistanceDeg(kept, away), 1e-3);
+  EXPECT_LT(pm::core::translationDistanceMm(kept, away), 1e-3);
+  // No landings (a flat or stereo model, an older file): the pose as it is.
+  const pm::tracker::LandingCorrection none({}, hMc, 4);
+  EXPECT_FALSE(none.active());
+  const pm::core::Phi same = none.corrected(landed);
+  EXPECT_TRUE(same.x == landed.x && same.y == landed.y && same.z == landed.z && same.e1 == landed.e1 && same.e2 == landed.e2 &&
+              same.e3 == landed.e3);
+  EXPECT_THROW(pm::tracker::LandingCorrection({l}, hMc, 0), pm::core::Error);
+  EXPECT_THROW(pm::tracker::LandingCorrection({l}, hMc, std::nan("")), pm::core::Error);
 }

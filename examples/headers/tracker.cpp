@@ -12,6 +12,7 @@
 #include "pm/tracker/PhotoModelTracker.h"
 #include "pm/tracker/PoseHistory.h"
 #include "pm/tracker/PoseSearch.h"
+#include "pm/tracker/LandingCorrection.h"
 #include "pm/tracker/PreciseRefinement.h"
 #include "pm/tracker/QualityScale.h"
 #include "pm/tracker/RangeCorrection.h"
@@ -289,6 +290,22 @@ void exampleRangeCorrection(const pm::core::CameraRig &rig, const pm::core::Phot
   const pm::tracker::RangeCorrection range(rig, model.trust);  // the pass's, on a rig of its camera count
   if (range.active()) std::cout << "range x" << range.scale() << "\n";
   (void)none;
+}
+
+// LandingCorrection.h
+void exampleLandingCorrectionFile(const pm::core::CameraRig &rig, const pm::core::PhotoModel &model, pm::precise::PreciseStage &stage, const pm::core::Phi &start)
+{
+      const pm::tracker::LandingCorrection landing(model.passLandings, rig[0].hMc); // 4 deg wide
+      const pm::core::Phi phi = landing.corrected(stage.refine(start).phi);        // what the tracker reports
+  use(phi);
+}
+void exampleLandingCorrection(const pm::core::PhotoModel &model, const vpHomogeneousMatrix &hMc, const pm::core::Phi &phi)
+{
+  const pm::tracker::LandingCorrection none;                              // poses unchanged
+  const pm::tracker::LandingCorrection landing(model.passLandings, hMc);  // the left camera's place on the hand
+  const std::array<double, 6> e = landing.at(phi); // mm along the hand's x, y, z; deg about them
+  (void)none;
+  (void)e;
 }
 
 } // namespace pm_examples

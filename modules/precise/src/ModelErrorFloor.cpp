@@ -8,33 +8,46 @@
 
 namespace pm::precise {
 
+std::vector<std::array<double, 3>> landingDirections(const std::vector<core::PassLanding> &landings)
+{
+  std::vector<std::array<double, 3>> dirs;
+  for (const core::PassLanding &l : landings) {
+    const double n = std::sqrt(l.cameraMm[0] * l.cameraMm[0] + l.cameraMm[1] * l.cameraMm[1] + l.cameraMm[2] * l.cameraMm[2]);
+    dirs.push_back({l.cameraMm[0] / n, l.cameraMm[1] / n, l.cameraMm[2] / n});
+  }
+  return dirs;
+}
+
+bool cameraDirectionInModel(const core::Phi &phi, const std::array<double, 3> &cameraMm, double d[3])
+{
+  // mRh (c - t), with R = hRm row-major.
+  const core::Rot3 R = core::rotationOf(phi);
+  const double toCamera[3] = {cameraMm[0] - phi.x, cameraMm[1] - phi.y, cameraMm[2] - phi.z};
+  for (int j = 0; j < 3; ++j)
+    d[j] = R[j] * toCamera[0] + R[3 + j] * toCamera[1] + R[6 + j] * toCamera[2];
+  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(n > 0))
+    return false;
+  for (int j = 0; j < 3; ++j)
+    d[j] /= n;
+  return true;
+}
+
 ModelErrorFloor::ModelErrorFloor(const std::vector<core::PassLanding> &landings, const vpHomogeneousMatrix &hMc, double widthDeg)
-    : m_landings(landings), m_cameraMm{hMc[0][3] * 1e3, hMc[1][3] * 1e3, hMc[2][3] * 1e3}, m_width(widthDeg * M_PI / 180.0)
+    : m_landings(landings), m_dirs(landingDirections(landings)), m_cameraMm{hMc[0][3] * 1e3, hMc[1][3] * 1e3, hMc[2][3] * 1e3},
+      m_width(widthDeg * M_PI / 180.0)
 {
   if (!(widthDeg > 0 && std::isfinite(widthDeg)))
     throw core::Error("model error floor: the width must be a positive angle (deg)");
-  for (const core::PassLanding &l : m_landings) {
-    const double n = std::sqrt(l.cameraMm[0] * l.cameraMm[0] + l.cameraMm[1] * l.cameraMm[1] + l.cameraMm[2] * l.cameraMm[2]);
-    m_dirs.push_back({l.cameraMm[0] / n, l.cameraMm[1] / n, l.cameraMm[2] / n});
-  }
 }
 
 std::array<double, 6> ModelErrorFloor::at(const core::Phi &phi) const
 {
   std::array<double, 6> out{};
-  if (m_landings.empty())
-    return out;
-  // The camera's direction seen from the model: mRh (c - t), with R = hRm row-major.
-  const core::Rot3 R = core::rotationOf(phi);
-  const double toCamera[3] = {m_cameraMm[0] - phi.x, m_cameraMm[1] - phi.y, m_cameraMm[2] - phi.z};
   double d[3];
-  for (int j = 0; j < 3; ++j)
-    d[j] = R[j] * toCamera[0] + R[3 + j] * toCamera[1] + R[6 + j] * toCamera[2];
-  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  if (!(n > 0))
+  if (m_landings.empty() || !cameraDirectionInModel(phi, m_cameraMm, d))
     return out;
-  for (double &c : d)
-    c /= n;
+  const core::Rot3 R = core::rotationOf(phi);
   // Gaussian weights on the angle; relative to the nearest landing's, so that a direction far from
   // every view still takes its nearest views' (no underflow to nothing).
   double nearest = std::numeric_limits<double>::infinity();

@@ -69,7 +69,10 @@ PhotoModelTracker::PhotoModelTracker(const core::CameraRig &rig, const core::Pho
       m_refinement(m_params.refinement, rig, model, m_fitness.scorer(), m_scale),
       m_judgement(m_params.judgement, m_params.verifier.farDeg, m_fitness.scorer(), m_scale,
                   precise::ModelErrorFloor(model.passLandings, rig[0].hMc, m_params.judgement.uncertainty.modelErrorWidthDeg)),
-      m_background(m_params.background, m_fitness.scorer())
+      m_background(m_params.background, m_fitness.scorer()),
+      m_landing(m_params.refinement.precise.landingWidthDeg > 0
+                    ? LandingCorrection(model.passLandings, rig[0].hMc, m_params.refinement.precise.landingWidthDeg)
+                    : LandingCorrection())
 {
   initialize();
 }
@@ -105,7 +108,17 @@ TrackResult PhotoModelTracker::track(const core::CameraImages &images)
     useBackgroundHue(*hue);
   at[6] = clock.ms();
   const TrackResult r = assembled(searched, refined, state, verdict, backgroundHueDeg, at);
-  m_history.remember(r);
+  m_history.remember(r); // the stage's pose: what the steps read of the last frames
+  m_landingTaken = r.precise ? m_landing.inModel(r.phi) : std::array<double, 6>{};
+  return reported(r);
+}
+
+TrackResult PhotoModelTracker::reported(TrackResult r) const
+{
+  if (r.precise && m_landing.active()) { // the model's own error at the pass's views taken off (moved with the hand since)
+    r.phi = LandingCorrection::takenOff(r.phi, m_landingTaken);
+    r.hMo = core::toHomogeneousMatrix(r.phi);
+  }
   return r;
 }
 
@@ -251,6 +264,7 @@ TrackResult PhotoModelTracker::assembled(const SearchedPose &searched, const Ref
 void PhotoModelTracker::reset(const TrackResult &first)
 {
   m_history.reset(first);
+  m_landingTaken = {};
   m_lock.reset(first.state);
   m_steady.reset();
   m_verifier.reset(first.verified);

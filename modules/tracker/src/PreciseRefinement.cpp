@@ -11,6 +11,8 @@ void PreciseRefinementParams::validate() const
   stage.validate();
   if (!(maxDropQ >= 0) || !(restartMm > 0) || !(restartDeg > 0) || !(maxMoveMm > 0) || !(maxMoveDeg > 0))
     throw core::Error("tracker: the precise stage's fitness drop must be non-negative and its restart and move distances positive");
+  if (!(landingWidthDeg >= 0 && landingWidthDeg <= 90))
+    throw core::Error("tracker: the landing correction's width must lie in [0, 90] deg (0: off)");
   if (!(lookForHiddenBelow >= 0 && lookForHiddenBelow <= 1))
     throw core::Error("tracker: the precise stage's visible share to look for hidden lines below must lie in [0, 1]");
 }

@@ -28,6 +28,11 @@
 
 namespace pm::precise {
 
+//! Each landing's camera direction seen from the model (unit, model frame; ModelErrorFloor and tracker::LandingCorrection weigh the views by it).
+std::vector<std::array<double, 3>> landingDirections(const std::vector<core::PassLanding> &landings);
+//! The direction to a camera at \e cameraMm (hand frame, mm) seen from the model at \e phi (hMm), unit, model frame; false when the camera sits at the model's origin.
+bool cameraDirectionInModel(const core::Phi &phi, const std::array<double, 3> &cameraMm, double d[3]);
+
 //! The model's error near a view (see the file's description); holds a copy of the landings. at() allocates nothing.
 class ModelErrorFloor
 {
@@ -46,7 +51,7 @@ public:
 private:
   std::vector<core::PassLanding> m_landings;
   std::vector<std::array<double, 3>> m_dirs; //!< each landing's camera direction (unit, model frame)
-  double m_cameraMm[3]; //!< the camera's centre in the hand frame
+  std::array<double, 3> m_cameraMm; //!< the camera's centre in the hand frame
   double m_width; //!< rad
 };
 

@@ -29,6 +29,9 @@
       learns the colours of a trusted frame;
    9. background: a trusted frame teaches the background's hue as seen now (BackgroundLearning.h);
       the scoring takes it when it has moved away from the photos'.
+  The pose the frame reports is the precise stage's less the model's own error at the pass's views
+  near the camera's direction (LandingCorrection.h); the steps and the tracker's past keep the
+  stage's pose, as the confidence was fitted on.
 
   Trust: "tracking" says the model fits somewhere, not that the pose is right. TrackResult::trusted
   (tracking, verified, confidence over its threshold) is what a robot should act on; with the
@@ -43,6 +46,7 @@
 
 #include "pm/core/StereoFitness.h"
 #include "pm/tracker/FrameSteps.h"
+#include "pm/tracker/LandingCorrection.h"
 #include "pm/tracker/PoseHistory.h"
 #include "pm/tracker/TrackResult.h"
 #include "pm/tracker/TrackerParams.h"
@@ -109,17 +113,17 @@ public:
   */
   void applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev);
 
-  //! hMo of the last frame, or the one given to initFromPose() (metres); moved by applyHandMotion().
-  vpHomogeneousMatrix getPose() const { return m_history.last().hMo; }
+  //! hMo of the last frame as track() reported it, or the one given to initFromPose() (metres); moved by applyHandMotion().
+  vpHomogeneousMatrix getPose() const { return reported(m_history.last()).hMo; }
   //! The last frame's F (0 before the first frame).
   double getFitness() const { return m_history.last().fitness; }
   //! The state after the last frame (Searching after initialize(), Tracking after initFromPose()).
   TrackState getState() const { return m_history.last().state; }
   //! Everything the last track() returned (reset by initialize() and initFromPose()).
-  const TrackResult &lastResult() const { return m_history.last(); }
+  TrackResult lastResult() const { return reported(m_history.last()); }
   //! q of a fitness value for this model.
   double quality(double fitness) const { return m_scale.quality(fitness); }
-  //! The model's points at the last pose in camera \e camera's image (a stereo rig: 0 left, 1 right), each with its score class (for drawing).
+  //! The model's points at the last pose as the precise stage landed (before LandingCorrection) in camera \e camera's image (a stereo rig: 0 left, 1 right), each with its score class (for drawing).
   std::vector<core::PointScore> pointScores(int camera) const { return m_fitness.pointScores(m_history.last().phi, camera); }
   //! The stereo fitness the tracker scores with (its hue planes: those of the last frame).
   const core::StereoFitness &fitness() const { return m_fitness; }
@@ -152,6 +156,8 @@ private:
   //! The frame's result from the steps' values; \e at: the clock at the end of each step (StepTimes' order, ms).
   TrackResult assembled(const SearchedPose &searched, const RefinedPose &refined, TrackState state, const Verdict &verdict,
                         double backgroundHueDeg, const std::array<double, StepTimes::kCount> &at) const;
+  //! \e r as track() reports it: a precise pose less the model's own error at its pass's views (LandingCorrection.h).
+  TrackResult reported(TrackResult r) const;
   //! A new start whose last frame is \e first (searching, or a pose given: tracking and verified).
   void reset(const TrackResult &first);
   //! The fitness and the precise stage compare with the background's hue \e deg from now on.
@@ -168,6 +174,8 @@ private:
   RefinementChain m_refinement;
   Judgement m_judgement;
   BackgroundLearning m_background; //!< the background's hue as seen now (learnt on trusted frames)
+  LandingCorrection m_landing;     //!< the model's own error at its pass's views, taken off the reported pose (never changed)
+  std::array<double, 6> m_landingTaken{}; //!< what the last frame took off its pose (model frame: mm, deg), changed only by track() and reset()
   PoseHistory m_history;           //!< the last frames' results and poses, changed only by track(), reset() and applyHandMotion()
 };
 

@@ -61,6 +61,13 @@ struct PreciseRefinementParams
     dropped lines at a wrong first lock and delayed the right one.
   */
   double lookForHiddenBelow = 0.95;
+  /*!
+    The reported pose less the model's own error at the pass's views (LandingCorrection.h), their
+    weights this wide (deg) on the angle between the camera's direction and each view's; 0: the
+    stage's pose as it landed. A model without pass landings (flat, stereo, older files) is not
+    corrected.
+  */
+  double landingWidthDeg = 4;
 
   //! Throws core::Error naming the first parameter out of range.
   void validate() const;
