@@ -27,18 +27,25 @@ std::string Phi::toString() const
 
 vpHomogeneousMatrix toHomogeneousMatrix(const Phi &phi)
 {
+  vpHomogeneousMatrix M;
+  toHomogeneousMatrix(phi, M);
+  return M;
+}
+
+void toHomogeneousMatrix(const Phi &phi, vpHomogeneousMatrix &M)
+{
   if (!phi.isValid())
     throw Error("invalid pose phi = " + phi.toString() +
                 ": the quaternion vector part must have |eps| <= 1 and every value be finite");
   const Rot3 r = rotationOf(phi);
-  vpHomogeneousMatrix M;
   for (unsigned i = 0; i < 3; ++i)
     for (unsigned j = 0; j < 3; ++j)
       M[i][j] = r[3 * i + j];
   M[0][3] = phi.x * 1e-3;
   M[1][3] = phi.y * 1e-3;
   M[2][3] = phi.z * 1e-3;
-  return M;
+  M[3][0] = M[3][1] = M[3][2] = 0;
+  M[3][3] = 1;
 }
 
 Phi fromHomogeneousMatrix(const vpHomogeneousMatrix &hMo)

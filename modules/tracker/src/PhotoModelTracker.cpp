@@ -107,19 +107,19 @@ TrackResult PhotoModelTracker::track(const core::CameraImages &images)
   if (const std::optional<double> hue = m_background.learn(hues, refined.pose.phi, verdict.trusted)) // 9. the background's hue as seen now
     useBackgroundHue(*hue);
   at[6] = clock.ms();
-  const TrackResult r = assembled(searched, refined, state, verdict, backgroundHueDeg, at);
+  TrackResult r = assembled(searched, refined, state, verdict, backgroundHueDeg, at);
   m_history.remember(r); // the stage's pose: what the steps read of the last frames
   m_landingTaken = r.precise ? m_landing.inModel(r.phi) : std::array<double, 6>{};
-  return reported(r);
+  takeLandingOff(r);
+  return r;
 }
 
-TrackResult PhotoModelTracker::reported(TrackResult r) const
+void PhotoModelTracker::takeLandingOff(TrackResult &r) const
 {
   if (r.precise && m_landing.active()) { // the model's own error at the pass's views taken off (moved with the hand since)
     r.phi = LandingCorrection::takenOff(r.phi, m_landingTaken);
-    r.hMo = core::toHomogeneousMatrix(r.phi);
+    core::toHomogeneousMatrix(r.phi, r.hMo);
   }
-  return r;
 }
 
 FramePlan PhotoModelTracker::plan(const core::CameraImages &images, const Clock &clock)

@@ -77,6 +77,8 @@ inline Rot3 rotationOf(const Phi &p)
 
 //! phi -> hMo (metres). Throws pm::core::Error if phi is not valid (|eps| > 1 or not finite).
 vpHomogeneousMatrix toHomogeneousMatrix(const Phi &phi);
+//! The same into \e hMo, whose storage is kept (no allocation).
+void toHomogeneousMatrix(const Phi &phi, vpHomogeneousMatrix &hMo);
 /*!
   \e phi moved by a small motion \e twist of the model about its own origin, expressed in the hand
   frame: the origin moves by (twist[0], twist[1], twist[2]) mm and the model turns by the rotation

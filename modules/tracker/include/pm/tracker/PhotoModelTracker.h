@@ -114,13 +114,18 @@ public:
   void applyHandMotion(const vpHomogeneousMatrix &hNowMhPrev);
 
   //! hMo of the last frame as track() reported it, or the one given to initFromPose() (metres); moved by applyHandMotion().
-  vpHomogeneousMatrix getPose() const { return reported(m_history.last()).hMo; }
+  vpHomogeneousMatrix getPose() const { return lastResult().hMo; }
   //! The last frame's F (0 before the first frame).
   double getFitness() const { return m_history.last().fitness; }
   //! The state after the last frame (Searching after initialize(), Tracking after initFromPose()).
   TrackState getState() const { return m_history.last().state; }
   //! Everything the last track() returned (reset by initialize() and initFromPose()).
-  TrackResult lastResult() const { return reported(m_history.last()); }
+  TrackResult lastResult() const
+  {
+    TrackResult r = m_history.last();
+    takeLandingOff(r);
+    return r;
+  }
   //! q of a fitness value for this model.
   double quality(double fitness) const { return m_scale.quality(fitness); }
   //! The model's points at the last pose as the precise stage landed (before LandingCorrection) in camera \e camera's image (a stereo rig: 0 left, 1 right), each with its score class (for drawing).
@@ -156,8 +161,8 @@ private:
   //! The frame's result from the steps' values; \e at: the clock at the end of each step (StepTimes' order, ms).
   TrackResult assembled(const SearchedPose &searched, const RefinedPose &refined, TrackState state, const Verdict &verdict,
                         double backgroundHueDeg, const std::array<double, StepTimes::kCount> &at) const;
-  //! \e r as track() reports it: a precise pose less the model's own error at its pass's views (LandingCorrection.h).
-  TrackResult reported(TrackResult r) const;
+  //! \e r made what track() reports: a precise pose less the model's own error at its pass's views (LandingCorrection.h); allocates nothing.
+  void takeLandingOff(TrackResult &r) const;
   //! A new start whose last frame is \e first (searching, or a pose given: tracking and verified).
   void reset(const TrackResult &first);
   //! The fitness and the precise stage compare with the background's hue \e deg from now on.
