@@ -333,10 +333,42 @@ TEST(LockVerifier, AWrongLockIsChallengedAndARightOneVerified)
   EXPECT_LT(pm::core::translationDistanceMm(better->phi, c.truth), 20.0);
   EXPECT_DOUBLE_EQ(better->fitness, fitness.evaluate(better->phi));
   EXPECT_FALSE(verifier.verified()); // the new pose is verified in turn
+  EXPECT_FALSE(verifier.lookingAgain()); // a new lock, not an ambiguity
   // A target no longer tracked is no longer verified, nor verifying.
   verifier.onState(TrackState::Tracking, TrackState::Lost, better->phi, anchorless);
   EXPECT_FALSE(verifier.verifying(TrackState::Tracking));
   EXPECT_FALSE(verifier.verified());
+}
+
+TEST(LockVerifier, AnotherPoseOfTheSameObjectScoringAsWellStartsItAgainAndSaysSo)
+{
+  const Crab &c = crab();
+  Scored scored(c);
+  const pm::core::StereoFitness &fitness = scored.fitness;
+  pm::tracker::SearchParams sp;
+  const pm::rmga::RmGa anchorless(sp.space, sp.ga);
+  pm::tracker::VerifierParams vp;
+  vp.evaluations = 1200;
+  vp.switchMargin = 1.0; // never moves: the right pose the challenger finds can only be as good, not better
+  // A lock at the crab's place, turned 10 deg about its own z axis: the challenger finds the crab
+  // within sameObjectMm and farther than farDeg, scoring over the lock's q: ambiguous.
+  const vpHomogeneousMatrix turn(0, 0, 0, 0, 0, vpMath::rad(10));
+  const pm::core::Phi turned = pm::core::fromHomogeneousMatrix(pm::core::toHomogeneousMatrix(c.truth) * turn);
+  ASSERT_GT(pm::core::rotationDistanceDeg(turned, c.truth), vp.farDeg);
+  const pm::tracker::ScoredPose lock{turned, fitness.evaluate(turned)};
+  pm::tracker::LockVerifier verifier(vp, sp, fitness.scorer(), scored.scale);
+  verifier.onState(TrackState::Searching, TrackState::Tracking, turned, anchorless);
+  EXPECT_FALSE(verifier.lookingAgain());
+  for (int k = 0; k < 12 && !verifier.lookingAgain(); ++k)
+    EXPECT_FALSE(verifier.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), lock, anchorless).better.has_value());
+  EXPECT_TRUE(verifier.lookingAgain());
+  EXPECT_FALSE(verifier.verified());
+  EXPECT_TRUE(verifier.verifying(TrackState::Tracking)); // the whole verification again
+  // The next lock is verified afresh: no longer looking again.
+  verifier.onState(TrackState::Tracking, TrackState::Lost, turned, anchorless);
+  EXPECT_FALSE(verifier.lookingAgain());
+  verifier.onState(TrackState::Lost, TrackState::Tracking, c.truth, anchorless);
+  EXPECT_FALSE(verifier.lookingAgain());
 }
 
 TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
@@ -376,6 +408,9 @@ TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)
   pm::tracker::Verdict u = judgement.judge(refined, e, s);
   EXPECT_FALSE(u.trusted); // never trusted unverified, whatever its confidence
   EXPECT_STREQ(u.heldBy, "verification");
+  s.lookingAgain = true; // the challenger found another pose as good: the user is told so
+  EXPECT_STREQ(judgement.judge(refined, e, s).heldBy, "verification_ambiguous");
+  s.lookingAgain = false;
   EXPECT_LT(u.confidence, r.confidence);
   // The jump is measured from the last tracked pose, the drop from the recent best.
   pm::core::Phi last = c.truth;

@@ -100,6 +100,7 @@ void exampleJudgement(const pm::tracker::TrackerParams &params, const pm::core::
   state.recentBestQ = steady.recentBestQ();
   state.framesTracked = lock.framesTracked();
   state.verified = verifier.verified();
+  state.lookingAgain = verifier.lookingAgain();
   const pm::tracker::Verdict verdict = judgement.judge(refined, e, state);
   if (verdict.trusted)
     use(pm::core::toHomogeneousMatrix(refined.pose.phi));

@@ -139,7 +139,10 @@ Verdict Judgement::judge(const RefinedPose &refined, const Evidence &e, const Ju
   v.visibleShare = e.visibleShare;
   v.confidence = m_p.confidence.confidence(c);
   v.trusted = c.tracking && v.verified && v.confidence >= m_p.confidence.threshold;
-  v.heldBy = v.trusted ? nullptr : !c.tracking ? toString(state.state) : !v.verified ? "verification" : m_p.confidence.weakestCueName(c);
+  v.heldBy = v.trusted        ? nullptr
+             : !c.tracking    ? toString(state.state)
+             : !v.verified    ? (state.lookingAgain ? "verification_ambiguous" : "verification")
+                              : m_p.confidence.weakestCueName(c);
   return v;
 }
 

@@ -34,8 +34,9 @@ LockVerifier::LockVerifier(const VerifierParams &params, const SearchParams &sea
 {
 }
 
-void LockVerifier::start(const core::Phi &lock, const rmga::RmGa &ga)
+void LockVerifier::start(const core::Phi &lock, const rmga::RmGa &ga, bool again)
 {
+  m_lookingAgain = again;
   m_verified = m_p.evaluations == 0;
   m_left = m_p.evaluations;
   if (m_left == 0)
@@ -72,7 +73,7 @@ LockVerifier::Challenge LockVerifier::challenge(const core::HueFrame &frame, con
     return Challenge{c, ScoredPose{c.best, c.fitness}};
   }
   if (far && apartMm < m_p.sameObjectMm && qChallenger > q - m_p.margin)
-    start(pose, ga); // another pose of the same object scores as well: ambiguous, look again
+    start(pose, ga, true); // another pose of the same object scores as well: ambiguous, look again
   else if ((m_left -= std::min(m_left, c.evaluations)) == 0)
     m_verified = true;
   return Challenge{c, std::nullopt};
@@ -83,7 +84,7 @@ void LockVerifier::onState(TrackState prev, TrackState state, const core::Phi &p
   if (state == TrackState::Tracking && prev != TrackState::Tracking)
     start(pose, ga);
   else if (state != TrackState::Tracking)
-    m_verified = false, m_left = 0;
+    m_verified = false, m_left = 0, m_lookingAgain = false;
 }
 
 void LockVerifier::afterJudgement(TrackState state, double confidence, const core::Phi &pose, const rmga::RmGa &ga)
@@ -106,6 +107,7 @@ void LockVerifier::reset(bool verified)
 {
   m_left = 0;
   m_verified = verified;
+  m_lookingAgain = false;
   m_doubtfulFrames = 0;
 }
 

@@ -212,6 +212,7 @@ Verdict PhotoModelTracker::judge(const RefinedPose &refined, const Evidence &evi
   s.recentBestQ = m_steady.recentBestQ();
   s.framesTracked = m_lock.framesTracked();
   s.verified = m_verifier.verified();
+  s.lookingAgain = m_verifier.lookingAgain();
   return m_judgement.judge(refined, evidence, s);
 }
 

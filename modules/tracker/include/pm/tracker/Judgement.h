@@ -22,6 +22,7 @@
     state.recentBestQ = steady.recentBestQ();
     state.framesTracked = lock.framesTracked();
     state.verified = verifier.verified();
+    state.lookingAgain = verifier.lookingAgain();
     const pm::tracker::Verdict verdict = judgement.judge(refined, e, state);
     if (verdict.trusted)
       use(pm::core::toHomogeneousMatrix(refined.pose.phi));
@@ -75,6 +76,7 @@ struct JudgedState
   double recentBestQ = 0;          //!< SteadyFramePolicy::recentBestQ() after this frame
   int framesTracked = 0;           //!< LockState::framesTracked()
   bool verified = false;           //!< LockVerifier::verified()
+  bool lookingAgain = false;       //!< LockVerifier::lookingAgain(): the verification follows an ambiguity
 };
 
 //! The judgement (see the file's description). Keeps a reference to the scorer: it must outlive the judgement.

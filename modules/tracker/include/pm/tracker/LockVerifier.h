@@ -11,14 +11,15 @@
   - scoring over switchMargin (in q) above it: the tracker moves there (a wrong first lock), and
     verification starts again;
   - within sameObjectMm of it and scoring within margin under it (another pose of the same object
-    as good, e.g. the mirrored tilt): ambiguous, verification starts again;
+    as good, e.g. the mirrored tilt): ambiguous, verification starts again, and lookingAgain() says
+    so until the next lock (the frames it holds are "verification_ambiguous", not "verification");
   - otherwise (worse, or a twin elsewhere that scores the same): no objection.
   A lock that lasts \e evaluations evaluations of the challenger is verified. A verified lock whose
   confidence stays under reverifyBelowConfidence for reverifyAfterFrames tracked frames in a row is
   verified again (a wrong lock that the challenger missed, its confidence low).
 
   The verifier owns the challenger's population, the evaluations still to run, whether the lock is
-  verified and the count of doubtful frames.
+  verified, whether it is looking again after an ambiguity and the count of doubtful frames.
 
   \code
     pm::tracker::LockVerifier verifier(params.verifier, params.search, scorer, scale);
@@ -92,14 +93,20 @@ public:
   void afterJudgement(TrackState state, double confidence, const core::Phi &pose, const rmga::RmGa &ga);
 
   bool verified() const { return m_verified; } //!< the lock survived its challenger
+  /*!
+    The verification running now was started again because the challenger found another pose of the
+    same object scoring as well as the lock's (ambiguous); false from the next lock, the next start
+    for low confidence, or a reset.
+  */
+  bool lookingAgain() const { return m_lookingAgain; }
   //! The hand moved: a running challenger follows.
   void transform(const std::function<core::Phi(const core::Phi &)> &moved);
   //! A new start: nothing verified, nothing to verify (\e verified: a pose given, taken as verified).
   void reset(bool verified = false);
 
 private:
-  //! Verification from \e lock: the challenger around it, near \e ga's anchor.
-  void start(const core::Phi &lock, const rmga::RmGa &ga);
+  //! Verification from \e lock: the challenger around it, near \e ga's anchor (\e again: after an ambiguity).
+  void start(const core::Phi &lock, const rmga::RmGa &ga, bool again = false);
 
   VerifierParams m_p;
   bool m_coarse;           //!< the challenger scores its candidates on a quarter of the points (SearchParams::coarse)
@@ -109,6 +116,7 @@ private:
   rmga::RmGa m_challenger;
   long m_left = 0;          //!< evaluations of verification still to run
   bool m_verified = false;
+  bool m_lookingAgain = false; //!< the running verification follows an ambiguity (lookingAgain())
   int m_doubtfulFrames = 0; //!< tracked, verified frames in a row under reverifyBelowConfidence
 };
 

@@ -87,7 +87,9 @@ struct TrackResult
   bool trusted = false;
   /*!
     Why a frame is not trusted, for the user whose arm waits (null when trusted): the state
-    ("searching", "lost"), "verification" (a new lock awaits its challenger's search), or the cue
+    ("searching", "lost"), "verification" (a new lock awaits its challenger's search),
+    "verification_ambiguous" (the challenger found another pose of the same object scoring as well,
+    and searches again: LockVerifier::lookingAgain()), or the cue
     that lowers the confidence most below what a right pose reads (ConfidenceModel::weakestCue(): one
     of ConfidenceCues::featureNames(), "precise_residual_px", "separation", ...; "confidence" when no
     cue reads below a right pose's). A static string.
