@@ -369,6 +369,24 @@ TEST(LockVerifier, AnotherPoseOfTheSameObjectScoringAsWellStartsItAgainAndSaysSo
   EXPECT_FALSE(verifier.lookingAgain());
   verifier.onState(TrackState::Lost, TrackState::Tracking, c.truth, anchorless);
   EXPECT_FALSE(verifier.lookingAgain());
+  // A second opinion that takes both poses to one peak (here: the truth) dissolves the ambiguity:
+  // the verification goes on and ends; one that leaves them apart changes nothing.
+  const auto verifyWith = [&](const pm::tracker::LockVerifier::Settle &settle, int &onePeaks) {
+    pm::tracker::LockVerifier v(vp, sp, fitness.scorer(), scored.scale);
+    v.onState(TrackState::Searching, TrackState::Tracking, turned, anchorless);
+    onePeaks = 0;
+    for (int k = 0; k < 12 && !v.lookingAgain() && !v.verified(); ++k)
+      onePeaks += v.challenge(fitness.frame(), pm::rmga::FrameBudget::evals(400), lock, anchorless, settle).onePeak ? 1 : 0;
+    return v.verified() && !v.lookingAgain();
+  };
+  int onePeaks = 0;
+  int asked = 0;
+  EXPECT_TRUE(verifyWith([&](const pm::core::Phi &) { return ++asked, std::optional<pm::core::Phi>(c.truth); }, onePeaks));
+  EXPECT_GE(onePeaks, 1);
+  EXPECT_EQ(asked, 2 * onePeaks); // asked only on an ambiguity, for both poses
+  EXPECT_FALSE(verifyWith([](const pm::core::Phi &phi) { return std::optional<pm::core::Phi>(phi); }, onePeaks)); // the poses stay 10 deg apart
+  EXPECT_EQ(onePeaks, 0);
+  EXPECT_FALSE(verifyWith([](const pm::core::Phi &) { return std::optional<pm::core::Phi>(); }, onePeaks)); // no opinion: ambiguous
 }
 
 TEST(Judgement, TheFrameIsJudgedOnceFromItsEvidenceAndTheTrackersState)

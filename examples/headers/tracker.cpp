@@ -120,11 +120,13 @@ void exampleLockState(const pm::tracker::TrackerParams &params, double q, double
 // LockVerifier.h
 void exampleLockVerifier(const pm::tracker::TrackerParams &params, const pm::core::StereoScorer &scorer, const pm::core::HueFrame &frame, const pm::tracker::QualityScale &scale, pm::tracker::TrackState lastState, pm::tracker::TrackState prev, const pm::tracker::FramePlan &plan,
                          const pm::tracker::SearchedPose &searched, pm::tracker::SearchWork &work, const pm::tracker::ScoredPose &pose, pm::tracker::TrackState state,
-                         const pm::tracker::Verdict &verdict, const pm::tracker::PoseSearch &search)
+                         const pm::tracker::Verdict &verdict, const pm::tracker::PoseSearch &search, pm::tracker::RefinementChain &chain,
+                         const pm::core::CameraImages &images)
 {
   pm::tracker::LockVerifier verifier(params.verifier, params.search, scorer, scale);
+  const pm::tracker::LockVerifier::Settle settle = [&](const pm::core::Phi &phi) { return chain.settle(phi, images); }; // a second opinion
   if (verifier.verifying(lastState)) {
-    const pm::tracker::LockVerifier::Challenge c = verifier.challenge(frame, plan.challenger, searched.pose, search.ga());
+    const pm::tracker::LockVerifier::Challenge c = verifier.challenge(frame, plan.challenger, searched.pose, search.ga(), settle);
     work = work.plus(c.run);
     if (c.better)
       moveTo(*c.better); // a wrong first lock

@@ -53,8 +53,19 @@ void LockVerifier::start(const core::Phi &lock, const rmga::RmGa &ga, bool again
   m_challenger.restart(1, 1000000);
 }
 
+bool LockVerifier::onePeak(const core::Phi &challenger, const core::Phi &lock, const Settle &settle) const
+{
+  if (!settle)
+    return false;
+  const std::optional<core::Phi> a = settle(challenger);
+  if (!a)
+    return false;
+  const std::optional<core::Phi> b = settle(lock);
+  return b && core::translationDistanceMm(*a, *b) <= m_p.farMm / 2 && core::rotationDistanceDeg(*a, *b) <= m_p.farDeg / 2;
+}
+
 LockVerifier::Challenge LockVerifier::challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget, const ScoredPose &tracked,
-                                                const rmga::RmGa &ga)
+                                                const rmga::RmGa &ga, const Settle &settle)
 {
   const core::Phi &pose = tracked.phi;
   rmga::StereoObjective objective(m_scorer, frame, m_coarse ? rmga::StereoObjective::Score::Coarse : rmga::StereoObjective::Score::Fitness,
@@ -72,11 +83,14 @@ LockVerifier::Challenge LockVerifier::challenge(const core::HueFrame &frame, con
     start(c.best, ga);
     return Challenge{c, ScoredPose{c.best, c.fitness}};
   }
-  if (far && apartMm < m_p.sameObjectMm && qChallenger > q - m_p.margin)
-    start(pose, ga, true); // another pose of the same object scores as well: ambiguous, look again
+  // Another pose of the same object scores as well: ambiguous, look again, unless the second opinion
+  // takes both to one peak.
+  Challenge r{c, std::nullopt};
+  if (far && apartMm < m_p.sameObjectMm && qChallenger > q - m_p.margin && !(r.onePeak = onePeak(c.best, pose, settle)))
+    start(pose, ga, true);
   else if ((m_left -= std::min(m_left, c.evaluations)) == 0)
     m_verified = true;
-  return Challenge{c, std::nullopt};
+  return r;
 }
 
 void LockVerifier::onState(TrackState prev, TrackState state, const core::Phi &pose, const rmga::RmGa &ga)

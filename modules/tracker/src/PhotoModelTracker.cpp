@@ -90,7 +90,7 @@ TrackResult PhotoModelTracker::track(const core::CameraImages &images)
   RmGaUpdate update;
   const SearchedPose found = search(frame, images, clock);                       // 2. RM-GA (escalated if a steady frame falls)
   at[1] = clock.ms();
-  const SearchedPose searched = challenge(frame, found, update);                // 3. the lock verifier's challenger, if verifying
+  const SearchedPose searched = challenge(frame, found, images, update);        // 3. the lock verifier's challenger, if verifying
   at[2] = clock.ms();
   const bool locked = m_scale.quality(searched.pose.fitness) >= m_params.lock.quality;
   const RefinedPose refined = m_refinement.refine(hues, searched.pose, m_history, images, locked); // 4. the refinement chain
@@ -159,11 +159,14 @@ SearchedPose PhotoModelTracker::search(const FramePlan &frame, const core::Camer
   return s;
 }
 
-SearchedPose PhotoModelTracker::challenge(const FramePlan &frame, const SearchedPose &searched, RmGaUpdate &update)
+SearchedPose PhotoModelTracker::challenge(const FramePlan &frame, const SearchedPose &searched, const core::CameraImages &images,
+                                          RmGaUpdate &update)
 {
   if (!frame.verifying)
     return searched;
-  const LockVerifier::Challenge c = m_verifier.challenge(m_fitness.frame(), frame.challenger, searched.pose, m_search.ga());
+  // The second opinion on an ambiguity: where the precise stage settles (two pointers: no allocation).
+  const LockVerifier::Settle settle = [this, &images](const core::Phi &phi) { return m_refinement.settle(phi, images); };
+  const LockVerifier::Challenge c = m_verifier.challenge(m_fitness.frame(), frame.challenger, searched.pose, m_search.ga(), settle);
   SearchedPose s = searched;
   s.work = s.work.plus(c.run);
   if (!c.better)

@@ -94,4 +94,13 @@ PreciseRefinement::Attempt PreciseRefinement::refine(const core::HueFrame &frame
   return a;
 }
 
+std::optional<core::Phi> PreciseRefinement::settle(const core::Phi &start, const core::CameraImages &images)
+{
+  if (!m_stage)
+    return std::nullopt;
+  m_stage->setImages(images);
+  const precise::PreciseResult r = m_stage->refine(start, false, false);
+  return r.ok ? std::optional<core::Phi>(r.phi) : std::nullopt;
+}
+
 } // namespace pm::tracker

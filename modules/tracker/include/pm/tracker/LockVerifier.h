@@ -12,7 +12,10 @@
     verification starts again;
   - within sameObjectMm of it and scoring within margin under it (another pose of the same object
     as good, e.g. the mirrored tilt): ambiguous, verification starts again, and lookingAgain() says
-    so until the next lock (the frames it holds are "verification_ambiguous", not "verification");
+    so until the next lock (the frames it holds are "verification_ambiguous", not "verification"),
+    unless a second opinion (\e settle: the precise stage's lines, which the hue fitness does not
+    see) takes both poses to one peak, within farMm / 2 and farDeg / 2 of each other (through soft
+    light the fitness has peaks 5-10 deg apart that score alike: docs/trust.md);
   - otherwise (worse, or a twin elsewhere that scores the same): no objection.
   A lock that lasts \e evaluations evaluations of the challenger is verified. A verified lock whose
   confidence stays under reverifyBelowConfidence for reverifyAfterFrames tracked frames in a row is
@@ -23,8 +26,9 @@
 
   \code
     pm::tracker::LockVerifier verifier(params.verifier, params.search, scorer, scale);
+    const pm::tracker::LockVerifier::Settle settle = [&](const pm::core::Phi &phi) { return chain.settle(phi, images); }; // a second opinion
     if (verifier.verifying(lastState)) {
-      const pm::tracker::LockVerifier::Challenge c = verifier.challenge(frame, plan.challenger, searched.pose, search.ga());
+      const pm::tracker::LockVerifier::Challenge c = verifier.challenge(frame, plan.challenger, searched.pose, search.ga(), settle);
       work = work.plus(c.run);
       if (c.better)
         moveTo(*c.better); // a wrong first lock
@@ -33,6 +37,7 @@
     verifier.afterJudgement(state, verdict.confidence, pose.phi, search.ga()); // a doubtful lock again
   \endcode
 */
+#include <functional>
 #include <optional>
 
 #include "pm/core/StereoScorer.h"
@@ -81,12 +86,17 @@ public:
   {
     rmga::FrameResult run;           //!< its search (its work; its best scored on every point)
     std::optional<ScoredPose> better; //!< a better pose elsewhere, with its F, when the challenger takes over
+    bool onePeak = false;            //!< an ambiguity that the second opinion took to the lock's peak (no objection)
   };
+  //! A second opinion on a pose: where another cue settles from it (RefinementChain::settle, the precise stage), or nothing.
+  using Settle = std::function<std::optional<core::Phi>(const core::Phi &)>;
   /*!
     The challenger's search on \e frame within \e budget, against the tracker's pose \e pose. When it
-    takes over, verification starts again from its pose, near \e ga's anchor.
+    takes over, verification starts again from its pose, near \e ga's anchor. \e settle (may be
+    empty: no second opinion) is asked only on an ambiguity.
   */
-  Challenge challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget, const ScoredPose &pose, const rmga::RmGa &ga);
+  Challenge challenge(const core::HueFrame &frame, const rmga::FrameBudget &budget, const ScoredPose &pose, const rmga::RmGa &ga,
+                      const Settle &settle = nullptr);
   //! After the frame's state: a new lock (\e prev not tracking) is verified on the next frames; a target not tracked is no longer verified.
   void onState(TrackState prev, TrackState state, const core::Phi &pose, const rmga::RmGa &ga);
   //! After the judgement: a verified, tracked lock of low \e confidence for long is verified again.
@@ -105,6 +115,8 @@ public:
   void reset(bool verified = false);
 
 private:
+  //! \e settle takes \e challenger and \e lock to one peak (within farMm / 2 and farDeg / 2); false without \e settle.
+  bool onePeak(const core::Phi &challenger, const core::Phi &lock, const Settle &settle) const;
   //! Verification from \e lock: the challenger around it, near \e ga's anchor (\e again: after an ambiguity).
   void start(const core::Phi &lock, const rmga::RmGa &ga, bool again = false);
 

@@ -149,7 +149,7 @@ private:
   //! 2. RM-GA within the plan's budget, escalated when a steady frame's q falls.
   SearchedPose search(const FramePlan &plan, const core::CameraImages &images, const Clock &clock);
   //! 3. The lock verifier's challenger when the plan says so: \e searched, or the better pose it moved to (then \e update reseeds RM-GA).
-  SearchedPose challenge(const FramePlan &plan, const SearchedPose &searched, RmGaUpdate &update);
+  SearchedPose challenge(const FramePlan &plan, const SearchedPose &searched, const core::CameraImages &images, RmGaUpdate &update);
   //! Before 5: on a windowed frame, the hue under \e phi and its competitors, which the judgement scores on the whole images.
   void completeHue(const FramePlan &plan, const SearchedPose &searched, const core::Phi &phi, const core::CameraImages &images);
   //! 6. The lock's state from \e pose's q (a plainly wrong new lock refused); returns its restart of RM-GA.

@@ -26,6 +26,7 @@
   \endcode
 */
 #include <memory>
+#include <optional>
 
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
@@ -97,6 +98,12 @@ public:
   */
   Attempt refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const core::Phi &predicted,
                  const core::CameraImages &images);
+  /*!
+    Where the stage settles from \e start on \e images (from afar: every scale; not looking for hidden
+    lines), or nothing when it finds no result. For a second opinion on a pose (the lock verifier's
+    ambiguities), not a frame's pose: neither the acceptance rule nor the range correction applies.
+  */
+  std::optional<core::Phi> settle(const core::Phi &start, const core::CameraImages &images);
   //! The scene's colours along the outline at \e phi, a trusted pose as the stage found it (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
   //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).

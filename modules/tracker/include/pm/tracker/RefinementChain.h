@@ -74,6 +74,8 @@ public:
   //! The background's hue learnt (BackgroundLearning): the precise stage's hidden lines compare with it.
   void setBackgroundHue(double deg) { m_precise.setBackgroundHue(deg); }
 
+  //! Where the precise stage settles from \e start (PreciseRefinement::settle); nothing without the stage.
+  std::optional<core::Phi> settle(const core::Phi &start, const core::CameraImages &images) { return m_precise.settle(start, images); }
   const PreciseRefinement &precise() const { return m_precise; } //!< stage 1
   const TiltFilterParams &tiltFilter() const { return m_tiltParams; } //!< stage 3's parameters for this model
 
