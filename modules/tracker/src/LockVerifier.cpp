@@ -85,8 +85,10 @@ LockVerifier::Challenge LockVerifier::challenge(const core::HueFrame &frame, con
   }
   // Another pose of the same object scores as well: ambiguous, look again, unless the second opinion
   // takes both to one peak.
+  const bool asGood = far && apartMm < m_p.sameObjectMm && qChallenger > q - m_p.margin;
   Challenge r{c, std::nullopt};
-  if (far && apartMm < m_p.sameObjectMm && qChallenger > q - m_p.margin && !(r.onePeak = onePeak(c.best, pose, settle)))
+  r.onePeak = asGood && onePeak(c.best, pose, settle);
+  if (asGood && !r.onePeak)
     start(pose, ga, true);
   else if ((m_left -= std::min(m_left, c.evaluations)) == 0)
     m_verified = true;
