@@ -414,6 +414,44 @@ TEST(ViSPRobotArm, ARobotStoppedWithAJointOnItsLimitSaysWhichJoint)
   EXPECT_TRUE(robot.stopped);
 }
 
+TEST(ViSPRobotArm, ACommandThatLastsLongerThanMeantStopsShortOfAJointsLimit)
+{
+  // A velocity command lasts until the next: a frame late by most of the horizon (a program
+  // descheduled on a loaded machine) must not carry a joint onto its limit, where ViSP's
+  // simulators stop the arm. Away from the limit, and on the other joints, the command is sent as asked.
+  FakeRobot robot;
+  pm::robot::ViSPRobotArmParams params;
+  pm::robot::ViSPRobotArm arm(robot, pm::robot::makeArmModel("viper850"), vpHomogeneousMatrix(), params);
+  const vpColVector hi = arm.model().jointMax(), lo = arm.model().jointMin();
+  robot.q = arm.model().restJoints();
+  robot.q[2] = hi[2] - 0.1;
+  robot.q[1] = lo[1] + 0.05;
+  vpColVector qd(6, 0.0);
+  qd[2] = 1.0;  // toward joint 3's upper limit: there in 0.1 s unbounded
+  qd[1] = 0.3;  // away from joint 2's lower limit
+  qd[0] = -0.2; // joint 1, far from its limits
+  arm.setJointVelocity(qd);
+  EXPECT_NEAR(robot.qdot[2], 0.1 / params.limitHorizonS, 1e-12);
+  EXPECT_EQ(robot.qdot[1], 0.3);
+  EXPECT_EQ(robot.qdot[0], -0.2);
+  EXPECT_EQ(arm.commanded(), robot.qdot); // what was sent
+  robot.run(0.9 * params.limitHorizonS);
+  EXPECT_LT(robot.q[2], hi[2]);
+  EXPECT_GT(robot.q[2], hi[2] - 0.1); // it does move toward it
+  // Toward joint 2's lower limit, 0.05 rad away: bounded the same way.
+  qd = 0.0;
+  qd[1] = -2.0;
+  robot.q[1] = lo[1] + 0.05;
+  arm.setJointVelocity(qd);
+  EXPECT_NEAR(robot.qdot[1], -0.05 / params.limitHorizonS, 1e-12);
+  // On the limit: nothing toward it.
+  robot.q[2] = hi[2];
+  qd = 0.0;
+  qd[2] = 0.5;
+  arm.setJointVelocity(qd);
+  EXPECT_EQ(robot.qdot[2], 0.0);
+}
+
 TEST(ViSPRobotArm, MovesByVelocityOntoTheGoalWithinItsSpeedLimitsWhateverTheControllersGain)
 {
   // ViSPRobotArmParams::moveByVelocity (what ViSP's simulators need): a closed loop, so a robot

@@ -18,9 +18,10 @@ ViSPRobotArm::ViSPRobotArm(vpRobot &robot, std::unique_ptr<ArmModel> model, cons
 {
   // ViSP's simulators' setPosition() in joint space races their own thread: always our velocity loop.
   m_params.moveByVelocity = params.moveByVelocity || dynamic_cast<vpRobotWireFrameSimulator *>(&robot) != nullptr;
-  if (!(params.stallS > 0 && params.positionTolerance > 0))
-    throw core::Error(m_model->title() + ": the stall time and the position tolerance must be positive");
+  if (!(params.stallS > 0 && params.positionTolerance > 0 && params.limitHorizonS > 0))
+    throw core::Error(m_model->title() + ": the stall time, the position tolerance and the limits' horizon must be positive");
   m_command.resize(m_model->dof(), true);
+  m_asked = m_command;
 }
 
 ViSPRobotArm::~ViSPRobotArm()
@@ -64,18 +65,35 @@ void ViSPRobotArm::setJointVelocity(const vpColVector &qdot)
   for (unsigned i = 0; i < qdot.size(); ++i)
     if (!std::isfinite(qdot[i]))
       fail("the commanded velocity of joint " + std::to_string(i + 1) + " is not finite");
+  const vpColVector sent = boundedNearLimits(qdot, q());
   try {
     if (m_robot.getRobotState() != vpRobot::STATE_VELOCITY_CONTROL) {
       io::QuietStdout quiet; // ViSP's robots say so on std::cout
       m_robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
     }
-    m_robot.setVelocity(vpRobot::JOINT_STATE, qdot);
+    m_robot.setVelocity(vpRobot::JOINT_STATE, sent);
   } catch (const vpException &e) {
     fail("the robot refused the velocity command (" + e.getStringMessage() + ")");
   }
-  m_command = qdot;
+  m_command = sent;
+  m_asked = qdot;
   if (m_tickMs < 0)
     m_tickMs = vpTime::measureTimeMs();
+}
+
+vpColVector ViSPRobotArm::boundedNearLimits(const vpColVector &qdot, const vpColVector &q) const
+{
+  // Toward a limit at most the distance to it over the horizon: the joint would take the horizon
+  // (at least) to reach it under this command, and slows down as it nears it.
+  const vpColVector lo = m_model->jointMin(), hi = m_model->jointMax();
+  vpColVector v = qdot;
+  for (unsigned i = 0; i < v.size(); ++i) {
+    if (v[i] > 0)
+      v[i] = std::min(v[i], std::max(hi[i] - q[i], 0.0) / m_params.limitHorizonS);
+    else if (v[i] < 0)
+      v[i] = std::max(v[i], -std::max(q[i] - lo[i], 0.0) / m_params.limitHorizonS);
+  }
+  return v;
 }
 
 std::string ViSPRobotArm::stallReason(const vpColVector &q) const
@@ -85,7 +103,7 @@ std::string ViSPRobotArm::stallReason(const vpColVector &q) const
   const vpColVector lo = m_model->jointMin(), hi = m_model->jointMax();
   for (unsigned i = 0; i < q.size(); ++i) {
     const double margin = m_model->prismatic(i) ? 1e-3 : M_PI / 180;
-    if ((q[i] <= lo[i] + margin && m_command[i] < 0) || (q[i] >= hi[i] - margin && m_command[i] > 0))
+    if ((q[i] <= lo[i] + margin && m_asked[i] < 0) || (q[i] >= hi[i] - margin && m_asked[i] > 0))
       return "the robot stopped: " + m_model->describeJoint(i, q) + " is on its limit, and the servo drove it on";
   }
   return "the robot does not answer: its joints have not moved for " + std::to_string(m_stillS) + " s under a velocity command";
@@ -101,7 +119,7 @@ void ViSPRobotArm::advance(double dt)
   m_tickMs += 1e3 * dt;
   // A commanded motion must move the joints: otherwise the robot does not answer.
   const vpColVector now = q();
-  const bool commanding = m_command.frobeniusNorm() > 1e-6;
+  const bool commanding = m_asked.frobeniusNorm() > 1e-6; // asked: a joint held at its limit while the servo drives it on stalls too
   if (commanding && m_lastQ.size() == now.size() && (now - m_lastQ).frobeniusNorm() == 0.0) {
     m_stillS += dt;
     if (m_stillS >= m_params.stallS)
@@ -128,6 +146,7 @@ void ViSPRobotArm::moveTo(const vpColVector &goal)
     if (std::fabs(reached[i] - goal[i]) > m_params.positionTolerance)
       fail("it stopped at " + m_model->describeJoint(i, reached) + " short of the position asked");
   m_command = 0;
+  m_asked = 0;
   m_lastQ = reached;
   m_tickMs = -1;
   m_stillS = 0;
@@ -174,6 +193,7 @@ void ViSPRobotArm::driveTo(const vpColVector &goal)
 void ViSPRobotArm::stop()
 {
   m_command = 0;
+  m_asked = 0;
   try {
     if (m_robot.getRobotState() == vpRobot::STATE_VELOCITY_CONTROL)
       m_robot.setVelocity(vpRobot::JOINT_STATE, m_command);

@@ -7,6 +7,9 @@
   getPosition(JOINT_STATE), positions reached in position control. Its kinematics (for the
   pass's inverse kinematics and the servo's Jacobian) come from an ArmModel that matches it.
 
+  Each velocity command is bounded near the joints' limits (ViSPRobotArmParams::limitHorizonS), so
+  that a command that lasts longer than meant does not carry a joint onto its limit.
+
   A robot that does not answer (an exception, joints of the wrong size or not finite, or joints
   that do not move for ViSPRobotArmParams::stallS while a motion is commanded: the error names a
   joint on its limit when one is there) stops the arm and throws pm::core::Error: the loop that drives
@@ -23,6 +26,13 @@ struct ViSPRobotArmParams
 {
   double stallS = 1.0;           //!< a commanded motion that moves no joint for this long means the robot does not answer (s)
   double positionTolerance = 1e-3; //!< moveTo() fails when a joint ends farther than this from its goal (rad or m)
+  /*!
+    A joint's velocity toward its limit is at most its distance to that limit over this (s), as it
+    reads when the command is sent. The command persists until the next one: a frame this late (the
+    program descheduled on a loaded machine) still stops short of the limit, where ViSP's simulators
+    would stop the arm (and their integrator can then read joints that are not finite).
+  */
+  double limitHorizonS = 0.5;
   /*!
     moveTo() through joint velocities in our own loop (each joint at most at its model's speed
     limit, slowing down proportionally near its goal) instead of the robot's vpRobot::setPosition().
@@ -56,6 +66,7 @@ public:
   ~ViSPRobotArm() override;
   vpColVector q() override;
   vpColVector commanded() const override { return m_command; }
+  //! Sends \e qdot, each joint's velocity toward its limit bounded (ViSPRobotArmParams::limitHorizonS); commanded() is what was sent.
   void setJointVelocity(const vpColVector &qdot) override;
   //! Waits until \e dt seconds after the end of the last advance() (or the first command), then checks the robot moves.
   void advance(double dt) override;
@@ -71,11 +82,13 @@ public:
 private:
   [[noreturn]] void fail(const std::string &what);
   std::string stallReason(const vpColVector &q) const; //!< why the joints do not move: a joint on its limit, or no answer
+  vpColVector boundedNearLimits(const vpColVector &qdot, const vpColVector &q) const; //!< \e qdot, its joints' velocities toward their limits bounded
   void setPosition(const vpColVector &goal);   //!< through vpRobot::setPosition()
   void driveTo(const vpColVector &goal);       //!< through joint velocities (moveByVelocity)
   vpRobot &m_robot;
   ViSPRobotArmParams m_params;
   vpColVector m_command, m_lastQ;
+  vpColVector m_asked;     //!< the last velocity asked of setJointVelocity(), before boundedNearLimits(): a stall is judged on it
   double m_tickMs = -1;    //!< the end of the last advance() (vpTime ms; -1: none yet)
   double m_stillS = 0;     //!< how long the joints have not moved under a motion command (s)
 };
