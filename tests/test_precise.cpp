@@ -123,6 +123,42 @@ TEST(ColourHistograms, PosteriorsFollowTheCountsAndLearnAtTheirRate)
             std::string::npos);
 }
 
+TEST(PreciseStage, ColoursLearntAsideAreMeasuredWithOnlyOnceTakenAndThenAreWhatLearningThemGives)
+{
+  // A new lock's frames are learnt aside until the verifier accepts it (RefinementChain::learn):
+  // the stage measures with the colours in use meanwhile; taken, they are what learnColours() on the
+  // same frames gives; dropped, nothing of them stays.
+  const LabTarget &t = crab();
+  const vpHomogeneousMatrix hMo(0.012, -0.008, 0.51, vpMath::rad(15), vpMath::rad(-10), vpMath::rad(5));
+  const pm::sim::StereoImages im = t.scene.renderStereo(rig(), hMo, 0);
+  const pm::core::Phi truth = t.model.truth(hMo);
+  pm::precise::PreciseStage aside(rig(), t.model.build.model), direct(rig(), t.model.build.model);
+  aside.setImages({im.left, im.right});
+  direct.setImages({im.left, im.right});
+  const std::vector<float> model = aside.colours().foreground(), modelB = aside.colours().background();
+  aside.learnColoursAside(truth);
+  aside.learnColoursAside(truth);
+  EXPECT_TRUE(aside.hasColoursLearntAside());
+  EXPECT_EQ(aside.colours().foreground(), model); // measured with the model's meanwhile
+  EXPECT_EQ(aside.colours().background(), modelB);
+  const pm::precise::PreciseResult before = aside.refine(truth, true);
+  aside.takeColoursLearntAside();
+  EXPECT_FALSE(aside.hasColoursLearntAside());
+  direct.learnColours(truth);
+  direct.learnColours(truth);
+  EXPECT_NE(direct.colours().foreground(), model); // the frames do teach something
+  EXPECT_EQ(aside.colours().foreground(), direct.colours().foreground());
+  EXPECT_EQ(aside.colours().background(), direct.colours().background());
+  EXPECT_NE(aside.refine(truth, true).residualPx, before.residualPx); // now measured with them
+  // Dropped: the colours in use stay as they were.
+  const std::vector<float> taken = aside.colours().foreground();
+  aside.learnColoursAside(pm::core::applyTwist(truth, std::array<double, 6>{30, 0, 0, 0, 0, 0}.data()));
+  aside.dropColoursLearntAside();
+  EXPECT_FALSE(aside.hasColoursLearntAside());
+  aside.takeColoursLearntAside(); // nothing aside: nothing changes
+  EXPECT_EQ(aside.colours().foreground(), taken);
+}
+
 TEST(PreciseStage, TheLinesGradientAndHessianAreTheObjectivesOnesAtAnyPose)
 {
   // L(phi) = -sum_i w (mu_i - d_i(phi))^2 / (2 var_i) over the lines measured once; its gradient and

@@ -78,7 +78,11 @@ PreciseStage::PreciseStage(const core::CameraRig &rig, const core::PhotoModel &m
   resetColours();
 }
 
-void PreciseStage::resetColours() { m_colours.start(m_modelF, m_modelB); }
+void PreciseStage::resetColours()
+{
+  m_colours.start(m_modelF, m_modelB);
+  m_aside = false;
+}
 
 const LineCamera *PreciseStage::partner(std::size_t k) const
 {
@@ -332,6 +336,26 @@ void PreciseStage::learnColours(const core::Phi &phi, bool lookForHidden)
   for (std::size_t k = 0; k < m_nCams; ++k)
     m_lines[k]->collectColours(m_cams[k], m_outlines, phi, m_colours, m_params.lines, m_params.histogramSkipPx, m_params.histogramMaxPx);
   m_colours.update(m_params.learningRate, m_params.learningRate);
+}
+
+void PreciseStage::learnColoursAside(const core::Phi &phi, bool lookForHidden)
+{
+  if (!m_hasImages || !phi.isValid())
+    return;
+  if (!m_aside) {
+    m_asideColours = m_colours; // the same sizes after the first time: no allocation
+    m_aside = true;
+  }
+  std::swap(m_colours, m_asideColours); // learnColours() blends into m_colours
+  learnColours(phi, lookForHidden);
+  std::swap(m_colours, m_asideColours);
+}
+
+void PreciseStage::takeColoursLearntAside()
+{
+  if (m_aside)
+    std::swap(m_colours, m_asideColours);
+  m_aside = false;
 }
 
 } // namespace pm::precise

@@ -228,7 +228,7 @@ void PhotoModelTracker::afterJudgement(const RefinedPose &refined, const Verdict
     update.anchor = refined.pose.phi;
   m_search.apply(update); // RM-GA's changes, in one place; the verifier below starts from the population they leave
   m_verifier.afterJudgement(m_lock.state(), verdict.confidence, refined.pose.phi, m_search.ga());
-  m_refinement.learn(refined, verdict);
+  m_refinement.learn(refined, verdict, {m_lock.state() == TrackState::Tracking, m_verifier.verified(), m_verifier.lookingAgain()});
 }
 
 TrackResult PhotoModelTracker::assembled(const SearchedPose &searched, const RefinedPose &refined, TrackState state, const Verdict &verdict,

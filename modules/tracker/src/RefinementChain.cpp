@@ -53,10 +53,19 @@ RefinedPose RefinementChain::refine(const core::HueFrame &frame, const ScoredPos
   return r;
 }
 
-void RefinementChain::learn(const RefinedPose &refined, const Verdict &verdict)
+void RefinementChain::learn(const RefinedPose &refined, const Verdict &verdict, const LockStanding &lock)
 {
-  if (refined.precise && verdict.trusted) // the scene's colours along the outline, where the pose is trusted
-    m_precise.learnColours(refined.preciseResult.phi); // where the stage itself put the outline
+  if (!lock.tracking || lock.lookingAgain) { // the lock lost, or another pose scores as well: not known right
+    m_precise.dropColoursLearntAside();
+    return;
+  }
+  const core::Phi &phi = refined.preciseResult.phi; // where the stage itself put the outline
+  if (refined.precise && verdict.trusted)           // the scene's colours along the outline, where the pose is trusted
+    m_precise.learnColours(phi);
+  else if (refined.precise && !verdict.verified) // a new lock awaiting its verification
+    m_precise.learnColoursAside(phi);
+  if (lock.verified) // accepted: its verification's colours are the scene's
+    m_precise.takeColoursLearntAside();
 }
 
 } // namespace pm::tracker

@@ -167,7 +167,18 @@ public:
     (PreciseParams::occlusion), unless \e lookForHidden is false (refine()'s).
   */
   void learnColours(const core::Phi &phi, bool lookForHidden = true);
-  //! Back to the model's colour histograms (or none).
+  /*!
+    The same as learnColours(), into colours kept aside (from the ones in use at the first such
+    call): the stage measures with the colours in use until takeColoursLearntAside(). For frames of
+    a pose not yet known right (a new lock awaiting its verification), kept once it is known right.
+  */
+  void learnColoursAside(const core::Phi &phi, bool lookForHidden = true);
+  //! The colours learnt aside, if any, become the ones in use.
+  void takeColoursLearntAside();
+  //! The colours learnt aside, if any, are forgotten.
+  void dropColoursLearntAside() { m_aside = false; }
+  bool hasColoursLearntAside() const { return m_aside; } //!< learnColoursAside() since the last take or drop
+  //! Back to the model's colour histograms (or none); the colours learnt aside forgotten.
   void resetColours();
   const ColourHistograms &colours() const { return m_colours; }                    //!< the colour statistics
   const CorrespondenceLines &lines(int camera) const { return *m_lines[static_cast<std::size_t>(camera)]; } //!< the last measurement
@@ -199,6 +210,8 @@ private:
   std::unique_ptr<InteriorTerm> m_interior; //!< null: off, or a model without colours
   std::array<InteriorSamples, kMax> m_samples;  //!< each camera's interior samples of the last measurement (one camera's refine: [0] and [1], its points' two halves)
   ColourHistograms m_colours;
+  ColourHistograms m_asideColours; //!< learnColoursAside()'s, while m_aside
+  bool m_aside = false;
   std::vector<float> m_modelF, m_modelB;
   bool m_hasImages = false;
 };

@@ -26,7 +26,7 @@
    7. judge: the confidence, the trust, the uncertainty;
    8. after the judgement: what the parts asked of RM-GA's population (RmGaUpdate.h), in one place;
       then a doubtful lock is verified again, from the population that leaves; the precise stage
-      learns the colours of a trusted frame;
+      learns the colours of a trusted frame (and a new lock's aside until it is verified);
    9. background: a trusted frame teaches the background's hue as seen now (BackgroundLearning.h);
       the scoring takes it when it has moved away from the photos'.
   The pose the frame reports is the precise stage's less the model's own error at the pass's views

@@ -13,7 +13,7 @@
   Its acceptance rule: a result is kept when it moved less than maxMoveMm and maxMoveDeg from its
   start and F there is not under the frame's F by more than maxDropQ (in q): the outline's peak lies
   on F's plateau, a divergence (colours that do not separate, a wrong start) leaves it. A kept pose
-  is final: the chain ends with it, and it joins RM-GA's population. Colours are learnt on trusted frames.
+  is final: the chain ends with it, and it joins RM-GA's population. Colours are learnt on trusted frames (a new lock's aside until it is verified).
 
   \code
     pm::tracker::PreciseRefinement stage(params.refinement.precise, rig, model, scorer, scale);
@@ -106,6 +106,20 @@ public:
   std::optional<core::Phi> settle(const core::Phi &start, const core::CameraImages &images);
   //! The scene's colours along the outline at \e phi, a trusted pose as the stage found it (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
+  //! The same, kept aside until takeColoursLearntAside() (precise::PreciseStage::learnColoursAside): a pose not yet known right.
+  void learnColoursAside(const core::Phi &phi) { m_stage->learnColoursAside(phi, m_lookedForHidden); }
+  //! The colours learnt aside become the ones in use (none: nothing changes).
+  void takeColoursLearntAside()
+  {
+    if (m_stage)
+      m_stage->takeColoursLearntAside();
+  }
+  //! The colours learnt aside are forgotten.
+  void dropColoursLearntAside()
+  {
+    if (m_stage)
+      m_stage->dropColoursLearntAside();
+  }
   //! The background's hue the stage's hidden lines compare with (deg): the fitness's (BackgroundLearning).
   void setBackgroundHue(double deg)
   {

@@ -65,8 +65,23 @@ public:
   */
   RefinedPose refine(const core::HueFrame &frame, const ScoredPose &searched, const PoseHistory &history, const core::CameraImages &images,
                      bool locked);
-  //! After the judgement: the precise stage learns the colours along the outline of \e refined when it is the stage's and trusted.
-  void learn(const RefinedPose &refined, const Verdict &verdict);
+  //! Where the lock stands after the verifier's turn on a frame (RefinementChain::learn).
+  struct LockStanding
+  {
+    bool tracking = false;     //!< a lock is tracked
+    bool verified = false;     //!< the verifier has accepted it (LockVerifier::verified)
+    bool lookingAgain = false; //!< the verifier found another pose scoring as well and looks again (LockVerifier::lookingAgain)
+  };
+  /*!
+    After the judgement (\e verdict) and the verifier's turn (\e lock): what the precise stage learns
+    of the scene's colours along the outline of \e refined, when the pose is the stage's.
+    - A trusted frame's colours are learnt.
+    - A frame of a new lock that awaits its verification (not verified when judged, no ambiguity)
+      is learnt aside; once the verifier accepts the lock, those colours are taken, the frame that
+      completed it included: the lock's first trusted frame is measured with the colours of its
+      whole verification, not with the model's alone. A lock lost, or an ambiguity, forgets them.
+  */
+  void learn(const RefinedPose &refined, const Verdict &verdict, const LockStanding &lock);
   //! The hand moved by \e hNowMhPrev: the tilt filter's state follows.
   void transform(const vpHomogeneousMatrix &hNowMhPrev) { m_tilt.transform(hNowMhPrev); }
   //! A new start, or a jump to another pose: the tilt filter starts again.
