@@ -26,6 +26,7 @@
 #include "pm/precise/PreciseStage.h"
 #include "pm/sim/Scene.h"
 #include "pm/sim/TargetCatalog.h"
+#include "pm/tracker/PhotoModelTracker.h"
 
 namespace {
 
@@ -157,6 +158,52 @@ TEST(PreciseStage, ColoursLearntAsideAreMeasuredWithOnlyOnceTakenAndThenAreWhatL
   EXPECT_FALSE(aside.hasColoursLearntAside());
   aside.takeColoursLearntAside(); // nothing aside: nothing changes
   EXPECT_EQ(aside.colours().foreground(), taken);
+}
+
+TEST(PreciseStage, ANewLocksVerificationTeachesTheColoursOnlyOnceTheVerifierAcceptsIt)
+{
+  // The lab's crab still, found from scratch: its lock's first frames are held by the verification.
+  // Meanwhile the precise stage measures with the model's colours; the frame in which the verifier
+  // accepts the lock is measured with those frames' colours (RefinementChain::learn, lockAccepted).
+  // Against the same run with a confidence floor no frame reaches (nothing learnt aside): the same
+  // frames until then, to the bit, and another residual in that frame.
+  const LabTarget &t = crab();
+  const vpHomogeneousMatrix hMo(0.005, -0.01, 0.5, vpMath::rad(10), vpMath::rad(-5), 0);
+  const std::vector<float> &model = t.model.build.model.foregroundHistogram;
+  struct Frame
+  {
+    std::string heldBy;
+    double residualPx;
+    bool modelColours; //!< the stage's colours the model's at the frame's end
+  };
+  std::vector<Frame> runs[2];
+  for (const int run : {0, 1}) {
+    pm::tracker::TrackerParams p;
+    p.search.budgetEvaluations = 800;
+    p.refinement.precise.learnAsideMinConfidence = run == 0 ? 0.5 : 1.0;
+    pm::tracker::PhotoModelTracker tracker(rig(), t.model.build.model, p);
+    ASSERT_NE(tracker.preciseStage(), nullptr);
+    for (int k = 0; k < 40; ++k) {
+      const pm::sim::StereoImages im = t.scene.renderStereo(rig(), hMo, static_cast<std::uint64_t>(k));
+      const pm::tracker::TrackResult r = tracker.track(im.left, im.right);
+      runs[run].push_back({r.heldBy ? r.heldBy : "", r.cues.preciseResidualPx, tracker.preciseStage()->colours().foreground() == model});
+      if (r.trusted)
+        break;
+    }
+  }
+  const std::vector<Frame> &aside = runs[0], &none = runs[1];
+  // The case: a lock held by its verification, then accepted and trusted in the same frame.
+  const auto verifying = std::count_if(aside.begin(), aside.end(), [](const Frame &f) { return f.heldBy == "verification"; });
+  ASSERT_GT(verifying, 1);
+  ASSERT_TRUE(aside.back().heldBy.empty()); // trusted
+  const std::size_t accepted = aside.size() - 1;
+  ASSERT_EQ(none.size(), aside.size());
+  for (std::size_t k = 0; k < accepted; ++k) { // measured with the model's colours meanwhile
+    EXPECT_EQ(aside[k].heldBy, none[k].heldBy) << k;
+    EXPECT_EQ(aside[k].residualPx, none[k].residualPx) << k;
+    EXPECT_TRUE(aside[k].modelColours) << k;
+  }
+  EXPECT_NE(aside[accepted].residualPx, none[accepted].residualPx); // measured with the verification's colours
 }
 
 TEST(PreciseStage, TheLinesGradientAndHessianAreTheObjectivesOnesAtAnyPose)

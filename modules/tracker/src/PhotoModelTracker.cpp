@@ -169,13 +169,16 @@ SearchedPose PhotoModelTracker::challenge(const FramePlan &frame, const Searched
   const LockVerifier::Challenge c = m_verifier.challenge(m_fitness.frame(), frame.challenger, searched.pose, m_search.ga(), settle);
   SearchedPose s = searched;
   s.work = s.work.plus(c.run);
-  if (!c.better)
+  if (!c.better) {
+    if (m_verifier.verified()) // accepted now: this frame's refinement measures with its verification's colours
+      m_refinement.lockAccepted();
     return s;
+  }
   // A clearly better pose elsewhere (a wrong first lock): the tracker moves there.
   s.pose = *c.better;
   s.switched = true;
   update.reseed = RmGaUpdate::Reseed{c.better->phi, m_params.search.initSpread};
-  m_refinement.reset();     // the pose jumped: the tilt filter starts again ...
+  m_refinement.reset();     // the pose jumped: the tilt filter starts again, the colours learnt aside are forgotten ...
   m_history.forgetMotion(); // ... and so does the motion
   return s;
 }

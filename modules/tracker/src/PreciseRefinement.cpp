@@ -15,6 +15,8 @@ void PreciseRefinementParams::validate() const
     throw core::Error("tracker: the landing correction's width must lie in [0, 90] deg (0: off)");
   if (!(lookForHiddenBelow >= 0 && lookForHiddenBelow <= 1))
     throw core::Error("tracker: the precise stage's visible share to look for hidden lines below must lie in [0, 1]");
+  if (!(learnAsideMinConfidence >= 0 && learnAsideMinConfidence <= 1))
+    throw core::Error("tracker: the confidence a new lock's frame needs to teach the colours aside must lie in [0, 1]");
 }
 
 PreciseRefinement::PreciseRefinement(const PreciseRefinementParams &params, const core::CameraRig &rig, const core::PhotoModel &model,

@@ -63,7 +63,7 @@ void RefinementChain::learn(const RefinedPose &refined, const Verdict &verdict, 
   if (refined.precise && verdict.trusted)           // the scene's colours along the outline, where the pose is trusted
     m_precise.learnColours(phi);
   else if (refined.precise && !verdict.verified) // a new lock awaiting its verification
-    m_precise.learnColoursAside(phi);
+    m_precise.learnColoursAside(phi, verdict.confidence);
   if (lock.verified) // accepted: its verification's colours are the scene's
     m_precise.takeColoursLearntAside();
 }

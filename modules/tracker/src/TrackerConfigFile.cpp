@@ -33,6 +33,7 @@ template <typename V> void refinementKeys(V &v, RefinementParams &r)
          .value("restart_deg", r.precise.restartDeg)
          .value("look_for_hidden_below", r.precise.lookForHiddenBelow)
          .value("landing_width_deg", r.precise.landingWidthDeg)
+         .value("learn_aside_min_confidence", r.precise.learnAsideMinConfidence)
          .section("stage", [&](V &t) {
            t.value("lines", q.lines)
                .value("scales", q.scales)

@@ -69,6 +69,13 @@ struct PreciseRefinementParams
     corrected.
   */
   double landingWidthDeg = 4;
+  /*!
+    A new lock's frame, before the verifier accepts it, teaches the colours aside (kept once it is
+    accepted: RefinementChain::learn) only when its confidence reads at least this; one under it
+    forgets what was aside. A lock that the confidence itself finds more likely wrong than right
+    teaches nothing (the right locks' verification frames read 0.66-0.99 through Cycles and the lab).
+  */
+  double learnAsideMinConfidence = 0.5;
 
   //! Throws core::Error naming the first parameter out of range.
   void validate() const;
@@ -106,8 +113,18 @@ public:
   std::optional<core::Phi> settle(const core::Phi &start, const core::CameraImages &images);
   //! The scene's colours along the outline at \e phi, a trusted pose as the stage found it (precise::PreciseStage::learnColours).
   void learnColours(const core::Phi &phi) { m_stage->learnColours(phi, m_lookedForHidden); }
-  //! The same, kept aside until takeColoursLearntAside() (precise::PreciseStage::learnColoursAside): a pose not yet known right.
-  void learnColoursAside(const core::Phi &phi) { m_stage->learnColoursAside(phi, m_lookedForHidden); }
+  /*!
+    The same, kept aside until takeColoursLearntAside() (precise::PreciseStage::learnColoursAside),
+    for a pose not yet known right, of confidence \e confidence: under
+    PreciseRefinementParams::learnAsideMinConfidence, what was aside is forgotten instead.
+  */
+  void learnColoursAside(const core::Phi &phi, double confidence)
+  {
+    if (confidence >= m_p.learnAsideMinConfidence)
+      m_stage->learnColoursAside(phi, m_lookedForHidden);
+    else
+      m_stage->dropColoursLearntAside();
+  }
   //! The colours learnt aside become the ones in use (none: nothing changes).
   void takeColoursLearntAside()
   {

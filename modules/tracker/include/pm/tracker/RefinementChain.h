@@ -77,15 +77,22 @@ public:
     of the scene's colours along the outline of \e refined, when the pose is the stage's.
     - A trusted frame's colours are learnt.
     - A frame of a new lock that awaits its verification (not verified when judged, no ambiguity)
-      is learnt aside; once the verifier accepts the lock, those colours are taken, the frame that
-      completed it included: the lock's first trusted frame is measured with the colours of its
-      whole verification, not with the model's alone. A lock lost, or an ambiguity, forgets them.
+      is learnt aside; once the verifier accepts the lock (lockAccepted(), or \e lock here), those
+      colours are taken: the frame that it accepts in is measured with the colours of the whole
+      verification, not with the model's alone. A lock lost, an ambiguity, or a frame whose
+      confidence is under PreciseRefinementParams::learnAsideMinConfidence forgets them.
   */
   void learn(const RefinedPose &refined, const Verdict &verdict, const LockStanding &lock);
   //! The hand moved by \e hNowMhPrev: the tilt filter's state follows.
   void transform(const vpHomogeneousMatrix &hNowMhPrev) { m_tilt.transform(hNowMhPrev); }
-  //! A new start, or a jump to another pose: the tilt filter starts again.
-  void reset() { m_tilt.reset(); }
+  //! A new start, or a jump to another pose: the tilt filter starts again, and the colours learnt aside are forgotten.
+  void reset()
+  {
+    m_tilt.reset();
+    m_precise.dropColoursLearntAside();
+  }
+  //! The verifier has just accepted the lock (in the frame's challenge, before its refinement): the colours learnt aside are taken (see learn()).
+  void lockAccepted() { m_precise.takeColoursLearntAside(); }
   //! The background's hue learnt (BackgroundLearning): the precise stage's hidden lines compare with it.
   void setBackgroundHue(double deg) { m_precise.setBackgroundHue(deg); }
 
